@@ -1,0 +1,71 @@
+// Collision math for axis-aligned blocks as small pure functions (lecture, "Collisions: detect and
+// resolve", "Point of Impact for AABBs" and "Collisions on a Line – Full Formula").
+#pragma once
+
+#include "world.h"
+
+#include <cstdint>
+#include <limits>
+
+struct Aabb {
+    Vec2 min; // m
+    Vec2 max; // m
+};
+
+inline Aabb aabbOf(Vec2 position, Vec2 size) {
+    return {position - size * 0.5, position + size * 0.5};
+}
+inline Aabb aabbOf(const Block& block) {
+    return aabbOf(block.position, block.size);
+}
+// The box covering a block's motion from `position` over `time` seconds at `velocity`.
+Aabb sweptAabb(Vec2 position, Vec2 size, Vec2 velocity, double time);
+inline bool contains(const Aabb& outer, const Aabb& inner) {
+    return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y && outer.max.x >= inner.max.x &&
+           outer.max.y >= inner.max.y;
+}
+
+// Lecture slide "AABB collision detection": P and Q overlap iff P.right > Q.left,
+// P.left < Q.right, P.top > Q.bottom and P.bottom < Q.top. Touching faces do not overlap.
+inline bool overlaps(const Aabb& p, const Aabb& q) {
+    return p.max.x > q.min.x && p.min.x < q.max.x && p.max.y > q.min.y && p.min.y < q.max.y;
+}
+// How far the boxes overlap along each axis (m); a component <= 0 means no overlap on that axis.
+inline Vec2 overlapExtents(const Aabb& p, const Aabb& q) {
+    return {std::min(p.max.x, q.max.x) - std::max(p.min.x, q.min.x),
+            std::min(p.max.y, q.max.y) - std::max(p.min.y, q.min.y)};
+}
+// Penetration depth (m): the smaller axis overlap, or 0 when the boxes do not overlap.
+double penetration(const Aabb& p, const Aabb& q);
+// How far a box sticks out of the bounds (m), 0 when inside (touching a wall is inside).
+double outsideDepth(const Aabb& box, const Bounds& bounds);
+
+// Bits of Impact::axes: the collision axis. A corner hit (equal entry times) sets both.
+constexpr std::uint8_t kAxisX = 1;
+constexpr std::uint8_t kAxisY = 2;
+constexpr double kNever = std::numeric_limits<double>::infinity();
+
+struct Impact {
+    double time = kNever;  // s from now until the faces first touch
+    std::uint8_t axes = 0; // kAxisX | kAxisY; 0 when there is no impact
+    bool hit() const { return axes != 0; }
+};
+
+// Time of impact of two moving boxes within [0, maxTime] (lecture, "Point of Impact (POI)
+// Calculation": t = a/b, per axis). Per axis the faces meet at t_enter = gap / closing speed and
+// part at t_exit; the boxes touch when the later entry comes before the earlier exit, and the
+// collision axis is the one whose entry comes last while the other overlaps. Boxes already
+// touching or overlapping by rounding on the entry axis report time 0. Only approaching motion
+// counts: boxes at rest relative to each other never collide.
+Impact timeOfImpact(const Aabb& a, Vec2 velocityA, const Aabb& b, Vec2 velocityB, double maxTime);
+
+struct WallImpact {
+    double time = kNever;  // s from now
+    std::uint8_t axes = 0; // which walls: kAxisX (left or right), kAxisY (bottom or top)
+    bool hit() const { return axes != 0; }
+};
+// Time at which a moving box first touches a wall of the bounds, within [0, maxTime]; a box
+// already touching a wall and moving into it reports time 0.
+WallImpact timeOfWallImpact(const Aabb& box, Vec2 velocity, const Bounds& bounds, double maxTime);
+// The wall a box moving with `velocity` hits along `axis` (its sign picks the side).
+Wall wallOnAxis(int axis, double velocity);

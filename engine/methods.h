@@ -1,0 +1,12 @@
+// The lecture's three simulation methods, one file each. Each advances every block over one
+// substep of ctx.h seconds (gravity has already been applied) and resolves the collisions it finds.
+#pragma once
+
+#include "resolve.h"
+
+// perfect.cpp: repeat { earliest time of impact; move everything to it; resolve } (event-driven).
+void advancePerfect(SubstepContext& ctx);
+// move_and_correct.cpp: move everything, then push overlapping pairs apart and resolve.
+void advanceMoveAndCorrect(SubstepContext& ctx);
+// turn_based.cpp: each block in order moves until its first collision, others held still.
+void advanceTurnBased(SubstepContext& ctx);

@@ -1,0 +1,90 @@
+// The move-and-correct method (lecture, "Move & Correct Method"): "just do it, clean up the mess
+// later". Move all bodies over the whole step, then find overlapping pairs, push them apart along
+// the axis of least penetration (shared by inverse mass), and resolve their velocities. Cheap;
+// fast bodies tunnel through thin ones, and a deep overlap can be resolved in the wrong direction.
+#include "collision.h"
+#include "methods.h"
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+namespace {
+
+// Share of a correction that block `self` takes: inverse masses, with infinite masses fixed
+// unless both are infinite (a kinematic pushed out of a static block moves itself).
+double correctionShare(const Block& self, const Block& other) {
+    auto weight = [](const Block& b) { return b.isDynamic() ? 1.0 / b.mass : 0.0; };
+    const double ws = weight(self), wo = weight(other);
+    if (ws + wo > 0.0) return ws / (ws + wo);
+    if (self.kind != BodyKind::Kinematic) return 0.0;
+    return other.kind == BodyKind::Kinematic ? 0.5 : 1.0;
+}
+
+// Pushes a and b apart along the axis of least penetration and resolves their velocities.
+void correctPair(SubstepContext& ctx, Resolver& resolver, int a, int b) {
+    Block& A = ctx.world.blocks[a];
+    Block& B = ctx.world.blocks[b];
+    const Vec2 extents = overlapExtents(aabbOf(A), aabbOf(B));
+    if (extents.x <= 0.0 || extents.y <= 0.0) return; // an earlier correction separated them
+    const int axis = extents.x < extents.y ? 0 : 1;
+    const double depth = extents[axis];
+    ctx.maxPenetrationSeen = std::max(ctx.maxPenetrationSeen, depth);
+    // Push each block away from the other's centre: wrong when a fast block has passed it.
+    const double direction = A.position[axis] <= B.position[axis] ? -1.0 : 1.0;
+    const double shareA = correctionShare(A, B), shareB = correctionShare(B, A);
+    A.position[axis] += direction * depth * shareA;
+    B.position[axis] -= direction * depth * shareB;
+    resolver.resolvePair(a, b, axis);
+}
+
+// Puts a block that sticks out of the bounds back on the wall, and bounces it off.
+void correctWalls(SubstepContext& ctx, Resolver& resolver, int i) {
+    Block& block = ctx.world.blocks[i];
+    const Bounds& bounds = ctx.world.bounds;
+    for (int axis = 0; axis < 2; ++axis) {
+        const Aabb box = aabbOf(block);
+        const double below = bounds.min[axis] - box.min[axis];
+        const double above = box.max[axis] - bounds.max[axis];
+        if (below > 0.0) block.position[axis] += below;
+        if (above > 0.0) block.position[axis] -= above;
+        ctx.maxPenetrationSeen = std::max({ctx.maxPenetrationSeen, below, above});
+        const bool movingOut = (below >= 0.0 && block.velocity[axis] < 0.0) ||
+                               (above >= 0.0 && block.velocity[axis] > 0.0);
+        if (movingOut) resolver.resolveWall(i, axis);
+    }
+}
+
+} // namespace
+
+void advanceMoveAndCorrect(SubstepContext& ctx) {
+    std::vector<Block>& blocks = ctx.world.blocks;
+    const int n = static_cast<int>(blocks.size());
+
+    // 1. Move all bodies over the whole step: position += velocity · h.
+    for (Block& b : blocks)
+        if (b.kind != BodyKind::Static) b.position += b.velocity * ctx.h;
+
+    // 2. Find the overlapping pairs at the new positions.
+    BroadPhase& grid = ctx.broadPhase;
+    grid.reset(ctx.world.bounds, blocks);
+    for (int i = 0; i < n; ++i) grid.set(i, aabbOf(blocks[i]));
+    thread_local std::vector<std::pair<int, int>> pairs;
+    pairs.clear();
+    for (int i = 0; i < n; ++i) {
+        if (blocks[i].kind == BodyKind::Static) continue;
+        const Aabb box = aabbOf(blocks[i]);
+        grid.query(box, [&](int j) {
+            if (j == i || (blocks[j].kind != BodyKind::Static && j < i)) return;
+            if (overlaps(box, aabbOf(blocks[j]))) pairs.emplace_back(i, j);
+        });
+    }
+
+    // 3. Correct the overlaps and resolve the collisions, then the walls.
+    Resolver resolver(ctx);
+    resolver.setNow(ctx.h);
+    for (const auto& [a, b] : pairs) correctPair(ctx, resolver, a, b);
+    for (int i = 0; i < n; ++i)
+        if (blocks[i].kind != BodyKind::Static) correctWalls(ctx, resolver, i);
+    ctx.advanced = ctx.h;
+}

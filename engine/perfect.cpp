@@ -1,0 +1,151 @@
+// The perfect method (lecture, "Perfect Simulation"):
+//   while CurrentTime < TargetTime: t = earliest collision; move all bodies to t; resolve; repeat.
+// Exact for linear motion: no overlap, no tunnelling. Implemented as event-driven molecular
+// dynamics does it: a priority queue of predicted impacts, each block moved lazily (its position
+// is valid at its own clock), and after a collision only the blocks whose velocity changed are
+// re-predicted against their neighbours from the broad phase. Stale predictions are recognised by
+// a per-block stamp that every change of velocity increments.
+#include "collision.h"
+#include "methods.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <queue>
+#include <vector>
+
+namespace {
+
+constexpr int kWallEvent = -1; // Event::b for an impact with the bounds
+
+struct Event {
+    double time;          // s since the substep start
+    int a;                // the block that predicted the impact
+    int b;                // the other block, or kWallEvent
+    std::uint32_t stampA; // a's stamp when predicted
+    std::uint32_t stampB; // b's stamp when predicted (0 for walls)
+    std::uint8_t axes;    // kAxisX | kAxisY
+};
+
+// Earliest first; ties in a fixed order so runs are deterministic.
+struct Later {
+    bool operator()(const Event& x, const Event& y) const {
+        if (x.time != y.time) return x.time > y.time;
+        if (x.a != y.a) return x.a > y.a;
+        return x.b > y.b;
+    }
+};
+
+class PerfectSolver {
+  public:
+    explicit PerfectSolver(SubstepContext& ctx)
+        : ctx_(ctx), blocks_(ctx.world.blocks), grid_(ctx.broadPhase), resolver_(ctx) {}
+
+    void run();
+
+  private:
+    Vec2 positionAt(int i, double t) const {
+        return blocks_[i].position + blocks_[i].velocity * (t - clock_[i]);
+    }
+    Aabb trajectory(int i, double now) const {
+        return sweptAabb(positionAt(i, now), blocks_[i].size, blocks_[i].velocity, ctx_.h - now);
+    }
+    void predict(int i, double now, bool onlyLaterPairs);
+    bool isStale(const Event& e) const {
+        return e.stampA != stamp_[e.a] || (e.b >= 0 && e.stampB != stamp_[e.b]);
+    }
+    bool resolve(const Event& e);
+
+    SubstepContext& ctx_;
+    std::vector<Block>& blocks_;
+    BroadPhase& grid_;
+    Resolver resolver_;
+    std::vector<double> clock_;        // s: the time at which each block's position is valid
+    std::vector<std::uint32_t> stamp_; // incremented on every change of velocity
+    std::priority_queue<Event, std::vector<Event>, Later> events_;
+};
+
+// Predicts block i's impacts with the walls and with every neighbour whose registered box meets
+// its trajectory for the rest of the substep.
+void PerfectSolver::predict(int i, double now, bool onlyLaterPairs) {
+    const Block& block = blocks_[i];
+    if (block.kind == BodyKind::Static) return;
+    const double remaining = ctx_.h - now;
+    const Aabb box = aabbOf(positionAt(i, now), block.size);
+
+    const WallImpact wall = timeOfWallImpact(box, block.velocity, ctx_.world.bounds, remaining);
+    if (wall.hit()) events_.push({now + wall.time, i, kWallEvent, stamp_[i], 0, wall.axes});
+
+    grid_.query(trajectory(i, now), [&](int j) {
+        if (j == i) return;
+        const Block& other = blocks_[j];
+        if (onlyLaterPairs && j < i && other.kind != BodyKind::Static) return;
+        const Impact impact = timeOfImpact(
+            box, block.velocity, aabbOf(positionAt(j, now), other.size), other.velocity, remaining);
+        if (impact.hit())
+            events_.push({now + impact.time, i, j, stamp_[i], stamp_[j], impact.axes});
+    });
+}
+
+bool PerfectSolver::resolve(const Event& e) {
+    bool changed = false;
+    for (int axis = 0; axis < 2; ++axis) {
+        if (!(e.axes & (1 << axis))) continue;
+        const Resolution r = e.b == kWallEvent ? resolver_.resolveWall(e.a, axis)
+                                               : resolver_.resolvePair(e.a, e.b, axis);
+        changed |= r != Resolution::None;
+    }
+    return changed;
+}
+
+void PerfectSolver::run() {
+    const int n = static_cast<int>(blocks_.size());
+    clock_.assign(n, 0.0);
+    stamp_.assign(n, 0);
+
+    // Register every block's trajectory over the whole substep, then predict the first impacts.
+    grid_.reset(ctx_.world.bounds, blocks_);
+    for (int i = 0; i < n; ++i) grid_.set(i, trajectory(i, 0.0));
+    for (int i = 0; i < n; ++i) predict(i, 0.0, true);
+
+    // Repeat: take the earliest impact, move its blocks to it, resolve, re-predict what changed.
+    double lastEventTime = 0.0;
+    int processed = 0;
+    std::vector<int> changed;
+    while (!events_.empty()) {
+        const Event e = events_.top();
+        events_.pop();
+        if (isStale(e)) continue;
+        if (processed == ctx_.world.settings.eventCap) {
+            ctx_.capHit = true; // the substep ends at the last event: time falls behind
+            break;
+        }
+        ++processed;
+        resolver_.setNow(e.time, &clock_);
+        if (!resolve(e)) continue;
+        ++ctx_.stats.events;
+        lastEventTime = e.time;
+
+        changed = resolver_.changed();
+        resolver_.clearChanged();
+        std::sort(changed.begin(), changed.end());
+        changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+        for (int j : changed) {
+            ++stamp_[j];
+            const Aabb path = trajectory(j, e.time);
+            if (!contains(grid_.box(j), path)) grid_.set(j, path);
+        }
+        for (int j : changed) predict(j, e.time, false);
+    }
+
+    // Move every block to the end of the substep (or to the last event when the cap was hit).
+    const double end = ctx_.capHit ? lastEventTime : ctx_.h;
+    for (int i = 0; i < n; ++i) blocks_[i].position = positionAt(i, end);
+    ctx_.advanced = end;
+}
+
+} // namespace
+
+void advancePerfect(SubstepContext& ctx) {
+    PerfectSolver solver(ctx);
+    solver.run();
+}

@@ -1,0 +1,203 @@
+#include "resolve.h"
+
+#include "collision.h"
+
+#include <algorithm>
+
+namespace {
+// Faces closer than this (m) touch: positions at a time of impact agree to rounding only.
+constexpr double kTouchTolerance = 1e-9;
+} // namespace
+
+Resolver::Resolver(SubstepContext& context) : ctx_(context) {}
+
+void Resolver::setNow(double now, std::vector<double>* localTime) {
+    now_ = now;
+    localTime_ = localTime;
+}
+
+void Resolver::sync(int i) {
+    if (!localTime_) return;
+    double& clock = (*localTime_)[i];
+    Block& b = ctx_.world.blocks[i];
+    b.position += b.velocity * (now_ - clock);
+    clock = now_;
+}
+
+// The rest rule: closing speeds below restSpeed + 2·|g|·h are what gravity alone adds to a
+// resting contact within one substep (g·h), with a margin; they are resolved perfectly inelastic.
+double Resolver::restThreshold(int axis) const {
+    const WorldSettings& s = ctx_.world.settings;
+    return s.restSpeed + 2.0 * std::abs(s.gravity[axis]) * ctx_.h;
+}
+
+void Resolver::setVelocity(int i, int axis, double v) {
+    Vec2& velocity = ctx_.world.blocks[i].velocity;
+    if (velocity[axis] == v) return;
+    velocity[axis] = v;
+    changed_.push_back(i);
+}
+
+void Resolver::reverseKinematic(int i, int axis) {
+    const Block& b = ctx_.world.blocks[i];
+    if (b.kind == BodyKind::Kinematic) setVelocity(i, axis, -b.velocity[axis]);
+}
+
+void Resolver::record(int a, int b, int axis, double m1, double v1, double m2, double v2, double u,
+                      double C, double v1After, double v2After, bool rest) {
+    ++ctx_.stats.collisions;
+    if (!ctx_.log) return;
+    CollisionRecord r;
+    r.time = ctx_.startTime + now_;
+    r.toi = ctx_.h > 0.0 ? now_ / ctx_.h : 0.0;
+    r.block = a;
+    r.other = b;
+    r.axis = axis;
+    r.m1 = m1, r.m2 = m2, r.v1 = v1, r.v2 = v2, r.u = u, r.C = C;
+    r.v1After = v1After, r.v2After = v2After, r.rest = rest;
+    ctx_.log->push_back(r);
+}
+
+Resolution Resolver::resolvePair(int a, int b, int axis) {
+    sync(a);
+    sync(b);
+    std::vector<Block>& blocks = ctx_.world.blocks;
+    const Block& A = blocks[a];
+    const Block& B = blocks[b];
+    // Resolve only when they approach along the axis (lecture, "Tips – Collision Resolve").
+    const bool aIsLower = A.position[axis] <= B.position[axis];
+    const double closing =
+        aIsLower ? A.velocity[axis] - B.velocity[axis] : B.velocity[axis] - A.velocity[axis];
+    if (!(closing > 0.0)) return Resolution::None;
+
+    const double m1 = A.mass, m2 = B.mass;
+    const double v1 = A.velocity[axis], v2 = B.velocity[axis];
+    if (!A.isDynamic() && !B.isDynamic()) {
+        // Two infinite masses: a kinematic block reverses, as on hitting a wall.
+        reverseKinematic(a, axis);
+        reverseKinematic(b, axis);
+        record(a, b, axis, m1, v1, m2, v2, 0.0, 1.0, A.velocity[axis], B.velocity[axis], false);
+        return Resolution::Bounce;
+    }
+    if (closing < restThreshold(axis)) return restCluster(a, b, axis, Wall{0});
+
+    const double C = ctx_.world.settings.bounciness;
+    const double u = centerOfMassVelocity(m1, v1, m2, v2);
+    const double v1After = A.isDynamic() ? velocityAfterCollision(v1, u, C) : v1;
+    const double v2After = B.isDynamic() ? velocityAfterCollision(v2, u, C) : v2;
+    setVelocity(a, axis, v1After);
+    setVelocity(b, axis, v2After);
+    record(a, b, axis, m1, v1, m2, v2, u, C, v1After, v2After, false);
+    return Resolution::Bounce;
+}
+
+Resolution Resolver::resolveWall(int a, int axis) {
+    sync(a);
+    const Block& A = ctx_.world.blocks[a];
+    const double v = A.velocity[axis];
+    if (v == 0.0 || A.kind == BodyKind::Static) return Resolution::None;
+    const Wall wall = wallOnAxis(axis, v);
+    if (A.kind == BodyKind::Kinematic) {
+        reverseKinematic(a, axis);
+        record(a, wall, axis, A.mass, v, kInfiniteMass, 0.0, 0.0, 1.0, -v, 0.0, false);
+        return Resolution::Bounce;
+    }
+    if (std::abs(v) < restThreshold(axis)) return restCluster(a, -1, axis, wall);
+    // A wall has infinite mass and u = 0, so v' = -C·v (lecture, "Bounce elasticity").
+    const double C = ctx_.world.settings.bounciness;
+    const double after = velocityAfterCollision(v, 0.0, C);
+    setVelocity(a, axis, after);
+    record(a, wall, axis, A.mass, v, kInfiniteMass, 0.0, 0.0, C, after, 0.0, false);
+    return Resolution::Bounce;
+}
+
+// A slow contact: the seed bodies and everything touching them along the axis that does not
+// part from them (a resting stack, a block on a platform) move on together as one perfectly
+// inelastic body: every dynamic member takes the cluster's centre-of-mass velocity u, or the
+// velocity of an infinite mass it rests on. Infinite masses anchor the cluster; the search does
+// not pass through them.
+Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) {
+    std::vector<Block>& blocks = ctx_.world.blocks;
+    const Bounds& bounds = ctx_.world.bounds;
+    const int other = 1 - axis;
+    const double threshold = restThreshold(axis);
+    inCluster_.resize(blocks.size(), 0);
+    members_.clear();
+    queue_.clear();
+    bool restsOnStatic = seedWall != Wall{0};
+    int kinematicAnchor = -1;
+
+    auto add = [&](int j) {
+        if (inCluster_[j]) return;
+        inCluster_[j] = 1;
+        members_.push_back(j);
+        const Block& b = blocks[j];
+        if (b.isDynamic())
+            queue_.push_back(j);
+        else if (b.kind == BodyKind::Static)
+            restsOnStatic = true;
+        else if (kinematicAnchor < 0 || j < kinematicAnchor)
+            kinematicAnchor = j;
+    };
+    const double v1 = blocks[seedA].velocity[axis];
+    const double v2 = seedB >= 0 ? blocks[seedB].velocity[axis] : 0.0;
+    add(seedA);
+    if (seedB >= 0) add(seedB);
+
+    for (size_t q = 0; q < queue_.size(); ++q) {
+        const int i = queue_[q];
+        const Aabb box = aabbOf(blocks[i]);
+        const double vi = blocks[i].velocity[axis];
+        Aabb probe = box;
+        probe.min[axis] -= kTouchTolerance;
+        probe.max[axis] += kTouchTolerance;
+        ctx_.broadPhase.query(probe, [&](int j) {
+            if (inCluster_[j]) return;
+            sync(j);
+            const Aabb bj = aabbOf(blocks[j]);
+            if (std::min(box.max[other], bj.max[other]) - std::max(box.min[other], bj.min[other]) <=
+                0.0)
+                return; // side by side along the other axis, not resting on each other
+            const double vj = blocks[j].velocity[axis];
+            double closing;
+            if (std::abs(bj.min[axis] - box.max[axis]) <= kTouchTolerance)
+                closing = vi - vj; // j is on top of i
+            else if (std::abs(box.min[axis] - bj.max[axis]) <= kTouchTolerance)
+                closing = vj - vi; // i is on top of j
+            else
+                return;
+            if (closing > -threshold) add(j);
+        });
+        // Walls are infinite masses at rest.
+        if (box.min[axis] - bounds.min[axis] <= kTouchTolerance && vi < threshold)
+            restsOnStatic = true;
+        if (bounds.max[axis] - box.max[axis] <= kTouchTolerance && vi > -threshold)
+            restsOnStatic = true;
+    }
+
+    double u = 0.0;
+    if (restsOnStatic) {
+        // Anything kinematic pressing the cluster against a static body is jammed: it reverses.
+        for (int j : members_)
+            if (blocks[j].kind == BodyKind::Kinematic && blocks[j].velocity[axis] != 0.0)
+                reverseKinematic(j, axis);
+    } else if (kinematicAnchor >= 0) {
+        u = blocks[kinematicAnchor].velocity[axis];
+    } else {
+        double momentum = 0.0, mass = 0.0;
+        for (int j : members_) {
+            momentum += blocks[j].mass * blocks[j].velocity[axis];
+            mass += blocks[j].mass;
+        }
+        u = momentum / mass;
+    }
+    const size_t changedBefore = changed_.size();
+    for (int j : members_) {
+        if (blocks[j].isDynamic()) setVelocity(j, axis, u);
+        inCluster_[j] = 0;
+    }
+    const double m2 = seedB >= 0 ? blocks[seedB].mass : kInfiniteMass;
+    record(seedA, seedB >= 0 ? seedB : seedWall, axis, blocks[seedA].mass, v1, m2, v2, u, 0.0,
+           blocks[seedA].velocity[axis], seedB >= 0 ? blocks[seedB].velocity[axis] : 0.0, true);
+    return changed_.size() > changedBefore ? Resolution::Rest : Resolution::None;
+}

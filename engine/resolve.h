@@ -1,0 +1,80 @@
+// Collision resolve (lecture, "Collisions on a Line – Full Formula"), shared by the three methods:
+// the formula on one axis, pair and wall contacts, infinite masses, and the rest rule.
+#pragma once
+
+#include "broad_phase.h"
+#include "stats.h"
+#include "world.h"
+
+#include <cmath>
+#include <vector>
+
+// Velocity of the centre of mass along one axis (lecture, "Momentum"):
+// u = (m1·v1 + m2·v2) / (m1 + m2). With one infinite mass (a wall, static or kinematic block),
+// u is that body's velocity.
+inline double centerOfMassVelocity(double m1, double v1, double m2, double v2) {
+    if (std::isinf(m1)) return v1;
+    if (std::isinf(m2)) return v2;
+    return (m1 * v1 + m2 * v2) / (m1 + m2);
+}
+
+// Velocity after a collision on a line with bounciness C (lecture): v' = u - C·(v - u).
+inline double velocityAfterCollision(double v, double u, double C) {
+    return u - C * (v - u);
+}
+
+// What one substep of a method works with: the world, its broad phase, the statistics and log.
+struct SubstepContext {
+    World& world;
+    BroadPhase& broadPhase;
+    StepStats& stats;
+    std::vector<CollisionRecord>* log; // may be null
+    double h;                          // s, substep length
+    double startTime;                  // s, world time at the start of the substep
+    double advanced = 0.0;             // s, how far the method got (h unless the cap was hit)
+    bool capHit = false;               // the perfect method's event cap ended the substep
+    double maxPenetrationSeen = 0.0;   // m, overlap the method met (move-and-correct)
+};
+
+// What resolving a contact did: nothing (not approaching), a bounce by the formula (or a
+// kinematic reversing), or the rest rule's perfectly inelastic merge.
+enum class Resolution { None, Bounce, Rest };
+
+// Resolves contacts between touching blocks. Every change of velocity is reported in
+// changed() so event-driven code can re-predict. Positions are read through sync(), which the
+// perfect method uses to bring a lazily moved block to the current time.
+class Resolver {
+  public:
+    explicit Resolver(SubstepContext& context);
+
+    // The time (s since the substep start) at which contacts are being resolved, and, for the
+    // perfect method, each block's own clock (its position is valid at that time).
+    void setNow(double now, std::vector<double>* localTime = nullptr);
+
+    // Blocks a and b touch along `axis` (0 = x, 1 = y); resolves if they approach.
+    Resolution resolvePair(int a, int b, int axis);
+    // Block a touches the wall on `axis` that it moves toward.
+    Resolution resolveWall(int a, int axis);
+
+    const std::vector<int>& changed() const { return changed_; }
+    void clearChanged() { changed_.clear(); }
+    // Brings block i to the current time (a no-op unless lazy clocks were given).
+    void sync(int i);
+
+  private:
+    double restThreshold(int axis) const;
+    void reverseKinematic(int i, int axis);
+    Resolution restCluster(int seedA, int seedB, int axis, Wall seedWall);
+    void record(int a, int b, int axis, double m1, double v1, double m2, double v2, double u,
+                double C, double v1After, double v2After, bool rest);
+    void setVelocity(int i, int axis, double v);
+
+    SubstepContext& ctx_;
+    double now_ = 0.0;
+    std::vector<double>* localTime_ = nullptr;
+    std::vector<int> changed_;
+    // Scratch for the rest rule's cluster search.
+    std::vector<int> members_;
+    std::vector<int> queue_;
+    std::vector<unsigned char> inCluster_;
+};

@@ -1,0 +1,54 @@
+// Scene files, format v1 (SPEC.md): load with validation, save, and build a World from a scene.
+#pragma once
+
+#include "world.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+struct BlockDef {
+    std::string name;              // optional in the file ("" when absent)
+    Vec2 position;                 // m
+    Vec2 size{1.0, 1.0};           // m
+    Vec2 velocity;                 // m/s
+    double mass = 1.0;             // kg (dynamic only)
+    BodyKind kind = BodyKind::Dynamic;
+    std::string color;             // "#rrggbb", optional ("" when absent)
+
+    bool operator==(const BlockDef& o) const;
+};
+
+struct Scene {
+    std::string name;
+    std::string description;
+    Bounds bounds;
+    WorldSettings settings = defaultWorldSettings();
+    std::vector<BlockDef> blocks;
+
+    bool operator==(const Scene& o) const;
+};
+
+// A load error: `where` names the place ("scene.json:3:14" for syntax, "scene.json: blocks[3].mass"
+// for a bad value) and `message` says what is wrong.
+struct SceneError {
+    std::string where;
+    std::string message;
+    std::string text() const { return where + ": " + message; }
+};
+
+struct SceneResult {
+    std::optional<Scene> scene;
+    SceneError error;  // meaningful only when !scene
+};
+
+// Parses and validates scene text; `sourceName` is used in error places.
+SceneResult parseScene(const std::string& text, const std::string& sourceName);
+SceneResult loadSceneFile(const std::string& path);
+std::string sceneToJson(const Scene& scene);
+// Writes to a temporary file beside `path` and renames it, so a failed save loses nothing.
+bool saveSceneFile(const Scene& scene, const std::string& path, std::string* error);
+
+World makeWorld(const Scene& scene);
+// The current state of `world` as a scene, keeping names and colours from `original`.
+Scene sceneFromWorld(const World& world, const Scene& original);

@@ -1,0 +1,37 @@
+// What one step reports, and the record of one resolved collision (what the inspector shows).
+#pragma once
+
+#include "vec2.h"
+
+#include <cstdint>
+
+// Walls have negative indices in CollisionRecord::other.
+enum Wall : int { kWallLeft = -1, kWallRight = -2, kWallBottom = -3, kWallTop = -4 };
+
+struct StepStats {
+    int collisions = 0;           // resolved collisions this frame, walls included
+    int events = 0;               // perfect method: event instants processed this frame
+    double maxPenetration = 0.0;  // m, largest overlap at the end of the frame
+    Vec2 momentum;                // kg·m/s, total over dynamic blocks
+    double kineticEnergy = 0.0;   // J
+    double potentialEnergy = 0.0; // J
+    int eventCapHits = 0;         // substeps whose event cap ended them early
+    double simulatedTime = 0.0;   // s actually advanced (less than dt when the cap held time back)
+    double stepMs = 0.0;          // ms of wall-clock time spent in the step
+};
+
+// One resolved collision along one axis, with the numbers of the lecture's formula:
+// u = (m1·v1 + m2·v2) / (m1 + m2),  v' = u - C·(v - u).
+struct CollisionRecord {
+    double time = 0.0;         // s, world time of impact
+    double toi = 0.0;          // fraction of the (sub)step at which the faces touched (t = a/b)
+    int block = 0;             // index of the first body
+    int other = 0;             // index of the second body, or a Wall (negative)
+    int axis = 0;              // 0 = x, 1 = y
+    double m1 = 0.0, m2 = 0.0; // kg (infinity for walls, static and kinematic)
+    double v1 = 0.0, v2 = 0.0; // m/s, velocity components along the axis before
+    double u = 0.0;            // m/s, centre-of-mass velocity along the axis
+    double C = 0.0;            // bounciness used (0 when the rest rule applied)
+    double v1After = 0.0, v2After = 0.0; // m/s after
+    bool rest = false;                   // resolved by the rest rule (a resting contact)
+};

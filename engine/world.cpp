@@ -1,0 +1,164 @@
+#include "world.h"
+
+#include "methods.h"
+
+#include "collision.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+
+const char* methodName(Method method) {
+    switch (method) {
+    case Method::Perfect:
+        return "perfect";
+    case Method::MoveAndCorrect:
+        return "move-and-correct";
+    case Method::TurnBased:
+        return "turn-based";
+    case Method::Count:
+        break;
+    }
+    return "unknown";
+}
+
+bool parseMethod(const char* name, Method& method) {
+    for (int i = 0; i < static_cast<int>(Method::Count); ++i) {
+        if (std::strcmp(name, methodName(static_cast<Method>(i))) == 0) {
+            method = static_cast<Method>(i);
+            return true;
+        }
+    }
+    return false;
+}
+
+WorldSettings defaultWorldSettings() {
+    return WorldSettings{};
+}
+
+namespace {
+
+// Semi-implicit Euler, first half (lecture, "Integration"): velocity += acceleration · h.
+void applyGravity(World& world, double h) {
+    const Vec2 dv = world.settings.gravity * h;
+    for (Block& b : world.blocks)
+        if (b.isDynamic()) b.velocity += dv;
+}
+
+// One switch picks the method (solver2d style).
+void advance(SubstepContext& ctx, Method method) {
+    switch (method) {
+    case Method::Perfect:
+        advancePerfect(ctx);
+        break;
+    case Method::MoveAndCorrect:
+        advanceMoveAndCorrect(ctx);
+        break;
+    case Method::TurnBased:
+        advanceTurnBased(ctx);
+        break;
+    case Method::Count:
+        break;
+    }
+}
+
+// The broad phase keeps its buffers between steps (a cache only: results never depend on it).
+thread_local BroadPhase scratchBroadPhase;
+
+} // namespace
+
+StepStats World::step(std::vector<CollisionRecord>* log) {
+    const auto wallStart = std::chrono::steady_clock::now();
+    StepStats stats;
+    const int substeps = settings.substeps > 0 ? settings.substeps : 1;
+    const double h = settings.dt / substeps;
+    double maxPenetrationSeen = 0.0;
+
+    for (int k = 0; k < substeps; ++k) {
+        // 1. Forces: gravity changes the velocities of dynamic blocks.
+        applyGravity(*this, h);
+        // 2. Motion and collisions, by the chosen simulation method.
+        SubstepContext ctx{*this, scratchBroadPhase, stats, log, h, time};
+        advance(ctx, settings.method);
+        time += ctx.advanced;
+        stats.simulatedTime += ctx.advanced;
+        maxPenetrationSeen = std::max(maxPenetrationSeen, ctx.maxPenetrationSeen);
+        // 3. The event cap held time back: the frame ends at the last event.
+        if (ctx.capHit) {
+            ++stats.eventCapHits;
+            break;
+        }
+    }
+    ++frame;
+
+    // 4. Statistics of the new state.
+    stats.momentum = totalMomentum(*this);
+    stats.kineticEnergy = kineticEnergy(*this);
+    stats.potentialEnergy = potentialEnergy(*this);
+    stats.maxPenetration = settings.measureOverlap ? std::max(maxPenetrationSeen, maxOverlap(*this))
+                                                   : maxPenetrationSeen;
+    const auto wallEnd = std::chrono::steady_clock::now();
+    stats.stepMs = std::chrono::duration<double, std::milli>(wallEnd - wallStart).count();
+    return stats;
+}
+
+Vec2 totalMomentum(const World& world) {
+    Vec2 p;
+    for (const Block& b : world.blocks)
+        if (b.isDynamic()) p += b.mass * b.velocity;
+    return p;
+}
+
+double kineticEnergy(const World& world) {
+    double e = 0.0;
+    for (const Block& b : world.blocks)
+        if (b.isDynamic()) e += 0.5 * b.mass * lengthSquared(b.velocity);
+    return e;
+}
+
+double potentialEnergy(const World& world) {
+    double e = 0.0;
+    for (const Block& b : world.blocks)
+        if (b.isDynamic()) e -= b.mass * dot(world.settings.gravity, b.position - world.bounds.min);
+    return e;
+}
+
+double maxOverlap(const World& world) {
+    BroadPhase& grid = scratchBroadPhase;
+    grid.reset(world.bounds, world.blocks);
+    const int n = static_cast<int>(world.blocks.size());
+    for (int i = 0; i < n; ++i) grid.set(i, aabbOf(world.blocks[i]));
+    double deepest = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const Block& a = world.blocks[i];
+        const Aabb box = aabbOf(a);
+        deepest = std::max(deepest, outsideDepth(box, world.bounds));
+        if (a.kind == BodyKind::Static) {
+            continue; // static pairs may overlap; pairs with a moving block are found from it
+        }
+        grid.query(box, [&](int j) {
+            if (j == i) return;
+            const Block& b = world.blocks[j];
+            if (b.kind != BodyKind::Static && j < i) return; // each moving pair once
+            deepest = std::max(deepest, penetration(box, aabbOf(b)));
+        });
+    }
+    return deepest;
+}
+
+std::uint64_t stateHash(const World& world) {
+    std::uint64_t hash = 1469598103934665603ull; // FNV-1a offset basis
+    auto mix = [&hash](double value) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &value, sizeof bits);
+        for (int i = 0; i < 8; ++i) {
+            hash ^= (bits >> (8 * i)) & 0xffu;
+            hash *= 1099511628211ull; // FNV prime
+        }
+    };
+    mix(world.time);
+    for (const Block& b : world.blocks) {
+        mix(b.position.x), mix(b.position.y), mix(b.velocity.x), mix(b.velocity.y);
+    }
+    return hash;
+}

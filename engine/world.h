@@ -1,0 +1,81 @@
+// The world model of SPEC.md: axis-aligned blocks with mass, closed bounds, gravity, one
+// bounciness, and the lecture's three simulation methods. Plain data in arrays addressed by index.
+#pragma once
+
+#include "stats.h"
+#include "vec2.h"
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+// The lecture's three simulation methods (lecture, "Physics Engine Setup").
+enum class Method : std::uint8_t { Perfect, MoveAndCorrect, TurnBased, Count };
+
+// "perfect", "move-and-correct", "turn-based": the names used in scene files and on the CLI.
+const char* methodName(Method method);
+// Parses a method name; returns false (and leaves `method` alone) for an unknown name.
+bool parseMethod(const char* name, Method& method);
+
+// Dynamic blocks have a finite mass and feel gravity. Static blocks never move. Kinematic blocks
+// move at their own constant velocity, ignore gravity, and reverse the velocity component on
+// hitting a wall or a static block (a moving platform). Static and kinematic have infinite mass.
+enum class BodyKind : std::uint8_t { Dynamic, Static, Kinematic };
+
+constexpr double kInfiniteMass = std::numeric_limits<double>::infinity();
+
+struct Block {
+    Vec2 position;     // m, centre
+    Vec2 size;         // m, full width and height
+    Vec2 velocity;     // m/s
+    double mass = 1.0; // kg; kInfiniteMass for static and kinematic blocks
+    BodyKind kind = BodyKind::Dynamic;
+
+    bool isDynamic() const { return kind == BodyKind::Dynamic; }
+    Vec2 halfSize() const { return size * 0.5; }
+};
+
+// The world's closed bounds: four walls of infinite mass.
+struct Bounds {
+    Vec2 min{0.0, 0.0};   // m, lower-left corner
+    Vec2 max{20.0, 12.0}; // m, upper-right corner
+};
+
+struct WorldSettings {
+    Vec2 gravity{0.0, -9.81};        // m/s^2
+    double bounciness = 1.0;         // C in [0, 1], coefficient of restitution (dimensionless)
+    double dt = 1.0 / 60.0;          // s per frame
+    int substeps = 1;                // steps per frame, each of dt / substeps seconds
+    Method method = Method::Perfect; // simulation method
+    // m/s: a contact closing slower than restSpeed + 2·|g|·h (h the substep length) is resolved
+    // as perfectly inelastic, together with everything resting on it (the rest rule, so resting
+    // stacks neither jitter nor make unbounded numbers of events).
+    double restSpeed = 1e-6;
+    int eventCap = 20000;       // perfect method: collision events per substep at most
+    bool measureOverlap = true; // compute StepStats::maxPenetration (costs one broad phase)
+};
+
+WorldSettings defaultWorldSettings();
+
+struct World {
+    WorldSettings settings = defaultWorldSettings();
+    Bounds bounds;
+    std::vector<Block> blocks;
+    double time = 0.0;       // s of simulated time
+    std::uint64_t frame = 0; // frames stepped
+
+    // Advances one frame of settings.dt: gravity, then the chosen method, per substep; then the
+    // statistics. When `log` is given, every resolved collision is appended to it.
+    StepStats step(std::vector<CollisionRecord>* log = nullptr);
+};
+
+// Totals over the dynamic blocks (kinematic and static blocks have infinite mass: left out).
+Vec2 totalMomentum(const World& world);     // kg·m/s, Σ m·v
+double kineticEnergy(const World& world);   // J, Σ m·|v|²/2
+double potentialEnergy(const World& world); // J, Σ -m·g·(p - bounds.min)
+// Largest overlap (m, the smaller of the two axis overlaps) among all pairs of blocks, walls
+// included (a block sticking out of the bounds); 0 when nothing overlaps. Static pairs ignored.
+double maxOverlap(const World& world);
+// A 64-bit FNV-1a hash of the bits of every block's position and velocity and the time: equal
+// hashes mean bit-identical states (the determinism test).
+std::uint64_t stateHash(const World& world);
