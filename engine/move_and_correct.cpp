@@ -67,18 +67,15 @@ void advanceMoveAndCorrect(SubstepContext& ctx) {
 
     // 2. Find the overlapping pairs at the new positions.
     BroadPhase& grid = ctx.broadPhase;
-    grid.reset(ctx.world.bounds, blocks);
-    for (int i = 0; i < n; ++i) grid.set(i, aabbOf(blocks[i]));
+    grid.build(ctx.world.bounds, blocks, [&](int i) { return aabbOf(blocks[i]); });
     thread_local std::vector<std::pair<int, int>> pairs;
     pairs.clear();
-    for (int i = 0; i < n; ++i) {
-        if (blocks[i].kind == BodyKind::Static) continue;
-        const Aabb box = aabbOf(blocks[i]);
-        grid.query(box, [&](int j) {
-            if (j == i || (blocks[j].kind != BodyKind::Static && j < i)) return;
-            if (overlaps(box, aabbOf(blocks[j]))) pairs.emplace_back(i, j);
-        });
-    }
+    grid.forEachOverlappingPair([&](int a, int b) {
+        if (blocks[a].kind != BodyKind::Static || blocks[b].kind != BodyKind::Static)
+            pairs.emplace_back(std::min(a, b), std::max(a, b));
+    });
+    // Correct in index order, whatever order the grid found the pairs in.
+    std::sort(pairs.begin(), pairs.end());
 
     // 3. Correct the overlaps and resolve the collisions, then the walls.
     Resolver resolver(ctx);

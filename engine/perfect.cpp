@@ -103,8 +103,7 @@ void PerfectSolver::run() {
     stamp_.assign(n, 0);
 
     // Register every block's trajectory over the whole substep, then predict the first impacts.
-    grid_.reset(ctx_.world.bounds, blocks_);
-    for (int i = 0; i < n; ++i) grid_.set(i, trajectory(i, 0.0));
+    grid_.build(ctx_.world.bounds, blocks_, [&](int i) { return trajectory(i, 0.0); });
     for (int i = 0; i < n; ++i) predict(i, 0.0, true);
 
     // Repeat: take the earliest impact, move its blocks to it, resolve, re-predict what changed.

@@ -58,9 +58,9 @@ void advanceTurnBased(SubstepContext& ctx) {
 
     // Every block registers the box it can sweep this step; a block whose velocity changes
     // re-registers before its turn, so the queries see every block wherever it is.
-    grid.reset(ctx.world.bounds, blocks);
-    for (int i = 0; i < n; ++i)
-        grid.set(i, sweptAabb(blocks[i].position, blocks[i].size, blocks[i].velocity, ctx.h));
+    grid.build(ctx.world.bounds, blocks, [&](int i) {
+        return sweptAabb(blocks[i].position, blocks[i].size, blocks[i].velocity, ctx.h);
+    });
 
     Resolver resolver(ctx);
     thread_local FirstImpact first;

@@ -125,24 +125,16 @@ double potentialEnergy(const World& world) {
 
 double maxOverlap(const World& world) {
     BroadPhase& grid = scratchBroadPhase;
-    grid.reset(world.bounds, world.blocks);
-    const int n = static_cast<int>(world.blocks.size());
-    for (int i = 0; i < n; ++i) grid.set(i, aabbOf(world.blocks[i]));
+    grid.build(world.bounds, world.blocks, [&](int i) { return aabbOf(world.blocks[i]); });
     double deepest = 0.0;
-    for (int i = 0; i < n; ++i) {
+    for (const Block& b : world.blocks)
+        deepest = std::max(deepest, outsideDepth(aabbOf(b), world.bounds));
+    grid.forEachOverlappingPair([&](int i, int j) {
         const Block& a = world.blocks[i];
-        const Aabb box = aabbOf(a);
-        deepest = std::max(deepest, outsideDepth(box, world.bounds));
-        if (a.kind == BodyKind::Static) {
-            continue; // static pairs may overlap; pairs with a moving block are found from it
-        }
-        grid.query(box, [&](int j) {
-            if (j == i) return;
-            const Block& b = world.blocks[j];
-            if (b.kind != BodyKind::Static && j < i) return; // each moving pair once
-            deepest = std::max(deepest, penetration(box, aabbOf(b)));
-        });
-    }
+        const Block& b = world.blocks[j];
+        if (a.kind != BodyKind::Static || b.kind != BodyKind::Static) // static pairs may overlap
+            deepest = std::max(deepest, penetration(aabbOf(a), aabbOf(b)));
+    });
     return deepest;
 }
 
