@@ -8,13 +8,13 @@
 #include <vector>
 
 struct BlockDef {
-    std::string name;              // optional in the file ("" when absent)
-    Vec2 position;                 // m
-    Vec2 size{1.0, 1.0};           // m
-    Vec2 velocity;                 // m/s
-    double mass = 1.0;             // kg (dynamic only)
+    std::string name;    // optional in the file ("" when absent)
+    Vec2 position;       // m
+    Vec2 size{1.0, 1.0}; // m
+    Vec2 velocity;       // m/s
+    double mass = 1.0;   // kg (dynamic only)
     BodyKind kind = BodyKind::Dynamic;
-    std::string color;             // "#rrggbb", optional ("" when absent)
+    std::string color; // "#rrggbb", optional ("" when absent)
 
     bool operator==(const BlockDef& o) const;
 };
@@ -39,7 +39,7 @@ struct SceneError {
 
 struct SceneResult {
     std::optional<Scene> scene;
-    SceneError error;  // meaningful only when !scene
+    SceneError error; // meaningful only when !scene
 };
 
 // Parses and validates scene text; `sourceName` is used in error places.

@@ -1,0 +1,32 @@
+// The sandbox-cli subcommands as plain functions: main.cpp only parses the command line.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+// Exit codes of sandbox-cli.
+enum ExitCode : int { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2 };
+
+// `run`, as typed on the command line: option values stay text until runCommand checks them, so
+// a bad value is reported as bad input (exit 1), not as bad usage.
+struct RunRequest {
+    std::string scene;                     // path of the scene file
+    std::optional<std::string> method;     // "perfect" | "move-and-correct" | "turn-based"
+    std::optional<std::string> dt;         // s per frame, in (0, 1]
+    std::optional<std::string> substeps;   // 1..1000
+    std::optional<std::string> bounciness; // C in [0, 1]
+    std::optional<std::string> gravity;    // "GX,GY" in m/s^2
+    std::optional<std::string> steps;      // frames to simulate, >= 0
+    std::optional<std::string> time;       // s of simulated time to reach, >= 0
+    bool json = false;                     // print one JSON object instead of a summary
+};
+
+// Default length of a run when neither --steps nor --time is given.
+constexpr std::int64_t kDefaultSteps = 600;
+
+// Simulates the scene and prints the summary to `out`; errors go to `err`. Returns an ExitCode.
+int runCommand(const RunRequest& request, std::ostream& out, std::ostream& err);
+// Prints "ok" to `out`, or the error (naming its place) to `err`. Returns an ExitCode.
+int validateCommand(const std::string& scenePath, std::ostream& out, std::ostream& err);

@@ -1,0 +1,80 @@
+// sandbox-cli: simulate or validate scene files without a window (SPEC.md, "Command-line
+// contract"). Exit codes: 0 ok, 1 bad input (scene file or option value), 2 bad usage.
+#include "commands.h"
+
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+
+int main(int argc, char** argv) {
+    CLI::App app{"Collision sandbox, headless: simulate or validate scene files (format v1).\n"
+                 "Exit codes: 0 ok, 1 bad input (scene file or option value), 2 bad usage."};
+    app.require_subcommand(1);
+    app.set_help_all_flag("--help-all", "Print this help and the options of every subcommand");
+
+    RunRequest run;
+    CLI::App* runCmd = app.add_subcommand("run", "Simulate a scene and print a summary.");
+    runCmd->add_option("SCENE", run.scene, "Scene file (JSON, format v1)")->required();
+    std::string method, dt, substeps, bounciness, gravity, steps, time;
+    CLI::Option* methodOpt =
+        runCmd->add_option("--method", method,
+                           "Simulation method: perfect, move-and-correct or turn-based "
+                           "(default: the scene's)");
+    CLI::Option* dtOpt = runCmd->add_option("--dt", dt,
+                                            "Seconds per frame, in (0, 1] "
+                                            "(default: the scene's)");
+    CLI::Option* substepsOpt = runCmd->add_option(
+        "--substeps", substeps, "Substeps per frame, 1 to 1000 (default: the scene's)");
+    CLI::Option* bouncinessOpt = runCmd->add_option(
+        "--bounciness", bounciness, "Bounciness C in [0, 1] (default: the scene's)");
+    CLI::Option* gravityOpt = runCmd->add_option(
+        "--gravity", gravity, "Gravity GX,GY in m/s^2, e.g. 0,-9.81 (default: the scene's)");
+    CLI::Option* stepsOpt = runCmd->add_option(
+        "--steps", steps, "Frames to simulate (default 600, i.e. 10 s at dt 1/60)");
+    CLI::Option* timeOpt =
+        runCmd->add_option("--time", time,
+                           "Simulate until T seconds of simulated time, or at most 100*T/dt frames "
+                           "if the event cap holds time back");
+    stepsOpt->excludes(timeOpt);
+    runCmd->add_flag("--json", run.json,
+                     "Print one JSON object: sim_time, steps, collisions, max_penetration, "
+                     "momentum, kinetic_energy, potential_energy, event_cap_hits, wall_ms, blocks");
+    methodOpt->type_name("M");
+    dtOpt->type_name("S");
+    substepsOpt->type_name("K");
+    bouncinessOpt->type_name("C");
+    gravityOpt->type_name("GX,GY");
+    stepsOpt->type_name("N");
+    timeOpt->type_name("T");
+
+    std::string validatePath;
+    CLI::App* validateCmd = app.add_subcommand(
+        "validate", "Check a scene file: print ok (exit 0) or the error and its place (exit 1).");
+    validateCmd->add_option("SCENE", validatePath, "Scene file (JSON, format v1)")->required();
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        // --help is a "parse error" with exit code 0; everything else is bad usage.
+        return app.exit(e) == 0 ? kExitOk : kExitUsage;
+    }
+
+    try {
+        if (*validateCmd) return validateCommand(validatePath, std::cout, std::cerr);
+        auto given = [](CLI::Option* option, const std::string& value) {
+            return option->count() > 0 ? std::optional<std::string>(value) : std::nullopt;
+        };
+        run.method = given(methodOpt, method);
+        run.dt = given(dtOpt, dt);
+        run.substeps = given(substepsOpt, substeps);
+        run.bounciness = given(bouncinessOpt, bounciness);
+        run.gravity = given(gravityOpt, gravity);
+        run.steps = given(stepsOpt, steps);
+        run.time = given(timeOpt, time);
+        return runCommand(run, std::cout, std::cerr);
+    } catch (const std::exception& e) { // e.g. out of memory on a huge scene
+        std::cerr << "sandbox-cli: " << e.what() << "\n";
+        return kExitBadInput;
+    }
+}
