@@ -1,5 +1,6 @@
 // sandbox-cli: simulate or validate scene files without a window (SPEC.md, "Command-line
 // contract"). Exit codes: 0 ok, 1 bad input (scene file or option value), 2 bad usage.
+#include "analysis_commands.h"
 #include "commands.h"
 
 #include <CLI/CLI.hpp>
@@ -53,6 +54,34 @@ int main(int argc, char** argv) {
         "validate", "Check a scene file: print ok (exit 0) or the error and its place (exit 1).");
     validateCmd->add_option("SCENE", validatePath, "Scene file (JSON, format v1)")->required();
 
+    AnalysisRequest tradeoff;
+    tradeoff.scenesDir = SANDBOX_SCENES_DIR;
+    CLI::App* tradeoffCmd = app.add_subcommand(
+        "tradeoff", "Speed versus accuracy: every method (and Box2D when built with it) over dt "
+                    "1/30..1/7680 and substeps 1 and 4 on scenes with known answers. Writes "
+                    "tradeoff.csv, tradeoff.md and tradeoff.png.");
+    tradeoffCmd->add_option("--out", tradeoff.outDir, "Output directory (created if missing)")
+        ->required()
+        ->type_name("DIR");
+    tradeoffCmd->add_option("--scenes", tradeoff.scenesDir, "Directory of the scene files")
+        ->type_name("DIR")
+        ->capture_default_str();
+    tradeoffCmd->add_flag("--quick", tradeoff.quick, "Three frame rates instead of nine");
+
+    AnalysisRequest stability;
+    stability.scenesDir = SANDBOX_SCENES_DIR;
+    CLI::App* stabilityCmd = app.add_subcommand(
+        "stability", "The stability matrix: failure scenes (tunnelling bullet, resting stack, "
+                     "inelastic collapse, Newton's cradle, corner hit, high mass ratio, jammed "
+                     "box) under every method, with the measured outcome of each. Writes "
+                     "stability.csv and stability.md.");
+    stabilityCmd->add_option("--out", stability.outDir, "Output directory (created if missing)")
+        ->required()
+        ->type_name("DIR");
+    stabilityCmd->add_option("--scenes", stability.scenesDir, "Directory of the scene files")
+        ->type_name("DIR")
+        ->capture_default_str();
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -62,6 +91,8 @@ int main(int argc, char** argv) {
 
     try {
         if (*validateCmd) return validateCommand(validatePath, std::cout, std::cerr);
+        if (*tradeoffCmd) return tradeoffCommand(tradeoff, std::cout, std::cerr);
+        if (*stabilityCmd) return stabilityCommand(stability, std::cout, std::cerr);
         auto given = [](CLI::Option* option, const std::string& value) {
             return option->count() > 0 ? std::optional<std::string>(value) : std::nullopt;
         };

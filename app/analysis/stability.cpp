@@ -1,0 +1,159 @@
+#include "stability.h"
+
+#include "collision.h"
+#include "scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace {
+
+std::string format(double v, int precision = 3) {
+    std::ostringstream s;
+    s << std::setprecision(precision) << v;
+    return s.str();
+}
+
+// Everything a verdict may need from one run.
+struct Run {
+    Scene scene;
+    World world;
+    std::vector<Vec2> start;
+    long collisions = 0;
+    int capHits = 0;
+    double maxPenetration = 0.0;
+    double maxDisplacement = 0.0; // m, largest distance of a block from its start
+    double startEnergy = 0.0;
+    bool crossed = false; // block 0 was seen beyond block 1 along x (tunnelling)
+};
+
+Run simulate(const Scene& scene, Method method, double seconds) {
+    Run run;
+    run.scene = scene;
+    run.world = makeWorld(scene);
+    run.world.settings.method = method;
+    run.startEnergy = kineticEnergy(run.world);
+    for (const Block& b : run.world.blocks) run.start.push_back(b.position);
+    const double side = run.world.blocks.size() > 1 ? run.start[1].x - run.start[0].x : 0.0;
+    const long frames = std::lround(seconds / scene.settings.dt);
+    for (long f = 0; f < frames; ++f) {
+        const StepStats s = run.world.step();
+        run.collisions += s.collisions;
+        run.capHits += s.eventCapHits;
+        run.maxPenetration = std::max(run.maxPenetration, s.maxPenetration);
+        for (size_t i = 0; i < run.start.size(); ++i)
+            run.maxDisplacement =
+                std::max(run.maxDisplacement, length(run.world.blocks[i].position - run.start[i]));
+        if (run.world.blocks.size() > 1 &&
+            (run.world.blocks[1].position.x - run.world.blocks[0].position.x) * side < 0.0)
+            run.crossed = true;
+    }
+    return run;
+}
+
+StabilityResult judge(const std::string& name, const Run& r) {
+    StabilityResult out;
+    out.scene = name;
+    out.method = methodName(r.world.settings.method);
+    const std::vector<Block>& b = r.world.blocks;
+    if (name == "bullet_wall") {
+        out.fails = r.crossed;
+        out.verdict = r.crossed ? "tunnels" : "stopped";
+        out.value = r.crossed;
+        out.detail = "bullet seen beyond the wall: " + std::string(r.crossed ? "yes" : "no");
+    } else if (name == "resting_stack") {
+        out.fails = r.maxDisplacement > 1e-9;
+        out.value = r.maxDisplacement;
+        out.verdict = out.fails ? "moves " + format(r.maxDisplacement) + " m" : "stable";
+        out.detail =
+            "largest displacement of a block over 5 s: " + format(r.maxDisplacement) + " m";
+    } else if (name == "newtons_cradle") {
+        // Exact: only the last block moves, at the striker's speed.
+        double error = std::abs(b.back().velocity.x - r.scene.blocks.front().velocity.x);
+        for (size_t i = 0; i + 1 < b.size(); ++i) error += length(b[i].velocity);
+        out.fails = error > 1e-9;
+        out.value = error;
+        out.verdict = out.fails ? "spreads (" + format(error) + " m/s off)" : "exact";
+        out.detail = "sum of velocity errors against the exact answer: " + format(error) + " m/s";
+    } else if (name == "corner_hit") {
+        const Vec2 v0 = r.scene.blocks.front().velocity, v = b.front().velocity;
+        const bool x = v.x * v0.x < 0.0, y = v.y * v0.y < 0.0;
+        out.fails = !(x && y);
+        out.value = (x ? 1 : 0) + (y ? 1 : 0);
+        out.verdict = x && y ? "both axes" : x ? "x only" : y ? "y only" : "missed";
+        out.detail = "velocity components reversed by the corner hit";
+    } else if (name == "high_mass_ratio") {
+        out.value = static_cast<double>(r.collisions);
+        out.fails = r.collisions != 3141 || r.maxPenetration > 1e-9;
+        out.verdict = std::to_string(r.collisions) + " collisions";
+        if (r.maxPenetration > 1e-9) out.verdict += ", overlap " + format(r.maxPenetration) + " m";
+        out.detail = "collisions counted (exact: 3141, the digits of pi for a mass ratio of 1e6)";
+    } else { // inelastic_collapse, jammed_box: the event cap, overlap, energy
+        const double drift =
+            r.startEnergy > 0.0 ? (kineticEnergy(r.world) - r.startEnergy) / r.startEnergy : 0.0;
+        out.fails = r.capHits > 0 || r.maxPenetration > 1e-9 || r.maxDisplacement < 1e-9;
+        out.value = r.capHits;
+        std::string v;
+        if (r.capHits > 0)
+            v = "event cap x" + std::to_string(r.capHits) + ", time behind " +
+                format(r.world.frame * r.scene.settings.dt - r.world.time) + " s";
+        if (r.maxPenetration > 1e-9)
+            v += std::string(v.empty() ? "" : ", ") + "overlap " + format(r.maxPenetration) + " m";
+        if (r.maxDisplacement < 1e-9) v = std::string("frozen") + (v.empty() ? "" : ", " + v);
+        out.verdict = v.empty() ? "settles" : v;
+        out.detail =
+            "event-cap hits, simulated time lost, largest overlap; kinetic energy change " +
+            format(drift);
+    }
+    return out;
+}
+
+struct FailureScene {
+    const char* name;
+    double seconds;
+};
+const FailureScene kScenes[] = {
+    {"bullet_wall", 1.0},    {"resting_stack", 5.0}, {"inelastic_collapse", 2.0},
+    {"newtons_cradle", 2.0}, {"corner_hit", 1.5},    {"high_mass_ratio", 20.0},
+    {"jammed_box", 1.0},
+};
+
+} // namespace
+
+std::vector<StabilityResult> runStability(const std::string& scenesDir) {
+    std::vector<StabilityResult> results;
+    for (const FailureScene& fs : kScenes) {
+        SceneResult loaded = loadSceneFile(scenesDir + "/" + fs.name + ".json");
+        if (!loaded.scene) throw std::runtime_error(loaded.error.text());
+        for (int m = 0; m < static_cast<int>(Method::Count); ++m)
+            results.push_back(
+                judge(fs.name, simulate(*loaded.scene, static_cast<Method>(m), fs.seconds)));
+    }
+    return results;
+}
+
+void writeStabilityCsv(std::ostream& out, const std::vector<StabilityResult>& results) {
+    out << "scene,method,verdict,fails,value,detail\n" << std::setprecision(9);
+    for (const StabilityResult& r : results)
+        out << r.scene << ',' << r.method << ",\"" << r.verdict << "\"," << (r.fails ? 1 : 0) << ','
+            << r.value << ",\"" << r.detail << "\"\n";
+}
+
+void writeStabilityMarkdown(std::ostream& out, const std::vector<StabilityResult>& results) {
+    out << "| scene |";
+    for (int m = 0; m < static_cast<int>(Method::Count); ++m)
+        out << ' ' << methodName(static_cast<Method>(m)) << " |";
+    out << "\n|---|---|---|---|\n";
+    for (size_t i = 0; i < results.size(); i += static_cast<size_t>(Method::Count)) {
+        out << "| " << results[i].scene << " |";
+        for (int m = 0; m < static_cast<int>(Method::Count); ++m) {
+            const StabilityResult& r = results[i + m];
+            out << ' ' << (r.fails ? "**" + r.verdict + "**" : r.verdict) << " |";
+        }
+        out << '\n';
+    }
+    out << "\nBold: the method shows the scene's failure.\n";
+}

@@ -1,0 +1,81 @@
+#include "analysis_commands.h"
+
+#include "commands.h"
+#include "stability.h"
+#include "tradeoff.h"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+namespace {
+
+// Creates the directory; false with a message on `err` when that fails.
+bool prepare(const std::string& dir, std::ostream& err) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir)) {
+        err << dir << ": cannot create the output directory" << (ec ? ": " + ec.message() : "")
+            << "\n";
+        return false;
+    }
+    return true;
+}
+
+// Writes a file with `write(stream)`; false with a message on `err` when it cannot be written.
+template <class Write> bool writeFile(const std::string& path, std::ostream& err, Write&& write) {
+    std::ofstream file(path);
+    if (file) write(file);
+    if (!file) {
+        err << path << ": cannot write\n";
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+int tradeoffCommand(const AnalysisRequest& request, std::ostream& out, std::ostream& err) {
+    if (!prepare(request.outDir, err)) return kExitBadInput;
+    TradeoffOptions options;
+    options.scenesDir = request.scenesDir;
+    options.quick = request.quick;
+    std::vector<TradeoffRow> rows;
+    try {
+        rows = runTradeoff(options);
+    } catch (const std::runtime_error& e) {
+        err << e.what() << "\n";
+        return kExitBadInput;
+    }
+    const std::string base = request.outDir + "/tradeoff";
+    std::string chartError;
+    if (!writeFile(base + ".csv", err, [&](std::ostream& f) { writeTradeoffCsv(f, rows); }) ||
+        !writeFile(base + ".md", err, [&](std::ostream& f) { writeTradeoffMarkdown(f, rows); }))
+        return kExitBadInput;
+    if (!writeTradeoffChart(base + ".png", rows, &chartError)) {
+        err << chartError << "\n";
+        return kExitBadInput;
+    }
+    out << rows.size() << " runs\nwrote " << base << ".csv\nwrote " << base << ".md\nwrote " << base
+        << ".png\n";
+    return kExitOk;
+}
+
+int stabilityCommand(const AnalysisRequest& request, std::ostream& out, std::ostream& err) {
+    if (!prepare(request.outDir, err)) return kExitBadInput;
+    std::vector<StabilityResult> results;
+    try {
+        results = runStability(request.scenesDir);
+    } catch (const std::runtime_error& e) {
+        err << e.what() << "\n";
+        return kExitBadInput;
+    }
+    const std::string base = request.outDir + "/stability";
+    if (!writeFile(base + ".csv", err, [&](std::ostream& f) { writeStabilityCsv(f, results); }) ||
+        !writeFile(base + ".md", err, [&](std::ostream& f) { writeStabilityMarkdown(f, results); }))
+        return kExitBadInput;
+    writeStabilityMarkdown(out, results);
+    out << "\nwrote " << base << ".csv\nwrote " << base << ".md\n";
+    return kExitOk;
+}

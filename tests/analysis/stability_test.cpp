@@ -1,0 +1,72 @@
+// The stability matrix's known outcomes: a change of behaviour either way (a method that stops
+// failing, or starts) makes one of these fail, and the README's matrix must then be updated.
+#include "stability.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+namespace {
+
+const std::map<std::pair<std::string, std::string>, StabilityResult>& matrix() {
+    static const auto results = [] {
+        std::map<std::pair<std::string, std::string>, StabilityResult> m;
+        for (const StabilityResult& r : runStability(SANDBOX_SCENES_DIR))
+            m[{r.scene, r.method}] = r;
+        return m;
+    }();
+    return results;
+}
+
+const StabilityResult& outcome(const std::string& scene, const std::string& method) {
+    return matrix().at({scene, method});
+}
+
+} // namespace
+
+TEST(Stability, BulletTunnelsOnlyUnderMoveAndCorrect) {
+    EXPECT_EQ(outcome("bullet_wall", "move-and-correct").verdict, "tunnels");
+    EXPECT_EQ(outcome("bullet_wall", "perfect").verdict, "stopped");
+    EXPECT_EQ(outcome("bullet_wall", "turn-based").verdict, "stopped");
+}
+
+TEST(Stability, RestingStackHoldsExceptUnderMoveAndCorrect) {
+    EXPECT_EQ(outcome("resting_stack", "perfect").verdict, "stable");
+    EXPECT_EQ(outcome("resting_stack", "turn-based").verdict, "stable");
+    EXPECT_TRUE(outcome("resting_stack", "move-and-correct").fails);
+    EXPECT_GT(outcome("resting_stack", "move-and-correct").value, 0.01); // m: it visibly moves
+}
+
+TEST(Stability, InelasticCollapseSettlesWithoutOverlapUnderExactMethods) {
+    EXPECT_EQ(outcome("inelastic_collapse", "perfect").verdict, "settles");
+    EXPECT_EQ(outcome("inelastic_collapse", "turn-based").verdict, "settles");
+    EXPECT_TRUE(outcome("inelastic_collapse", "move-and-correct").fails);
+}
+
+TEST(Stability, NewtonsCradleEndsWithOnlyTheLastBlockMoving) {
+    for (const char* method : {"perfect", "move-and-correct", "turn-based"})
+        EXPECT_EQ(outcome("newtons_cradle", method).verdict, "exact") << method;
+}
+
+TEST(Stability, CornerHitReversesBothAxesExceptUnderMoveAndCorrect) {
+    EXPECT_EQ(outcome("corner_hit", "perfect").verdict, "both axes");
+    EXPECT_EQ(outcome("corner_hit", "turn-based").verdict, "both axes");
+    EXPECT_EQ(outcome("corner_hit", "move-and-correct").verdict, "y only");
+}
+
+TEST(Stability, HighMassRatioCountsPiOnlyUnderPerfect) {
+    // Galperin: masses 1 and 100^3 collide floor(pi * 1000) = 3141 times, walls included.
+    EXPECT_EQ(outcome("high_mass_ratio", "perfect").value, 3141.0);
+    EXPECT_FALSE(outcome("high_mass_ratio", "perfect").fails);
+    EXPECT_TRUE(outcome("high_mass_ratio", "move-and-correct").fails);
+    EXPECT_TRUE(outcome("high_mass_ratio", "turn-based").fails);
+}
+
+TEST(Stability, JammedBoxFreezesPerfectAtTheEventCapWithoutOverlap) {
+    const StabilityResult& perfect = outcome("jammed_box", "perfect");
+    EXPECT_TRUE(perfect.fails);
+    EXPECT_GT(perfect.value, 0.0); // event-cap hits counted
+    EXPECT_EQ(perfect.verdict.find("overlap"), std::string::npos);
+    EXPECT_EQ(outcome("jammed_box", "turn-based").verdict, "frozen");
+    EXPECT_NE(outcome("jammed_box", "move-and-correct").verdict.find("overlap"), std::string::npos);
+}

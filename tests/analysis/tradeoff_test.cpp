@@ -1,0 +1,78 @@
+// The speed-versus-accuracy sweep: every engine runs every scene, and the exact method's errors
+// are at rounding level where the answer is exact (no assertion on cost: that is a time).
+#include "tradeoff.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+namespace {
+
+const std::vector<TradeoffRow>& quickRows() {
+    static const std::vector<TradeoffRow> rows = [] {
+        TradeoffOptions options;
+        options.scenesDir = SANDBOX_SCENES_DIR;
+        options.quick = true;
+        options.peers = false;
+        return runTradeoff(options);
+    }();
+    return rows;
+}
+
+} // namespace
+
+TEST(Tradeoff, EveryMethodRunsEveryScene) {
+    std::set<std::pair<std::string, std::string>> seen;
+    for (const TradeoffRow& r : quickRows()) {
+        seen.insert({r.engine, r.scene});
+        EXPECT_GT(r.dt, 0.0);
+        EXPECT_GE(r.error, 0.0);
+        EXPECT_FALSE(r.errorUnit.empty());
+    }
+    EXPECT_EQ(seen.size(), 3u * 5u);
+}
+
+TEST(Tradeoff, PerfectMethodIsExactWhereTheAnswerIsExact) {
+    // Tolerances: positions agree to rounding over ~1000 frames (1e-9 m is far above it); the gas
+    // conserves energy to rounding and never overlaps (relative 1e-12); the stack never moves.
+    for (const TradeoffRow& r : quickRows()) {
+        if (r.engine != "perfect") continue;
+        if (r.scene == "lecture_example_1" || r.scene == "newtons_cradle") {
+            EXPECT_LT(r.error, 1e-9) << r.scene;
+        } else if (r.scene == "gas_100") {
+            EXPECT_LT(r.error, 1e-12);
+        } else if (r.scene == "resting_stack") {
+            EXPECT_EQ(r.error, 0.0);
+        }
+    }
+}
+
+TEST(Tradeoff, BounceEnergyErrorShrinksWithTheStep) {
+    // Semi-implicit Euler's energy error is first order in dt: 16x smaller dt, clearly smaller.
+    double coarse = -1, fine = -1;
+    for (const TradeoffRow& r : quickRows())
+        if (r.engine == "perfect" && r.scene == "single_bounce" && r.substeps == 1) {
+            if (r.dt > 1.0 / 31) coarse = r.error;
+            if (r.dt < 1.0 / 479) fine = r.error;
+        }
+    ASSERT_GT(coarse, 0.0);
+    ASSERT_GE(fine, 0.0);
+    EXPECT_LT(fine, coarse / 2);
+}
+
+TEST(Tradeoff, WritesCsvMarkdownAndChart) {
+    std::ostringstream csv, md;
+    writeTradeoffCsv(csv, quickRows());
+    writeTradeoffMarkdown(md, quickRows());
+    EXPECT_EQ(csv.str().rfind("method,scene,dt,substeps,cost_ms_per_simulated_second,error", 0),
+              0u);
+    EXPECT_NE(md.str().find("## gas_100"), std::string::npos);
+    const std::string png = (std::filesystem::temp_directory_path() / "tradeoff_test.png").string();
+    std::string error;
+    ASSERT_TRUE(writeTradeoffChart(png, quickRows(), &error)) << error;
+    EXPECT_GT(std::filesystem::file_size(png), 10000u);
+    std::remove(png.c_str());
+}
