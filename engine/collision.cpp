@@ -79,6 +79,14 @@ Impact timeOfImpact(const Aabb& a, Vec2 velocityA, const Aabb& b, Vec2 velocityB
         if (towardB.y * relative.y <= 0.0) impact.axes &= ~kAxisY;
         if (impact.axes == 0) return {};
     }
+    if (impact.axes == kAxisX || impact.axes == kAxisY) {
+        const int other = impact.axes == kAxisX ? 1 : 0;
+        const double shift = relative[other] * impact.time;
+        const double overlap = std::min(a.max[other] + shift, b.max[other]) -
+                               std::max(a.min[other] + shift, b.min[other]);
+        const double towardB = (b.min[other] + b.max[other]) - (a.min[other] + a.max[other]);
+        if (overlap <= kTouchTolerance && !(relative[other] * towardB > 0.0)) return {};
+    }
     return impact;
 }
 

@@ -44,6 +44,9 @@ double outsideDepth(const Aabb& box, const Bounds& bounds);
 constexpr std::uint8_t kAxisX = 1;
 constexpr std::uint8_t kAxisY = 2;
 constexpr double kNever = std::numeric_limits<double>::infinity();
+// m: faces closer than this touch. Positions at a time of impact agree only to rounding, so a
+// block resting on another may overlap it by 1e-16 m; that is contact, not penetration.
+constexpr double kTouchTolerance = 1e-9;
 
 struct Impact {
     double time = kNever;  // s from now until the faces first touch
@@ -56,7 +59,9 @@ struct Impact {
 // part at t_exit; the boxes touch when the later entry comes before the earlier exit, and the
 // collision axis is the one whose entry comes last while the other overlaps. Boxes already
 // touching or overlapping by rounding on the entry axis report time 0. Only approaching motion
-// counts: boxes at rest relative to each other never collide.
+// counts: boxes at rest relative to each other never collide, and faces that meet while the
+// other axis overlaps by no more than kTouchTolerance and does not close (a block sliding along
+// another it rests on, an edge graze) do not collide either.
 Impact timeOfImpact(const Aabb& a, Vec2 velocityA, const Aabb& b, Vec2 velocityB, double maxTime);
 
 struct WallImpact {

@@ -4,11 +4,6 @@
 
 #include <algorithm>
 
-namespace {
-// Faces closer than this (m) touch: positions at a time of impact agree to rounding only.
-constexpr double kTouchTolerance = 1e-9;
-} // namespace
-
 Resolver::Resolver(SubstepContext& context) : ctx_(context) {}
 
 void Resolver::setNow(double now, std::vector<double>* localTime) {
@@ -155,8 +150,9 @@ Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) 
             if (inCluster_[j]) return;
             sync(j);
             const Aabb bj = aabbOf(blocks[j]);
-            if (std::min(box.max[other], bj.max[other]) - std::max(box.min[other], bj.min[other]) <=
-                0.0)
+            const double sideOverlap =
+                std::min(box.max[other], bj.max[other]) - std::max(box.min[other], bj.min[other]);
+            if (sideOverlap <= kTouchTolerance)
                 return; // side by side along the other axis, not resting on each other
             const double vj = blocks[j].velocity[axis];
             double closing;
