@@ -26,6 +26,7 @@ constexpr std::size_t kMaxBlocks = 200000;
 constexpr int kMaxDepth = 64;  // the format itself needs 4 levels
 constexpr double kMaxDt = 1.0; // s: longer frames are certainly a mistake
 constexpr int kMaxSubsteps = 1000;
+constexpr double kMaxMagnitude = 1e9; // the message below says 1e9
 // m: overlaps up to this much count as touching, so stacks typed in decimals ("exactly
 // touching" up to rounding) are accepted.
 constexpr double kTouchTolerance = 1e-9;
@@ -159,10 +160,15 @@ const json& requireObject(const json& value, const std::string& path) {
     return value;
 }
 
+// Every number in a scene is finite and at most kMaxMagnitude in size: coordinates in metres,
+// speeds in m/s, masses in kg and gravity in m/s^2 beyond that are mistakes, and squaring them
+// (energies) would overflow.
 double number(const json& value, const std::string& path) {
     if (!value.is_number()) throw ValueError{path, "must be a number"};
     const double x = value.get<double>();
     if (!std::isfinite(x)) throw ValueError{path, "must be a finite number"};
+    if (std::abs(x) > kMaxMagnitude)
+        throw ValueError{path, "must be between -1e9 and 1e9, not " + dumpValue(x)};
     return x;
 }
 
