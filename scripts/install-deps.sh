@@ -7,7 +7,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libstb-dev
   libimgui-dev libglfw3-dev libosmesa6-dev libgl-dev
-  xvfb xdotool x11-apps imagemagick
+  xvfb xdotool x11-apps imagemagick fonts-dejavu-core
   libbox2d-dev
 )
 

@@ -1,0 +1,28 @@
+// The app's own settings that persist between runs (ImGui keeps window placement in its ini):
+// the last scene, the UI scale and the window size. A small "key = value" text file under
+// $XDG_CONFIG_HOME/collision-sandbox/ (or ~/.config/collision-sandbox/).
+#pragma once
+
+#include <string>
+
+struct AppConfig {
+    std::string lastScene;
+    float uiScale = 1.0f;
+    int windowWidth = 1280;
+    int windowHeight = 720;
+};
+
+constexpr float kMinUiScale = 0.75f;
+constexpr float kMaxUiScale = 3.0f;
+
+// Parses the file's text; unknown keys and bad values are ignored (a hand-edited file never
+// stops the app from starting). Values are clamped to sane ranges.
+AppConfig parseAppConfig(const std::string& text);
+std::string formatAppConfig(const AppConfig& config);
+
+// The directory for the app's files ("" when neither $XDG_CONFIG_HOME nor $HOME is set).
+std::string configDirectory();
+// Loads `dir`/settings.txt; defaults when missing.
+AppConfig loadAppConfig(const std::string& dir);
+// Writes `dir`/settings.txt, creating `dir`. False on failure (the app carries on).
+bool saveAppConfig(const std::string& dir, const AppConfig& config);

@@ -1,0 +1,138 @@
+#include "app_frame.h"
+
+#include "renderer.h"
+
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+
+#include <cstdio>
+
+namespace {
+
+void handleKeys(App& app, const std::vector<KeyPress>& keys) {
+    // Typing into a text field (a file name) must not trigger hotkeys.
+    if (ImGui::GetIO().WantTextInput) return;
+    for (const KeyPress& k : keys) applyAction(app, actionForKey(k.key, k.ctrl));
+}
+
+void logEvent(const App& app, const char* text) {
+    if (!app.verbose) return;
+    std::printf("%s\n", text);
+    std::fflush(stdout);
+}
+
+} // namespace
+
+void applyAction(App& app, Action action) {
+    switch (action) {
+    case Action::None:
+        break;
+    case Action::Reset:
+        resetScene(app);
+        logEvent(app, "reset");
+        break;
+    case Action::TogglePause:
+        app.paused = !app.paused;
+        break;
+    case Action::ToggleSlowMotion:
+        app.slowMotion = !app.slowMotion;
+        break;
+    case Action::ToggleTrails:
+        app.show.trails = !app.show.trails;
+        break;
+    case Action::ClearTrails:
+        app.trails.clear();
+        break;
+    case Action::CycleMethod:
+        cycleMethod(app);
+        break;
+    case Action::StepOnce:
+        app.paused = true;
+        stepSimulation(app);
+        logEvent(app, "step");
+        break;
+    case Action::ToggleVectors:
+        app.show.vectors = !app.show.vectors;
+        break;
+    case Action::FitView:
+        app.autoFit = true;
+        break;
+    case Action::ToggleUi:
+        app.uiVisible = !app.uiVisible;
+        break;
+    case Action::ToggleFullscreen:
+        app.fullscreenRequested = true;
+        break;
+    case Action::ToggleHelp:
+        app.helpOpen = !app.helpOpen;
+        break;
+    case Action::UiScaleUp:
+        setUiScale(app, app.uiScale + 0.25f);
+        break;
+    case Action::UiScaleDown:
+        setUiScale(app, app.uiScale - 0.25f);
+        break;
+    case Action::DeleteSelected:
+        deleteSelected(app);
+        break;
+    case Action::Quit:
+        app.quitRequested = true;
+        break;
+    case Action::Save:
+        if (app.savePath.empty()) app.savePath = "saved_scene.json";
+        saveCurrentScene(app, app.savePath);
+        break;
+    }
+}
+
+void logStateChanges(App& app) {
+    const LoggedState now = snapshotForLog(app);
+    if (app.verbose && app.loggedValid) {
+        for (const std::string& line : describeChanges(app.logged, now)) {
+            std::printf("%s\n", line.c_str());
+        }
+        std::fflush(stdout);
+    }
+    app.logged = now;
+    app.loggedValid = true;
+}
+
+void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, bool runClock) {
+    const ImGuiIO& io = ImGui::GetIO();
+    updateCamera(app, io.DisplaySize.x, io.DisplaySize.y);
+    handleKeys(app, keys);
+    handleSceneMouse(app);
+    updateCamera(app, io.DisplaySize.x, io.DisplaySize.y); // the UI toggle may have changed it
+    if (runClock) advanceSimulation(app, realSeconds);
+    drawSceneDecorations(app);
+    if (app.uiVisible) drawControlsPanel(app);
+    if (app.helpOpen) drawHelpWindow(app);
+    logStateChanges(app);
+}
+
+void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
+               int framebufferHeight) {
+    const ImGuiIO& io = ImGui::GetIO();
+    glViewport(0, 0, framebufferWidth, framebufferHeight);
+    SceneView view;
+    view.world = &app.world;
+    view.camera = &app.camera;
+    view.displayWidth = io.DisplaySize.x;
+    view.displayHeight = io.DisplaySize.y;
+    view.selected = app.selected;
+    view.vectors = app.show.vectors;
+    view.trails = app.show.trails ? &app.trails : nullptr;
+    view.blockColors.reserve(app.world.blocks.size());
+    for (std::size_t i = 0; i < app.world.blocks.size(); ++i) {
+        view.blockColors.push_back(blockDisplayColor(app, static_cast<int>(i)));
+    }
+    const MouseTool& m = app.mouse;
+    if (m.mode == MouseTool::Mode::Flinging && m.block >= 0 &&
+        m.block < static_cast<int>(app.world.blocks.size())) {
+        view.flingActive = true;
+        view.flingFrom = app.world.blocks[static_cast<std::size_t>(m.block)].position;
+        view.flingTo = view.flingFrom + (m.cursorWorld - m.pressWorld);
+    }
+    renderer.draw(view);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}

@@ -1,0 +1,30 @@
+// One frame of the app, shared by the window and the offscreen renderer so both show the same:
+// keys and mouse, the fixed-step simulation, the panels, then the scene drawn with GL and the
+// ImGui draw data on top.
+#pragma once
+
+#include "app_state.h"
+#include "input_map.h"
+
+class SceneRenderer;
+
+#include <vector>
+
+// Between ImGui::NewFrame() and ImGui::Render(): the key presses since the last frame, the mouse,
+// the simulation (when `runClock`: the window passes real time; the offscreen renderer steps
+// explicitly) and the UI.
+void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, bool runClock);
+// After ImGui::Render(): clears and draws the scene, then the ImGui draw data.
+void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
+               int framebufferHeight);
+// Does what a key binding says (also used by the panel's buttons).
+void applyAction(App& app, Action action);
+// Prints the --verbose lines for what changed since the last call.
+void logStateChanges(App& app);
+
+// Panels (one file each).
+void drawControlsPanel(App& app);
+void drawHelpWindow(App& app);
+// Mouse in the scene, block labels, hover tooltip and the status badge.
+void handleSceneMouse(App& app);
+void drawSceneDecorations(const App& app);

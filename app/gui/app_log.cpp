@@ -1,0 +1,61 @@
+#include "app_log.h"
+
+#include "app_state.h"
+
+#include <cstdio>
+
+namespace {
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
+} // namespace
+
+LoggedState snapshotForLog(const App& app) {
+    LoggedState s;
+    s.scene = app.scenePath;
+    s.paused = app.paused;
+    s.slowMotion = app.slowMotion;
+    s.trails = app.show.trails;
+    s.vectors = app.show.vectors;
+    s.uiVisible = app.uiVisible;
+    s.method = methodName(app.world.settings.method);
+    s.bounciness = app.world.settings.bounciness;
+    s.gravityX = app.world.settings.gravity.x;
+    s.gravityY = app.world.settings.gravity.y;
+    s.dt = app.world.settings.dt;
+    s.substeps = app.world.settings.substeps;
+    s.timeScale = app.timeScale;
+    s.uiScale = app.uiScale;
+    s.blocks = static_cast<int>(app.world.blocks.size());
+    s.selected = app.selected;
+    s.trailLength = app.trails.length();
+    return s;
+}
+
+std::vector<std::string> describeChanges(const LoggedState& a, const LoggedState& b) {
+    std::vector<std::string> out;
+    auto onOff = [](bool v) { return v ? std::string("on") : std::string("off"); };
+    if (a.scene != b.scene) out.push_back("scene: " + b.scene);
+    if (a.paused != b.paused) out.push_back(b.paused ? "paused" : "resumed");
+    if (a.slowMotion != b.slowMotion) out.push_back("slow motion: " + onOff(b.slowMotion));
+    if (a.trails != b.trails) out.push_back("trails: " + onOff(b.trails));
+    if (a.trailLength > 0 && b.trailLength == 0) out.push_back("trails cleared");
+    if (a.vectors != b.vectors) out.push_back("vectors: " + onOff(b.vectors));
+    if (a.uiVisible != b.uiVisible) out.push_back("ui: " + onOff(b.uiVisible));
+    if (a.method != b.method) out.push_back("method: " + b.method);
+    if (a.bounciness != b.bounciness) out.push_back("bounciness: " + number(b.bounciness));
+    if (a.gravityX != b.gravityX || a.gravityY != b.gravityY) {
+        out.push_back("gravity: " + number(b.gravityX) + "," + number(b.gravityY));
+    }
+    if (a.dt != b.dt) out.push_back("dt: " + number(b.dt));
+    if (a.substeps != b.substeps) out.push_back("substeps: " + std::to_string(b.substeps));
+    if (a.timeScale != b.timeScale) out.push_back("time scale: " + number(b.timeScale));
+    if (a.uiScale != b.uiScale) out.push_back("ui scale: " + number(b.uiScale));
+    if (a.blocks != b.blocks) out.push_back("blocks: " + std::to_string(b.blocks));
+    if (a.selected != b.selected) out.push_back("selected: " + std::to_string(b.selected));
+    return out;
+}

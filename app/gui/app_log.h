@@ -1,0 +1,32 @@
+// The --verbose log: one stdout line per observable state change (pause, method, sliders, ...),
+// found by comparing snapshots between frames. It lets the end-to-end test check that a key or
+// a slider acted, and lets a lecturer keep a record of a session.
+#pragma once
+
+#include <string>
+#include <vector>
+
+struct App;
+
+struct LoggedState {
+    std::string scene;
+    bool paused = false;
+    bool slowMotion = false;
+    bool trails = false;
+    bool vectors = false;
+    bool uiVisible = true;
+    std::string method;
+    double bounciness = 0.0;
+    double gravityX = 0.0, gravityY = 0.0;
+    double dt = 0.0;
+    int substeps = 0;
+    double timeScale = 0.0;
+    float uiScale = 0.0f;
+    int blocks = 0;
+    int selected = -1;
+    int trailLength = 0;
+};
+
+LoggedState snapshotForLog(const App& app);
+// The lines describing what changed from `before` to `after` ("paused", "method: turn-based").
+std::vector<std::string> describeChanges(const LoggedState& before, const LoggedState& after);

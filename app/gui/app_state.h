@@ -1,0 +1,134 @@
+// The application's state: the loaded scene, the world, selection, camera and toggles. The UI
+// (ImGui, immediate mode) binds its widgets to this struct every frame; everything here is plain
+// logic with no GL or ImGui, so it is tested on its own.
+#pragma once
+
+#include "app_log.h"
+#include "camera.h"
+#include "fixed_step.h"
+#include "mouse_tool.h"
+#include "options.h"
+#include "palette.h"
+#include "scene.h"
+#include "scene_library.h"
+#include "trails.h"
+#include "world.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+// What each block is called and how it is coloured; parallel to world.blocks (the engine's Block
+// has no name), kept in step when blocks are added or removed.
+struct BlockLabel {
+    std::string name;
+    std::string color; // "#rrggbb" or "" for the palette
+};
+
+// The overlays that can be shown. Trails and vectors are drawn now; the others are accepted on
+// the command line and kept here for the teaching overlays (plots, inspector, ...).
+struct Overlays {
+    bool trails = false;
+    bool vectors = true;
+    bool plots = false;
+    bool inspector = false;
+    bool com = false;
+    bool poi = false;
+    bool sideBySide = false;
+};
+
+// Velocity arrows are on by default for scenes with at most this many blocks (more is clutter).
+constexpr std::size_t kVectorsByDefaultUpTo = 50;
+
+// Running totals since the last load or reset.
+struct RunTotals {
+    std::uint64_t collisions = 0;
+    std::uint64_t eventCapHits = 0;
+    double maxPenetration = 0.0;
+};
+
+struct App {
+    // The scene as loaded (Reset goes back to it) and where it came from.
+    std::string scenePath;
+    Scene scene;
+    // The live state.
+    World world;
+    std::vector<BlockLabel> labels;
+    StepStats stats;
+    RunTotals totals;
+    int selected = -1;
+    // Run control.
+    bool paused = false;
+    bool slowMotion = false;
+    double timeScale = 1.0;
+    FixedStepClock clock;
+    // View.
+    Camera camera;
+    bool autoFit = true; // refit the camera when the viewport changes, until the user zooms/pans
+    Trails trails;
+    Overlays show;
+    bool overlaysChosen = false; // --show given: scenes no longer pick the default overlays
+    bool uiVisible = true;
+    bool helpOpen = false;
+    float uiScale = 1.0f;
+    MouseTool mouse;
+    // Messages for the panel: the last error (load or save) and the last note.
+    std::string error;
+    std::string note;
+    // Requests to the window backend.
+    bool quitRequested = false;
+    bool fullscreenRequested = false;
+    std::string savePath; // the Save field's path
+    std::string openPath; // the Open field's path
+    // The shipped scenes (the picker) and where they are.
+    std::string scenesDir;
+    std::vector<SceneEntry> sceneFiles;
+    // --verbose: print state changes to stdout.
+    bool verbose = false;
+    LoggedState logged;
+    bool loggedValid = false;
+    bool layoutLogged = false; // --verbose prints one slider's place once (for the window test)
+};
+
+// Width of the controls panel in pixels for a UI scale and window width.
+double panelWidth(float uiScale, double displayWidth);
+// The part of the window the scene is drawn into (right of the panel, or all when hidden).
+ScreenRect sceneViewport(const App& app, double displayWidth, double displayHeight);
+// Gives the camera this frame's viewport; refits the world while app.autoFit holds.
+void updateCamera(App& app, double displayWidth, double displayHeight);
+// Changes the kind of block `index` (dynamic blocks get mass 1 kg when they had none).
+void setBlockKind(App& app, int index, BodyKind kind);
+// Resizes block `index` when the new size fits without overlap; false (nothing changed) if not.
+bool setBlockSize(App& app, int index, Vec2 size);
+
+// Loads `path` as the current scene. On error, keeps the current scene, sets app.error and
+// returns false.
+bool loadScene(App& app, const std::string& path);
+// Uses an already parsed scene (tests, and the first scene when none can be loaded).
+void setScene(App& app, const Scene& scene, const std::string& path);
+// Back to the scene as loaded (settings included); trails cleared.
+void resetScene(App& app);
+// One simulation frame of settings.dt; updates stats, totals and trails.
+void stepSimulation(App& app);
+// Advances the fixed-step clock by `realSeconds` and runs the due frames (none while paused or
+// while the mouse holds a block). Returns the number of frames run.
+int advanceSimulation(App& app, double realSeconds);
+// perfect -> move-and-correct -> turn-based -> perfect.
+void cycleMethod(App& app);
+// The current state as a format v1 scene (names and colours kept).
+Scene currentScene(const App& app);
+// Saves currentScene() to `path`; sets app.note or app.error.
+bool saveCurrentScene(App& app, const std::string& path);
+// Adds a 1 m dynamic block near `at` without overlap; returns its index or -1 (no room).
+int addBlockAt(App& app, Vec2 at);
+// Removes the selected block (if any).
+void deleteSelected(App& app);
+// Sets the overlays from a --show list.
+void applyShowSet(App& app, const ShowSet& show);
+// Clamps the UI scale into its range.
+void setUiScale(App& app, float scale);
+// The colour block `index` is drawn in: its scene colour, else a palette colour (dynamic) or the
+// colour of static or kinematic blocks.
+Color blockDisplayColor(const App& app, int index);
+// Name shown for block `index` ("#3" when it has none).
+std::string blockDisplayName(const App& app, int index);

@@ -1,0 +1,225 @@
+// The controls panel: scene, run control, simulation settings, the selected block, statistics
+// and view options, bound to App every frame (immediate mode: no state of its own).
+#include "app_frame.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace {
+
+const ImVec4 kErrorColor{1.0f, 0.45f, 0.42f, 1.0f};
+const ImVec4 kNoteColor{0.55f, 0.85f, 0.60f, 1.0f};
+const ImVec4 kDimColor{0.62f, 0.66f, 0.74f, 1.0f};
+
+void tooltip(const char* text) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+void statRow(const char* name, const char* fmt, double value) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(name);
+    ImGui::TableNextColumn();
+    ImGui::Text(fmt, value);
+}
+
+void scenePicker(App& app) {
+    const char* preview = app.scene.name.empty() ? "(no scene)" : app.scene.name.c_str();
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::BeginCombo("##scene", preview)) {
+        for (const SceneEntry& e : app.sceneFiles) {
+            const bool current = e.path == app.scenePath;
+            if (ImGui::Selectable(e.title.c_str(), current)) loadScene(app, e.path);
+            if (current) ImGui::SetItemDefaultFocus();
+        }
+        if (app.sceneFiles.empty()) ImGui::TextDisabled("no scenes found");
+        ImGui::EndCombo();
+    }
+    tooltip("The shipped scenes (app/scenes)");
+}
+
+void fileSection(App& app) {
+    if (!ImGui::CollapsingHeader("Open and save")) return;
+    ImGui::InputTextWithHint("##open", "path/to/scene.json", &app.openPath);
+    ImGui::SameLine();
+    if (ImGui::Button("Open") && !app.openPath.empty()) loadScene(app, app.openPath);
+    ImGui::InputTextWithHint("##save", "save as .json", &app.savePath);
+    ImGui::SameLine();
+    if (ImGui::Button("Save")) saveCurrentScene(app, app.savePath);
+    tooltip("Save the current state as a scene file (format v1); Ctrl+S");
+}
+
+void runSection(App& app) {
+    const float w = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
+    if (ImGui::Button(app.paused ? "Play  (P)" : "Pause (P)", ImVec2(w, 0))) {
+        applyAction(app, Action::TogglePause);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Step (N)", ImVec2(w, 0))) applyAction(app, Action::StepOnce);
+    ImGui::SameLine();
+    if (ImGui::Button("Reset (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
+    ImGui::Checkbox("Slow motion, 5 frames/s (Space)", &app.slowMotion);
+    ImGui::Text("t = %.3f s", app.world.time);
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.5f);
+    ImGui::Text("frame %llu", static_cast<unsigned long long>(app.world.frame));
+}
+
+void simulationSection(App& app) {
+    if (!ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    WorldSettings& s = app.world.settings;
+    int method = static_cast<int>(s.method);
+    const char* names[] = {methodName(Method::Perfect), methodName(Method::MoveAndCorrect),
+                           methodName(Method::TurnBased)};
+    if (ImGui::Combo("method (S)", &method, names, 3)) s.method = static_cast<Method>(method);
+    tooltip("perfect: events in time order, no overlap\nmove-and-correct: move, then push "
+            "apart\nturn-based: one body at a time");
+    float c = static_cast<float>(s.bounciness);
+    const float sliderWidth = ImGui::CalcItemWidth();
+    if (ImGui::SliderFloat("bounciness C", &c, 0.0f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) {
+        s.bounciness = c;
+    }
+    tooltip("Coefficient of restitution: 1 elastic, 0 perfectly inelastic");
+    if (app.verbose && !app.layoutLogged) {
+        const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+        std::printf("widget bounciness %d %d %d %d\n", static_cast<int>(a.x), static_cast<int>(a.y),
+                    static_cast<int>(sliderWidth), static_cast<int>(b.y - a.y));
+        app.layoutLogged = true;
+    }
+    float g[2] = {static_cast<float>(s.gravity.x), static_cast<float>(s.gravity.y)};
+    if (ImGui::SliderFloat("gravity x", &g[0], -20.0f, 20.0f, "%.2f m/s²")) s.gravity.x = g[0];
+    if (ImGui::SliderFloat("gravity y", &g[1], -20.0f, 20.0f, "%.2f m/s²")) s.gravity.y = g[1];
+    if (ImGui::Button("g = 0")) s.gravity = Vec2{0.0, 0.0};
+    ImGui::SameLine();
+    if (ImGui::Button("g = 9.81 down")) s.gravity = Vec2{0.0, -9.81};
+    float hz = static_cast<float>(1.0 / s.dt);
+    if (ImGui::SliderFloat("frame rate", &hz, 5.0f, 240.0f, "%.0f Hz",
+                           ImGuiSliderFlags_AlwaysClamp)) {
+        s.dt = 1.0 / static_cast<double>(hz);
+    }
+    tooltip("Simulation frames per simulated second: dt = 1 / rate");
+    ImGui::SliderInt("substeps", &s.substeps, 1, 32, "%d", ImGuiSliderFlags_AlwaysClamp);
+    float scale = static_cast<float>(app.timeScale);
+    if (ImGui::SliderFloat("time scale", &scale, 0.05f, 4.0f, "%.2fx",
+                           ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
+        app.timeScale = scale;
+    }
+}
+
+void selectedSection(App& app) {
+    if (!ImGui::CollapsingHeader("Selected block", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const int i = app.selected;
+    if (i < 0 || i >= static_cast<int>(app.world.blocks.size())) {
+        ImGui::TextColored(kDimColor, "Click a block to select it.");
+        ImGui::TextColored(kDimColor, "Double-click empty space to add one.");
+        return;
+    }
+    Block& b = app.world.blocks[static_cast<std::size_t>(i)];
+    ImGui::Text("%s", blockDisplayName(app, i).c_str());
+    int kind = static_cast<int>(b.kind);
+    bool changed = ImGui::RadioButton("dynamic", &kind, 0);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("static", &kind, 1);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("kinematic", &kind, 2);
+    if (changed) setBlockKind(app, i, static_cast<BodyKind>(kind));
+    if (b.isDynamic()) {
+        float mass = static_cast<float>(b.mass);
+        if (ImGui::SliderFloat("mass", &mass, 0.01f, 1000.0f, "%.3g kg",
+                               ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
+            b.mass = mass;
+        }
+    } else {
+        ImGui::TextColored(kDimColor, "mass: infinite");
+    }
+    float size[2] = {static_cast<float>(b.size.x), static_cast<float>(b.size.y)};
+    if (ImGui::DragFloat2("size", size, 0.02f, 0.05f, 50.0f, "%.2f m")) {
+        if (!setBlockSize(app, i, {size[0], size[1]})) app.note = "That size would overlap";
+    }
+    if (b.kind != BodyKind::Static) {
+        float v[2] = {static_cast<float>(b.velocity.x), static_cast<float>(b.velocity.y)};
+        if (ImGui::DragFloat2("velocity", v, 0.05f, -1000.0f, 1000.0f, "%.2f m/s")) {
+            b.velocity = Vec2{v[0], v[1]};
+        }
+    }
+    ImGui::TextColored(kDimColor, "position (%.2f, %.2f) m", b.position.x, b.position.y);
+    if (ImGui::Button("Delete block")) deleteSelected(app);
+}
+
+void statisticsSection(App& app) {
+    if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const StepStats& s = app.stats;
+    if (!ImGui::BeginTable("stats", 2, ImGuiTableFlags_SizingStretchProp)) return;
+    statRow("collisions / frame", "%.0f", s.collisions);
+    statRow("events / frame", "%.0f", s.events);
+    statRow("largest overlap", "%.4f m", s.maxPenetration);
+    statRow("event-cap hits", "%.0f", static_cast<double>(app.totals.eventCapHits));
+    statRow("step time", "%.3f ms", s.stepMs);
+    statRow("collisions (total)", "%.0f", static_cast<double>(app.totals.collisions));
+    statRow("momentum x", "%.3f kg·m/s", s.momentum.x);
+    statRow("momentum y", "%.3f kg·m/s", s.momentum.y);
+    statRow("kinetic energy", "%.3f J", s.kineticEnergy);
+    statRow("total energy", "%.3f J", s.kineticEnergy + s.potentialEnergy);
+    ImGui::EndTable();
+}
+
+void viewSection(App& app) {
+    if (!ImGui::CollapsingHeader("View")) return;
+    ImGui::Checkbox("trajectories (D)", &app.show.trails);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("clear (C)")) applyAction(app, Action::ClearTrails);
+    ImGui::Checkbox("velocity arrows (V)", &app.show.vectors);
+    float scale = app.uiScale;
+    if (ImGui::SliderFloat("UI scale", &scale, 0.75f, 3.0f, "%.2f")) {
+        // Applied when released: rebuilding the font under the cursor would fight the slider.
+        app.note = "UI scale applies on release";
+    }
+    if (ImGui::IsItemDeactivatedAfterEdit()) setUiScale(app, scale);
+    if (ImGui::Button("Fit view (F)")) applyAction(app, Action::FitView);
+    ImGui::SameLine();
+    if (ImGui::Button("Help (F1)")) app.helpOpen = true;
+}
+
+} // namespace
+
+void drawControlsPanel(App& app) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const float width = static_cast<float>(panelWidth(app.uiScale, io.DisplaySize.x));
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y), ImGuiCond_Always);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
+    if (!ImGui::Begin("Controls", nullptr, flags)) {
+        ImGui::End();
+        return;
+    }
+    ImGui::PushItemWidth(width * 0.52f);
+    scenePicker(app);
+    if (!app.scene.description.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+        ImGui::TextWrapped("%s", app.scene.description.c_str());
+        ImGui::PopStyleColor();
+    }
+    if (!app.error.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
+        ImGui::TextWrapped("%s", app.error.c_str());
+        ImGui::PopStyleColor();
+        if (ImGui::SmallButton("dismiss")) app.error.clear();
+    } else if (!app.note.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kNoteColor);
+        ImGui::TextWrapped("%s", app.note.c_str());
+        ImGui::PopStyleColor();
+    }
+    ImGui::Separator();
+    runSection(app);
+    simulationSection(app);
+    selectedSection(app);
+    statisticsSection(app);
+    viewSection(app);
+    fileSection(app);
+    ImGui::PopItemWidth();
+    ImGui::End();
+}

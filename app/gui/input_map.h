@@ -1,0 +1,71 @@
+// The keyboard map: which key does what (the lecture's debug keys and the sandbox's own), as pure
+// data and one function, so the Help window and the tests read the same table.
+#pragma once
+
+#include <vector>
+
+// Key codes are GLFW's: ImGui 1.86 with its GLFW backend indexes io.KeysDown by them, and the
+// offscreen renderer uses the same codes. window_glfw.cpp checks they match <GLFW/glfw3.h>.
+namespace keys {
+constexpr int kSpace = 32;
+constexpr int kMinus = 45;
+constexpr int kEqual = 61;
+constexpr int kC = 67;
+constexpr int kD = 68;
+constexpr int kF = 70;
+constexpr int kN = 78;
+constexpr int kP = 80;
+constexpr int kR = 82;
+constexpr int kS = 83;
+constexpr int kV = 86;
+constexpr int kEscape = 256;
+constexpr int kTab = 258;
+constexpr int kDelete = 261;
+constexpr int kF1 = 290;
+constexpr int kF11 = 300;
+constexpr int kKeypadSubtract = 333;
+constexpr int kKeypadAdd = 334;
+} // namespace keys
+
+enum class Action {
+    None,
+    Reset,            // R: back to the scene as loaded
+    TogglePause,      // P
+    ToggleSlowMotion, // Space: 5 simulation frames per second, as in the lecture's demo
+    ToggleTrails,     // D: draw trajectories
+    ClearTrails,      // C: clear trajectories
+    CycleMethod,      // S: perfect -> move-and-correct -> turn-based
+    StepOnce,         // N: one frame (pauses)
+    ToggleVectors,    // V: velocity arrows
+    FitView,          // F: show the whole world
+    ToggleUi,         // Tab
+    ToggleFullscreen, // F11
+    ToggleHelp,       // F1
+    UiScaleUp,        // Ctrl+=
+    UiScaleDown,      // Ctrl+-
+    DeleteSelected,   // Delete
+    Quit,             // Esc
+    Save,             // Ctrl+S: save the current state (to the path in the Save field)
+};
+
+// A key press as the window reports it (queued by the window backend, so a tap shorter than a
+// frame is not lost: ImGui 1.86 only sees keys still down at the start of a frame).
+struct KeyPress {
+    int key;
+    bool ctrl;
+};
+
+struct KeyBinding {
+    int key;
+    bool ctrl;
+    Action action;
+    const char* keyName;     // as shown in the Help window
+    const char* description; // as shown in the Help window
+};
+
+// Every binding, in the order the Help window lists them.
+const std::vector<KeyBinding>& keyBindings();
+// The action for `key` pressed with (or without) Ctrl; Action::None when unbound.
+Action actionForKey(int key, bool ctrl);
+// A short name for logs ("reset", "pause", ...).
+const char* actionName(Action action);

@@ -1,0 +1,127 @@
+// sandbox: the window a lecturer opens in class. With no display, or for --screenshot, --record
+// and --benchmark-frames, it runs the sibling `sandbox-offscreen` with the same arguments
+// (one executable cannot link both libGL and OSMesa).
+#include "app_config.h"
+#include "app_frame.h"
+#include "app_setup.h"
+#include "options.h"
+#include "renderer.h"
+#include "scene_library.h"
+#include "ui_style.h"
+#include "window_glfw.h"
+
+#include <imgui.h>
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace {
+
+int execOffscreen(int argc, char** argv, bool addDefaultScreenshot) {
+    const std::string path = executableDirectory() + "/sandbox-offscreen";
+    std::vector<std::string> args(argv, argv + argc);
+    args[0] = path;
+    if (addDefaultScreenshot) {
+        args.push_back("--screenshot");
+        args.push_back("sandbox-screenshot.png");
+    }
+    std::vector<char*> cargs;
+    for (std::string& a : args) cargs.push_back(a.data());
+    cargs.push_back(nullptr);
+    std::fflush(stdout);
+    std::fflush(stderr);
+    execv(path.c_str(), cargs.data());
+    std::fprintf(stderr, "sandbox: cannot run %s: %s\n", path.c_str(), std::strerror(errno));
+    return 1;
+}
+
+int runWindow(const Options& options, char** argv, int argc) {
+    const std::string configDir = configDirectory();
+    AppConfig config = loadAppConfig(configDir);
+    App app;
+    std::string error;
+    if (!setupApp(app, options, config.lastScene, &error)) {
+        std::fprintf(stderr, "sandbox: %s\n", error.c_str());
+        return 1;
+    }
+    setUiScale(app, options.uiScale > 0.0f ? options.uiScale : config.uiScale);
+    const bool sizeGiven = options.width != 1280 || options.height != 720;
+    const int width = sizeGiven ? options.width : config.windowWidth;
+    const int height = sizeGiven ? options.height : config.windowHeight;
+
+    std::string iniPath;
+    if (!configDir.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(configDir, ec);
+        if (!ec) iniPath = configDir + "/imgui.ini";
+    }
+    uiCreateContext(iniPath.empty() ? nullptr : iniPath.c_str());
+    uiApplyScale(app.uiScale, false);
+    WindowGlfw window;
+    if (!windowInit(window, width, height, "Collision sandbox", &error)) {
+        uiDestroyContext();
+        std::fprintf(stderr, "sandbox: no window: %s; rendering offscreen instead\n",
+                     error.c_str());
+        return execOffscreen(argc, argv, true);
+    }
+    SceneRenderer renderer;
+    if (!renderer.init(&error)) {
+        std::fprintf(stderr, "sandbox: shader error: %s\n", error.c_str());
+        app.error = "Shader error: " + error;
+    }
+    bool first = true;
+    double realSeconds = 0.0;
+    while (!app.quitRequested && windowNewFrame(window, &realSeconds)) {
+        ImGui::NewFrame();
+        appFrame(app, windowTakeKeyPresses(window), realSeconds, true);
+        ImGui::Render();
+        int fw = 0, fh = 0;
+        windowFramebufferSize(window, &fw, &fh);
+        appRender(app, renderer, fw, fh);
+        windowPresent(window);
+        if (first && app.verbose) {
+            std::printf("window ready %dx%d\n", fw, fh);
+            std::fflush(stdout);
+        }
+        first = false;
+        if (app.fullscreenRequested) {
+            windowSetFullscreen(window, !window.fullscreen);
+            app.fullscreenRequested = false;
+        }
+        if (app.uiScale != uiCurrentScale()) uiApplyScale(app.uiScale, true);
+    }
+    config.lastScene = app.scenePath;
+    config.uiScale = app.uiScale;
+    windowSize(window, &config.windowWidth, &config.windowHeight);
+    if (!saveAppConfig(configDir, config) && !configDir.empty()) {
+        std::fprintf(stderr, "sandbox: cannot save settings in %s\n", configDir.c_str());
+    }
+    renderer.shutdown();
+    windowShutdown(window);
+    uiDestroyContext();
+    if (app.verbose) std::printf("quit\n");
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const ParsedOptions parsed = parseOptions(argc, argv);
+    if (parsed.exit) return parsed.exitCode;
+    const Options& options = parsed.options;
+    if (wantsOffscreen(options)) return execOffscreen(argc, argv, false);
+    const char* display = std::getenv("DISPLAY");
+    if (!display || !*display) {
+        std::fprintf(stderr, "sandbox: no display (DISPLAY is not set): rendering offscreen to a "
+                             "PNG instead\n");
+        return execOffscreen(argc, argv, true);
+    }
+    return runWindow(options, argv, argc);
+}

@@ -1,0 +1,36 @@
+// What the mouse does in the scene: click selects, left-drag moves a block (the simulation pauses;
+// the drop never overlaps), right-drag flings (velocity from the drag vector), middle-drag pans,
+// double-click on empty space adds a block. Pure logic on App and screen positions (no ImGui), so
+// it is tested without GL; scene_view.cpp feeds it ImGui's mouse state.
+#pragma once
+
+#include "vec2.h"
+
+struct App;
+
+enum class MouseButton { Left, Right, Middle };
+
+// Fling gain: velocity (m/s) per metre of right-drag.
+constexpr double kFlingGain = 2.0;
+
+struct MouseTool {
+    enum class Mode { Idle, Dragging, Flinging, Panning };
+    Mode mode = Mode::Idle;
+    int block = -1;     // the block being dragged or flung
+    Vec2 grabOffset;    // m, block centre minus the cursor at the press
+    Vec2 startPosition; // m, where the dragged block was (restored when no spot is free)
+    Vec2 pressWorld;    // m, the cursor at the press
+    Vec2 cursorWorld;   // m, the cursor now
+    Vec2 lastScreen;    // px, for panning
+
+    // The simulation waits while a block is held.
+    bool holdsSimulation() const { return mode == Mode::Dragging || mode == Mode::Flinging; }
+    // The velocity a release would give the flung block.
+    Vec2 flingVelocity() const { return (cursorWorld - pressWorld) * kFlingGain; }
+};
+
+void mousePress(App& app, MouseButton button, Vec2 screen, bool doubleClick);
+void mouseMove(App& app, Vec2 screen);
+void mouseRelease(App& app, MouseButton button, Vec2 screen);
+// Wheel zoom about the cursor: `steps` notches (positive zooms in).
+void mouseWheel(App& app, Vec2 screen, double steps);

@@ -1,0 +1,188 @@
+#include "offscreen_run.h"
+
+#include "app_frame.h"
+#include "app_setup.h"
+#include "offscreen_osmesa.h"
+#include "png_io.h"
+#include "renderer.h"
+#include "ui_style.h"
+
+#include <imgui.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr double kFrameSeconds = 1.0 / 60.0;
+// ImGui settles window sizes and tables over a couple of frames; render these before capturing.
+constexpr int kSettleFrames = 3;
+
+struct Offscreen {
+    OffscreenOsmesa context;
+    SceneRenderer renderer;
+};
+
+void renderFrame(App& app, Offscreen& off) {
+    offscreenNewFrame(off.context, kFrameSeconds);
+    ImGui::NewFrame();
+    appFrame(app, {}, kFrameSeconds, false);
+    ImGui::Render();
+    appRender(app, off.renderer, off.context.width, off.context.height);
+    offscreenFinish(off.context);
+}
+
+bool writeFrame(const Offscreen& off, const std::string& path) {
+    if (!writePng(path, offscreenPixelsTopDown(off.context), off.context.width,
+                  off.context.height)) {
+        std::fprintf(stderr, "sandbox: cannot write %s\n", path.c_str());
+        return false;
+    }
+    return true;
+}
+
+bool onPath(const char* program) {
+    const char* path = std::getenv("PATH");
+    if (!path) return false;
+    std::string dirs = path;
+    std::size_t start = 0;
+    while (start <= dirs.size()) {
+        const std::size_t end = dirs.find(':', start);
+        const std::string dir = dirs.substr(start, end == std::string::npos ? end : end - start);
+        if (!dir.empty() && access((dir + "/" + program).c_str(), X_OK) == 0) return true;
+        if (end == std::string::npos) break;
+        start = end + 1;
+    }
+    return false;
+}
+
+// Runs a program with arguments (no shell) and waits; true when it exits 0.
+bool runProgram(const std::vector<std::string>& args) {
+    std::vector<char*> argv;
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    const pid_t pid = fork();
+    if (pid < 0) return false;
+    if (pid == 0) {
+        execvp(argv[0], argv.data());
+        _exit(127);
+    }
+    int status = 0;
+    if (waitpid(pid, &status, 0) < 0) return false;
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+int screenshot(App& app, Offscreen& off, const Options& o) {
+    for (int i = 0; i < o.frames; ++i) stepSimulation(app);
+    for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off);
+    if (!writeFrame(off, o.screenshot)) return 1;
+    std::printf("%s\n", o.screenshot.c_str());
+    return 0;
+}
+
+int record(App& app, Offscreen& off, const Options& o) {
+    std::error_code ec;
+    std::filesystem::create_directories(o.record, ec);
+    if (ec) {
+        std::fprintf(stderr, "sandbox: cannot create %s: %s\n", o.record.c_str(),
+                     ec.message().c_str());
+        return 1;
+    }
+    for (int i = 0; i < kSettleFrames - 1; ++i) renderFrame(app, off);
+    char name[32];
+    for (int i = 0; i < o.frames; ++i) {
+        stepSimulation(app);
+        renderFrame(app, off);
+        std::snprintf(name, sizeof name, "/frame_%05d.png", i);
+        if (!writeFrame(off, o.record + name)) return 1;
+    }
+    std::printf("wrote %d frames to %s\n", o.frames, o.record.c_str());
+    if (!onPath("ffmpeg")) {
+        std::printf("ffmpeg not found: no video made (install ffmpeg for an MP4)\n");
+        return 0;
+    }
+    const std::string video = o.record + "/recording.mp4";
+    const bool ok =
+        runProgram({"ffmpeg", "-y", "-loglevel", "error", "-framerate", "60", "-i",
+                    o.record + "/frame_%05d.png", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v",
+                    "libx264", "-pix_fmt", "yuv420p", video});
+    if (!ok) {
+        std::fprintf(stderr, "sandbox: ffmpeg failed; the PNG frames are in %s\n",
+                     o.record.c_str());
+        return 1;
+    }
+    std::printf("%s\n", video.c_str());
+    return 0;
+}
+
+int benchmark(App& app, Offscreen& off, const Options& o) {
+    using Clock = std::chrono::steady_clock;
+    for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off); // shaders compile here
+    double simMs = 0.0;
+    const auto start = Clock::now();
+    for (int i = 0; i < o.benchmarkFrames; ++i) {
+        const auto s0 = Clock::now();
+        stepSimulation(app);
+        simMs += std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
+        renderFrame(app, off);
+    }
+    const double totalMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    const double perFrame = totalMs / o.benchmarkFrames;
+    std::printf("benchmark: %d frames, %dx%d, %zu blocks, %s\n", o.benchmarkFrames,
+                off.context.width, off.context.height, app.world.blocks.size(),
+                offscreenGlDescription().c_str());
+    std::printf("  %.3f ms/frame (%.1f frames/s); simulation %.3f ms/frame, drawing %.3f "
+                "ms/frame\n",
+                perFrame, 1000.0 / perFrame, simMs / o.benchmarkFrames,
+                perFrame - simMs / o.benchmarkFrames);
+    return 0;
+}
+
+} // namespace
+
+int runOffscreen(const Options& options) {
+    Options o = options;
+    if (o.screenshot.empty() && o.record.empty() && o.benchmarkFrames <= 0) {
+        o.screenshot = "sandbox-screenshot.png";
+    }
+    App app;
+    std::string error;
+    if (!setupApp(app, o, "", &error)) {
+        std::fprintf(stderr, "sandbox: %s\n", error.c_str());
+        return 1;
+    }
+    setUiScale(app, o.uiScale > 0.0f ? o.uiScale : 1.0f);
+    uiCreateContext(nullptr);
+    uiApplyScale(app.uiScale, false);
+    Offscreen off;
+    if (!offscreenInit(off.context, o.width, o.height, &error)) {
+        std::fprintf(stderr, "sandbox: %s\n", error.c_str());
+        uiDestroyContext();
+        return 1;
+    }
+    const bool shadersOk = off.renderer.init(&error);
+    if (!shadersOk) {
+        // Keep going: the panels still render and the picture shows what is missing; the exit
+        // code says it failed.
+        std::fprintf(stderr, "sandbox: shader error: %s\n", error.c_str());
+        app.error = "Shader error: " + error;
+    }
+    int code = 0;
+    if (o.benchmarkFrames > 0)
+        code = benchmark(app, off, o);
+    else if (!o.record.empty())
+        code = record(app, off, o);
+    else
+        code = screenshot(app, off, o);
+    off.renderer.shutdown();
+    offscreenShutdown(off.context);
+    uiDestroyContext();
+    return shadersOk ? code : 1;
+}

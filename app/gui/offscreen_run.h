@@ -1,0 +1,10 @@
+// The offscreen modes of `sandbox-offscreen` (and of `sandbox` with no display): a screenshot
+// after N frames, a recording of N frames, or a benchmark. Each renders exactly what the window
+// shows, through the same appFrame()/appRender().
+#pragma once
+
+#include "options.h"
+
+// Runs the mode the options ask for; returns the process exit code. `noDisplay`: the run stands
+// in for a window that could not open (the message says so).
+int runOffscreen(const Options& options);

@@ -1,0 +1,101 @@
+#include "options.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+bool parseShowList(const std::string& text, ShowSet& out, std::string* error) {
+    ShowSet show;
+    std::istringstream in(text);
+    std::string name;
+    bool any = false;
+    while (std::getline(in, name, ',')) {
+        if (name.empty()) continue;
+        any = true;
+        if (name == "none")
+            show.none = true;
+        else if (name == "plots")
+            show.plots = true;
+        else if (name == "vectors")
+            show.vectors = true;
+        else if (name == "trails")
+            show.trails = true;
+        else if (name == "inspector")
+            show.inspector = true;
+        else if (name == "com")
+            show.com = true;
+        else if (name == "poi")
+            show.poi = true;
+        else if (name == "sidebyside")
+            show.sideBySide = true;
+        else {
+            if (error) {
+                *error = "unknown --show name '" + name +
+                         "' (expected none, plots, vectors, trails, inspector, com, poi, "
+                         "sidebyside)";
+            }
+            return false;
+        }
+    }
+    if (!any) {
+        if (error) *error = "--show needs at least one name";
+        return false;
+    }
+    out = show;
+    return true;
+}
+
+bool parseSize(const std::string& text, int& width, int& height) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3) return false;
+    if (x != 'x' && x != 'X') return false;
+    if (w < 16 || h < 16 || w > 16384 || h > 16384) return false;
+    width = w;
+    height = h;
+    return true;
+}
+
+ParsedOptions parseOptions(int argc, const char* const* argv) {
+    ParsedOptions result;
+    Options& o = result.options;
+    CLI::App app{"Collision sandbox: the lecture's block collisions, live. Opens a window; with "
+                 "no display, or with --screenshot/--record, renders offscreen to PNG files."};
+    std::string size, show;
+    app.add_option("scene", o.scene, "Scene file, or the name of a shipped scene");
+    app.add_option("--screenshot", o.screenshot, "Render offscreen and write this PNG");
+    app.add_option("--frames", o.frames, "Simulate N frames first (with --record: record N)")
+        ->check(CLI::Range(0, 1000000));
+    app.add_option("--size", size, "Window or image size, WxH (default 1280x720)");
+    app.add_option("--show", show,
+                   "Comma-separated: none, plots, vectors, trails, inspector, com, poi, "
+                   "sidebyside");
+    app.add_option("--record", o.record, "Write N numbered PNGs (and an MP4 with ffmpeg) here");
+    app.add_option("--benchmark-frames", o.benchmarkFrames,
+                   "Offscreen: step and render N frames, print ms per frame")
+        ->check(CLI::Range(1, 1000000));
+    app.add_option("--ui-scale", o.uiScale, "UI scale (0.75 to 3; e.g. 1.5 on a projector)")
+        ->check(CLI::Range(0.75f, 3.0f));
+    app.add_flag("--verbose", o.verbose, "Print state changes (pause, method, sliders) to stdout");
+    app.set_version_flag("--version", "sandbox 0.1");
+    try {
+        app.parse(argc, argv);
+        if (!size.empty() && !parseSize(size, o.width, o.height)) {
+            throw CLI::ValidationError("--size", "expected WxH, e.g. 1280x720, got '" + size + "'");
+        }
+        if (!show.empty()) {
+            std::string error;
+            if (!parseShowList(show, o.show, &error)) throw CLI::ValidationError("--show", error);
+            o.showGiven = true;
+        }
+        if (!o.record.empty() && o.frames <= 0) {
+            throw CLI::ValidationError("--record", "needs --frames N (N > 0)");
+        }
+    } catch (const CLI::ParseError& e) {
+        result.exit = true;
+        result.exitCode = app.exit(e, std::cout, std::cerr);
+    }
+    return result;
+}

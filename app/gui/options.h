@@ -1,0 +1,51 @@
+// The command line shared by `sandbox` and `sandbox-offscreen` (SPEC's public contract):
+//   sandbox [SCENE] [--screenshot FILE] [--frames N] [--size WxH] [--show LIST]
+//           [--record DIR] [--benchmark-frames N] [--ui-scale S] [--verbose]
+#pragma once
+
+#include <string>
+
+// What --show turns on. "none" hides the panels and every overlay.
+struct ShowSet {
+    bool none = false;
+    bool plots = false;
+    bool vectors = false;
+    bool trails = false;
+    bool inspector = false;
+    bool com = false;
+    bool poi = false;
+    bool sideBySide = false;
+};
+
+struct Options {
+    std::string scene;      // file path or shipped scene name; "" for the default scene
+    std::string screenshot; // PNG to write (offscreen)
+    std::string record;     // directory for numbered PNGs (offscreen)
+    int frames = 0;         // simulation frames before the screenshot / frames to record
+    int width = 1280;
+    int height = 720;
+    bool showGiven = false;
+    ShowSet show;
+    int benchmarkFrames = 0; // offscreen: render this many frames and print ms per frame
+    float uiScale = 0.0f;    // 0: the saved setting (window) or 1 (offscreen)
+    bool verbose = false;    // print state changes (pause, method, sliders...) to stdout
+};
+
+// Parses a comma-separated --show list; false with a message for an unknown name.
+bool parseShowList(const std::string& text, ShowSet& out, std::string* error);
+// Parses "WxH" (each 16..16384); false otherwise.
+bool parseSize(const std::string& text, int& width, int& height);
+
+struct ParsedOptions {
+    Options options;
+    bool exit = false; // --help, --version or an error: exit with exitCode
+    int exitCode = 0;
+};
+
+// Parses the command line; --help output goes to stdout, errors to stderr.
+ParsedOptions parseOptions(int argc, const char* const* argv);
+
+// True when the run renders offscreen rather than opening a window.
+inline bool wantsOffscreen(const Options& o) {
+    return !o.screenshot.empty() || !o.record.empty() || o.benchmarkFrames > 0;
+}

@@ -1,0 +1,185 @@
+// The scene's ImGui side: the mouse in the scene (fed to mouse_tool), and what is drawn over the
+// GL scene with ImGui's background draw list: block labels, axis numbers, the status badge, the
+// fling readout and the hover tooltip.
+#include "app_frame.h"
+
+#include "placement.h"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace {
+
+constexpr int kMaxLabelledBlocks = 200;
+
+void shadowText(ImDrawList* dl, ImVec2 at, ImU32 color, const char* text) {
+    dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), IM_COL32(0, 0, 0, 200), text);
+    dl->AddText(at, color, text);
+}
+
+const char* kindText(BodyKind kind) {
+    switch (kind) {
+    case BodyKind::Dynamic:
+        return "dynamic";
+    case BodyKind::Static:
+        return "static";
+    case BodyKind::Kinematic:
+        return "kinematic";
+    }
+    return "";
+}
+
+int hoveredBlock(const App& app) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const Vec2 mouse{io.MousePos.x, io.MousePos.y};
+    if (io.WantCaptureMouse || !app.camera.viewport().contains(mouse)) return -1;
+    return pickBlock(app.world, app.camera.screenToWorld(mouse), 0.0);
+}
+
+void drawLabels(const App& app, ImDrawList* dl) {
+    const int n = static_cast<int>(app.world.blocks.size());
+    if (n > kMaxLabelledBlocks) return;
+    const float lineHeight = ImGui::GetFontSize();
+    for (int i = 0; i < n; ++i) {
+        const Block& b = app.world.blocks[static_cast<std::size_t>(i)];
+        const bool named = i < static_cast<int>(app.labels.size()) &&
+                           !app.labels[static_cast<std::size_t>(i)].name.empty();
+        if (!named && n > 20) continue;
+        const std::string name = blockDisplayName(app, i);
+        char second[48] = "";
+        if (b.isDynamic()) {
+            std::snprintf(second, sizeof second, "%.3g kg", b.mass);
+        } else {
+            std::snprintf(second, sizeof second, "%s", kindText(b.kind));
+        }
+        const Vec2 c = app.camera.worldToScreen(b.position);
+        const double wPx = app.camera.metresToPixels(b.size.x);
+        const double hPx = app.camera.metresToPixels(b.size.y);
+        const ImVec2 nameSize = ImGui::CalcTextSize(name.c_str());
+        const ImVec2 secondSize = ImGui::CalcTextSize(second);
+        const bool twoLines = hPx > 2.6 * lineHeight && secondSize.x < wPx - 6.0;
+        const bool inside = nameSize.x < wPx - 6.0 && hPx > lineHeight + 4.0;
+        const ImU32 white = IM_COL32(255, 255, 255, 240);
+        if (inside) {
+            const float top = static_cast<float>(c.y) - (twoLines ? lineHeight : lineHeight * 0.5f);
+            shadowText(dl, ImVec2(static_cast<float>(c.x) - nameSize.x * 0.5f, top), white,
+                       name.c_str());
+            if (twoLines) {
+                shadowText(dl,
+                           ImVec2(static_cast<float>(c.x) - secondSize.x * 0.5f, top + lineHeight),
+                           IM_COL32(255, 255, 255, 190), second);
+            }
+        } else {
+            const float top = static_cast<float>(c.y - hPx * 0.5) - lineHeight - 2.0f;
+            shadowText(dl, ImVec2(static_cast<float>(c.x) - nameSize.x * 0.5f, top), white,
+                       name.c_str());
+        }
+    }
+}
+
+void drawAxisNumbers(const App& app, ImDrawList* dl) {
+    const Camera& cam = app.camera;
+    const Bounds& bounds = app.world.bounds;
+    const double step = gridSpacing(cam.pixelsPerMetre(), 12.0) * 5.0;
+    const ImU32 color = IM_COL32(170, 178, 195, 200);
+    const float gap = 14.0f;
+    char text[32];
+    for (double x = bounds.min.x; x <= bounds.max.x + 1e-9; x += step) {
+        std::snprintf(text, sizeof text, "%g", x);
+        const Vec2 s = cam.worldToScreen({x, bounds.min.y});
+        const ImVec2 size = ImGui::CalcTextSize(text);
+        dl->AddText(ImVec2(static_cast<float>(s.x) - size.x * 0.5f, static_cast<float>(s.y) + gap),
+                    color, text);
+    }
+    for (double y = bounds.min.y; y <= bounds.max.y + 1e-9; y += step) {
+        std::snprintf(text, sizeof text, "%g", y);
+        const Vec2 s = cam.worldToScreen({bounds.min.x, y});
+        const ImVec2 size = ImGui::CalcTextSize(text);
+        dl->AddText(
+            ImVec2(static_cast<float>(s.x) - size.x - gap, static_cast<float>(s.y) - size.y * 0.5f),
+            color, text);
+    }
+    // The unit, after the last number on the x axis.
+    const double lastX =
+        bounds.min.x + std::floor((bounds.max.x - bounds.min.x) / step + 1e-9) * step;
+    std::snprintf(text, sizeof text, "%g", lastX);
+    const Vec2 last = cam.worldToScreen({lastX, bounds.min.y});
+    dl->AddText(ImVec2(static_cast<float>(last.x) + ImGui::CalcTextSize(text).x * 0.5f + 4.0f,
+                       static_cast<float>(last.y) + gap),
+                color, "m");
+}
+
+void drawBadge(const App& app, ImDrawList* dl) {
+    const ScreenRect& vp = app.camera.viewport();
+    char text[96];
+    std::snprintf(text, sizeof text, "%s   t = %.2f s", methodName(app.world.settings.method),
+                  app.world.time);
+    const float pad = 8.0f * app.uiScale;
+    ImVec2 at(static_cast<float>(vp.x) + pad * 1.5f, static_cast<float>(vp.y) + pad);
+    const ImVec2 size = ImGui::CalcTextSize(text);
+    dl->AddRectFilled(ImVec2(at.x - pad * 0.5f, at.y - pad * 0.25f),
+                      ImVec2(at.x + size.x + pad * 0.5f, at.y + size.y + pad * 0.25f),
+                      IM_COL32(20, 22, 30, 200), 4.0f);
+    dl->AddText(at, IM_COL32(225, 230, 240, 255), text);
+    at.x += size.x + pad * 1.5f;
+    const char* state = app.paused ? "PAUSED" : app.slowMotion ? "SLOW MOTION  5 fps" : nullptr;
+    if (!state) return;
+    const ImU32 bg = app.paused ? IM_COL32(220, 150, 40, 235) : IM_COL32(60, 130, 220, 235);
+    const ImVec2 s2 = ImGui::CalcTextSize(state);
+    dl->AddRectFilled(ImVec2(at.x - pad * 0.5f, at.y - pad * 0.25f),
+                      ImVec2(at.x + s2.x + pad * 0.5f, at.y + s2.y + pad * 0.25f), bg, 4.0f);
+    dl->AddText(at, IM_COL32(15, 15, 20, 255), state);
+}
+
+void drawFlingReadout(const App& app, ImDrawList* dl) {
+    if (app.mouse.mode != MouseTool::Mode::Flinging) return;
+    const Vec2 v = app.mouse.flingVelocity();
+    char text[64];
+    std::snprintf(text, sizeof text, "v = (%.2f, %.2f) m/s", v.x, v.y);
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    shadowText(dl, ImVec2(mouse.x + 14.0f, mouse.y + 10.0f), IM_COL32(255, 190, 120, 255), text);
+}
+
+void drawHoverTooltip(const App& app) {
+    if (app.mouse.mode != MouseTool::Mode::Idle) return;
+    const int i = hoveredBlock(app);
+    if (i < 0) return;
+    const Block& b = app.world.blocks[static_cast<std::size_t>(i)];
+    ImGui::BeginTooltip();
+    ImGui::Text("%s (%s)", blockDisplayName(app, i).c_str(), kindText(b.kind));
+    if (b.isDynamic()) ImGui::Text("m = %.3g kg", b.mass);
+    ImGui::Text("p = (%.2f, %.2f) m", b.position.x, b.position.y);
+    ImGui::Text("v = (%.2f, %.2f) m/s", b.velocity.x, b.velocity.y);
+    ImGui::EndTooltip();
+}
+
+} // namespace
+
+void handleSceneMouse(App& app) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (!ImGui::IsMousePosValid()) return;
+    const Vec2 mouse{io.MousePos.x, io.MousePos.y};
+    const bool inScene = !io.WantCaptureMouse && app.camera.viewport().contains(mouse);
+    if (app.mouse.mode != MouseTool::Mode::Idle && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
+        mouseMove(app, mouse);
+    }
+    const MouseButton buttons[3] = {MouseButton::Left, MouseButton::Right, MouseButton::Middle};
+    for (int b = 0; b < 3; ++b) {
+        if (inScene && ImGui::IsMouseClicked(b)) {
+            mousePress(app, buttons[b], mouse, ImGui::IsMouseDoubleClicked(b));
+        }
+        if (ImGui::IsMouseReleased(b)) mouseRelease(app, buttons[b], mouse);
+    }
+    if (inScene && io.MouseWheel != 0.0f) mouseWheel(app, mouse, io.MouseWheel);
+}
+
+void drawSceneDecorations(const App& app) {
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    drawAxisNumbers(app, dl);
+    drawLabels(app, dl);
+    drawBadge(app, dl);
+    drawFlingReadout(app, dl);
+    drawHoverTooltip(app);
+}

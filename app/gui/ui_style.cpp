@@ -1,0 +1,97 @@
+#include "ui_style.h"
+
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+
+#include <cstdio>
+
+namespace {
+
+constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+constexpr float kBaseFontPx = 16.0f;
+float gScale = 0.0f;
+
+bool fileExists(const char* path) {
+    if (std::FILE* f = std::fopen(path, "rb")) {
+        std::fclose(f);
+        return true;
+    }
+    return false;
+}
+
+void setTheme(ImGuiStyle& style) {
+    ImGui::StyleColorsDark(&style);
+    style.WindowRounding = 6.0f;
+    style.FrameRounding = 4.0f;
+    style.GrabRounding = 4.0f;
+    style.TabRounding = 4.0f;
+    style.WindowBorderSize = 0.0f;
+    style.FrameBorderSize = 0.0f;
+    style.WindowPadding = ImVec2(12.0f, 10.0f);
+    style.FramePadding = ImVec2(8.0f, 4.0f);
+    style.ItemSpacing = ImVec2(8.0f, 6.0f);
+    style.GrabMinSize = 12.0f;
+    ImVec4* c = style.Colors;
+    c[ImGuiCol_WindowBg] = ImVec4(0.105f, 0.113f, 0.140f, 0.97f);
+    c[ImGuiCol_PopupBg] = ImVec4(0.12f, 0.13f, 0.16f, 0.98f);
+    c[ImGuiCol_TitleBg] = ImVec4(0.16f, 0.29f, 0.48f, 1.0f);
+    c[ImGuiCol_TitleBgActive] = ImVec4(0.16f, 0.29f, 0.48f, 1.0f);
+    c[ImGuiCol_TitleBgCollapsed] = ImVec4(0.16f, 0.29f, 0.48f, 1.0f);
+    c[ImGuiCol_Header] = ImVec4(0.20f, 0.25f, 0.33f, 1.0f);
+    c[ImGuiCol_HeaderHovered] = ImVec4(0.26f, 0.36f, 0.50f, 1.0f);
+    c[ImGuiCol_HeaderActive] = ImVec4(0.30f, 0.42f, 0.60f, 1.0f);
+    c[ImGuiCol_FrameBg] = ImVec4(0.17f, 0.19f, 0.24f, 1.0f);
+    c[ImGuiCol_FrameBgHovered] = ImVec4(0.22f, 0.25f, 0.32f, 1.0f);
+    c[ImGuiCol_FrameBgActive] = ImVec4(0.26f, 0.30f, 0.40f, 1.0f);
+    c[ImGuiCol_Button] = ImVec4(0.22f, 0.34f, 0.52f, 1.0f);
+    c[ImGuiCol_ButtonHovered] = ImVec4(0.28f, 0.43f, 0.65f, 1.0f);
+    c[ImGuiCol_ButtonActive] = ImVec4(0.33f, 0.50f, 0.75f, 1.0f);
+    c[ImGuiCol_SliderGrab] = ImVec4(0.45f, 0.65f, 0.95f, 1.0f);
+    c[ImGuiCol_SliderGrabActive] = ImVec4(0.60f, 0.78f, 1.0f, 1.0f);
+    c[ImGuiCol_CheckMark] = ImVec4(0.60f, 0.80f, 1.0f, 1.0f);
+    c[ImGuiCol_Separator] = ImVec4(0.28f, 0.30f, 0.36f, 1.0f);
+}
+
+} // namespace
+
+void uiCreateContext(const char* iniPath) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = iniPath;
+    setTheme(ImGui::GetStyle());
+    gScale = 0.0f;
+}
+
+void uiDestroyContext() {
+    ImGui::DestroyContext();
+}
+
+float uiCurrentScale() {
+    return gScale;
+}
+
+void uiApplyScale(float scale, bool rendererReady) {
+    if (scale == gScale) return;
+    gScale = scale;
+    ImGuiIO& io = ImGui::GetIO();
+    io.Fonts->Clear();
+    if (fileExists(kFontPath)) {
+        ImFontConfig config;
+        config.OversampleH = 2;
+        io.Fonts->AddFontFromFileTTF(kFontPath, kBaseFontPx * scale, &config);
+    } else {
+        ImFontConfig config;
+        config.SizePixels = 13.0f * scale;
+        io.Fonts->AddFontDefault(&config);
+    }
+    io.Fonts->Build();
+    ImGuiStyle style;
+    setTheme(style);
+    style.ScaleAllSizes(scale);
+    ImGui::GetStyle() = style;
+    if (rendererReady) {
+        ImGui_ImplOpenGL3_DestroyFontsTexture();
+        ImGui_ImplOpenGL3_CreateFontsTexture();
+    }
+}

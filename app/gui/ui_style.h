@@ -1,0 +1,12 @@
+// The look of the UI: a dark theme readable on a projector, the font (DejaVu Sans when installed,
+// ImGui's built-in font otherwise) and the UI scale. Call between frames, never inside one.
+#pragma once
+
+// Creates the ImGui context and sets the theme. `iniPath` null: no ini file (offscreen runs).
+void uiCreateContext(const char* iniPath);
+void uiDestroyContext();
+// Rebuilds the font atlas and style sizes for `scale`. When `rendererReady`, the OpenGL3
+// backend's font texture is recreated too.
+void uiApplyScale(float scale, bool rendererReady);
+// The scale uiApplyScale last applied.
+float uiCurrentScale();

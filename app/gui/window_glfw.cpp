@@ -1,0 +1,135 @@
+#include "window_glfw.h"
+
+#include "input_map.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <cstdio>
+
+// The key map uses GLFW's codes without including GLFW; check they agree.
+static_assert(keys::kSpace == GLFW_KEY_SPACE && keys::kMinus == GLFW_KEY_MINUS &&
+                  keys::kEqual == GLFW_KEY_EQUAL && keys::kC == GLFW_KEY_C &&
+                  keys::kD == GLFW_KEY_D && keys::kF == GLFW_KEY_F && keys::kN == GLFW_KEY_N &&
+                  keys::kP == GLFW_KEY_P && keys::kR == GLFW_KEY_R && keys::kS == GLFW_KEY_S &&
+                  keys::kV == GLFW_KEY_V && keys::kEscape == GLFW_KEY_ESCAPE &&
+                  keys::kTab == GLFW_KEY_TAB && keys::kDelete == GLFW_KEY_DELETE &&
+                  keys::kF1 == GLFW_KEY_F1 && keys::kF11 == GLFW_KEY_F11 &&
+                  keys::kKeypadSubtract == GLFW_KEY_KP_SUBTRACT &&
+                  keys::kKeypadAdd == GLFW_KEY_KP_ADD,
+              "input_map.h key codes must match GLFW's");
+
+namespace {
+
+std::string gLastGlfwError;
+
+void onGlfwError(int code, const char* description) {
+    gLastGlfwError = "GLFW error " + std::to_string(code) + ": " + (description ? description : "");
+}
+
+// Installed before ImGui's GLFW backend, which chains to it.
+void onKey(GLFWwindow* window, int key, int, int action, int mods) {
+    auto* w = static_cast<WindowGlfw*>(glfwGetWindowUserPointer(window));
+    if (!w || action != GLFW_PRESS) return;
+    w->keyPresses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0});
+}
+
+} // namespace
+
+bool windowInit(WindowGlfw& w, int width, int height, const char* title, std::string* error) {
+    glfwSetErrorCallback(onGlfwError);
+    if (!glfwInit()) {
+        if (error) *error = "cannot start GLFW (" + gLastGlfwError + ")";
+        return false;
+    }
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    w.window = glfwCreateWindow(width, height, title, nullptr, nullptr);
+    if (!w.window) {
+        if (error) *error = "cannot open an OpenGL 3.3 window (" + gLastGlfwError + ")";
+        glfwTerminate();
+        return false;
+    }
+    glfwMakeContextCurrent(w.window);
+    glfwSwapInterval(1);
+    glfwSetWindowUserPointer(w.window, &w);
+    glfwSetKeyCallback(w.window, onKey);
+    if (!ImGui_ImplGlfw_InitForOpenGL(w.window, true) || !ImGui_ImplOpenGL3_Init("#version 330")) {
+        if (error) *error = "cannot start the ImGui backends";
+        glfwDestroyWindow(w.window);
+        glfwTerminate();
+        w.window = nullptr;
+        return false;
+    }
+    w.lastTime = glfwGetTime();
+    return true;
+}
+
+void windowShutdown(WindowGlfw& w) {
+    if (!w.window) return;
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    glfwDestroyWindow(w.window);
+    glfwTerminate();
+    w.window = nullptr;
+}
+
+bool windowNewFrame(WindowGlfw& w, double* realSeconds) {
+    glfwPollEvents();
+    if (glfwWindowShouldClose(w.window)) return false;
+    const double now = glfwGetTime();
+    if (realSeconds) *realSeconds = now - w.lastTime;
+    w.lastTime = now;
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    return true;
+}
+
+void windowPresent(WindowGlfw& w) {
+    glfwSwapBuffers(w.window);
+}
+
+void windowSetFullscreen(WindowGlfw& w, bool fullscreen) {
+    if (fullscreen == w.fullscreen) return;
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    if (fullscreen && monitor) {
+        glfwGetWindowPos(w.window, &w.windowedX, &w.windowedY);
+        glfwGetWindowSize(w.window, &w.windowedWidth, &w.windowedHeight);
+        const GLFWvidmode* mode = glfwGetVideoMode(monitor);
+        if (!mode) return;
+        glfwSetWindowMonitor(w.window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+        w.fullscreen = true;
+    } else if (!fullscreen) {
+        glfwSetWindowMonitor(w.window, nullptr, w.windowedX, w.windowedY, w.windowedWidth,
+                             w.windowedHeight, 0);
+        w.fullscreen = false;
+    }
+}
+
+void windowFramebufferSize(const WindowGlfw& w, int* width, int* height) {
+    glfwGetFramebufferSize(w.window, width, height);
+}
+
+void windowSize(const WindowGlfw& w, int* width, int* height) {
+    if (w.fullscreen) {
+        *width = w.windowedWidth;
+        *height = w.windowedHeight;
+        return;
+    }
+    glfwGetWindowSize(w.window, width, height);
+}
+
+void windowRequestClose(WindowGlfw& w) {
+    glfwSetWindowShouldClose(w.window, GLFW_TRUE);
+}
+
+std::vector<KeyPress> windowTakeKeyPresses(WindowGlfw& w) {
+    std::vector<KeyPress> keys;
+    keys.swap(w.keyPresses);
+    return keys;
+}

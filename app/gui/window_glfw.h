@@ -1,0 +1,33 @@
+// The window backend: a GLFW window with an OpenGL 3.3 core context and ImGui's GLFW and OpenGL3
+// backends. Init, NewFrame, Render, Shutdown, as ImGui's examples do.
+#pragma once
+
+#include "input_map.h"
+
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+struct WindowGlfw {
+    GLFWwindow* window = nullptr;
+    bool fullscreen = false;
+    int windowedX = 0, windowedY = 0, windowedWidth = 1280, windowedHeight = 720;
+    double lastTime = 0.0;
+    std::vector<KeyPress> keyPresses; // since the last windowTakeKeyPresses()
+};
+
+// Opens the window (ImGui context already created). False with a message on failure.
+bool windowInit(WindowGlfw& w, int width, int height, const char* title, std::string* error);
+void windowShutdown(WindowGlfw& w);
+// Polls events and starts the backends' frame; false when the window should close. Sets
+// `realSeconds` to the time since the previous frame.
+bool windowNewFrame(WindowGlfw& w, double* realSeconds);
+// Swaps buffers.
+void windowPresent(WindowGlfw& w);
+void windowSetFullscreen(WindowGlfw& w, bool fullscreen);
+void windowFramebufferSize(const WindowGlfw& w, int* width, int* height);
+void windowSize(const WindowGlfw& w, int* width, int* height);
+void windowRequestClose(WindowGlfw& w);
+// The key presses (not repeats) since the last call, in order.
+std::vector<KeyPress> windowTakeKeyPresses(WindowGlfw& w);

@@ -1,0 +1,15 @@
+# Writes a C++ header holding every shader as a string constant, so the program runs from any
+# directory. Run at build time: cmake -DOUTPUT=file.h -DSHADER_DIR=shaders -P this file.
+file(GLOB SHADERS "${SHADER_DIR}/*.vert" "${SHADER_DIR}/*.frag")
+list(SORT SHADERS)
+set(content "// Generated from shaders/ by app/render/embed_shaders.cmake. Do not edit.\n#pragma once\n\nnamespace embedded_shaders {\n")
+foreach(shader IN LISTS SHADERS)
+  file(READ "${shader}" text)
+  get_filename_component(name "${shader}" NAME)
+  string(MAKE_C_IDENTIFIER "${name}" ident)
+  string(APPEND content "inline constexpr const char* ${ident} = R\"glsl(${text})glsl\";\n")
+endforeach()
+string(APPEND content "}  // namespace embedded_shaders\n")
+file(WRITE "${OUTPUT}.tmp" "${content}")
+execute_process(COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${OUTPUT}.tmp" "${OUTPUT}")
+file(REMOVE "${OUTPUT}.tmp")

@@ -1,0 +1,79 @@
+#include "palette.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+namespace {
+
+int hexDigit(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+
+std::uint32_t toByte(float v) {
+    return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+}
+
+// Colour-blind-friendly, saturated enough to read on the dark arena and on a projector.
+constexpr std::array<Color, 10> kPalette{{
+    {0.90f, 0.36f, 0.33f, 1.0f}, // red
+    {0.30f, 0.62f, 0.95f, 1.0f}, // blue
+    {0.99f, 0.75f, 0.25f, 1.0f}, // amber
+    {0.40f, 0.78f, 0.45f, 1.0f}, // green
+    {0.72f, 0.50f, 0.92f, 1.0f}, // violet
+    {0.98f, 0.56f, 0.20f, 1.0f}, // orange
+    {0.30f, 0.80f, 0.80f, 1.0f}, // teal
+    {0.95f, 0.50f, 0.72f, 1.0f}, // pink
+    {0.70f, 0.78f, 0.35f, 1.0f}, // olive
+    {0.55f, 0.65f, 0.98f, 1.0f}, // periwinkle
+}};
+
+} // namespace
+
+std::uint32_t Color::packed() const {
+    return (toByte(a) << 24) | (toByte(b) << 16) | (toByte(g) << 8) | toByte(r);
+}
+
+Color Color::mix(const Color& other, float t) const {
+    return {r + (other.r - r) * t, g + (other.g - g) * t, b + (other.b - b) * t,
+            a + (other.a - a) * t};
+}
+
+bool parseHexColor(const std::string& text, Color& out) {
+    const std::size_t start = (!text.empty() && text[0] == '#') ? 1 : 0;
+    if (text.size() != start + 6) return false;
+    int bytes[3];
+    for (int i = 0; i < 3; ++i) {
+        const int hi = hexDigit(text[start + 2 * i]);
+        const int lo = hexDigit(text[start + 2 * i + 1]);
+        if (hi < 0 || lo < 0) return false;
+        bytes[i] = hi * 16 + lo;
+    }
+    out = {bytes[0] / 255.0f, bytes[1] / 255.0f, bytes[2] / 255.0f, 1.0f};
+    return true;
+}
+
+std::string toHexColor(const Color& color) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "#%02x%02x%02x", static_cast<unsigned>(toByte(color.r)),
+                  static_cast<unsigned>(toByte(color.g)), static_cast<unsigned>(toByte(color.b)));
+    return buf;
+}
+
+Color blockColor(int index, const std::string& sceneColor) {
+    Color c;
+    if (parseHexColor(sceneColor, c)) return c;
+    const std::size_t n = kPalette.size();
+    return kPalette[static_cast<std::size_t>(index < 0 ? 0 : index) % n];
+}
+
+Color staticBlockColor() {
+    return {0.50f, 0.53f, 0.60f, 1.0f};
+}
+Color kinematicBlockColor() {
+    return {0.62f, 0.58f, 0.48f, 1.0f};
+}

@@ -1,0 +1,256 @@
+#include "renderer.h"
+
+#include "embedded_shaders.h"
+#include "gl_shader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace {
+
+constexpr float kCorners[8] = {-1.f, -1.f, 1.f, -1.f, -1.f, 1.f, 1.f, 1.f};
+constexpr double kWallThicknessPx = 10.0;
+constexpr double kTrailWidthPx = 2.0;
+constexpr double kArrowWidthPx = 2.5;
+constexpr double kArrowHeadPx = 11.0;
+constexpr double kGridMinPx = 12.0;
+
+void setUniformTransform(GLint location, const ClipTransform& t) {
+    glUniform4f(location, t.scaleX, t.scaleY, t.offsetX, t.offsetY);
+}
+
+} // namespace
+
+bool SceneRenderer::init(std::string* error) {
+    blockProgram_ =
+        buildProgram(embedded_shaders::block_vert, embedded_shaders::block_frag, "block", error);
+    shapeProgram_ =
+        buildProgram(embedded_shaders::shape_vert, embedded_shaders::shape_frag, "shape", error);
+    if (!blockProgram_ || !shapeProgram_) return false;
+    blockTransform_ = glGetUniformLocation(blockProgram_, "uTransform");
+    blockPpm_ = glGetUniformLocation(blockProgram_, "uPixelsPerMetre");
+    shapeTransform_ = glGetUniformLocation(shapeProgram_, "uTransform");
+
+    glGenVertexArrays(1, &blockVao_);
+    glGenBuffers(1, &cornerVbo_);
+    glGenBuffers(1, &instanceVbo_);
+    glBindVertexArray(blockVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, cornerVbo_);
+    glBufferData(GL_ARRAY_BUFFER, sizeof kCorners, kCorners, GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+    glBindBuffer(GL_ARRAY_BUFFER, instanceVbo_);
+    const GLsizei stride = sizeof(BlockInstance);
+    const struct {
+        GLuint index;
+        GLint size;
+        std::size_t offset;
+    } attributes[4] = {{1, 4, offsetof(BlockInstance, rect)},
+                       {2, 4, offsetof(BlockInstance, fill)},
+                       {3, 4, offsetof(BlockInstance, outline)},
+                       {4, 2, offsetof(BlockInstance, style)}};
+    for (const auto& a : attributes) {
+        glEnableVertexAttribArray(a.index);
+        glVertexAttribPointer(a.index, a.size, GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<const void*>(a.offset));
+        glVertexAttribDivisor(a.index, 1);
+    }
+
+    glGenVertexArrays(1, &shapeVao_);
+    glGenBuffers(1, &shapeVbo_);
+    glBindVertexArray(shapeVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, shapeVbo_);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(ShapeVertex),
+                          reinterpret_cast<const void*>(offsetof(ShapeVertex, x)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(ShapeVertex),
+                          reinterpret_cast<const void*>(offsetof(ShapeVertex, r)));
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    return true;
+}
+
+void SceneRenderer::shutdown() {
+    glDeleteBuffers(1, &cornerVbo_);
+    glDeleteBuffers(1, &instanceVbo_);
+    glDeleteBuffers(1, &shapeVbo_);
+    glDeleteVertexArrays(1, &blockVao_);
+    glDeleteVertexArrays(1, &shapeVao_);
+    if (blockProgram_) glDeleteProgram(blockProgram_);
+    if (shapeProgram_) glDeleteProgram(shapeProgram_);
+    blockProgram_ = shapeProgram_ = 0;
+    blockVao_ = shapeVao_ = cornerVbo_ = instanceVbo_ = shapeVbo_ = 0;
+}
+
+void SceneRenderer::buildShapes(const SceneView& view) {
+    const World& world = *view.world;
+    const Camera& cam = *view.camera;
+    const double px = cam.pixelsToMetres(1.0);
+    under_.clear();
+    over_.clear();
+
+    // The metre grid, limited to what is visible inside the bounds.
+    const ScreenRect& vp = cam.viewport();
+    const Vec2 a = cam.screenToWorld({vp.x, vp.y + vp.height});
+    const Vec2 b = cam.screenToWorld({vp.x + vp.width, vp.y});
+    const Vec2 lo{std::max(a.x, world.bounds.min.x), std::max(a.y, world.bounds.min.y)};
+    const Vec2 hi{std::min(b.x, world.bounds.max.x), std::min(b.y, world.bounds.max.y)};
+    const double step = gridSpacing(cam.pixelsPerMetre(), kGridMinPx);
+    const double major = step * 5.0;
+    if (lo.x < hi.x && lo.y < hi.y) {
+        const double x0 = world.bounds.min.x + std::ceil((lo.x - world.bounds.min.x) / step) * step;
+        for (double x = x0; x <= hi.x; x += step) {
+            const double m = std::fmod(std::abs(x - world.bounds.min.x) + 1e-9, major);
+            const bool isMajor = m < 1e-6;
+            under_.rect({x - px * 0.5, lo.y}, {x + px * 0.5, hi.y},
+                        isMajor ? scene_colors::kGridMajor : scene_colors::kGridMinor);
+        }
+        const double y0 = world.bounds.min.y + std::ceil((lo.y - world.bounds.min.y) / step) * step;
+        for (double y = y0; y <= hi.y; y += step) {
+            const double m = std::fmod(std::abs(y - world.bounds.min.y) + 1e-9, major);
+            const bool isMajor = m < 1e-6;
+            under_.rect({lo.x, y - px * 0.5}, {hi.x, y + px * 0.5},
+                        isMajor ? scene_colors::kGridMajor : scene_colors::kGridMinor);
+        }
+    }
+
+    // Trails, fading with age.
+    if (view.trails && view.trails->length() > 1 &&
+        view.trails->blockCount() == world.blocks.size()) {
+        const Trails& tr = *view.trails;
+        const int n = tr.length();
+        for (std::size_t i = 0; i < tr.blockCount(); ++i) {
+            if (!world.blocks[i].isDynamic() && world.blocks[i].kind != BodyKind::Kinematic) {
+                continue;
+            }
+            const Color c = i < view.blockColors.size() ? view.blockColors[i] : Color{};
+            for (int age = 0; age + 1 < n; ++age) {
+                const float a0 = 0.75f * (1.0f - static_cast<float>(age) / static_cast<float>(n));
+                const float a1 =
+                    0.75f * (1.0f - static_cast<float>(age + 1) / static_cast<float>(n));
+                under_.line(tr.point(i, age), tr.point(i, age + 1), kTrailWidthPx * px,
+                            c.withAlpha(a0), c.withAlpha(a1));
+            }
+        }
+    }
+
+    // Velocity arrows from the centres of moving blocks.
+    if (view.vectors) {
+        for (const Block& bl : world.blocks) {
+            if (bl.kind == BodyKind::Static) continue;
+            const Vec2 tip = bl.position + bl.velocity * kVelocityArrowScale;
+            over_.arrow(bl.position, tip, kArrowWidthPx * px, kArrowHeadPx * px,
+                        scene_colors::kVelocity);
+        }
+    }
+    if (view.flingActive) {
+        over_.arrow(view.flingFrom, view.flingTo, kArrowWidthPx * 1.6 * px, kArrowHeadPx * 1.5 * px,
+                    scene_colors::kFling);
+    }
+}
+
+void SceneRenderer::buildBlocks(const SceneView& view) {
+    const World& world = *view.world;
+    const double px = view.camera->pixelsToMetres(1.0);
+    blocks_.clear();
+    blocks_.reserve(world.blocks.size() + 4);
+
+    // The four walls, just outside the bounds, hatched like every body of infinite mass.
+    const double t = kWallThicknessPx * px;
+    const Vec2 mn = world.bounds.min, mx = world.bounds.max;
+    const Color wall = scene_colors::kWall;
+    const Vec2 wallRects[4][2] = {{{mn.x - t, mn.y - t}, {mn.x, mx.y + t}},
+                                  {{mx.x, mn.y - t}, {mx.x + t, mx.y + t}},
+                                  {{mn.x, mn.y - t}, {mx.x, mn.y}},
+                                  {{mn.x, mx.y}, {mx.x, mx.y + t}}};
+    for (const auto& r : wallRects) {
+        const Vec2 c = (r[0] + r[1]) * 0.5, h = (r[1] - r[0]) * 0.5;
+        blocks_.push_back({{float(c.x), float(c.y), float(h.x), float(h.y)},
+                           {wall.r, wall.g, wall.b, wall.a},
+                           {wall.r, wall.g, wall.b, wall.a},
+                           {0.0f, 1.0f}});
+    }
+
+    for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+        const Block& b = world.blocks[i];
+        const Color fill = i < view.blockColors.size() ? view.blockColors[i] : Color{};
+        const bool selected = static_cast<int>(i) == view.selected;
+        const Color outline = selected ? scene_colors::kSelection : scene_colors::kOutline;
+        const float pattern = b.kind == BodyKind::Static      ? 1.0f
+                              : b.kind == BodyKind::Kinematic ? 2.0f
+                                                              : 0.0f;
+        blocks_.push_back({{float(b.position.x), float(b.position.y), float(b.size.x * 0.5),
+                            float(b.size.y * 0.5)},
+                           {fill.r, fill.g, fill.b, fill.a},
+                           {outline.r, outline.g, outline.b, outline.a},
+                           {selected ? 3.0f : 1.5f, pattern}});
+    }
+}
+
+void SceneRenderer::drawShapes(const ClipTransform& t, const std::vector<ShapeVertex>& vertices) {
+    if (vertices.empty()) return;
+    glUseProgram(shapeProgram_);
+    setUniformTransform(shapeTransform_, t);
+    glBindVertexArray(shapeVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, shapeVbo_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(ShapeVertex)),
+                 vertices.data(), GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size()));
+}
+
+void SceneRenderer::draw(const SceneView& view) {
+    const Color bg = scene_colors::kBackground;
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(bg.r, bg.g, bg.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    if (!view.world || !view.camera || !blockProgram_ || !shapeProgram_) return;
+
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+
+    // The arena (inside the bounds) by a scissored clear: far cheaper than a quad on llvmpipe.
+    GLint vp[4] = {0, 0, 0, 0};
+    glGetIntegerv(GL_VIEWPORT, vp);
+    const double sx = vp[2] / view.displayWidth, sy = vp[3] / view.displayHeight;
+    const Vec2 lo = view.camera->worldToScreen(view.world->bounds.min);
+    const Vec2 hi = view.camera->worldToScreen(view.world->bounds.max);
+    const double x0 = std::max(0.0, lo.x * sx), x1 = std::min(double(vp[2]), hi.x * sx);
+    const double y0 = std::max(0.0, vp[3] - lo.y * sy),
+                 y1 = std::min(double(vp[3]), vp[3] - hi.y * sy);
+    if (x1 > x0 && y0 > y1) {
+        const Color arena = scene_colors::kArena;
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(static_cast<GLint>(std::lround(x0)), static_cast<GLint>(std::lround(y1)),
+                  static_cast<GLsizei>(std::lround(x1 - x0)),
+                  static_cast<GLsizei>(std::lround(y0 - y1)));
+        glClearColor(arena.r, arena.g, arena.b, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+    }
+
+    const ClipTransform t = view.camera->clipTransform(view.displayWidth, view.displayHeight);
+    buildShapes(view);
+    buildBlocks(view);
+
+    drawShapes(t, under_.vertices());
+
+    glUseProgram(blockProgram_);
+    setUniformTransform(blockTransform_, t);
+    glUniform1f(blockPpm_, static_cast<float>(view.camera->pixelsPerMetre()));
+    glBindVertexArray(blockVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, instanceVbo_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(blocks_.size() * sizeof(BlockInstance)),
+                 blocks_.data(), GL_STREAM_DRAW);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(blocks_.size()));
+
+    drawShapes(t, over_.vertices());
+
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glUseProgram(0);
+}

@@ -1,0 +1,58 @@
+// SceneRenderer: draws a World with the project's shaders (blocks as instanced quads, walls, the
+// metre grid, velocity arrows, trails). It reads what to draw and draws, nothing more: labels
+// and panels are ImGui's, drawn afterwards on top.
+#pragma once
+
+#include "camera.h"
+#include "gl_api.h"
+#include "palette.h"
+#include "shape_batch.h"
+#include "trails.h"
+#include "world.h"
+
+#include <string>
+#include <vector>
+
+struct SceneView {
+    const World* world = nullptr;
+    const Camera* camera = nullptr;
+    std::vector<Color> blockColors; // per block (palette or scene colour)
+    double displayWidth = 1280.0;   // screen pixels of the whole framebuffer
+    double displayHeight = 720.0;
+    int selected = -1;
+    const Trails* trails = nullptr; // drawn when set
+    bool vectors = false;           // velocity arrows
+    bool flingActive = false;       // the fling arrow while right-dragging
+    Vec2 flingFrom, flingTo;
+};
+
+// Velocity arrows: metres of arrow per m/s.
+constexpr double kVelocityArrowScale = 0.25;
+
+class SceneRenderer {
+  public:
+    // Compiles the embedded shaders; false with a message when the driver rejects them.
+    bool init(std::string* error);
+    void shutdown();
+    // Clears the framebuffer and draws the scene (GL viewport set by the caller).
+    void draw(const SceneView& view);
+
+  private:
+    struct BlockInstance {
+        float rect[4]; // centre xy, half size zw
+        float fill[4];
+        float outline[4];
+        float style[2]; // outline px, pattern
+    };
+    void buildShapes(const SceneView& view);
+    void buildBlocks(const SceneView& view);
+    void drawShapes(const ClipTransform& t, const std::vector<ShapeVertex>& vertices);
+
+    GLuint blockProgram_ = 0, shapeProgram_ = 0;
+    GLuint blockVao_ = 0, cornerVbo_ = 0, instanceVbo_ = 0;
+    GLuint shapeVao_ = 0, shapeVbo_ = 0;
+    GLint blockTransform_ = -1, blockPpm_ = -1, shapeTransform_ = -1;
+    ShapeBatch under_; // arena, grid, trails
+    ShapeBatch over_;  // arrows
+    std::vector<BlockInstance> blocks_;
+};

@@ -1,0 +1,42 @@
+#include "shape_batch.h"
+
+#include <algorithm>
+
+void ShapeBatch::vertex(Vec2 p, const Color& c) {
+    vertices_.push_back({static_cast<float>(p.x), static_cast<float>(p.y), c.r, c.g, c.b, c.a});
+}
+
+void ShapeBatch::triangle(Vec2 a, Vec2 b, Vec2 c, const Color& color) {
+    vertex(a, color);
+    vertex(b, color);
+    vertex(c, color);
+}
+
+void ShapeBatch::rect(Vec2 min, Vec2 max, const Color& color) {
+    triangle(min, {max.x, min.y}, max, color);
+    triangle(min, max, {min.x, max.y}, color);
+}
+
+void ShapeBatch::line(Vec2 a, Vec2 b, double width, const Color& colorA, const Color& colorB) {
+    const Vec2 d = b - a;
+    if (lengthSquared(d) <= 0.0) return;
+    const Vec2 n = perpendicular(normalized(d)) * (width * 0.5);
+    vertex(a - n, colorA);
+    vertex(a + n, colorA);
+    vertex(b + n, colorB);
+    vertex(a - n, colorA);
+    vertex(b + n, colorB);
+    vertex(b - n, colorB);
+}
+
+void ShapeBatch::arrow(Vec2 from, Vec2 to, double width, double head, const Color& color) {
+    const Vec2 d = to - from;
+    const double len = length(d);
+    if (len < head * 0.05) return;
+    const Vec2 dir = d / len;
+    const double headLen = std::min(head, len * 0.6);
+    const Vec2 base = to - dir * headLen;
+    line(from, base, width, color);
+    const Vec2 side = perpendicular(dir) * (headLen * 0.55);
+    triangle(to, base + side, base - side, color);
+}

@@ -1,0 +1,33 @@
+// ShapeBatch: coloured triangles in world space (metres), built on the CPU each frame and drawn
+// in one call: grid lines, the arena, arrows, trails. Pure logic; the renderer uploads it.
+#pragma once
+
+#include "palette.h"
+#include "vec2.h"
+
+#include <vector>
+
+struct ShapeVertex {
+    float x, y;       // m
+    float r, g, b, a; // colour
+};
+
+class ShapeBatch {
+  public:
+    void clear() { vertices_.clear(); }
+    const std::vector<ShapeVertex>& vertices() const { return vertices_; }
+
+    void triangle(Vec2 a, Vec2 b, Vec2 c, const Color& color);
+    // An axis-aligned rectangle from `min` to `max`.
+    void rect(Vec2 min, Vec2 max, const Color& color);
+    // A segment of the given width (m); the two ends may have different colours (trails fade).
+    void line(Vec2 a, Vec2 b, double width, const Color& colorA, const Color& colorB);
+    void line(Vec2 a, Vec2 b, double width, const Color& color) { line(a, b, width, color, color); }
+    // A shaft of `width` from `from` to `to` with a head of length `head` (m); nothing when the
+    // arrow is shorter than a tiny fraction of the head.
+    void arrow(Vec2 from, Vec2 to, double width, double head, const Color& color);
+
+  private:
+    void vertex(Vec2 p, const Color& c);
+    std::vector<ShapeVertex> vertices_;
+};

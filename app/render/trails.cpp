@@ -1,0 +1,32 @@
+#include "trails.h"
+
+void Trails::record(const World& world) {
+    if (world.blocks.size() != blockCount_) {
+        blockCount_ = world.blocks.size();
+        points_.assign(blockCount_ * static_cast<std::size_t>(capacity_), Vec2{});
+        length_ = 0;
+        head_ = 0;
+        skipped_ = 0;
+    } else if (length_ > 0 && ++skipped_ < every_) {
+        return;
+    }
+    skipped_ = 0;
+    head_ = (head_ + 1) % capacity_;
+    for (std::size_t i = 0; i < blockCount_; ++i) {
+        points_[i * static_cast<std::size_t>(capacity_) + static_cast<std::size_t>(head_)] =
+            world.blocks[i].position;
+    }
+    if (length_ < capacity_) ++length_;
+}
+
+void Trails::clear() {
+    length_ = 0;
+    skipped_ = 0;
+    head_ = 0;
+}
+
+Vec2 Trails::point(std::size_t block, int age) const {
+    if (block >= blockCount_ || age < 0 || age >= length_) return {};
+    const int slot = ((head_ - age) % capacity_ + capacity_) % capacity_;
+    return points_[block * static_cast<std::size_t>(capacity_) + static_cast<std::size_t>(slot)];
+}

@@ -1,0 +1,37 @@
+// Trails: the recent positions of every block (the lecture's D key draws them, C clears them).
+// A ring buffer per block in one flat array; pure logic, drawn by the renderer with fading alpha.
+#pragma once
+
+#include "vec2.h"
+#include "world.h"
+
+#include <cstddef>
+#include <vector>
+
+class Trails {
+  public:
+    // `capacity` points per block, one every `every` recorded frames (default: 3 s at 60 Hz).
+    explicit Trails(int capacity = 90, int every = 2)
+        : capacity_(capacity < 2 ? 2 : capacity), every_(every < 1 ? 1 : every) {}
+
+    // Appends the current position of every block. A change in the number of blocks (a block
+    // added or removed) restarts every trail, since indices no longer name the same blocks.
+    void record(const World& world);
+    void clear();
+
+    int capacity() const { return capacity_; }
+    std::size_t blockCount() const { return blockCount_; }
+    // Number of points stored for each block (the same for all blocks).
+    int length() const { return length_; }
+    // Point `age` of block `block`: age 0 is the newest, length() - 1 the oldest.
+    Vec2 point(std::size_t block, int age) const;
+
+  private:
+    int capacity_;
+    int every_;
+    int skipped_ = 0; // frames since the last stored point
+    std::size_t blockCount_ = 0;
+    int length_ = 0;
+    int head_ = 0;             // slot of the newest point
+    std::vector<Vec2> points_; // blockCount_ * capacity_
+};

@@ -1,0 +1,323 @@
+// App state without GL: load, reset, save, the fixed-step clock, settings and options.
+#include "app_config.h"
+#include "app_log.h"
+#include "app_state.h"
+#include "fixed_step.h"
+#include "options.h"
+#include "scene_library.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path tempDir(const std::string& name) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("sandbox_app_test_" + name + "_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    return dir;
+}
+
+Scene twoBlocks() {
+    Scene scene;
+    scene.name = "two";
+    scene.settings.gravity = Vec2{0.0, 0.0};
+    BlockDef a;
+    a.name = "A";
+    a.position = {4, 6};
+    a.velocity = {6, 0};
+    a.color = "#d04040";
+    BlockDef b;
+    b.name = "B";
+    b.position = {12, 6};
+    b.mass = 2.0;
+    scene.blocks = {a, b};
+    return scene;
+}
+
+TEST(FixedStepClock, RunsOneTickPerDtWhateverTheDisplayRate) {
+    FixedStepClock clock;
+    const double dt = 1.0 / 60.0;
+    int ticks = 0;
+    for (int i = 0; i < 144; ++i) ticks += clock.advance(1.0 / 144.0, dt, 1.0); // 144 Hz
+    EXPECT_NEAR(ticks, 60, 1);
+    ticks = 0;
+    for (int i = 0; i < 30; ++i) ticks += clock.advance(1.0 / 30.0, dt, 1.0); // 30 Hz
+    EXPECT_NEAR(ticks, 60, 1);
+}
+
+TEST(FixedStepClock, TimeScaleAndSlowMotion) {
+    FixedStepClock clock;
+    const double dt = 1.0 / 60.0;
+    int ticks = 0;
+    for (int i = 0; i < 60; ++i) ticks += clock.advance(1.0 / 60.0, dt, 0.5);
+    EXPECT_NEAR(ticks, 30, 1);
+    clock.reset();
+    ticks = 0;
+    for (int i = 0; i < 120; ++i) {
+        ticks += clock.advance(1.0 / 60.0, dt, simulationRate(1.0, true, dt));
+    }
+    EXPECT_NEAR(ticks, 10, 1); // 5 frames per second for 2 s
+}
+
+TEST(FixedStepClock, CapsTicksPerFrameAndDropsTheBacklog) {
+    FixedStepClock clock;
+    EXPECT_EQ(clock.advance(0.25, 1.0 / 240.0, 1.0), clock.maxTicksPerFrame);
+    EXPECT_LT(clock.accumulator, 1.0 / 240.0);
+    EXPECT_EQ(clock.advance(-1.0, 0.01, 1.0), 0);
+    EXPECT_EQ(clock.advance(0.1, 0.0, 1.0), 0);
+}
+
+TEST(AppState, AdvanceRunsFramesUnlessPaused) {
+    App app;
+    setScene(app, twoBlocks(), "two.json");
+    EXPECT_EQ(advanceSimulation(app, 0.05), 3);
+    EXPECT_EQ(app.world.frame, 3u);
+    app.paused = true;
+    EXPECT_EQ(advanceSimulation(app, 0.5), 0);
+    EXPECT_EQ(app.world.frame, 3u);
+}
+
+TEST(AppState, ResetGoesBackToTheSceneAsLoaded) {
+    App app;
+    setScene(app, twoBlocks(), "two.json");
+    app.world.settings.method = Method::TurnBased;
+    for (int i = 0; i < 10; ++i) stepSimulation(app);
+    app.selected = 1;
+    resetScene(app);
+    EXPECT_EQ(app.world.frame, 0u);
+    EXPECT_EQ(app.world.blocks[0].position, (Vec2{4, 6}));
+    EXPECT_EQ(app.world.settings.method, Method::Perfect);
+    EXPECT_EQ(app.trails.length(), 0);
+    EXPECT_EQ(app.selected, 1);
+}
+
+TEST(AppState, CycleMethodVisitsAllThree) {
+    App app;
+    setScene(app, twoBlocks(), "two.json");
+    cycleMethod(app);
+    EXPECT_EQ(app.world.settings.method, Method::MoveAndCorrect);
+    cycleMethod(app);
+    EXPECT_EQ(app.world.settings.method, Method::TurnBased);
+    cycleMethod(app);
+    EXPECT_EQ(app.world.settings.method, Method::Perfect);
+}
+
+TEST(AppState, ABadSceneFileKeepsTheCurrentSceneAndShowsTheError) {
+    const fs::path dir = tempDir("bad");
+    const fs::path bad = dir / "bad.json";
+    std::ofstream(bad)
+        << "{\"name\": \"x\", \"blocks\": [ {\"position\": [1, 2], \"mass\": \"heavy\"} ]}";
+    App app;
+    setScene(app, twoBlocks(), "two.json");
+    EXPECT_FALSE(loadScene(app, bad.string()));
+    EXPECT_EQ(app.scene.name, "two");
+    EXPECT_EQ(app.world.blocks.size(), 2u);
+    EXPECT_NE(app.error.find("bad.json"), std::string::npos) << app.error;
+    EXPECT_FALSE(loadScene(app, (dir / "missing.json").string()));
+    EXPECT_EQ(app.scene.name, "two");
+    fs::remove_all(dir);
+}
+
+TEST(AppState, SaveWritesAV1SceneThatLoadsBackAsTheCurrentState) {
+    const fs::path dir = tempDir("save");
+    App app;
+    setScene(app, twoBlocks(), "two.json");
+    for (int i = 0; i < 20; ++i) stepSimulation(app);
+    app.world.settings.bounciness = 0.5;
+    app.world.settings.method = Method::TurnBased;
+    const std::string path = (dir / "saved.json").string();
+    ASSERT_TRUE(saveCurrentScene(app, path)) << app.error;
+
+    const SceneResult loaded = loadSceneFile(path);
+    ASSERT_TRUE(loaded.scene) << loaded.error.text();
+    const Scene& s = *loaded.scene;
+    ASSERT_EQ(s.blocks.size(), 2u);
+    EXPECT_EQ(s.blocks[0].name, "A");
+    EXPECT_EQ(s.blocks[0].color, "#d04040");
+    EXPECT_TRUE(approxEqual(s.blocks[0].position, app.world.blocks[0].position, 1e-9));
+    EXPECT_TRUE(approxEqual(s.blocks[1].velocity, app.world.blocks[1].velocity, 1e-9));
+    EXPECT_EQ(s.blocks[1].mass, 2.0);
+    EXPECT_EQ(s.settings.bounciness, 0.5);
+    EXPECT_EQ(s.settings.method, Method::TurnBased);
+    fs::remove_all(dir);
+}
+
+TEST(AppState, SaveKeepsNamesInStepAfterAddAndDelete) {
+    const fs::path dir = tempDir("save2");
+    App app;
+    setScene(app, twoBlocks(), "two.json");
+    app.selected = 0;
+    deleteSelected(app);
+    ASSERT_GE(addBlockAt(app, {16, 3}), 0);
+    const std::string path = (dir / "saved.json").string();
+    ASSERT_TRUE(saveCurrentScene(app, path)) << app.error;
+    const SceneResult loaded = loadSceneFile(path);
+    ASSERT_TRUE(loaded.scene) << loaded.error.text();
+    ASSERT_EQ(loaded.scene->blocks.size(), 2u);
+    EXPECT_EQ(loaded.scene->blocks[0].name, "B");
+    EXPECT_EQ(loaded.scene->blocks[0].mass, 2.0);
+    fs::remove_all(dir);
+}
+
+TEST(AppState, SaveToABadPathFailsWithAMessage) {
+    App app;
+    setScene(app, twoBlocks(), "two.json");
+    EXPECT_FALSE(saveCurrentScene(app, "/nonexistent-dir/x/y.json"));
+    EXPECT_FALSE(app.error.empty());
+    EXPECT_FALSE(saveCurrentScene(app, ""));
+}
+
+TEST(AppState, BlockKindAndSizeEdits) {
+    App app;
+    setScene(app, twoBlocks(), "two.json");
+    setBlockKind(app, 0, BodyKind::Static);
+    EXPECT_EQ(app.world.blocks[0].velocity, Vec2{});
+    EXPECT_EQ(app.world.blocks[0].mass, kInfiniteMass);
+    setBlockKind(app, 0, BodyKind::Dynamic);
+    EXPECT_EQ(app.world.blocks[0].mass, 1.0);
+    EXPECT_TRUE(setBlockSize(app, 0, {2, 2}));
+    EXPECT_FALSE(setBlockSize(app, 0, {30, 1})); // out of bounds
+    EXPECT_FALSE(setBlockSize(app, 0, {17, 1})); // would overlap B
+    EXPECT_FALSE(setBlockSize(app, 0, {-1, 1}));
+    EXPECT_EQ(app.world.blocks[0].size, (Vec2{2, 2}));
+}
+
+TEST(AppState, ViewportLeavesRoomForThePanel) {
+    App app;
+    const ScreenRect withUi = sceneViewport(app, 1280, 720);
+    EXPECT_GT(withUi.x, 0.0);
+    EXPECT_DOUBLE_EQ(withUi.x + withUi.width, 1280.0);
+    app.uiVisible = false;
+    const ScreenRect full = sceneViewport(app, 1280, 720);
+    EXPECT_DOUBLE_EQ(full.x, 0.0);
+    EXPECT_DOUBLE_EQ(full.width, 1280.0);
+}
+
+TEST(AppState, ShowListSetsTheOverlays) {
+    App app;
+    ShowSet show;
+    std::string error;
+    ASSERT_TRUE(parseShowList("trails,plots", show, &error));
+    applyShowSet(app, show);
+    EXPECT_TRUE(app.show.trails);
+    EXPECT_FALSE(app.show.vectors);
+    EXPECT_TRUE(app.uiVisible);
+    ASSERT_TRUE(parseShowList("none", show, &error));
+    applyShowSet(app, show);
+    EXPECT_FALSE(app.uiVisible);
+}
+
+TEST(AppLog, DescribesWhatChanged) {
+    App app;
+    setScene(app, twoBlocks(), "two.json");
+    const LoggedState before = snapshotForLog(app);
+    app.paused = true;
+    cycleMethod(app);
+    app.world.settings.bounciness = 0.25;
+    const auto lines = describeChanges(before, snapshotForLog(app));
+    ASSERT_EQ(lines.size(), 3u);
+    EXPECT_EQ(lines[0], "paused");
+    EXPECT_EQ(lines[1], "method: move-and-correct");
+    EXPECT_EQ(lines[2], "bounciness: 0.25");
+    EXPECT_TRUE(describeChanges(before, before).empty());
+}
+
+TEST(Trails, KeepTheNewestPointsAndRestartWhenBlocksChange) {
+    Trails trails(3, 1);
+    World w;
+    w.blocks.resize(2);
+    for (int i = 0; i < 5; ++i) {
+        w.blocks[0].position = {double(i), 0};
+        trails.record(w);
+    }
+    EXPECT_EQ(trails.length(), 3);
+    EXPECT_EQ(trails.point(0, 0), (Vec2{4, 0}));
+    EXPECT_EQ(trails.point(0, 2), (Vec2{2, 0}));
+    EXPECT_EQ(trails.point(0, 3), Vec2{}); // out of range: zero, no crash
+    w.blocks.resize(3);
+    trails.record(w);
+    EXPECT_EQ(trails.length(), 1);
+    trails.clear();
+    EXPECT_EQ(trails.length(), 0);
+}
+
+TEST(AppConfig, RoundTripsAndIgnoresNonsense) {
+    AppConfig c;
+    c.lastScene = "/home/me/scenes/x.json";
+    c.uiScale = 1.5f;
+    c.windowWidth = 1920;
+    c.windowHeight = 1080;
+    const AppConfig back = parseAppConfig(formatAppConfig(c));
+    EXPECT_EQ(back.lastScene, c.lastScene);
+    EXPECT_EQ(back.uiScale, 1.5f);
+    EXPECT_EQ(back.windowWidth, 1920);
+    EXPECT_EQ(back.windowHeight, 1080);
+    const AppConfig bad = parseAppConfig("ui_scale = banana\nwindow_width = -5\nfoo = bar\n=\n");
+    EXPECT_EQ(bad.uiScale, 1.0f);
+    EXPECT_EQ(bad.windowWidth, 320);
+    EXPECT_EQ(parseAppConfig("ui_scale = 99").uiScale, kMaxUiScale);
+}
+
+TEST(AppConfig, SavesUnderTheConfigDirectory) {
+    const fs::path dir = tempDir("cfg") / "collision-sandbox";
+    AppConfig c;
+    c.lastScene = "a.json";
+    ASSERT_TRUE(saveAppConfig(dir.string(), c));
+    EXPECT_EQ(loadAppConfig(dir.string()).lastScene, "a.json");
+    EXPECT_EQ(loadAppConfig((dir / "nope").string()).lastScene, "");
+    fs::remove_all(dir.parent_path());
+}
+
+TEST(Options, ParsesTheContract) {
+    const char* argv[] = {"sandbox", "scene.json", "--screenshot", "a.png",  "--frames",
+                          "120",     "--size",     "1920x1080",    "--show", "none"};
+    const ParsedOptions p = parseOptions(10, argv);
+    ASSERT_FALSE(p.exit);
+    EXPECT_EQ(p.options.scene, "scene.json");
+    EXPECT_EQ(p.options.screenshot, "a.png");
+    EXPECT_EQ(p.options.frames, 120);
+    EXPECT_EQ(p.options.width, 1920);
+    EXPECT_EQ(p.options.height, 1080);
+    EXPECT_TRUE(p.options.show.none);
+    EXPECT_TRUE(wantsOffscreen(p.options));
+}
+
+TEST(Options, RejectsBadValues) {
+    const char* badShow[] = {"sandbox", "--show", "vectors,bogus"};
+    EXPECT_TRUE(parseOptions(3, badShow).exit);
+    EXPECT_NE(parseOptions(3, badShow).exitCode, 0);
+    const char* badSize[] = {"sandbox", "--size", "12x"};
+    EXPECT_NE(parseOptions(3, badSize).exitCode, 0);
+    const char* recordNoFrames[] = {"sandbox", "--record", "dir"};
+    EXPECT_NE(parseOptions(3, recordNoFrames).exitCode, 0);
+    const char* unknown[] = {"sandbox", "--frobnicate"};
+    EXPECT_NE(parseOptions(2, unknown).exitCode, 0);
+    int w = 0, h = 0;
+    EXPECT_FALSE(parseSize("100x100x3", w, h));
+    EXPECT_TRUE(parseSize("640x480", w, h));
+    EXPECT_EQ(w, 640);
+}
+
+TEST(SceneLibrary, FindsShippedScenesByName) {
+    const fs::path dir = tempDir("lib");
+    std::ofstream(dir / "b_scene.json") << "{}";
+    std::ofstream(dir / "a_scene.json") << "{}";
+    std::ofstream(dir / "notes.txt") << "x";
+    const auto list = listScenes(dir.string());
+    ASSERT_EQ(list.size(), 2u);
+    EXPECT_EQ(list[0].title, "a scene");
+    EXPECT_EQ(resolveScenePath("b_scene", dir.string()), (dir / "b_scene.json").string());
+    EXPECT_EQ(resolveScenePath("b_scene.json", dir.string()), (dir / "b_scene.json").string());
+    EXPECT_EQ(resolveScenePath("zzz", dir.string()), "zzz");
+    fs::remove_all(dir);
+}
+
+} // namespace

@@ -1,0 +1,264 @@
+// Screenshot tests: `sandbox-offscreen` renders the shipped scenes (OSMesa, no display) and the
+// images are compared with tests/golden/ under a tolerance that survives small rasteriser
+// differences; semantic checks look for a block's colour where the engine says the block is and
+// for the controls panel. A failing comparison leaves NAME.png (actual) and NAME.diff.png in
+// the build directory's screenshot-output/.
+#include "app_state.h"
+#include "image_compare.h"
+#include "palette.h"
+#include "scene.h"
+#include "scene_library.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Tolerance: a pixel differs when a channel is off by more than 24 counts; a comparison fails
+// when more than 0.5% of the pixels differ.
+constexpr int kChannelThreshold = 24;
+constexpr double kMaxDifferingFraction = 0.005;
+
+std::string quote(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+struct RunResult {
+    int exitCode = -1;
+    std::string output;
+};
+
+// Runs a command line through the shell with DISPLAY unset; stdout and stderr captured.
+RunResult run(const std::string& commandLine) {
+    RunResult result;
+    const std::string command = "env -u DISPLAY " + commandLine + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return result;
+    char buffer[512];
+    while (std::fgets(buffer, sizeof buffer, pipe)) result.output += buffer;
+    const int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+fs::path outputDir() {
+    const fs::path dir = SANDBOX_SCREENSHOT_OUTPUT_DIR;
+    fs::create_directories(dir);
+    return dir;
+}
+
+// Renders `args` (sandbox-offscreen's arguments) to `png`; fails the test on a non-zero exit.
+Image render(const std::string& args, const fs::path& png) {
+    const RunResult r =
+        run(quote(SANDBOX_OFFSCREEN_EXE) + " " + args + " --screenshot " + quote(png.string()));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    const Image image = loadPng(png.string());
+    EXPECT_FALSE(image.empty()) << "no image at " << png;
+    return image;
+}
+
+struct Case {
+    std::string name;
+    std::string args;
+};
+
+std::vector<Case> loadCases() {
+    std::vector<Case> cases;
+    std::ifstream in(fs::path(SANDBOX_GOLDEN_DIR) / "cases.txt");
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream words(line);
+        Case c;
+        words >> c.name;
+        std::getline(words, c.args);
+        cases.push_back(c);
+    }
+    return cases;
+}
+
+void PrintTo(const Case& c, std::ostream* os) {
+    *os << c.name << ":" << c.args;
+}
+
+class ScreenshotGolden : public ::testing::TestWithParam<Case> {};
+
+TEST_P(ScreenshotGolden, MatchesGolden) {
+    const Case& c = GetParam();
+    const fs::path golden = fs::path(SANDBOX_GOLDEN_DIR) / (c.name + ".png");
+    const fs::path actualPath = outputDir() / (c.name + ".png");
+    const Image actual = render(c.args, actualPath);
+    const Image expected = loadPng(golden.string());
+    ASSERT_FALSE(expected.empty())
+        << "missing golden " << golden << " (tests/golden/regenerate.sh writes it)";
+    const Comparison cmp = compareImages(expected, actual, kChannelThreshold);
+    ASSERT_TRUE(cmp.sameSize) << "size differs from " << golden;
+    if (cmp.fraction() > kMaxDifferingFraction) {
+        const fs::path diffPath = outputDir() / (c.name + ".diff.png");
+        savePng(diffPath.string(), diffImage(expected, actual, kChannelThreshold));
+        FAIL() << c.name << ": " << cmp.differing << " of " << cmp.total << " pixels differ ("
+               << 100.0 * cmp.fraction() << "%)\n  actual: " << actualPath
+               << "\n  diff:   " << diffPath << "\n  golden: " << golden;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Shipped, ScreenshotGolden, ::testing::ValuesIn(loadCases()),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                             return info.param.name;
+                         });
+
+// The engine's view of a scene after `frames` frames, and the camera the app would use.
+App simulate(const std::string& sceneName, int frames, int width, int height, bool ui) {
+    App app;
+    const std::string path = resolveScenePath(sceneName, SANDBOX_SCENES_DIR);
+    EXPECT_TRUE(loadScene(app, path)) << app.error;
+    for (int i = 0; i < frames; ++i) stepSimulation(app);
+    app.uiVisible = ui;
+    updateCamera(app, width, height);
+    return app;
+}
+
+// The share of sample points inside block `i` (its inner half, on a 7 x 7 grid) whose colour is
+// within `tolerance` of the block's colour.
+double colourMatch(const Image& image, const App& app, int i, int tolerance) {
+    const Block& b = app.world.blocks[static_cast<std::size_t>(i)];
+    const Color want = blockDisplayColor(app, i);
+    int hits = 0, samples = 0;
+    for (int sy = 0; sy < 7; ++sy) {
+        for (int sx = 0; sx < 7; ++sx) {
+            const Vec2 p = b.position + Vec2{(sx / 6.0 - 0.5) * 0.5 * b.size.x,
+                                             (sy / 6.0 - 0.5) * 0.5 * b.size.y};
+            const Vec2 s = app.camera.worldToScreen(p);
+            const int x = static_cast<int>(s.x), y = static_cast<int>(s.y);
+            if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;
+            ++samples;
+            const int r = image.at(x, y, 0), g = image.at(x, y, 1), bl = image.at(x, y, 2);
+            if (std::abs(r - int(want.r * 255)) <= tolerance &&
+                std::abs(g - int(want.g * 255)) <= tolerance &&
+                std::abs(bl - int(want.b * 255)) <= tolerance) {
+                ++hits;
+            }
+        }
+    }
+    return samples ? double(hits) / samples : 0.0;
+}
+
+void expectBlocksWhereTheEngineSays(const std::string& scene, int frames) {
+    const fs::path png = outputDir() / ("semantic_" + scene + ".png");
+    const Image image = render(scene + " --frames " + std::to_string(frames) + " --show none", png);
+    ASSERT_FALSE(image.empty());
+    const App app = simulate(scene, frames, image.width, image.height, false);
+    int checked = 0;
+    for (int i = 0; i < static_cast<int>(app.world.blocks.size()); ++i) {
+        const Block& b = app.world.blocks[static_cast<std::size_t>(i)];
+        if (!b.isDynamic() || app.camera.metresToPixels(std::min(b.size.x, b.size.y)) < 12)
+            continue;
+        EXPECT_GE(colourMatch(image, app, i, 40), 0.6)
+            << scene << ": block " << blockDisplayName(app, i) << " at (" << b.position.x << ", "
+            << b.position.y << ") not drawn there; see " << png;
+        ++checked;
+    }
+    EXPECT_GT(checked, 0);
+}
+
+TEST(ScreenshotSemantic, BlocksAreDrawnWhereTheEngineSaysLectureExample) {
+    expectBlocksWhereTheEngineSays("lecture_example_1", 45);
+}
+
+TEST(ScreenshotSemantic, BlocksAreDrawnWhereTheEngineSaysBouncingSquares) {
+    expectBlocksWhereTheEngineSays("bouncing_squares", 90);
+}
+
+// The controls panel's title bar: ImGuiCol_TitleBg of the theme (ui_style.cpp), 41 74 122.
+bool titleBarAt(const Image& image, int x, int y) {
+    return std::abs(image.at(x, y, 0) - 41) <= 12 && std::abs(image.at(x, y, 1) - 74) <= 12 &&
+           std::abs(image.at(x, y, 2) - 122) <= 12;
+}
+
+TEST(ScreenshotSemantic, ControlsPanelIsPresentAndHiddenByShowNone) {
+    const Image withUi = render("lecture_example_1", outputDir() / "semantic_panel.png");
+    ASSERT_FALSE(withUi.empty());
+    const App app = simulate("lecture_example_1", 0, withUi.width, withUi.height, true);
+    const int right = static_cast<int>(app.camera.viewport().x) - 20;
+    EXPECT_TRUE(titleBarAt(withUi, right, 8)) << "no panel title bar at (" << right << ", 8)";
+    EXPECT_TRUE(titleBarAt(withUi, right / 2, 4));
+    const Image noUi = render("lecture_example_1 --show none", outputDir() / "semantic_noui.png");
+    ASSERT_FALSE(noUi.empty());
+    EXPECT_FALSE(titleBarAt(noUi, right, 8));
+}
+
+TEST(ScreenshotCommandLine, SizeIsRespected) {
+    const Image image = render("lecture_example_1 --size 640x360", outputDir() / "size.png");
+    EXPECT_EQ(image.width, 640);
+    EXPECT_EQ(image.height, 360);
+}
+
+TEST(ScreenshotCommandLine, BadArgumentsExitNonZeroWithAMessage) {
+    const std::string exe = quote(SANDBOX_OFFSCREEN_EXE);
+    const fs::path png = outputDir() / "never.png";
+    RunResult r = run(exe + " lecture_example_1 --show bogus --screenshot " + quote(png.string()));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("bogus"), std::string::npos) << r.output;
+    r = run(exe + " no_such_scene.json --screenshot " + quote(png.string()));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("no_such_scene"), std::string::npos) << r.output;
+    r = run(exe + " lecture_example_1 --size 0x0 --screenshot " + quote(png.string()));
+    EXPECT_NE(r.exitCode, 0);
+    r = run(exe + " lecture_example_1 --screenshot /nonexistent-dir/a.png");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_FALSE(fs::exists(png));
+}
+
+TEST(ScreenshotCommandLine, SandboxWithoutDisplayRendersTheDefaultScene) {
+    const fs::path dir = outputDir() / "no_display";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const RunResult r = run(
+        "sh -c " + quote("cd " + quote(dir.string()) + " && exec " + quote(SANDBOX_WINDOW_EXE)));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("sandbox-screenshot.png"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("no display"), std::string::npos) << r.output;
+    EXPECT_FALSE(loadPng((dir / "sandbox-screenshot.png").string()).empty());
+}
+
+TEST(ScreenshotCommandLine, SandboxForwardsScreenshotToTheOffscreenRenderer) {
+    const fs::path png = outputDir() / "forwarded.png";
+    fs::remove(png);
+    const RunResult r = run(quote(SANDBOX_WINDOW_EXE) + " lecture_example_1 --screenshot " +
+                            quote(png.string()) + " --size 320x200");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(loadPng(png.string()).width, 320);
+}
+
+TEST(ScreenshotCommandLine, RecordWritesNumberedFrames) {
+    const fs::path dir = outputDir() / "record";
+    fs::remove_all(dir);
+    const RunResult r = run(quote(SANDBOX_OFFSCREEN_EXE) + " lecture_example_1 --size 320x200 " +
+                            "--frames 3 --record " + quote(dir.string()));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    for (int i = 0; i < 3; ++i) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%05d.png", i);
+        EXPECT_FALSE(loadPng((dir / name).string()).empty()) << name;
+    }
+    const Image first = loadPng((dir / "frame_00000.png").string());
+    const Image last = loadPng((dir / "frame_00002.png").string());
+    EXPECT_GT(compareImages(first, last, kChannelThreshold).differing, 0) << "nothing moved";
+}
+
+} // namespace

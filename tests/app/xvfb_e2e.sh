@@ -1,0 +1,135 @@
+#!/bin/bash
+# End-to-end test of the real window: start Xvfb on a free display, run `sandbox --verbose` on a
+# scene, press P, R, S and Space and drag a slider with xdotool, and check through screenshots
+# (xwd) and the app's --verbose log that each acted. Every wait has a timeout; Xvfb and the app
+# are stopped on exit.
+#   xvfb_e2e.sh SANDBOX PNG_DIFF CONVERT SCENE WORKDIR
+set -u
+sandbox=$1 png_diff=$2 convert=$3 scene=$4 work=$5
+rm -rf "$work"
+mkdir -p "$work/config"
+log=$work/app.log
+xvfb_pid= app_pid=
+
+cleanup() {
+    [ -n "$app_pid" ] && kill "$app_pid" 2>/dev/null
+    [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null
+    wait 2>/dev/null
+}
+trap cleanup EXIT
+
+fail() {
+    echo "FAIL: $*"
+    echo "--- app log ($log)"
+    cat "$log" 2>/dev/null
+    echo "--- screenshots in $work"
+    exit 1
+}
+
+# A free display number: no lock file and no socket; Xvfb must come up within 10 s.
+for n in $(seq 91 140); do
+    [ -e "/tmp/.X$n-lock" ] || [ -e "/tmp/.X11-unix/X$n" ] && continue
+    Xvfb ":$n" -screen 0 1280x800x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
+    xvfb_pid=$!
+    for _ in $(seq 100); do
+        [ -e "/tmp/.X11-unix/X$n" ] && break
+        kill -0 "$xvfb_pid" 2>/dev/null || break
+        sleep 0.1
+    done
+    if [ -e "/tmp/.X11-unix/X$n" ] && kill -0 "$xvfb_pid" 2>/dev/null; then
+        export DISPLAY=":$n"
+        break
+    fi
+    kill "$xvfb_pid" 2>/dev/null
+    xvfb_pid=
+done
+[ -n "$xvfb_pid" ] || fail "could not start Xvfb"
+echo "Xvfb on $DISPLAY"
+
+export XDG_CONFIG_HOME=$work/config
+timeout 150 "$sandbox" "$scene" --verbose --size 1280x720 >"$log" 2>&1 &
+app_pid=$!
+
+# wait_for TEXT [SECONDS]: until a log line contains TEXT.
+wait_for() {
+    local limit=$((${2:-10} * 10))
+    for _ in $(seq "$limit"); do
+        grep -q -- "$1" "$log" && return 0
+        kill -0 "$app_pid" 2>/dev/null || fail "the app exited while waiting for '$1'"
+        sleep 0.1
+    done
+    fail "no '$1' in the log"
+}
+shot() { xwd -root -silent | "$convert" xwd:- "png:$work/$1.png" || fail "screenshot $1"; }
+# differing PNG_A PNG_B X Y W H: number of differing pixels in the region.
+differing() { "$png_diff" "$work/$1.png" "$work/$2.png" "$3" "$4" "$5" "$6" || fail "png_diff $1 $2"; }
+
+wait_for "window ready" 30
+# The panel is 350 px wide at UI scale 1; the scene is right of it, the status badge at its top.
+scene_region="360 40 900 660"
+badge_region="350 0 500 36"
+# With no window manager, keys go to the window under the pointer: keep it inside the window,
+# below the arena's bottom wall (nothing there to hover), and give the window the focus.
+park() { xdotool mousemove 1275 715; }
+park
+win=$(xdotool search --sync --limit 1 --name "Collision sandbox") || fail "no window found"
+xdotool windowfocus --sync "$win" 2>/dev/null || true
+
+# The scene moves.
+shot moving_a; sleep 0.6; shot moving_b
+[ "$(differing moving_a moving_b $scene_region)" -gt 0 ] || fail "the scene does not move"
+echo "ok: the scene moves"
+
+# P pauses: two screenshots are identical; P again resumes.
+xdotool key p; wait_for "^paused"
+sleep 0.3; shot paused_a; sleep 0.6; shot paused_b
+[ "$(differing paused_a paused_b 0 0 1280 720)" -eq 0 ] || fail "P did not pause"
+[ "$(differing moving_b paused_a $badge_region)" -gt 0 ] || fail "no PAUSED badge"
+echo "ok: P pauses"
+
+# S switches the method: the log says so and the badge changes.
+xdotool key s; wait_for "method: move-and-correct"
+sleep 0.3; shot method
+[ "$(differing paused_b method $badge_region)" -gt 0 ] || fail "S did not change the label"
+echo "ok: S switches the method"
+
+# R resets while paused: the picture goes back to frame 0 (t = 0) and stays.
+xdotool key r; wait_for "^reset"
+sleep 0.3; shot reset_a
+[ "$(differing method reset_a $scene_region)" -gt 0 ] || fail "R did not move the blocks back"
+xdotool key p; wait_for "^resumed"; sleep 0.5; xdotool key p
+wait_for "^paused"; grep -c "^paused" "$log" | grep -q 2 || fail "second pause missing"
+xdotool key r; sleep 0.3; shot reset_b
+[ "$(differing reset_a reset_b $scene_region)" -eq 0 ] || fail "two resets differ"
+echo "ok: R resets"
+
+# Space: slow motion on (log and badge), and the simulation still advances, slowly.
+xdotool key space; wait_for "slow motion: on"
+xdotool key p; wait_for "^resumed"
+sleep 0.3; shot slow_a; sleep 1.0; shot slow_b
+[ "$(differing reset_b slow_a $badge_region)" -gt 0 ] || fail "no slow-motion badge"
+[ "$(differing slow_a slow_b $scene_region)" -gt 0 ] || fail "slow motion froze the scene"
+xdotool key space; wait_for "slow motion: off"
+echo "ok: Space slows down"
+
+# Drag the bounciness slider to its left end: C goes down (the log reports each change).
+read -r _ _ sx sy sw sh < <(grep -m1 "^widget bounciness" "$log")
+[ -n "${sh:-}" ] || fail "no slider position in the log"
+y=$((sy + sh / 2))
+xdotool mousemove $((sx + sw * 3 / 4)) $y mousedown 1 sleep 0.2 \
+    mousemove $((sx + sw / 2)) $y sleep 0.2 mousemove $((sx + 2)) $y sleep 0.2 mouseup 1
+wait_for "bounciness: 0" 5
+park
+shot slider
+echo "ok: the slider changes bounciness ($(grep "bounciness:" "$log" | tail -1))"
+
+# Esc quits cleanly.
+xdotool key Escape
+for _ in $(seq 50); do kill -0 "$app_pid" 2>/dev/null || break; sleep 0.1; done
+kill -0 "$app_pid" 2>/dev/null && fail "Esc did not quit"
+wait "$app_pid"; code=$?
+app_pid=
+[ "$code" -eq 0 ] || fail "the app exited with $code"
+grep -q "^quit" "$log" || fail "no quit in the log"
+echo "ok: Esc quits"
+echo "PASS"
