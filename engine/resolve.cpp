@@ -74,7 +74,7 @@ Resolution Resolver::resolvePair(int a, int b, int axis) {
         record(a, b, axis, m1, v1, m2, v2, 0.0, 1.0, A.velocity[axis], B.velocity[axis], false);
         return Resolution::Bounce;
     }
-    if (closing < restThreshold(axis)) return restCluster(a, b, axis, Wall{0});
+    if (forceRest_ || closing < restThreshold(axis)) return restCluster(a, b, axis, Wall{0});
 
     const double C = ctx_.world.settings.bounciness;
     const double u = centerOfMassVelocity(m1, v1, m2, v2);
@@ -97,7 +97,7 @@ Resolution Resolver::resolveWall(int a, int axis) {
         record(a, wall, axis, A.mass, v, kInfiniteMass, 0.0, 0.0, 1.0, -v, 0.0, false);
         return Resolution::Bounce;
     }
-    if (std::abs(v) < restThreshold(axis)) return restCluster(a, -1, axis, wall);
+    if (forceRest_ || std::abs(v) < restThreshold(axis)) return restCluster(a, -1, axis, wall);
     // A wall has infinite mass and u = 0, so v' = -C·v (lecture, "Bounce elasticity").
     const double C = ctx_.world.settings.bounciness;
     const double after = velocityAfterCollision(v, 0.0, C);

@@ -56,6 +56,10 @@ class Resolver {
     // Block a touches the wall on `axis` that it moves toward.
     Resolution resolveWall(int a, int axis);
 
+    // Resolve the next contacts perfectly inelastic whatever their speed (the perfect method's
+    // rule for a pair that collides again at the same instant).
+    void setForceRest(bool force) { forceRest_ = force; }
+
     const std::vector<int>& changed() const { return changed_; }
     void clearChanged() { changed_.clear(); }
     // Brings block i to the current time (a no-op unless lazy clocks were given).
@@ -72,6 +76,7 @@ class Resolver {
     SubstepContext& ctx_;
     double now_ = 0.0;
     std::vector<double>* localTime_ = nullptr;
+    bool forceRest_ = false;
     std::vector<int> changed_;
     // Scratch for the rest rule's cluster search.
     std::vector<int> members_;

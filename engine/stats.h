@@ -11,7 +11,7 @@ enum Wall : int { kWallLeft = -1, kWallRight = -2, kWallBottom = -3, kWallTop = 
 struct StepStats {
     int collisions = 0;           // resolved collisions this frame, walls included
     int events = 0;               // perfect method: event instants processed this frame
-    double maxPenetration = 0.0;  // m, largest overlap at the end of the frame
+    double maxPenetration = 0.0;  // m, largest overlap seen (end of frame, or met by the method)
     Vec2 momentum;                // kg·m/s, total over dynamic blocks
     double kineticEnergy = 0.0;   // J
     double potentialEnergy = 0.0; // J

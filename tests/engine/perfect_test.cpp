@@ -1,0 +1,239 @@
+// Random gas scenes (fixed seeds): the perfect method conserves kinetic energy (C = 1) and, away
+// from the walls, momentum, over thousands of collisions, and never creates an overlap; the
+// turn-based method never creates an overlap either; the perfect method's event cap.
+#include "collision.h"
+#include "world.h"
+
+#include "test_worlds.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace {
+
+using test_worlds::addGas;
+using test_worlds::GasOptions;
+using test_worlds::makeWorld;
+
+// "No overlap" tolerance, m: positions at a time of impact are computed (p + v·t) and agree with
+// the touching face only to rounding, a few ulps of coordinates of size ~20 (1e-14); 1e-9 leaves
+// a wide margin while any real overlap (a block moving into another for even 1 µs at 1 m/s)
+// would exceed it.
+constexpr double kOverlapTolerance = 1e-9;
+
+// Relative tolerance for conserved quantities over thousands of collisions: each collision
+// changes the totals by rounding only (~1e-16 relative); the errors add up like a random walk.
+constexpr double kConservation = 1e-12;
+
+class PerfectGas : public ::testing::TestWithParam<std::uint64_t> {};
+
+INSTANTIATE_TEST_SUITE_P(Seeds, PerfectGas, ::testing::Values(1u, 2u, 3u));
+
+TEST_P(PerfectGas, EnergyConservedAndNoOverlapWithWalls) {
+    // 300 blocks in a closed 20 m x 20 m box, no gravity, C = 1; the walls bounce elastically
+    // (v' = −v), so kinetic energy is conserved exactly up to rounding.
+    World world = makeWorld(Method::Perfect, {0.0, 0.0}, 1.0, Bounds{{0.0, 0.0}, {20.0, 20.0}});
+    GasOptions gas;
+    gas.min = {0.0, 0.0};
+    gas.max = {20.0, 20.0};
+    gas.count = 300;
+    gas.seed = GetParam();
+    addGas(world, gas);
+    ASSERT_EQ(maxOverlap(world), 0.0);
+    const double e0 = kineticEnergy(world);
+
+    std::int64_t collisions = 0;
+    for (int f = 0; f < 300; ++f) {
+        const StepStats s = world.step();
+        collisions += s.collisions;
+        ASSERT_LE(s.maxPenetration, kOverlapTolerance) << "frame " << f;
+        ASSERT_EQ(s.eventCapHits, 0);
+        ASSERT_NEAR(s.kineticEnergy, e0, kConservation * e0) << "frame " << f;
+    }
+    EXPECT_GE(collisions, 3000) << "the scene must test thousands of collisions";
+    EXPECT_NEAR(world.time, 300 * world.settings.dt, 1e-12);
+}
+
+TEST_P(PerfectGas, MomentumConservedAwayFromWalls) {
+    // A dense cluster in [0,20]² inside bounds ±200 m: it expands at a few m/s and never reaches
+    // a wall during the 2 s simulated (checked: no wall record in the log).
+    World world =
+        makeWorld(Method::Perfect, {0.0, 0.0}, 1.0, Bounds{{-200.0, -200.0}, {220.0, 220.0}});
+    GasOptions gas;
+    gas.min = {0.0, 0.0};
+    gas.max = {20.0, 20.0};
+    gas.count = 400;
+    gas.minFill = 0.6;
+    gas.maxFill = 0.9;
+    gas.seed = 100 + GetParam();
+    addGas(world, gas);
+    const Vec2 p0 = totalMomentum(world);
+    const double scale = test_worlds::momentumScale(world);
+    const double e0 = kineticEnergy(world);
+
+    std::int64_t collisions = 0;
+    std::vector<CollisionRecord> log;
+    for (int f = 0; f < 120; ++f) {
+        log.clear();
+        const StepStats s = world.step(&log);
+        collisions += s.collisions;
+        for (const CollisionRecord& r : log) ASSERT_GE(r.other, 0) << "a wall was hit";
+        ASSERT_LE(s.maxPenetration, kOverlapTolerance) << "frame " << f;
+        // Relative to Σ m|v| (the total itself is a sum with cancellation).
+        ASSERT_NEAR(s.momentum.x, p0.x, kConservation * scale) << "frame " << f;
+        ASSERT_NEAR(s.momentum.y, p0.y, kConservation * scale) << "frame " << f;
+        ASSERT_NEAR(s.kineticEnergy, e0, kConservation * e0) << "frame " << f;
+    }
+    EXPECT_GE(collisions, 1000) << "the scene must test many collisions";
+}
+
+class TurnBasedGas : public ::testing::TestWithParam<std::uint64_t> {};
+
+INSTANTIATE_TEST_SUITE_P(Seeds, TurnBasedGas, ::testing::Values(1u, 2u, 3u));
+
+TEST_P(TurnBasedGas, NoOverlapWithoutGravity) {
+    World world = makeWorld(Method::TurnBased, {0.0, 0.0}, 1.0, Bounds{{0.0, 0.0}, {20.0, 20.0}});
+    GasOptions gas;
+    gas.min = {0.0, 0.0};
+    gas.max = {20.0, 20.0};
+    gas.count = 300;
+    gas.seed = GetParam();
+    addGas(world, gas);
+    std::int64_t collisions = 0;
+    for (int f = 0; f < 300; ++f) {
+        const StepStats s = world.step();
+        collisions += s.collisions;
+        ASSERT_LE(s.maxPenetration, kOverlapTolerance) << "frame " << f;
+    }
+    EXPECT_GE(collisions, 1000);
+}
+
+TEST_P(TurnBasedGas, NoOverlapWithGravityAndBounciness) {
+    World world = makeWorld(Method::TurnBased, {0.0, -9.81}, 0.7, Bounds{{0.0, 0.0}, {20.0, 20.0}});
+    GasOptions gas;
+    gas.min = {0.0, 0.0};
+    gas.max = {20.0, 20.0};
+    gas.count = 300;
+    gas.seed = 50 + GetParam();
+    addGas(world, gas);
+    for (int f = 0; f < 300; ++f) {
+        const StepStats s = world.step();
+        ASSERT_LE(s.maxPenetration, kOverlapTolerance) << "frame " << f;
+    }
+}
+
+TEST(PerfectGravity, NoOverlapWithGravityAndBounciness) {
+    World world = makeWorld(Method::Perfect, {0.0, -9.81}, 0.7, Bounds{{0.0, 0.0}, {20.0, 20.0}});
+    world.settings.eventCap = 2000; // stays fast if the cap is hit (see PerfectSettling)
+    GasOptions gas;
+    gas.min = {0.0, 0.0};
+    gas.max = {20.0, 20.0};
+    gas.count = 300;
+    gas.seed = 77;
+    addGas(world, gas);
+    for (int f = 0; f < 300; ++f) {
+        const StepStats s = world.step();
+        ASSERT_LE(s.maxPenetration, kOverlapTolerance) << "frame " << f;
+    }
+}
+
+// A gas falling under gravity settles into a pile on the floor. SPEC: resting stacks must run
+// at full speed, so a settling pile must not need 20,000 events in one frame. Two causes found:
+// (1) fixed in fe6c5d5: blocks resting on each other overlap by ~1e-16 m (rounding), which made
+// sliding pairs "collide" sideways at time 0 and rest clusters alternate by 1 ulp forever
+// (cases Seed1C0 and Seed77C7 hit the cap every frame before that fix);
+// (2) still open: on the gravity-free axis (x) the rest threshold is restSpeed (1e-6 m/s) only,
+// so a row of blocks on the floor pressed against the right wall with x speeds ~1e-6 m/s
+// bounces back and forth at one instant (inelastic collapse): case Seed1C7, frame 257.
+struct SettleCase {
+    std::uint64_t seed;
+    double bounciness;
+};
+
+class PerfectSettling : public ::testing::TestWithParam<SettleCase> {};
+
+INSTANTIATE_TEST_SUITE_P(Cases, PerfectSettling,
+                         ::testing::Values(SettleCase{1, 0.0}, SettleCase{77, 0.7},
+                                           SettleCase{1, 0.7}),
+                         [](const ::testing::TestParamInfo<SettleCase>& info) {
+                             return "Seed" + std::to_string(info.param.seed) + "C" +
+                                    std::to_string(static_cast<int>(info.param.bounciness * 10));
+                         });
+
+TEST_P(PerfectSettling, SettlingPileNeverHitsTheEventCap) {
+    World world = makeWorld(Method::Perfect, {0.0, -9.81}, GetParam().bounciness,
+                            Bounds{{0.0, 0.0}, {20.0, 20.0}});
+    GasOptions gas;
+    gas.min = {0.0, 0.0};
+    gas.max = {20.0, 20.0};
+    gas.count = 300;
+    gas.seed = GetParam().seed;
+    addGas(world, gas);
+    for (int f = 0; f < 300; ++f) {
+        const StepStats s = world.step();
+        ASSERT_EQ(s.eventCapHits, 0) << "frame " << f << ", events " << s.events;
+        ASSERT_EQ(s.simulatedTime, world.settings.dt) << "frame " << f;
+        ASSERT_LE(s.maxPenetration, kOverlapTolerance) << "frame " << f;
+    }
+}
+
+// The event cap: with at most 5 events per substep, a dense gas ends its frames early at the
+// time of the last event; the world clock advances by exactly what was simulated, and ending
+// early never leaves an overlap.
+TEST(PerfectEventCap, CapEndsTheFrameEarlyWithoutOverlap) {
+    World world = makeWorld(Method::Perfect, {0.0, 0.0}, 1.0, Bounds{{0.0, 0.0}, {20.0, 20.0}});
+    world.settings.eventCap = 5;
+    GasOptions gas;
+    gas.min = {0.0, 0.0};
+    gas.max = {20.0, 20.0};
+    gas.count = 300;
+    gas.minFill = 0.7;
+    gas.maxFill = 0.9;
+    gas.maxSpeed = 10.0;
+    addGas(world, gas);
+    int capHits = 0;
+    for (int f = 0; f < 20; ++f) {
+        const double before = world.time;
+        const StepStats s = world.step();
+        capHits += s.eventCapHits;
+        EXPECT_LE(s.events, 5);
+        EXPECT_LE(s.maxPenetration, kOverlapTolerance) << "frame " << f;
+        EXPECT_GE(s.simulatedTime, 0.0);
+        EXPECT_LE(s.simulatedTime, world.settings.dt);
+        EXPECT_EQ(world.time, before + s.simulatedTime); // the same addition the step makes
+        if (s.eventCapHits > 0) {
+            EXPECT_LT(s.simulatedTime, world.settings.dt) << "frame " << f;
+        } else {
+            EXPECT_EQ(s.simulatedTime, world.settings.dt) << "frame " << f;
+        }
+    }
+    EXPECT_GT(capHits, 0);
+    EXPECT_LT(world.time, 20 * world.settings.dt);
+    EXPECT_GT(world.time, 0.0) << "time still advances";
+}
+
+TEST(PerfectEventCap, CapStopsLaterSubsteps) {
+    World world = makeWorld(Method::Perfect, {0.0, 0.0}, 1.0, Bounds{{0.0, 0.0}, {20.0, 20.0}});
+    world.settings.eventCap = 5;
+    world.settings.substeps = 4;
+    GasOptions gas;
+    gas.min = {0.0, 0.0};
+    gas.max = {20.0, 20.0};
+    gas.count = 300;
+    gas.minFill = 0.7;
+    gas.maxFill = 0.9;
+    gas.maxSpeed = 10.0;
+    addGas(world, gas);
+    const StepStats s = world.step();
+    ASSERT_EQ(s.eventCapHits, 1) << "the frame ends at the first capped substep";
+    EXPECT_LT(s.simulatedTime, world.settings.dt);
+    EXPECT_EQ(world.time, s.simulatedTime);
+    EXPECT_LE(s.maxPenetration, kOverlapTolerance);
+}
+
+} // namespace

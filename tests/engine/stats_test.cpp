@@ -1,0 +1,116 @@
+// Statistics: totals over dynamic blocks computed by hand, what a step reports, and the
+// collision count including walls.
+#include "world.h"
+
+#include "test_worlds.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace {
+
+using test_worlds::addBlock;
+using test_worlds::makeWorld;
+
+// Two dynamic blocks, one static, one kinematic (the last two have infinite mass: left out).
+World smallWorld(Method method) {
+    World world = makeWorld(method, {0.0, -10.0}, 1.0, Bounds{{-2.0, 1.0}, {20.0, 12.0}});
+    addBlock(world, {1.0, 3.0}, {1.0, 1.0}, {3.0, 4.0}, 2.0);
+    addBlock(world, {8.0, 7.0}, {0.5, 0.5}, {-1.0, 0.0}, 1.0);
+    addBlock(world, {15.0, 2.0}, {2.0, 2.0}, {}, 1.0, BodyKind::Static);
+    addBlock(world, {15.0, 9.0}, {2.0, 0.5}, {1.0, 0.0}, 1.0, BodyKind::Kinematic);
+    return world;
+}
+
+TEST(Statistics, TotalsByHand) {
+    const World world = smallWorld(Method::Perfect);
+    // Σ m·v = 2·(3,4) + 1·(−1,0) = (5, 8).
+    EXPECT_EQ(totalMomentum(world), (Vec2{5.0, 8.0}));
+    // Σ m|v|²/2 = 2·25/2 + 1·1/2 = 25.5.
+    EXPECT_EQ(kineticEnergy(world), 25.5);
+    // Σ −m·g·(p − min): heights above ymin = 1: 2 and 6; 2·10·2 + 1·10·6 = 100.
+    EXPECT_EQ(potentialEnergy(world), 100.0);
+    EXPECT_EQ(maxOverlap(world), 0.0);
+}
+
+TEST(Statistics, StepReportsTheNewStateByHand) {
+    // One frame of free flight (nothing is near anything): v += g·dt, then p += v·dt.
+    for (Method method : {Method::Perfect, Method::MoveAndCorrect, Method::TurnBased}) {
+        World world = smallWorld(method);
+        const double dt = world.settings.dt;
+        const StepStats s = world.step();
+        const double vy0 = 4.0 - 10.0 * dt; // block 0's new vertical velocity
+        const double vy1 = -10.0 * dt;
+        const double y0 = 3.0 + vy0 * dt, y1 = 7.0 + vy1 * dt;
+        // Tolerance 1e-12 (absolute, on values of size 1 to 100): a few rounded operations.
+        EXPECT_NEAR(s.momentum.x, 5.0, 1e-12);
+        EXPECT_NEAR(s.momentum.y, 2.0 * vy0 + vy1, 1e-12);
+        EXPECT_NEAR(s.kineticEnergy, 0.5 * 2.0 * (9.0 + vy0 * vy0) + 0.5 * (1.0 + vy1 * vy1),
+                    1e-12);
+        EXPECT_NEAR(s.potentialEnergy, 2.0 * 10.0 * (y0 - 1.0) + 10.0 * (y1 - 1.0), 1e-12);
+        EXPECT_EQ(s.collisions, 0);
+        EXPECT_EQ(s.events, 0);
+        EXPECT_EQ(s.eventCapHits, 0);
+        EXPECT_EQ(s.maxPenetration, 0.0);
+        EXPECT_EQ(s.simulatedTime, dt);
+        EXPECT_EQ(world.time, dt);
+        EXPECT_EQ(world.frame, 1u);
+        EXPECT_GE(s.stepMs, 0.0);
+        // The static block never moves; the kinematic one ignores gravity.
+        EXPECT_EQ(world.blocks[2].position, (Vec2{15.0, 2.0}));
+        EXPECT_NEAR(world.blocks[3].position.x, 15.0 + dt, 1e-12);
+        EXPECT_EQ(world.blocks[3].position.y, 9.0);
+        EXPECT_EQ(world.blocks[3].velocity, (Vec2{1.0, 0.0}));
+    }
+}
+
+TEST(Statistics, CollisionsCountWallHits) {
+    // Block 0 reaches the right wall within the first frame (0.05 m at 6 m/s < 0.1 m);
+    // block 1 and 2 meet head-on in the same frame (gap 0.1 m closing at 12 m/s).
+    for (Method method : {Method::Perfect, Method::MoveAndCorrect, Method::TurnBased}) {
+        World world = makeWorld(method, {0.0, 0.0}, 1.0);
+        addBlock(world, {19.45, 6.0}, {1.0, 1.0}, {6.0, 0.0});
+        addBlock(world, {5.0, 3.0}, {1.0, 1.0}, {6.0, 0.0});
+        addBlock(world, {6.1, 3.0}, {1.0, 1.0}, {-6.0, 0.0});
+        std::vector<CollisionRecord> log;
+        const StepStats s = world.step(&log);
+        EXPECT_EQ(s.collisions, 2) << methodName(method);
+        ASSERT_EQ(log.size(), 2u) << methodName(method);
+        int walls = 0;
+        for (const CollisionRecord& r : log) {
+            if (r.other < 0) {
+                ++walls;
+                EXPECT_EQ(r.other, kWallRight);
+                EXPECT_EQ(r.block, 0);
+                EXPECT_EQ(r.v1After, -6.0);
+            }
+        }
+        EXPECT_EQ(walls, 1) << methodName(method);
+        EXPECT_EQ(world.blocks[0].velocity.x, -6.0);
+        // Momentum: walls change it (+6 − 6 → −6 on block 0); the pair exchanges it.
+        EXPECT_NEAR(s.momentum.x, -6.0, 1e-12) << methodName(method);
+        // Move-and-correct finds the overlap after the frame: it reports the depth it met.
+        if (method == Method::MoveAndCorrect) {
+            EXPECT_GT(s.maxPenetration, 0.0);
+        }
+    }
+}
+
+TEST(Statistics, MaxOverlapSeesBlocksAndWalls) {
+    World world = makeWorld(Method::Perfect);
+    addBlock(world, {5.0, 5.0}, {1.0, 1.0});
+    addBlock(world, {5.75, 5.5}, {1.0, 1.0}); // x overlap 0.25, y overlap 0.5
+    EXPECT_EQ(maxOverlap(world), 0.25);
+    world.blocks[1].position = {6.0, 5.0}; // touching
+    EXPECT_EQ(maxOverlap(world), 0.0);
+    world.blocks[1].position = {19.875, 5.0}; // 0.375 outside the right wall
+    EXPECT_EQ(maxOverlap(world), 0.375);
+    // Static blocks may overlap each other.
+    World statics = makeWorld(Method::Perfect);
+    addBlock(statics, {5.0, 5.0}, {2.0, 2.0}, {}, 1.0, BodyKind::Static);
+    addBlock(statics, {5.5, 5.0}, {2.0, 2.0}, {}, 1.0, BodyKind::Static);
+    EXPECT_EQ(maxOverlap(statics), 0.0);
+}
+
+} // namespace
