@@ -66,6 +66,6 @@ void BM_Box2D(benchmark::State& state) {
     state.counters["energy_drift"] = (box2dKineticEnergy(*world) - startEnergy) / startEnergy;
 }
 
-}  // namespace
+} // namespace
 
 BENCHMARK(BM_Box2D)->RangeMultiplier(10)->Range(100, 10000)->Unit(benchmark::kMillisecond);

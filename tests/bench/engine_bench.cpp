@@ -1,6 +1,7 @@
 // Engine speed on the benchmark gas: ms per step for each method and block count, and the
 // perfect method's collisions per second. Run: build/tests/bench/engine_bench
 #include "gas.h"
+#include "scene.h"
 
 #include <benchmark/benchmark.h>
 
@@ -8,7 +9,7 @@ namespace {
 
 void stepGas(benchmark::State& state, Method method) {
     World world = makeGas(static_cast<int>(state.range(0)), method);
-    for (int i = 0; i < 30; ++i) world.step();  // let the grid start dissolve
+    for (int i = 0; i < 30; ++i) world.step(); // let the grid start dissolve
     const double startEnergy = kineticEnergy(world);
     long collisions = 0;
     for (auto _ : state) collisions += world.step().collisions;
@@ -20,14 +21,46 @@ void stepGas(benchmark::State& state, Method method) {
         benchmark::Counter(static_cast<double>(collisions), benchmark::Counter::kAvgIterations);
 }
 
-void BM_Perfect(benchmark::State& state) { stepGas(state, Method::Perfect); }
-void BM_MoveAndCorrect(benchmark::State& state) { stepGas(state, Method::MoveAndCorrect); }
-void BM_TurnBased(benchmark::State& state) { stepGas(state, Method::TurnBased); }
+void BM_Perfect(benchmark::State& state) {
+    stepGas(state, Method::Perfect);
+}
+void BM_MoveAndCorrect(benchmark::State& state) {
+    stepGas(state, Method::MoveAndCorrect);
+}
+void BM_TurnBased(benchmark::State& state) {
+    stepGas(state, Method::TurnBased);
+}
 
-}  // namespace
+// The shipped 500-block gas scene (app/scenes/gas_500.json) under each method: the README's
+// "collisions per second" figure.
+void BM_Gas500Scene(benchmark::State& state) {
+    const SceneResult loaded = loadSceneFile(SANDBOX_SCENES_DIR "/gas_500.json");
+    if (!loaded.scene) {
+        state.SkipWithError(loaded.error.text().c_str());
+        return;
+    }
+    World world = makeWorld(*loaded.scene);
+    world.settings.method = static_cast<Method>(state.range(0));
+    world.settings.measureOverlap = false;
+    long collisions = 0;
+    for (auto _ : state) collisions += world.step().collisions;
+    state.SetLabel(methodName(world.settings.method));
+    state.counters["collisions/s"] =
+        benchmark::Counter(static_cast<double>(collisions), benchmark::Counter::kIsRate);
+}
 
-BENCHMARK(BM_Perfect)->RangeMultiplier(10)->Range(100, 100000)->Arg(500)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_MoveAndCorrect)->RangeMultiplier(10)->Range(100, 100000)->Unit(benchmark::kMillisecond);
+} // namespace
+
+BENCHMARK(BM_Gas500Scene)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Perfect)
+    ->RangeMultiplier(10)
+    ->Range(100, 100000)
+    ->Arg(500)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MoveAndCorrect)
+    ->RangeMultiplier(10)
+    ->Range(100, 100000)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TurnBased)->RangeMultiplier(10)->Range(100, 100000)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();
