@@ -20,8 +20,10 @@ struct FirstImpact {
     std::vector<std::pair<int, std::uint8_t>> blocks;
 };
 
-// The first impact of block i moving for `remaining` seconds with everything else held still.
-void findFirstImpact(SubstepContext& ctx, int i, double remaining, FirstImpact& first) {
+// The first impact of block i moving for `remaining` seconds along `path` (its swept box) with
+// everything else held still.
+void findFirstImpact(SubstepContext& ctx, int i, double remaining, const Aabb& path,
+                     FirstImpact& first) {
     const std::vector<Block>& blocks = ctx.world.blocks;
     const Block& block = blocks[i];
     const Aabb box = aabbOf(block);
@@ -34,7 +36,6 @@ void findFirstImpact(SubstepContext& ctx, int i, double remaining, FirstImpact& 
         first.time = wall.time;
         first.wallAxes = wall.axes;
     }
-    const Aabb path = sweptAabb(block.position, block.size, block.velocity, remaining);
     ctx.broadPhase.query(path, [&](int j) {
         if (j == i) return;
         const Impact impact =
@@ -72,7 +73,7 @@ void advanceTurnBased(SubstepContext& ctx) {
             const double remaining = ctx.h - elapsed;
             const Aabb path = sweptAabb(block.position, block.size, block.velocity, remaining);
             if (!contains(grid.box(i), path)) grid.set(i, path);
-            findFirstImpact(ctx, i, remaining, first);
+            findFirstImpact(ctx, i, remaining, path, first);
             if (first.time == kNever) { // free flight for the rest of the step
                 block.position += block.velocity * remaining;
                 break;
