@@ -8,7 +8,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libstb-dev
   libimgui-dev libglfw3-dev libosmesa6-dev libgl-dev
   xvfb xdotool x11-apps imagemagick fonts-dejavu-core
-  libbox2d-dev
+  libbox2d-dev libchipmunk-dev
 )
 
 missing=()

@@ -1,6 +1,6 @@
 // Box2D 2.4 as a peer on a scene: fixed rotation, zero friction, restitution C, the scene's dt
 // with 8 velocity and 3 position iterations; walls as four static boxes outside the bounds.
-#include "simulation.h"
+#include "peers.h"
 
 #include "collision.h"
 
@@ -31,17 +31,7 @@ class Box2dSimulation : public Simulation {
         return std::chrono::duration<double, std::milli>(end - start).count();
     }
     const std::vector<Block>& blocks() override { return blocks_; }
-    double penetration() override {
-        double deepest = 0.0;
-        for (size_t i = 0; i < blocks_.size(); ++i) {
-            const Aabb a = aabbOf(blocks_[i]);
-            deepest = std::max(deepest, outsideDepth(a, bounds_));
-            for (size_t j = i + 1; j < blocks_.size(); ++j)
-                if (blocks_[i].isDynamic() || blocks_[j].isDynamic())
-                    deepest = std::max(deepest, ::penetration(a, aabbOf(blocks_[j])));
-        }
-        return deepest;
-    }
+    double penetration() override { return bruteForcePenetration(blocks_, bounds_); }
     double time() const override { return time_; }
 
   private:
@@ -107,12 +97,6 @@ class Box2dSimulation : public Simulation {
 
 } // namespace
 
-std::vector<std::string> peerNames() {
-    return {"box2d"};
-}
-
-std::unique_ptr<Simulation> makePeerSimulation(const std::string& peer, const Scene& scene,
-                                               double dt, int substeps) {
-    if (peer != "box2d") return nullptr;
+std::unique_ptr<Simulation> makeBox2dSimulation(const Scene& scene, double dt, int substeps) {
     return std::make_unique<Box2dSimulation>(scene, dt, substeps);
 }

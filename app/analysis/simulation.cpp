@@ -1,5 +1,8 @@
 #include "simulation.h"
 
+#include "collision.h"
+#include "peers.h"
+
 #include <algorithm>
 
 namespace {
@@ -34,11 +37,37 @@ std::unique_ptr<Simulation> makeEngineSimulation(const Scene& scene, Method meth
     return std::make_unique<EngineSimulation>(std::move(world));
 }
 
-#ifndef SANDBOX_HAVE_BOX2D
 std::vector<std::string> peerNames() {
-    return {};
+    std::vector<std::string> names;
+#ifdef SANDBOX_HAVE_BOX2D
+    names.push_back("box2d");
+#endif
+#ifdef SANDBOX_HAVE_CHIPMUNK
+    names.push_back("chipmunk");
+#endif
+    return names;
 }
-std::unique_ptr<Simulation> makePeerSimulation(const std::string&, const Scene&, double, int) {
+
+std::unique_ptr<Simulation> makePeerSimulation(const std::string& peer, const Scene& scene,
+                                               double dt, int substeps) {
+#ifdef SANDBOX_HAVE_BOX2D
+    if (peer == "box2d") return makeBox2dSimulation(scene, dt, substeps);
+#endif
+#ifdef SANDBOX_HAVE_CHIPMUNK
+    if (peer == "chipmunk") return makeChipmunkSimulation(scene, dt, substeps);
+#endif
+    (void)peer, (void)scene, (void)dt, (void)substeps; // unused when no peer is built
     return nullptr;
 }
-#endif
+
+double bruteForcePenetration(const std::vector<Block>& blocks, const Bounds& bounds) {
+    double deepest = 0.0;
+    for (size_t i = 0; i < blocks.size(); ++i) {
+        const Aabb a = aabbOf(blocks[i]);
+        deepest = std::max(deepest, outsideDepth(a, bounds));
+        for (size_t j = i + 1; j < blocks.size(); ++j)
+            if (blocks[i].isDynamic() || blocks[j].isDynamic())
+                deepest = std::max(deepest, penetration(a, aabbOf(blocks[j])));
+    }
+    return deepest;
+}
