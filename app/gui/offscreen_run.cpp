@@ -83,7 +83,9 @@ int screenshot(App& app, Offscreen& off, const Options& o) {
     for (int i = 0; i < o.frames; ++i) stepSimulation(app);
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off);
     if (!writeFrame(off, o.screenshot)) return 1;
-    std::printf("%s\n", o.screenshot.c_str());
+    std::error_code ec; // print where the PNG is, as an absolute path when it can be had
+    const std::filesystem::path where = std::filesystem::absolute(o.screenshot, ec);
+    std::printf("%s\n", ec ? o.screenshot.c_str() : where.c_str());
     return 0;
 }
 
