@@ -11,7 +11,13 @@
 // has already collided kElasticRepeats times at the same instant is therefore resolved perfectly
 // inelastic, by the rest rule, which merges the chain (compare the "TC model" of Luding and
 // McNamara, 1998). A Newton's cradle, or a block knocked against one resting on a wall, where
-// each pair meets once or twice, stays exact.
+// each pair meets once or twice, stays exact. Past half the event cap, the second meeting of a
+// pair at one instant already merges, so even a jammed box of thousands of blocks settles.
+//
+// Crushing: a block bouncing between two infinite masses that approach each other (a platform
+// pushing it into a wall) collides ever faster, without end, before they meet. After
+// kSqueezeBounces such alternating bounces in one substep its contacts are resolved by the rest
+// rule, which reverses the platform as on a wall.
 #include "collision.h"
 #include "methods.h"
 
@@ -23,8 +29,9 @@
 
 namespace {
 
-constexpr int kWallEvent = -1;     // Event::b for an impact with the bounds
-constexpr int kElasticRepeats = 8; // collisions of one pair at one instant before it merges
+constexpr int kWallEvent = -1;      // Event::b for an impact with the bounds
+constexpr int kElasticRepeats = 8;  // collisions of one pair at one instant before it merges
+constexpr int kSqueezeBounces = 16; // alternating bounces between closing infinite masses
 
 struct Event {
     double time;          // s since the substep start
@@ -62,7 +69,12 @@ class PerfectSolver {
     bool isStale(const Event& e) const {
         return e.stampA != stamp_[e.a] || (e.b >= 0 && e.stampB != stamp_[e.b]);
     }
-    bool resolve(const Event& e);
+    bool resolve(const Event& e, int processed);
+    bool repeatsAtInstant(const Event& e, int processed);
+    bool squeezed(const Event& e, int axis);
+    double anchorVelocity(int anchor, int axis) const {
+        return anchor < 0 ? 0.0 : blocks_[anchor].velocity[axis];
+    }
 
     SubstepContext& ctx_;
     std::vector<Block>& blocks_;
@@ -73,6 +85,14 @@ class PerfectSolver {
     std::priority_queue<Event, std::vector<Event>, Later> events_;
     double instant_ = -1.0;                               // s: the time of the pairs below
     std::unordered_map<std::uint64_t, int> metAtInstant_; // collisions per pair at that time
+    // Per block and axis: the infinite mass it last bounced off (a block index or kWallEvent),
+    // on which side (+1 above), and how many times in a row it alternated between closing ones.
+    struct Bounce {
+        int anchor = 0;
+        int side = 0;
+        int alternations = 0;
+    };
+    std::vector<Bounce> bounces_; // 2 per block
 };
 
 // Predicts block i's impacts with the walls and with every neighbour whose registered box meets
@@ -97,17 +117,49 @@ void PerfectSolver::predict(int i, double now, bool onlyLaterPairs) {
     });
 }
 
-bool PerfectSolver::resolve(const Event& e) {
+bool PerfectSolver::repeatsAtInstant(const Event& e, int processed) {
     if (e.time != instant_) {
         instant_ = e.time;
         metAtInstant_.clear();
     }
-    const auto pairKey = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(e.a)) << 32) |
-                         static_cast<std::uint32_t>(e.b);
-    resolver_.setForceRest(++metAtInstant_[pairKey] > kElasticRepeats);
+    const auto lo = static_cast<std::uint32_t>(e.b < 0 ? e.a : std::min(e.a, e.b));
+    const auto hi = static_cast<std::uint32_t>(e.b < 0 ? e.b : std::max(e.a, e.b));
+    const int allowed = processed > ctx_.world.settings.eventCap / 2 ? 1 : kElasticRepeats;
+    return ++metAtInstant_[(static_cast<std::uint64_t>(lo) << 32) | hi] > allowed;
+}
+
+// Whether the dynamic block of this event (against a wall, a static or a kinematic block) has
+// been bouncing between two infinite masses that close in on it.
+bool PerfectSolver::squeezed(const Event& e, int axis) {
+    int block = e.a, anchor = e.b;
+    if (e.b >= 0) {
+        if (blocks_[e.a].isDynamic() == blocks_[e.b].isDynamic()) return false;
+        if (!blocks_[e.a].isDynamic()) std::swap(block, anchor);
+    } else if (!blocks_[block].isDynamic()) {
+        return false;
+    }
+    const int side =
+        anchor < 0 ? (blocks_[block].velocity[axis] > 0.0 ? 1 : -1)
+                   : (positionAt(anchor, e.time)[axis] > positionAt(block, e.time)[axis] ? 1 : -1);
+    Bounce& last = bounces_[2 * block + axis];
+    // The lower and upper anchor close in when the lower one moves up faster than the upper.
+    const double lower = anchorVelocity(side > 0 ? last.anchor : anchor, axis);
+    const double upper = anchorVelocity(side > 0 ? anchor : last.anchor, axis);
+    if (last.side == -side && lower - upper > 0.0)
+        ++last.alternations;
+    else
+        last.alternations = 0;
+    last.anchor = anchor;
+    last.side = side;
+    return last.alternations > kSqueezeBounces;
+}
+
+bool PerfectSolver::resolve(const Event& e, int processed) {
+    const bool repeated = repeatsAtInstant(e, processed);
     bool changed = false;
     for (int axis = 0; axis < 2; ++axis) {
         if (!(e.axes & (1 << axis))) continue;
+        resolver_.setForceRest(repeated || squeezed(e, axis));
         const Resolution r = e.b == kWallEvent ? resolver_.resolveWall(e.a, axis)
                                                : resolver_.resolvePair(e.a, e.b, axis);
         changed |= r != Resolution::None;
@@ -119,6 +171,7 @@ void PerfectSolver::run() {
     const int n = static_cast<int>(blocks_.size());
     clock_.assign(n, 0.0);
     stamp_.assign(n, 0);
+    bounces_.assign(2 * static_cast<size_t>(n), Bounce{});
 
     // Register every block's trajectory over the whole substep, then predict the first impacts.
     grid_.build(ctx_.world.bounds, blocks_, [&](int i) { return trajectory(i, 0.0); });
@@ -138,7 +191,7 @@ void PerfectSolver::run() {
         }
         ++processed;
         resolver_.setNow(e.time, &clock_);
-        if (!resolve(e)) continue;
+        if (!resolve(e, processed)) continue;
         ++ctx_.stats.events;
         lastEventTime = e.time;
 

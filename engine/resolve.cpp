@@ -109,20 +109,23 @@ Resolution Resolver::resolveWall(int a, int axis) {
 // A slow contact: the seed bodies and everything touching them along the axis that does not
 // part from them (a resting stack, a block on a platform) move on together as one perfectly
 // inelastic body: every dynamic member takes the cluster's centre-of-mass velocity u, or the
-// velocity of an infinite mass it rests on. Infinite masses anchor the cluster; the search does
-// not pass through them.
+// velocity of the infinite masses it rests on. Infinite masses anchor the cluster; the search
+// does not pass through them. Anchors that disagree (a platform pressing the cluster against a
+// wall, two platforms squeezing it) crush it: the platforms that press reverse, as on a wall.
 Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) {
     std::vector<Block>& blocks = ctx_.world.blocks;
     const Bounds& bounds = ctx_.world.bounds;
     const int other = 1 - axis;
     const double threshold = restThreshold(axis);
+    const size_t changedBefore = changed_.size();
     inCluster_.resize(blocks.size(), 0);
     members_.clear();
     queue_.clear();
+    kinematics_.clear();
     bool restsOnStatic = seedWall != Wall{0};
-    int kinematicAnchor = -1;
 
-    auto add = [&](int j) {
+    // `closing` > 0: the body presses into the cluster member that found it.
+    auto add = [&](int j, double closing) {
         if (inCluster_[j]) return;
         inCluster_[j] = 1;
         members_.push_back(j);
@@ -131,13 +134,13 @@ Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) 
             queue_.push_back(j);
         else if (b.kind == BodyKind::Static)
             restsOnStatic = true;
-        else if (kinematicAnchor < 0 || j < kinematicAnchor)
-            kinematicAnchor = j;
+        else
+            kinematics_.push_back({j, closing > 0.0});
     };
     const double v1 = blocks[seedA].velocity[axis];
     const double v2 = seedB >= 0 ? blocks[seedB].velocity[axis] : 0.0;
-    add(seedA);
-    if (seedB >= 0) add(seedB);
+    add(seedA, 1.0); // the seed pair approaches: resolvePair and resolveWall checked
+    if (seedB >= 0) add(seedB, 1.0);
 
     for (size_t q = 0; q < queue_.size(); ++q) {
         const int i = queue_[q];
@@ -162,7 +165,7 @@ Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) 
                 closing = vj - vi; // i is on top of j
             else
                 return;
-            if (closing > -threshold) add(j);
+            if (closing > -threshold) add(j, closing);
         });
         // Walls are infinite masses at rest.
         if (box.min[axis] - bounds.min[axis] <= kTouchTolerance && vi < threshold)
@@ -171,23 +174,39 @@ Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) 
             restsOnStatic = true;
     }
 
-    double u = 0.0;
-    if (restsOnStatic) {
-        // Anything kinematic pressing the cluster against a static body is jammed: it reverses.
-        for (int j : members_)
-            if (blocks[j].kind == BodyKind::Kinematic && blocks[j].velocity[axis] != 0.0)
-                reverseKinematic(j, axis);
-    } else if (kinematicAnchor >= 0) {
-        u = blocks[kinematicAnchor].velocity[axis];
-    } else {
+    // The anchors' velocity along the axis: 0 for walls and static blocks, else the platforms'.
+    bool anchored = restsOnStatic, jammed = false;
+    double anchorVelocity = 0.0;
+    for (const auto& [k, presses] : kinematics_) {
+        const double vk = blocks[k].velocity[axis];
+        if (!anchored) {
+            anchored = true;
+            anchorVelocity = vk;
+        } else if (vk != anchorVelocity) {
+            jammed = true;
+        }
+    }
+    if (jammed) {
+        anchored = restsOnStatic;
+        anchorVelocity = 0.0;
+        for (const auto& [k, presses] : kinematics_) {
+            if (presses) {
+                reverseKinematic(k, axis);
+            } else if (!anchored) {
+                anchored = true;
+                anchorVelocity = blocks[k].velocity[axis];
+            }
+        }
+    }
+    double u = anchorVelocity;
+    if (!anchored) {
         double momentum = 0.0, mass = 0.0;
-        for (int j : members_) {
+        for (int j : queue_) { // the dynamic members
             momentum += blocks[j].mass * blocks[j].velocity[axis];
             mass += blocks[j].mass;
         }
         u = momentum / mass;
     }
-    const size_t changedBefore = changed_.size();
     for (int j : members_) {
         if (blocks[j].isDynamic()) setVelocity(j, axis, u);
         inCluster_[j] = 0;

@@ -7,6 +7,7 @@
 #include "world.h"
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 // Velocity of the centre of mass along one axis (lecture, "Momentum"):
@@ -82,4 +83,5 @@ class Resolver {
     std::vector<int> members_;
     std::vector<int> queue_;
     std::vector<unsigned char> inCluster_;
+    std::vector<std::pair<int, bool>> kinematics_; // kinematic members, and whether they press
 };

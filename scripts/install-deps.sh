@@ -9,6 +9,7 @@ packages=(
   libimgui-dev libglfw3-dev libosmesa6-dev libgl-dev
   xvfb xdotool x11-apps imagemagick fonts-dejavu-core
   libbox2d-dev libchipmunk-dev
+  clang libclang-rt-14-dev
 )
 
 missing=()
