@@ -26,7 +26,8 @@ constexpr std::size_t kMaxBlocks = 200000;
 constexpr int kMaxDepth = 64;  // the format itself needs 4 levels
 constexpr double kMaxDt = 1.0; // s: longer frames are certainly a mistake
 constexpr int kMaxSubsteps = 1000;
-constexpr double kMaxMagnitude = 1e9; // the message below says 1e9
+constexpr double kMaxMagnitude = 1e9; // m, m/s, m/s^2 (the messages say 1e9)
+constexpr double kMaxMass = 1e15;     // kg (the message says 1e15)
 // m: overlaps up to this much count as touching, so stacks typed in decimals ("exactly
 // touching" up to rounding) are accepted.
 constexpr double kTouchTolerance = 1e-9;
@@ -160,15 +161,10 @@ const json& requireObject(const json& value, const std::string& path) {
     return value;
 }
 
-// Every number in a scene is finite and at most kMaxMagnitude in size: coordinates in metres,
-// speeds in m/s, masses in kg and gravity in m/s^2 beyond that are mistakes, and squaring them
-// (energies) would overflow.
 double number(const json& value, const std::string& path) {
     if (!value.is_number()) throw ValueError{path, "must be a number"};
     const double x = value.get<double>();
     if (!std::isfinite(x)) throw ValueError{path, "must be a finite number"};
-    if (std::abs(x) > kMaxMagnitude)
-        throw ValueError{path, "must be between -1e9 and 1e9, not " + dumpValue(x)};
     return x;
 }
 
@@ -182,7 +178,14 @@ std::vector<double> numbers(const json& value, const std::string& path, std::siz
     if (!value.is_array() || value.size() != n)
         throw ValueError{path, "must be an array of " + std::to_string(n) + " numbers"};
     std::vector<double> out;
-    for (std::size_t i = 0; i < n; ++i) out.push_back(number(value[i], indexPath(path, i)));
+    // Coordinates (m), speeds (m/s) and gravity (m/s^2) beyond 1e9 in size are mistakes, and
+    // squaring them (energies) would overflow.
+    for (std::size_t i = 0; i < n; ++i) {
+        out.push_back(number(value[i], indexPath(path, i)));
+        if (std::abs(out.back()) > kMaxMagnitude)
+            throw ValueError{indexPath(path, i),
+                             "must be between -1e9 and 1e9, not " + dumpValue(out.back())};
+    }
     return out;
 }
 
@@ -255,6 +258,8 @@ BlockDef parseBlock(const json& value, const std::string& path) {
         throw ValueError{sizePath, "must be a number (a square) or [width, height]"};
     }
     if (!(b.size.x > 0.0 && b.size.y > 0.0)) throw ValueError{sizePath, "must be positive"};
+    if (b.size.x > kMaxMagnitude || b.size.y > kMaxMagnitude)
+        throw ValueError{sizePath, "must be at most 1e9 m"};
     if (value.contains("velocity")) b.velocity = vec2(value["velocity"], keyPath(path, "velocity"));
     // Without "mass" a block is dynamic with 1 kg (BlockDef's default).
     if (value.contains("mass")) {
@@ -266,7 +271,8 @@ BlockDef parseBlock(const json& value, const std::string& path) {
             b.kind = BodyKind::Kinematic;
         } else if (mass.is_number()) {
             b.mass = number(mass, massPath);
-            if (!(b.mass > 0.0)) throw ValueError{massPath, "must be positive"};
+            if (!(b.mass > 0.0 && b.mass <= kMaxMass))
+                throw ValueError{massPath, "must be more than 0 and at most 1e15 kg"};
         } else {
             throw ValueError{massPath, "must be a positive number, \"static\" or \"kinematic\""};
         }
@@ -422,6 +428,9 @@ SceneResult parseScene(const std::string& text, const std::string& sourceName) {
         if (index == std::string::npos) return failure(sourceName, message);
         return failure(placeName(sourceName, text, index), message);
     }
+    // The parser stops at a NUL byte as at the end of the text: junk after it would pass unseen.
+    if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
+        return failure(placeName(sourceName, text, nul), "a NUL byte: this is not a text file");
     if (auto problem = prescan(text, true))
         return failure(placeName(sourceName, text, problem->index), problem->message);
     try {

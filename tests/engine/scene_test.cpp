@@ -258,6 +258,22 @@ TEST(SceneBadFile, SyntaxErrors) {
     expectError("{\"name\": \"x\", \"blocks\": [{\"position\": [1, Infinity]", "t.json:1:43");
 }
 
+TEST(SceneBadFile, JunkAfterANulByteIsNotIgnored) {
+    // nlohmann stops reading at a NUL byte; the loader must not accept the text before it.
+    expectError(std::string("{\"name\": \"x\", \"blocks\": []}\0junk", 31), "t.json:1:28");
+}
+
+TEST(SceneBadFile, AbsurdMagnitudesNameTheirField) {
+    expectError(R"({"name": "x", "world": {"dt": 1e300}, "blocks": []})", "t.json: world.dt");
+    expectError(R"({"name": "x", "blocks": [{"position": [1, 1], "size": 1, "mass": 1e300}]})",
+                "t.json: blocks[0].mass");
+    expectError(
+        R"({"name": "x", "blocks": [{"position": [1, 1], "size": 1, "velocity": [1e10, 0]}]})",
+        "t.json: blocks[0].velocity[0]");
+    expectError(R"({"name": "x", "world": {"gravity": [0, -1e12]}, "blocks": []})",
+                "t.json: world.gravity[1]");
+}
+
 TEST(SceneBadFile, DeepNesting) {
     // 100,000 levels must neither overflow the stack nor take long.
     expectError(std::string(100000, '['), "t.json:1:65");
