@@ -38,8 +38,12 @@ void findFirstImpact(SubstepContext& ctx, int i, double remaining, const Aabb& p
     }
     ctx.broadPhase.query(path, [&](int j) {
         if (j == i) return;
-        const Impact impact =
-            timeOfImpact(box, block.velocity, aabbOf(blocks[j]), Vec2{}, remaining);
+        // The others hold still: only a block the path reaches (touching counts) can be hit.
+        const Aabb other = aabbOf(blocks[j]);
+        if (other.min.x > path.max.x || other.max.x < path.min.x || other.min.y > path.max.y ||
+            other.max.y < path.min.y)
+            return;
+        const Impact impact = timeOfImpact(box, block.velocity, other, Vec2{}, remaining);
         if (!impact.hit() || impact.time > first.time) return;
         if (impact.time < first.time) {
             first.time = impact.time;
