@@ -33,7 +33,13 @@ class BroadPhase {
     template <class Visit> void query(const Aabb& query, Visit&& visit) const;
     // Calls visit(i, j) once for every pair of registered blocks whose boxes overlap with
     // positive area.
-    template <class Visit> void forEachOverlappingPair(Visit&& visit) const;
+    template <class Visit> void forEachOverlappingPair(Visit&& visit) const {
+        forEachPair(visit, [](const Aabb& a, const Aabb& b) { return overlaps(a, b); });
+    }
+    // The same for every pair whose boxes meet (touching counts).
+    template <class Visit> void forEachMeetingPair(Visit&& visit) const {
+        forEachPair(visit, [](const Aabb& a, const Aabb& b) { return meets(a, b); });
+    }
 
   private:
     struct CellRange {
@@ -56,6 +62,7 @@ class BroadPhase {
     };
 
     void buildFromBoxes(const Bounds& bounds, const std::vector<Block>& blocks);
+    template <class Visit, class Test> void forEachPair(Visit& visit, Test test) const;
     CellRange rangeOf(const Aabb& box) const;
     size_t cellIndex(int x, int y) const { return static_cast<size_t>(y) * columns_ + x; }
     CellView cell(int x, int y) const {
@@ -96,7 +103,7 @@ template <class Visit> void BroadPhase::query(const Aabb& query, Visit&& visit) 
     }
 }
 
-template <class Visit> void BroadPhase::forEachOverlappingPair(Visit&& visit) const {
+template <class Visit, class Test> void BroadPhase::forEachPair(Visit& visit, Test test) const {
     for (int y = 0; y < rows_; ++y) {
         for (int x = 0; x < columns_; ++x) {
             const CellView entries = cell(x, y);
@@ -106,7 +113,7 @@ template <class Visit> void BroadPhase::forEachOverlappingPair(Visit&& visit) co
                 if (ea.index < 0) continue;
                 for (size_t b = a + 1; b < n; ++b) {
                     const Entry& eb = entries[b];
-                    if (eb.index < 0 || !overlaps(ea.box, eb.box)) continue;
+                    if (eb.index < 0 || !test(ea.box, eb.box)) continue;
                     if (firstSharedCell(x, y, ranges_[ea.index], ranges_[eb.index]))
                         visit(ea.index, eb.index);
                 }

@@ -3,13 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-Aabb sweptAabb(Vec2 position, Vec2 size, Vec2 velocity, double time) {
-    const Aabb start = aabbOf(position, size);
-    const Aabb end = aabbOf(position + velocity * time, size);
-    return {{std::min(start.min.x, end.min.x), std::min(start.min.y, end.min.y)},
-            {std::max(start.max.x, end.max.x), std::max(start.max.y, end.max.y)}};
-}
-
 double penetration(const Aabb& p, const Aabb& q) {
     const Vec2 extents = overlapExtents(p, q);
     if (extents.x <= 0.0 || extents.y <= 0.0) return 0.0;

@@ -4,6 +4,7 @@
 
 #include "world.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 
@@ -19,7 +20,13 @@ inline Aabb aabbOf(const Block& block) {
     return aabbOf(block.position, block.size);
 }
 // The box covering a block's motion from `position` over `time` seconds at `velocity`.
-Aabb sweptAabb(Vec2 position, Vec2 size, Vec2 velocity, double time);
+inline Aabb sweptAabb(Vec2 position, Vec2 size, Vec2 velocity, double time) {
+    const Vec2 half = size * 0.5, travel = velocity * time;
+    return {{position.x - half.x + std::min(travel.x, 0.0),
+             position.y - half.y + std::min(travel.y, 0.0)},
+            {position.x + half.x + std::max(travel.x, 0.0),
+             position.y + half.y + std::max(travel.y, 0.0)}};
+}
 inline bool contains(const Aabb& outer, const Aabb& inner) {
     return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y && outer.max.x >= inner.max.x &&
            outer.max.y >= inner.max.y;

@@ -65,7 +65,9 @@ class PerfectSolver {
     Aabb trajectory(int i, double now) const {
         return sweptAabb(positionAt(i, now), blocks_[i].size, blocks_[i].velocity, ctx_.h - now);
     }
-    void predict(int i, double now, bool onlyLaterPairs);
+    void predictWalls(int i, double now);
+    void predictPair(int i, int j, double now);
+    void predict(int i, double now);
     bool isStale(const Event& e) const {
         return e.stampA != stamp_[e.a] || (e.b >= 0 && e.stampB != stamp_[e.b]);
     }
@@ -95,25 +97,31 @@ class PerfectSolver {
     std::vector<Bounce> bounces_; // 2 per block
 };
 
-// Predicts block i's impacts with the walls and with every neighbour whose registered box meets
-// its trajectory for the rest of the substep.
-void PerfectSolver::predict(int i, double now, bool onlyLaterPairs) {
+// Predicts block i's impact with the walls.
+void PerfectSolver::predictWalls(int i, double now) {
     const Block& block = blocks_[i];
     if (block.kind == BodyKind::Static) return;
-    const double remaining = ctx_.h - now;
     const Aabb box = aabbOf(positionAt(i, now), block.size);
-
-    const WallImpact wall = timeOfWallImpact(box, block.velocity, ctx_.world.bounds, remaining);
+    const WallImpact wall = timeOfWallImpact(box, block.velocity, ctx_.world.bounds, ctx_.h - now);
     if (wall.hit()) events_.push({now + wall.time, i, kWallEvent, stamp_[i], 0, wall.axes});
+}
 
+// Predicts the impact of blocks i and j (i not static) within the rest of the substep.
+void PerfectSolver::predictPair(int i, int j, double now) {
+    const Block &a = blocks_[i], &b = blocks_[j];
+    const Impact impact =
+        timeOfImpact(aabbOf(positionAt(i, now), a.size), a.velocity,
+                     aabbOf(positionAt(j, now), b.size), b.velocity, ctx_.h - now);
+    if (impact.hit()) events_.push({now + impact.time, i, j, stamp_[i], stamp_[j], impact.axes});
+}
+
+// Predicts block i's impacts with the walls and with every neighbour whose registered box meets
+// its trajectory for the rest of the substep.
+void PerfectSolver::predict(int i, double now) {
+    if (blocks_[i].kind == BodyKind::Static) return;
+    predictWalls(i, now);
     grid_.query(trajectory(i, now), [&](int j) {
-        if (j == i) return;
-        const Block& other = blocks_[j];
-        if (onlyLaterPairs && j < i && other.kind != BodyKind::Static) return;
-        const Impact impact = timeOfImpact(
-            box, block.velocity, aabbOf(positionAt(j, now), other.size), other.velocity, remaining);
-        if (impact.hit())
-            events_.push({now + impact.time, i, j, stamp_[i], stamp_[j], impact.axes});
+        if (j != i) predictPair(i, j, now);
     });
 }
 
@@ -175,7 +183,13 @@ void PerfectSolver::run() {
 
     // Register every block's trajectory over the whole substep, then predict the first impacts.
     grid_.build(ctx_.world.bounds, blocks_, [&](int i) { return trajectory(i, 0.0); });
-    for (int i = 0; i < n; ++i) predict(i, 0.0, true);
+    for (int i = 0; i < n; ++i) predictWalls(i, 0.0);
+    grid_.forEachMeetingPair([&](int a, int b) { // every pair once, cell by cell
+        if (blocks_[a].kind != BodyKind::Static)
+            predictPair(a, b, 0.0);
+        else if (blocks_[b].kind != BodyKind::Static)
+            predictPair(b, a, 0.0);
+    });
 
     // Repeat: take the earliest impact, move its blocks to it, resolve, re-predict what changed.
     double lastEventTime = 0.0;
@@ -204,7 +218,7 @@ void PerfectSolver::run() {
             const Aabb path = trajectory(j, e.time);
             if (!contains(grid_.box(j), path)) grid_.set(j, path);
         }
-        for (int j : changed) predict(j, e.time, false);
+        for (int j : changed) predict(j, e.time);
     }
 
     // Move every block to the end of the substep (or to the last event when the cap was hit).
