@@ -54,10 +54,12 @@ BroadPhase::CellRange BroadPhase::rangeOf(const Aabb& box) const {
         if (!(v > 0.0)) return 0; // also catches NaN
         return v >= count - 1 ? count - 1 : static_cast<int>(v);
     };
-    return {clampCell((box.min.x - origin_.x) * inverseCellSize_, columns_),
-            clampCell((box.min.y - origin_.y) * inverseCellSize_, rows_),
-            clampCell((box.max.x - origin_.x) * inverseCellSize_, columns_),
-            clampCell((box.max.y - origin_.y) * inverseCellSize_, rows_)};
+    // Widened by the touch tolerance, like meets(): boxes that nearly touch share a cell.
+    const double t = kTouchTolerance;
+    return {clampCell((box.min.x - t - origin_.x) * inverseCellSize_, columns_),
+            clampCell((box.min.y - t - origin_.y) * inverseCellSize_, rows_),
+            clampCell((box.max.x + t - origin_.x) * inverseCellSize_, columns_),
+            clampCell((box.max.y + t - origin_.y) * inverseCellSize_, rows_)};
 }
 
 BroadPhase::Entry* BroadPhase::find(int x, int y, int index) {

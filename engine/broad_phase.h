@@ -70,8 +70,12 @@ class BroadPhase {
         return {sorted_.data() + cellStart_[c], cellStart_[c + 1] - cellStart_[c], overflow_[c]};
     }
     Entry* find(int x, int y, int index);
+    // Boxes that touch, or miss each other by less than kTouchTolerance: a box computed one way
+    // may differ by rounding from the same box computed another, and no contact may be lost.
     static bool meets(const Aabb& a, const Aabb& b) {
-        return a.max.x >= b.min.x && a.min.x <= b.max.x && a.max.y >= b.min.y && a.min.y <= b.max.y;
+        constexpr double t = kTouchTolerance;
+        return a.max.x >= b.min.x - t && a.min.x <= b.max.x + t && a.max.y >= b.min.y - t &&
+               a.min.y <= b.max.y + t;
     }
     // True in exactly one of the cells that the ranges a and b share.
     static bool firstSharedCell(int x, int y, const CellRange& a, const CellRange& b) {

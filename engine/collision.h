@@ -21,11 +21,9 @@ inline Aabb aabbOf(const Block& block) {
 }
 // The box covering a block's motion from `position` over `time` seconds at `velocity`.
 inline Aabb sweptAabb(Vec2 position, Vec2 size, Vec2 velocity, double time) {
-    const Vec2 half = size * 0.5, travel = velocity * time;
-    return {{position.x - half.x + std::min(travel.x, 0.0),
-             position.y - half.y + std::min(travel.y, 0.0)},
-            {position.x + half.x + std::max(travel.x, 0.0),
-             position.y + half.y + std::max(travel.y, 0.0)}};
+    const Vec2 half = size * 0.5, end = position + velocity * time;
+    return {{std::min(position.x, end.x) - half.x, std::min(position.y, end.y) - half.y},
+            {std::max(position.x, end.x) + half.x, std::max(position.y, end.y) + half.y}};
 }
 inline bool contains(const Aabb& outer, const Aabb& inner) {
     return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y && outer.max.x >= inner.max.x &&
