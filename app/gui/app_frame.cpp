@@ -105,6 +105,13 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     updateCamera(app, io.DisplaySize.x, io.DisplaySize.y); // the UI toggle may have changed it
     if (runClock) advanceSimulation(app, realSeconds);
     drawSceneDecorations(app);
+    if (app.show.poi) drawPointOfImpact(app);
+    if (app.show.com) drawCentreOfMass(app);
+    if (app.show.plots) drawPlotsWindow(app);
+    if (app.show.inspector) drawInspectorWindow(app);
+    if (app.show.sideBySide) drawSideBySideWindow(app);
+    if (app.show.timeline) drawTimelineWindow(app);
+    if (app.show.cost) drawCostWindow(app);
     if (app.uiVisible) drawControlsPanel(app);
     if (app.helpOpen) drawHelpWindow(app);
     logStateChanges(app);
@@ -122,6 +129,13 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
     view.selected = app.selected;
     view.vectors = app.show.vectors;
     view.trails = app.show.trails ? &app.trails : nullptr;
+    if (app.show.sideBySide && app.methods.running) {
+        for (int m = 0; m < static_cast<int>(Method::Count); ++m) {
+            const Method method = static_cast<Method>(m);
+            if (method == app.world.settings.method) continue;
+            view.ghosts.push_back({&app.methods.run(method).world, methodGhostColor(method)});
+        }
+    }
     view.blockColors.reserve(app.world.blocks.size());
     for (std::size_t i = 0; i < app.world.blocks.size(); ++i) {
         view.blockColors.push_back(blockDisplayColor(app, static_cast<int>(i)));

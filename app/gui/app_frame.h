@@ -28,3 +28,15 @@ void drawHelpWindow(App& app);
 // Mouse in the scene, block labels, hover tooltip and the status badge.
 void handleSceneMouse(App& app);
 void drawSceneDecorations(const App& app);
+// Teaching overlays (one file each): windows, and what is drawn over the scene.
+void drawPlotsWindow(App& app);
+void drawInspectorWindow(App& app);
+void drawTimelineWindow(App& app);
+void drawSideBySideWindow(App& app);
+void drawCostWindow(App& app);
+void drawCentreOfMass(App& app); // the marker with u, and the Momenta window
+void drawPointOfImpact(App& app);
+// The colour of a method's ghosts and rows (methods side by side, the tradeoff chart).
+Color methodGhostColor(Method method);
+// Offscreen: runs the tradeoff sweep at once (no thread), so a screenshot shows the chart.
+void runCostSweepNow(const App& app);

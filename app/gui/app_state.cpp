@@ -25,6 +25,14 @@ void restartRun(App& app) {
     app.totals = RunTotals{};
     app.clock.reset();
     app.trails.clear();
+    app.history.clear();
+    app.telemetry.clear();
+    app.methods.stop();
+    app.poi = PoiView{};
+    app.lastLog.clear();
+    app.previousBlocks.clear();
+    app.pausedByCollision = false;
+    app.telemetry.record(app.world, app.selected, {});
     app.mouse = MouseTool{};
     if (app.selected >= static_cast<int>(app.world.blocks.size())) app.selected = -1;
 }
@@ -57,11 +65,63 @@ void resetScene(App& app) {
 }
 
 void stepSimulation(App& app) {
-    app.stats = app.world.step();
+    if (isReplaying(app)) app.telemetry.truncateAfter(app.world.time);
+    app.history.beforeStep(app.world);
+    if (app.show.sideBySide) {
+        if (!app.methods.running) app.methods.start(app.world);
+        app.methods.step(app.world.settings);
+    } else {
+        app.methods.stop();
+    }
+    app.previousBlocks = app.world.blocks;
+    const double frameStart = app.world.time;
+    app.lastLog.clear();
+    app.stats = app.world.step(&app.lastLog);
+    app.history.afterStep(app.world);
     app.totals.collisions += static_cast<std::uint64_t>(std::max(0, app.stats.collisions));
     app.totals.eventCapHits += static_cast<std::uint64_t>(std::max(0, app.stats.eventCapHits));
     app.totals.maxPenetration = std::max(app.totals.maxPenetration, app.stats.maxPenetration);
     app.trails.record(app.world);
+    app.telemetry.record(app.world, app.selected, app.lastLog);
+    // The point of impact of the watched block's latest collision (kept until the next one).
+    const int watched = app.telemetry.watched;
+    bool collided = false, watchedHit = false;
+    for (const CollisionRecord& r : app.lastLog) {
+        if (r.rest) continue;
+        collided = true;
+        if (r.block == watched || r.other == watched) watchedHit = true;
+    }
+    if (watchedHit) {
+        app.poi = computePoi(app.previousBlocks, app.world.bounds, app.world.settings, frameStart,
+                             watched);
+    }
+    if (collided && app.pauseOnCollision) {
+        app.paused = true;
+        app.pausedByCollision = true;
+    }
+}
+
+bool isReplaying(const App& app) {
+    return !app.history.empty() && app.world.frame < app.history.lastFrame();
+}
+
+bool scrubTo(App& app, std::uint64_t frame) {
+    World w;
+    if (!app.history.stateAt(frame, w)) return false;
+    const std::size_t blocks = app.world.blocks.size();
+    app.world = std::move(w);
+    if (app.world.blocks.size() != blocks) app.labels.resize(app.world.blocks.size());
+    app.stats = StepStats{};
+    app.stats.momentum = totalMomentum(app.world);
+    app.stats.kineticEnergy = kineticEnergy(app.world);
+    app.stats.potentialEnergy = potentialEnergy(app.world);
+    app.trails.clear();
+    app.methods.stop();
+    app.poi = PoiView{};
+    app.lastLog.clear();
+    app.mouse = MouseTool{};
+    if (app.selected >= static_cast<int>(app.world.blocks.size())) app.selected = -1;
+    return true;
 }
 
 int advanceSimulation(App& app, double realSeconds) {
@@ -72,8 +132,12 @@ int advanceSimulation(App& app, double realSeconds) {
     const double dt = app.world.settings.dt;
     const int ticks =
         app.clock.advance(realSeconds, dt, simulationRate(app.timeScale, app.slowMotion, dt));
-    for (int i = 0; i < ticks; ++i) stepSimulation(app);
-    return ticks;
+    int ran = 0;
+    while (ran < ticks && !app.paused) {
+        stepSimulation(app);
+        ++ran;
+    }
+    return ran;
 }
 
 void cycleMethod(App& app) {
@@ -147,6 +211,8 @@ void applyShowSet(App& app, const ShowSet& show) {
     app.show.com = show.com;
     app.show.poi = show.poi;
     app.show.sideBySide = show.sideBySide;
+    app.show.timeline = show.timeline;
+    app.show.cost = show.cost;
 }
 
 void setUiScale(App& app, float scale) {

@@ -6,11 +6,15 @@
 #include "app_log.h"
 #include "camera.h"
 #include "fixed_step.h"
+#include "history.h"
 #include "mouse_tool.h"
 #include "options.h"
 #include "palette.h"
+#include "poi.h"
 #include "scene.h"
 #include "scene_library.h"
+#include "side_by_side.h"
+#include "telemetry.h"
 #include "trails.h"
 #include "world.h"
 
@@ -25,8 +29,9 @@ struct BlockLabel {
     std::string color; // "#rrggbb" or "" for the palette
 };
 
-// The overlays that can be shown. Trails and vectors are drawn now; the others are accepted on
-// the command line and kept here for the teaching overlays (plots, inspector, ...).
+// The overlays that can be shown (the View section's checkboxes and --show): trails, velocity and
+// momentum arrows, the plots, the collision inspector, the centre of mass with the momenta
+// diagram, the point of impact, the methods side by side, the timeline and the cost panel.
 struct Overlays {
     bool trails = false;
     bool vectors = true;
@@ -35,6 +40,8 @@ struct Overlays {
     bool com = false;
     bool poi = false;
     bool sideBySide = false;
+    bool timeline = false;
+    bool cost = false;
 };
 
 // Velocity arrows are on by default for scenes with at most this many blocks (more is clutter).
@@ -72,6 +79,16 @@ struct App {
     bool helpOpen = false;
     float uiScale = 1.0f;
     MouseTool mouse;
+    // Teaching overlays: what the plots and the inspector read, the timeline, the methods side
+    // by side, the point of impact of the last collision of the watched block.
+    Telemetry telemetry;
+    WorldHistory history;
+    MethodsSideBySide methods;
+    PoiView poi;
+    std::vector<Block> previousBlocks;    // the blocks at the start of the last frame
+    std::vector<CollisionRecord> lastLog; // collisions resolved in the last frame
+    bool pauseOnCollision = false;
+    bool pausedByCollision = false; // the last pause came from pauseOnCollision
     // Messages for the panel: the last error (load or save) and the last note.
     std::string error;
     std::string note;
@@ -113,6 +130,11 @@ void stepSimulation(App& app);
 // Advances the fixed-step clock by `realSeconds` and runs the due frames (none while paused or
 // while the mouse holds a block). Returns the number of frames run.
 int advanceSimulation(App& app, double realSeconds);
+// Goes back (or forward) to frame `frame` of the timeline; false when it is not recorded.
+// Stepping from there replays, bit for bit, unless something is changed first.
+bool scrubTo(App& app, std::uint64_t frame);
+// True while the world shows a frame earlier than the newest recorded one.
+bool isReplaying(const App& app);
 // perfect -> move-and-correct -> turn-based -> perfect.
 void cycleMethod(App& app);
 // The current state as a format v1 scene (names and colours kept).

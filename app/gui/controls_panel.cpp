@@ -5,6 +5,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -61,10 +62,10 @@ void runSection(App& app) {
     if (ImGui::Button("Step (N)", ImVec2(w, 0))) applyAction(app, Action::StepOnce);
     ImGui::SameLine();
     if (ImGui::Button("Reset (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
-    ImGui::Checkbox("Slow motion, 5 frames/s (Space)", &app.slowMotion);
-    ImGui::Text("t = %.3f s", app.world.time);
-    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.5f);
-    ImGui::Text("frame %llu", static_cast<unsigned long long>(app.world.frame));
+    ImGui::Checkbox("Slow motion (Space)", &app.slowMotion);
+    tooltip("5 simulation frames per second, as in the lecture's demo");
+    ImGui::SameLine();
+    ImGui::TextColored(kDimColor, "t = %.2f s", app.world.time);
 }
 
 void simulationSection(App& app) {
@@ -89,11 +90,16 @@ void simulationSection(App& app) {
         app.layoutLogged = true;
     }
     float g[2] = {static_cast<float>(s.gravity.x), static_cast<float>(s.gravity.y)};
-    if (ImGui::SliderFloat("gravity x", &g[0], -20.0f, 20.0f, "%.2f m/s²")) s.gravity.x = g[0];
-    if (ImGui::SliderFloat("gravity y", &g[1], -20.0f, 20.0f, "%.2f m/s²")) s.gravity.y = g[1];
-    if (ImGui::Button("g = 0")) s.gravity = Vec2{0.0, 0.0};
+    if (ImGui::SliderFloat2("##gravity", g, -20.0f, 20.0f, "%.2f")) s.gravity = Vec2{g[0], g[1]};
+    tooltip("Gravity (x, y) in m/s²");
     ImGui::SameLine();
-    if (ImGui::Button("g = 9.81 down")) s.gravity = Vec2{0.0, -9.81};
+    if (ImGui::SmallButton("0")) s.gravity = Vec2{0.0, 0.0};
+    tooltip("No gravity");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("9.81")) s.gravity = Vec2{0.0, -9.81};
+    tooltip("Gravity 9.81 m/s² down");
+    ImGui::SameLine();
+    ImGui::TextUnformatted("g");
     float hz = static_cast<float>(1.0 / s.dt);
     if (ImGui::SliderFloat("frame rate", &hz, 5.0f, 240.0f, "%.0f Hz",
                            ImGuiSliderFlags_AlwaysClamp)) {
@@ -109,7 +115,13 @@ void simulationSection(App& app) {
 }
 
 void selectedSection(App& app) {
-    if (!ImGui::CollapsingHeader("Selected block", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    // Opens when a block gets selected, closes when the selection goes; the user may still fold it.
+    static int lastSelected = -2;
+    if (app.selected != lastSelected) {
+        ImGui::SetNextItemOpen(app.selected >= 0, ImGuiCond_Always);
+        lastSelected = app.selected;
+    }
+    if (!ImGui::CollapsingHeader("Selected block")) return;
     const int i = app.selected;
     if (i < 0 || i >= static_cast<int>(app.world.blocks.size())) {
         ImGui::TextColored(kDimColor, "Click a block to select it.");
@@ -149,7 +161,7 @@ void selectedSection(App& app) {
 }
 
 void statisticsSection(App& app) {
-    if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!ImGui::CollapsingHeader("Statistics")) return;
     const StepStats& s = app.stats;
     if (!ImGui::BeginTable("stats", 2, ImGuiTableFlags_SizingStretchProp)) return;
     statRow("collisions / frame", "%.0f", s.collisions);
@@ -165,12 +177,30 @@ void statisticsSection(App& app) {
     ImGui::EndTable();
 }
 
+void overlaysSection(App& app) {
+    if (!ImGui::CollapsingHeader("Overlays", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    Overlays& o = app.show;
+    if (!ImGui::BeginTable("overlays", 2, ImGuiTableFlags_SizingStretchSame)) return;
+    auto box = [](const char* label, bool* value, const char* help) {
+        ImGui::TableNextColumn();
+        ImGui::Checkbox(label, value);
+        tooltip(help);
+    };
+    box("trails (D)", &o.trails, "Trajectories fading with age; C clears them");
+    box("arrows (V)", &o.vectors, "Velocity (thin) and momentum p = m·v (wide) arrows");
+    box("plots", &o.plots, "Velocity, momentum and energy against time");
+    box("inspector", &o.inspector, "The last collisions with the lecture's formula filled in");
+    box("centre of mass", &o.com, "Centre of mass with its velocity u, and the momenta diagram");
+    box("impact point", &o.poi, "Point of impact t = a/b of the watched block's last collision");
+    box("3 methods", &o.sideBySide, "The three methods at once: outlines and statistics");
+    box("timeline", &o.timeline, "Scrub back through the last 60 s and replay");
+    box("cost", &o.cost, "Cost per step under each method and the speed-vs-accuracy chart");
+    ImGui::EndTable();
+}
+
 void viewSection(App& app) {
     if (!ImGui::CollapsingHeader("View")) return;
-    ImGui::Checkbox("trajectories (D)", &app.show.trails);
-    ImGui::SameLine();
-    if (ImGui::SmallButton("clear (C)")) applyAction(app, Action::ClearTrails);
-    ImGui::Checkbox("velocity arrows (V)", &app.show.vectors);
+    if (ImGui::SmallButton("clear trails (C)")) applyAction(app, Action::ClearTrails);
     float scale = app.uiScale;
     if (ImGui::SliderFloat("UI scale", &scale, 0.75f, 3.0f, "%.2f")) {
         // Applied when released: rebuilding the font under the cursor would fight the slider.
@@ -199,9 +229,16 @@ void drawControlsPanel(App& app) {
     ImGui::PushItemWidth(width * 0.52f);
     scenePicker(app);
     if (!app.scene.description.empty()) {
+        // At most three lines; the rest scrolls (the panel itself must not, at 720p).
+        const float lines = ImGui::GetTextLineHeightWithSpacing() * 3.0f;
+        const float wrap = ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ScrollbarSize;
+        const float needed =
+            ImGui::CalcTextSize(app.scene.description.c_str(), nullptr, false, wrap).y;
+        ImGui::BeginChild("##description", ImVec2(0.0f, std::min(lines, needed + 2.0f)));
         ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
         ImGui::TextWrapped("%s", app.scene.description.c_str());
         ImGui::PopStyleColor();
+        ImGui::EndChild();
     }
     if (!app.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
@@ -216,6 +253,7 @@ void drawControlsPanel(App& app) {
     ImGui::Separator();
     runSection(app);
     simulationSection(app);
+    overlaysSection(app);
     selectedSection(app);
     statisticsSection(app);
     viewSection(app);

@@ -81,6 +81,7 @@ bool runProgram(const std::vector<std::string>& args) {
 
 int screenshot(App& app, Offscreen& off, const Options& o) {
     for (int i = 0; i < o.frames; ++i) stepSimulation(app);
+    if (app.show.cost) runCostSweepNow(app);
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off);
     if (!writeFrame(off, o.screenshot)) return 1;
     std::error_code ec; // print where the PNG is, as an absolute path when it can be had

@@ -30,11 +30,15 @@ bool parseShowList(const std::string& text, ShowSet& out, std::string* error) {
             show.poi = true;
         else if (name == "sidebyside")
             show.sideBySide = true;
+        else if (name == "timeline")
+            show.timeline = true;
+        else if (name == "cost")
+            show.cost = true;
         else {
             if (error) {
                 *error = "unknown --show name '" + name +
                          "' (expected none, plots, vectors, trails, inspector, com, poi, "
-                         "sidebyside)";
+                         "sidebyside, timeline, cost)";
             }
             return false;
         }
@@ -71,7 +75,7 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_option("--size", size, "Window or image size, WxH (default 1280x720)");
     app.add_option("--show", show,
                    "Comma-separated: none, plots, vectors, trails, inspector, com, poi, "
-                   "sidebyside");
+                   "sidebyside, timeline, cost");
     app.add_option("--record", o.record, "Write N numbered PNGs (and an MP4 with ffmpeg) here");
     app.add_option("--benchmark-frames", o.benchmarkFrames,
                    "Offscreen: step and render N frames, print ms per frame")

@@ -15,6 +15,8 @@ struct ShowSet {
     bool com = false;
     bool poi = false;
     bool sideBySide = false;
+    bool timeline = false; // beyond the public list: the timeline window
+    bool cost = false;     // beyond the public list: the cost-per-step and tradeoff panel
 };
 
 struct Options {

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace {
 
@@ -38,10 +39,46 @@ int hoveredBlock(const App& app) {
     return pickBlock(app.world, app.camera.screenToWorld(mouse), 0.0);
 }
 
+bool intersects(const ImVec4& a, const ImVec4& b) {
+    return a.x < b.z && b.x < a.z && a.y < b.w && b.y < a.w;
+}
+
+// Moves a label (x, y = top-left, size) up or down in steps of a line until it overlaps none of
+// `placed` (labels already drawn and blocks), trying above first, then below; returns its top.
+float freeSpot(const std::vector<ImVec4>& placed, float x, float above, float below, ImVec2 size,
+               float line) {
+    for (int k = 0; k < 6; ++k) {
+        const float candidates[2] = {above - k * line, below + k * line};
+        for (float y : candidates) {
+            const float gap = line * 0.5f; // labels closer than this read as one
+            const ImVec4 r(x - gap, y, x + size.x + gap, y + size.y);
+            bool clear = true;
+            for (const ImVec4& p : placed) {
+                if (intersects(r, p)) {
+                    clear = false;
+                    break;
+                }
+            }
+            if (clear) return y;
+        }
+    }
+    return above;
+}
+
 void drawLabels(const App& app, ImDrawList* dl) {
     const int n = static_cast<int>(app.world.blocks.size());
     if (n > kMaxLabelledBlocks) return;
     const float lineHeight = ImGui::GetFontSize();
+    // Rectangles already taken on screen: the blocks themselves, then each label placed.
+    std::vector<ImVec4> placed;
+    placed.reserve(static_cast<std::size_t>(2 * n));
+    for (const Block& b : app.world.blocks) {
+        const Vec2 lo = app.camera.worldToScreen(b.position - b.size * 0.5);
+        const Vec2 hi = app.camera.worldToScreen(b.position + b.size * 0.5);
+        placed.emplace_back(
+            static_cast<float>(std::min(lo.x, hi.x)), static_cast<float>(std::min(lo.y, hi.y)),
+            static_cast<float>(std::max(lo.x, hi.x)), static_cast<float>(std::max(lo.y, hi.y)));
+    }
     for (int i = 0; i < n; ++i) {
         const Block& b = app.world.blocks[static_cast<std::size_t>(i)];
         const bool named = i < static_cast<int>(app.labels.size()) &&
@@ -72,9 +109,12 @@ void drawLabels(const App& app, ImDrawList* dl) {
                            IM_COL32(255, 255, 255, 190), second);
             }
         } else {
-            const float top = static_cast<float>(c.y - hPx * 0.5) - lineHeight - 2.0f;
-            shadowText(dl, ImVec2(static_cast<float>(c.x) - nameSize.x * 0.5f, top), white,
-                       name.c_str());
+            const float x = static_cast<float>(c.x) - nameSize.x * 0.5f;
+            const float above = static_cast<float>(c.y - hPx * 0.5) - lineHeight - 2.0f;
+            const float below = static_cast<float>(c.y + hPx * 0.5) + 2.0f;
+            const float top = freeSpot(placed, x, above, below, nameSize, lineHeight);
+            placed.emplace_back(x, top, x + nameSize.x, top + nameSize.y);
+            shadowText(dl, ImVec2(x, top), white, name.c_str());
         }
     }
 }
@@ -152,6 +192,9 @@ void drawHoverTooltip(const App& app) {
     if (b.isDynamic()) ImGui::Text("m = %.3g kg", b.mass);
     ImGui::Text("p = (%.2f, %.2f) m", b.position.x, b.position.y);
     ImGui::Text("v = (%.2f, %.2f) m/s", b.velocity.x, b.velocity.y);
+    if (b.isDynamic()) {
+        ImGui::Text("p = m·v = (%.2f, %.2f) kg·m/s", b.mass * b.velocity.x, b.mass * b.velocity.y);
+    }
     ImGui::EndTooltip();
 }
 

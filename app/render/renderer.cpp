@@ -116,28 +116,44 @@ void SceneRenderer::buildShapes(const SceneView& view) {
         }
     }
 
-    // Trails, fading with age.
+    // Trails, fading with age. With many blocks, every k-th point only, to stay within
+    // kTrailSegmentBudget segments (the same 3 s of history, coarser).
     if (view.trails && view.trails->length() > 1 &&
         view.trails->blockCount() == world.blocks.size()) {
         const Trails& tr = *view.trails;
         const int n = tr.length();
+        std::size_t moving = 0;
+        for (const Block& bl : world.blocks) moving += bl.kind != BodyKind::Static;
+        const long long wanted = static_cast<long long>(moving) * (n - 1);
+        const int stride = static_cast<int>(
+            std::max<long long>(1, (wanted + kTrailSegmentBudget - 1) / kTrailSegmentBudget));
+        const double width = kTrailWidthPx * px * (stride > 1 ? 0.8 : 1.0);
         for (std::size_t i = 0; i < tr.blockCount(); ++i) {
-            if (!world.blocks[i].isDynamic() && world.blocks[i].kind != BodyKind::Kinematic) {
-                continue;
-            }
+            if (world.blocks[i].kind == BodyKind::Static) continue;
             const Color c = i < view.blockColors.size() ? view.blockColors[i] : Color{};
-            for (int age = 0; age + 1 < n; ++age) {
-                const float a0 = 0.75f * (1.0f - static_cast<float>(age) / static_cast<float>(n));
-                const float a1 =
-                    0.75f * (1.0f - static_cast<float>(age + 1) / static_cast<float>(n));
-                under_.line(tr.point(i, age), tr.point(i, age + 1), kTrailWidthPx * px,
-                            c.withAlpha(a0), c.withAlpha(a1));
+            Vec2 prev = tr.point(i, 0);
+            float prevAlpha = 0.75f;
+            for (int age = stride; age - stride + 1 < n; age += stride) {
+                const int a = std::min(age, n - 1);
+                const Vec2 p = tr.point(i, a);
+                const float alpha = 0.75f * (1.0f - static_cast<float>(a) / static_cast<float>(n));
+                under_.line(prev, p, width, c.withAlpha(prevAlpha), c.withAlpha(alpha));
+                prev = p;
+                prevAlpha = alpha;
+                if (a == n - 1) break;
             }
         }
     }
 
-    // Velocity arrows from the centres of moving blocks.
+    // Momentum arrows (wide, translucent, under) and velocity arrows from the centres of moving
+    // blocks: p = m·v points the same way as v, so the two share a line.
     if (view.vectors) {
+        for (const Block& bl : world.blocks) {
+            if (!bl.isDynamic()) continue;
+            const Vec2 tip = bl.position + bl.velocity * (bl.mass * kMomentumArrowScale);
+            over_.arrow(bl.position, tip, kArrowWidthPx * 2.6 * px, kArrowHeadPx * 1.3 * px,
+                        scene_colors::kMomentum);
+        }
         for (const Block& bl : world.blocks) {
             if (bl.kind == BodyKind::Static) continue;
             const Vec2 tip = bl.position + bl.velocity * kVelocityArrowScale;
@@ -186,6 +202,20 @@ void SceneRenderer::buildBlocks(const SceneView& view) {
                            {fill.r, fill.g, fill.b, fill.a},
                            {outline.r, outline.g, outline.b, outline.a},
                            {selected ? 3.0f : 1.5f, pattern}});
+    }
+
+    // Ghosts: outlines only (a transparent fill), in each ghost world's colour.
+    for (const SceneView::Ghosts& g : view.ghosts) {
+        if (!g.world) continue;
+        const Color c = g.color;
+        for (const Block& b : g.world->blocks) {
+            if (b.kind == BodyKind::Static) continue;
+            blocks_.push_back({{float(b.position.x), float(b.position.y), float(b.size.x * 0.5),
+                                float(b.size.y * 0.5)},
+                               {c.r, c.g, c.b, 0.0f},
+                               {c.r, c.g, c.b, 0.95f},
+                               {2.0f, 0.0f}});
+        }
     }
 }
 

@@ -21,13 +21,22 @@ struct SceneView {
     double displayHeight = 720.0;
     int selected = -1;
     const Trails* trails = nullptr; // drawn when set
-    bool vectors = false;           // velocity arrows
-    bool flingActive = false;       // the fling arrow while right-dragging
+    bool vectors = false;           // velocity and momentum arrows
+    // Other worlds drawn as coloured outlines over this one (the methods side by side).
+    struct Ghosts {
+        const World* world = nullptr;
+        Color color;
+    };
+    std::vector<Ghosts> ghosts;
+    bool flingActive = false; // the fling arrow while right-dragging
     Vec2 flingFrom, flingTo;
 };
 
-// Velocity arrows: metres of arrow per m/s.
+// Velocity arrows: metres of arrow per m/s; momentum arrows: metres per kg·m/s.
 constexpr double kVelocityArrowScale = 0.25;
+constexpr double kMomentumArrowScale = 0.15;
+// Trails draw at most about this many segments in all (older points are thinned out).
+constexpr int kTrailSegmentBudget = 12000;
 
 class SceneRenderer {
   public:

@@ -202,6 +202,35 @@ TEST(ScreenshotSemantic, ControlsPanelIsPresentAndHiddenByShowNone) {
     EXPECT_FALSE(titleBarAt(noUi, right, 8));
 }
 
+// The inspector on the lecture's first worked example after the collision at t = 0.625 s: the
+// formula with the numbers filled in (printed by --verbose from the same strings it draws), and
+// the window drawn (its title bar colour where the window sits: the bottom-right corner).
+TEST(ScreenshotSemantic, InspectorShowsTheLectureNumbers) {
+    const fs::path png = outputDir() / "semantic_inspector.png";
+    const RunResult r =
+        run(quote(SANDBOX_OFFSCREEN_EXE) +
+            " lecture_example_1 --frames 45 --show inspector --verbose --screenshot " +
+            quote(png.string()));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("inspector u = (1·6 + 2·0)/(1 + 2) = 2"), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("inspector v1' = 2 - 1·(6 - 2) = -2"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("inspector v2' = 2 - 1·(0 - 2) = 4"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("t = 0.625 s"), std::string::npos) << r.output;
+    const Image image = loadPng(png.string());
+    ASSERT_FALSE(image.empty());
+    int titlePixels = 0;
+    for (int y = image.height / 2; y < image.height; ++y) {
+        titlePixels += titleBarAt(image, image.width - 60, y) ? 1 : 0;
+    }
+    EXPECT_GT(titlePixels, 10) << "no inspector title bar in the lower right of " << png;
+    // Without the overlay, no formula is printed.
+    const RunResult none =
+        run(quote(SANDBOX_OFFSCREEN_EXE) +
+            " lecture_example_1 --frames 45 --verbose --screenshot " + quote(png.string()));
+    EXPECT_EQ(none.output.find("inspector u ="), std::string::npos);
+}
+
 TEST(ScreenshotCommandLine, SizeIsRespected) {
     const Image image = render("lecture_example_1 --size 640x360", outputDir() / "size.png");
     EXPECT_EQ(image.width, 640);

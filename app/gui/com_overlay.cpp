@@ -1,0 +1,153 @@
+// Centre of mass of the dynamic blocks with its velocity u (= total momentum / total mass), drawn
+// in the scene, and the momenta diagram: every block's momentum tip to tail and their sum, as
+// teachers draw it (PhET's Collision Lab).
+#include "app_frame.h"
+#include "overlay_window.h"
+#include "renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace {
+
+constexpr std::size_t kDiagramArrowsWithHeads = 40;
+
+ImVec2 toScreen(const App& app, Vec2 p) {
+    const Vec2 s = app.camera.worldToScreen(p);
+    return ImVec2(static_cast<float>(s.x), static_cast<float>(s.y));
+}
+
+void arrow(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 color, float width, float head) {
+    const float dx = b.x - a.x, dy = b.y - a.y;
+    const float len = std::sqrt(dx * dx + dy * dy);
+    if (len < 1.0f) return;
+    const float ux = dx / len, uy = dy / len;
+    const float h = std::min(head, len * 0.6f);
+    const ImVec2 base(b.x - ux * h, b.y - uy * h);
+    dl->AddLine(a, base, color, width);
+    dl->AddTriangleFilled(b, ImVec2(base.x - uy * h * 0.5f, base.y + ux * h * 0.5f),
+                          ImVec2(base.x + uy * h * 0.5f, base.y - ux * h * 0.5f), color);
+}
+
+struct CentreOfMass {
+    bool valid = false;
+    double mass = 0.0;
+    Vec2 position, velocity;
+};
+
+CentreOfMass centreOfMass(const World& world) {
+    CentreOfMass c;
+    Vec2 mp, mv;
+    for (const Block& b : world.blocks) {
+        if (!b.isDynamic()) continue;
+        c.mass += b.mass;
+        mp += b.position * b.mass;
+        mv += b.velocity * b.mass;
+    }
+    if (!(c.mass > 0.0)) return c;
+    c.valid = true;
+    c.position = mp / c.mass;
+    c.velocity = mv / c.mass;
+    return c;
+}
+
+void drawMomentaDiagram(App& app) {
+    OverlayPlacement place;
+    place.anchorX = 0.0f;
+    place.anchorY = 1.0f;
+    place.widthFraction = 0.3f;
+    place.heightFraction = 0.42f;
+    place.maxWidth = 300.0f;
+    place.maxHeight = 300.0f;
+    if (!beginOverlayWindow(app, "Momenta", &app.show.com, place)) {
+        ImGui::End();
+        return;
+    }
+    const World& w = app.world;
+    // Tip to tail, in file order; the extent fixes the scale.
+    std::vector<Vec2> tips{Vec2{}};
+    std::vector<int> owner;
+    for (std::size_t i = 0; i < w.blocks.size(); ++i) {
+        const Block& b = w.blocks[i];
+        if (!b.isDynamic()) continue;
+        tips.push_back(tips.back() + b.velocity * b.mass);
+        owner.push_back(static_cast<int>(i));
+    }
+    const Vec2 total = tips.back();
+    char text[96];
+    std::snprintf(text, sizeof text, "total p = (%.3g, %.3g) kg·m/s", total.x, total.y);
+    dimText(text);
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    ImGui::InvisibleButton("##momenta", ImVec2(std::max(avail.x, 40.0f), std::max(avail.y, 40.0f)));
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    dl->AddRectFilled(lo, hi, IM_COL32(10, 12, 18, 150), 3.0f);
+    Vec2 mn{0.0, 0.0}, mx{0.0, 0.0};
+    for (const Vec2& t : tips) {
+        mn = Vec2{std::min(mn.x, t.x), std::min(mn.y, t.y)};
+        mx = Vec2{std::max(mx.x, t.x), std::max(mx.y, t.y)};
+    }
+    const double span = std::max({mx.x - mn.x, mx.y - mn.y, 1e-9});
+    const float pad = ImGui::GetFontSize();
+    const double scale = std::min((hi.x - lo.x - 2 * pad) / std::max(mx.x - mn.x, span * 0.2),
+                                  (hi.y - lo.y - 2 * pad) / std::max(mx.y - mn.y, span * 0.2));
+    const ImVec2 centre((lo.x + hi.x) * 0.5f, (lo.y + hi.y) * 0.5f);
+    const Vec2 mid = (mn + mx) * 0.5;
+    auto map = [&](Vec2 p) {
+        return ImVec2(centre.x + static_cast<float>((p.x - mid.x) * scale),
+                      centre.y - static_cast<float>((p.y - mid.y) * scale));
+    };
+    const float width = std::max(2.0f, ImGui::GetFontSize() * 0.14f);
+    const float head = ImGui::GetFontSize() * 0.7f;
+    const bool heads = owner.size() <= kDiagramArrowsWithHeads;
+    for (std::size_t k = 0; k < owner.size(); ++k) {
+        const ImU32 c = blockDisplayColor(app, owner[k]).withAlpha(0.95f).packed();
+        if (heads)
+            arrow(dl, map(tips[k]), map(tips[k + 1]), c, width, head);
+        else
+            dl->AddLine(map(tips[k]), map(tips[k + 1]), c, 1.0f);
+    }
+    // The total beside the chain (shifted a little), so collinear momenta stay readable.
+    const float shift = ImGui::GetFontSize() * 0.6f;
+    ImVec2 a = map(Vec2{}), b = map(total);
+    const float dx = b.x - a.x, dy = b.y - a.y, len = std::sqrt(dx * dx + dy * dy);
+    const ImVec2 off = len > 1.0f ? ImVec2(-dy / len * shift, dx / len * shift) : ImVec2(0, 0);
+    a = ImVec2(a.x + off.x, a.y + off.y);
+    b = ImVec2(b.x + off.x, b.y + off.y);
+    arrow(dl, a, b, overlay_colors::kTotal, width * 1.3f, head * 1.2f);
+    dl->AddCircleFilled(map(Vec2{}), width * 1.5f, overlay_colors::kTotal);
+    if (len > 1.0f) {
+        const char* text = "total";
+        const ImVec2 ts = ImGui::CalcTextSize(text);
+        dl->AddText(
+            ImVec2((a.x + b.x - ts.x) * 0.5f + off.x * 1.5f, (a.y + b.y) * 0.5f + off.y * 1.2f),
+            overlay_colors::kTotal, text);
+    }
+    ImGui::End();
+}
+
+} // namespace
+
+void drawCentreOfMass(App& app) {
+    const CentreOfMass c = centreOfMass(app.world);
+    if (c.valid) {
+        ImDrawList* dl = ImGui::GetBackgroundDrawList();
+        const ImVec2 p = toScreen(app, c.position);
+        const float r = 9.0f * app.uiScale;
+        const ImU32 col = overlay_colors::kCom;
+        const Vec2 tip = c.position + c.velocity * kVelocityArrowScale;
+        arrow(dl, p, toScreen(app, tip), col, 3.0f * app.uiScale, 13.0f * app.uiScale);
+        dl->AddCircleFilled(p, r, IM_COL32(20, 20, 20, 220));
+        dl->AddCircle(p, r, col, 20, 2.5f * app.uiScale);
+        dl->AddLine(ImVec2(p.x - r, p.y), ImVec2(p.x + r, p.y), col, 2.0f);
+        dl->AddLine(ImVec2(p.x, p.y - r), ImVec2(p.x, p.y + r), col, 2.0f);
+        char text[96];
+        std::snprintf(text, sizeof text, "centre of mass  u = (%.2f, %.2f) m/s", c.velocity.x,
+                      c.velocity.y);
+        const ImVec2 at(p.x + r + 4.0f, p.y - r - ImGui::GetFontSize());
+        dl->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 220), text);
+        dl->AddText(at, col, text);
+    }
+    drawMomentaDiagram(app);
+}

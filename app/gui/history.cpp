@@ -1,0 +1,113 @@
+#include "history.h"
+
+#include <algorithm>
+
+namespace {
+
+bool sameBits(double a, double b) {
+    return a == b || (a != a && b != b);
+}
+
+bool sameVec(Vec2 a, Vec2 b) {
+    return sameBits(a.x, b.x) && sameBits(a.y, b.y);
+}
+
+bool sameSettings(const WorldSettings& a, const WorldSettings& b) {
+    return sameVec(a.gravity, b.gravity) && sameBits(a.bounciness, b.bounciness) &&
+           sameBits(a.dt, b.dt) && a.substeps == b.substeps && a.method == b.method &&
+           sameBits(a.restSpeed, b.restSpeed) && a.eventCap == b.eventCap &&
+           a.measureOverlap == b.measureOverlap;
+}
+
+} // namespace
+
+WorldHistory::WorldHistory(std::uint64_t capacityFrames, int keyframeEvery)
+    : capacity_(std::max<std::uint64_t>(1, capacityFrames)), every_(std::max(1, keyframeEvery)) {}
+
+void WorldHistory::clear() {
+    keyframes_.clear();
+    haveLast_ = false;
+}
+
+bool WorldHistory::sameAsLast(const World& w) const {
+    if (!haveLast_ || w.frame != last_.frame || !sameBits(w.time, last_.time)) return false;
+    if (!sameSettings(w.settings, last_.settings)) return false;
+    if (!sameVec(w.bounds.min, last_.bounds.min) || !sameVec(w.bounds.max, last_.bounds.max)) {
+        return false;
+    }
+    if (w.blocks.size() != last_.blocks.size()) return false;
+    for (std::size_t i = 0; i < w.blocks.size(); ++i) {
+        const Block &a = w.blocks[i], &b = last_.blocks[i];
+        if (!sameVec(a.position, b.position) || !sameVec(a.velocity, b.velocity) ||
+            !sameVec(a.size, b.size) || !sameBits(a.mass, b.mass) || a.kind != b.kind) {
+            return false;
+        }
+    }
+    return true;
+}
+
+void WorldHistory::beforeStep(const World& world) {
+    if (!keyframes_.empty() && world.frame < lastFrame()) truncateAfter(world.frame);
+    if (!keyframes_.empty() && world.frame < keyframes_.front().frame) clear();
+    const bool edited = !sameAsLast(world);
+    const bool due = keyframes_.empty() ||
+                     world.frame >= keyframes_.back().frame + static_cast<std::uint64_t>(every_);
+    if (edited || due) {
+        while (!keyframes_.empty() && keyframes_.back().frame >= world.frame) {
+            keyframes_.pop_back();
+        }
+        keyframes_.push_back(world);
+    }
+}
+
+void WorldHistory::afterStep(const World& world) {
+    last_ = world;
+    haveLast_ = true;
+    // Keep `capacity_` frames: drop a keyframe when the next one alone still covers them.
+    while (keyframes_.size() > 1 && world.frame - keyframes_[1].frame >= capacity_) {
+        keyframes_.pop_front();
+    }
+}
+
+std::uint64_t WorldHistory::firstFrame() const {
+    return keyframes_.empty() ? 0 : keyframes_.front().frame;
+}
+
+std::uint64_t WorldHistory::lastFrame() const {
+    if (keyframes_.empty()) return 0;
+    return haveLast_ ? std::max(last_.frame, keyframes_.back().frame) : keyframes_.back().frame;
+}
+
+bool WorldHistory::stateAt(std::uint64_t frame, World& out) const {
+    if (keyframes_.empty() || frame < firstFrame() || frame > lastFrame()) return false;
+    if (haveLast_ && frame == last_.frame) {
+        out = last_;
+        return true;
+    }
+    // The last keyframe at or before `frame`.
+    auto it = std::upper_bound(keyframes_.begin(), keyframes_.end(), frame,
+                               [](std::uint64_t f, const World& w) { return f < w.frame; });
+    if (it == keyframes_.begin()) return false;
+    out = *(it - 1);
+    while (out.frame < frame) out.step();
+    return true;
+}
+
+void WorldHistory::truncateAfter(std::uint64_t frame) {
+    if (keyframes_.empty() || frame >= lastFrame()) return;
+    World at;
+    const bool ok = stateAt(frame, at);
+    while (!keyframes_.empty() && keyframes_.back().frame > frame) keyframes_.pop_back();
+    if (ok) {
+        last_ = at;
+        haveLast_ = true;
+    } else {
+        haveLast_ = false;
+    }
+}
+
+std::size_t WorldHistory::bytes() const {
+    std::size_t total = sizeof(*this);
+    for (const World& w : keyframes_) total += sizeof(World) + w.blocks.capacity() * sizeof(Block);
+    return total + last_.blocks.capacity() * sizeof(Block);
+}

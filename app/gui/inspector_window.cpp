@@ -1,0 +1,96 @@
+// The collision inspector: the last collisions (bodies, axis, time of impact) and, for the one
+// picked (the newest by default), the lecture's formula with its numbers filled in, momentum
+// before and after, and the "pause on each collision" switch.
+#include "app_frame.h"
+#include "inspector_format.h"
+#include "overlay_window.h"
+
+#include <cstdio>
+#include <string>
+
+namespace {
+
+int gPicked = 0;          // 0: the newest collision, 1: the one before, ...
+std::string gLoggedTitle; // --verbose prints the formula once per collision shown
+
+std::string bodyName(const App& app, int index) {
+    return index < 0 ? std::string(wallName(index)) : blockDisplayName(app, index);
+}
+
+void formulaLine(const std::string& text, bool strong) {
+    if (strong)
+        ImGui::TextColored(ImVec4(1.0f, 0.93f, 0.55f, 1.0f), "%s", text.c_str());
+    else
+        ImGui::TextUnformatted(text.c_str());
+}
+
+} // namespace
+
+void drawInspectorWindow(App& app) {
+    OverlayPlacement place;
+    place.anchorX = 1.0f;
+    place.anchorY = 1.0f;
+    place.widthFraction = 0.46f;
+    place.heightFraction = 0.44f;
+    place.maxWidth = 460.0f;
+    place.maxHeight = 330.0f;
+    if (!beginOverlayWindow(app, "Collision inspector", &app.show.inspector, place)) {
+        ImGui::End();
+        return;
+    }
+    ImGui::Checkbox("pause on each collision", &app.pauseOnCollision);
+    const auto& recent = app.telemetry.recent;
+    if (recent.empty()) {
+        dimText("No collision yet. Run the scene, or step with N.");
+        ImGui::End();
+        return;
+    }
+    const int count = static_cast<int>(recent.size());
+    if (gPicked >= count) gPicked = 0;
+    const CollisionRecord& r = recent[static_cast<std::size_t>(count - 1 - gPicked)];
+    const CollisionFormula f = collisionFormula(r, bodyName(app, r.block), bodyName(app, r.other));
+
+    // The list of the last collisions, newest first.
+    char preview[160];
+    std::snprintf(preview, sizeof preview, "%s t = %.3f s: %s / %s (%c)",
+                  gPicked == 0 ? "newest," : "", r.time, bodyName(app, r.block).c_str(),
+                  bodyName(app, r.other).c_str(), r.axis == 0 ? 'x' : 'y');
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::BeginCombo("##collisions", preview)) {
+        for (int k = 0; k < count; ++k) {
+            const CollisionRecord& c = recent[static_cast<std::size_t>(count - 1 - k)];
+            char row[160];
+            std::snprintf(row, sizeof row, "t = %.3f s  %s / %s  (%c, toi %.2f)%s##%d", c.time,
+                          bodyName(app, c.block).c_str(), bodyName(app, c.other).c_str(),
+                          c.axis == 0 ? 'x' : 'y', c.toi, c.rest ? "  rest" : "", k);
+            if (ImGui::Selectable(row, k == gPicked)) gPicked = k;
+        }
+        ImGui::EndCombo();
+    }
+    ImGui::Separator();
+    ImGui::TextWrapped("%s", f.title.c_str());
+    char toi[96];
+    std::snprintf(toi, sizeof toi, "time of impact: t = %s of the frame (t = a/b)",
+                  formatNumber(r.toi).c_str());
+    dimText(toi);
+    dimText(f.given.c_str());
+    ImGui::Spacing();
+    formulaLine(f.u, true);
+    formulaLine(f.v1After, true);
+    formulaLine(f.v2After, true);
+    ImGui::Spacing();
+    formulaLine(f.momentumBefore, false);
+    formulaLine(f.momentumAfter, false);
+    if (!f.note.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.62f, 0.66f, 0.74f, 1.0f));
+        ImGui::TextWrapped("%s", f.note.c_str());
+        ImGui::PopStyleColor();
+    }
+    if (app.verbose && f.title != gLoggedTitle) {
+        gLoggedTitle = f.title;
+        std::printf("inspector %s\ninspector %s\ninspector %s\ninspector %s\n", f.title.c_str(),
+                    f.u.c_str(), f.v1After.c_str(), f.v2After.c_str());
+        std::fflush(stdout);
+    }
+    ImGui::End();
+}

@@ -1,0 +1,59 @@
+// The plot widget's pure logic: "nice" tick values (1-2-5 steps, decades on log axes), the
+// scrolling time window, padded value ranges, tick labels, and a fixed-capacity time series.
+// No ImGui here, so it is tested on its own; plot_widget.cpp draws with it.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+struct PlotRange {
+    double lo = 0.0;
+    double hi = 1.0;
+};
+
+// A step of 1, 2 or 5 times a power of ten that splits `span` into at most `maxTicks` parts.
+double niceTickStep(double span, int maxTicks);
+// The multiples of niceTickStep(hi - lo, maxTicks) within [lo, hi] (ends included).
+std::vector<double> niceTicks(double lo, double hi, int maxTicks);
+// Powers of ten within [10^lo, 10^hi], as exponents (lo and hi are log10 values); when the range
+// holds fewer than two decades, niceTicks of the exponents instead.
+std::vector<double> decadeTicks(double logLo, double logHi, int maxTicks);
+// The label of a tick at `value` on an axis whose ticks are `step` apart: just enough decimals.
+std::string tickLabel(double value, double step);
+// The label of a decade tick: "1", "10", "0.01", "1e+05".
+std::string decadeLabel(double exponent);
+// The last `span` seconds before `now`, or [0, span] while now < span.
+PlotRange scrollingWindow(double now, double span);
+// [lo, hi] widened by `margin` of its span on both sides; a flat range becomes +-1 around it
+// (or +-10% of its value), so a constant series still shows as a line in the middle.
+PlotRange paddedRange(double lo, double hi, double margin = 0.08);
+
+// Samples (t, v[0..k)) in a ring buffer of `capacity`; the oldest are dropped.
+class TimeSeries {
+  public:
+    explicit TimeSeries(int channels = 1, std::size_t capacity = 3600);
+    void push(double t, const double* values);
+    void clear() {
+        size_ = 0;
+        head_ = 0;
+    }
+    // Drops the samples later than `t` (the timeline went back).
+    void truncateAfter(double t);
+    std::size_t size() const { return size_; }
+    int channels() const { return channels_; }
+    // Sample `i`: 0 is the oldest.
+    double time(std::size_t i) const;
+    double value(std::size_t i, int channel) const;
+    // Index of the first sample at or after `t` (size() when none).
+    std::size_t firstAtOrAfter(double t) const;
+
+  private:
+    std::size_t slot(std::size_t i) const;
+    int channels_;
+    std::size_t capacity_;
+    std::size_t size_ = 0;
+    std::size_t head_ = 0; // slot of the oldest sample
+    std::vector<double> times_;
+    std::vector<double> values_; // capacity_ * channels_
+};

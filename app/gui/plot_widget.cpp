@@ -1,0 +1,214 @@
+#include "plot_widget.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace {
+
+constexpr ImU32 kFrameBg = IM_COL32(10, 12, 18, 150);
+constexpr ImU32 kGrid = IM_COL32(255, 255, 255, 28);
+constexpr ImU32 kZero = IM_COL32(255, 255, 255, 70);
+constexpr ImU32 kAxisText = IM_COL32(190, 198, 215, 255);
+constexpr ImU32 kMarker = IM_COL32(255, 196, 80, 80);
+constexpr std::size_t kMaxMarkers = 300;
+
+double axisValue(double v, bool log) {
+    if (!log) return v;
+    return v > 0.0 ? std::log10(v) : NAN;
+}
+
+struct Mapping {
+    double x0, x1, y0, y1; // data (log10 when log)
+    ImVec2 min, max;       // plot area, px
+    float sx(double x) const { return min.x + float((x - x0) / (x1 - x0)) * (max.x - min.x); }
+    float sy(double y) const { return max.y - float((y - y0) / (y1 - y0)) * (max.y - min.y); }
+};
+
+std::vector<double> ticksFor(double lo, double hi, bool log, int maxTicks) {
+    return log ? decadeTicks(lo, hi, maxTicks) : niceTicks(lo, hi, maxTicks);
+}
+
+std::string labelFor(double v, double lo, double hi, bool log, int maxTicks) {
+    if (log && std::floor(hi) - std::ceil(lo) >= 1.0) return decadeLabel(v);
+    const double step = niceTickStep(hi - lo, maxTicks);
+    return log ? decadeLabel(v) : tickLabel(v, step);
+}
+
+} // namespace
+
+void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries>& series,
+              const std::vector<double>& markers) {
+    const float font = ImGui::GetFontSize();
+    ImVec2 size = ImGui::GetContentRegionAvail();
+    if (o.height > 0.0f) size.y = o.height;
+    size.x = std::max(size.x, font * 8.0f);
+    size.y = std::max(size.y, font * 5.0f);
+    ImGui::InvisibleButton(id, size);
+    const bool hovered = ImGui::IsItemHovered();
+    const ImVec2 outerMin = ImGui::GetItemRectMin();
+    const ImVec2 outerMax = ImGui::GetItemRectMax();
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+
+    // Data ranges (in axis units: log10 where log).
+    double x0 = axisValue(o.x.lo, o.logX), x1 = axisValue(o.x.hi, o.logX);
+    double ylo = INFINITY, yhi = -INFINITY, xlo = INFINITY, xhi = -INFINITY;
+    for (const PlotSeries& s : series) {
+        const std::size_t n = std::min(s.x.size(), s.y.size());
+        for (std::size_t i = 0; i < n; ++i) {
+            const double x = axisValue(s.x[i], o.logX), y = axisValue(s.y[i], o.logY);
+            if (!std::isfinite(x) || !std::isfinite(y)) continue;
+            xlo = std::min(xlo, x);
+            xhi = std::max(xhi, x);
+            if (!o.autoX && (x < x0 || x > x1)) continue;
+            ylo = std::min(ylo, y);
+            yhi = std::max(yhi, y);
+        }
+    }
+    if (o.autoX && xlo <= xhi) {
+        const PlotRange r = paddedRange(xlo, xhi, 0.05);
+        x0 = r.lo;
+        x1 = r.hi;
+    }
+    if (!(x1 > x0)) x1 = x0 + 1.0;
+    if (o.includeZero && !o.logY) {
+        ylo = std::min(ylo, 0.0);
+        yhi = std::max(yhi, 0.0);
+    }
+    if (!(ylo <= yhi)) ylo = yhi = 0.0;
+    const PlotRange yr = paddedRange(ylo, yhi, 0.1);
+
+    // Layout: y labels on the left, x labels below.
+    const float header = font * 1.35f; // title, unit and legend above the plot area
+    const int yMaxTicks = std::max(2, int((size.y - header - font * 1.5f) / (font * 1.8f)));
+    const std::vector<double> yTicks = ticksFor(yr.lo, yr.hi, o.logY, yMaxTicks);
+    float labelW = ImGui::CalcTextSize("0").x;
+    std::vector<std::string> yLabels;
+    for (double t : yTicks) {
+        yLabels.push_back(labelFor(t, yr.lo, yr.hi, o.logY, yMaxTicks));
+        labelW = std::max(labelW, ImGui::CalcTextSize(yLabels.back().c_str()).x);
+    }
+    Mapping m{x0,
+              x1,
+              yr.lo,
+              yr.hi,
+              ImVec2(outerMin.x + labelW + font * 0.6f, outerMin.y + header),
+              ImVec2(outerMax.x - font * 0.5f, outerMax.y - font * 1.4f)};
+    if (m.max.x - m.min.x < 10.0f || m.max.y - m.min.y < 10.0f) return;
+    dl->AddRectFilled(m.min, m.max, kFrameBg, 3.0f);
+
+    // Grid and tick labels.
+    for (std::size_t i = 0; i < yTicks.size(); ++i) {
+        const float y = m.sy(yTicks[i]);
+        dl->AddLine(ImVec2(m.min.x, y), ImVec2(m.max.x, y),
+                    yTicks[i] == 0.0 && !o.logY ? kZero : kGrid);
+        const ImVec2 ts = ImGui::CalcTextSize(yLabels[i].c_str());
+        dl->AddText(ImVec2(m.min.x - ts.x - font * 0.3f, y - ts.y * 0.5f), kAxisText,
+                    yLabels[i].c_str());
+    }
+    const int xMaxTicks = std::max(2, int((m.max.x - m.min.x) / (font * 4.5f)));
+    const std::vector<double> xTicks = ticksFor(x0, x1, o.logX, xMaxTicks);
+    for (std::size_t i = 0; i < xTicks.size(); ++i) {
+        const float x = m.sx(xTicks[i]);
+        dl->AddLine(ImVec2(x, m.min.y), ImVec2(x, m.max.y), kGrid);
+        std::string text = labelFor(xTicks[i], x0, x1, o.logX, xMaxTicks);
+        if (i + 1 == xTicks.size() && *o.xUnit) text += std::string(" ") + o.xUnit;
+        const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
+        float tx = x - ts.x * 0.5f;
+        tx = std::min(tx, outerMax.x - ts.x);
+        dl->AddText(ImVec2(tx, m.max.y + font * 0.15f), kAxisText, text.c_str());
+    }
+
+    dl->PushClipRect(m.min, m.max, true);
+    // Collision markers.
+    // At most one marker per 2 px column: a gas has hundreds of collisions per second, and
+    // overdrawn translucent lines are what costs on a software rasteriser.
+    std::size_t drawn = 0;
+    float lastColumn = -1e9f;
+    for (auto it = markers.rbegin(); it != markers.rend() && drawn < kMaxMarkers; ++it) {
+        const double x = axisValue(*it, o.logX);
+        if (!(x >= x0 && x <= x1)) continue;
+        const float sx = std::floor(m.sx(x) * 0.5f) * 2.0f;
+        if (sx == lastColumn) continue;
+        lastColumn = sx;
+        dl->AddLine(ImVec2(sx, m.min.y), ImVec2(sx, m.max.y), kMarker, 1.5f);
+        ++drawn;
+    }
+    // Series.
+    std::vector<ImVec2> pts;
+    const float thickness = std::max(1.5f, font * 0.12f);
+    for (const PlotSeries& s : series) {
+        pts.clear();
+        const std::size_t n = std::min(s.x.size(), s.y.size());
+        for (std::size_t i = 0; i < n; ++i) {
+            const double x = axisValue(s.x[i], o.logX), y = axisValue(s.y[i], o.logY);
+            if (!std::isfinite(x) || !std::isfinite(y)) continue;
+            const ImVec2 p(m.sx(x), m.sy(y));
+            // Thin out points closer than a pixel (long series).
+            if (!pts.empty() && !s.points && std::abs(p.x - pts.back().x) < 0.75f &&
+                std::abs(p.y - pts.back().y) < 0.75f) {
+                continue;
+            }
+            pts.push_back(p);
+        }
+        if (pts.size() >= 2) {
+            dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), s.color, 0, thickness);
+        }
+        if (s.points) {
+            for (const ImVec2& p : pts) dl->AddCircleFilled(p, thickness * 1.8f, s.color, 8);
+        }
+    }
+    dl->PopClipRect();
+
+    // Title, unit and legend along the top.
+    float lx = outerMin.x + font * 0.2f;
+    const float ly = outerMin.y + font * 0.1f;
+    if (*o.title) {
+        dl->AddText(ImVec2(lx, ly), IM_COL32(235, 238, 245, 255), o.title);
+        lx += ImGui::CalcTextSize(o.title).x + font * 0.5f;
+    }
+    if (*o.yUnit) {
+        char unit[64];
+        std::snprintf(unit, sizeof unit, "[%s]", o.yUnit);
+        dl->AddText(ImVec2(lx, ly), kAxisText, unit);
+        lx += ImGui::CalcTextSize(unit).x + font * 0.8f;
+    }
+    for (const PlotSeries& s : series) {
+        const ImVec2 ts = ImGui::CalcTextSize(s.label.c_str());
+        if (lx + font * 1.2f + ts.x > outerMax.x) break;
+        const float cy = ly + ts.y * 0.5f;
+        dl->AddLine(ImVec2(lx, cy), ImVec2(lx + font * 0.9f, cy), s.color, thickness * 1.5f);
+        lx += font * 1.2f;
+        dl->AddText(ImVec2(lx, ly), IM_COL32(225, 230, 240, 255), s.label.c_str());
+        lx += ts.x + font * 0.8f;
+    }
+
+    // Values under the cursor.
+    if (hovered) {
+        const ImVec2 mouse = ImGui::GetIO().MousePos;
+        if (mouse.x >= m.min.x && mouse.x <= m.max.x) {
+            dl->AddLine(ImVec2(mouse.x, m.min.y), ImVec2(mouse.x, m.max.y),
+                        IM_COL32(255, 255, 255, 90));
+            const double x = x0 + (mouse.x - m.min.x) / (m.max.x - m.min.x) * (x1 - x0);
+            ImGui::BeginTooltip();
+            ImGui::Text("x = %.4g %s", o.logX ? std::pow(10.0, x) : x, o.xUnit);
+            for (const PlotSeries& s : series) {
+                // Nearest sample by x.
+                double best = INFINITY, value = NAN;
+                const std::size_t n = std::min(s.x.size(), s.y.size());
+                for (std::size_t i = 0; i < n; ++i) {
+                    const double d = std::abs(axisValue(s.x[i], o.logX) - x);
+                    if (d < best) {
+                        best = d;
+                        value = s.y[i];
+                    }
+                }
+                if (std::isfinite(value)) {
+                    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(s.color), "%s = %.4g %s",
+                                       s.label.c_str(), value, o.yUnit);
+                }
+            }
+            ImGui::EndTooltip();
+        }
+    }
+}

@@ -1,0 +1,92 @@
+// The plots overlay: velocity of the watched block (vx, vy), total momentum (px, py), and the
+// kinetic, potential and total energy against time, in a scrolling window with a marker at each
+// collision; all drawn with the one plot widget.
+#include "app_frame.h"
+#include "overlay_window.h"
+#include "plot_widget.h"
+
+#include <algorithm>
+#include <deque>
+#include <string>
+
+namespace {
+
+float gSpanSeconds = 10.0f;
+
+std::vector<double> markersIn(const std::deque<double>& times) {
+    return std::vector<double>(times.begin(), times.end());
+}
+
+// Series `channel` of `ts` within [window.lo, now].
+void fill(PlotSeries& s, const TimeSeries& ts, int channel, PlotRange window, double now) {
+    for (std::size_t i = ts.firstAtOrAfter(window.lo); i < ts.size(); ++i) {
+        const double t = ts.time(i);
+        if (t > now + 1e-12) break;
+        s.x.push_back(t);
+        s.y.push_back(ts.value(i, channel));
+    }
+}
+
+PlotSeries series(const char* label, ImU32 color, const TimeSeries& ts, int channel,
+                  PlotRange window, double now) {
+    PlotSeries s;
+    s.label = label;
+    s.color = color;
+    fill(s, ts, channel, window, now);
+    return s;
+}
+
+} // namespace
+
+void drawPlotsWindow(App& app) {
+    OverlayPlacement place;
+    place.anchorX = 1.0f;
+    place.anchorY = 0.0f;
+    place.widthFraction = 0.42f;
+    place.heightFraction = 0.52f;
+    place.maxWidth = 440.0f;
+    place.maxHeight = 520.0f;
+    if (!beginOverlayWindow(app, "Plots", &app.show.plots, place)) {
+        ImGui::End();
+        return;
+    }
+    const Telemetry& tm = app.telemetry;
+    const double now = app.world.time;
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
+    ImGui::SliderFloat("time window", &gSpanSeconds, 2.0f, 60.0f, "%.0f s",
+                       ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    // Until the window fills, the axis grows with the run (at least 2 s), then it scrolls.
+    const double span = std::clamp(now * 1.05, 2.0, static_cast<double>(gSpanSeconds));
+    const PlotRange window = scrollingWindow(now, span);
+    const float spacing = ImGui::GetStyle().ItemSpacing.y;
+    const float h = (ImGui::GetContentRegionAvail().y - 2.0f * spacing) / 3.0f;
+    using namespace overlay_colors;
+
+    PlotOptions o;
+    o.x = window;
+    o.xUnit = "s";
+    o.height = h;
+    o.includeZero = true;
+    std::string title =
+        "v of " + (tm.watched >= 0 ? blockDisplayName(app, tm.watched) : std::string("(no block)"));
+    o.title = title.c_str();
+    o.yUnit = "m/s";
+    drawPlot("##velocity", o,
+             {series("vx", kX, tm.velocity, 0, window, now),
+              series("vy", kY, tm.velocity, 1, window, now)},
+             markersIn(tm.watchedCollisionTimes));
+    o.title = "total momentum";
+    o.yUnit = "kg·m/s";
+    drawPlot("##momentum", o,
+             {series("px", kX, tm.momentum, 0, window, now),
+              series("py", kY, tm.momentum, 1, window, now)},
+             markersIn(tm.collisionTimes));
+    o.title = "energy";
+    o.yUnit = "J";
+    drawPlot("##energy", o,
+             {series("kinetic", kKinetic, tm.energy, 0, window, now),
+              series("potential", kPotential, tm.energy, 1, window, now),
+              series("total", kTotal, tm.energy, 2, window, now)},
+             markersIn(tm.collisionTimes));
+    ImGui::End();
+}

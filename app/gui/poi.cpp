@@ -1,0 +1,67 @@
+#include "poi.h"
+
+#include "collision.h"
+
+#include <cmath>
+
+namespace {
+
+Vec2 frameVelocity(const Block& b, const WorldSettings& s) {
+    if (b.isDynamic()) return b.velocity + s.gravity * s.dt;
+    if (b.kind == BodyKind::Kinematic) return b.velocity;
+    return {};
+}
+
+} // namespace
+
+PoiView computePoi(const std::vector<Block>& before, const Bounds& bounds,
+                   const WorldSettings& settings, double frameStart, int block) {
+    PoiView p;
+    if (block < 0 || block >= static_cast<int>(before.size()) || !(settings.dt > 0.0)) return p;
+    const Block& me = before[static_cast<std::size_t>(block)];
+    const double dt = settings.dt;
+    const Vec2 v = frameVelocity(me, settings);
+    const Aabb box = aabbOf(me);
+    double best = kNever;
+    std::uint8_t axes = 0;
+    int other = 0;
+    const WallImpact wall = timeOfWallImpact(box, v, bounds, dt);
+    if (wall.hit()) {
+        best = wall.time;
+        axes = wall.axes;
+        const int axis = (wall.axes & kAxisX) ? 0 : 1;
+        other = wallOnAxis(axis, axis == 0 ? v.x : v.y);
+    }
+    for (std::size_t j = 0; j < before.size(); ++j) {
+        if (static_cast<int>(j) == block) continue;
+        const Block& o = before[j];
+        const Impact hit = timeOfImpact(box, v, aabbOf(o), frameVelocity(o, settings), dt);
+        if (hit.hit() && hit.time < best) {
+            best = hit.time;
+            axes = hit.axes;
+            other = static_cast<int>(j);
+        }
+    }
+    if (!axes || !std::isfinite(best)) return p;
+    p.valid = true;
+    p.block = block;
+    p.other = other;
+    p.axis = (axes & kAxisX) ? 0 : 1;
+    p.frameStart = frameStart;
+    p.dt = dt;
+    p.size = me.size;
+    p.velocity = v;
+    p.oldPosition = me.position;
+    p.newPosition = me.position + v * dt;
+    p.t = best / dt;
+    p.ghost = me.position + v * best;
+    p.crooked = p.newPosition;
+    if (p.axis == 0)
+        p.crooked.x = p.ghost.x;
+    else
+        p.crooked.y = p.ghost.y;
+    const double speed = std::abs(p.axis == 0 ? v.x : v.y);
+    p.a = speed * best;
+    p.b = speed * dt;
+    return p;
+}

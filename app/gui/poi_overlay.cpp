@@ -1,0 +1,112 @@
+// Point of impact of the watched block's last collision, as on the lecture's slides: the old
+// position, the new position (overlapping: where it would be without the collision), the ghost at
+// the point of impact POI = oldPosition + t·velocity with t = a/b, and beside it the "crooked"
+// result of simply moving back along the collision axis only.
+#include "app_frame.h"
+#include "inspector_format.h"
+#include "overlay_window.h"
+
+#include <cstdio>
+#include <string>
+
+namespace {
+
+constexpr ImU32 kOld = IM_COL32(200, 205, 215, 230);
+constexpr ImU32 kNew = IM_COL32(255, 90, 80, 240);
+constexpr ImU32 kGhost = IM_COL32(90, 235, 130, 255);
+constexpr ImU32 kCrooked = IM_COL32(255, 170, 50, 240);
+
+ImVec2 toScreen(const App& app, Vec2 p) {
+    const Vec2 s = app.camera.worldToScreen(p);
+    return ImVec2(static_cast<float>(s.x), static_cast<float>(s.y));
+}
+
+void box(const App& app, ImDrawList* dl, Vec2 centre, Vec2 size, ImU32 color, float width,
+         bool dashed) {
+    const ImVec2 a = toScreen(app, centre - size * 0.5), b = toScreen(app, centre + size * 0.5);
+    const ImVec2 lo(std::min(a.x, b.x), std::min(a.y, b.y)),
+        hi(std::max(a.x, b.x), std::max(a.y, b.y));
+    if (!dashed) {
+        dl->AddRectFilled(lo, hi, (color & 0x00FFFFFF) | 0x30000000);
+        dl->AddRect(lo, hi, color, 0.0f, 0, width);
+        return;
+    }
+    const float dash = 6.0f * app.uiScale;
+    const ImVec2 corners[5] = {lo, ImVec2(hi.x, lo.y), hi, ImVec2(lo.x, hi.y), lo};
+    for (int e = 0; e < 4; ++e) {
+        const ImVec2 p = corners[e], q = corners[e + 1];
+        const float len = std::abs(q.x - p.x) + std::abs(q.y - p.y);
+        for (float s = 0.0f; s < len; s += 2.0f * dash) {
+            const float t0 = s / len, t1 = std::min(1.0f, (s + dash) / len);
+            dl->AddLine(ImVec2(p.x + (q.x - p.x) * t0, p.y + (q.y - p.y) * t0),
+                        ImVec2(p.x + (q.x - p.x) * t1, p.y + (q.y - p.y) * t1), color, width);
+        }
+    }
+}
+
+void label(ImDrawList* dl, ImVec2 at, ImU32 color, const std::string& text) {
+    dl->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 230), text.c_str());
+    dl->AddText(at, color, text.c_str());
+}
+
+} // namespace
+
+void drawPointOfImpact(App& app) {
+    const PoiView& p = app.poi;
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    const ScreenRect& vp = app.camera.viewport();
+    const float font = ImGui::GetFontSize();
+    const float s = app.uiScale;
+    if (!p.valid || p.block < 0 || p.block >= static_cast<int>(app.world.blocks.size())) {
+        label(dl,
+              ImVec2(static_cast<float>(vp.x) + 12.0f * s, static_cast<float>(vp.y) + 34.0f * s),
+              kOld, "Point of impact: shown after the watched block's next collision");
+        return;
+    }
+    const float w = 2.0f * s;
+    // The path of the frame, old centre to new centre.
+    dl->AddLine(toScreen(app, p.oldPosition), toScreen(app, p.newPosition), kOld, 1.5f * s);
+    box(app, dl, p.oldPosition, p.size, kOld, w, true);
+    box(app, dl, p.newPosition, p.size, kNew, w, true);
+    box(app, dl, p.crooked, p.size, kCrooked, w, false);
+    box(app, dl, p.ghost, p.size, kGhost, w * 1.3f, false);
+    // Each label on its own side of its box: old above, new right, POI left, moved back below.
+    const float hw = static_cast<float>(app.camera.metresToPixels(p.size.x * 0.5));
+    const float hh = static_cast<float>(app.camera.metresToPixels(p.size.y * 0.5));
+    auto place = [&](Vec2 c, const char* text, ImU32 color, int side) {
+        const ImVec2 sc = toScreen(app, c);
+        const ImVec2 ts = ImGui::CalcTextSize(text);
+        const float g = 4.0f * s;
+        const ImVec2 at = side == 0   ? ImVec2(sc.x - ts.x * 0.5f, sc.y - hh - ts.y - g)
+                          : side == 1 ? ImVec2(sc.x + hw + g, sc.y - ts.y * 0.5f)
+                          : side == 2 ? ImVec2(sc.x - hw - g - ts.x, sc.y - ts.y * 0.5f)
+                                      : ImVec2(sc.x - ts.x * 0.5f, sc.y + hh + g);
+        label(dl, at, color, text);
+    };
+    place(p.oldPosition, "old", kOld, 0);
+    place(p.newPosition, "new", kNew, 1);
+    place(p.ghost, "POI", kGhost, 2);
+    if (length(p.crooked - p.ghost) > 1e-9) place(p.crooked, "moved back", kCrooked, 3);
+
+    // The caption: the numbers of t = a/b.
+    const char axis = p.axis == 0 ? 'x' : 'y';
+    const std::string other = p.other < 0 ? wallName(p.other) : blockDisplayName(app, p.other);
+    const std::string lines[4] = {
+        "Point of impact of " + blockDisplayName(app, p.block) + " with " + other +
+            ", frame from t = " + formatNumber(p.frameStart) + " s",
+        std::string("t = a/b = ") + formatNumber(p.a) + " m / " + formatNumber(p.b) +
+            " m = " + formatNumber(p.t) + "   (along " + axis + ")",
+        "POI = old + t·v·dt = (" + formatNumber(p.ghost.x) + ", " + formatNumber(p.ghost.y) + ")",
+        std::string("moved back along ") + axis + " only: (" + formatNumber(p.crooked.x) + ", " +
+            formatNumber(p.crooked.y) + "), crooked",
+    };
+    const ImU32 colors[4] = {IM_COL32(230, 234, 242, 255), kGhost, kGhost, kCrooked};
+    float width = 0.0f;
+    for (const std::string& l : lines) width = std::max(width, ImGui::CalcTextSize(l.c_str()).x);
+    const ImVec2 at(static_cast<float>(vp.x) + 12.0f * s, static_cast<float>(vp.y) + 34.0f * s);
+    dl->AddRectFilled(ImVec2(at.x - 6 * s, at.y - 4 * s),
+                      ImVec2(at.x + width + 6 * s, at.y + 4 * font + 4 * s),
+                      IM_COL32(16, 18, 26, 215), 4.0f);
+    for (int i = 0; i < 4; ++i)
+        dl->AddText(ImVec2(at.x, at.y + i * font), colors[i], lines[i].c_str());
+}

@@ -1,0 +1,31 @@
+// Methods side by side: the same scene under the lecture's three methods at once, three worlds
+// stepped together from one starting state, with running statistics and the divergence from the
+// perfect method. Pure logic; side_by_side_view.cpp draws the ghosts and the table.
+#pragma once
+
+#include "world.h"
+
+#include <array>
+#include <cstdint>
+
+struct MethodRun {
+    World world;
+    StepStats stats;
+    std::uint64_t collisions = 0;
+    std::uint64_t eventCapHits = 0;
+    double maxPenetration = 0.0; // m, largest overlap seen
+};
+
+struct MethodsSideBySide {
+    bool running = false;
+    std::array<MethodRun, static_cast<std::size_t>(Method::Count)> runs;
+
+    // Copies `world` once per method (each with its own method).
+    void start(const World& world);
+    void stop() { running = false; }
+    // Steps the three worlds one frame, with `live`'s settings (the sliders) except the method.
+    void step(const WorldSettings& live);
+    // Largest distance (m) between a block under `method` and the same block under perfect.
+    double divergence(Method method) const;
+    const MethodRun& run(Method method) const { return runs[static_cast<std::size_t>(method)]; }
+};

@@ -1,0 +1,75 @@
+// Methods side by side: the other two methods' blocks drawn as coloured outlines (ghosts) over
+// the live world (by the renderer, see appRender), and a table of each method's statistics:
+// collisions, largest overlap, energy, momentum, and how far it has drifted from perfect.
+#include "app_frame.h"
+#include "overlay_window.h"
+
+#include <cstdio>
+
+Color methodGhostColor(Method method) {
+    switch (method) {
+    case Method::Perfect:
+        return {0.45f, 0.95f, 0.55f, 1.0f};
+    case Method::MoveAndCorrect:
+        return {1.0f, 0.55f, 0.25f, 1.0f};
+    case Method::TurnBased:
+        return {0.80f, 0.50f, 1.0f, 1.0f};
+    case Method::Count:
+        break;
+    }
+    return {1.0f, 1.0f, 1.0f, 1.0f};
+}
+
+void drawSideBySideWindow(App& app) {
+    OverlayPlacement place;
+    place.anchorX = 0.0f;
+    place.anchorY = 0.0f;
+    place.widthFraction = 0.62f;
+    place.heightFraction = 0.3f;
+    place.maxWidth = 600.0f;
+    place.maxHeight = 170.0f;
+    if (!beginOverlayWindow(app, "Methods side by side", &app.show.sideBySide, place)) {
+        ImGui::End();
+        return;
+    }
+    const MethodsSideBySide& m = app.methods;
+    if (!m.running) {
+        ImGui::TextWrapped("Starts from the current state when the simulation runs (P or N).");
+        ImGui::End();
+        return;
+    }
+    const ImGuiTableFlags flags =
+        ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_BordersInnerV;
+    if (ImGui::BeginTable("methods", 6, flags)) {
+        ImGui::TableSetupColumn("method");
+        ImGui::TableSetupColumn("collisions");
+        ImGui::TableSetupColumn("max overlap");
+        ImGui::TableSetupColumn("energy");
+        ImGui::TableSetupColumn("off perfect");
+        ImGui::TableSetupColumn("ms/step");
+        ImGui::TableHeadersRow();
+        for (int k = 0; k < static_cast<int>(Method::Count); ++k) {
+            const Method method = static_cast<Method>(k);
+            const MethodRun& r = m.run(method);
+            const bool live = method == app.world.settings.method;
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            const Color c = methodGhostColor(method);
+            ImGui::TextColored(ImVec4(c.r, c.g, c.b, 1.0f), "%s%s", methodName(method),
+                               live ? " (live)" : "");
+            ImGui::TableNextColumn();
+            ImGui::Text("%llu", static_cast<unsigned long long>(r.collisions));
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3g m", r.maxPenetration);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.4g J", r.stats.kineticEnergy + r.stats.potentialEnergy);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3g m", m.divergence(method));
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", r.stats.stepMs);
+        }
+        ImGui::EndTable();
+    }
+    dimText("Outlines in the scene: the other methods' blocks.");
+    ImGui::End();
+}

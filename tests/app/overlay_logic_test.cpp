@@ -1,0 +1,274 @@
+// The teaching overlays' logic without GL: the inspector's formula strings for the lecture's
+// first worked example, the timeline's scrub-and-replay (bit-exact, checked with stateHash), the
+// plot widget's ticks and time window, the point of impact and the methods side by side.
+#include "app_state.h"
+#include "history.h"
+#include "inspector_format.h"
+#include "plot_logic.h"
+#include "poi.h"
+#include "scene_library.h"
+#include "side_by_side.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace {
+
+App lectureExample() {
+    App app;
+    EXPECT_TRUE(loadScene(app, resolveScenePath("lecture_example_1", SANDBOX_SCENES_DIR)))
+        << app.error;
+    return app;
+}
+
+// The first block-block collision recorded by the app's telemetry within `frames` frames.
+const CollisionRecord* firstBlockCollision(App& app, int frames) {
+    for (int i = 0; i < frames; ++i) stepSimulation(app);
+    for (const CollisionRecord& r : app.telemetry.recent) {
+        if (r.other >= 0) return &r;
+    }
+    return nullptr;
+}
+
+TEST(InspectorFormat, NumbersAreShortAndExact) {
+    EXPECT_EQ(formatNumber(2.0), "2");
+    EXPECT_EQ(formatNumber(-2.0), "-2");
+    EXPECT_EQ(formatNumber(0.625), "0.625");
+    EXPECT_EQ(formatNumber(1.0 / 3.0), "0.333");
+    EXPECT_EQ(formatNumber(-0.0), "0");
+    EXPECT_EQ(formatNumber(-1e-12), "-1e-12");
+    EXPECT_EQ(formatNumber(INFINITY), "inf");
+    EXPECT_EQ(operand(-2.0), "(-2)");
+    EXPECT_EQ(operand(4.0), "4");
+}
+
+TEST(InspectorFormat, LectureExampleOneFillsTheFormula) {
+    App app = lectureExample();
+    const CollisionRecord* r = firstBlockCollision(app, 45);
+    ASSERT_NE(r, nullptr) << "no collision between the blocks in 45 frames";
+    EXPECT_NEAR(r->time, 0.625, 1e-9);
+    EXPECT_EQ(r->axis, 0);
+    const CollisionFormula f =
+        collisionFormula(*r, blockDisplayName(app, r->block), blockDisplayName(app, r->other));
+    EXPECT_EQ(f.title, "m1 = 1 kg  hits  m2 = 2 kg  along x at t = 0.625 s");
+    EXPECT_EQ(f.given, "m1 = 1, m2 = 2, v1 = 6, v2 = 0, C = 1");
+    EXPECT_EQ(f.u, "u = (1·6 + 2·0)/(1 + 2) = 2");
+    EXPECT_EQ(f.v1After, "v1' = 2 - 1·(6 - 2) = -2");
+    EXPECT_EQ(f.v2After, "v2' = 2 - 1·(0 - 2) = 4");
+    EXPECT_EQ(f.momentumBefore, "p before = 1·6 + 2·0 = 6 kg·m/s");
+    EXPECT_EQ(f.momentumAfter, "p after  = 1·(-2) + 2·4 = 6 kg·m/s");
+    EXPECT_TRUE(f.note.empty());
+}
+
+TEST(InspectorFormat, WallCollisionUsesTheWallsVelocity) {
+    CollisionRecord r;
+    r.time = 1.5;
+    r.block = 0;
+    r.other = kWallRight;
+    r.axis = 0;
+    r.m1 = 1.0;
+    r.m2 = INFINITY;
+    r.v1 = 4.0;
+    r.v2 = 0.0;
+    r.u = 0.0;
+    r.C = 0.5;
+    r.v1After = -2.0;
+    const CollisionFormula f = collisionFormula(r, "A", wallName(r.other));
+    EXPECT_EQ(f.title, "A  hits  right wall  along x at t = 1.5 s");
+    EXPECT_EQ(f.u, "u = v2 = 0   (m2 is infinite)");
+    EXPECT_EQ(f.v1After, "v1' = 0 - 0.5·(4 - 0) = -2");
+    EXPECT_EQ(f.momentumBefore, "p1 before = 1·4 = 4 kg·m/s");
+    EXPECT_EQ(f.momentumAfter, "p1 after  = 1·(-2) = -2 kg·m/s");
+    EXPECT_FALSE(f.note.empty());
+}
+
+TEST(Inspector, PauseOnCollisionStopsAtTheCollisionFrame) {
+    App app = lectureExample();
+    app.pauseOnCollision = true;
+    int frames = 0;
+    while (!app.paused && frames < 100) {
+        stepSimulation(app);
+        ++frames;
+    }
+    EXPECT_TRUE(app.paused);
+    EXPECT_EQ(frames, 38); // the collision at t = 0.625 s falls in frame 38 (0.617 .. 0.633 s)
+    ASSERT_FALSE(app.lastLog.empty());
+    EXPECT_NEAR(app.lastLog.front().time, 0.625, 1e-9);
+}
+
+// A busy scene (gravity, bounciness < 1, many blocks) so that the replay has work to do.
+App busyScene() {
+    App app;
+    EXPECT_TRUE(loadScene(app, resolveScenePath("bouncing_squares", SANDBOX_SCENES_DIR)))
+        << app.error;
+    app.world.settings.bounciness = 0.8;
+    return app;
+}
+
+TEST(Timeline, ScrubAndReplayEqualsTheOriginalRun) {
+    for (const Method method : {Method::Perfect, Method::MoveAndCorrect, Method::TurnBased}) {
+        App app = busyScene();
+        app.world.settings.method = method;
+        std::vector<std::uint64_t> original;
+        original.push_back(stateHash(app.world));
+        for (int i = 0; i < 300; ++i) {
+            stepSimulation(app);
+            original.push_back(stateHash(app.world));
+        }
+        // Every recorded frame rebuilds bit for bit.
+        for (std::uint64_t f = 0; f <= 300; f += 7) {
+            World w;
+            ASSERT_TRUE(app.history.stateAt(f, w)) << f;
+            EXPECT_EQ(stateHash(w), original[f]) << methodName(method) << " frame " << f;
+        }
+        // Scrub back to frame 123 and step forward again: the same states as the first time.
+        ASSERT_TRUE(scrubTo(app, 123));
+        EXPECT_TRUE(isReplaying(app));
+        EXPECT_EQ(stateHash(app.world), original[123]);
+        for (int f = 124; f <= 300; ++f) {
+            stepSimulation(app);
+            ASSERT_EQ(stateHash(app.world), original[static_cast<std::size_t>(f)])
+                << methodName(method) << " replayed frame " << f;
+        }
+        EXPECT_FALSE(isReplaying(app));
+    }
+}
+
+TEST(Timeline, EditsBetweenStepsAreKeyframedSoReplayStaysExact) {
+    App app = busyScene();
+    std::vector<std::uint64_t> original{stateHash(app.world)};
+    for (int i = 1; i <= 100; ++i) {
+        stepSimulation(app);
+        // Edits while paused at frame i: the timeline keeps the edited state as frame i.
+        if (i == 40) app.world.settings.bounciness = 0.3;           // a slider
+        if (i == 55) app.world.blocks[0].velocity = Vec2{3.0, 7.0}; // a fling
+        if (i == 70) app.world.blocks[1].mass = 5.0;                // the mass slider
+        original.push_back(stateHash(app.world));
+    }
+    stepSimulation(app);
+    for (std::uint64_t f = 0; f <= 100; ++f) {
+        World w;
+        ASSERT_TRUE(app.history.stateAt(f, w));
+        EXPECT_EQ(stateHash(w), original[f]) << "frame " << f;
+    }
+}
+
+TEST(Timeline, HoldsSixtySecondsOfAThousandBlocksCompactly) {
+    World world;
+    world.settings.gravity = Vec2{0.0, 0.0};
+    world.settings.method = Method::MoveAndCorrect;
+    world.bounds = Bounds{{0.0, 0.0}, {100.0, 100.0}};
+    for (int i = 0; i < 1000; ++i) {
+        Block b;
+        b.position = Vec2{1.0 + (i % 40) * 2.4, 1.0 + (i / 40) * 3.5};
+        b.size = Vec2{0.5, 0.5};
+        b.velocity = Vec2{0.0, 0.0}; // at rest: cheap steps; the memory is what is measured
+        world.blocks.push_back(b);
+    }
+    WorldHistory history(3600, 12);
+    for (int i = 0; i < 3700; ++i) {
+        history.beforeStep(world);
+        world.step();
+        history.afterStep(world);
+    }
+    EXPECT_GE(history.lastFrame() - history.firstFrame(), 3600u);
+    EXPECT_LT(history.bytes(), 40u * 1024u * 1024u);
+}
+
+TEST(PlotLogic, NiceTicks) {
+    EXPECT_DOUBLE_EQ(niceTickStep(10.0, 5), 2.0);
+    EXPECT_DOUBLE_EQ(niceTickStep(1.0, 4), 0.5);
+    EXPECT_DOUBLE_EQ(niceTickStep(7.0, 7), 1.0);
+    const std::vector<double> t = niceTicks(-0.3, 4.1, 5);
+    ASSERT_EQ(t.size(), 5u);
+    EXPECT_DOUBLE_EQ(t.front(), 0.0);
+    EXPECT_DOUBLE_EQ(t.back(), 4.0);
+    EXPECT_TRUE(niceTicks(1.0, 1.0, 5).empty());
+    EXPECT_EQ(tickLabel(0.5, 0.5), "0.5");
+    EXPECT_EQ(tickLabel(2.0, 1.0), "2");
+    EXPECT_EQ(tickLabel(-1e-17, 0.2), "0.0");
+    const std::vector<double> d = decadeTicks(-2.3, 1.5, 8);
+    ASSERT_EQ(d.size(), 4u);
+    EXPECT_DOUBLE_EQ(d.front(), -2.0);
+    EXPECT_EQ(decadeLabel(-2.0), "0.01");
+    EXPECT_EQ(decadeLabel(6.0), "1e+06");
+}
+
+TEST(PlotLogic, ScrollingWindowAndRanges) {
+    EXPECT_DOUBLE_EQ(scrollingWindow(3.0, 10.0).lo, 0.0);
+    EXPECT_DOUBLE_EQ(scrollingWindow(3.0, 10.0).hi, 10.0);
+    EXPECT_DOUBLE_EQ(scrollingWindow(25.0, 10.0).lo, 15.0);
+    EXPECT_DOUBLE_EQ(scrollingWindow(25.0, 10.0).hi, 25.0);
+    const PlotRange flat = paddedRange(6.0, 6.0);
+    EXPECT_LT(flat.lo, 6.0);
+    EXPECT_GT(flat.hi, 6.0);
+    const PlotRange zero = paddedRange(0.0, 0.0);
+    EXPECT_DOUBLE_EQ(zero.lo, -1.0);
+}
+
+TEST(PlotLogic, TimeSeriesRingAndTruncate) {
+    TimeSeries s(2, 4);
+    for (int i = 0; i < 6; ++i) {
+        const double v[2] = {double(i), double(-i)};
+        s.push(i * 0.5, v);
+    }
+    ASSERT_EQ(s.size(), 4u);
+    EXPECT_DOUBLE_EQ(s.time(0), 1.0);
+    EXPECT_DOUBLE_EQ(s.value(3, 1), -5.0);
+    EXPECT_EQ(s.firstAtOrAfter(1.6), 2u);
+    s.truncateAfter(1.6);
+    EXPECT_EQ(s.size(), 2u);
+    EXPECT_DOUBLE_EQ(s.time(1), 1.5);
+}
+
+TEST(PointOfImpact, TimeOfImpactIsAOverB) {
+    // A block moving diagonally towards a wall on the right: the lecture's slide.
+    std::vector<Block> blocks(1);
+    blocks[0].position = Vec2{9.3, 5.0};
+    blocks[0].size = Vec2{1.0, 1.0};
+    blocks[0].velocity = Vec2{30.0, 30.0};
+    WorldSettings s;
+    s.gravity = Vec2{0.0, 0.0};
+    s.dt = 0.1;
+    Bounds bounds{{0.0, 0.0}, {10.0, 10.0}};
+    const PoiView p = computePoi(blocks, bounds, s, 0.0, 0);
+    ASSERT_TRUE(p.valid);
+    EXPECT_EQ(p.axis, 0);
+    EXPECT_EQ(p.other, kWallRight);
+    EXPECT_NEAR(p.a, 0.2, 1e-12); // face at 9.8, wall at 10
+    EXPECT_NEAR(p.b, 3.0, 1e-12);
+    EXPECT_NEAR(p.t, 0.2 / 3.0, 1e-12);
+    EXPECT_NEAR(p.ghost.x, 9.5, 1e-12);
+    EXPECT_NEAR(p.ghost.y, 5.0 + 0.2, 1e-12); // moved along the velocity, not straight back
+    EXPECT_NEAR(p.crooked.x, 9.5, 1e-12);
+    EXPECT_NEAR(p.crooked.y, 8.0, 1e-12); // moving back along x only keeps the whole y motion
+}
+
+TEST(PointOfImpact, LectureExampleRecordsThePoiOfTheCollision) {
+    App app = lectureExample();
+    for (int i = 0; i < 45; ++i) stepSimulation(app);
+    ASSERT_TRUE(app.poi.valid);
+    EXPECT_EQ(app.poi.block, 0);
+    EXPECT_EQ(app.poi.other, 1);
+    EXPECT_NEAR(app.poi.frameStart + app.poi.t * app.poi.dt, 0.625, 1e-9);
+    EXPECT_NEAR(app.poi.ghost.x, 7.75, 1e-9); // its right face at 8.25 meets m2's left face
+}
+
+TEST(SideBySide, ThreeMethodsFromOneStart) {
+    App app = busyScene();
+    app.show.sideBySide = true;
+    for (int i = 0; i < 60; ++i) stepSimulation(app);
+    ASSERT_TRUE(app.methods.running);
+    // The perfect run is the live run when the live method is perfect.
+    EXPECT_EQ(stateHash(app.methods.run(Method::Perfect).world), stateHash(app.world));
+    EXPECT_DOUBLE_EQ(app.methods.divergence(Method::Perfect), 0.0);
+    EXPECT_EQ(app.methods.run(Method::TurnBased).world.settings.method, Method::TurnBased);
+    app.show.sideBySide = false;
+    stepSimulation(app);
+    EXPECT_FALSE(app.methods.running);
+}
+
+} // namespace
