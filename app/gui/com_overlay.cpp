@@ -55,7 +55,7 @@ CentreOfMass centreOfMass(const World& world) {
 void drawMomentaDiagram(App& app) {
     OverlayPlacement place;
     place.anchorX = 0.0f;
-    place.anchorY = 1.0f;
+    place.anchorY = 0.5f; // left, between side by side (top) and the timeline (bottom)
     place.widthFraction = 0.3f;
     place.heightFraction = 0.42f;
     place.maxWidth = 300.0f;

@@ -24,7 +24,7 @@ void drawSideBySideWindow(App& app) {
     OverlayPlacement place;
     place.anchorX = 0.0f;
     place.anchorY = 0.0f;
-    place.widthFraction = 0.62f;
+    place.widthFraction = 0.55f; // leaves room for the plots at the top right
     place.heightFraction = 0.3f;
     place.maxWidth = 600.0f;
     place.maxHeight = 170.0f;
