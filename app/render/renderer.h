@@ -36,7 +36,7 @@ struct SceneView {
 constexpr double kVelocityArrowScale = 0.25;
 constexpr double kMomentumArrowScale = 0.15;
 // Trails draw at most about this many segments in all (older points are thinned out).
-constexpr int kTrailSegmentBudget = 12000;
+constexpr int kTrailSegmentBudget = 4000;
 
 class SceneRenderer {
   public:
