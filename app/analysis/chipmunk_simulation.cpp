@@ -9,13 +9,36 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace {
+
+// Debian's Chipmunk is built with its debug messages on: the first cpSpaceNew prints a banner to
+// standard output, which would land in the middle of sandbox-cli's output. Create the first space
+// with standard output pointed at /dev/null.
+cpSpace* newSpaceQuietly() {
+    static bool bannerShown = false;
+    if (bannerShown) return cpSpaceNew();
+    bannerShown = true;
+    std::fflush(stdout);
+    const int saved = dup(STDOUT_FILENO);
+    const int devNull = open("/dev/null", O_WRONLY);
+    if (saved >= 0 && devNull >= 0) dup2(devNull, STDOUT_FILENO);
+    cpSpace* space = cpSpaceNew();
+    std::fflush(stdout);
+    if (saved >= 0) dup2(saved, STDOUT_FILENO);
+    if (saved >= 0) close(saved);
+    if (devNull >= 0) close(devNull);
+    return space;
+}
 
 class ChipmunkSimulation : public Simulation {
   public:
     ChipmunkSimulation(const Scene& scene, double dt, int substeps)
-        : space_(cpSpaceNew()), bounds_(scene.bounds), dt_(dt), substeps_(substeps) {
+        : space_(newSpaceQuietly()), bounds_(scene.bounds), dt_(dt), substeps_(substeps) {
         cpSpaceSetGravity(space_, cpv(scene.settings.gravity.x, scene.settings.gravity.y));
         const double elasticity = std::sqrt(scene.settings.bounciness);
         const Vec2 lo = bounds_.min, hi = bounds_.max;

@@ -51,7 +51,8 @@ void measure(const App& app, CostState& s) {
 ImU32 engineColor(const std::string& engine) {
     Method m;
     if (parseMethod(engine.c_str(), m)) return methodGhostColor(m).packed();
-    return IM_COL32(200, 200, 210, 255);
+    if (engine == "chipmunk") return IM_COL32(120, 200, 230, 255);
+    return IM_COL32(200, 200, 210, 255); // box2d
 }
 
 void pollJob(CostState& s) {
@@ -105,10 +106,11 @@ void tradeoffChart(CostState& s) {
     }
     std::vector<PlotSeries> series;
     for (auto& kv : byEngine) series.push_back(std::move(kv.second));
+    // The error's unit on its own line, so the legend of five engines fits beside the title.
+    dimText(("error: " + unit).c_str());
     PlotOptions o;
     o.title = "error vs cost";
     o.xUnit = "ms/sim s";
-    o.yUnit = unit.c_str();
     o.autoX = true;
     o.logX = o.logY = true;
     drawPlot("##tradeoff", o, series);
@@ -120,9 +122,9 @@ void drawCostWindow(App& app) {
     OverlayPlacement place;
     place.anchorX = 0.5f;
     place.anchorY = 0.5f;
-    place.widthFraction = 0.6f;
+    place.widthFraction = 0.72f;
     place.heightFraction = 0.75f;
-    place.maxWidth = 520.0f;
+    place.maxWidth = 660.0f;
     place.maxHeight = 520.0f;
     if (!beginOverlayWindow(app, "Speed versus accuracy", &app.show.cost, place)) {
         ImGui::End();
