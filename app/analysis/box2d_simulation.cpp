@@ -2,48 +2,42 @@
 // with 8 velocity and 3 position iterations; walls as four static boxes outside the bounds.
 #include "peers.h"
 
-#include "collision.h"
-
 #include <box2d/box2d.h>
-
-#include <chrono>
 
 namespace {
 
-class Box2dSimulation : public Simulation {
+b2Vec2 toB2(Vec2 v) {
+    return {static_cast<float>(v.x), static_cast<float>(v.y)};
+}
+
+class Box2dSimulation : public PeerSimulation {
   public:
     Box2dSimulation(const Scene& scene, double dt, int substeps)
-        : world_(b2Vec2(static_cast<float>(scene.settings.gravity.x),
-                        static_cast<float>(scene.settings.gravity.y))),
-          bounds_(scene.bounds), dt_(dt), substeps_(substeps) {
+        : PeerSimulation(scene, dt, substeps), world_(toB2(scene.settings.gravity)) {
         addWalls();
         for (const BlockDef& def : scene.blocks) addBlock(def, scene.settings.bounciness);
         refresh();
     }
 
-    double step() override {
-        const auto start = std::chrono::steady_clock::now();
-        const float h = static_cast<float>(dt_ / substeps_);
-        for (int k = 0; k < substeps_; ++k) world_.Step(h, 8, 3);
-        const auto end = std::chrono::steady_clock::now();
-        time_ += dt_;
-        refresh();
-        return std::chrono::duration<double, std::milli>(end - start).count();
-    }
-    const std::vector<Block>& blocks() override { return blocks_; }
-    double penetration() override { return bruteForcePenetration(blocks_, bounds_); }
-    double time() const override { return time_; }
-
   private:
+    void advance(double h) override { world_.Step(static_cast<float>(h), 8, 3); }
+    Vec2 position(std::size_t i) const override {
+        const b2Vec2 p = bodies_[i]->GetPosition();
+        return {p.x, p.y};
+    }
+    Vec2 velocity(std::size_t i) const override {
+        const b2Vec2 v = bodies_[i]->GetLinearVelocity();
+        return {v.x, v.y};
+    }
+
     void addWalls() {
         b2BodyDef def;
         b2Body* walls = world_.CreateBody(&def);
         const Vec2 c = (bounds_.min + bounds_.max) * 0.5, half = (bounds_.max - bounds_.min) * 0.5;
-        const float t = 1.0f;
+        const double t = 1.0; // m, wall thickness (outside the bounds)
         auto box = [&](double hx, double hy, double cx, double cy) {
             b2PolygonShape shape;
-            shape.SetAsBox(static_cast<float>(hx), static_cast<float>(hy),
-                           b2Vec2(static_cast<float>(cx), static_cast<float>(cy)), 0.0f);
+            shape.SetAsBox(static_cast<float>(hx), static_cast<float>(hy), toB2({cx, cy}), 0.0f);
             walls->CreateFixture(&shape, 0.0f);
         };
         box(t, half.y + t, bounds_.min.x - t, c.y);
@@ -57,11 +51,8 @@ class Box2dSimulation : public Simulation {
                        : def.kind == BodyKind::Kinematic ? b2_kinematicBody
                                                          : b2_staticBody;
         bodyDef.fixedRotation = true;
-        bodyDef.position.Set(static_cast<float>(def.position.x),
-                             static_cast<float>(def.position.y));
-        if (def.kind != BodyKind::Static)
-            bodyDef.linearVelocity.Set(static_cast<float>(def.velocity.x),
-                                       static_cast<float>(def.velocity.y));
+        bodyDef.position = toB2(def.position);
+        if (def.kind != BodyKind::Static) bodyDef.linearVelocity = toB2(def.velocity);
         b2Body* body = world_.CreateBody(&bodyDef);
         b2PolygonShape shape;
         shape.SetAsBox(static_cast<float>(def.size.x / 2), static_cast<float>(def.size.y / 2));
@@ -72,27 +63,10 @@ class Box2dSimulation : public Simulation {
         fixture.restitution = static_cast<float>(bounciness);
         body->CreateFixture(&fixture);
         bodies_.push_back(body);
-        Block b;
-        b.size = def.size;
-        b.kind = def.kind;
-        b.mass = def.kind == BodyKind::Dynamic ? def.mass : kInfiniteMass;
-        blocks_.push_back(b);
-    }
-    void refresh() {
-        for (size_t i = 0; i < bodies_.size(); ++i) {
-            const b2Vec2 p = bodies_[i]->GetPosition(), v = bodies_[i]->GetLinearVelocity();
-            blocks_[i].position = {p.x, p.y};
-            blocks_[i].velocity = {v.x, v.y};
-        }
     }
 
     b2World world_;
-    Bounds bounds_;
-    double dt_;
-    int substeps_;
-    double time_ = 0.0;
     std::vector<b2Body*> bodies_;
-    std::vector<Block> blocks_;
 };
 
 } // namespace

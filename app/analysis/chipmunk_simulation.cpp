@@ -3,11 +3,8 @@
 // the scene's dt with Chipmunk's default 10 iterations; walls as four static segments.
 #include "peers.h"
 
-#include "collision.h"
-
 #include <chipmunk/chipmunk.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -35,19 +32,18 @@ cpSpace* newSpaceQuietly() {
     return space;
 }
 
-class ChipmunkSimulation : public Simulation {
+class ChipmunkSimulation : public PeerSimulation {
   public:
     ChipmunkSimulation(const Scene& scene, double dt, int substeps)
-        : space_(newSpaceQuietly()), bounds_(scene.bounds), dt_(dt), substeps_(substeps) {
+        : PeerSimulation(scene, dt, substeps), space_(newSpaceQuietly()) {
         cpSpaceSetGravity(space_, cpv(scene.settings.gravity.x, scene.settings.gravity.y));
         const double elasticity = std::sqrt(scene.settings.bounciness);
         const Vec2 lo = bounds_.min, hi = bounds_.max;
         const Vec2 corners[] = {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
         for (int k = 0; k < 4; ++k) {
             const Vec2 a = corners[k], b = corners[(k + 1) % 4];
-            addShape(
-                cpSegmentShapeNew(cpSpaceGetStaticBody(space_), cpv(a.x, a.y), cpv(b.x, b.y), 0.0),
-                elasticity);
+            cpBody* ground = cpSpaceGetStaticBody(space_);
+            addShape(cpSegmentShapeNew(ground, cpv(a.x, a.y), cpv(b.x, b.y), 0.0), elasticity);
         }
         for (const BlockDef& def : scene.blocks) {
             cpBody* body = def.kind == BodyKind::Dynamic     ? cpBodyNew(def.mass, INFINITY)
@@ -59,11 +55,6 @@ class ChipmunkSimulation : public Simulation {
                 cpBodySetVelocity(body, cpv(def.velocity.x, def.velocity.y));
             addShape(cpBoxShapeNew(body, def.size.x, def.size.y, 0.0), elasticity);
             bodies_.push_back(body);
-            Block b;
-            b.size = def.size;
-            b.kind = def.kind;
-            b.mass = def.kind == BodyKind::Dynamic ? def.mass : kInfiniteMass;
-            blocks_.push_back(b);
         }
         refresh();
     }
@@ -81,41 +72,26 @@ class ChipmunkSimulation : public Simulation {
     ChipmunkSimulation(const ChipmunkSimulation&) = delete;
     ChipmunkSimulation& operator=(const ChipmunkSimulation&) = delete;
 
-    double step() override {
-        const auto start = std::chrono::steady_clock::now();
-        for (int k = 0; k < substeps_; ++k) cpSpaceStep(space_, dt_ / substeps_);
-        const auto end = std::chrono::steady_clock::now();
-        time_ += dt_;
-        refresh();
-        return std::chrono::duration<double, std::milli>(end - start).count();
-    }
-    const std::vector<Block>& blocks() override { return blocks_; }
-    double penetration() override { return bruteForcePenetration(blocks_, bounds_); }
-    double time() const override { return time_; }
-
   private:
+    void advance(double h) override { cpSpaceStep(space_, h); }
+    Vec2 position(std::size_t i) const override {
+        const cpVect p = cpBodyGetPosition(bodies_[i]);
+        return {p.x, p.y};
+    }
+    Vec2 velocity(std::size_t i) const override {
+        const cpVect v = cpBodyGetVelocity(bodies_[i]);
+        return {v.x, v.y};
+    }
     void addShape(cpShape* shape, double elasticity) {
         cpShapeSetElasticity(shape, elasticity);
         cpShapeSetFriction(shape, 0.0);
         cpSpaceAddShape(space_, shape);
         shapes_.push_back(shape);
     }
-    void refresh() {
-        for (size_t i = 0; i < bodies_.size(); ++i) {
-            const cpVect p = cpBodyGetPosition(bodies_[i]), v = cpBodyGetVelocity(bodies_[i]);
-            blocks_[i].position = {p.x, p.y};
-            blocks_[i].velocity = {v.x, v.y};
-        }
-    }
 
     cpSpace* space_;
-    Bounds bounds_;
-    double dt_;
-    int substeps_;
-    double time_ = 0.0;
     std::vector<cpShape*> shapes_;
     std::vector<cpBody*> bodies_;
-    std::vector<Block> blocks_;
 };
 
 } // namespace

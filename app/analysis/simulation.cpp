@@ -4,6 +4,7 @@
 #include "peers.h"
 
 #include <algorithm>
+#include <chrono>
 
 namespace {
 
@@ -60,14 +61,43 @@ std::unique_ptr<Simulation> makePeerSimulation(const std::string& peer, const Sc
     return nullptr;
 }
 
-double bruteForcePenetration(const std::vector<Block>& blocks, const Bounds& bounds) {
+PeerSimulation::PeerSimulation(const Scene& scene, double dt, int substeps)
+    : bounds_(scene.bounds), dt_(dt), substeps_(substeps) {
+    for (const BlockDef& def : scene.blocks) {
+        Block b;
+        b.size = def.size;
+        b.kind = def.kind;
+        b.mass = def.kind == BodyKind::Dynamic ? def.mass : kInfiniteMass;
+        blocks_.push_back(b);
+    }
+}
+
+double PeerSimulation::step() {
+    const auto start = std::chrono::steady_clock::now();
+    for (int k = 0; k < substeps_; ++k) advance(dt_ / substeps_);
+    const auto end = std::chrono::steady_clock::now();
+    time_ += dt_;
+    refresh();
+    return std::chrono::duration<double, std::milli>(end - start).count();
+}
+
+void PeerSimulation::refresh() {
+    for (std::size_t i = 0; i < blocks_.size(); ++i) {
+        blocks_[i].position = position(i);
+        blocks_[i].velocity = velocity(i);
+    }
+}
+
+// Largest overlap (m) among the blocks and with the walls, pair by pair (peers are measured on
+// small scenes only).
+double PeerSimulation::penetration() {
     double deepest = 0.0;
-    for (size_t i = 0; i < blocks.size(); ++i) {
-        const Aabb a = aabbOf(blocks[i]);
-        deepest = std::max(deepest, outsideDepth(a, bounds));
-        for (size_t j = i + 1; j < blocks.size(); ++j)
-            if (blocks[i].isDynamic() || blocks[j].isDynamic())
-                deepest = std::max(deepest, penetration(a, aabbOf(blocks[j])));
+    for (std::size_t i = 0; i < blocks_.size(); ++i) {
+        const Aabb a = aabbOf(blocks_[i]);
+        deepest = std::max(deepest, outsideDepth(a, bounds_));
+        for (std::size_t j = i + 1; j < blocks_.size(); ++j)
+            if (blocks_[i].isDynamic() || blocks_[j].isDynamic())
+                deepest = std::max(deepest, ::penetration(a, aabbOf(blocks_[j])));
     }
     return deepest;
 }

@@ -11,6 +11,7 @@
 // speeds up to 1e5, C of 0, 0.5 and 1, substeps 1..8, static and kinematic blocks mixed in, and a
 // jammed box of 10,000 blocks packed edge to edge.
 #include "collision.h"
+#include "test_worlds.h"
 #include "world.h"
 
 #include <gtest/gtest.h>
@@ -29,19 +30,7 @@ namespace {
 
 constexpr double kTolerance = 1e-9; // m: rounding allowed at walls and between blocks
 
-std::string methodTestName(Method method) {
-    switch (method) {
-    case Method::Perfect:
-        return "Perfect";
-    case Method::MoveAndCorrect:
-        return "MoveAndCorrect";
-    case Method::TurnBased:
-        return "TurnBased";
-    case Method::Count:
-        break;
-    }
-    return "Unknown";
-}
+using test_worlds::methodTestName;
 
 bool exactMethod(Method method) {
     return method == Method::Perfect || method == Method::TurnBased;
