@@ -65,6 +65,8 @@ float freeSpot(const std::vector<ImVec4>& placed, float x, float above, float be
     return above;
 }
 
+constexpr int kCrowdedScene = 20; // blocks
+
 void drawLabels(const App& app, ImDrawList* dl) {
     const int n = static_cast<int>(app.world.blocks.size());
     if (n > kMaxLabelledBlocks) return;
@@ -83,7 +85,7 @@ void drawLabels(const App& app, ImDrawList* dl) {
         const Block& b = app.world.blocks[static_cast<std::size_t>(i)];
         const bool named = i < static_cast<int>(app.labels.size()) &&
                            !app.labels[static_cast<std::size_t>(i)].name.empty();
-        if (!named && n > 20) continue;
+        if (!named && n > kCrowdedScene) continue;
         const std::string name = blockDisplayName(app, i);
         char second[48] = "";
         if (b.isDynamic()) {
@@ -108,7 +110,9 @@ void drawLabels(const App& app, ImDrawList* dl) {
                            ImVec2(static_cast<float>(c.x) - secondSize.x * 0.5f, top + lineHeight),
                            IM_COL32(255, 255, 255, 190), second);
             }
-        } else {
+        } else if (n <= kCrowdedScene || i == app.selected) {
+            // Beside the block; in a crowded scene only for the selected one (a hundred names
+            // pushed around each other are noise).
             const float x = static_cast<float>(c.x) - nameSize.x * 0.5f;
             const float above = static_cast<float>(c.y - hPx * 0.5) - lineHeight - 2.0f;
             const float below = static_cast<float>(c.y + hPx * 0.5) + 2.0f;
