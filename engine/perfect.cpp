@@ -12,7 +12,8 @@
 // inelastic, by the rest rule, which merges the chain (compare the "TC model" of Luding and
 // McNamara, 1998). A Newton's cradle, or a block knocked against one resting on a wall, where
 // each pair meets once or twice, stays exact. Past half the event cap, the second meeting of a
-// pair at one instant already merges, so even a jammed box of thousands of blocks settles.
+// pair at one instant already merges, so jams settle sooner (a lattice of hundreds of touching
+// blocks can still end its frames at the cap: see Jams.JammedBoxOf400BlocksAdvances).
 //
 // Crushing: a block bouncing between two infinite masses that approach each other (a platform
 // pushing it into a wall) collides ever faster, without end, before they meet. After
