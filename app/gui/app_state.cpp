@@ -204,15 +204,7 @@ void deleteSelected(App& app) {
 void applyShowSet(App& app, const ShowSet& show) {
     app.overlaysChosen = true;
     app.uiVisible = !show.none;
-    app.show.trails = show.trails;
-    app.show.vectors = show.vectors;
-    app.show.plots = show.plots;
-    app.show.inspector = show.inspector;
-    app.show.com = show.com;
-    app.show.poi = show.poi;
-    app.show.sideBySide = show.sideBySide;
-    app.show.timeline = show.timeline;
-    app.show.cost = show.cost;
+    app.show = show.overlays;
 }
 
 void setUiScale(App& app, float scale) {

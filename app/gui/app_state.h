@@ -29,21 +29,6 @@ struct BlockLabel {
     std::string color; // "#rrggbb" or "" for the palette
 };
 
-// The overlays that can be shown (the View section's checkboxes and --show): trails, velocity and
-// momentum arrows, the plots, the collision inspector, the centre of mass with the momenta
-// diagram, the point of impact, the methods side by side, the timeline and the cost panel.
-struct Overlays {
-    bool trails = false;
-    bool vectors = true;
-    bool plots = false;
-    bool inspector = false;
-    bool com = false;
-    bool poi = false;
-    bool sideBySide = false;
-    bool timeline = false;
-    bool cost = false;
-};
-
 // Velocity arrows are on by default for scenes with at most this many blocks (more is clutter).
 constexpr std::size_t kVectorsByDefaultUpTo = 50;
 

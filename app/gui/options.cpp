@@ -7,6 +7,18 @@
 #include <sstream>
 
 bool parseShowList(const std::string& text, ShowSet& out, std::string* error) {
+    static const struct {
+        const char* name;
+        bool Overlays::*flag;
+    } kNames[] = {{"plots", &Overlays::plots},
+                  {"vectors", &Overlays::vectors},
+                  {"trails", &Overlays::trails},
+                  {"inspector", &Overlays::inspector},
+                  {"com", &Overlays::com},
+                  {"poi", &Overlays::poi},
+                  {"sidebyside", &Overlays::sideBySide},
+                  {"timeline", &Overlays::timeline},
+                  {"cost", &Overlays::cost}};
     ShowSet show;
     std::istringstream in(text);
     std::string name;
@@ -14,27 +26,18 @@ bool parseShowList(const std::string& text, ShowSet& out, std::string* error) {
     while (std::getline(in, name, ',')) {
         if (name.empty()) continue;
         any = true;
-        if (name == "none")
+        if (name == "none") {
             show.none = true;
-        else if (name == "plots")
-            show.plots = true;
-        else if (name == "vectors")
-            show.vectors = true;
-        else if (name == "trails")
-            show.trails = true;
-        else if (name == "inspector")
-            show.inspector = true;
-        else if (name == "com")
-            show.com = true;
-        else if (name == "poi")
-            show.poi = true;
-        else if (name == "sidebyside")
-            show.sideBySide = true;
-        else if (name == "timeline")
-            show.timeline = true;
-        else if (name == "cost")
-            show.cost = true;
-        else {
+            continue;
+        }
+        bool known = false;
+        for (const auto& n : kNames) {
+            if (name == n.name) {
+                show.overlays.*n.flag = true;
+                known = true;
+            }
+        }
+        if (!known) {
             if (error) {
                 *error = "unknown --show name '" + name +
                          "' (expected none, plots, vectors, trails, inspector, com, poi, "

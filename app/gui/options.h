@@ -6,17 +6,30 @@
 #include <string>
 
 // What --show turns on. "none" hides the panels and every overlay.
-struct ShowSet {
-    bool none = false;
-    bool plots = false;
-    bool vectors = false;
+// The overlays that can be shown (the View section's checkboxes and --show): trails, velocity and
+// momentum arrows, the plots, the collision inspector, the centre of mass with the momenta
+// diagram, the point of impact, the methods side by side, the timeline and the cost panel.
+struct Overlays {
     bool trails = false;
+    bool vectors = true;
+    bool plots = false;
     bool inspector = false;
     bool com = false;
     bool poi = false;
     bool sideBySide = false;
-    bool timeline = false; // beyond the public list: the timeline window
-    bool cost = false;     // beyond the public list: the cost-per-step and tradeoff panel
+    bool timeline = false;
+    bool cost = false;
+};
+
+// A --show LIST: which overlays, and "none" (no panels at all).
+struct ShowSet {
+    bool none = false;
+    Overlays overlays = noOverlays();
+    static Overlays noOverlays() {
+        Overlays o;
+        o.vectors = false;
+        return o;
+    }
 };
 
 struct Options {
