@@ -11,13 +11,7 @@
 using namespace test_worlds;
 
 TEST(PerfectAcceptance, HundredThousandCollisionsConserveMomentumAndEnergy) {
-    World world = makeWorld(Method::Perfect, {0.0, 0.0}, 1.0, Bounds{{0.0, 0.0}, {20.0, 20.0}});
-    GasOptions gas;
-    gas.min = {0.0, 0.0};
-    gas.max = {20.0, 20.0};
-    gas.count = 400;
-    gas.seed = 2026;
-    addGas(world, gas);
+    World world = gasInBox(Method::Perfect, {0.0, 0.0}, 1.0, 2026, 400);
 
     const double startEnergy = kineticEnergy(world);
     const double scale = momentumScale(world); // Σ m·|v|: momentum errors are relative to it

@@ -16,6 +16,7 @@
 
 namespace {
 
+using test_worlds::gasInBox;
 using test_worlds::addGas;
 using test_worlds::GasOptions;
 using test_worlds::makeWorld;
@@ -37,13 +38,7 @@ INSTANTIATE_TEST_SUITE_P(Seeds, PerfectGas, ::testing::Values(1u, 2u, 3u));
 TEST_P(PerfectGas, EnergyConservedAndNoOverlapWithWalls) {
     // 300 blocks in a closed 20 m x 20 m box, no gravity, C = 1; the walls bounce elastically
     // (v' = −v), so kinetic energy is conserved exactly up to rounding.
-    World world = makeWorld(Method::Perfect, {0.0, 0.0}, 1.0, Bounds{{0.0, 0.0}, {20.0, 20.0}});
-    GasOptions gas;
-    gas.min = {0.0, 0.0};
-    gas.max = {20.0, 20.0};
-    gas.count = 300;
-    gas.seed = GetParam();
-    addGas(world, gas);
+    World world = gasInBox(Method::Perfect, {0.0, 0.0}, 1.0, GetParam(), 300);
     ASSERT_EQ(maxOverlap(world), 0.0);
     const double e0 = kineticEnergy(world);
 
@@ -97,13 +92,7 @@ class TurnBasedGas : public ::testing::TestWithParam<std::uint64_t> {};
 INSTANTIATE_TEST_SUITE_P(Seeds, TurnBasedGas, ::testing::Values(1u, 2u, 3u));
 
 TEST_P(TurnBasedGas, NoOverlapWithoutGravity) {
-    World world = makeWorld(Method::TurnBased, {0.0, 0.0}, 1.0, Bounds{{0.0, 0.0}, {20.0, 20.0}});
-    GasOptions gas;
-    gas.min = {0.0, 0.0};
-    gas.max = {20.0, 20.0};
-    gas.count = 300;
-    gas.seed = GetParam();
-    addGas(world, gas);
+    World world = gasInBox(Method::TurnBased, {0.0, 0.0}, 1.0, GetParam(), 300);
     std::int64_t collisions = 0;
     for (int f = 0; f < 300; ++f) {
         const StepStats s = world.step();
@@ -114,13 +103,7 @@ TEST_P(TurnBasedGas, NoOverlapWithoutGravity) {
 }
 
 TEST_P(TurnBasedGas, NoOverlapWithGravityAndBounciness) {
-    World world = makeWorld(Method::TurnBased, {0.0, -9.81}, 0.7, Bounds{{0.0, 0.0}, {20.0, 20.0}});
-    GasOptions gas;
-    gas.min = {0.0, 0.0};
-    gas.max = {20.0, 20.0};
-    gas.count = 300;
-    gas.seed = 50 + GetParam();
-    addGas(world, gas);
+    World world = gasInBox(Method::TurnBased, {0.0, -9.81}, 0.7, 50 + GetParam(), 300);
     for (int f = 0; f < 300; ++f) {
         const StepStats s = world.step();
         ASSERT_LE(s.maxPenetration, kOverlapTolerance) << "frame " << f;

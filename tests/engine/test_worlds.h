@@ -71,6 +71,19 @@ inline void addGas(World& world, const GasOptions& o) {
     }
 }
 
+// A gas of `count` blocks (addGas's defaults) filling a closed 20 m x 20 m box.
+inline World gasInBox(Method method, Vec2 gravity, double bounciness, std::uint64_t seed,
+                      int count) {
+    World world = makeWorld(method, gravity, bounciness, Bounds{{0.0, 0.0}, {20.0, 20.0}});
+    GasOptions gas;
+    gas.min = {0.0, 0.0};
+    gas.max = {20.0, 20.0};
+    gas.count = count;
+    gas.seed = seed;
+    addGas(world, gas);
+    return world;
+}
+
 // Σ m·|v| over the dynamic blocks (kg·m/s): the scale against which momentum errors are relative
 // (the total momentum itself may be near zero).
 inline double momentumScale(const World& world) {
