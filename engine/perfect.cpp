@@ -129,7 +129,12 @@ void PerfectSolver::predict(int i, double now) {
 bool PerfectSolver::repeatsAtInstant(const Event& e, int processed) {
     if (e.time != instant_) {
         instant_ = e.time;
-        metAtInstant_.clear();
+        // clear() costs one step per bucket: after a storm at one instant, start a small table
+        // again, or every later event would pay for the storm's buckets.
+        if (metAtInstant_.bucket_count() > 64)
+            metAtInstant_ = {};
+        else
+            metAtInstant_.clear();
     }
     const auto lo = static_cast<std::uint32_t>(e.b < 0 ? e.a : std::min(e.a, e.b));
     const auto hi = static_cast<std::uint32_t>(e.b < 0 ? e.b : std::max(e.a, e.b));
