@@ -12,6 +12,8 @@
 namespace {
 
 constexpr std::size_t kDiagramArrowsWithHeads = 40;
+// Segments of the chain drawn at most (a software rasteriser pays for each).
+constexpr std::size_t kDiagramSegments = 200;
 
 ImVec2 toScreen(const App& app, Vec2 p) {
     const Vec2 s = app.camera.worldToScreen(p);
@@ -101,12 +103,18 @@ void drawMomentaDiagram(App& app) {
     const float width = std::max(2.0f, ImGui::GetFontSize() * 0.14f);
     const float head = ImGui::GetFontSize() * 0.7f;
     const bool heads = owner.size() <= kDiagramArrowsWithHeads;
-    for (std::size_t k = 0; k < owner.size(); ++k) {
+    // With many blocks one drawn segment sums `group` consecutive momenta: its ends are partial
+    // sums, so the chain still ends at the total, in at most kDiagramSegments lines.
+    const std::size_t group =
+        heads ? 1
+              : std::max<std::size_t>(1, (owner.size() + kDiagramSegments - 1) / kDiagramSegments);
+    for (std::size_t k = 0; k < owner.size(); k += group) {
+        const std::size_t next = std::min(k + group, owner.size());
         const ImU32 c = blockDisplayColor(app, owner[k]).withAlpha(0.95f).packed();
         if (heads)
-            arrow(dl, map(tips[k]), map(tips[k + 1]), c, width, head);
+            arrow(dl, map(tips[k]), map(tips[next]), c, width, head);
         else
-            dl->AddLine(map(tips[k]), map(tips[k + 1]), c, 1.0f);
+            dl->AddLine(map(tips[k]), map(tips[next]), c, 1.0f);
     }
     // The total beside the chain (shifted a little), so collinear momenta stay readable.
     const float shift = ImGui::GetFontSize() * 0.6f;

@@ -1,8 +1,10 @@
 #include "offscreen_osmesa.h"
 
 #include "gl_api.h"
+#include "ui_style.h"
 
 #include <GL/osmesa.h>
+
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 
@@ -61,6 +63,7 @@ void offscreenNewFrame(OffscreenOsmesa& o, double deltaSeconds) {
     io.DeltaTime = static_cast<float>(deltaSeconds > 0.0 ? deltaSeconds : 1.0 / 60.0);
     io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
     ImGui_ImplOpenGL3_NewFrame();
+    uiSharpFontTexture();
 }
 
 void offscreenFinish(OffscreenOsmesa&) {

@@ -129,3 +129,23 @@ std::size_t TimeSeries::firstAtOrAfter(double t) const {
     }
     return lo;
 }
+
+std::vector<std::size_t> columnExtremes(const std::vector<float>& xs, const std::vector<float>& ys,
+                                        float columnPx) {
+    std::vector<std::size_t> kept;
+    const std::size_t n = std::min(xs.size(), ys.size());
+    std::size_t i = 0;
+    while (i < n) {
+        const float column = std::floor(xs[i] / columnPx);
+        std::size_t high = i, low = i, j = i;
+        for (; j < n && std::floor(xs[j] / columnPx) == column; ++j) {
+            if (ys[j] > ys[high]) high = j;
+            if (ys[j] < ys[low]) low = j;
+        }
+        kept.push_back(std::min(high, low));
+        if (high != low) kept.push_back(std::max(high, low));
+        if (j == n && kept.back() != n - 1) kept.push_back(n - 1);
+        i = j;
+    }
+    return kept;
+}

@@ -29,6 +29,13 @@ PlotRange scrollingWindow(double now, double span);
 // (or +-10% of its value), so a constant series still shows as a line in the middle.
 PlotRange paddedRange(double lo, double hi, double margin = 0.08);
 
+// The points a long line keeps (indices into xs/ys, increasing): per run of consecutive points in
+// the same column of `columnPx` (by x), the highest and the lowest, in the order they come, and the
+// series' last point. The line looks the same (every spike stays) with at most about two points
+// per column; a software rasteriser pays for each segment, however short.
+std::vector<std::size_t> columnExtremes(const std::vector<float>& xs, const std::vector<float>& ys,
+                                        float columnPx);
+
 // Samples (t, v[0..k)) in a ring buffer of `capacity`; the oldest are dropped.
 class TimeSeries {
   public:

@@ -12,6 +12,7 @@ constexpr ImU32 kZero = IM_COL32(255, 255, 255, 70);
 constexpr ImU32 kAxisText = IM_COL32(190, 198, 215, 255);
 constexpr ImU32 kMarker = IM_COL32(255, 196, 80, 80);
 constexpr std::size_t kMaxMarkers = 150;
+constexpr float kColumnPx = 2.0f; // series thinned to their extremes per column this wide
 
 double axisValue(double v, bool log) {
     if (!log) return v;
@@ -136,21 +137,30 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
         ++drawn;
     }
     // Series.
-    std::vector<ImVec2> pts;
-    const float thickness = std::max(1.5f, font * 0.12f);
+    std::vector<ImVec2> mapped, pts;
+    std::vector<float> xs, ys;
+    // A whole number of pixels: ImGui then draws each segment as two triangles textured from the
+    // atlas's baked anti-aliased lines, instead of six with a geometric fringe.
+    const float thickness = std::max(1.0f, std::round(font * 0.12f));
     for (const PlotSeries& s : series) {
-        pts.clear();
+        mapped.clear();
         const std::size_t n = std::min(s.x.size(), s.y.size());
         for (std::size_t i = 0; i < n; ++i) {
             const double x = axisValue(s.x[i], o.logX), y = axisValue(s.y[i], o.logY);
             if (!std::isfinite(x) || !std::isfinite(y)) continue;
-            const ImVec2 p(m.sx(x), m.sy(y));
-            // Thin out points closer than a pixel (long series).
-            if (!pts.empty() && !s.points && std::abs(p.x - pts.back().x) < 0.75f &&
-                std::abs(p.y - pts.back().y) < 0.75f) {
-                continue;
+            mapped.emplace_back(m.sx(x), m.sy(y));
+        }
+        if (s.points) {
+            pts = mapped;
+        } else {
+            xs.clear();
+            ys.clear();
+            for (const ImVec2& p : mapped) {
+                xs.push_back(p.x);
+                ys.push_back(p.y);
             }
-            pts.push_back(p);
+            pts.clear();
+            for (std::size_t k : columnExtremes(xs, ys, kColumnPx)) pts.push_back(mapped[k]);
         }
         if (pts.size() >= 2) {
             dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), s.color, 0, thickness);

@@ -1,8 +1,11 @@
 #include "ui_style.h"
 
+#include "gl_api.h"
+
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 
+#include <cstdint>
 #include <cstdio>
 
 namespace {
@@ -31,6 +34,9 @@ void setTheme(ImGuiStyle& style) {
     style.FramePadding = ImVec2(8.0f, 4.0f);
     style.ItemSpacing = ImVec2(8.0f, 6.0f);
     style.GrabMinSize = 12.0f;
+    // No anti-aliased fringe around filled shapes: it doubled the triangles of the panel, and
+    // every thin triangle costs a software rasteriser; rounded corners stay smooth enough.
+    style.AntiAliasedFill = false;
     ImVec4* c = style.Colors;
     c[ImGuiCol_WindowBg] = ImVec4(0.105f, 0.113f, 0.140f, 0.97f);
     c[ImGuiCol_PopupBg] = ImVec4(0.12f, 0.13f, 0.16f, 0.98f);
@@ -77,8 +83,12 @@ void uiApplyScale(float scale, bool rendererReady) {
     ImGuiIO& io = ImGui::GetIO();
     io.Fonts->Clear();
     if (fileExists(kFontPath)) {
+        // Glyphs baked at their screen size and snapped to whole pixels: the atlas maps 1:1 onto
+        // the screen, so it can be sampled with the nearest texel (see uiSharpFontTexture).
         ImFontConfig config;
-        config.OversampleH = 2;
+        config.OversampleH = 1;
+        config.OversampleV = 1;
+        config.PixelSnapH = true;
         io.Fonts->AddFontFromFileTTF(kFontPath, kBaseFontPx * scale, &config);
     } else {
         ImFontConfig config;
@@ -94,4 +104,14 @@ void uiApplyScale(float scale, bool rendererReady) {
         ImGui_ImplOpenGL3_DestroyFontsTexture();
         ImGui_ImplOpenGL3_CreateFontsTexture();
     }
+}
+
+void uiSharpFontTexture() {
+    const auto texture =
+        static_cast<GLuint>(reinterpret_cast<std::intptr_t>(ImGui::GetIO().Fonts->TexID));
+    if (texture == 0) return;
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
 }

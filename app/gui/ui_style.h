@@ -10,3 +10,8 @@ void uiDestroyContext();
 void uiApplyScale(float scale, bool rendererReady);
 // The scale uiApplyScale last applied.
 float uiCurrentScale();
+// Sets nearest-texel sampling on the backend's font texture (call after the backend's NewFrame,
+// which creates it). The atlas maps 1:1 onto the screen, so text looks the same as with linear
+// filtering, and llvmpipe shades every ImGui pixel about a third faster (measured: a blended,
+// textured full-screen quad 4.1 -> 2.6 ns per pixel).
+void uiSharpFontTexture();

@@ -1,9 +1,11 @@
 #include "window_glfw.h"
 
 #include "input_map.h"
+#include "ui_style.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
@@ -48,7 +50,7 @@ bool windowInit(WindowGlfw& w, int width, int height, const char* title, std::st
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    // Not forward-compatible: the renderer draws trails and arrow shafts as wide GL lines.
     w.window = glfwCreateWindow(width, height, title, nullptr, nullptr);
     if (!w.window) {
         if (error) *error = "cannot open an OpenGL 3.3 window (" + gLastGlfwError + ")";
@@ -86,6 +88,7 @@ bool windowNewFrame(WindowGlfw& w, double* realSeconds) {
     if (realSeconds) *realSeconds = now - w.lastTime;
     w.lastTime = now;
     ImGui_ImplOpenGL3_NewFrame();
+    uiSharpFontTexture();
     ImGui_ImplGlfw_NewFrame();
     return true;
 }

@@ -34,14 +34,24 @@ GLuint compile(GLenum type, const char* source, const std::string& name, std::st
     return shader;
 }
 
+// The source with `defines` inserted after its first line (the #version line).
+std::string withDefines(const char* source, const char* defines) {
+    std::string text = source;
+    if (!*defines) return text;
+    const std::size_t eol = text.find('\n');
+    text.insert(eol == std::string::npos ? text.size() : eol + 1, defines);
+    return text;
+}
+
 } // namespace
 
 GLuint buildProgram(const char* vertexSource, const char* fragmentSource, const char* name,
-                    std::string* error) {
+                    std::string* error, const char* fragmentDefines) {
     const std::string base = name;
     const GLuint vs = compile(GL_VERTEX_SHADER, vertexSource, base + ".vert", error);
     if (!vs) return 0;
-    const GLuint fs = compile(GL_FRAGMENT_SHADER, fragmentSource, base + ".frag", error);
+    const std::string fragment = withDefines(fragmentSource, fragmentDefines);
+    const GLuint fs = compile(GL_FRAGMENT_SHADER, fragment.c_str(), base + ".frag", error);
     if (!fs) {
         glDeleteShader(vs);
         return 0;

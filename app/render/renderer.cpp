@@ -11,8 +11,11 @@ namespace {
 
 constexpr float kCorners[8] = {-1.f, -1.f, 1.f, -1.f, -1.f, 1.f, 1.f, 1.f};
 constexpr double kWallThicknessPx = 10.0;
-constexpr double kTrailWidthPx = 2.0;
-constexpr double kArrowWidthPx = 2.5;
+// Widths of the lines drawn as GL lines (whole pixels; 1 where the context has no wide lines).
+constexpr float kTrailWidthPx = 2.0f;
+constexpr float kVelocityShaftPx = 3.0f;
+constexpr float kMomentumShaftPx = 7.0f;
+constexpr double kArrowWidthPx = 2.5; // the fling arrow's shaft (triangles)
 constexpr double kArrowHeadPx = 11.0;
 constexpr double kGridMinPx = 12.0;
 
@@ -23,14 +26,27 @@ void setUniformTransform(GLint location, const ClipTransform& t) {
 } // namespace
 
 bool SceneRenderer::init(std::string* error) {
-    blockProgram_ =
-        buildProgram(embedded_shaders::block_vert, embedded_shaders::block_frag, "block", error);
+    const char* blockDefines[kBlockStyleCount] = {"#define PATTERNED\n", "",
+                                                  "#define OUTLINE_ONLY\n"};
+    for (int k = 0; k < kBlockStyleCount; ++k) {
+        BlockProgram& b = blockPrograms_[k];
+        b.program = buildProgram(embedded_shaders::block_vert, embedded_shaders::block_frag,
+                                 "block", error, blockDefines[k]);
+        if (!b.program) return false;
+        b.transform = glGetUniformLocation(b.program, "uTransform");
+        b.pixelsPerMetre = glGetUniformLocation(b.program, "uPixelsPerMetre");
+    }
     shapeProgram_ =
         buildProgram(embedded_shaders::shape_vert, embedded_shaders::shape_frag, "shape", error);
-    if (!blockProgram_ || !shapeProgram_) return false;
-    blockTransform_ = glGetUniformLocation(blockProgram_, "uTransform");
-    blockPpm_ = glGetUniformLocation(blockProgram_, "uPixelsPerMetre");
+    if (!shapeProgram_) return false;
     shapeTransform_ = glGetUniformLocation(shapeProgram_, "uTransform");
+    // Wide lines need a context that is not forward-compatible (the window asks for none).
+    GLint flags = 0;
+    glGetIntegerv(GL_CONTEXT_FLAGS, &flags);
+    GLfloat range[2] = {1.0f, 1.0f};
+    glGetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, range);
+    maxLineWidth_ =
+        (flags & GL_CONTEXT_FLAG_FORWARD_COMPATIBLE_BIT) ? 1.0f : std::max(1.0f, range[1]);
 
     glGenVertexArrays(1, &blockVao_);
     glGenBuffers(1, &cornerVbo_);
@@ -78,100 +94,111 @@ void SceneRenderer::shutdown() {
     glDeleteBuffers(1, &shapeVbo_);
     glDeleteVertexArrays(1, &blockVao_);
     glDeleteVertexArrays(1, &shapeVao_);
-    if (blockProgram_) glDeleteProgram(blockProgram_);
+    for (BlockProgram& b : blockPrograms_) {
+        if (b.program) glDeleteProgram(b.program);
+        b = BlockProgram{};
+    }
     if (shapeProgram_) glDeleteProgram(shapeProgram_);
-    blockProgram_ = shapeProgram_ = 0;
+    shapeProgram_ = 0;
     blockVao_ = shapeVao_ = cornerVbo_ = instanceVbo_ = shapeVbo_ = 0;
 }
 
 void SceneRenderer::buildShapes(const SceneView& view) {
+    under_.clear();
+    momenta_.clear();
+    over_.clear();
+    addGrid(view);
+    if (view.trails) addTrails(view, *view.trails);
+    if (view.vectors) addArrows(view);
+    if (view.flingActive) {
+        const double px = view.camera->pixelsToMetres(1.0);
+        over_.arrow(view.flingFrom, view.flingTo, kArrowWidthPx * 1.6 * px, kArrowHeadPx * 1.5 * px,
+                    scene_colors::kFling);
+    }
+}
+
+// The metre grid, limited to what is visible inside the bounds.
+void SceneRenderer::addGrid(const SceneView& view) {
     const World& world = *view.world;
     const Camera& cam = *view.camera;
     const double px = cam.pixelsToMetres(1.0);
-    under_.clear();
-    over_.clear();
-
-    // The metre grid, limited to what is visible inside the bounds.
     const ScreenRect& vp = cam.viewport();
     const Vec2 a = cam.screenToWorld({vp.x, vp.y + vp.height});
     const Vec2 b = cam.screenToWorld({vp.x + vp.width, vp.y});
     const Vec2 lo{std::max(a.x, world.bounds.min.x), std::max(a.y, world.bounds.min.y)};
     const Vec2 hi{std::min(b.x, world.bounds.max.x), std::min(b.y, world.bounds.max.y)};
+    if (!(lo.x < hi.x && lo.y < hi.y)) return;
     const double step = gridSpacing(cam.pixelsPerMetre(), kGridMinPx);
     const double major = step * 5.0;
-    if (lo.x < hi.x && lo.y < hi.y) {
-        const double x0 = world.bounds.min.x + std::ceil((lo.x - world.bounds.min.x) / step) * step;
-        for (double x = x0; x <= hi.x; x += step) {
-            const double m = std::fmod(std::abs(x - world.bounds.min.x) + 1e-9, major);
-            const bool isMajor = m < 1e-6;
-            under_.rect({x - px * 0.5, lo.y}, {x + px * 0.5, hi.y},
-                        isMajor ? scene_colors::kGridMajor : scene_colors::kGridMinor);
-        }
-        const double y0 = world.bounds.min.y + std::ceil((lo.y - world.bounds.min.y) / step) * step;
-        for (double y = y0; y <= hi.y; y += step) {
-            const double m = std::fmod(std::abs(y - world.bounds.min.y) + 1e-9, major);
-            const bool isMajor = m < 1e-6;
-            under_.rect({lo.x, y - px * 0.5}, {hi.x, y + px * 0.5},
-                        isMajor ? scene_colors::kGridMajor : scene_colors::kGridMinor);
-        }
+    const double x0 = world.bounds.min.x + std::ceil((lo.x - world.bounds.min.x) / step) * step;
+    for (double x = x0; x <= hi.x; x += step) {
+        const double m = std::fmod(std::abs(x - world.bounds.min.x) + 1e-9, major);
+        const bool isMajor = m < 1e-6;
+        under_.rect({x - px * 0.5, lo.y}, {x + px * 0.5, hi.y},
+                    isMajor ? scene_colors::kGridMajor : scene_colors::kGridMinor);
     }
+    const double y0 = world.bounds.min.y + std::ceil((lo.y - world.bounds.min.y) / step) * step;
+    for (double y = y0; y <= hi.y; y += step) {
+        const double m = std::fmod(std::abs(y - world.bounds.min.y) + 1e-9, major);
+        const bool isMajor = m < 1e-6;
+        under_.rect({lo.x, y - px * 0.5}, {hi.x, y + px * 0.5},
+                    isMajor ? scene_colors::kGridMajor : scene_colors::kGridMinor);
+    }
+}
 
-    // Trails, fading with age. With many blocks, every k-th point only, to stay within
-    // kTrailSegmentBudget segments (the same 3 s of history, coarser).
-    if (view.trails && view.trails->length() > 1 &&
-        view.trails->blockCount() == world.blocks.size()) {
-        const Trails& tr = *view.trails;
-        const int n = tr.length();
-        std::size_t moving = 0;
-        for (const Block& bl : world.blocks) moving += bl.kind != BodyKind::Static;
-        const long long wanted = static_cast<long long>(moving) * (n - 1);
-        const int stride = static_cast<int>(
-            std::max<long long>(1, (wanted + kTrailSegmentBudget - 1) / kTrailSegmentBudget));
-        const double width = kTrailWidthPx * px * (stride > 1 ? 0.8 : 1.0);
-        for (std::size_t i = 0; i < tr.blockCount(); ++i) {
-            if (world.blocks[i].kind == BodyKind::Static) continue;
-            const Color c = i < view.blockColors.size() ? view.blockColors[i] : Color{};
-            Vec2 prev = tr.point(i, 0);
-            float prevAlpha = 0.75f;
-            for (int age = stride; age - stride + 1 < n; age += stride) {
-                const int a = std::min(age, n - 1);
-                const Vec2 p = tr.point(i, a);
-                const float alpha = 0.75f * (1.0f - static_cast<float>(a) / static_cast<float>(n));
-                under_.line(prev, p, width, c.withAlpha(prevAlpha), c.withAlpha(alpha));
-                prev = p;
-                prevAlpha = alpha;
-                if (a == n - 1) break;
-            }
+// Trails, fading with age, as GL lines. A software rasteriser pays for every pixel of their
+// length, so at most kTrailPixelBudget pixels of trail are drawn: all trails are cut at the same
+// age (a crowded scene shows short tails), and with many blocks only every k-th stored point is
+// used, to stay within kTrailSegmentBudget segments.
+void SceneRenderer::addTrails(const SceneView& view, const Trails& trails) {
+    const World& world = *view.world;
+    const double px = view.camera->pixelsToMetres(1.0);
+    const int oldest = trails.ageWithinLength(world, kTrailPixelBudget * px);
+    if (oldest < 1) return;
+    std::size_t moving = 0;
+    for (const Block& bl : world.blocks) moving += bl.kind != BodyKind::Static;
+    const long long wanted = static_cast<long long>(moving) * oldest;
+    const int stride = static_cast<int>(
+        std::max<long long>(1, (wanted + kTrailSegmentBudget - 1) / kTrailSegmentBudget));
+    const auto fade = [oldest](int age) {
+        return 0.75f * (1.0f - static_cast<float>(age) / static_cast<float>(oldest + 1));
+    };
+    for (std::size_t i = 0; i < trails.blockCount(); ++i) {
+        if (world.blocks[i].kind == BodyKind::Static) continue;
+        const Color c = i < view.blockColors.size() ? view.blockColors[i] : Color{};
+        Vec2 prev = trails.point(i, 0);
+        int prevAge = 0;
+        while (prevAge < oldest) {
+            const int age = std::min(prevAge + stride, oldest);
+            const Vec2 p = trails.point(i, age);
+            under_.segment(prev, p, c.withAlpha(fade(prevAge)), c.withAlpha(fade(age)));
+            prev = p;
+            prevAge = age;
         }
     }
+}
 
-    // Momentum arrows (wide, translucent, under) and velocity arrows from the centres of moving
-    // blocks: p = m·v points the same way as v, so the two share a line.
-    if (view.vectors) {
-        for (const Block& bl : world.blocks) {
-            if (!bl.isDynamic()) continue;
-            const Vec2 tip = bl.position + bl.velocity * (bl.mass * kMomentumArrowScale);
-            over_.arrow(bl.position, tip, kArrowWidthPx * 2.6 * px, kArrowHeadPx * 1.3 * px,
-                        scene_colors::kMomentum);
-        }
-        for (const Block& bl : world.blocks) {
-            if (bl.kind == BodyKind::Static) continue;
-            const Vec2 tip = bl.position + bl.velocity * kVelocityArrowScale;
-            over_.arrow(bl.position, tip, kArrowWidthPx * px, kArrowHeadPx * px,
-                        scene_colors::kVelocity);
-        }
+// Momentum arrows (wide, translucent, under) and velocity arrows from the centres of moving
+// blocks: p = m·v points the same way as v, so the two share a line.
+void SceneRenderer::addArrows(const SceneView& view) {
+    const double px = view.camera->pixelsToMetres(1.0);
+    for (const Block& bl : view.world->blocks) {
+        if (!bl.isDynamic()) continue;
+        const Vec2 tip = bl.position + bl.velocity * (bl.mass * kMomentumArrowScale);
+        momenta_.lineArrow(bl.position, tip, kArrowHeadPx * 1.3 * px, scene_colors::kMomentum);
     }
-    if (view.flingActive) {
-        over_.arrow(view.flingFrom, view.flingTo, kArrowWidthPx * 1.6 * px, kArrowHeadPx * 1.5 * px,
-                    scene_colors::kFling);
+    for (const Block& bl : view.world->blocks) {
+        if (bl.kind == BodyKind::Static) continue;
+        const Vec2 tip = bl.position + bl.velocity * kVelocityArrowScale;
+        over_.lineArrow(bl.position, tip, kArrowHeadPx * px, scene_colors::kVelocity);
     }
 }
 
 void SceneRenderer::buildBlocks(const SceneView& view) {
     const World& world = *view.world;
     const double px = view.camera->pixelsToMetres(1.0);
-    blocks_.clear();
-    blocks_.reserve(world.blocks.size() + 4);
+    for (std::vector<BlockInstance>& list : blocks_) list.clear();
+    std::vector<BlockInstance>& patterned = blocks_[kPatterned];
 
     // The four walls, just outside the bounds, hatched like every body of infinite mass.
     const double t = kWallThicknessPx * px;
@@ -183,10 +210,10 @@ void SceneRenderer::buildBlocks(const SceneView& view) {
                                   {{mn.x, mx.y}, {mx.x, mx.y + t}}};
     for (const auto& r : wallRects) {
         const Vec2 c = (r[0] + r[1]) * 0.5, h = (r[1] - r[0]) * 0.5;
-        blocks_.push_back({{float(c.x), float(c.y), float(h.x), float(h.y)},
-                           {wall.r, wall.g, wall.b, wall.a},
-                           {wall.r, wall.g, wall.b, wall.a},
-                           {0.0f, 1.0f}});
+        patterned.push_back({{float(c.x), float(c.y), float(h.x), float(h.y)},
+                             {wall.r, wall.g, wall.b, wall.a},
+                             {wall.r, wall.g, wall.b, wall.a},
+                             {0.0f, 1.0f}});
     }
 
     for (std::size_t i = 0; i < world.blocks.size(); ++i) {
@@ -197,11 +224,12 @@ void SceneRenderer::buildBlocks(const SceneView& view) {
         const float pattern = b.kind == BodyKind::Static      ? 1.0f
                               : b.kind == BodyKind::Kinematic ? 2.0f
                                                               : 0.0f;
-        blocks_.push_back({{float(b.position.x), float(b.position.y), float(b.size.x * 0.5),
-                            float(b.size.y * 0.5)},
-                           {fill.r, fill.g, fill.b, fill.a},
-                           {outline.r, outline.g, outline.b, outline.a},
-                           {selected ? 3.0f : 1.5f, pattern}});
+        blocks_[pattern > 0.0f ? kPatterned : kPlain].push_back(
+            {{float(b.position.x), float(b.position.y), float(b.size.x * 0.5),
+              float(b.size.y * 0.5)},
+             {fill.r, fill.g, fill.b, fill.a},
+             {outline.r, outline.g, outline.b, outline.a},
+             {selected ? 3.0f : 1.5f, pattern}});
     }
 
     // Ghosts: outlines only (a transparent fill), in each ghost world's colour.
@@ -210,24 +238,31 @@ void SceneRenderer::buildBlocks(const SceneView& view) {
         const Color c = g.color;
         for (const Block& b : g.world->blocks) {
             if (b.kind == BodyKind::Static) continue;
-            blocks_.push_back({{float(b.position.x), float(b.position.y), float(b.size.x * 0.5),
-                                float(b.size.y * 0.5)},
-                               {c.r, c.g, c.b, 0.0f},
-                               {c.r, c.g, c.b, 0.95f},
-                               {2.0f, 0.0f}});
+            blocks_[kOutlineOnly].push_back({{float(b.position.x), float(b.position.y),
+                                              float(b.size.x * 0.5), float(b.size.y * 0.5)},
+                                             {c.r, c.g, c.b, 0.0f},
+                                             {c.r, c.g, c.b, 0.95f},
+                                             {2.0f, 0.0f}});
         }
     }
 }
 
-void SceneRenderer::drawShapes(const ClipTransform& t, const std::vector<ShapeVertex>& vertices) {
+void SceneRenderer::drawVertices(const std::vector<ShapeVertex>& vertices, GLenum mode) {
     if (vertices.empty()) return;
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(ShapeVertex)),
+                 vertices.data(), GL_STREAM_DRAW);
+    glDrawArrays(mode, 0, static_cast<GLsizei>(vertices.size()));
+}
+
+void SceneRenderer::drawShapes(const ClipTransform& t, const ShapeBatch& batch, float lineWidthPx) {
+    if (batch.vertices().empty() && batch.segmentVertices().empty()) return;
     glUseProgram(shapeProgram_);
     setUniformTransform(shapeTransform_, t);
     glBindVertexArray(shapeVao_);
     glBindBuffer(GL_ARRAY_BUFFER, shapeVbo_);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(ShapeVertex)),
-                 vertices.data(), GL_STREAM_DRAW);
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size()));
+    drawVertices(batch.vertices(), GL_TRIANGLES);
+    glLineWidth(std::clamp(lineWidthPx, 1.0f, maxLineWidth_));
+    drawVertices(batch.segmentVertices(), GL_LINES);
 }
 
 void SceneRenderer::draw(const SceneView& view) {
@@ -235,7 +270,7 @@ void SceneRenderer::draw(const SceneView& view) {
     glDisable(GL_SCISSOR_TEST);
     glClearColor(bg.r, bg.g, bg.b, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    if (!view.world || !view.camera || !blockProgram_ || !shapeProgram_) return;
+    if (!view.world || !view.camera || !shapeProgram_) return;
 
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
@@ -267,18 +302,25 @@ void SceneRenderer::draw(const SceneView& view) {
     buildShapes(view);
     buildBlocks(view);
 
-    drawShapes(t, under_.vertices());
+    drawShapes(t, under_, kTrailWidthPx);
 
-    glUseProgram(blockProgram_);
-    setUniformTransform(blockTransform_, t);
-    glUniform1f(blockPpm_, static_cast<float>(view.camera->pixelsPerMetre()));
     glBindVertexArray(blockVao_);
     glBindBuffer(GL_ARRAY_BUFFER, instanceVbo_);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(blocks_.size() * sizeof(BlockInstance)),
-                 blocks_.data(), GL_STREAM_DRAW);
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(blocks_.size()));
+    for (int k = 0; k < kBlockStyleCount; ++k) {
+        const std::vector<BlockInstance>& instances = blocks_[k];
+        if (instances.empty() || !blockPrograms_[k].program) continue;
+        glUseProgram(blockPrograms_[k].program);
+        setUniformTransform(blockPrograms_[k].transform, t);
+        glUniform1f(blockPrograms_[k].pixelsPerMetre,
+                    static_cast<float>(view.camera->pixelsPerMetre()));
+        glBufferData(GL_ARRAY_BUFFER,
+                     static_cast<GLsizeiptr>(instances.size() * sizeof(BlockInstance)),
+                     instances.data(), GL_STREAM_DRAW);
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(instances.size()));
+    }
 
-    drawShapes(t, over_.vertices());
+    drawShapes(t, momenta_, kMomentumShaftPx);
+    drawShapes(t, over_, kVelocityShaftPx);
 
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);

@@ -35,7 +35,9 @@ struct SceneView {
 // Velocity arrows: metres of arrow per m/s; momentum arrows: metres per kg·m/s.
 constexpr double kVelocityArrowScale = 0.25;
 constexpr double kMomentumArrowScale = 0.15;
-// Trails draw at most about this many segments in all (older points are thinned out).
+// Trails draw at most about this many pixels of length in all (cut at the same age: shorter tails
+// in a crowded scene) and this many segments (older points thinned out).
+constexpr double kTrailPixelBudget = 40000.0;
 constexpr int kTrailSegmentBudget = 4000;
 
 class SceneRenderer {
@@ -54,14 +56,29 @@ class SceneRenderer {
         float style[2]; // outline px, pattern
     };
     void buildShapes(const SceneView& view);
+    void addGrid(const SceneView& view);
+    void addTrails(const SceneView& view, const Trails& trails);
+    void addArrows(const SceneView& view);
     void buildBlocks(const SceneView& view);
-    void drawShapes(const ClipTransform& t, const std::vector<ShapeVertex>& vertices);
+    // Triangles, then segments as GL lines `lineWidthPx` wide.
+    void drawShapes(const ClipTransform& t, const ShapeBatch& batch, float lineWidthPx);
+    void drawVertices(const std::vector<ShapeVertex>& vertices, GLenum mode);
 
-    GLuint blockProgram_ = 0, shapeProgram_ = 0;
+    // Blocks are drawn in three instanced calls, one program each (block.frag's variants):
+    // walls and infinite masses with their pattern, moving blocks plain, ghosts as outlines.
+    enum BlockStyle { kPatterned, kPlain, kOutlineOnly, kBlockStyleCount };
+    struct BlockProgram {
+        GLuint program = 0;
+        GLint transform = -1, pixelsPerMetre = -1;
+    };
+    BlockProgram blockPrograms_[kBlockStyleCount];
+    GLuint shapeProgram_ = 0;
     GLuint blockVao_ = 0, cornerVbo_ = 0, instanceVbo_ = 0;
     GLuint shapeVao_ = 0, shapeVbo_ = 0;
-    GLint blockTransform_ = -1, blockPpm_ = -1, shapeTransform_ = -1;
-    ShapeBatch under_; // arena, grid, trails
-    ShapeBatch over_;  // arrows
-    std::vector<BlockInstance> blocks_;
+    GLint shapeTransform_ = -1;
+    ShapeBatch under_;   // grid, trails
+    ShapeBatch momenta_; // momentum arrows, over the blocks
+    ShapeBatch over_;    // velocity arrows, the fling arrow
+    float maxLineWidth_ = 1.0f;
+    std::vector<BlockInstance> blocks_[kBlockStyleCount];
 };

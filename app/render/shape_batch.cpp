@@ -29,14 +29,42 @@ void ShapeBatch::line(Vec2 a, Vec2 b, double width, const Color& colorA, const C
     vertex(b - n, colorB);
 }
 
-void ShapeBatch::arrow(Vec2 from, Vec2 to, double width, double head, const Color& color) {
+namespace {
+
+// The head of an arrow from `from` to `to`: its base (where the shaft ends) and half its width.
+struct ArrowHead {
+    bool drawn = false;
+    Vec2 base, side;
+};
+
+ArrowHead arrowHead(Vec2 from, Vec2 to, double head) {
     const Vec2 d = to - from;
     const double len = length(d);
-    if (len < head * 0.05) return;
+    if (len < head * 0.05) return {};
     const Vec2 dir = d / len;
     const double headLen = std::min(head, len * 0.6);
-    const Vec2 base = to - dir * headLen;
-    line(from, base, width, color);
-    const Vec2 side = perpendicular(dir) * (headLen * 0.55);
-    triangle(to, base + side, base - side, color);
+    return {true, to - dir * headLen, perpendicular(dir) * (headLen * 0.55)};
+}
+
+} // namespace
+
+void ShapeBatch::arrow(Vec2 from, Vec2 to, double width, double head, const Color& color) {
+    const ArrowHead h = arrowHead(from, to, head);
+    if (!h.drawn) return;
+    line(from, h.base, width, color);
+    triangle(to, h.base + h.side, h.base - h.side, color);
+}
+
+void ShapeBatch::lineArrow(Vec2 from, Vec2 to, double head, const Color& color) {
+    const ArrowHead h = arrowHead(from, to, head);
+    if (!h.drawn) return;
+    segment(from, h.base, color);
+    triangle(to, h.base + h.side, h.base - h.side, color);
+}
+
+void ShapeBatch::segment(Vec2 a, Vec2 b, const Color& colorA, const Color& colorB) {
+    segments_.push_back(
+        {static_cast<float>(a.x), static_cast<float>(a.y), colorA.r, colorA.g, colorA.b, colorA.a});
+    segments_.push_back(
+        {static_cast<float>(b.x), static_cast<float>(b.y), colorB.r, colorB.g, colorB.b, colorB.a});
 }

@@ -30,3 +30,16 @@ Vec2 Trails::point(std::size_t block, int age) const {
     const int slot = ((head_ - age) % capacity_ + capacity_) % capacity_;
     return points_[block * static_cast<std::size_t>(capacity_) + static_cast<std::size_t>(slot)];
 }
+
+int Trails::ageWithinLength(const World& world, double budget) const {
+    if (length_ < 2 || world.blocks.size() != blockCount_) return 0;
+    double total = 0.0;
+    for (int age = 1; age < length_; ++age) {
+        for (std::size_t i = 0; i < blockCount_; ++i) {
+            if (world.blocks[i].kind == BodyKind::Static) continue;
+            total += ::length(point(i, age) - point(i, age - 1));
+        }
+        if (total > budget) return age > 1 ? age - 1 : 1;
+    }
+    return length_ - 1;
+}

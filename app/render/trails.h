@@ -25,6 +25,11 @@ class Trails {
     int length() const { return length_; }
     // Point `age` of block `block`: age 0 is the newest, length() - 1 the oldest.
     Vec2 point(std::size_t block, int age) const;
+    // The oldest age (at least 1, at most length() - 1) up to which the trails of the moving blocks
+    // of `world` are together no longer than `budget` metres, all cut at the same age; 0 when
+    // there is no trail to draw. Drawing costs in proportion to length on a software rasteriser,
+    // so a crowded scene shows the newest part of every trail instead of all of a few.
+    int ageWithinLength(const World& world, double budget) const;
 
   private:
     int capacity_;

@@ -249,6 +249,29 @@ TEST(Trails, KeepTheNewestPointsAndRestartWhenBlocksChange) {
     EXPECT_EQ(trails.length(), 0);
 }
 
+TEST(Trails, AgeWithinLengthCutsAllTrailsAtTheSameAge) {
+    // Two moving blocks, each 1 m further per recorded point, and a static one that never counts.
+    Trails trails(10, 1);
+    World w;
+    w.blocks.resize(3);
+    w.blocks[2].kind = BodyKind::Static;
+    EXPECT_EQ(trails.ageWithinLength(w, 100.0), 0); // nothing recorded: nothing to draw
+    for (int i = 0; i < 6; ++i) {
+        w.blocks[0].position = {double(i), 0};
+        w.blocks[1].position = {0, double(i)};
+        w.blocks[2].position = {5.0 * i, 0}; // (static blocks do not move; ignored either way)
+        trails.record(w);
+    }
+    ASSERT_EQ(trails.length(), 6);
+    // Each age adds 2 m (1 m per moving block).
+    EXPECT_EQ(trails.ageWithinLength(w, 100.0), 5); // everything fits: the oldest point
+    EXPECT_EQ(trails.ageWithinLength(w, 6.0), 3);   // 2 + 2 + 2 = 6 m
+    EXPECT_EQ(trails.ageWithinLength(w, 5.9), 2);
+    EXPECT_EQ(trails.ageWithinLength(w, 0.5), 1); // never less than one segment
+    w.blocks.resize(2);                           // another world: no trail to draw
+    EXPECT_EQ(trails.ageWithinLength(w, 100.0), 0);
+}
+
 TEST(AppConfig, RoundTripsAndIgnoresNonsense) {
     AppConfig c;
     c.lastScene = "/home/me/scenes/x.json";

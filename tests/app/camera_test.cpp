@@ -1,4 +1,5 @@
 #include "camera.h"
+#include "shape_batch.h"
 
 #include <gtest/gtest.h>
 
@@ -97,3 +98,22 @@ TEST(Camera, GridSpacingGrowsWhenZoomedOut) {
 }
 
 } // namespace
+
+TEST(ShapeBatch, LineArrowIsOneSegmentAndAHeadTriangle) {
+    ShapeBatch batch;
+    const Color c{1.0f, 0.5f, 0.25f, 1.0f};
+    batch.lineArrow({0, 0}, {10, 0}, 2.0, c);
+    // The shaft: one GL line from the tail to the head's base, 2 m before the tip.
+    ASSERT_EQ(batch.segmentVertices().size(), 2u);
+    EXPECT_EQ(batch.segmentVertices()[0].x, 0.0f);
+    EXPECT_EQ(batch.segmentVertices()[1].x, 8.0f);
+    // The head: one triangle, its tip at the arrow's end, its base 2 * 0.55 m wide.
+    ASSERT_EQ(batch.vertices().size(), 3u);
+    EXPECT_EQ(batch.vertices()[0].x, 10.0f);
+    EXPECT_FLOAT_EQ(batch.vertices()[1].y - batch.vertices()[2].y, 2.2f);
+    // Too short to see (under 5% of the head): nothing at all.
+    batch.clear();
+    batch.lineArrow({0, 0}, {0.05, 0}, 2.0, c);
+    EXPECT_TRUE(batch.vertices().empty());
+    EXPECT_TRUE(batch.segmentVertices().empty());
+}

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -222,6 +223,28 @@ TEST(PlotLogic, TimeSeriesRingAndTruncate) {
     s.truncateAfter(1.6);
     EXPECT_EQ(s.size(), 2u);
     EXPECT_DOUBLE_EQ(s.time(1), 1.5);
+}
+
+TEST(PlotLogic, ColumnExtremesKeepSpikesAndTheLastPoint) {
+    // 600 samples across 300 px (two per pixel) of a flat line with one spike up and one down:
+    // at most two points per 2 px column survive, the spikes and the last sample among them.
+    std::vector<float> xs, ys;
+    for (int i = 0; i < 600; ++i) {
+        xs.push_back(0.5f * static_cast<float>(i));
+        ys.push_back(i == 201 ? 90.0f : i == 402 ? -70.0f : 10.0f);
+    }
+    const std::vector<std::size_t> kept = columnExtremes(xs, ys, 2.0f);
+    EXPECT_LE(kept.size(), 2u * 150u + 1u);
+    EXPECT_GE(kept.size(), 150u); // one per column at least
+    EXPECT_TRUE(std::is_sorted(kept.begin(), kept.end()));
+    EXPECT_EQ(kept.front(), 0u);
+    EXPECT_EQ(kept.back(), 599u);
+    EXPECT_NE(std::find(kept.begin(), kept.end(), 201u), kept.end());
+    EXPECT_NE(std::find(kept.begin(), kept.end(), 402u), kept.end());
+    // A short series (points farther apart than a column) is kept whole.
+    const std::vector<float> sx{0, 10, 20, 30}, sy{1, 5, 2, 8};
+    EXPECT_EQ(columnExtremes(sx, sy, 2.0f), (std::vector<std::size_t>{0, 1, 2, 3}));
+    EXPECT_TRUE(columnExtremes({}, {}, 2.0f).empty());
 }
 
 TEST(PointOfImpact, TimeOfImpactIsAOverB) {
