@@ -85,6 +85,15 @@ void applyAction(App& app, Action action) {
     }
 }
 
+void noteFrameShown(App& app, double realSeconds) {
+    if (!(realSeconds > 0.0)) return;
+    const double ms = realSeconds * 1000.0;
+    app.frameMsSmoothed =
+        app.framesShown == 0 ? ms : app.frameMsSmoothed + (ms - app.frameMsSmoothed) / 30.0;
+    ++app.framesShown;
+    app.secondsShown += realSeconds;
+}
+
 void logStateChanges(App& app) {
     const LoggedState now = snapshotForLog(app);
     if (app.verbose && app.loggedValid) {
@@ -103,7 +112,10 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     handleKeys(app, keys);
     handleSceneMouse(app);
     updateCamera(app, io.DisplaySize.x, io.DisplaySize.y); // the UI toggle may have changed it
-    if (runClock) advanceSimulation(app, realSeconds);
+    if (runClock) {
+        noteFrameShown(app, realSeconds);
+        advanceSimulation(app, realSeconds);
+    }
     drawSceneDecorations(app);
     if (app.show.poi) drawPointOfImpact(app);
     if (app.show.com) drawCentreOfMass(app);

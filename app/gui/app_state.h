@@ -64,6 +64,10 @@ struct App {
     bool helpOpen = false;
     float uiScale = 1.0f;
     MouseTool mouse;
+    // The window's own pace (real time between displayed frames), for Statistics; zero offscreen.
+    double frameMsSmoothed = 0.0; // ms, exponential average over about 30 frames
+    long long framesShown = 0;
+    double secondsShown = 0.0;
     // Teaching overlays: what the plots and the inspector read, the timeline, the methods side
     // by side, the point of impact of the last collision of the watched block.
     Telemetry telemetry;

@@ -174,6 +174,10 @@ void statisticsSection(App& app) {
     statRow("momentum y", "%.3f kg·m/s", s.momentum.y);
     statRow("kinetic energy", "%.3f J", s.kineticEnergy);
     statRow("total energy", "%.3f J", s.kineticEnergy + s.potentialEnergy);
+    if (app.frameMsSmoothed > 0.0) {
+        statRow("display frame", "%.1f ms", app.frameMsSmoothed);
+        statRow("frames / second", "%.0f", 1000.0 / app.frameMsSmoothed);
+    }
     ImGui::EndTable();
 }
 

@@ -120,12 +120,14 @@ void tradeoffChart(CostState& s) {
 
 void drawCostWindow(App& app) {
     OverlayPlacement place;
+    // Centred, and no bigger than the chart needs: an overlay this size covers much of the scene,
+    // and every covered pixel is blended again on a software rasteriser.
     place.anchorX = 0.5f;
     place.anchorY = 0.5f;
-    place.widthFraction = 0.72f;
-    place.heightFraction = 0.75f;
-    place.maxWidth = 660.0f;
-    place.maxHeight = 520.0f;
+    place.widthFraction = 0.6f;
+    place.heightFraction = 0.62f;
+    place.maxWidth = 540.0f;
+    place.maxHeight = 430.0f;
     if (!beginOverlayWindow(app, "Speed versus accuracy", &app.show.cost, place)) {
         ImGui::End();
         return;

@@ -106,7 +106,14 @@ int runWindow(const Options& options, char** argv, int argc) {
     renderer.shutdown();
     windowShutdown(window);
     uiDestroyContext();
-    if (app.verbose) std::printf("quit\n");
+    if (app.verbose) {
+        if (app.framesShown > 0 && app.secondsShown > 0.0) {
+            std::printf("shown %lld frames, %.2f ms/frame (%.1f frames/s)\n", app.framesShown,
+                        app.secondsShown * 1000.0 / static_cast<double>(app.framesShown),
+                        static_cast<double>(app.framesShown) / app.secondsShown);
+        }
+        std::printf("quit\n");
+    }
     return 0;
 }
 

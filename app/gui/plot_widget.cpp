@@ -36,6 +36,41 @@ std::string labelFor(double v, double lo, double hi, bool log, int maxTicks) {
     return log ? decadeLabel(v) : tickLabel(v, step);
 }
 
+// One piece of a plot's header: the title, the unit, or a series' legend entry (line and label).
+struct HeaderItem {
+    std::string text;
+    ImU32 color = 0;
+    const PlotSeries* series = nullptr; // a legend entry
+    float x = 0.0f, y = 0.0f;
+    int line = 0;
+};
+
+// Places the title, the unit and the legend from `left` to `right`, starting a new line (each
+// 1.35 font sizes below the last) where the next piece does not fit.
+std::vector<HeaderItem> layoutHeader(const PlotOptions& o, const std::vector<PlotSeries>& series,
+                                     float left, float right, float top) {
+    const float font = ImGui::GetFontSize();
+    std::vector<HeaderItem> items;
+    if (*o.title) items.push_back({o.title, IM_COL32(235, 238, 245, 255)});
+    if (*o.yUnit) items.push_back({std::string("[") + o.yUnit + "]", kAxisText});
+    for (const PlotSeries& ps : series) items.push_back({ps.label, 0, &ps});
+    float x = left;
+    int line = 0;
+    for (HeaderItem& it : items) {
+        const float width =
+            ImGui::CalcTextSize(it.text.c_str()).x + (it.series ? font * 1.2f : 0.0f);
+        if (x > left && x + width > right) {
+            x = left;
+            ++line;
+        }
+        it.x = x;
+        it.line = line;
+        it.y = top + float(line) * font * 1.35f;
+        x += width + font * (it.series ? 0.8f : 0.6f);
+    }
+    return items;
+}
+
 } // namespace
 
 void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries>& series,
@@ -79,8 +114,14 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
     if (!(ylo <= yhi)) ylo = yhi = 0.0;
     const PlotRange yr = paddedRange(ylo, yhi, 0.1);
 
-    // Layout: y labels on the left, x labels below.
-    const float header = font * 1.35f; // title, unit and legend above the plot area
+    // Line thickness: a whole number of pixels, so ImGui draws each segment as two triangles
+    // textured from the atlas's baked anti-aliased lines, instead of six with a geometric fringe.
+    const float thickness = std::max(1.0f, std::round(font * 0.12f));
+    // Layout: title, unit and legend above the plot area (wrapped onto more lines when they do
+    // not fit), y labels on the left, x labels below.
+    const std::vector<HeaderItem> items =
+        layoutHeader(o, series, outerMin.x + font * 0.2f, outerMax.x, outerMin.y + font * 0.1f);
+    const float header = (items.empty() ? 1.0f : float(items.back().line + 1)) * font * 1.35f;
     const int yMaxTicks = std::max(2, int((size.y - header - font * 1.5f) / (font * 1.8f)));
     const std::vector<double> yTicks = ticksFor(yr.lo, yr.hi, o.logY, yMaxTicks);
     float labelW = ImGui::CalcTextSize("0").x;
@@ -139,9 +180,6 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
     // Series.
     std::vector<ImVec2> mapped, pts;
     std::vector<float> xs, ys;
-    // A whole number of pixels: ImGui then draws each segment as two triangles textured from the
-    // atlas's baked anti-aliased lines, instead of six with a geometric fringe.
-    const float thickness = std::max(1.0f, std::round(font * 0.12f));
     for (const PlotSeries& s : series) {
         mapped.clear();
         const std::size_t n = std::min(s.x.size(), s.y.size());
@@ -171,27 +209,17 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
     }
     dl->PopClipRect();
 
-    // Title, unit and legend along the top.
-    float lx = outerMin.x + font * 0.2f;
-    const float ly = outerMin.y + font * 0.1f;
-    if (*o.title) {
-        dl->AddText(ImVec2(lx, ly), IM_COL32(235, 238, 245, 255), o.title);
-        lx += ImGui::CalcTextSize(o.title).x + font * 0.5f;
-    }
-    if (*o.yUnit) {
-        char unit[64];
-        std::snprintf(unit, sizeof unit, "[%s]", o.yUnit);
-        dl->AddText(ImVec2(lx, ly), kAxisText, unit);
-        lx += ImGui::CalcTextSize(unit).x + font * 0.8f;
-    }
-    for (const PlotSeries& s : series) {
-        const ImVec2 ts = ImGui::CalcTextSize(s.label.c_str());
-        if (lx + font * 1.2f + ts.x > outerMax.x) break;
-        const float cy = ly + ts.y * 0.5f;
-        dl->AddLine(ImVec2(lx, cy), ImVec2(lx + font * 0.9f, cy), s.color, thickness * 1.5f);
-        lx += font * 1.2f;
-        dl->AddText(ImVec2(lx, ly), IM_COL32(225, 230, 240, 255), s.label.c_str());
-        lx += ts.x + font * 0.8f;
+    // Title, unit and legend.
+    for (const HeaderItem& it : items) {
+        if (it.series) {
+            const float cy = it.y + font * 0.5f;
+            dl->AddLine(ImVec2(it.x, cy), ImVec2(it.x + font * 0.9f, cy), it.series->color,
+                        thickness * 1.5f);
+            dl->AddText(ImVec2(it.x + font * 1.2f, it.y), IM_COL32(225, 230, 240, 255),
+                        it.text.c_str());
+        } else {
+            dl->AddText(ImVec2(it.x, it.y), it.color, it.text.c_str());
+        }
     }
 
     // Values under the cursor.

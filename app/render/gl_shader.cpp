@@ -46,11 +46,12 @@ std::string withDefines(const char* source, const char* defines) {
 } // namespace
 
 GLuint buildProgram(const char* vertexSource, const char* fragmentSource, const char* name,
-                    std::string* error, const char* fragmentDefines) {
+                    std::string* error, const char* defines) {
     const std::string base = name;
-    const GLuint vs = compile(GL_VERTEX_SHADER, vertexSource, base + ".vert", error);
+    const std::string vertex = withDefines(vertexSource, defines);
+    const GLuint vs = compile(GL_VERTEX_SHADER, vertex.c_str(), base + ".vert", error);
     if (!vs) return 0;
-    const std::string fragment = withDefines(fragmentSource, fragmentDefines);
+    const std::string fragment = withDefines(fragmentSource, defines);
     const GLuint fs = compile(GL_FRAGMENT_SHADER, fragment.c_str(), base + ".frag", error);
     if (!fs) {
         glDeleteShader(vs);

@@ -6,6 +6,6 @@
 #include <string>
 
 // Builds a program from vertex and fragment source. Returns 0 and fills `error` on failure.
-// `fragmentDefines` (e.g. "#define PATTERNED\n") goes after the fragment shader's #version line.
+// `defines` (e.g. "#define PATTERNED\n") goes after the #version line of both shaders.
 GLuint buildProgram(const char* vertexSource, const char* fragmentSource, const char* name,
-                    std::string* error, const char* fragmentDefines = "");
+                    std::string* error, const char* defines = "");

@@ -26,15 +26,19 @@ void setUniformTransform(GLint location, const ClipTransform& t) {
 } // namespace
 
 bool SceneRenderer::init(std::string* error) {
-    const char* blockDefines[kBlockStyleCount] = {"#define PATTERNED\n", "",
-                                                  "#define OUTLINE_ONLY\n"};
+    const std::string styleDefines[kBlockStyleCount] = {"#define PATTERNED\n", "",
+                                                        "#define OUTLINE_ONLY\n"};
     for (int k = 0; k < kBlockStyleCount; ++k) {
-        BlockProgram& b = blockPrograms_[k];
-        b.program = buildProgram(embedded_shaders::block_vert, embedded_shaders::block_frag,
-                                 "block", error, blockDefines[k]);
-        if (!b.program) return false;
-        b.transform = glGetUniformLocation(b.program, "uTransform");
-        b.pixelsPerMetre = glGetUniformLocation(b.program, "uPixelsPerMetre");
+        for (int shape = 0; shape < kBlockShapeCount; ++shape) {
+            const std::string defines =
+                styleDefines[k] + (shape == kPoint ? "#define POINT_SPRITE\n" : "");
+            BlockProgram& b = blockPrograms_[k][shape];
+            b.program = buildProgram(embedded_shaders::block_vert, embedded_shaders::block_frag,
+                                     "block", error, defines.c_str());
+            if (!b.program) return false;
+            b.transform = glGetUniformLocation(b.program, "uTransform");
+            b.pixelsPerMetre = glGetUniformLocation(b.program, "uPixelsPerMetre");
+        }
     }
     shapeProgram_ =
         buildProgram(embedded_shaders::shape_vert, embedded_shaders::shape_frag, "shape", error);
@@ -47,6 +51,9 @@ bool SceneRenderer::init(std::string* error) {
     glGetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, range);
     maxLineWidth_ =
         (flags & GL_CONTEXT_FLAG_FORWARD_COMPATIBLE_BIT) ? 1.0f : std::max(1.0f, range[1]);
+    GLfloat pointSizes[2] = {1.0f, 1.0f};
+    glGetFloatv(GL_POINT_SIZE_RANGE, pointSizes);
+    maxPointPx_ = std::min(static_cast<double>(pointSizes[1]), kMaxPointSpritePx);
 
     glGenVertexArrays(1, &blockVao_);
     glGenBuffers(1, &cornerVbo_);
@@ -72,6 +79,15 @@ bool SceneRenderer::init(std::string* error) {
                               reinterpret_cast<const void*>(a.offset));
         glVertexAttribDivisor(a.index, 1);
     }
+    // The same records as points: one vertex each, no corners.
+    glGenVertexArrays(1, &pointVao_);
+    glBindVertexArray(pointVao_);
+    glBindBuffer(GL_ARRAY_BUFFER, instanceVbo_);
+    for (const auto& a : attributes) {
+        glEnableVertexAttribArray(a.index);
+        glVertexAttribPointer(a.index, a.size, GL_FLOAT, GL_FALSE, stride,
+                              reinterpret_cast<const void*>(a.offset));
+    }
 
     glGenVertexArrays(1, &shapeVao_);
     glGenBuffers(1, &shapeVbo_);
@@ -93,14 +109,17 @@ void SceneRenderer::shutdown() {
     glDeleteBuffers(1, &instanceVbo_);
     glDeleteBuffers(1, &shapeVbo_);
     glDeleteVertexArrays(1, &blockVao_);
+    glDeleteVertexArrays(1, &pointVao_);
     glDeleteVertexArrays(1, &shapeVao_);
-    for (BlockProgram& b : blockPrograms_) {
-        if (b.program) glDeleteProgram(b.program);
-        b = BlockProgram{};
+    for (auto& shapes : blockPrograms_) {
+        for (BlockProgram& b : shapes) {
+            if (b.program) glDeleteProgram(b.program);
+            b = BlockProgram{};
+        }
     }
     if (shapeProgram_) glDeleteProgram(shapeProgram_);
     shapeProgram_ = 0;
-    blockVao_ = shapeVao_ = cornerVbo_ = instanceVbo_ = shapeVbo_ = 0;
+    blockVao_ = pointVao_ = shapeVao_ = cornerVbo_ = instanceVbo_ = shapeVbo_ = 0;
 }
 
 void SceneRenderer::buildShapes(const SceneView& view) {
@@ -182,10 +201,16 @@ void SceneRenderer::addTrails(const SceneView& view, const Trails& trails) {
 // blocks: p = m·v points the same way as v, so the two share a line.
 void SceneRenderer::addArrows(const SceneView& view) {
     const double px = view.camera->pixelsToMetres(1.0);
+    std::size_t dynamic = 0;
+    for (const Block& bl : view.world->blocks) dynamic += bl.isDynamic();
+    const bool heads = dynamic <= kMomentumHeadsUpTo;
     for (const Block& bl : view.world->blocks) {
         if (!bl.isDynamic()) continue;
         const Vec2 tip = bl.position + bl.velocity * (bl.mass * kMomentumArrowScale);
-        momenta_.lineArrow(bl.position, tip, kArrowHeadPx * 1.3 * px, scene_colors::kMomentum);
+        if (heads)
+            momenta_.lineArrow(bl.position, tip, kArrowHeadPx * 1.3 * px, scene_colors::kMomentum);
+        else
+            momenta_.segment(bl.position, tip, scene_colors::kMomentum);
     }
     for (const Block& bl : view.world->blocks) {
         if (bl.kind == BodyKind::Static) continue;
@@ -197,8 +222,24 @@ void SceneRenderer::addArrows(const SceneView& view) {
 void SceneRenderer::buildBlocks(const SceneView& view) {
     const World& world = *view.world;
     const double px = view.camera->pixelsToMetres(1.0);
-    for (std::vector<BlockInstance>& list : blocks_) list.clear();
-    std::vector<BlockInstance>& patterned = blocks_[kPatterned];
+    for (auto& shapes : blocks_) {
+        for (std::vector<BlockInstance>& list : shapes) list.clear();
+    }
+    const Camera& cam = *view.camera;
+    // A point sprite when the block is small, not too far from square (the sprite is a square
+    // around it; what lies outside is discarded) and wholly inside the framebuffer (points are
+    // clipped by their centre); a quad otherwise.
+    const auto add = [&](BlockStyle style, const BlockInstance& b) {
+        const double w = 2.0 * b.rect[2] * cam.pixelsPerMetre();
+        const double h = 2.0 * b.rect[3] * cam.pixelsPerMetre();
+        const Vec2 c = cam.worldToScreen({b.rect[0], b.rect[1]});
+        const double reach = std::max(w, h) * 0.5 + 2.0;
+        const bool point = std::max(w, h) + 2.0 <= maxPointPx_ &&
+                           std::max(w, h) <= 2.0 * std::min(w, h) + 4.0 && c.x - reach >= 0.0 &&
+                           c.y - reach >= 0.0 && c.x + reach <= view.displayWidth &&
+                           c.y + reach <= view.displayHeight;
+        blocks_[style][point ? kPoint : kQuad].push_back(b);
+    };
 
     // The four walls, just outside the bounds, hatched like every body of infinite mass.
     const double t = kWallThicknessPx * px;
@@ -210,10 +251,10 @@ void SceneRenderer::buildBlocks(const SceneView& view) {
                                   {{mn.x, mx.y}, {mx.x, mx.y + t}}};
     for (const auto& r : wallRects) {
         const Vec2 c = (r[0] + r[1]) * 0.5, h = (r[1] - r[0]) * 0.5;
-        patterned.push_back({{float(c.x), float(c.y), float(h.x), float(h.y)},
-                             {wall.r, wall.g, wall.b, wall.a},
-                             {wall.r, wall.g, wall.b, wall.a},
-                             {0.0f, 1.0f}});
+        blocks_[kPatterned][kQuad].push_back({{float(c.x), float(c.y), float(h.x), float(h.y)},
+                                              {wall.r, wall.g, wall.b, wall.a},
+                                              {wall.r, wall.g, wall.b, wall.a},
+                                              {0.0f, 1.0f}});
     }
 
     for (std::size_t i = 0; i < world.blocks.size(); ++i) {
@@ -224,12 +265,11 @@ void SceneRenderer::buildBlocks(const SceneView& view) {
         const float pattern = b.kind == BodyKind::Static      ? 1.0f
                               : b.kind == BodyKind::Kinematic ? 2.0f
                                                               : 0.0f;
-        blocks_[pattern > 0.0f ? kPatterned : kPlain].push_back(
-            {{float(b.position.x), float(b.position.y), float(b.size.x * 0.5),
-              float(b.size.y * 0.5)},
-             {fill.r, fill.g, fill.b, fill.a},
-             {outline.r, outline.g, outline.b, outline.a},
-             {selected ? 3.0f : 1.5f, pattern}});
+        add(pattern > 0.0f ? kPatterned : kPlain, {{float(b.position.x), float(b.position.y),
+                                                    float(b.size.x * 0.5), float(b.size.y * 0.5)},
+                                                   {fill.r, fill.g, fill.b, fill.a},
+                                                   {outline.r, outline.g, outline.b, outline.a},
+                                                   {selected ? 3.0f : 1.5f, pattern}});
     }
 
     // Ghosts: outlines only (a transparent fill), in each ghost world's colour.
@@ -238,11 +278,11 @@ void SceneRenderer::buildBlocks(const SceneView& view) {
         const Color c = g.color;
         for (const Block& b : g.world->blocks) {
             if (b.kind == BodyKind::Static) continue;
-            blocks_[kOutlineOnly].push_back({{float(b.position.x), float(b.position.y),
-                                              float(b.size.x * 0.5), float(b.size.y * 0.5)},
-                                             {c.r, c.g, c.b, 0.0f},
-                                             {c.r, c.g, c.b, 0.95f},
-                                             {2.0f, 0.0f}});
+            add(kOutlineOnly, {{float(b.position.x), float(b.position.y), float(b.size.x * 0.5),
+                                float(b.size.y * 0.5)},
+                               {c.r, c.g, c.b, 0.0f},
+                               {c.r, c.g, c.b, 0.95f},
+                               {2.0f, 0.0f}});
         }
     }
 }
@@ -304,20 +344,28 @@ void SceneRenderer::draw(const SceneView& view) {
 
     drawShapes(t, under_, kTrailWidthPx);
 
-    glBindVertexArray(blockVao_);
+    glEnable(GL_PROGRAM_POINT_SIZE);
     glBindBuffer(GL_ARRAY_BUFFER, instanceVbo_);
     for (int k = 0; k < kBlockStyleCount; ++k) {
-        const std::vector<BlockInstance>& instances = blocks_[k];
-        if (instances.empty() || !blockPrograms_[k].program) continue;
-        glUseProgram(blockPrograms_[k].program);
-        setUniformTransform(blockPrograms_[k].transform, t);
-        glUniform1f(blockPrograms_[k].pixelsPerMetre,
-                    static_cast<float>(view.camera->pixelsPerMetre()));
-        glBufferData(GL_ARRAY_BUFFER,
-                     static_cast<GLsizeiptr>(instances.size() * sizeof(BlockInstance)),
-                     instances.data(), GL_STREAM_DRAW);
-        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(instances.size()));
+        for (int shape = 0; shape < kBlockShapeCount; ++shape) {
+            const std::vector<BlockInstance>& instances = blocks_[k][shape];
+            const BlockProgram& b = blockPrograms_[k][shape];
+            if (instances.empty() || !b.program) continue;
+            glUseProgram(b.program);
+            setUniformTransform(b.transform, t);
+            glUniform1f(b.pixelsPerMetre, static_cast<float>(view.camera->pixelsPerMetre()));
+            glBindVertexArray(shape == kPoint ? pointVao_ : blockVao_);
+            glBufferData(GL_ARRAY_BUFFER,
+                         static_cast<GLsizeiptr>(instances.size() * sizeof(BlockInstance)),
+                         instances.data(), GL_STREAM_DRAW);
+            const auto n = static_cast<GLsizei>(instances.size());
+            if (shape == kPoint)
+                glDrawArrays(GL_POINTS, 0, n);
+            else
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, n);
+        }
     }
+    glDisable(GL_PROGRAM_POINT_SIZE);
 
     drawShapes(t, momenta_, kMomentumShaftPx);
     drawShapes(t, over_, kVelocityShaftPx);

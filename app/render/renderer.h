@@ -35,10 +35,16 @@ struct SceneView {
 // Velocity arrows: metres of arrow per m/s; momentum arrows: metres per kg·m/s.
 constexpr double kVelocityArrowScale = 0.25;
 constexpr double kMomentumArrowScale = 0.15;
+// Blocks up to this size on screen (pixels) may be drawn as point sprites.
+constexpr double kMaxPointSpritePx = 64.0;
+// With more moving blocks than this, momentum arrows are drawn without heads (the velocity arrow
+// over each shows the same direction): a software rasteriser pays about as much for each small
+// triangle as for a large one.
+constexpr std::size_t kMomentumHeadsUpTo = 300;
 // Trails draw at most about this many pixels of length in all (cut at the same age: shorter tails
 // in a crowded scene) and this many segments (older points thinned out).
-constexpr double kTrailPixelBudget = 40000.0;
-constexpr int kTrailSegmentBudget = 4000;
+constexpr double kTrailPixelBudget = 30000.0;
+constexpr int kTrailSegmentBudget = 2500;
 
 class SceneRenderer {
   public:
@@ -64,21 +70,24 @@ class SceneRenderer {
     void drawShapes(const ClipTransform& t, const ShapeBatch& batch, float lineWidthPx);
     void drawVertices(const std::vector<ShapeVertex>& vertices, GLenum mode);
 
-    // Blocks are drawn in three instanced calls, one program each (block.frag's variants):
-    // walls and infinite masses with their pattern, moving blocks plain, ghosts as outlines.
+    // Blocks are drawn in up to six calls, one program each (block.frag's variants): walls and
+    // infinite masses with their pattern, moving blocks plain, ghosts as outlines; each as
+    // instanced quads, or as point sprites when small (see buildBlocks).
     enum BlockStyle { kPatterned, kPlain, kOutlineOnly, kBlockStyleCount };
+    enum BlockShape { kQuad, kPoint, kBlockShapeCount };
     struct BlockProgram {
         GLuint program = 0;
         GLint transform = -1, pixelsPerMetre = -1;
     };
-    BlockProgram blockPrograms_[kBlockStyleCount];
+    BlockProgram blockPrograms_[kBlockStyleCount][kBlockShapeCount];
     GLuint shapeProgram_ = 0;
-    GLuint blockVao_ = 0, cornerVbo_ = 0, instanceVbo_ = 0;
+    GLuint blockVao_ = 0, pointVao_ = 0, cornerVbo_ = 0, instanceVbo_ = 0;
     GLuint shapeVao_ = 0, shapeVbo_ = 0;
     GLint shapeTransform_ = -1;
     ShapeBatch under_;   // grid, trails
     ShapeBatch momenta_; // momentum arrows, over the blocks
     ShapeBatch over_;    // velocity arrows, the fling arrow
     float maxLineWidth_ = 1.0f;
-    std::vector<BlockInstance> blocks_[kBlockStyleCount];
+    double maxPointPx_ = 1.0; // the largest point sprite used for a block, pixels
+    std::vector<BlockInstance> blocks_[kBlockStyleCount][kBlockShapeCount];
 };
