@@ -226,18 +226,12 @@ void SceneRenderer::buildBlocks(const SceneView& view) {
         for (std::vector<BlockInstance>& list : shapes) list.clear();
     }
     const Camera& cam = *view.camera;
-    // A point sprite when the block is small, not too far from square (the sprite is a square
-    // around it; what lies outside is discarded) and wholly inside the framebuffer (points are
-    // clipped by their centre); a quad otherwise.
+    // Each block as a point sprite or a quad (drawsAsPointSprite says which).
     const auto add = [&](BlockStyle style, const BlockInstance& b) {
-        const double w = 2.0 * b.rect[2] * cam.pixelsPerMetre();
-        const double h = 2.0 * b.rect[3] * cam.pixelsPerMetre();
-        const Vec2 c = cam.worldToScreen({b.rect[0], b.rect[1]});
-        const double reach = std::max(w, h) * 0.5 + 2.0;
-        const bool point = std::max(w, h) + 2.0 <= maxPointPx_ &&
-                           std::max(w, h) <= 2.0 * std::min(w, h) + 4.0 && c.x - reach >= 0.0 &&
-                           c.y - reach >= 0.0 && c.x + reach <= view.displayWidth &&
-                           c.y + reach <= view.displayHeight;
+        const ScreenRect onScreen{0.0, 0.0, view.displayWidth, view.displayHeight};
+        const bool point = drawsAsPointSprite(
+            2.0 * b.rect[2] * cam.pixelsPerMetre(), 2.0 * b.rect[3] * cam.pixelsPerMetre(),
+            cam.worldToScreen({b.rect[0], b.rect[1]}), onScreen, maxPointPx_);
         blocks_[style][point ? kPoint : kQuad].push_back(b);
     };
 

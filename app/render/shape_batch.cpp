@@ -68,3 +68,13 @@ void ShapeBatch::segment(Vec2 a, Vec2 b, const Color& colorA, const Color& color
     segments_.push_back(
         {static_cast<float>(b.x), static_cast<float>(b.y), colorB.r, colorB.g, colorB.b, colorB.a});
 }
+
+bool drawsAsPointSprite(double widthPx, double heightPx, Vec2 centre, const ScreenRect& screen,
+                        double maxPointPx) {
+    const double side = std::max(widthPx, heightPx);
+    const double reach = side * 0.5 + 2.0;
+    return side + 2.0 <= maxPointPx && side <= 2.0 * std::min(widthPx, heightPx) + 4.0 &&
+           centre.x - reach >= screen.x && centre.y - reach >= screen.y &&
+           centre.x + reach <= screen.x + screen.width &&
+           centre.y + reach <= screen.y + screen.height;
+}

@@ -2,6 +2,7 @@
 // in one call: grid lines, the arena, arrows, trails. Pure logic; the renderer uploads it.
 #pragma once
 
+#include "camera.h"
 #include "palette.h"
 #include "vec2.h"
 
@@ -43,3 +44,11 @@ class ShapeBatch {
     std::vector<ShapeVertex> vertices_;
     std::vector<ShapeVertex> segments_; // pairs of ends
 };
+
+// Whether a block `widthPx` x `heightPx` on screen, centred at `centre` (screen pixels), is drawn
+// as a point sprite rather than a quad: it is small (the sprite, a square of its larger side
+// plus 2 px, is within `maxPointPx`), not far from square (the sprite's pixels outside the block
+// are discarded, and cost), and wholly inside `screen` with 2 px to spare (a point is clipped
+// away whole once its centre leaves the view).
+bool drawsAsPointSprite(double widthPx, double heightPx, Vec2 centre, const ScreenRect& screen,
+                        double maxPointPx);

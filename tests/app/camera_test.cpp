@@ -117,3 +117,16 @@ TEST(ShapeBatch, LineArrowIsOneSegmentAndAHeadTriangle) {
     EXPECT_TRUE(batch.vertices().empty());
     EXPECT_TRUE(batch.segmentVertices().empty());
 }
+
+TEST(ShapeBatch, SmallSquareishBlocksInsideTheViewAreDrawnAsPoints) {
+    const ScreenRect screen{0.0, 0.0, 1280.0, 720.0};
+    EXPECT_TRUE(drawsAsPointSprite(12.0, 12.0, {640.0, 360.0}, screen, 64.0));
+    EXPECT_TRUE(drawsAsPointSprite(20.0, 10.0, {640.0, 360.0}, screen, 64.0));  // 2:1 is fine
+    EXPECT_FALSE(drawsAsPointSprite(40.0, 4.0, {640.0, 360.0}, screen, 64.0));  // a thin bar
+    EXPECT_FALSE(drawsAsPointSprite(63.0, 63.0, {640.0, 360.0}, screen, 64.0)); // too big
+    EXPECT_FALSE(drawsAsPointSprite(12.0, 12.0, {640.0, 360.0}, screen, 1.0));  // no big points
+    // Near an edge (within half the side and 2 px): a quad, so it is clipped, not dropped.
+    EXPECT_TRUE(drawsAsPointSprite(12.0, 12.0, {8.0, 360.0}, screen, 64.0));
+    EXPECT_FALSE(drawsAsPointSprite(12.0, 12.0, {7.9, 360.0}, screen, 64.0));
+    EXPECT_FALSE(drawsAsPointSprite(12.0, 12.0, {640.0, 715.0}, screen, 64.0));
+}
