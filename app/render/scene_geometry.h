@@ -1,0 +1,83 @@
+// SceneGeometry: what the scene renderer draws, built on the CPU each frame from a SceneView
+// without any GL: the shape batches (grid, trails, arrows) and the block instances sorted by
+// style and by shape (quad or point sprite). Its rules keep the primitive count low, since a
+// software rasteriser (llvmpipe) pays about the same for each primitive however small: see the
+// constants below. SceneRenderer uploads and draws it.
+#pragma once
+
+#include "camera.h"
+#include "palette.h"
+#include "shape_batch.h"
+#include "trails.h"
+#include "world.h"
+
+#include <cstddef>
+#include <vector>
+
+struct SceneView {
+    const World* world = nullptr;
+    const Camera* camera = nullptr;
+    std::vector<Color> blockColors; // per block (palette or scene colour)
+    double displayWidth = 1280.0;   // screen pixels of the whole framebuffer
+    double displayHeight = 720.0;
+    int selected = -1;
+    const Trails* trails = nullptr; // drawn when set
+    bool vectors = false;           // velocity and momentum arrows
+    // Other worlds drawn as coloured outlines over this one (the methods side by side).
+    struct Ghosts {
+        const World* world = nullptr;
+        Color color;
+    };
+    std::vector<Ghosts> ghosts;
+    bool flingActive = false; // the fling arrow while right-dragging
+    Vec2 flingFrom, flingTo;
+};
+
+// Velocity arrows: metres of arrow per m/s; momentum arrows: metres per kg·m/s.
+constexpr double kVelocityArrowScale = 0.25;
+constexpr double kMomentumArrowScale = 0.15;
+// Blocks up to this size on screen (pixels) may be drawn as point sprites.
+constexpr double kMaxPointSpritePx = 64.0;
+// With more moving blocks than this, momentum arrows are drawn without heads (the velocity arrow
+// over each shows the same direction): a software rasteriser pays about as much for each small
+// triangle as for a large one.
+constexpr std::size_t kMomentumHeadsUpTo = 300;
+// Trails draw at most about this many pixels of length in all (cut at the same age: shorter tails
+// in a crowded scene) and this many segments (older points thinned out).
+constexpr double kTrailPixelBudget = 30000.0;
+constexpr int kTrailSegmentBudget = 2500;
+
+// Widths of what is drawn as GL lines, in pixels (whole pixels; the renderer draws 1 px where
+// the context has no wide lines).
+constexpr float kTrailWidthPx = 2.0f;
+constexpr float kVelocityShaftPx = 3.0f;
+constexpr float kMomentumShaftPx = 7.0f;
+
+// One block as the block shaders read it (an instance of a quad, or a point).
+struct BlockInstance {
+    float rect[4]; // centre xy, half size zw (m)
+    float fill[4];
+    float outline[4];
+    float style[2]; // outline width (px), pattern (0 none, 1 hatched, 2 striped)
+};
+// Which variant of block.frag draws a block: walls and infinite masses with their pattern,
+// moving blocks plain, the other methods' ghosts as outlines.
+enum BlockStyle { kPatterned, kPlain, kOutlineOnly, kBlockStyleCount };
+enum BlockShape { kQuad, kPoint, kBlockShapeCount };
+
+struct SceneGeometry {
+    ShapeBatch under;   // grid, trails (segments kTrailWidthPx wide)
+    ShapeBatch momenta; // momentum arrows, over the blocks (shafts kMomentumShaftPx wide)
+    ShapeBatch over;    // velocity arrows (shafts kVelocityShaftPx wide), the fling arrow
+    std::vector<BlockInstance> blocks[kBlockStyleCount][kBlockShapeCount];
+
+    // Rebuilds everything for `view`; blocks become point sprites where drawsAsPointSprite
+    // allows with sprites up to `maxPointPx` (1: never).
+    void build(const SceneView& view, double maxPointPx);
+
+  private:
+    void addGrid(const SceneView& view);
+    void addTrails(const SceneView& view, const Trails& trails);
+    void addArrows(const SceneView& view);
+    void addBlocks(const SceneView& view, double maxPointPx);
+};

@@ -1,0 +1,106 @@
+// The scene renderer's geometry rules (no GL): what a crowded scene costs a software rasteriser
+// is bounded (trail length and segments, headless momentum arrows, point sprites), and a small
+// scene keeps every detail.
+#include "scene_geometry.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace {
+
+// A gas of `columns` x `rows` blocks of 0.2 m in the default 20 m x 12 m world; its velocities
+// point in a fixed pattern of directions at 2 m/s.
+World gas(int columns, int rows) {
+    World w;
+    for (int r = 0; r < rows; ++r) {
+        for (int c = 0; c < columns; ++c) {
+            Block b;
+            b.position = {0.5 + 0.48 * c, 0.5 + 0.44 * r};
+            b.size = {0.2, 0.2};
+            b.mass = 1.0;
+            const double angle = 0.7 * (r * columns + c);
+            b.velocity = {2.0 * std::cos(angle), 2.0 * std::sin(angle)};
+            w.blocks.push_back(b);
+        }
+    }
+    return w;
+}
+
+struct Fixture {
+    World world;
+    Camera camera;
+    Trails trails;
+    SceneView view;
+
+    explicit Fixture(World w) : world(std::move(w)) {
+        camera.setViewport({0.0, 0.0, 1280.0, 720.0});
+        camera.fit(world.bounds, 20.0);
+        // 1.5 s of trail: each block circles 0.2 m around its place at 2 m/s (10 rad/s), and
+        // ends where it started.
+        std::vector<Vec2> home;
+        for (const Block& b : world.blocks) home.push_back(b.position);
+        for (int frame = 90; frame >= 0; --frame) {
+            const double angle = 10.0 * frame / 60.0;
+            for (std::size_t i = 0; i < home.size(); ++i)
+                world.blocks[i].position =
+                    home[i] + Vec2{0.2 * std::sin(angle), 0.2 * (1.0 - std::cos(angle))};
+            trails.record(world);
+        }
+        view.world = &world;
+        view.camera = &camera;
+        view.trails = &trails;
+        view.vectors = true;
+    }
+};
+
+double segmentPixels(const ShapeBatch& batch, const Camera& camera) {
+    double total = 0.0;
+    const auto& v = batch.segmentVertices();
+    for (std::size_t k = 0; k + 1 < v.size(); k += 2) {
+        total += std::hypot(v[k + 1].x - v[k].x, v[k + 1].y - v[k].y);
+    }
+    return total * camera.pixelsPerMetre();
+}
+
+TEST(SceneGeometry, ACrowdedSceneStaysWithinItsBudgets) {
+    Fixture f(gas(40, 25)); // 1,000 blocks
+    SceneGeometry g;
+    g.build(f.view, 64.0);
+    // Trails: at most the pixel budget (the chords of a circle are shorter than its arcs, which
+    // the budget counts), and the segment budget plus at most one per block (rounding of the
+    // stride).
+    EXPECT_GT(g.under.segmentVertices().size(), 0u);
+    EXPECT_LE(segmentPixels(g.under, f.camera), kTrailPixelBudget);
+    EXPECT_GT(segmentPixels(g.under, f.camera), 0.5 * kTrailPixelBudget); // cut, not dropped
+    EXPECT_LE(g.under.segmentVertices().size() / 2, std::size_t(kTrailSegmentBudget) + 1000);
+    // Momentum arrows: shafts only; velocity arrows: a shaft and a head each.
+    EXPECT_TRUE(g.momenta.vertices().empty());
+    EXPECT_EQ(g.momenta.segmentVertices().size(), 2u * 1000);
+    EXPECT_EQ(g.over.segmentVertices().size(), 2u * 1000);
+    EXPECT_EQ(g.over.vertices().size(), 3u * 1000);
+    // Every block is small and inside the view: all points; the four walls are quads.
+    EXPECT_EQ(g.blocks[kPlain][kPoint].size(), 1000u);
+    EXPECT_TRUE(g.blocks[kPlain][kQuad].empty());
+    EXPECT_EQ(g.blocks[kPatterned][kQuad].size(), 4u);
+    // Without point sprites (a driver that has none), the same blocks are quads.
+    g.build(f.view, 1.0);
+    EXPECT_EQ(g.blocks[kPlain][kQuad].size(), 1000u);
+}
+
+TEST(SceneGeometry, ASmallSceneKeepsWholeTrailsAndArrowHeads) {
+    Fixture f(gas(4, 2)); // 8 blocks
+    SceneGeometry g;
+    g.build(f.view, 64.0);
+    // Every stored point of every trail (one every other frame: 46 points, 45 segments each),
+    // momentum arrows with heads.
+    ASSERT_EQ(f.trails.length(), 46);
+    EXPECT_EQ(g.under.segmentVertices().size(), 2u * 8 * 45);
+    EXPECT_EQ(g.momenta.vertices().size(), 3u * 8);
+    // The trail fades from 0.75 at the block to 0.75 / 46 at its oldest point.
+    EXPECT_FLOAT_EQ(g.under.segmentVertices().front().a, 0.75f);
+    EXPECT_FLOAT_EQ(g.under.segmentVertices()[2 * 45 - 1].a, 0.75f / 46.0f);
+}
+
+} // namespace
