@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-void BroadPhase::buildFromBoxes(const Bounds& bounds, const std::vector<Block>& blocks) {
+void BroadPhase::sizeGrid(const Bounds& bounds, const std::vector<Block>& blocks) {
     // Cell size: twice the median moving block's extent (a block then spans at most 2x2 cells),
     // but no more cells than about four per block, so huge empty worlds stay cheap.
-    std::vector<double> extents;
-    extents.reserve(blocks.size());
+    std::vector<double>& extents = extents_;
+    extents.clear();
     for (const Block& b : blocks)
         if (b.kind != BodyKind::Static) extents.push_back(std::max(b.size.x, b.size.y));
     const Vec2 span = bounds.max - bounds.min;
@@ -22,80 +22,94 @@ void BroadPhase::buildFromBoxes(const Bounds& bounds, const std::vector<Block>& 
     inverseCellSize_ = 1.0 / cellSize;
     columns_ = std::max(1, static_cast<int>(std::ceil(span.x * inverseCellSize_)));
     rows_ = std::max(1, static_cast<int>(std::ceil(span.y * inverseCellSize_)));
-    const size_t cellCount = static_cast<size_t>(columns_) * rows_;
-
-    // Counting sort of the entries into cells.
-    const size_t n = boxes_.size();
-    ranges_.resize(n);
-    cellStart_.assign(cellCount + 1, 0);
-    for (size_t i = 0; i < n; ++i) {
-        const CellRange r = ranges_[i] = rangeOf(boxes_[i]);
-        for (int y = r.y0; y <= r.y1; ++y)
-            for (int x = r.x0; x <= r.x1; ++x) ++cellStart_[cellIndex(x, y) + 1];
-    }
-    for (size_t c = 0; c < cellCount; ++c) cellStart_[c + 1] += cellStart_[c];
-    sorted_.resize(cellStart_[cellCount]);
-    std::vector<size_t>& fill = overflowUsed_; // reused as the fill cursor, cleared below
-    fill.assign(cellStart_.begin(), cellStart_.end() - 1);
-    for (size_t i = 0; i < n; ++i) {
-        const CellRange& r = ranges_[i];
-        for (int y = r.y0; y <= r.y1; ++y)
-            for (int x = r.x0; x <= r.x1; ++x)
-                sorted_[fill[cellIndex(x, y)]++] = {boxes_[i], static_cast<int>(i)};
-    }
-    fill.clear();
-    if (overflow_.size() != cellCount) overflow_.assign(cellCount, {});
-    for (auto& list : overflow_)
-        if (!list.empty()) list.clear();
+    cells_.assign(static_cast<size_t>(columns_) * rows_ + 1, Cell{});
+    overflowInUse_ = 0;
 }
 
-BroadPhase::CellRange BroadPhase::rangeOf(const Aabb& box) const {
-    auto clampCell = [](double v, int count) {
-        if (!(v > 0.0)) return 0; // also catches NaN
-        return v >= count - 1 ? count - 1 : static_cast<int>(v);
-    };
-    // Widened by the touch tolerance, like meets(): boxes that nearly touch share a cell.
-    const double t = kTouchTolerance;
-    return {clampCell((box.min.x - t - origin_.x) * inverseCellSize_, columns_),
-            clampCell((box.min.y - t - origin_.y) * inverseCellSize_, rows_),
-            clampCell((box.max.x + t - origin_.x) * inverseCellSize_, columns_),
-            clampCell((box.max.y + t - origin_.y) * inverseCellSize_, rows_)};
+void BroadPhase::fillCells() {
+    // Each cell's count becomes the end of its slice (a running sum); the last cell ends them all.
+    const size_t cellCount = cells_.size() - 1;
+    for (size_t c = 1; c < cellCount; ++c) cells_[c].start += cells_[c - 1].start;
+    cells_[cellCount].start = cells_[cellCount - 1].start;
+    // One slot more than the slices hold: a trash slot for the branch-free fill below.
+    const std::uint32_t trash = cells_[cellCount].start;
+    sorted_.resize(size_t{trash} + 1);
+    // Filled from the end, blocks in reverse order: each slice ends up in block order, and each
+    // cell's cursor ends up at the start of its slice.
+    for (size_t i = boxes_.size(); i-- > 0;) {
+        const CellRange r = ranges_[i];
+        const FloatBox box = floatBoxOf(boxes_[i]);
+        const auto index = static_cast<int>(i);
+        if (isSmall(r)) {
+            // At most 2x2 cells, without branches (as in build()): a cell not in the range
+            // aliases one that is, keeps its cursor, and its entry goes to the trash slot.
+            const int dx = r.x1 - r.x0, dy = r.y1 - r.y0;
+            const size_t c = cellIndex(r.x0, r.y0), up = static_cast<size_t>(dy) * columns_;
+            auto put = [&](size_t cell, int present, std::uint32_t flags) {
+                std::uint32_t& cursor = cells_[cell].start;
+                cursor -= present;
+                sorted_[present ? cursor : trash] = {box, tagOf(index) | flags};
+            };
+            put(c, 1, kFirstColumn | kFirstRow);
+            put(c + dx, dx, kFirstRow);
+            put(c + up, dy, kFirstColumn);
+            put(c + dx + up, dx & dy, 0);
+            continue;
+        }
+        for (int y = r.y0; y <= r.y1; ++y)
+            for (int x = r.x0; x <= r.x1; ++x)
+                sorted_[--cells_[cellIndex(x, y)].start] = {box, tagOf(index, x, y, r)};
+    }
+}
+
+std::vector<BroadPhase::Entry>& BroadPhase::overflowList(size_t c) {
+    Cell& cell = cells_[c];
+    if (!cell.overflow) {
+        if (overflowInUse_ == overflow_.size()) overflow_.emplace_back();
+        overflow_[overflowInUse_].clear();
+        cell.overflow = static_cast<std::uint32_t>(++overflowInUse_);
+    }
+    return overflow_[cell.overflow - 1];
 }
 
 BroadPhase::Entry* BroadPhase::find(int x, int y, int index) {
     const size_t c = cellIndex(x, y);
-    for (size_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k)
-        if (sorted_[k].index == index) return &sorted_[k];
-    for (Entry& e : overflow_[c])
-        if (e.index == index) return &e;
+    for (std::uint32_t k = cells_[c].start; k < cells_[c + 1].start; ++k)
+        if (sorted_[k].tag != kDead && sorted_[k].index() == index) return &sorted_[k];
+    if (cells_[c].overflow)
+        for (Entry& e : overflow_[cells_[c].overflow - 1])
+            if (e.index() == index) return &e;
     return nullptr;
 }
 
 void BroadPhase::set(int index, const Aabb& box) {
-    boxes_[index] = box;
+    const CellRange old = rangeOf(boxes_[index]);
     const CellRange range = rangeOf(box);
-    CellRange& old = ranges_[index];
-    // Refresh the box in the cells it stays in; leave the cells it no longer covers.
+    const FloatBox floatBox = floatBoxOf(box);
+    boxes_[index] = box;
+    // Refresh the box (and the first-column/row flags) in the cells it stays in; leave the cells
+    // it no longer covers.
     for (int y = old.y0; y <= old.y1; ++y) {
         for (int x = old.x0; x <= old.x1; ++x) {
             Entry* e = find(x, y, index);
             if (!e) continue;
             if (range.has(x, y)) {
-                e->box = box;
+                *e = {floatBox, tagOf(index, x, y, range)};
                 continue;
             }
-            std::vector<Entry>& list = overflow_[cellIndex(x, y)];
-            if (e >= list.data() && e < list.data() + list.size()) {
-                *e = list.back();
-                list.pop_back();
+            const Cell& cell = cells_[cellIndex(x, y)];
+            std::vector<Entry>* list = cell.overflow ? &overflow_[cell.overflow - 1] : nullptr;
+            if (list && e >= list->data() && e < list->data() + list->size()) {
+                *e = list->back();
+                list->pop_back();
             } else {
-                e->index = -1;
+                e->tag = kDead;
             }
         }
     }
     // Enter the cells it newly covers.
     for (int y = range.y0; y <= range.y1; ++y)
         for (int x = range.x0; x <= range.x1; ++x)
-            if (!old.has(x, y)) overflow_[cellIndex(x, y)].push_back({box, index});
-    old = range;
+            if (!old.has(x, y))
+                overflowList(cellIndex(x, y)).push_back({floatBox, tagOf(index, x, y, range)});
 }

@@ -5,13 +5,24 @@
 // Layout: build() sorts all boxes into cells at once (a counting sort into one contiguous array,
 // each cell a slice of it), so queries read memory in order. set() moves one block later: a
 // block that leaves a cell is marked dead in that slice, a block that enters a cell goes into
-// that cell's small overflow list. Each cell stores copies of its boxes. A pair of boxes sharing
-// several cells is reported only from the first cell they share (the lowest column and row of the
-// intersection of their cell ranges), so nothing is reported twice and queries keep no state.
+// that cell's small overflow list. A pair of boxes sharing several cells is reported only from the
+// first cell they share (the lowest column and row of the intersection of their cell ranges), so
+// nothing is reported twice and queries keep no state.
+//
+// Speed: a large world's queries wait on memory and on mispredicted branches, so a cell entry is
+// small (20 bytes): a copy of the box in floats, rounded outward, and a tag: the block index (up
+// to 2^30 blocks) with two flags saying whether this cell is the first column or row of the
+// block's range (the test for the first shared cell). A query tests an entry against the float
+// box, the flags and the asking block in one branch that nearly always goes the same way (almost
+// every entry fails), and only then reads the registered double box for the exact test: the
+// float box contains it, so the answers, and their order, are exactly those of double boxes.
+// The slices of a row's cells are adjacent, so a query scans each row of its range as one span.
 #pragma once
 
 #include "collision.h"
 
+#include <cfloat>
+#include <cstdint>
 #include <vector>
 
 class BroadPhase {
@@ -20,9 +31,29 @@ class BroadPhase {
     // with the box boxOf(i).
     template <class BoxOf>
     void build(const Bounds& bounds, const std::vector<Block>& blocks, BoxOf&& boxOf) {
-        boxes_.resize(blocks.size());
-        for (size_t i = 0; i < blocks.size(); ++i) boxes_[i] = boxOf(static_cast<int>(i));
-        buildFromBoxes(bounds, blocks);
+        sizeGrid(bounds, blocks);
+        // Counting sort of the entries into cells, pass 1: count the entries of each cell.
+        const size_t n = blocks.size();
+        boxes_.resize(n);
+        ranges_.resize(n);
+        for (size_t i = 0; i < n; ++i) {
+            const Aabb box = boxes_[i] = boxOf(static_cast<int>(i));
+            const CellRange r = ranges_[i] = rangeOf(box);
+            if (isSmall(r)) {
+                // At most 2x2 cells, without branches: a cell that is not in the range aliases
+                // one that is, and gets + 0.
+                const int dx = r.x1 - r.x0, dy = r.y1 - r.y0;
+                const size_t c = cellIndex(r.x0, r.y0), up = static_cast<size_t>(dy) * columns_;
+                ++cells_[c].start;
+                cells_[c + dx].start += dx;
+                cells_[c + up].start += dy;
+                cells_[c + dx + up].start += dx & dy;
+                continue;
+            }
+            for (int y = r.y0; y <= r.y1; ++y)
+                for (int x = r.x0; x <= r.x1; ++x) ++cells_[cellIndex(x, y)].start;
+        }
+        fillCells();
     }
     // Registers block `index` to `box` instead of its current box.
     void set(int index, const Aabb& box);
@@ -30,7 +61,12 @@ class BroadPhase {
 
     // Calls visit(j) once for every registered block j whose box meets `query` (touching counts:
     // resting contacts and faces about to meet are candidates).
-    template <class Visit> void query(const Aabb& query, Visit&& visit) const;
+    template <class Visit> void query(const Aabb& query, Visit&& visit) const {
+        queryOthers(query, -1, visit);
+    }
+    // The same, leaving out block `self` (a block asking for its neighbours: it is found in
+    // every cell of its own path, and skipping it there is cheaper than visiting it).
+    template <class Visit> void queryOthers(const Aabb& query, int self, Visit&& visit) const;
     // Calls visit(i, j) once for every pair of registered blocks whose boxes overlap with
     // positive area.
     template <class Visit> void forEachOverlappingPair(Visit&& visit) const {
@@ -46,30 +82,75 @@ class BroadPhase {
         int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
         bool has(int x, int y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
     };
+    // A box in floats, rounded outward: it contains the double box it stands for.
+    struct FloatBox {
+        float minX, minY, maxX, maxY;
+    };
+    // Tag bits: the block index shifted left by two, and whether this cell is the block's first
+    // column or row. kDead: the block left this cell.
+    static constexpr std::uint32_t kFirstColumn = 1, kFirstRow = 2, kDead = ~std::uint32_t{0};
     struct Entry {
-        Aabb box;
-        int index; // -1: the block left this cell
+        FloatBox box;
+        std::uint32_t tag;
+        int index() const { return static_cast<int>(tag >> 2); }
+    };
+    static_assert(sizeof(Entry) == 20, "a cell entry is 20 bytes");
+    struct Cell {
+        std::uint32_t start = 0;    // first entry in sorted_ (the next cell's start ends it)
+        std::uint32_t overflow = 0; // 0, or 1 + the slot of its list in overflow_
     };
     // The entries of one cell: its slice of the sorted array, then its overflow list.
     struct CellView {
         const Entry* sorted;
         size_t sortedCount;
-        const std::vector<Entry>& overflow;
-        size_t size() const { return sortedCount + overflow.size(); }
+        const Entry* overflow;
+        size_t overflowCount;
+        size_t size() const { return sortedCount + overflowCount; }
         const Entry& operator[](size_t k) const {
             return k < sortedCount ? sorted[k] : overflow[k - sortedCount];
         }
     };
 
-    void buildFromBoxes(const Bounds& bounds, const std::vector<Block>& blocks);
+    // Chooses the cell size and the grid's extent; every cell empty.
+    void sizeGrid(const Bounds& bounds, const std::vector<Block>& blocks);
+    // Counting sort, pass 2: turns the counts into slices and fills them in block order.
+    void fillCells();
     template <class Visit, class Test> void forEachPair(Visit& visit, Test test) const;
-    CellRange rangeOf(const Aabb& box) const;
+    CellRange rangeOf(const Aabb& box) const {
+        // v clamped to [0, count - 1] (NaN to 0), then truncated: the cell's column or row.
+        auto clampCell = [](double v, int count) {
+            const double last = count - 1;
+            v = 0.0 < v ? v : 0.0;
+            return static_cast<int>(last < v ? last : v);
+        };
+        // Widened by the touch tolerance, like meets(): boxes that nearly touch share a cell.
+        const double t = kTouchTolerance;
+        return {clampCell((box.min.x - t - origin_.x) * inverseCellSize_, columns_),
+                clampCell((box.min.y - t - origin_.y) * inverseCellSize_, rows_),
+                clampCell((box.max.x + t - origin_.x) * inverseCellSize_, columns_),
+                clampCell((box.max.y + t - origin_.y) * inverseCellSize_, rows_)};
+    }
     size_t cellIndex(int x, int y) const { return static_cast<size_t>(y) * columns_ + x; }
     CellView cell(int x, int y) const {
         const size_t c = cellIndex(x, y);
-        return {sorted_.data() + cellStart_[c], cellStart_[c + 1] - cellStart_[c], overflow_[c]};
+        const Cell& first = cells_[c];
+        CellView view{sorted_.data() + first.start, cells_[c + 1].start - first.start, nullptr, 0};
+        if (first.overflow) {
+            const std::vector<Entry>& list = overflow_[first.overflow - 1];
+            view.overflow = list.data();
+            view.overflowCount = list.size();
+        }
+        return view;
     }
+    // Spans at most 2x2 cells (nearly every block: the cell size is twice the median extent).
+    static bool isSmall(const CellRange& r) { return r.x1 - r.x0 <= 1 && r.y1 - r.y0 <= 1; }
+    std::vector<Entry>& overflowList(size_t c);
     Entry* find(int x, int y, int index);
+    static std::uint32_t tagOf(int index) { return static_cast<std::uint32_t>(index) << 2; }
+    static std::uint32_t tagOf(int index, int x, int y, const CellRange& range) {
+        return tagOf(index) | (x == range.x0 ? kFirstColumn : 0u) |
+               (y == range.y0 ? kFirstRow : 0u);
+    }
     // Boxes that touch, or miss each other by less than kTouchTolerance: a box computed one way
     // may differ by rounding from the same box computed another, and no contact may be lost.
     static bool meets(const Aabb& a, const Aabb& b) {
@@ -77,32 +158,81 @@ class BroadPhase {
         return a.max.x >= b.min.x - t && a.min.x <= b.max.x + t && a.max.y >= b.min.y - t &&
                a.min.y <= b.max.y + t;
     }
-    // True in exactly one of the cells that the ranges a and b share.
-    static bool firstSharedCell(int x, int y, const CellRange& a, const CellRange& b) {
-        return x == std::max(a.x0, b.x0) && y == std::max(a.y0, b.y0);
+    // A float no greater (floatBelow) or no less (floatAbove) than v: v moved outward by more
+    // than rounding to float can move it back (half a float ulp is at most 2^-24·|v|, the
+    // absolute 2^-120 covers the subnormals), kept inside the float range on the side it moved
+    // away from. Infinities stay infinite; NaN stays NaN (and then meets nothing, as in double).
+    static float floatBelow(double v) {
+        const double w = (v > 0.0 ? v * (1.0 - 0x1p-22) : v * (1.0 + 0x1p-22)) - 0x1p-120;
+        return static_cast<float>(w > FLT_MAX ? FLT_MAX : w);
     }
+    static float floatAbove(double v) {
+        const double w = (v < 0.0 ? v * (1.0 - 0x1p-22) : v * (1.0 + 0x1p-22)) + 0x1p-120;
+        return static_cast<float>(w < -FLT_MAX ? -FLT_MAX : w);
+    }
+    static FloatBox floatBoxOf(const Aabb& b) {
+        return {floatBelow(b.min.x), floatBelow(b.min.y), floatAbove(b.max.x), floatAbove(b.max.y)};
+    }
+    static Aabb aabbOf(const FloatBox& f) { return {{f.minX, f.minY}, {f.maxX, f.maxY}}; }
 
     Vec2 origin_;
     double inverseCellSize_ = 1.0;
     int columns_ = 1, rows_ = 1;
-    std::vector<size_t> cellStart_;            // slice of sorted_ per cell (columns*rows + 1)
+    std::vector<Cell> cells_;                  // columns*rows + 1 (the last one ends the array)
     std::vector<Entry> sorted_;                // entries sorted by cell
-    std::vector<std::vector<Entry>> overflow_; // entries added by set(), per cell
-    std::vector<size_t> overflowUsed_;         // cells whose overflow list is not empty
-    std::vector<Aabb> boxes_;                  // registered box per block
-    std::vector<CellRange> ranges_;            // cells each block is in
+    std::vector<std::vector<Entry>> overflow_; // lists of entries added by set(), reused
+    size_t overflowInUse_ = 0;                 // lists of overflow_ owned by a cell
+    std::vector<Aabb> boxes_;                  // registered box per block (in rangeOf(box) cells)
+    std::vector<CellRange> ranges_;            // scratch of build: rangeOf(boxes_[i])
+    std::vector<double> extents_;              // scratch of sizeGrid
 };
 
-template <class Visit> void BroadPhase::query(const Aabb& query, Visit&& visit) const {
+template <class Visit>
+void BroadPhase::queryOthers(const Aabb& query, int self, Visit&& visit) const {
     const CellRange range = rangeOf(query);
+    // meets(box, query) for every box inside an entry's float box implies the float test below:
+    // the query, widened by the tolerance in double as meets() does, then rounded outward.
+    constexpr double t = kTouchTolerance;
+    const float minX = floatBelow(query.min.x - t), minY = floatBelow(query.min.y - t);
+    const float maxX = floatAbove(query.max.x + t), maxY = floatAbove(query.max.y + t);
+    // Visits the entries [begin, end) of cells in the query's first column (or not) and first
+    // row (or not). The first shared cell of the query and an entry: its column is the larger of
+    // their first columns, so (the cell being in both ranges) the query's first column or the
+    // entry's; the same for rows.
+    auto scan = [&](const Entry* begin, const Entry* end, bool firstColumn, bool firstRow) {
+        const std::uint32_t need = (firstColumn ? 0 : kFirstColumn) | (firstRow ? 0 : kFirstRow);
+        for (const Entry* e = begin; e != end; ++e) {
+            // Every test that needs no more than the entry in one expression with non-short-
+            // circuit &: a single branch, nearly always taken the same way (few entries pass;
+            // `self`, which would pass in each of its cells, is left out here).
+            const FloatBox& f = e->box;
+            const bool candidate = (f.maxX >= minX) & (f.minX <= maxX) & (f.maxY >= minY) &
+                                   (f.minY <= maxY) & ((e->tag & need) == need) &
+                                   ((e->tag >> 2) != static_cast<std::uint32_t>(self));
+            if (!candidate || e->tag == kDead) continue;
+            const int j = e->index();
+            if (meets(boxes_[j], query)) visit(j);
+        }
+    };
     for (int y = range.y0; y <= range.y1; ++y) {
+        const bool firstRow = y == range.y0;
+        const size_t first = cellIndex(range.x0, y), last = cellIndex(range.x1, y);
+        // The slices of a row's cells lie next to each other in sorted_: one span, unless a cell
+        // has an overflow list (whose entries come right after its slice).
+        bool overflow = false;
+        for (size_t c = first; c <= last; ++c) overflow |= cells_[c].overflow != 0;
+        if (!overflow) {
+            const Entry* entries = sorted_.data();
+            scan(entries + cells_[first].start, entries + cells_[first + 1].start, true, firstRow);
+            scan(entries + cells_[first + 1].start, entries + cells_[last + 1].start, false,
+                 firstRow);
+            continue;
+        }
         for (int x = range.x0; x <= range.x1; ++x) {
             const CellView entries = cell(x, y);
-            for (size_t k = 0, n = entries.size(); k < n; ++k) {
-                const Entry& e = entries[k];
-                if (e.index < 0 || !meets(e.box, query)) continue;
-                if (firstSharedCell(x, y, range, ranges_[e.index])) visit(e.index);
-            }
+            const bool firstColumn = x == range.x0;
+            scan(entries.sorted, entries.sorted + entries.sortedCount, firstColumn, firstRow);
+            scan(entries.overflow, entries.overflow + entries.overflowCount, firstColumn, firstRow);
         }
     }
 }
@@ -114,12 +244,16 @@ template <class Visit, class Test> void BroadPhase::forEachPair(Visit& visit, Te
             const size_t n = entries.size();
             for (size_t a = 0; a < n; ++a) {
                 const Entry& ea = entries[a];
-                if (ea.index < 0) continue;
+                if (ea.tag == kDead) continue;
+                const Aabb fa = aabbOf(ea.box);
                 for (size_t b = a + 1; b < n; ++b) {
                     const Entry& eb = entries[b];
-                    if (eb.index < 0 || !test(ea.box, eb.box)) continue;
-                    if (firstSharedCell(x, y, ranges_[ea.index], ranges_[eb.index]))
-                        visit(ea.index, eb.index);
+                    // The test on the float boxes first: both tests are monotone, so it holds
+                    // whenever it holds for the double boxes inside them.
+                    if (eb.tag == kDead || !test(fa, aabbOf(eb.box))) continue;
+                    if (!test(boxes_[ea.index()], boxes_[eb.index()])) continue;
+                    if (((ea.tag | eb.tag) & kFirstColumn) && ((ea.tag | eb.tag) & kFirstRow))
+                        visit(ea.index(), eb.index());
                 }
             }
         }

@@ -83,14 +83,8 @@ Impact timeOfImpact(const Aabb& a, Vec2 velocityA, const Aabb& b, Vec2 velocityB
     return impact;
 }
 
-WallImpact timeOfWallImpact(const Aabb& box, Vec2 velocity, const Bounds& bounds, double maxTime) {
-    // Most boxes stay well inside the walls over the window: no division needed.
-    const Vec2 travel = velocity * maxTime;
-    if (box.min.x + std::min(travel.x, 0.0) > bounds.min.x &&
-        box.max.x + std::max(travel.x, 0.0) < bounds.max.x &&
-        box.min.y + std::min(travel.y, 0.0) > bounds.min.y &&
-        box.max.y + std::max(travel.y, 0.0) < bounds.max.y)
-        return {};
+WallImpact timeOfWallImpactNearWalls(const Aabb& box, Vec2 velocity, const Bounds& bounds,
+                                     double maxTime) {
     double times[2] = {kNever, kNever};
     for (int axis = 0; axis < 2; ++axis) {
         const double v = velocity[axis];

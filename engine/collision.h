@@ -76,6 +76,19 @@ struct WallImpact {
 };
 // Time at which a moving box first touches a wall of the bounds, within [0, maxTime]; a box
 // already touching a wall and moving into it reports time 0.
-WallImpact timeOfWallImpact(const Aabb& box, Vec2 velocity, const Bounds& bounds, double maxTime);
+// Inline: most boxes stay well inside the walls over the window, and then no division is needed;
+// timeOfWallImpactNearWalls (collision.cpp) does the rest.
+WallImpact timeOfWallImpactNearWalls(const Aabb& box, Vec2 velocity, const Bounds& bounds,
+                                     double maxTime);
+inline WallImpact timeOfWallImpact(const Aabb& box, Vec2 velocity, const Bounds& bounds,
+                                   double maxTime) {
+    const Vec2 travel = velocity * maxTime;
+    if (box.min.x + std::min(travel.x, 0.0) > bounds.min.x &&
+        box.max.x + std::max(travel.x, 0.0) < bounds.max.x &&
+        box.min.y + std::min(travel.y, 0.0) > bounds.min.y &&
+        box.max.y + std::max(travel.y, 0.0) < bounds.max.y)
+        return {};
+    return timeOfWallImpactNearWalls(box, velocity, bounds, maxTime);
+}
 // The wall a box moving with `velocity` hits along `axis` (its sign picks the side).
 Wall wallOnAxis(int axis, double velocity);

@@ -36,8 +36,7 @@ void findFirstImpact(SubstepContext& ctx, int i, double remaining, const Aabb& p
         first.time = wall.time;
         first.wallAxes = wall.axes;
     }
-    ctx.broadPhase.query(path, [&](int j) {
-        if (j == i) return;
+    ctx.broadPhase.queryOthers(path, i, [&](int j) {
         // The others hold still: only a block the path reaches (touching counts) can be hit.
         const Aabb other = aabbOf(blocks[j]);
         if (other.min.x > path.max.x || other.max.x < path.min.x || other.min.y > path.max.y ||

@@ -62,6 +62,33 @@ void advance(SubstepContext& ctx, Method method) {
     }
 }
 
+// Each dynamic block's share of the totals (kinematic and static blocks: infinite mass, left out).
+Vec2 momentumOf(const Block& b) {
+    return b.mass * b.velocity;
+}
+double kineticEnergyOf(const Block& b) {
+    return 0.5 * b.mass * lengthSquared(b.velocity);
+}
+double potentialEnergyOf(const World& world, const Block& b) {
+    return -b.mass * dot(world.settings.gravity, b.position - world.bounds.min);
+}
+
+// totalMomentum, kineticEnergy and potentialEnergy in one pass over the blocks (the same sums in
+// the same order, so the same bits).
+void addTotals(const World& world, StepStats& stats) {
+    Vec2 p;
+    double kinetic = 0.0, potential = 0.0;
+    for (const Block& b : world.blocks) {
+        if (!b.isDynamic()) continue;
+        p += momentumOf(b);
+        kinetic += kineticEnergyOf(b);
+        potential += potentialEnergyOf(world, b);
+    }
+    stats.momentum = p;
+    stats.kineticEnergy = kinetic;
+    stats.potentialEnergy = potential;
+}
+
 // The broad phase keeps its buffers between steps (a cache only: results never depend on it).
 thread_local BroadPhase scratchBroadPhase;
 
@@ -92,9 +119,7 @@ StepStats World::step(std::vector<CollisionRecord>* log) {
     ++frame;
 
     // 4. Statistics of the new state.
-    stats.momentum = totalMomentum(*this);
-    stats.kineticEnergy = kineticEnergy(*this);
-    stats.potentialEnergy = potentialEnergy(*this);
+    addTotals(*this, stats);
     stats.maxPenetration = settings.measureOverlap ? std::max(maxPenetrationSeen, maxOverlap(*this))
                                                    : maxPenetrationSeen;
     const auto wallEnd = std::chrono::steady_clock::now();
@@ -105,21 +130,21 @@ StepStats World::step(std::vector<CollisionRecord>* log) {
 Vec2 totalMomentum(const World& world) {
     Vec2 p;
     for (const Block& b : world.blocks)
-        if (b.isDynamic()) p += b.mass * b.velocity;
+        if (b.isDynamic()) p += momentumOf(b);
     return p;
 }
 
 double kineticEnergy(const World& world) {
     double e = 0.0;
     for (const Block& b : world.blocks)
-        if (b.isDynamic()) e += 0.5 * b.mass * lengthSquared(b.velocity);
+        if (b.isDynamic()) e += kineticEnergyOf(b);
     return e;
 }
 
 double potentialEnergy(const World& world) {
     double e = 0.0;
     for (const Block& b : world.blocks)
-        if (b.isDynamic()) e -= b.mass * dot(world.settings.gravity, b.position - world.bounds.min);
+        if (b.isDynamic()) e += potentialEnergyOf(world, b);
     return e;
 }
 
