@@ -85,15 +85,6 @@ void applyAction(App& app, Action action) {
     }
 }
 
-void noteFrameShown(App& app, double realSeconds) {
-    if (!(realSeconds > 0.0)) return;
-    const double ms = realSeconds * 1000.0;
-    app.frameMsSmoothed =
-        app.framesShown == 0 ? ms : app.frameMsSmoothed + (ms - app.frameMsSmoothed) / 30.0;
-    ++app.framesShown;
-    app.secondsShown += realSeconds;
-}
-
 void logStateChanges(App& app) {
     const LoggedState now = snapshotForLog(app);
     if (app.verbose && app.loggedValid) {

@@ -19,8 +19,6 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
                int framebufferHeight);
 // Does what a key binding says (also used by the panel's buttons).
 void applyAction(App& app, Action action);
-// The window showed a frame `realSeconds` after the previous one (its pace, for Statistics).
-void noteFrameShown(App& app, double realSeconds);
 // Prints the --verbose lines for what changed since the last call.
 void logStateChanges(App& app);
 

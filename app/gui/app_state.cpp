@@ -265,6 +265,15 @@ bool setBlockSize(App& app, int index, Vec2 size) {
     return true;
 }
 
+void noteFrameShown(App& app, double realSeconds) {
+    if (!(realSeconds > 0.0)) return;
+    const double ms = realSeconds * 1000.0;
+    app.frameMsSmoothed =
+        app.framesShown == 0 ? ms : app.frameMsSmoothed + (ms - app.frameMsSmoothed) / 30.0;
+    ++app.framesShown;
+    app.secondsShown += realSeconds;
+}
+
 Color blockDisplayColor(const App& app, int index) {
     if (index < 0 || index >= static_cast<int>(app.world.blocks.size())) return {};
     const std::size_t i = static_cast<std::size_t>(index);

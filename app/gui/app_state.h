@@ -119,6 +119,8 @@ void stepSimulation(App& app);
 // Advances the fixed-step clock by `realSeconds` and runs the due frames (none while paused or
 // while the mouse holds a block). Returns the number of frames run.
 int advanceSimulation(App& app, double realSeconds);
+// The window showed a frame `realSeconds` after the previous one (its pace, for Statistics).
+void noteFrameShown(App& app, double realSeconds);
 // Goes back (or forward) to frame `frame` of the timeline; false when it is not recorded.
 // Stepping from there replays, bit for bit, unless something is changed first.
 bool scrubTo(App& app, std::uint64_t frame);

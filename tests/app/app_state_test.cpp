@@ -272,6 +272,20 @@ TEST(Trails, AgeWithinLengthCutsAllTrailsAtTheSameAge) {
     EXPECT_EQ(trails.ageWithinLength(w, 100.0), 0);
 }
 
+TEST(AppFrame, FramesShownAreCountedAndSmoothed) {
+    // The window's pace for Statistics: the first frame sets the average, later ones move it by
+    // 1/30 of the difference; offscreen runs never call this (the readout stays hidden at 0).
+    App app;
+    EXPECT_EQ(app.frameMsSmoothed, 0.0);
+    noteFrameShown(app, 0.020);
+    EXPECT_DOUBLE_EQ(app.frameMsSmoothed, 20.0);
+    noteFrameShown(app, 0.050);
+    EXPECT_DOUBLE_EQ(app.frameMsSmoothed, 21.0);
+    noteFrameShown(app, 0.0); // no time passed: not a frame
+    EXPECT_EQ(app.framesShown, 2);
+    EXPECT_DOUBLE_EQ(app.secondsShown, 0.070);
+}
+
 TEST(AppConfig, RoundTripsAndIgnoresNonsense) {
     AppConfig c;
     c.lastScene = "/home/me/scenes/x.json";
