@@ -8,11 +8,17 @@ void BroadPhase::sizeGrid(const Bounds& bounds, const std::vector<Block>& blocks
     // but no more cells than about four per block, so huge empty worlds stay cheap.
     std::vector<double>& extents = extents_;
     extents.clear();
-    for (const Block& b : blocks)
-        if (b.kind != BodyKind::Static) extents.push_back(std::max(b.size.x, b.size.y));
+    bool allEqual = true; // then the median is any of them (a gas of equal blocks): no selection
+    for (const Block& b : blocks) {
+        if (b.kind == BodyKind::Static) continue;
+        extents.push_back(std::max(b.size.x, b.size.y));
+        allEqual &= extents.back() == extents.front();
+    }
     const Vec2 span = bounds.max - bounds.min;
     double cellSize = std::max(span.x, span.y);
-    if (!extents.empty()) {
+    if (!extents.empty() && allEqual) {
+        cellSize = 2.0 * extents.front();
+    } else if (!extents.empty()) {
         std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
         cellSize = 2.0 * extents[extents.size() / 2];
     }

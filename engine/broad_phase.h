@@ -70,11 +70,18 @@ class BroadPhase {
     // Calls visit(i, j) once for every pair of registered blocks whose boxes overlap with
     // positive area.
     template <class Visit> void forEachOverlappingPair(Visit&& visit) const {
-        forEachPair(visit, [](const Aabb& a, const Aabb& b) { return overlaps(a, b); });
+        forEachPair(visit, [](const Aabb& a, const Aabb& b) {
+            return (a.max.x > b.min.x) & (a.min.x < b.max.x) & (a.max.y > b.min.y) &
+                   (a.min.y < b.max.y); // overlaps(a, b) without branches
+        });
     }
     // The same for every pair whose boxes meet (touching counts).
     template <class Visit> void forEachMeetingPair(Visit&& visit) const {
-        forEachPair(visit, [](const Aabb& a, const Aabb& b) { return meets(a, b); });
+        forEachPair(visit, [](const Aabb& a, const Aabb& b) {
+            constexpr double t = kTouchTolerance; // meets(a, b) without branches
+            return (a.max.x >= b.min.x - t) & (a.min.x <= b.max.x + t) & (a.max.y >= b.min.y - t) &
+                   (a.min.y <= b.max.y + t);
+        });
     }
 
   private:
@@ -248,11 +255,15 @@ template <class Visit, class Test> void BroadPhase::forEachPair(Visit& visit, Te
                 const Aabb fa = aabbOf(ea.box);
                 for (size_t b = a + 1; b < n; ++b) {
                     const Entry& eb = entries[b];
-                    // The test on the float boxes first: both tests are monotone, so it holds
-                    // whenever it holds for the double boxes inside them.
-                    if (eb.tag == kDead || !test(fa, aabbOf(eb.box))) continue;
-                    if (!test(boxes_[ea.index()], boxes_[eb.index()])) continue;
-                    if (((ea.tag | eb.tag) & kFirstColumn) && ((ea.tag | eb.tag) & kFirstRow))
+                    // Everything that needs no more than the entries in one branch, as in
+                    // queryOthers(): b is alive, this is the first cell the pair shares (one of
+                    // them in its first column, one in its first row), and the test holds for the
+                    // float boxes (both tests are monotone, so it holds whenever it holds for the
+                    // double boxes inside them). The order of the tests changes no answer.
+                    const std::uint32_t flags = ea.tag | eb.tag;
+                    const bool candidate = (eb.tag != kDead) & ((flags & kFirstColumn) != 0) &
+                                           ((flags & kFirstRow) != 0) & test(fa, aabbOf(eb.box));
+                    if (candidate && test(boxes_[ea.index()], boxes_[eb.index()]))
                         visit(ea.index(), eb.index());
                 }
             }

@@ -24,7 +24,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <queue>
 #include <unordered_map>
 #include <vector>
 
@@ -52,10 +51,32 @@ struct Later {
     }
 };
 
+// Per block and axis: the infinite mass it last bounced off (a block index or kWallEvent), on
+// which side (+1 above), and how many times in a row it alternated between closing ones.
+struct Bounce {
+    int anchor = 0;
+    int side = 0;
+    int alternations = 0;
+};
+
+// The solver's buffers, kept between substeps so a step allocates nothing once they have grown
+// (a cache only, like the broad phase's: every substep starts them afresh).
+struct PerfectScratch {
+    std::vector<double> clock;
+    std::vector<std::uint32_t> stamp;
+    std::vector<Bounce> bounces;
+    std::vector<Event> events; // a binary heap ordered by Later once the first predictions are in
+    std::vector<int> changed;
+    std::unordered_map<std::uint64_t, int> metAtInstant;
+};
+thread_local PerfectScratch scratch;
+
 class PerfectSolver {
   public:
     explicit PerfectSolver(SubstepContext& ctx)
-        : ctx_(ctx), blocks_(ctx.world.blocks), grid_(ctx.broadPhase), resolver_(ctx) {}
+        : ctx_(ctx), blocks_(ctx.world.blocks), grid_(ctx.broadPhase), resolver_(ctx),
+          clock_(scratch.clock), stamp_(scratch.stamp), events_(scratch.events),
+          metAtInstant_(scratch.metAtInstant), bounces_(scratch.bounces) {}
 
     void run();
 
@@ -69,6 +90,13 @@ class PerfectSolver {
     void predictWalls(int i, double now);
     void predictPair(int i, int j, double now);
     void predict(int i, double now);
+    // Adds a prediction. The first ones (all stamps 0) are only collected, and made a heap at
+    // once: each (a, b) pair is predicted once per pair of stamps, so no two current events
+    // compare equal and the order of processing does not depend on the heap's layout.
+    void schedule(const Event& e) {
+        events_.push_back(e);
+        if (heap_) std::push_heap(events_.begin(), events_.end(), Later{});
+    }
     bool isStale(const Event& e) const {
         return e.stampA != stamp_[e.a] || (e.b >= 0 && e.stampB != stamp_[e.b]);
     }
@@ -83,19 +111,13 @@ class PerfectSolver {
     std::vector<Block>& blocks_;
     BroadPhase& grid_;
     Resolver resolver_;
-    std::vector<double> clock_;        // s: the time at which each block's position is valid
-    std::vector<std::uint32_t> stamp_; // incremented on every change of velocity
-    std::priority_queue<Event, std::vector<Event>, Later> events_;
-    double instant_ = -1.0;                               // s: the time of the pairs below
-    std::unordered_map<std::uint64_t, int> metAtInstant_; // collisions per pair at that time
-    // Per block and axis: the infinite mass it last bounced off (a block index or kWallEvent),
-    // on which side (+1 above), and how many times in a row it alternated between closing ones.
-    struct Bounce {
-        int anchor = 0;
-        int side = 0;
-        int alternations = 0;
-    };
-    std::vector<Bounce> bounces_; // 2 per block
+    std::vector<double>& clock_;        // s: the time at which each block's position is valid
+    std::vector<std::uint32_t>& stamp_; // incremented on every change of velocity
+    std::vector<Event>& events_;        // predicted impacts (see schedule())
+    bool heap_ = false;                 // events_ is a heap
+    double instant_ = -1.0;             // s: the time of the pairs below
+    std::unordered_map<std::uint64_t, int>& metAtInstant_; // collisions per pair at that time
+    std::vector<Bounce>& bounces_;                         // 2 per block
 };
 
 // Predicts block i's impact with the walls.
@@ -104,7 +126,7 @@ void PerfectSolver::predictWalls(int i, double now) {
     if (block.kind == BodyKind::Static) return;
     const Aabb box = aabbOf(positionAt(i, now), block.size);
     const WallImpact wall = timeOfWallImpact(box, block.velocity, ctx_.world.bounds, ctx_.h - now);
-    if (wall.hit()) events_.push({now + wall.time, i, kWallEvent, stamp_[i], 0, wall.axes});
+    if (wall.hit()) schedule({now + wall.time, i, kWallEvent, stamp_[i], 0, wall.axes});
 }
 
 // Predicts the impact of blocks i and j (i not static) within the rest of the substep.
@@ -113,7 +135,7 @@ void PerfectSolver::predictPair(int i, int j, double now) {
     const Impact impact =
         timeOfImpact(aabbOf(positionAt(i, now), a.size), a.velocity,
                      aabbOf(positionAt(j, now), b.size), b.velocity, ctx_.h - now);
-    if (impact.hit()) events_.push({now + impact.time, i, j, stamp_[i], stamp_[j], impact.axes});
+    if (impact.hit()) schedule({now + impact.time, i, j, stamp_[i], stamp_[j], impact.axes});
 }
 
 // Predicts block i's impacts with the walls and with every neighbour whose registered box meets
@@ -132,7 +154,7 @@ bool PerfectSolver::repeatsAtInstant(const Event& e, int processed) {
         // clear() costs one step per bucket: after a storm at one instant, start a small table
         // again, or every later event would pay for the storm's buckets.
         if (metAtInstant_.bucket_count() > 64)
-            metAtInstant_ = {};
+            metAtInstant_ = std::unordered_map<std::uint64_t, int>{};
         else
             metAtInstant_.clear();
     }
@@ -186,6 +208,8 @@ void PerfectSolver::run() {
     clock_.assign(n, 0.0);
     stamp_.assign(n, 0);
     bounces_.assign(2 * static_cast<size_t>(n), Bounce{});
+    events_.clear();
+    metAtInstant_.clear();
 
     // Register every block's trajectory over the whole substep, then predict the first impacts.
     grid_.build(ctx_.world.bounds, blocks_, [&](int i) { return trajectory(i, 0.0); });
@@ -196,14 +220,17 @@ void PerfectSolver::run() {
         else if (blocks_[b].kind != BodyKind::Static)
             predictPair(b, a, 0.0);
     });
+    std::make_heap(events_.begin(), events_.end(), Later{});
+    heap_ = true;
 
     // Repeat: take the earliest impact, move its blocks to it, resolve, re-predict what changed.
     double lastEventTime = 0.0;
     int processed = 0;
-    std::vector<int> changed;
+    std::vector<int>& changed = scratch.changed;
     while (!events_.empty()) {
-        const Event e = events_.top();
-        events_.pop();
+        std::pop_heap(events_.begin(), events_.end(), Later{});
+        const Event e = events_.back();
+        events_.pop_back();
         if (isStale(e)) continue;
         if (processed == ctx_.world.settings.eventCap) {
             ctx_.capHit = true; // the substep ends at the last event: time falls behind
