@@ -1,9 +1,9 @@
 #include "app_frame.h"
 
 #include "renderer.h"
+#include "ui_renderer_gl.h"
 
 #include <imgui.h>
-#include <imgui_impl_opengl3.h>
 
 #include <cstdio>
 
@@ -151,5 +151,5 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
         view.flingTo = view.flingFrom + (m.cursorWorld - m.pressWorld);
     }
     renderer.draw(view);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    uiRendererRender(ImGui::GetDrawData());
 }

@@ -63,7 +63,7 @@ int runWindow(const Options& options, char** argv, int argc) {
         if (!ec) iniPath = configDir + "/imgui.ini";
     }
     uiCreateContext(iniPath.empty() ? nullptr : iniPath.c_str());
-    uiApplyScale(app.uiScale, false);
+    uiApplyScale(app.uiScale);
     WindowGlfw window;
     if (!windowInit(window, width, height, "Collision sandbox", &error)) {
         uiDestroyContext();
@@ -95,7 +95,7 @@ int runWindow(const Options& options, char** argv, int argc) {
             windowSetFullscreen(window, !window.fullscreen);
             app.fullscreenRequested = false;
         }
-        if (app.uiScale != uiCurrentScale()) uiApplyScale(app.uiScale, true);
+        if (app.uiScale != uiCurrentScale()) uiApplyScale(app.uiScale);
     }
     config.lastScene = app.scenePath;
     config.uiScale = app.uiScale;

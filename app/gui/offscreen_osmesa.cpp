@@ -1,12 +1,11 @@
 #include "offscreen_osmesa.h"
 
 #include "gl_api.h"
-#include "ui_style.h"
+#include "ui_renderer_gl.h"
 
 #include <GL/osmesa.h>
 
 #include <imgui.h>
-#include <imgui_impl_opengl3.h>
 
 #include <cfloat>
 #include <cstring>
@@ -39,8 +38,9 @@ bool offscreenInit(OffscreenOsmesa& o, int width, int height, std::string* error
         return false;
     }
     o.context = ctx;
-    if (!ImGui_ImplOpenGL3_Init("#version 330")) {
-        if (error) *error = "cannot start the ImGui OpenGL3 backend";
+    std::string uiError;
+    if (!uiRendererInit(&uiError)) {
+        if (error) *error = "cannot start the ImGui renderer: " + uiError;
         offscreenShutdown(o);
         return false;
     }
@@ -52,7 +52,7 @@ bool offscreenInit(OffscreenOsmesa& o, int width, int height, std::string* error
 
 void offscreenShutdown(OffscreenOsmesa& o) {
     if (!o.context) return;
-    ImGui_ImplOpenGL3_Shutdown();
+    uiRendererShutdown();
     OSMesaDestroyContext(static_cast<OSMesaContext>(o.context));
     o.context = nullptr;
 }
@@ -62,8 +62,7 @@ void offscreenNewFrame(OffscreenOsmesa& o, double deltaSeconds) {
     io.DisplaySize = ImVec2(static_cast<float>(o.width), static_cast<float>(o.height));
     io.DeltaTime = static_cast<float>(deltaSeconds > 0.0 ? deltaSeconds : 1.0 / 60.0);
     io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
-    ImGui_ImplOpenGL3_NewFrame();
-    uiSharpFontTexture();
+    uiRendererNewFrame();
 }
 
 void offscreenFinish(OffscreenOsmesa&) {

@@ -163,7 +163,7 @@ int runOffscreen(const Options& options) {
     }
     setUiScale(app, o.uiScale > 0.0f ? o.uiScale : 1.0f);
     uiCreateContext(nullptr);
-    uiApplyScale(app.uiScale, false);
+    uiApplyScale(app.uiScale);
     Offscreen off;
     if (!offscreenInit(off.context, o.width, o.height, &error)) {
         std::fprintf(stderr, "sandbox: %s\n", error.c_str());

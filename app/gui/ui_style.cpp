@@ -1,9 +1,8 @@
 #include "ui_style.h"
 
-#include "gl_api.h"
+#include "ui_renderer_gl.h"
 
 #include <imgui.h>
-#include <imgui_impl_opengl3.h>
 
 #include <cstdint>
 #include <cstdio>
@@ -77,14 +76,14 @@ float uiCurrentScale() {
     return gScale;
 }
 
-void uiApplyScale(float scale, bool rendererReady) {
+void uiApplyScale(float scale) {
     if (scale == gScale) return;
     gScale = scale;
     ImGuiIO& io = ImGui::GetIO();
     io.Fonts->Clear();
     if (fileExists(kFontPath)) {
         // Glyphs baked at their screen size and snapped to whole pixels: the atlas maps 1:1 onto
-        // the screen, so it can be sampled with the nearest texel (see uiSharpFontTexture).
+        // the screen, so it can be sampled with the nearest texel (see ui_renderer_gl.cpp).
         ImFontConfig config;
         config.OversampleH = 1;
         config.OversampleV = 1;
@@ -100,18 +99,5 @@ void uiApplyScale(float scale, bool rendererReady) {
     setTheme(style);
     style.ScaleAllSizes(scale);
     ImGui::GetStyle() = style;
-    if (rendererReady) {
-        ImGui_ImplOpenGL3_DestroyFontsTexture();
-        ImGui_ImplOpenGL3_CreateFontsTexture();
-    }
-}
-
-void uiSharpFontTexture() {
-    const auto texture =
-        static_cast<GLuint>(reinterpret_cast<std::intptr_t>(ImGui::GetIO().Fonts->TexID));
-    if (texture == 0) return;
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glBindTexture(GL_TEXTURE_2D, 0);
+    uiRendererFontsChanged();
 }

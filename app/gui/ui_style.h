@@ -5,13 +5,8 @@
 // Creates the ImGui context and sets the theme. `iniPath` null: no ini file (offscreen runs).
 void uiCreateContext(const char* iniPath);
 void uiDestroyContext();
-// Rebuilds the font atlas and style sizes for `scale`. When `rendererReady`, the OpenGL3
-// backend's font texture is recreated too.
-void uiApplyScale(float scale, bool rendererReady);
+// Rebuilds the font atlas and style sizes for `scale` (the UI renderer uploads the new atlas at
+// its next NewFrame).
+void uiApplyScale(float scale);
 // The scale uiApplyScale last applied.
 float uiCurrentScale();
-// Sets nearest-texel sampling on the backend's font texture (call after the backend's NewFrame,
-// which creates it). The atlas maps 1:1 onto the screen, so text looks the same as with linear
-// filtering, and llvmpipe shades every ImGui pixel about a third faster (measured: a blended,
-// textured full-screen quad 4.1 -> 2.6 ns per pixel).
-void uiSharpFontTexture();

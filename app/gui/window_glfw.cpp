@@ -1,14 +1,13 @@
 #include "window_glfw.h"
 
 #include "input_map.h"
-#include "ui_style.h"
+#include "ui_renderer_gl.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
-#include <imgui_impl_opengl3.h>
 
 #include <cstdio>
 
@@ -61,8 +60,10 @@ bool windowInit(WindowGlfw& w, int width, int height, const char* title, std::st
     glfwSwapInterval(1);
     glfwSetWindowUserPointer(w.window, &w);
     glfwSetKeyCallback(w.window, onKey);
-    if (!ImGui_ImplGlfw_InitForOpenGL(w.window, true) || !ImGui_ImplOpenGL3_Init("#version 330")) {
-        if (error) *error = "cannot start the ImGui backends";
+    std::string uiError;
+    if (!ImGui_ImplGlfw_InitForOpenGL(w.window, true) || !uiRendererInit(&uiError)) {
+        if (error)
+            *error = "cannot start the ImGui backends" + (uiError.empty() ? "" : ": " + uiError);
         glfwDestroyWindow(w.window);
         glfwTerminate();
         w.window = nullptr;
@@ -74,7 +75,7 @@ bool windowInit(WindowGlfw& w, int width, int height, const char* title, std::st
 
 void windowShutdown(WindowGlfw& w) {
     if (!w.window) return;
-    ImGui_ImplOpenGL3_Shutdown();
+    uiRendererShutdown();
     ImGui_ImplGlfw_Shutdown();
     glfwDestroyWindow(w.window);
     glfwTerminate();
@@ -87,8 +88,7 @@ bool windowNewFrame(WindowGlfw& w, double* realSeconds) {
     const double now = glfwGetTime();
     if (realSeconds) *realSeconds = now - w.lastTime;
     w.lastTime = now;
-    ImGui_ImplOpenGL3_NewFrame();
-    uiSharpFontTexture();
+    uiRendererNewFrame();
     ImGui_ImplGlfw_NewFrame();
     return true;
 }

@@ -1,0 +1,204 @@
+#include "ui_renderer_gl.h"
+
+#include "embedded_shaders.h"
+#include "gl_api.h"
+#include "gl_shader.h"
+#include "ui_draw_runs.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace {
+
+// A solid run smaller than this is drawn with the texture instead: on llvmpipe a draw call with
+// a program switch costs about as much as sampling the texture for this many pixels.
+constexpr float kMinSolidRunPixels = 4096.0f;
+
+struct UiProgram {
+    GLuint program = 0;
+    GLint transform = -1;
+};
+
+struct UiRenderer {
+    UiProgram solid;
+    UiProgram textured;
+    GLuint vao = 0;
+    GLuint vertexBuffer = 0;
+    GLuint indexBuffer = 0;
+    GLuint fontTexture = 0;
+    bool fontsChanged = true;
+    std::vector<UiDrawRun> runs;
+};
+UiRenderer gUi;
+
+GLuint textureName(ImTextureID id) {
+    return static_cast<GLuint>(reinterpret_cast<std::intptr_t>(id));
+}
+
+bool buildUiProgram(UiProgram& p, const char* defines, std::string* error) {
+    p.program =
+        buildProgram(embedded_shaders::ui_vert, embedded_shaders::ui_frag, "ui", error, defines);
+    if (!p.program) return false;
+    p.transform = glGetUniformLocation(p.program, "uTransform");
+    return true;
+}
+
+// The font atlas, sampled with the nearest texel: its glyphs are baked at their screen size.
+void uploadFontTexture() {
+    ImGuiIO& io = ImGui::GetIO();
+    unsigned char* pixels = nullptr;
+    int width = 0, height = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+    if (!gUi.fontTexture) glGenTextures(1, &gUi.fontTexture);
+    glBindTexture(GL_TEXTURE_2D, gUi.fontTexture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(gUi.fontTexture)));
+    gUi.fontsChanged = false;
+}
+
+// Blending as ImGui expects (premultiplied only in the alpha channel), no depth or culling,
+// and ImGui's orthographic view: clip = (px - DisplayPos) mapped onto [-1, 1], y up.
+void setupRenderState(const ImDrawData* data, int framebufferWidth, int framebufferHeight) {
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glEnable(GL_SCISSOR_TEST);
+    glViewport(0, 0, framebufferWidth, framebufferHeight);
+    const float l = data->DisplayPos.x, r = data->DisplayPos.x + data->DisplaySize.x;
+    const float t = data->DisplayPos.y, b = data->DisplayPos.y + data->DisplaySize.y;
+    for (const UiProgram* p : {&gUi.solid, &gUi.textured}) {
+        glUseProgram(p->program);
+        glUniform4f(p->transform, 2.0f / (r - l), 2.0f / (t - b), (r + l) / (l - r),
+                    (t + b) / (b - t));
+    }
+    glActiveTexture(GL_TEXTURE0);
+    glBindVertexArray(gUi.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, gUi.vertexBuffer);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gUi.indexBuffer);
+}
+
+} // namespace
+
+bool uiRendererInit(std::string* error) {
+    if (!buildUiProgram(gUi.solid, "", error) ||
+        !buildUiProgram(gUi.textured, "#define TEXTURED\n", error)) {
+        uiRendererShutdown();
+        return false;
+    }
+    glUseProgram(gUi.textured.program);
+    glUniform1i(glGetUniformLocation(gUi.textured.program, "uTexture"), 0);
+    glGenVertexArrays(1, &gUi.vao);
+    glGenBuffers(1, &gUi.vertexBuffer);
+    glGenBuffers(1, &gUi.indexBuffer);
+    glBindVertexArray(gUi.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, gUi.vertexBuffer);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gUi.indexBuffer);
+    const auto stride = static_cast<GLsizei>(sizeof(ImDrawVert));
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<void*>(offsetof(ImDrawVert, pos)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<void*>(offsetof(ImDrawVert, uv)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
+                          reinterpret_cast<void*>(offsetof(ImDrawVert, col)));
+    glBindVertexArray(0);
+    ImGuiIO& io = ImGui::GetIO();
+    io.BackendRendererName = "sandbox_gl33";
+    io.BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset; // glDrawElementsBaseVertex
+    gUi.fontsChanged = true;
+    return true;
+}
+
+void uiRendererShutdown() {
+    if (gUi.fontTexture) glDeleteTextures(1, &gUi.fontTexture);
+    if (gUi.vertexBuffer) glDeleteBuffers(1, &gUi.vertexBuffer);
+    if (gUi.indexBuffer) glDeleteBuffers(1, &gUi.indexBuffer);
+    if (gUi.vao) glDeleteVertexArrays(1, &gUi.vao);
+    if (gUi.solid.program) glDeleteProgram(gUi.solid.program);
+    if (gUi.textured.program) glDeleteProgram(gUi.textured.program);
+    gUi = UiRenderer{};
+    ImGuiIO& io = ImGui::GetIO();
+    io.Fonts->SetTexID(ImTextureID{});
+    io.BackendRendererName = nullptr;
+    io.BackendFlags &= ~ImGuiBackendFlags_RendererHasVtxOffset;
+}
+
+void uiRendererFontsChanged() {
+    gUi.fontsChanged = true;
+}
+
+void uiRendererNewFrame() {
+    if (gUi.fontsChanged && gUi.textured.program) uploadFontTexture();
+}
+
+void uiRendererRender(const ImDrawData* data) {
+    const int fbWidth = static_cast<int>(data->DisplaySize.x * data->FramebufferScale.x);
+    const int fbHeight = static_cast<int>(data->DisplaySize.y * data->FramebufferScale.y);
+    if (fbWidth <= 0 || fbHeight <= 0 || !gUi.textured.program) return;
+    setupRenderState(data, fbWidth, fbHeight);
+
+    const ImVec2 clipOffset = data->DisplayPos, clipScale = data->FramebufferScale;
+    const ImVec2 whiteUv = ImGui::GetIO().Fonts->TexUvWhitePixel;
+    const GLenum indexType = sizeof(ImDrawIdx) == 2 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT;
+    GLuint current = 0; // the program in use
+    for (int n = 0; n < data->CmdListsCount; ++n) {
+        const ImDrawList* list = data->CmdLists[n];
+        glBufferData(GL_ARRAY_BUFFER,
+                     static_cast<GLsizeiptr>(list->VtxBuffer.Size) * sizeof(ImDrawVert),
+                     list->VtxBuffer.Data, GL_STREAM_DRAW);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                     static_cast<GLsizeiptr>(list->IdxBuffer.Size) * sizeof(ImDrawIdx),
+                     list->IdxBuffer.Data, GL_STREAM_DRAW);
+        for (const ImDrawCmd& cmd : list->CmdBuffer) {
+            if (cmd.UserCallback) {
+                if (cmd.UserCallback == ImDrawCallback_ResetRenderState)
+                    setupRenderState(data, fbWidth, fbHeight);
+                else
+                    cmd.UserCallback(list, &cmd);
+                current = 0;
+                continue;
+            }
+            // The clip rectangle in framebuffer pixels (GL's y goes up).
+            const float x0 = (cmd.ClipRect.x - clipOffset.x) * clipScale.x;
+            const float y0 = (cmd.ClipRect.y - clipOffset.y) * clipScale.y;
+            const float x1 = (cmd.ClipRect.z - clipOffset.x) * clipScale.x;
+            const float y1 = (cmd.ClipRect.w - clipOffset.y) * clipScale.y;
+            if (x1 <= x0 || y1 <= y0) continue;
+            glScissor(static_cast<GLint>(x0), static_cast<GLint>(fbHeight - y1),
+                      static_cast<GLsizei>(x1 - x0), static_cast<GLsizei>(y1 - y0));
+            glBindTexture(GL_TEXTURE_2D, textureName(cmd.GetTexID()));
+
+            gUi.runs.clear();
+            if (textureName(cmd.GetTexID()) == gUi.fontTexture)
+                splitIntoRuns(list->VtxBuffer.Data + cmd.VtxOffset,
+                              list->IdxBuffer.Data + cmd.IdxOffset, cmd.IdxOffset, cmd.ElemCount,
+                              whiteUv, kMinSolidRunPixels, gUi.runs);
+            else
+                gUi.runs.push_back({cmd.IdxOffset, cmd.ElemCount, false});
+            for (const UiDrawRun& run : gUi.runs) {
+                const GLuint program = run.solid ? gUi.solid.program : gUi.textured.program;
+                if (program != current) glUseProgram(program);
+                current = program;
+                glDrawElementsBaseVertex(
+                    GL_TRIANGLES, static_cast<GLsizei>(run.indexCount), indexType,
+                    reinterpret_cast<void*>(static_cast<std::size_t>(run.firstIndex) *
+                                            sizeof(ImDrawIdx)),
+                    static_cast<GLint>(cmd.VtxOffset));
+            }
+        }
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glBindVertexArray(0);
+}
