@@ -158,13 +158,6 @@ class BroadPhase {
         return tagOf(index) | (x == range.x0 ? kFirstColumn : 0u) |
                (y == range.y0 ? kFirstRow : 0u);
     }
-    // Boxes that touch, or miss each other by less than kTouchTolerance: a box computed one way
-    // may differ by rounding from the same box computed another, and no contact may be lost.
-    static bool meets(const Aabb& a, const Aabb& b) {
-        constexpr double t = kTouchTolerance;
-        return a.max.x >= b.min.x - t && a.min.x <= b.max.x + t && a.max.y >= b.min.y - t &&
-               a.min.y <= b.max.y + t;
-    }
     // A float no greater (floatBelow) or no less (floatAbove) than v: v moved outward by more
     // than rounding to float can move it back (half a float ulp is at most 2^-24·|v|, the
     // absolute 2^-120 covers the subnormals), kept inside the float range on the side it moved

@@ -53,6 +53,16 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 // block resting on another may overlap it by 1e-16 m; that is contact, not penetration.
 constexpr double kTouchTolerance = 1e-9;
 
+// The broad phases' test: boxes that touch, or miss each other by less than kTouchTolerance (a
+// box computed one way may differ by rounding from the same box computed another, and no contact
+// may be lost). Without branches (non-short-circuit &): near pairs pass one test and fail another
+// in no predictable order.
+inline bool meets(const Aabb& a, const Aabb& b) {
+    constexpr double t = kTouchTolerance;
+    return (a.max.x >= b.min.x - t) & (a.min.x <= b.max.x + t) & (a.max.y >= b.min.y - t) &
+           (a.min.y <= b.max.y + t);
+}
+
 struct Impact {
     double time = kNever;  // s from now until the faces first touch
     std::uint8_t axes = 0; // kAxisX | kAxisY; 0 when there is no impact

@@ -19,10 +19,19 @@
 // pushing it into a wall) collides ever faster, without end, before they meet. After
 // kSqueezeBounces such alternating bounces in one substep its contacts are resolved by the rest
 // rule, which reverses the platform as on a wall.
+//
+// Broad phase: the paths are registered in a CornerGrid (one entry per block, cheap to build for
+// blocks of similar size), or in the BroadPhase when the sizes are too mixed for it. The rest rule
+// (Resolver) reads the BroadPhase, in whose order it merges a cluster; so when the CornerGrid is
+// used, the BroadPhase is built only when the rest rule first needs it in a substep, from the
+// boxes registered at the substep's start, and the paths registered since are replayed into it:
+// it is then, cell for cell, the BroadPhase that would have been kept all along.
 #include "collision.h"
+#include "corner_grid.h"
 #include "methods.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -59,6 +68,13 @@ struct Bounce {
     int alternations = 0;
 };
 
+// A block's registered path replaced by a new one (while the BroadPhase is not kept up to date).
+struct PathChange {
+    int block;
+    Aabb before;
+    Aabb after;
+};
+
 // The solver's buffers, kept between substeps so a step allocates nothing once they have grown
 // (a cache only, like the broad phase's: every substep starts them afresh).
 struct PerfectScratch {
@@ -68,15 +84,19 @@ struct PerfectScratch {
     std::vector<Event> events; // a binary heap ordered by Later once the first predictions are in
     std::vector<int> changed;
     std::unordered_map<std::uint64_t, int> metAtInstant;
+    CornerGrid cornerGrid;
+    std::vector<PathChange> pathChanges;
+    std::vector<Aabb> firstPaths;
 };
 thread_local PerfectScratch scratch;
 
 class PerfectSolver {
   public:
     explicit PerfectSolver(SubstepContext& ctx)
-        : ctx_(ctx), blocks_(ctx.world.blocks), grid_(ctx.broadPhase), resolver_(ctx),
-          clock_(scratch.clock), stamp_(scratch.stamp), events_(scratch.events),
-          metAtInstant_(scratch.metAtInstant), bounces_(scratch.bounces) {}
+        : ctx_(ctx), blocks_(ctx.world.blocks), grid_(ctx.broadPhase),
+          cornerGrid_(scratch.cornerGrid), resolver_(ctx), clock_(scratch.clock),
+          stamp_(scratch.stamp), events_(scratch.events), metAtInstant_(scratch.metAtInstant),
+          bounces_(scratch.bounces), pathChanges_(scratch.pathChanges) {}
 
     void run();
 
@@ -87,7 +107,13 @@ class PerfectSolver {
     Aabb trajectory(int i, double now) const {
         return sweptAabb(positionAt(i, now), blocks_[i].size, blocks_[i].velocity, ctx_.h - now);
     }
-    void predictWalls(int i, double now);
+    void registerPaths();
+    const Aabb& registeredPath(int i) const {
+        return useCornerGrid_ ? cornerGrid_.box(i) : grid_.box(i);
+    }
+    void registerPath(int i, const Aabb& path);
+    void bringBroadPhaseUpToDate();
+    void predictWalls(int i, double now, const Aabb& path);
     void predictPair(int i, int j, double now);
     void predict(int i, double now);
     // Adds a prediction. The first ones (all stamps 0) are only collected, and made a heap at
@@ -109,7 +135,11 @@ class PerfectSolver {
 
     SubstepContext& ctx_;
     std::vector<Block>& blocks_;
+    Aabb wallsInside_; // the bounds shrunk by far more than rounding (see run())
     BroadPhase& grid_;
+    CornerGrid& cornerGrid_;
+    bool useCornerGrid_ = false;    // paths are registered in cornerGrid_, else in grid_
+    bool broadPhaseCurrent_ = true; // grid_ holds the registered paths
     Resolver resolver_;
     std::vector<double>& clock_;        // s: the time at which each block's position is valid
     std::vector<std::uint32_t>& stamp_; // incremented on every change of velocity
@@ -118,10 +148,47 @@ class PerfectSolver {
     double instant_ = -1.0;             // s: the time of the pairs below
     std::unordered_map<std::uint64_t, int>& metAtInstant_; // collisions per pair at that time
     std::vector<Bounce>& bounces_;                         // 2 per block
+    std::vector<PathChange>& pathChanges_; // since the substep start, while grid_ is not current
 };
 
-// Predicts block i's impact with the walls.
-void PerfectSolver::predictWalls(int i, double now) {
+// Registers every block's path over the whole substep.
+void PerfectSolver::registerPaths() {
+    const Bounds& bounds = ctx_.world.bounds;
+    useCornerGrid_ = cornerGrid_.build(bounds, blocks_, [&](int i) { return trajectory(i, 0.0); });
+    if (!useCornerGrid_) {
+        grid_.build(bounds, blocks_, [&](int i) { return cornerGrid_.box(i); });
+        return;
+    }
+    broadPhaseCurrent_ = false;
+    pathChanges_.clear();
+    resolver_.setBeforeBroadPhaseRead([this] { bringBroadPhaseUpToDate(); });
+}
+
+void PerfectSolver::registerPath(int i, const Aabb& path) {
+    if (!useCornerGrid_ || broadPhaseCurrent_) grid_.set(i, path);
+    if (!useCornerGrid_) return;
+    if (!broadPhaseCurrent_) pathChanges_.push_back({i, cornerGrid_.box(i), path});
+    cornerGrid_.set(i, path);
+}
+
+// Builds the BroadPhase from the paths registered at the substep's start (the current ones with
+// the changes undone, last first), then makes the same changes in the same order.
+void PerfectSolver::bringBroadPhaseUpToDate() {
+    if (broadPhaseCurrent_) return;
+    broadPhaseCurrent_ = true;
+    std::vector<Aabb>& first = scratch.firstPaths;
+    first.resize(blocks_.size());
+    for (size_t i = 0; i < blocks_.size(); ++i) first[i] = cornerGrid_.box(static_cast<int>(i));
+    for (auto c = pathChanges_.rbegin(); c != pathChanges_.rend(); ++c) first[c->block] = c->before;
+    grid_.build(ctx_.world.bounds, blocks_, [&](int i) { return first[i]; });
+    for (const PathChange& c : pathChanges_) grid_.set(c.block, c.after);
+}
+
+// Predicts block i's impact with the walls; `path` is trajectory(i, now).
+void PerfectSolver::predictWalls(int i, double now, const Aabb& path) {
+    // Most paths stay well inside the walls: then timeOfWallImpact's first test (the box moved by
+    // the travel, computed in another order than the path) finds no impact either.
+    if (contains(wallsInside_, path)) return;
     const Block& block = blocks_[i];
     if (block.kind == BodyKind::Static) return;
     const Aabb box = aabbOf(positionAt(i, now), block.size);
@@ -142,10 +209,12 @@ void PerfectSolver::predictPair(int i, int j, double now) {
 // its trajectory for the rest of the substep.
 void PerfectSolver::predict(int i, double now) {
     if (blocks_[i].kind == BodyKind::Static) return;
-    predictWalls(i, now);
-    grid_.query(trajectory(i, now), [&](int j) {
-        if (j != i) predictPair(i, j, now);
-    });
+    const Aabb path = trajectory(i, now);
+    predictWalls(i, now, path);
+    if (useCornerGrid_)
+        cornerGrid_.queryOthers(path, i, [&](int j) { predictPair(i, j, now); });
+    else
+        grid_.queryOthers(path, i, [&](int j) { predictPair(i, j, now); });
 }
 
 bool PerfectSolver::repeatsAtInstant(const Event& e, int processed) {
@@ -210,16 +279,28 @@ void PerfectSolver::run() {
     bounces_.assign(2 * static_cast<size_t>(n), Bounce{});
     events_.clear();
     metAtInstant_.clear();
+    // A path and the box timeOfWallImpact tests (the block's box moved by its travel) differ by a
+    // few roundings of numbers no larger than twice the bounds' largest coordinate M, so by less
+    // than 2^-49·M: a path inside the bounds shrunk by 2^-40·M meets no wall in that test either.
+    const Bounds& bounds = ctx_.world.bounds;
+    const double largest = std::max({std::abs(bounds.min.x), std::abs(bounds.min.y),
+                                     std::abs(bounds.max.x), std::abs(bounds.max.y)});
+    const Vec2 margin = Vec2{1.0, 1.0} * (largest * 0x1p-40 + 0x1p-1000);
+    wallsInside_ = {bounds.min + margin, bounds.max - margin};
 
     // Register every block's trajectory over the whole substep, then predict the first impacts.
-    grid_.build(ctx_.world.bounds, blocks_, [&](int i) { return trajectory(i, 0.0); });
-    for (int i = 0; i < n; ++i) predictWalls(i, 0.0);
-    grid_.forEachMeetingPair([&](int a, int b) { // every pair once, cell by cell
+    registerPaths();
+    for (int i = 0; i < n; ++i) predictWalls(i, 0.0, registeredPath(i));
+    auto predictFirst = [&](int a, int b) { // a < b
         if (blocks_[a].kind != BodyKind::Static)
             predictPair(a, b, 0.0);
         else if (blocks_[b].kind != BodyKind::Static)
             predictPair(b, a, 0.0);
-    });
+    };
+    if (useCornerGrid_)
+        cornerGrid_.forEachMeetingPair(predictFirst);
+    else
+        grid_.forEachMeetingPair(predictFirst);
     std::make_heap(events_.begin(), events_.end(), Later{});
     heap_ = true;
 
@@ -249,7 +330,7 @@ void PerfectSolver::run() {
         for (int j : changed) {
             ++stamp_[j];
             const Aabb path = trajectory(j, e.time);
-            if (!contains(grid_.box(j), path)) grid_.set(j, path);
+            if (!contains(registeredPath(j), path)) registerPath(j, path);
         }
         for (int j : changed) predict(j, e.time);
     }

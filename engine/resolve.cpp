@@ -142,6 +142,7 @@ Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) 
     add(seedA, 1.0); // the seed pair approaches: resolvePair and resolveWall checked
     if (seedB >= 0) add(seedB, 1.0);
 
+    if (beforeBroadPhaseRead_) beforeBroadPhaseRead_();
     for (size_t q = 0; q < queue_.size(); ++q) {
         const int i = queue_[q];
         const Aabb box = aabbOf(blocks[i]);

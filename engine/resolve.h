@@ -7,6 +7,7 @@
 #include "world.h"
 
 #include <cmath>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -60,6 +61,11 @@ class Resolver {
     // Resolve the next contacts perfectly inelastic whatever their speed (the perfect method's
     // rule for a pair that collides again at the same instant).
     void setForceRest(bool force) { forceRest_ = force; }
+    // Called before the rest rule reads the broad phase: the perfect method registers paths in
+    // its own grid and brings the broad phase up to date only when it is read.
+    void setBeforeBroadPhaseRead(std::function<void()> hook) {
+        beforeBroadPhaseRead_ = std::move(hook);
+    }
 
     const std::vector<int>& changed() const { return changed_; }
     void clearChanged() { changed_.clear(); }
@@ -78,6 +84,7 @@ class Resolver {
     double now_ = 0.0;
     std::vector<double>* localTime_ = nullptr;
     bool forceRest_ = false;
+    std::function<void()> beforeBroadPhaseRead_;
     std::vector<int> changed_;
     // Scratch for the rest rule's cluster search.
     std::vector<int> members_;

@@ -1,0 +1,93 @@
+#include "corner_grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+bool CornerGrid::fileAll(const Bounds& bounds, const Extents& extents) {
+    // Boxes up to twice the mean extent of the moving blocks' boxes go into cells, and the cells
+    // are only as large as the largest of those: a few outliers (a bullet) do not make every cell
+    // large.
+    const double limit = extents.count > 0 ? 2.0 * extents.sum / extents.count : 0.0;
+    maxSmallExtent_ = limit < extents.largest ? limit : extents.largest; // NaN limit: ignored
+    // The cell: more than maxSmallExtent + t, so that the corners of two small boxes that meet
+    // are at most one cell apart (see queryOthers()), with room for rounding: a relative 2^-20,
+    // and 2^-40 of the coordinates' magnitude, where one step of rounding loses 2^-53. No more
+    // cells than about four per block (BroadPhase's rule), nor more columns or rows than that.
+    const Vec2 span = bounds.max - bounds.min;
+    const size_t n = boxes_.size();
+    const double maxCells = 4.0 * static_cast<double>(n) + 64.0;
+    const double magnitude = std::max(std::abs(bounds.min.x), std::abs(bounds.min.y)) +
+                             std::max(std::abs(span.x), std::abs(span.y));
+    double cellSize =
+        (maxSmallExtent_ + 2.0 * kTouchTolerance) * (1.0 + 0x1p-20) + magnitude * 0x1p-40;
+    cellSize = std::max(
+        {cellSize, std::sqrt(span.x * span.y / maxCells), std::max(span.x, span.y) / maxCells});
+    if (!(cellSize < kNever)) return false; // infinite or NaN sizes: no cells fit
+    origin_ = bounds.min;
+    inverseCellSize_ = 1.0 / cellSize;
+    columns_ = std::max(1, static_cast<int>(std::ceil(span.x * inverseCellSize_)));
+    rows_ = std::max(1, static_cast<int>(std::ceil(span.y * inverseCellSize_)));
+
+    // Counting sort by cell, pass 1: each block's cell, and the count of each cell.
+    const size_t cellCount = static_cast<size_t>(columns_) * rows_;
+    cells_.assign(cellCount + 1, Cell{});
+    cell_.resize(n);
+    large_.clear();
+    overflowInUse_ = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const int c = cell_[i] = cellOf(boxes_[i]);
+        if (c == kLarge)
+            large_.push_back(static_cast<int>(i));
+        else
+            ++cells_[c].start;
+    }
+    // Each large box is read by every query: a handful at most.
+    if (large_.size() > 8 + n / 64) return false;
+    // Pass 2: the counts become the ends of the slices (a running sum), then the blocks are put
+    // in from the end, in reverse order, so each slice is in block order and each cell's cursor
+    // ends at the start of its slice.
+    for (size_t c = 1; c <= cellCount; ++c) cells_[c].start += cells_[c - 1].start;
+    sorted_.resize(cells_[cellCount].start);
+    for (size_t i = n; i-- > 0;)
+        if (cell_[i] != kLarge) sorted_[--cells_[cell_[i]].start] = static_cast<int>(i);
+    return true;
+}
+
+std::vector<int>& CornerGrid::overflowList(int cell) {
+    Cell& c = cells_[cell];
+    if (!c.overflow) {
+        if (overflowInUse_ == overflow_.size()) overflow_.emplace_back();
+        overflow_[overflowInUse_].clear();
+        c.overflow = static_cast<std::uint32_t>(++overflowInUse_);
+    }
+    return overflow_[c.overflow - 1];
+}
+
+void CornerGrid::set(int index, const Aabb& box) {
+    boxes_[index] = box;
+    const int from = cell_[index], to = cellOf(box);
+    if (to == from) return;
+    cell_[index] = to;
+    // Leave the old place: the large list, the cell's slice (the slot is marked dead) or the
+    // cell's overflow list.
+    auto removeFrom = [index](std::vector<int>& list) {
+        const auto it = std::find(list.begin(), list.end(), index);
+        *it = list.back();
+        list.pop_back();
+    };
+    if (from == kLarge) {
+        removeFrom(large_);
+    } else {
+        const auto begin = sorted_.begin() + cells_[from].start;
+        const auto end = sorted_.begin() + cells_[from + 1].start;
+        const auto slot = std::find(begin, end, index);
+        if (slot != end)
+            *slot = kDead;
+        else
+            removeFrom(overflow_[cells_[from].overflow - 1]);
+    }
+    if (to == kLarge)
+        large_.push_back(index);
+    else
+        overflowList(to).push_back(index);
+}
