@@ -53,10 +53,6 @@ class CornerGrid {
   private:
     static constexpr int kLarge = -1; // cell of a box too large for the cells
     static constexpr int kDead = -1;  // a slot whose block has left the cell
-    struct Cell {
-        std::uint32_t start = 0;    // first slot in sorted_ (the next cell's start ends it)
-        std::uint32_t overflow = 0; // 0, or 1 + the index of its list in overflow_
-    };
 
     struct Extents {
         double largest = 0.0; // m
@@ -89,13 +85,17 @@ class CornerGrid {
     double inverseCellSize_ = 1.0;
     double maxSmallExtent_ = 0.0; // m: boxes up to this wide and high go into cells
     int columns_ = 1, rows_ = 1;
-    std::vector<Cell> cells_;                // columns*rows + 1 (the last one ends the array)
-    std::vector<int> sorted_;                // block indices sorted by cell (kDead: moved away)
-    std::vector<std::vector<int>> overflow_; // blocks that entered a cell after build(), reused
-    size_t overflowInUse_ = 0;               // lists of overflow_ owned by a cell
-    std::vector<int> large_;                 // blocks whose box is too large for the cells
-    std::vector<int> cell_;                  // per block: its cell, or kLarge
-    std::vector<Aabb> boxes_;                // registered box per block
+    // Per cell: its first slot in sorted_ (the next cell's start ends it; one more entry ends
+    // the last), and 0 or 1 + the index of its list in overflow_. Arrays of integers, so that
+    // zeroing them is a memset.
+    std::vector<std::uint32_t> cellStart_;    // columns*rows + 1
+    std::vector<std::uint32_t> cellOverflow_; // columns*rows
+    std::vector<int> sorted_;                 // block indices sorted by cell (kDead: moved away)
+    std::vector<std::vector<int>> overflow_;  // blocks that entered a cell after build(), reused
+    size_t overflowInUse_ = 0;                // lists of overflow_ owned by a cell
+    std::vector<int> large_;                  // blocks whose box is too large for the cells
+    std::vector<int> cell_;                   // per block: its cell, or kLarge
+    std::vector<Aabb> boxes_;                 // registered box per block
 };
 
 template <class Visit>
@@ -106,12 +106,12 @@ void CornerGrid::forEachInCells(int x0, int y0, int x1, int y1, Visit&& visit) c
         // The slices of a row's cells are adjacent in sorted_: one span.
         const size_t first = static_cast<size_t>(y) * columns_ + x0;
         const size_t last = static_cast<size_t>(y) * columns_ + x1;
-        for (std::uint32_t k = cells_[first].start; k < cells_[last + 1].start; ++k)
+        for (std::uint32_t k = cellStart_[first]; k < cellStart_[last + 1]; ++k)
             if (sorted_[k] != kDead) visit(sorted_[k]);
         if (overflowInUse_ == 0) continue;
         for (size_t c = first; c <= last; ++c)
-            if (cells_[c].overflow)
-                for (int j : overflow_[cells_[c].overflow - 1]) visit(j);
+            if (cellOverflow_[c])
+                for (int j : overflow_[cellOverflow_[c] - 1]) visit(j);
     }
 }
 
@@ -144,18 +144,17 @@ template <class Visit> void CornerGrid::forEachMeetingPair(Visit&& visit) const 
     for (int y = 0; y < rows_; ++y) {
         const size_t rowStart = static_cast<size_t>(y) * columns_;
         const bool rowAbove = y + 1 < rows_;
-        const std::uint32_t rowEnd = cells_[rowStart + columns_].start;
-        for (std::uint32_t s = cells_[rowStart].start; s < rowEnd; ++s) {
+        const std::uint32_t rowEnd = cellStart_[rowStart + columns_];
+        for (std::uint32_t s = cellStart_[rowStart]; s < rowEnd; ++s) {
             const int a = sorted_[s];
             const size_t c = static_cast<size_t>(cell_[a]);
             const size_t x = c - rowStart;
             const size_t right = x + 1 < static_cast<size_t>(columns_) ? 1 : 0;
             const size_t left = x > 0 ? 1 : 0;
-            for (std::uint32_t k = s + 1; k < cells_[c + right + 1].start; ++k) test(a, sorted_[k]);
+            for (std::uint32_t k = s + 1; k < cellStart_[c + right + 1]; ++k) test(a, sorted_[k]);
             if (!rowAbove) continue;
             const size_t above = c + columns_;
-            for (std::uint32_t k = cells_[above - left].start; k < cells_[above + right + 1].start;
-                 ++k)
+            for (std::uint32_t k = cellStart_[above - left]; k < cellStart_[above + right + 1]; ++k)
                 test(a, sorted_[k]);
         }
     }
