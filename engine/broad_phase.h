@@ -70,18 +70,11 @@ class BroadPhase {
     // Calls visit(i, j) once for every pair of registered blocks whose boxes overlap with
     // positive area.
     template <class Visit> void forEachOverlappingPair(Visit&& visit) const {
-        forEachPair(visit, [](const Aabb& a, const Aabb& b) {
-            return (a.max.x > b.min.x) & (a.min.x < b.max.x) & (a.max.y > b.min.y) &
-                   (a.min.y < b.max.y); // overlaps(a, b) without branches
-        });
+        forEachPair(visit, [](const Aabb& a, const Aabb& b) { return overlaps(a, b); });
     }
     // The same for every pair whose boxes meet (touching counts).
     template <class Visit> void forEachMeetingPair(Visit&& visit) const {
-        forEachPair(visit, [](const Aabb& a, const Aabb& b) {
-            constexpr double t = kTouchTolerance; // meets(a, b) without branches
-            return (a.max.x >= b.min.x - t) & (a.min.x <= b.max.x + t) & (a.max.y >= b.min.y - t) &
-                   (a.min.y <= b.max.y + t);
-        });
+        forEachPair(visit, [](const Aabb& a, const Aabb& b) { return meets(a, b); });
     }
 
   private:

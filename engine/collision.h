@@ -32,8 +32,10 @@ inline bool contains(const Aabb& outer, const Aabb& inner) {
 
 // Lecture slide "AABB collision detection": P and Q overlap iff P.right > Q.left,
 // P.left < Q.right, P.top > Q.bottom and P.bottom < Q.top. Touching faces do not overlap.
+// Without branches (non-short-circuit &), like meets() below: the broad phases test pairs that
+// pass one comparison and fail another in no predictable order.
 inline bool overlaps(const Aabb& p, const Aabb& q) {
-    return p.max.x > q.min.x && p.min.x < q.max.x && p.max.y > q.min.y && p.min.y < q.max.y;
+    return (p.max.x > q.min.x) & (p.min.x < q.max.x) & (p.max.y > q.min.y) & (p.min.y < q.max.y);
 }
 // How far the boxes overlap along each axis (m); a component <= 0 means no overlap on that axis.
 inline Vec2 overlapExtents(const Aabb& p, const Aabb& q) {
