@@ -1,5 +1,6 @@
 // What the overlay windows share: a semi-transparent, movable, resizable window placed at first
-// use relative to the scene's viewport (so it lands sensibly at 720p and on a projector).
+// use relative to the scene's viewport (so it lands sensibly at 720p and on a projector), and
+// placed again when the UI scale or the viewport's size changes.
 #pragma once
 
 #include "app_state.h"
