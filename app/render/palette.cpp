@@ -77,3 +77,27 @@ Color staticBlockColor() {
 Color kinematicBlockColor() {
     return {0.62f, 0.58f, 0.48f, 1.0f};
 }
+
+namespace {
+
+double linearChannel(float c) {
+    const double v = static_cast<double>(c);
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
+double luminance(const Color& c) {
+    return 0.2126 * linearChannel(c.r) + 0.7152 * linearChannel(c.g) + 0.0722 * linearChannel(c.b);
+}
+
+} // namespace
+
+double contrastRatio(const Color& a, const Color& b) {
+    const double la = luminance(a), lb = luminance(b);
+    return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
+}
+
+Color outlineFor(const Color& fill, const Color& background) {
+    if (contrastRatio(fill, background) >= kMinBlockContrast) return scene_colors::kOutline;
+    return luminance(background) < 0.4 ? Color{0.92f, 0.93f, 0.96f, 1.0f}
+                                       : Color{0.05f, 0.05f, 0.08f, 1.0f};
+}
