@@ -5,11 +5,14 @@
 #include "palette.h"
 #include "save_naming.h"
 #include "scene_geometry.h"
+#include "scene_library.h"
 #include "text_format.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <set>
 
 namespace {
@@ -299,6 +302,36 @@ TEST(BlockContrast, ADarkBlockOnTheDarkArenaGetsALightOutline) {
     const Color pale{0.9f, 0.9f, 0.88f, 1.0f};
     EXPECT_GE(contrastRatio(outlineFor(pale, lightArena), lightArena), 7.0);
     EXPECT_DOUBLE_EQ(contrastRatio(red, red), 1.0);
+}
+
+TEST(ScenePicker, ShippedScenesInTheLecturesOrderWithTheirTitles) {
+    const auto list = listScenes(SANDBOX_SCENES_DIR);
+    ASSERT_GE(list.size(), 15u);
+    EXPECT_EQ(list[0].title, "Bouncing squares");
+    auto at = [&list](const std::string& file) {
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            if (std::filesystem::path(list[i].path).filename() == file) return i;
+        }
+        return list.size();
+    };
+    EXPECT_LT(at("lecture_example_1.json"), at("lecture_example_2.json"));
+    EXPECT_LT(at("point_of_impact.json"), at("lecture_example_1.json"));
+    EXPECT_LT(at("lecture_example_2.json"), at("bullet_wall.json"));
+    EXPECT_LT(at("bullet_wall.json"), at("gas_500.json"));
+    for (const SceneEntry& e : list) {
+        const SceneResult r = loadSceneFile(e.path);
+        ASSERT_TRUE(r.scene) << e.path;
+        EXPECT_EQ(e.title, r.scene->name);
+    }
+    // Every scene the order file names exists (a renamed scene must be renamed there too).
+    std::ifstream order(std::filesystem::path(SANDBOX_SCENES_DIR) / kSceneOrderFile);
+    int named = 0;
+    for (std::string line; std::getline(order, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        EXPECT_LT(at(line), list.size()) << line;
+        ++named;
+    }
+    EXPECT_GE(named, 15);
 }
 
 } // namespace
