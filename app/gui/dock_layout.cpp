@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace {
 
@@ -109,4 +110,43 @@ ScreenRect worldRectOnScreen(const Camera& camera, const Bounds& bounds) {
     const Vec2 a = camera.worldToScreen(bounds.min), b = camera.worldToScreen(bounds.max);
     const double x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
     return {x0, y0, std::max(a.x, b.x) - x0, std::max(a.y, b.y) - y0};
+}
+
+namespace {
+
+std::string jsonRect(const ScreenRect& r) {
+    char text[128];
+    std::snprintf(text, sizeof text, "[%.10g, %.10g, %.10g, %.10g]", r.x, r.y, r.width, r.height);
+    return text;
+}
+
+std::string jsonString(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        const unsigned char u = static_cast<unsigned char>(c);
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (u < 0x20) {
+            char esc[8];
+            std::snprintf(esc, sizeof esc, "\\u%04x", u);
+            out += esc;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+} // namespace
+
+std::string layoutJson(const ScreenRect& scene, const ScreenRect& world,
+                       const std::vector<DockedWindow>& windows) {
+    std::string out =
+        "{\"scene\": " + jsonRect(scene) + ", \"world\": " + jsonRect(world) + ", \"windows\": [";
+    for (std::size_t i = 0; i < windows.size(); ++i) {
+        out += (i ? ", " : "") + std::string("{\"name\": ") + jsonString(windows[i].name) +
+               ", \"rect\": " + jsonRect(windows[i].rect) + "}";
+    }
+    return out + "]}\n";
 }

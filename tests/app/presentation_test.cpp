@@ -141,6 +141,17 @@ TEST(DockLayout, WorldRectOnScreenFollowsTheCamera) {
     EXPECT_NEAR(w.x - 350, 36, 1e-9); // the width is the limit: 36 px margin left and right
 }
 
+TEST(DockLayout, LayoutJsonIsTheSpecsDocument) {
+    const std::string json =
+        layoutJson({350, 0, 600, 500}, {386, 70, 528, 316.8},
+                   {{"Plots", {954, 0, 326, 300}}, {"a \"b\"\n", {0, 0, 1, 1}}});
+    EXPECT_EQ(json, "{\"scene\": [350, 0, 600, 500], \"world\": [386, 70, 528, 316.8], "
+                    "\"windows\": [{\"name\": \"Plots\", \"rect\": [954, 0, 326, 300]}, "
+                    "{\"name\": \"a \\\"b\\\"\\u000a\", \"rect\": [0, 0, 1, 1]}]}\n");
+    EXPECT_EQ(layoutJson({0, 0, 1280, 720}, {36, 36, 10, 10}, {}),
+              "{\"scene\": [0, 0, 1280, 720], \"world\": [36, 36, 10, 10], \"windows\": []}\n");
+}
+
 TEST(TextFormat, RoundingNoiseReadsAsZero) {
     EXPECT_EQ(formatNumber(6.56e-13), "0");  // "t = 6.56e-13 of the frame"
     EXPECT_EQ(formatNumber(-7.11e-15), "0"); // "a = 7.11e-15 m"
