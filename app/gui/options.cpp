@@ -86,6 +86,11 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_option("--ui-scale", o.uiScale, "UI scale (0.75 to 3; e.g. 1.5 on a projector)")
         ->check(CLI::Range(0.75f, 3.0f));
     app.add_flag("--verbose", o.verbose, "Print state changes (pause, method, sliders) to stdout");
+    app.add_flag("--present", o.present,
+                 "Start in present mode: only the scene and a one-line caption (Tab toggles)");
+    app.add_option("--layout-json", o.layoutJson,
+                   "Offscreen (with --screenshot): write the scene's, the world's and every "
+                   "window's rectangle in image pixels to this JSON file");
     app.set_version_flag("--version", "sandbox 0.1");
     try {
         app.parse(argc, argv);
@@ -96,6 +101,9 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
             std::string error;
             if (!parseShowList(show, o.show, &error)) throw CLI::ValidationError("--show", error);
             o.showGiven = true;
+        }
+        if (!o.layoutJson.empty() && o.screenshot.empty()) {
+            throw CLI::ValidationError("--layout-json", "needs --screenshot FILE");
         }
         if (!o.record.empty() && o.frames <= 0) {
             throw CLI::ValidationError("--record", "needs --frames N (N > 0)");

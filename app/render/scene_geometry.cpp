@@ -77,14 +77,14 @@ void SceneGeometry::addGrid(const SceneView& view) {
         const double m = std::fmod(std::abs(x - world.bounds.min.x) + 1e-9, major);
         const bool isMajor = m < 1e-6;
         under.rect({x - px * 0.5, lo.y}, {x + px * 0.5, hi.y},
-                   isMajor ? scene_colors::kGridMajor : scene_colors::kGridMinor);
+                   isMajor ? view.theme->gridMajor : view.theme->gridMinor);
     }
     const double y0 = world.bounds.min.y + std::ceil((lo.y - world.bounds.min.y) / step) * step;
     for (double y = y0; y <= hi.y; y += step) {
         const double m = std::fmod(std::abs(y - world.bounds.min.y) + 1e-9, major);
         const bool isMajor = m < 1e-6;
         under.rect({lo.x, y - px * 0.5}, {hi.x, y + px * 0.5},
-                   isMajor ? scene_colors::kGridMajor : scene_colors::kGridMinor);
+                   isMajor ? view.theme->gridMajor : view.theme->gridMinor);
     }
 }
 
@@ -141,7 +141,7 @@ void SceneGeometry::addArrows(const SceneView& view) {
         if (bl.kind == BodyKind::Static) continue;
         const Vec2 tip =
             arrowOnScreen(*view.camera, bl.position, bl.velocity * kVelocityArrowScale).tip;
-        over.lineArrow(bl.position, tip, kArrowHeadPx * px, scene_colors::kVelocity);
+        over.lineArrow(bl.position, tip, kArrowHeadPx * px, view.theme->velocity);
     }
 }
 
@@ -164,7 +164,7 @@ void SceneGeometry::addBlocks(const SceneView& view, double maxPointPx) {
     // The four walls, just outside the bounds, hatched like every body of infinite mass.
     const double t = kWallThicknessPx * px;
     const Vec2 mn = world.bounds.min, mx = world.bounds.max;
-    const Color wall = scene_colors::kWall;
+    const Color wall = view.theme->wall;
     const Vec2 wallRects[4][2] = {{{mn.x - t, mn.y - t}, {mn.x, mx.y + t}},
                                   {{mx.x, mn.y - t}, {mx.x + t, mx.y + t}},
                                   {{mn.x, mn.y - t}, {mx.x, mn.y}},
@@ -182,8 +182,9 @@ void SceneGeometry::addBlocks(const SceneView& view, double maxPointPx) {
         const Color fill = i < view.blockColors.size() ? view.blockColors[i] : Color{};
         const bool selected = static_cast<int>(i) == view.selected;
         // Outlined so every block stands out from the arena, whatever its colour.
-        const Color outline = selected ? scene_colors::kSelection : outlineFor(fill, view.arena);
-        const bool faint = !selected && contrastRatio(fill, view.arena) < kMinBlockContrast;
+        const Color outline =
+            selected ? scene_colors::kSelection : outlineFor(fill, view.theme->arena);
+        const bool faint = !selected && contrastRatio(fill, view.theme->arena) < kMinBlockContrast;
         const float pattern = b.kind == BodyKind::Static      ? 1.0f
                               : b.kind == BodyKind::Kinematic ? 2.0f
                                                               : 0.0f;

@@ -29,8 +29,8 @@ struct SceneView {
         Color color;
     };
     std::vector<Ghosts> ghosts;
-    Color arena = scene_colors::kArena; // inside the bounds (blocks are outlined against it)
-    bool flingActive = false;           // the fling arrow while right-dragging
+    const SceneTheme* theme = &sceneTheme(false); // colours (blocks are outlined against arena)
+    bool flingActive = false;                     // the fling arrow while right-dragging
     Vec2 flingFrom, flingTo;
 };
 
