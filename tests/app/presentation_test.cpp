@@ -1,6 +1,8 @@
 // Classroom presentation logic without GL: the docked layout (no window over the world, none off
 // screen), numbers as students read them, block names with the current mass, save naming.
+#include "classroom.h"
 #include "dock_layout.h"
+#include "history.h"
 #include "inspector_format.h"
 #include "palette.h"
 #include "save_naming.h"
@@ -343,6 +345,125 @@ TEST(ScenePicker, ShippedScenesInTheLecturesOrderWithTheirTitles) {
         ++named;
     }
     EXPECT_GE(named, 15);
+}
+
+TEST(Classroom, EscapeClosesTheTopmostThingAndNeverQuits) {
+    EXPECT_EQ(escapeEffect(true, true, true, true), EscapeEffect::CloseDialog);
+    EXPECT_EQ(escapeEffect(false, true, false, true), EscapeEffect::CloseHelp);
+    EXPECT_EQ(escapeEffect(false, true, true, false), EscapeEffect::LeavePresent);
+    EXPECT_EQ(escapeEffect(false, false, false, true), EscapeEffect::LeaveFullscreen);
+    EXPECT_EQ(escapeEffect(false, false, false, false), EscapeEffect::Nothing);
+}
+
+TEST(Classroom, UnsavedEditsAreBlockEditsOrChangedSettings) {
+    WorldSettings scene;
+    EXPECT_FALSE(hasUnsavedEdits(false, scene, scene));
+    EXPECT_TRUE(hasUnsavedEdits(true, scene, scene));
+    WorldSettings now = scene;
+    now.method = Method::TurnBased;
+    EXPECT_TRUE(hasUnsavedEdits(false, scene, now));
+    now = scene;
+    now.restSpeed = 1.0; // not a setting the user edits
+    EXPECT_FALSE(hasUnsavedEdits(false, scene, now));
+}
+
+TEST(Classroom, PresentCaptionSaysWhatTheSceneIsTheMethodAndTheTime) {
+    EXPECT_EQ(firstSentence("One. Two. Three"), "One.");
+    EXPECT_EQ(firstSentence("No stop"), "No stop");
+    EXPECT_EQ(presentCaption("Lecture example 1", "A hits B. Then more.", Method::Perfect, 0.625),
+              "Lecture example 1: A hits B.   ·   perfect   ·   t = 0.62 s");
+    EXPECT_EQ(presentCaption("Lecture example 1", "A hits B.", Method::TurnBased, 2, false),
+              "Lecture example 1   ·   turn-based   ·   t = 2.00 s");
+}
+
+TEST(Classroom, PausedAtTheStartSaysPToPlay) {
+    EXPECT_EQ(startHint(true, 0.0, false), "P to play");
+    EXPECT_NE(startHint(true, 0.0, true).find("F1"), std::string::npos);
+    EXPECT_EQ(startHint(false, 0.0, true), "");
+    EXPECT_EQ(startHint(true, 1.0, false), "");
+}
+
+TEST(Classroom, TypedValuesAreRangeChecked) {
+    const TypedValue g = checkTypedValue("gravity y", 1e30, -20, 20, "m/s²");
+    EXPECT_EQ(g.value, 20.0);
+    EXPECT_EQ(g.message, "gravity y 1e+30 m/s² is outside -20 to 20 m/s²: set to 20 m/s²");
+    const TypedValue ok = checkTypedValue("gravity y", -9.81, -20, 20, "m/s²");
+    EXPECT_EQ(ok.value, -9.81);
+    EXPECT_TRUE(ok.message.empty());
+    const TypedValue nan = checkTypedValue("bounciness C", NAN, 0, 1, "");
+    EXPECT_EQ(nan.value, 0.0);
+    EXPECT_FALSE(nan.message.empty());
+}
+
+TEST(Classroom, RestingStackHasAReferenceHeight) {
+    const SceneResult stack =
+        loadSceneFile(std::string(SANDBOX_SCENES_DIR) + "/resting_stack.json");
+    ASSERT_TRUE(stack.scene);
+    const auto top = restingStackTop(*stack.scene);
+    ASSERT_TRUE(top);
+    EXPECT_DOUBLE_EQ(*top, 5.0); // five 1 m blocks on the floor
+    const SceneResult moving =
+        loadSceneFile(std::string(SANDBOX_SCENES_DIR) + "/lecture_example_1.json");
+    ASSERT_TRUE(moving.scene);
+    EXPECT_FALSE(restingStackTop(*moving.scene)); // no gravity, moving blocks
+    Scene floating = *stack.scene;
+    floating.blocks[0].position.y += 0.5; // the stack no longer stands on the floor
+    EXPECT_FALSE(restingStackTop(floating));
+}
+
+World movingWorld() {
+    World w;
+    w.settings.gravity = Vec2{0, 0};
+    Block b;
+    b.position = {5, 5};
+    b.size = {1, 1};
+    b.velocity = {1, 0};
+    b.mass = 1;
+    w.blocks = {b};
+    return w;
+}
+
+TEST(HistoryForTheTimeline, RecordedSecondsUseTheFramesOwnTimes) {
+    WorldHistory h;
+    World w = movingWorld();
+    for (int i = 0; i < 60; ++i) {
+        h.beforeStep(w);
+        w.step();
+        h.afterStep(w);
+    }
+    EXPECT_NEAR(h.recordedSeconds(), 1.0, 1e-12);
+    w.settings.dt = 1.0 / 30.0; // a frame-rate change: frames times the current dt would say 2 s
+    for (int i = 0; i < 30; ++i) {
+        h.beforeStep(w);
+        w.step();
+        h.afterStep(w);
+    }
+    EXPECT_NEAR(h.recordedSeconds(), 2.0, 1e-12); // 1 s at 60 Hz and 1 s at 30 Hz
+}
+
+TEST(HistoryForTheTimeline, AnEditDuringReplayStartsANewFuture) {
+    WorldHistory h;
+    World w = movingWorld();
+    for (int i = 0; i < 60; ++i) {
+        h.beforeStep(w);
+        w.step();
+        h.afterStep(w);
+    }
+    World back;
+    ASSERT_TRUE(h.stateAt(20, back));
+    back.blocks[0].position.y = 8.0; // dragged during replay
+    h.editedAt(back);
+    EXPECT_EQ(h.lastFrame(), 20u); // the old future is gone
+    World newest;
+    ASSERT_TRUE(h.stateAt(h.lastFrame(), newest));
+    EXPECT_EQ(newest.blocks[0].position.y, 8.0); // >| keeps the edit
+    h.beforeStep(back);
+    back.step();
+    h.afterStep(back);
+    EXPECT_EQ(h.lastFrame(), 21u);
+    World again;
+    ASSERT_TRUE(h.stateAt(20, again));
+    EXPECT_EQ(again.blocks[0].position.y, 8.0); // scrubbing back shows the edited state
 }
 
 } // namespace
