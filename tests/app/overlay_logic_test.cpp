@@ -88,6 +88,7 @@ TEST(InspectorFormat, WallCollisionUsesTheWallsVelocity) {
 
 TEST(Inspector, PauseOnCollisionStopsAtTheCollisionFrame) {
     App app = lectureExample();
+    app.paused = false; // P
     app.pauseOnCollision = true;
     int frames = 0;
     while (!app.paused && frames < 100) {

@@ -2,7 +2,7 @@
 // screen), numbers as students read them, block names with the current mass, save naming.
 #include "classroom.h"
 #include "dock_layout.h"
-#include "history.h"
+#include "timeline.h"
 #include "inspector_format.h"
 #include "palette.h"
 #include "save_naming.h"

@@ -1,10 +1,15 @@
 #include "app_state.h"
 
 #include "app_config.h"
+#include "classroom.h"
 #include "placement.h"
+#include "save_naming.h"
+#include "text_format.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 
 namespace {
 
@@ -45,8 +50,20 @@ void setScene(App& app, const Scene& scene, const std::string& path) {
     app.scenePath = path;
     app.selected = -1;
     app.autoFit = true;
+    app.paused = true;
+    app.blocksEdited = false;
     restartRun(app);
 }
+
+namespace {
+
+std::string workingDirectory() {
+    std::error_code ec;
+    const std::filesystem::path cwd = std::filesystem::current_path(ec);
+    return ec ? std::string() : cwd.string();
+}
+
+} // namespace
 
 bool loadScene(App& app, const std::string& path) {
     const SceneResult result = loadSceneFile(path);
@@ -54,14 +71,42 @@ bool loadScene(App& app, const std::string& path) {
         app.error = result.error.text();
         return false;
     }
-    setScene(app, *result.scene, path);
+    // The absolute path: the settings remember it, and it must work from any directory.
+    const std::string cwd = workingDirectory();
+    setScene(app, *result.scene, cwd.empty() ? path : absoluteScenePath(path, cwd));
     app.error.clear();
     app.note.clear();
     return true;
 }
 
 void resetScene(App& app) {
+    const WorldSettings chosen = app.world.settings;
     restartRun(app);
+    app.world.settings = chosen;
+}
+
+void resetToFile(App& app) {
+    restartRun(app);
+}
+
+void noteEdit(App& app, bool blocks) {
+    if (blocks) app.blocksEdited = true;
+    if (app.history.empty()) return;
+    const bool replaying = isReplaying(app);
+    app.history.editedAt(app.world);
+    app.telemetry.truncateAfter(app.world.time);
+    if (replaying) {
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      "Edited at t = %.2f s during the replay: a new future starts here (the "
+                      "recorded one after it is dropped).",
+                      app.world.time);
+        app.note = text;
+    }
+}
+
+bool unsavedEdits(const App& app) {
+    return hasUnsavedEdits(app.blocksEdited, app.scene.settings, app.world.settings);
 }
 
 void stepSimulation(App& app) {
@@ -144,17 +189,22 @@ void cycleMethod(App& app) {
     const int count = static_cast<int>(Method::Count);
     const int next = (static_cast<int>(app.world.settings.method) + 1) % count;
     app.world.settings.method = static_cast<Method>(next);
+    noteEdit(app, false);
 }
 
 Scene currentScene(const App& app) {
     Scene original = app.scene;
     original.blocks.clear();
-    for (const BlockLabel& label : app.labels) {
+    for (std::size_t i = 0; i < app.labels.size(); ++i) {
         BlockDef def;
-        def.name = label.name;
-        def.color = label.color;
+        def.name = i < app.world.blocks.size()
+                       ? nameWithMass(app.labels[i].name, app.world.blocks[i].mass)
+                       : app.labels[i].name;
+        def.color = app.labels[i].color;
         original.blocks.push_back(def);
     }
+    original.description =
+        savedDescription(app.scene.description, app.scene.settings, app.world.settings);
     return sceneFromWorld(app.world, original);
 }
 
@@ -163,14 +213,51 @@ bool saveCurrentScene(App& app, const std::string& path) {
         app.error = "Save: no file name given";
         return false;
     }
+    const std::string cwd = workingDirectory();
+    const std::string where = cwd.empty() ? path : absoluteScenePath(path, cwd);
+    const Scene scene = currentScene(app);
     std::string error;
-    if (!saveSceneFile(currentScene(app), path, &error)) {
-        app.error = "Save failed: " + (error.empty() ? path : error);
+    if (!saveSceneFile(scene, where, &error)) {
+        app.error = "Save failed: " + (error.empty() ? where : error);
         return false;
     }
+    // The saved file is now the current scene's: the settings remember it, reset to file and R
+    // go back to it, and there is nothing unsaved.
+    app.scene = scene;
+    app.scenePath = where;
+    app.labels.clear();
+    for (const BlockDef& def : scene.blocks) app.labels.push_back({def.name, def.color});
+    app.blocksEdited = false;
     app.error.clear();
-    app.note = "Saved " + path;
+    app.note = "Saved " + where;
     return true;
+}
+
+std::string suggestedSavePath(const App& app) {
+    namespace fs = std::filesystem;
+    std::string dir = workingDirectory();
+    if (!app.scenePath.empty()) {
+        const fs::path sceneDir = fs::path(app.scenePath).parent_path();
+        std::error_code ec;
+        const bool shipped = !app.scenesDir.empty() &&
+                             fs::equivalent(sceneDir, fs::path(app.scenesDir), ec) && !ec;
+        if (!shipped && !sceneDir.empty()) dir = sceneDir.string();
+    }
+    return suggestSavePath(app.scene.name, dir, [](const std::string& p) {
+        std::error_code ec;
+        return fs::exists(p, ec);
+    });
+}
+
+bool isFloating(const App& app, const std::string& title) {
+    return std::find(app.floatingWindows.begin(), app.floatingWindows.end(), title) !=
+           app.floatingWindows.end();
+}
+
+void setFloating(App& app, const std::string& title, bool floating) {
+    auto& f = app.floatingWindows;
+    f.erase(std::remove(f.begin(), f.end(), title), f.end());
+    if (floating) f.push_back(title);
 }
 
 int addBlockAt(App& app, Vec2 at) {
@@ -189,6 +276,7 @@ int addBlockAt(App& app, Vec2 at) {
     app.labels.push_back({"", ""});
     app.labels.back().name = "new " + std::to_string(app.world.blocks.size());
     app.selected = static_cast<int>(app.world.blocks.size()) - 1;
+    noteEdit(app, true);
     return app.selected;
 }
 
@@ -199,6 +287,7 @@ void deleteSelected(App& app) {
     if (i < static_cast<int>(app.labels.size())) app.labels.erase(app.labels.begin() + i);
     app.selected = -1;
     app.mouse = MouseTool{};
+    noteEdit(app, true);
 }
 
 void applyShowSet(App& app, const ShowSet& show) {
@@ -215,7 +304,12 @@ void setUiScale(App& app, float scale) {
 std::string blockDisplayName(const App& app, int index) {
     if (index >= 0 && index < static_cast<int>(app.labels.size()) &&
         !app.labels[static_cast<std::size_t>(index)].name.empty()) {
-        return app.labels[static_cast<std::size_t>(index)].name;
+        const std::string& name = app.labels[static_cast<std::size_t>(index)].name;
+        // A name that states a mass ("m1 = 1 kg") states the current one.
+        if (index < static_cast<int>(app.world.blocks.size())) {
+            return nameWithMass(name, app.world.blocks[static_cast<std::size_t>(index)].mass);
+        }
+        return name;
     }
     return "#" + std::to_string(index);
 }
@@ -246,6 +340,7 @@ void setBlockKind(App& app, int index, BodyKind kind) {
         b.mass = kInfiniteMass;
         if (kind == BodyKind::Static) b.velocity = Vec2{};
     }
+    noteEdit(app, true);
 }
 
 bool setBlockSize(App& app, int index, Vec2 size) {
@@ -262,6 +357,7 @@ bool setBlockSize(App& app, int index, Vec2 size) {
     }
     if (overlapsAnyBlock(app.world, index, b.position, size)) return false;
     b.size = size;
+    noteEdit(app, true);
     return true;
 }
 
