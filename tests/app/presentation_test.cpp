@@ -21,12 +21,12 @@ namespace {
 
 // Every overlay window, with the wishes the app gives them (overlay table).
 std::vector<DockRequest> everyWindow() {
-    return {{"Plots", DockSide::Right, 220, 3, 380},
-            {"Collision inspector", DockSide::Right, 180, 2, 400},
-            {"Momenta", DockSide::Right, 140, 1, 300},
-            {"Timeline", DockSide::Bottom, 300, 1, 110},
-            {"Methods side by side", DockSide::Bottom, 420, 2, 150},
-            {"Speed versus accuracy", DockSide::Bottom, 300, 1.5, 200}};
+    return {{"Plots", DockSide::Right, 240, 3, 400},
+            {"Collision inspector", DockSide::Right, 200, 2, 430},
+            {"Speed versus accuracy", DockSide::Right, 260, 2, 400},
+            {"Timeline", DockSide::Bottom, 330, 1, 100},
+            {"Methods side by side", DockSide::Bottom, 480, 2, 150},
+            {"Momenta", DockSide::Bottom, 200, 1, 200}};
 }
 
 void expectSound(const Layout& l, double w, double h) {

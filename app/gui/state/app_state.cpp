@@ -109,6 +109,43 @@ bool unsavedEdits(const App& app) {
     return hasUnsavedEdits(app.blocksEdited, app.scene.settings, app.world.settings);
 }
 
+void requestQuit(App& app) {
+    if (app.quitDialogOpen || !unsavedEdits(app)) {
+        app.quitRequested = true;
+        return;
+    }
+    app.quitDialogOpen = true;
+}
+
+void setPresentMode(App& app, bool on) {
+    app.presentMode = on;
+    app.autoFit = true; // the scene's rectangle changes: fit the world into it again
+}
+
+EscapeEffect pressEscape(App& app) {
+    const EscapeEffect e = escapeEffect(app.quitDialogOpen || app.saveDialogOpen, app.helpOpen,
+                                        app.presentMode, app.fullscreen);
+    switch (e) {
+    case EscapeEffect::CloseDialog:
+        app.quitDialogOpen = false;
+        app.saveDialogOpen = false;
+        break;
+    case EscapeEffect::CloseHelp:
+        app.helpOpen = false;
+        break;
+    case EscapeEffect::LeavePresent:
+        setPresentMode(app, false);
+        break;
+    case EscapeEffect::LeaveFullscreen:
+        app.fullscreenRequested = true;
+        break;
+    case EscapeEffect::Nothing:
+        app.note = "Esc closes windows and leaves present mode or fullscreen; Ctrl+Q quits.";
+        break;
+    }
+    return e;
+}
+
 void stepSimulation(App& app) {
     if (isReplaying(app)) app.telemetry.truncateAfter(app.world.time);
     app.history.beforeStep(app.world);

@@ -5,6 +5,7 @@
 
 #include "app_log.h"
 #include "camera.h"
+#include "classroom.h"
 #include "dock_layout.h"
 #include "fixed_step.h"
 #include "timeline.h"
@@ -144,6 +145,13 @@ void resetToFile(App& app);
 void noteEdit(App& app, bool blocks);
 // True when quitting would lose edits (see App::blocksEdited).
 bool unsavedEdits(const App& app);
+// Ctrl+Q or the window's close button: quits, or opens the quit dialog when there are unsaved
+// edits (a second request while it is open quits).
+void requestQuit(App& app);
+// Present mode on or off: every panel and window hidden, and back as they were.
+void setPresentMode(App& app, bool on);
+// Esc (see escapeEffect): returns what it did.
+EscapeEffect pressEscape(App& app);
 // One simulation frame of settings.dt; updates stats, totals and trails.
 void stepSimulation(App& app);
 // Advances the fixed-step clock by `realSeconds` and runs the due frames (none while paused or

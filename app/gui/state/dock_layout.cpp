@@ -73,21 +73,21 @@ Layout computeLayout(const LayoutInput& in) {
     const double columnX = W - columnW, stripY = H - stripH;
     const double gap = kDockGap * s;
 
-    // The right column, full height, windows stacked top to bottom.
-    const std::vector<double> heights = share(right, H, gap, s);
+    // The right column, above the strip, windows stacked top to bottom.
+    const double columnH = bottom.empty() ? H : stripY;
+    const std::vector<double> heights = share(right, columnH, gap, s);
     double y = 0.0;
     for (std::size_t i = 0; i < right.size(); ++i) {
-        const double y1 = i + 1 == right.size() ? H : y + heights[i];
+        const double y1 = i + 1 == right.size() ? columnH : y + heights[i];
         out.windows.push_back({right[i]->name, fromEdges(columnX + gap, y, W, y1)});
         y = y1 + gap;
     }
-    // The bottom strip, between the panel and the column, windows left to right.
+    // The bottom strip, from the panel to the right edge (under the column), left to right.
     const double stripX0 = areaX + (panel > 0.0 ? gap : 0.0);
-    const double stripX1 = right.empty() ? W : columnX;
-    const std::vector<double> widths = share(bottom, stripX1 - stripX0, gap, s);
+    const std::vector<double> widths = share(bottom, W - stripX0, gap, s);
     double x = stripX0;
     for (std::size_t i = 0; i < bottom.size(); ++i) {
-        const double x1 = i + 1 == bottom.size() ? stripX1 : x + widths[i];
+        const double x1 = i + 1 == bottom.size() ? W : x + widths[i];
         out.windows.push_back({bottom[i]->name, fromEdges(x, stripY + gap, x1, H)});
         x = x1 + gap;
     }

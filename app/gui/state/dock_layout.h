@@ -1,6 +1,7 @@
 // The docked layout: where the controls panel, the overlay windows and the scene go on screen.
 // The panel is a column on the left; docked overlay windows stack in a column on the right and
-// side by side in a strip along the bottom; the scene takes the rectangle that is left, and the
+// side by side in a strip along the bottom (right of the panel, under the column); the scene
+// takes the rectangle that is left, and the
 // camera fits the world into it, so no docked window ever covers the world. Pure logic (no GL,
 // no ImGui): given the display size, the UI scale, the panel and the visible windows with their
 // wishes, it returns rectangles in screen pixels (whole pixels, inside the display, disjoint).

@@ -15,6 +15,7 @@ constexpr int kD = 68;
 constexpr int kF = 70;
 constexpr int kN = 78;
 constexpr int kP = 80;
+constexpr int kQ = 81;
 constexpr int kR = 82;
 constexpr int kS = 83;
 constexpr int kV = 86;
@@ -29,7 +30,8 @@ constexpr int kKeypadAdd = 334;
 
 enum class Action {
     None,
-    Reset,            // R: back to the scene as loaded
+    Reset,            // R: blocks and time back to the scene as loaded; settings kept
+    ResetToFile,      // Shift+R: everything back to the scene as loaded
     TogglePause,      // P
     ToggleSlowMotion, // Space: 5 simulation frames per second, as in the lecture's demo
     ToggleTrails,     // D: draw trajectories
@@ -38,14 +40,15 @@ enum class Action {
     StepOnce,         // N: one frame (pauses)
     ToggleVectors,    // V: velocity arrows
     FitView,          // F: show the whole world
-    ToggleUi,         // Tab
+    TogglePresent,    // Tab: present mode (the scene and a caption only)
     ToggleFullscreen, // F11
     ToggleHelp,       // F1
     UiScaleUp,        // Ctrl+=
     UiScaleDown,      // Ctrl+-
     DeleteSelected,   // Delete
-    Quit,             // Esc
-    Save,             // Ctrl+S: save the current state (to the path in the Save field)
+    Escape,           // Esc: closes a dialog or Help, leaves present mode or fullscreen
+    Quit,             // Ctrl+Q (asks when there are unsaved edits)
+    Save,             // Ctrl+S: save the current state as a scene (asks for a name)
 };
 
 // A key press as the window reports it (queued by the window backend, so a tap shorter than a
@@ -53,6 +56,7 @@ enum class Action {
 struct KeyPress {
     int key;
     bool ctrl;
+    bool shift = false;
 };
 
 struct KeyBinding {
@@ -61,11 +65,13 @@ struct KeyBinding {
     Action action;
     const char* keyName;     // as shown in the Help window
     const char* description; // as shown in the Help window
+    bool shift = false;
 };
 
 // Every binding, in the order the Help window lists them.
 const std::vector<KeyBinding>& keyBindings();
-// The action for `key` pressed with (or without) Ctrl; Action::None when unbound.
-Action actionForKey(int key, bool ctrl);
+// The action for `key` pressed with (or without) Ctrl and Shift; Action::None when unbound. A key
+// bound without Shift also answers with Shift held when it has no Shift binding of its own.
+Action actionForKey(int key, bool ctrl, bool shift = false);
 // A short name for logs ("reset", "pause", ...).
 const char* actionName(Action action);
