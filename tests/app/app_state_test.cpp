@@ -324,8 +324,9 @@ TEST(OverlayTable, NamesAndFlagsAreUniqueAndWindowsHaveRoom) {
         EXPECT_NE(std::string(a.name), "none");
         EXPECT_NE(showNames().find(a.name), std::string::npos);
         if (a.title != nullptr) {
-            EXPECT_GT(a.place.widthFraction, 0.0f) << a.name;
-            EXPECT_GT(a.place.heightFraction, 0.0f) << a.name;
+            EXPECT_GT(a.place.minExtent, 0.0) << a.name;
+            EXPECT_GT(a.place.weight, 0.0) << a.name;
+            EXPECT_GT(a.place.crossExtent, 0.0) << a.name;
         }
         for (std::size_t j = i + 1; j < kOverlayCount; ++j) {
             EXPECT_NE(std::string(a.name), kOverlays[j].name);

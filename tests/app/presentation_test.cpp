@@ -106,7 +106,7 @@ TEST(DockLayout, RightColumnOnlyLeavesTheFullHeightAndStacksByWeight) {
 TEST(DockLayout, BottomStripOnlySpansFromThePanelToTheEdge) {
     LayoutInput in;
     in.panelWidth = 350.0;
-    in.windows = {{"t", DockSide::Bottom, 200, 1, 110}};
+    in.windows = {{"t", DockSide::Bottom, 200, 1, 80}};
     const Layout l = computeLayout(in);
     expectSound(l, 1280, 720);
     const ScreenRect* t = l.find("t");

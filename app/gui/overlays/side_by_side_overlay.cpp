@@ -28,9 +28,12 @@ void drawSideBySideOverlay(App& app) {
         ImGui::TextWrapped("Starts from the current state when the simulation runs (P or N).");
         return;
     }
-    const ImGuiTableFlags flags =
-        ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_BordersInnerV;
-    if (ImGui::BeginTable("methods", 6, flags)) {
+    // Columns at the width of their contents (never cut): a narrow window scrolls sideways.
+    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit |
+                                  ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX;
+    const float rows = ImGui::GetTextLineHeightWithSpacing() * 4.0f +
+                       ImGui::GetStyle().ScrollbarSize + ImGui::GetStyle().CellPadding.y * 8.0f;
+    if (ImGui::BeginTable("methods", 6, flags, ImVec2(0.0f, rows))) {
         ImGui::TableSetupColumn("method");
         ImGui::TableSetupColumn("collisions");
         ImGui::TableSetupColumn("max overlap");

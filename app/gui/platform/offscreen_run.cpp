@@ -79,11 +79,29 @@ bool runProgram(const std::vector<std::string>& args) {
     return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
+// The layout of the last frame (SPEC's --layout-json): the scene's rectangle, the world's bounds
+// as drawn, and every window drawn, in image pixels.
+bool writeLayoutJson(const App& app, const std::string& path) {
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    if (!f) {
+        std::fprintf(stderr, "sandbox: cannot write %s\n", path.c_str());
+        return false;
+    }
+    const std::string json = layoutJson(app.camera.viewport(),
+                                        worldRectOnScreen(app.camera, app.world.bounds),
+                                        app.shownWindows);
+    const bool ok = std::fputs(json.c_str(), f) >= 0;
+    return std::fclose(f) == 0 && ok;
+}
+
 int screenshot(App& app, Offscreen& off, const Options& o) {
+    // --frames N simulates N frames, as if P had been pressed (the badge then shows no PAUSED).
     for (int i = 0; i < o.frames; ++i) stepSimulation(app);
+    if (o.frames > 0) app.paused = false;
     if (app.show.cost) runCostSweepNow(app);
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off);
     if (!writeFrame(off, o.screenshot)) return 1;
+    if (!o.layoutJson.empty() && !writeLayoutJson(app, o.layoutJson)) return 1;
     std::error_code ec; // print where the PNG is, as an absolute path when it can be had
     const std::filesystem::path where = std::filesystem::absolute(o.screenshot, ec);
     std::printf("%s\n", ec ? o.screenshot.c_str() : where.c_str());
@@ -99,6 +117,7 @@ int record(App& app, Offscreen& off, const Options& o) {
         return 1;
     }
     for (int i = 0; i < kSettleFrames - 1; ++i) renderFrame(app, off);
+    app.paused = false; // a recording runs the scene
     char name[32];
     for (int i = 0; i < o.frames; ++i) {
         stepSimulation(app);
@@ -162,8 +181,9 @@ int runOffscreen(const Options& options) {
         return 1;
     }
     setUiScale(app, o.uiScale > 0.0f ? o.uiScale : 1.0f);
+    if (o.present) setPresentMode(app, true);
     uiCreateContext(nullptr);
-    uiApplyScale(app.uiScale);
+    uiApplyLook(app.uiScale, app.labelScale, app.lightTheme);
     Offscreen off;
     if (!offscreenInit(off.context, o.width, o.height, &error)) {
         std::fprintf(stderr, "sandbox: %s\n", error.c_str());

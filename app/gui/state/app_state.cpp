@@ -2,6 +2,7 @@
 
 #include "app_config.h"
 #include "classroom.h"
+#include "overlays.h"
 #include "placement.h"
 #include "save_naming.h"
 #include "text_format.h"
@@ -355,15 +356,30 @@ double panelWidth(float uiScale, double displayWidth) {
     return std::min(350.0 * static_cast<double>(uiScale), displayWidth * 0.45);
 }
 
+Layout computeAppLayout(const App& app, double displayWidth, double displayHeight) {
+    LayoutInput in;
+    in.displayWidth = displayWidth;
+    in.displayHeight = displayHeight;
+    in.uiScale = app.uiScale;
+    if (app.presentMode) return computeLayout(in); // the scene alone
+    in.panelWidth = app.uiVisible ? panelWidth(app.uiScale, displayWidth) : 0.0;
+    for (const OverlayInfo& row : kOverlays) {
+        if (!row.title || !(app.show.*row.flag) || isFloating(app, row.title)) continue;
+        in.windows.push_back(
+            {row.title, row.place.side, row.place.minExtent, row.place.weight,
+             row.place.crossExtent});
+    }
+    return computeLayout(in);
+}
+
 ScreenRect sceneViewport(const App& app, double displayWidth, double displayHeight) {
-    if (!app.uiVisible) return {0.0, 0.0, displayWidth, displayHeight};
-    const double panel = panelWidth(app.uiScale, displayWidth);
-    return {panel, 0.0, std::max(1.0, displayWidth - panel), displayHeight};
+    return computeAppLayout(app, displayWidth, displayHeight).scene;
 }
 
 void updateCamera(App& app, double displayWidth, double displayHeight) {
-    app.camera.setViewport(sceneViewport(app, displayWidth, displayHeight));
-    if (app.autoFit) app.camera.fit(app.world.bounds, 36.0 * static_cast<double>(app.uiScale));
+    app.layout = computeAppLayout(app, displayWidth, displayHeight);
+    app.camera.setViewport(app.layout.scene);
+    if (app.autoFit) app.camera.fit(app.world.bounds, kFitMarginPx * static_cast<double>(app.uiScale));
 }
 
 void setBlockKind(App& app, int index, BodyKind kind) {

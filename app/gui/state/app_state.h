@@ -121,9 +121,16 @@ struct App {
 
 // Width of the controls panel in pixels for a UI scale and window width.
 double panelWidth(float uiScale, double displayWidth);
-// The part of the window the scene is drawn into (right of the panel, or all when hidden).
+// Pixels (at UI scale 1) between the world's bounds and the scene's rectangle when the camera
+// fits the world: room for the axis numbers and, at the top, the status badge or caption.
+constexpr double kFitMarginPx = 36.0;
+// This frame's layout: the panel (unless hidden), the shown overlay windows that are not floating
+// docked around the scene (none in present mode), and the scene's rectangle.
+Layout computeAppLayout(const App& app, double displayWidth, double displayHeight);
+// The part of the window the scene is drawn into (computeAppLayout's scene).
 ScreenRect sceneViewport(const App& app, double displayWidth, double displayHeight);
-// Gives the camera this frame's viewport; refits the world while app.autoFit holds.
+// Lays out the frame (app.layout), gives the camera the scene's rectangle and refits the world
+// while app.autoFit holds.
 void updateCamera(App& app, double displayWidth, double displayHeight);
 // Changes the kind of block `index` (dynamic blocks get mass 1 kg when they had none).
 void setBlockKind(App& app, int index, BodyKind kind);

@@ -14,6 +14,15 @@
 
 enum class DockSide { Right, Bottom };
 
+// Where a window docks, as the overlay table (overlays.h) states it: the fields of DockRequest
+// without the name.
+struct DockWish {
+    DockSide side = DockSide::Right;
+    double minExtent = 120.0;
+    double weight = 1.0;
+    double crossExtent = 360.0;
+};
+
 // What a window asks of the layout. Sizes are pixels at UI scale 1 (scaled by the UI scale).
 struct DockRequest {
     std::string name;
@@ -52,7 +61,7 @@ struct Layout {
 constexpr double kMaxColumnShare = 0.42; // of the width right of the panel
 constexpr double kMinColumnShare = 0.30;
 constexpr double kMaxStripShare = 0.38; // of the height
-constexpr double kMinStripShare = 0.22;
+constexpr double kMinStripShare = 0.15;
 // Pixels (at UI scale 1) between neighbouring windows.
 constexpr double kDockGap = 4.0;
 

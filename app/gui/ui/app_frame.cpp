@@ -11,9 +11,12 @@
 namespace {
 
 void handleKeys(App& app, const std::vector<KeyPress>& keys) {
-    // Typing into a text field (a file name) must not trigger hotkeys.
-    if (ImGui::GetIO().WantTextInput) return;
-    for (const KeyPress& k : keys) applyAction(app, actionForKey(k.key, k.ctrl));
+    // Typing into a text field (a file name) must not trigger hotkeys; Esc still closes dialogs.
+    const bool typing = ImGui::GetIO().WantTextInput;
+    for (const KeyPress& k : keys) {
+        const Action a = actionForKey(k.key, k.ctrl, k.shift);
+        if (!typing || a == Action::Escape) applyAction(app, a);
+    }
 }
 
 void logEvent(const App& app, const char* text) {
@@ -31,6 +34,10 @@ void applyAction(App& app, Action action) {
     case Action::Reset:
         resetScene(app);
         logEvent(app, "reset");
+        break;
+    case Action::ResetToFile:
+        resetToFile(app);
+        logEvent(app, "reset to file");
         break;
     case Action::TogglePause:
         app.paused = !app.paused;
@@ -58,8 +65,9 @@ void applyAction(App& app, Action action) {
     case Action::FitView:
         app.autoFit = true;
         break;
-    case Action::ToggleUi:
-        app.uiVisible = !app.uiVisible;
+    case Action::TogglePresent:
+        setPresentMode(app, !app.presentMode);
+        logEvent(app, app.presentMode ? "present mode: on" : "present mode: off");
         break;
     case Action::ToggleFullscreen:
         app.fullscreenRequested = true;
@@ -76,12 +84,22 @@ void applyAction(App& app, Action action) {
     case Action::DeleteSelected:
         deleteSelected(app);
         break;
+    case Action::Escape: {
+        const EscapeEffect e = pressEscape(app);
+        logEvent(app, e == EscapeEffect::CloseDialog       ? "escape: dialog closed"
+                      : e == EscapeEffect::CloseHelp       ? "escape: help closed"
+                      : e == EscapeEffect::LeavePresent    ? "escape: present mode off"
+                      : e == EscapeEffect::LeaveFullscreen ? "escape: fullscreen off"
+                                                           : "escape: nothing to close");
+        break;
+    }
     case Action::Quit:
-        app.quitRequested = true;
+        requestQuit(app);
+        if (app.quitDialogOpen) logEvent(app, "quit: unsaved edits, asking");
         break;
     case Action::Save:
-        if (app.savePath.empty()) app.savePath = "saved_scene.json";
-        saveCurrentScene(app, app.savePath);
+        app.saveDialogOpen = true;
+        app.saveDialogPath = suggestedSavePath(app);
         break;
     }
 }
@@ -100,6 +118,7 @@ void logStateChanges(App& app) {
 
 void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, bool runClock) {
     const ImGuiIO& io = ImGui::GetIO();
+    app.shownWindows.clear();
     updateCamera(app, io.DisplaySize.x, io.DisplaySize.y);
     handleKeys(app, keys);
     handleSceneMouse(app);
@@ -110,8 +129,11 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     }
     drawSceneDecorations(app);
     drawOverlays(app);
-    if (app.uiVisible) drawControlsPanel(app);
-    if (app.helpOpen) drawHelpWindow(app);
+    if (!app.presentMode) {
+        if (app.uiVisible) drawControlsPanel(app);
+        if (app.helpOpen) drawHelpWindow(app);
+    }
+    drawDialogs(app);
     logStateChanges(app);
 }
 
@@ -125,6 +147,7 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
     view.displayWidth = io.DisplaySize.x;
     view.displayHeight = io.DisplaySize.y;
     view.selected = app.selected;
+    view.theme = &sceneTheme(app.lightTheme);
     view.vectors = app.show.vectors;
     view.trails = app.show.trails ? &app.trails : nullptr;
     if (app.show.sideBySide && app.methods.running) {

@@ -6,7 +6,13 @@
 void uiCreateContext(const char* iniPath);
 void uiDestroyContext();
 // Rebuilds the font atlas and style sizes for `scale` (the UI renderer uploads the new atlas at
-// its next NewFrame).
-void uiApplyScale(float scale);
-// The scale uiApplyScale last applied.
+// its next NewFrame), with the scene labels' font at `labelScale` times the UI font, and the dark
+// or light theme. Does only what changed since the last call.
+void uiApplyLook(float scale, float labelScale, bool light);
+void uiApplyScale(float scale); // uiApplyLook with the current label scale and theme
+// The scale uiApplyLook last applied.
 float uiCurrentScale();
+// The font of the scene's labels (block names, axis numbers, the caption): its own size.
+struct ImFont;
+ImFont* uiLabelFont();
+bool uiLightTheme();
