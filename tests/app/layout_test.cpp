@@ -67,6 +67,10 @@ struct Case {
     }
 };
 
+void PrintTo(const Case& c, std::ostream* os) {
+    *os << c.name();
+}
+
 std::vector<Case> cases() {
     std::vector<Case> out;
     for (const SceneEntry& e : listScenes(SANDBOX_SCENES_DIR)) {

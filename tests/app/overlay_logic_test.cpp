@@ -2,12 +2,12 @@
 // first worked example, the timeline's scrub-and-replay (bit-exact, checked with stateHash), the
 // plot widget's ticks and time window, the point of impact and the methods side by side.
 #include "app_state.h"
-#include "timeline.h"
 #include "inspector_format.h"
 #include "plot_logic.h"
 #include "poi.h"
 #include "scene_library.h"
 #include "side_by_side.h"
+#include "timeline.h"
 
 #include <gtest/gtest.h>
 

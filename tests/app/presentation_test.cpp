@@ -2,13 +2,13 @@
 // screen), numbers as students read them, block names with the current mass, save naming.
 #include "classroom.h"
 #include "dock_layout.h"
-#include "timeline.h"
 #include "inspector_format.h"
 #include "palette.h"
 #include "save_naming.h"
 #include "scene_geometry.h"
 #include "scene_library.h"
 #include "text_format.h"
+#include "timeline.h"
 
 #include <gtest/gtest.h>
 

@@ -39,11 +39,10 @@ void drawTimelineOverlay(App& app) {
         go(frame);
     }
     char info[160];
-    std::snprintf(info, sizeof info, "%.1f s recorded, %zu keyframes, %.1f MB%s",
-                  h.recordedSeconds(), h.keyframeCount(),
-                  static_cast<double>(h.bytes()) / (1024.0 * 1024.0),
-                  isReplaying(app) ? ". Play or step to go on from here; an edit starts a new future."
-                                   : "");
+    std::snprintf(
+        info, sizeof info, "%.1f s recorded, %zu keyframes, %.1f MB%s", h.recordedSeconds(),
+        h.keyframeCount(), static_cast<double>(h.bytes()) / (1024.0 * 1024.0),
+        isReplaying(app) ? ". Play or step to go on from here; an edit starts a new future." : "");
     ImGui::PushTextWrapPos(0.0f);
     dimText(info);
     ImGui::PopTextWrapPos();

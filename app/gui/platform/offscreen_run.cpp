@@ -87,9 +87,8 @@ bool writeLayoutJson(const App& app, const std::string& path) {
         std::fprintf(stderr, "sandbox: cannot write %s\n", path.c_str());
         return false;
     }
-    const std::string json = layoutJson(app.camera.viewport(),
-                                        worldRectOnScreen(app.camera, app.world.bounds),
-                                        app.shownWindows);
+    const std::string json = layoutJson(
+        app.camera.viewport(), worldRectOnScreen(app.camera, app.world.bounds), app.shownWindows);
     const bool ok = std::fputs(json.c_str(), f) >= 0;
     return std::fclose(f) == 0 && ok;
 }

@@ -15,11 +15,11 @@
 static_assert(keys::kSpace == GLFW_KEY_SPACE && keys::kMinus == GLFW_KEY_MINUS &&
                   keys::kEqual == GLFW_KEY_EQUAL && keys::kC == GLFW_KEY_C &&
                   keys::kD == GLFW_KEY_D && keys::kF == GLFW_KEY_F && keys::kN == GLFW_KEY_N &&
-                  keys::kP == GLFW_KEY_P && keys::kQ == GLFW_KEY_Q && keys::kR == GLFW_KEY_R && keys::kS == GLFW_KEY_S &&
-                  keys::kV == GLFW_KEY_V && keys::kEscape == GLFW_KEY_ESCAPE &&
-                  keys::kTab == GLFW_KEY_TAB && keys::kDelete == GLFW_KEY_DELETE &&
-                  keys::kF1 == GLFW_KEY_F1 && keys::kF11 == GLFW_KEY_F11 &&
-                  keys::kKeypadSubtract == GLFW_KEY_KP_SUBTRACT &&
+                  keys::kP == GLFW_KEY_P && keys::kQ == GLFW_KEY_Q && keys::kR == GLFW_KEY_R &&
+                  keys::kS == GLFW_KEY_S && keys::kV == GLFW_KEY_V &&
+                  keys::kEscape == GLFW_KEY_ESCAPE && keys::kTab == GLFW_KEY_TAB &&
+                  keys::kDelete == GLFW_KEY_DELETE && keys::kF1 == GLFW_KEY_F1 &&
+                  keys::kF11 == GLFW_KEY_F11 && keys::kKeypadSubtract == GLFW_KEY_KP_SUBTRACT &&
                   keys::kKeypadAdd == GLFW_KEY_KP_ADD,
               "input_map.h key codes must match GLFW's");
 
@@ -35,8 +35,7 @@ void onGlfwError(int code, const char* description) {
 void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     auto* w = static_cast<WindowGlfw*>(glfwGetWindowUserPointer(window));
     if (!w || action != GLFW_PRESS) return;
-    w->keyPresses.push_back(
-        {key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0});
+    w->keyPresses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0});
 }
 
 } // namespace

@@ -277,8 +277,8 @@ std::string suggestedSavePath(const App& app) {
     if (!app.scenePath.empty()) {
         const fs::path sceneDir = fs::path(app.scenePath).parent_path();
         std::error_code ec;
-        const bool shipped = !app.scenesDir.empty() &&
-                             fs::equivalent(sceneDir, fs::path(app.scenesDir), ec) && !ec;
+        const bool shipped =
+            !app.scenesDir.empty() && fs::equivalent(sceneDir, fs::path(app.scenesDir), ec) && !ec;
         if (!shipped && !sceneDir.empty()) dir = sceneDir.string();
     }
     return suggestSavePath(app.scene.name, dir, [](const std::string& p) {
@@ -365,9 +365,8 @@ Layout computeAppLayout(const App& app, double displayWidth, double displayHeigh
     in.panelWidth = app.uiVisible ? panelWidth(app.uiScale, displayWidth) : 0.0;
     for (const OverlayInfo& row : kOverlays) {
         if (!row.title || !(app.show.*row.flag) || isFloating(app, row.title)) continue;
-        in.windows.push_back(
-            {row.title, row.place.side, row.place.minExtent, row.place.weight,
-             row.place.crossExtent});
+        in.windows.push_back({row.title, row.place.side, row.place.minExtent, row.place.weight,
+                              row.place.crossExtent});
     }
     return computeLayout(in);
 }
@@ -379,7 +378,8 @@ ScreenRect sceneViewport(const App& app, double displayWidth, double displayHeig
 void updateCamera(App& app, double displayWidth, double displayHeight) {
     app.layout = computeAppLayout(app, displayWidth, displayHeight);
     app.camera.setViewport(app.layout.scene);
-    if (app.autoFit) app.camera.fit(app.world.bounds, kFitMarginPx * static_cast<double>(app.uiScale));
+    if (app.autoFit)
+        app.camera.fit(app.world.bounds, kFitMarginPx * static_cast<double>(app.uiScale));
 }
 
 void setBlockKind(App& app, int index, BodyKind kind) {

@@ -8,7 +8,6 @@
 #include "classroom.h"
 #include "dock_layout.h"
 #include "fixed_step.h"
-#include "timeline.h"
 #include "mouse_tool.h"
 #include "options.h"
 #include "palette.h"
@@ -17,6 +16,7 @@
 #include "scene_library.h"
 #include "side_by_side.h"
 #include "telemetry.h"
+#include "timeline.h"
 #include "trails.h"
 #include "world.h"
 

@@ -62,8 +62,8 @@ void saveDialog(App& app) {
         ImGui::SetKeyboardFocusHere();
         focus = false;
     }
-    const bool enter = ImGui::InputText("##path", &app.saveDialogPath,
-                                        ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool enter =
+        ImGui::InputText("##path", &app.saveDialogPath, ImGuiInputTextFlags_EnterReturnsTrue);
     std::error_code ec;
     const bool exists =
         !app.saveDialogPath.empty() && std::filesystem::exists(app.saveDialogPath, ec);

@@ -25,8 +25,8 @@ bool beginOverlayWindow(App& app, const char* title, bool* open) {
     const ScreenRect* docked = app.layout.find(title);
     ImGuiWindowFlags flags = ImGuiWindowFlags_NoSavedSettings;
     if (docked) {
-        ImGui::SetNextWindowPos(ImVec2(static_cast<float>(docked->x), static_cast<float>(docked->y)),
-                                ImGuiCond_Always);
+        ImGui::SetNextWindowPos(
+            ImVec2(static_cast<float>(docked->x), static_cast<float>(docked->y)), ImGuiCond_Always);
         ImGui::SetNextWindowSize(
             ImVec2(static_cast<float>(docked->width), static_cast<float>(docked->height)),
             ImGuiCond_Always);
@@ -42,7 +42,8 @@ bool beginOverlayWindow(App& app, const char* title, bool* open) {
     if (docked) {
         // A press on the title bar, then a drag: the window floats from here on (ImGui moves it
         // with the mouse from the next frame, when the layout no longer places it).
-        const bool onTitle = io.MousePos.y >= pos.y && io.MousePos.y < pos.y + ImGui::GetFrameHeight();
+        const bool onTitle =
+            io.MousePos.y >= pos.y && io.MousePos.y < pos.y + ImGui::GetFrameHeight();
         if (ImGui::IsWindowHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && onTitle) {
             gTitlePressed[id] = true;
         }
@@ -93,8 +94,8 @@ void drawOverlays(App& app) {
 }
 
 void dimText(const char* text) {
-    const ImVec4 dim = uiLightTheme() ? ImVec4(0.32f, 0.35f, 0.42f, 1.0f)
-                                      : ImVec4(0.62f, 0.66f, 0.74f, 1.0f);
+    const ImVec4 dim =
+        uiLightTheme() ? ImVec4(0.32f, 0.35f, 0.42f, 1.0f) : ImVec4(0.62f, 0.66f, 0.74f, 1.0f);
     ImGui::PushStyleColor(ImGuiCol_Text, dim);
     ImGui::TextWrapped("%s", text); // wrapped: a docked window may be narrow, nothing is cut
     ImGui::PopStyleColor();

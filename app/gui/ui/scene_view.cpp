@@ -215,8 +215,8 @@ void drawBadge(const App& app, ImDrawList* dl) {
         std::string caption = presentCaption(app.scene.name, app.scene.description,
                                              app.world.settings.method, app.world.time);
         if (ImGui::CalcTextSize(caption.c_str()).x > room) {
-            const std::string tail = presentCaption("", "", app.world.settings.method,
-                                                    app.world.time, false);
+            const std::string tail =
+                presentCaption("", "", app.world.settings.method, app.world.time, false);
             const float tailWidth = ImGui::CalcTextSize(tail.c_str()).x;
             std::string what = app.scene.name;
             if (!app.scene.description.empty()) what += ": " + firstSentence(app.scene.description);
@@ -254,7 +254,8 @@ void drawLargeCount(const App& app, ImDrawList* dl) {
         return;
     }
     char text[48];
-    std::snprintf(text, sizeof text, "%llu", static_cast<unsigned long long>(app.totals.collisions));
+    std::snprintf(text, sizeof text, "%llu",
+                  static_cast<unsigned long long>(app.totals.collisions));
     ImFont* font = ImGui::GetFont();
     const float size = ImGui::GetFontSize() * 3.0f;
     const ImVec2 ts = font->CalcTextSizeA(size, 1e9f, 0.0f, text);
@@ -274,15 +275,17 @@ void drawArrowValues(const App& app, ImDrawList* dl) {
     int written = 0;
     for (const Block& b : app.world.blocks) {
         if (b.kind == BodyKind::Static || written >= kMaxArrowValueLabels) continue;
-        const ArrowOnScreen a = arrowOnScreen(app.camera, b.position, b.velocity * kVelocityArrowScale);
+        const ArrowOnScreen a =
+            arrowOnScreen(app.camera, b.position, b.velocity * kVelocityArrowScale);
         if (a.toScale) continue;
         char text[48];
         std::snprintf(text, sizeof text, "%s m/s", formatNumber(length(b.velocity)).c_str());
         const Vec2 tip = app.camera.worldToScreen(a.tip);
         const ImVec2 ts = ImGui::CalcTextSize(text);
         const ScreenRect& vp = app.camera.viewport();
-        const float x = std::clamp(static_cast<float>(tip.x) - ts.x * 0.5f, static_cast<float>(vp.x),
-                                   static_cast<float>(vp.x + vp.width) - ts.x);
+        const float x =
+            std::clamp(static_cast<float>(tip.x) - ts.x * 0.5f, static_cast<float>(vp.x),
+                       static_cast<float>(vp.x + vp.width) - ts.x);
         shadowText(dl, ImVec2(x, static_cast<float>(tip.y) - ts.y - 6.0f), packed(theme().velocity),
                    text, packed(theme().textShadow));
         ++written;
