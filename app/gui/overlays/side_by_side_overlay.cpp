@@ -31,8 +31,9 @@ void drawSideBySideOverlay(App& app) {
     // Columns at the width of their contents (never cut): a narrow window scrolls sideways.
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit |
                                   ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX;
-    const float rows = ImGui::GetTextLineHeightWithSpacing() * 4.0f +
-                       ImGui::GetStyle().ScrollbarSize + ImGui::GetStyle().CellPadding.y * 8.0f;
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const float rows =
+        4.0f * (ImGui::GetTextLineHeight() + 2.0f * st.CellPadding.y) + st.ScrollbarSize + 2.0f;
     if (ImGui::BeginTable("methods", 6, flags, ImVec2(0.0f, rows))) {
         ImGui::TableSetupColumn("method");
         ImGui::TableSetupColumn("collisions");

@@ -45,7 +45,7 @@
       false, nullptr, (DockWish{}), drawPoiOverlay)                                                \
     /* A wide table: the bottom strip. */                                                          \
     X(sideBySide, "sidebyside", "3 methods", "The three methods at once: outlines and statistics", \
-      false, "Methods side by side", (DockWish{DockSide::Bottom, 420.0, 2.0, 175.0}),              \
+      false, "Methods side by side", (DockWish{DockSide::Bottom, 420.0, 2.0, 185.0}),              \
       drawSideBySideOverlay)                                                                       \
     X(timeline, "timeline", "timeline", "Scrub back through the last 60 s and replay",             \
       false, "Timeline", (DockWish{DockSide::Bottom, 260.0, 1.0, 110.0}),                          \
