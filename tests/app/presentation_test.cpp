@@ -423,32 +423,29 @@ World movingWorld() {
     return w;
 }
 
+// Steps `w` `n` frames, recording each in `h` as the app does.
+void steps(WorldHistory& h, World& w, int n) {
+    for (int i = 0; i < n; ++i) {
+        h.beforeStep(w);
+        w.step();
+        h.afterStep(w);
+    }
+}
+
 TEST(HistoryForTheTimeline, RecordedSecondsUseTheFramesOwnTimes) {
     WorldHistory h;
     World w = movingWorld();
-    for (int i = 0; i < 60; ++i) {
-        h.beforeStep(w);
-        w.step();
-        h.afterStep(w);
-    }
+    steps(h, w, 60);
     EXPECT_NEAR(h.recordedSeconds(), 1.0, 1e-12);
     w.settings.dt = 1.0 / 30.0; // a frame-rate change: frames times the current dt would say 2 s
-    for (int i = 0; i < 30; ++i) {
-        h.beforeStep(w);
-        w.step();
-        h.afterStep(w);
-    }
+    steps(h, w, 30);
     EXPECT_NEAR(h.recordedSeconds(), 2.0, 1e-12); // 1 s at 60 Hz and 1 s at 30 Hz
 }
 
 TEST(HistoryForTheTimeline, AnEditDuringReplayStartsANewFuture) {
     WorldHistory h;
     World w = movingWorld();
-    for (int i = 0; i < 60; ++i) {
-        h.beforeStep(w);
-        w.step();
-        h.afterStep(w);
-    }
+    steps(h, w, 60);
     World back;
     ASSERT_TRUE(h.stateAt(20, back));
     back.blocks[0].position.y = 8.0; // dragged during replay
@@ -457,9 +454,7 @@ TEST(HistoryForTheTimeline, AnEditDuringReplayStartsANewFuture) {
     World newest;
     ASSERT_TRUE(h.stateAt(h.lastFrame(), newest));
     EXPECT_EQ(newest.blocks[0].position.y, 8.0); // >| keeps the edit
-    h.beforeStep(back);
-    back.step();
-    h.afterStep(back);
+    steps(h, back, 1);
     EXPECT_EQ(h.lastFrame(), 21u);
     World again;
     ASSERT_TRUE(h.stateAt(20, again));
