@@ -5,6 +5,7 @@
 #include "offscreen_osmesa.h"
 #include "png_io.h"
 #include "renderer.h"
+#include "ui_renderer_gl.h"
 #include "ui_style.h"
 
 #include <imgui.h>
@@ -36,6 +37,7 @@ void renderFrame(App& app, Offscreen& off) {
     appFrame(app, {}, kFrameSeconds, false);
     ImGui::Render();
     appRender(app, off.renderer, off.context.width, off.context.height);
+    uiRendererRender(ImGui::GetDrawData());
     offscreenFinish(off.context);
 }
 
@@ -97,7 +99,7 @@ int screenshot(App& app, Offscreen& off, const Options& o) {
     // --frames N simulates N frames, as if P had been pressed (the badge then shows no PAUSED).
     for (int i = 0; i < o.frames; ++i) stepSimulation(app);
     if (o.frames > 0) app.paused = false;
-    if (app.show.cost) runCostSweepNow(app);
+    if (app.show.cost) app.cost.runSweepNow(quickTradeoffSweep(app.scenesDir)); // the chart
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off);
     if (!writeFrame(off, o.screenshot)) return 1;
     if (!o.layoutJson.empty() && !writeLayoutJson(app, o.layoutJson)) return 1;

@@ -3,7 +3,6 @@
 #include "ui_style.h"
 
 #include <algorithm>
-#include <unordered_map>
 
 namespace {
 
@@ -21,7 +20,10 @@ void recordShownWindow(App& app, const char* name) {
     app.shownWindows.push_back({name, {p.x, p.y, s.x, s.y}});
 }
 
-bool beginOverlayWindow(App& app, const char* title, bool* open) {
+bool beginOverlayWindow(App& app, OverlayId id) {
+    const OverlayInfo& info = overlayInfo(id);
+    const char* title = info.title;
+    bool* open = &(app.show.*info.flag);
     const ScreenRect* docked = app.layout.find(title);
     ImGuiWindowFlags flags = ImGuiWindowFlags_NoSavedSettings;
     if (docked) {
@@ -36,7 +38,7 @@ bool beginOverlayWindow(App& app, const char* title, bool* open) {
     ImGui::SetNextWindowBgAlpha(kWindowAlpha);
     const bool visible = ImGui::Begin(title, open, flags);
     recordShownWindow(app, title);
-    const ImGuiID id = ImGui::GetID(title);
+    const ImGuiID imguiId = ImGui::GetID(title);
     const ImGuiIO& io = ImGui::GetIO();
     const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
     if (docked) {
@@ -45,14 +47,14 @@ bool beginOverlayWindow(App& app, const char* title, bool* open) {
         const bool onTitle =
             io.MousePos.y >= pos.y && io.MousePos.y < pos.y + ImGui::GetFrameHeight();
         if (ImGui::IsWindowHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && onTitle) {
-            gTitlePressed[id] = true;
+            gTitlePressed[imguiId] = true;
         }
-        if (gTitlePressed[id] &&
+        if (gTitlePressed[imguiId] &&
             ImGui::IsMouseDragging(ImGuiMouseButton_Left, 8.0f * app.uiScale)) {
             setFloating(app, title, true);
-            gTitlePressed[id] = false;
+            gTitlePressed[imguiId] = false;
         }
-        if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) gTitlePressed[id] = false;
+        if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) gTitlePressed[imguiId] = false;
     } else {
         // Floating: kept on screen, and a button to put it back.
         const ImVec2 display = io.DisplaySize;
@@ -71,9 +73,8 @@ bool beginOverlayWindow(App& app, const char* title, bool* open) {
 
 OverlayWindow::OverlayWindow(App& app, OverlayId id) {
     if (app.presentMode) return; // present mode: the scene only
-    const OverlayInfo& info = overlayInfo(id);
     begun_ = true;
-    open_ = beginOverlayWindow(app, info.title, &(app.show.*info.flag));
+    open_ = beginOverlayWindow(app, id);
 }
 
 OverlayWindow::~OverlayWindow() {

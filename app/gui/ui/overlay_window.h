@@ -20,10 +20,11 @@ constexpr ImU32 kMomentum = IM_COL32(255, 150, 60, 255);
 constexpr ImU32 kCom = IM_COL32(255, 235, 90, 255);
 } // namespace overlay_colors
 
-// Begins an overlay window (ImGui::End() must follow, as with Begin): docked at its rectangle in
-// app.layout, or floating when pulled out. The one placement function: every overlay window goes
-// through it.
-bool beginOverlayWindow(App& app, const char* title, bool* open);
+// Begins the window of row `id` (ImGui::End() must follow, as with Begin), with the row's title,
+// docked at its rectangle in app.layout, or floating when pulled out; its close button clears the
+// row's flag. The one placement function: every overlay window goes through it (through
+// OverlayWindow).
+bool beginOverlayWindow(App& app, OverlayId id);
 // Notes the current window (between Begin and End) in app.shownWindows, for --layout-json.
 void recordShownWindow(App& app, const char* name);
 

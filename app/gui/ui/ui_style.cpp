@@ -1,7 +1,5 @@
 #include "ui_style.h"
 
-#include "ui_renderer_gl.h"
-
 #include <imgui.h>
 
 #include <cmath>
@@ -119,9 +117,9 @@ ImFont* addFont(ImGuiIO& io, float px) {
     return io.Fonts->AddFontDefault(&config);
 }
 
-void uiApplyLook(float scale, float labelScale, bool light) {
+bool uiApplyLook(float scale, float labelScale, bool light) {
     const bool fonts = scale != gScale || labelScale != gLabelScale || !gLabelFont;
-    if (!fonts && light == gLight) return;
+    if (!fonts && light == gLight) return false;
     gScale = scale;
     gLabelScale = labelScale;
     gLight = light;
@@ -133,16 +131,16 @@ void uiApplyLook(float scale, float labelScale, bool light) {
         gLabelFont = labelScale == 1.0f ? io.Fonts->Fonts[0]
                                         : addFont(io, std::round(kBaseFontPx * scale * labelScale));
         io.Fonts->Build();
-        uiRendererFontsChanged();
     }
     ImGuiStyle style;
     setTheme(style, light);
     style.ScaleAllSizes(scale);
     ImGui::GetStyle() = style;
+    return fonts;
 }
 
-void uiApplyScale(float scale) {
-    uiApplyLook(scale, gLabelScale, gLight);
+bool uiApplyScale(float scale) {
+    return uiApplyLook(scale, gLabelScale, gLight);
 }
 
 ImFont* uiLabelFont() {
