@@ -45,6 +45,16 @@ bool axisTimes(double minA, double maxA, double minB, double maxB, double relati
     return maxA > minB && minA < maxB;
 }
 
+// The wall impact from the time to the wall on each axis: the earlier, both on a tie.
+WallImpact earliestWall(const double times[2], double maxTime) {
+    WallImpact impact;
+    impact.time = std::min(times[0], times[1]);
+    if (impact.time > maxTime) return {};
+    if (times[0] == impact.time) impact.axes |= kAxisX;
+    if (times[1] == impact.time) impact.axes |= kAxisY;
+    return impact;
+}
+
 } // namespace
 
 Impact timeOfImpact(const Aabb& a, Vec2 velocityA, const Aabb& b, Vec2 velocityB, double maxTime) {
@@ -93,12 +103,7 @@ WallImpact timeOfWallImpactNearWalls(const Aabb& box, Vec2 velocity, const Bound
         if (v > 0.0) times[axis] = std::max(0.0, bounds.max[axis] - box.max[axis]) / v;
         if (v < 0.0) times[axis] = std::max(0.0, box.min[axis] - bounds.min[axis]) / -v;
     }
-    WallImpact impact;
-    impact.time = std::min(times[0], times[1]);
-    if (impact.time > maxTime) return {};
-    if (times[0] == impact.time) impact.axes |= kAxisX;
-    if (times[1] == impact.time) impact.axes |= kAxisY;
-    return impact;
+    return earliestWall(times, maxTime);
 }
 
 Wall wallOnAxis(int axis, double velocity) {
@@ -257,10 +262,5 @@ WallImpact timeOfWallImpact(const Aabb& box, Vec2 velocity, Vec2 acceleration, c
         const double up = firstContact(bounds.max[axis] - box.max[axis], -v, -a2, maxTime);
         times[axis] = std::min(down, up);
     }
-    WallImpact impact;
-    impact.time = std::min(times[0], times[1]);
-    if (impact.time > maxTime) return {};
-    if (times[0] == impact.time) impact.axes |= kAxisX;
-    if (times[1] == impact.time) impact.axes |= kAxisY;
-    return impact;
+    return earliestWall(times, maxTime);
 }

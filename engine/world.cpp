@@ -9,33 +9,10 @@
 #include <cstring>
 #include <iterator>
 
-const char* methodName(Method method) {
-    switch (method) {
-    case Method::Perfect:
-        return "perfect";
-    case Method::MoveAndCorrect:
-        return "move-and-correct";
-    case Method::TurnBased:
-        return "turn-based";
-    case Method::Count:
-        break;
-    }
-    return "unknown";
-}
-
-bool parseMethod(const char* name, Method& method) {
-    for (int i = 0; i < static_cast<int>(Method::Count); ++i) {
-        if (std::strcmp(name, methodName(static_cast<Method>(i))) == 0) {
-            method = static_cast<Method>(i);
-            return true;
-        }
-    }
-    return false;
-}
-
 namespace {
 
 // One table of names per setting, read by the name functions and the parsers below.
+constexpr const char* kMethodNames[] = {"perfect", "move-and-correct", "turn-based"};
 constexpr const char* kResolveNames[] = {"momentum", "reflect"};
 constexpr const char* kIntegratorNames[] = {"semi-implicit-euler", "explicit-euler", "exact"};
 constexpr const char* kMistakeNames[] = {"discrete", "move-back", "first-found",
@@ -46,6 +23,7 @@ constexpr const char* kMistakeSlides[] = {
     "BAD: resolving wrong collision",
     "You'll find collisions that are not really collisions (check the relative velocity)",
 };
+static_assert(std::size(kMethodNames) == static_cast<size_t>(Method::Count));
 static_assert(std::size(kResolveNames) == static_cast<size_t>(Resolve::Count));
 static_assert(std::size(kIntegratorNames) == static_cast<size_t>(Integrator::Count));
 static_assert(std::size(kMistakeNames) == static_cast<size_t>(Mistake::Count));
@@ -68,6 +46,12 @@ bool parseIn(const char* const (&names)[N], const char* name, E& value) {
 
 } // namespace
 
+const char* methodName(Method method) {
+    return nameIn(kMethodNames, method);
+}
+bool parseMethod(const char* name, Method& method) {
+    return parseIn(kMethodNames, name, method);
+}
 const char* resolveName(Resolve resolve) {
     return nameIn(kResolveNames, resolve);
 }

@@ -1,5 +1,7 @@
 // Issue 16's "Done when", checked the way tests outside the project do it: through
 // `sandbox-cli run --json` (and --trace). Usage: cli_lecture_check SANDBOX_CLI SCENES_DIR TMP_DIR.
+#include "cli_check.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -12,25 +14,8 @@
 
 namespace {
 
-int failures = 0;
-
-void check(bool ok, const std::string& what) {
-    if (!ok) {
-        ++failures;
-        std::cerr << "FAILED: " << what << "\n";
-    }
-}
-
-std::string capture(const std::string& command, int& status) {
-    std::string out;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return out;
-    char buffer[4096];
-    std::size_t n = 0;
-    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-    status = pclose(pipe);
-    return out;
-}
+using cli_check::capture;
+using cli_check::check;
 
 nlohmann::json run(const std::string& cli, const std::string& scene, const std::string& options) {
     int status = -1;
@@ -172,6 +157,6 @@ int main(int argc, char** argv) {
                   "trace: momentum 6 in row " + std::to_string(r));
     }
 
-    if (failures == 0) std::cout << "all checks passed\n";
-    return failures == 0 ? 0 : 1;
+    if (cli_check::failures == 0) std::cout << "all checks passed\n";
+    return cli_check::failures == 0 ? 0 : 1;
 }
