@@ -6,19 +6,39 @@
 #include <iostream>
 #include <sstream>
 
+namespace {
+
+const struct {
+    const char* name;
+    bool Overlays::*flag;
+} kNames[] = {{"plots", &Overlays::plots},
+              {"vectors", &Overlays::vectors},
+              {"trails", &Overlays::trails},
+              {"inspector", &Overlays::inspector},
+              {"com", &Overlays::com},
+              {"poi", &Overlays::poi},
+              {"sidebyside", &Overlays::sideBySide},
+              {"timeline", &Overlays::timeline},
+              {"cost", &Overlays::cost}};
+
+} // namespace
+
+std::vector<std::string> overlayNames() {
+    std::vector<std::string> names;
+    for (const auto& n : kNames) names.emplace_back(n.name);
+    return names;
+}
+
+bool setOverlay(Overlays& overlays, const std::string& name, bool on) {
+    for (const auto& n : kNames) {
+        if (name != n.name) continue;
+        overlays.*n.flag = on;
+        return true;
+    }
+    return false;
+}
+
 bool parseShowList(const std::string& text, ShowSet& out, std::string* error) {
-    static const struct {
-        const char* name;
-        bool Overlays::*flag;
-    } kNames[] = {{"plots", &Overlays::plots},
-                  {"vectors", &Overlays::vectors},
-                  {"trails", &Overlays::trails},
-                  {"inspector", &Overlays::inspector},
-                  {"com", &Overlays::com},
-                  {"poi", &Overlays::poi},
-                  {"sidebyside", &Overlays::sideBySide},
-                  {"timeline", &Overlays::timeline},
-                  {"cost", &Overlays::cost}};
     ShowSet show;
     std::istringstream in(text);
     std::string name;
@@ -30,14 +50,7 @@ bool parseShowList(const std::string& text, ShowSet& out, std::string* error) {
             show.none = true;
             continue;
         }
-        bool known = false;
-        for (const auto& n : kNames) {
-            if (name == n.name) {
-                show.overlays.*n.flag = true;
-                known = true;
-            }
-        }
-        if (!known) {
+        if (!setOverlay(show.overlays, name, true)) {
             if (error) {
                 *error = "unknown --show name '" + name +
                          "' (expected none, plots, vectors, trails, inspector, com, poi, "

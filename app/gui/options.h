@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 // What --show turns on. "none" hides the panels and every overlay.
 // The overlays that can be shown (the View section's checkboxes and --show): trails, velocity and
@@ -46,6 +47,10 @@ struct Options {
     bool verbose = false;    // print state changes (pause, method, sliders...) to stdout
 };
 
+// The overlay names, in the table's order (what --show and lesson files may name).
+std::vector<std::string> overlayNames();
+// Turns the overlay called `name` on or off; false for an unknown name.
+bool setOverlay(Overlays& overlays, const std::string& name, bool on);
 // Parses a comma-separated --show list; false with a message for an unknown name.
 bool parseShowList(const std::string& text, ShowSet& out, std::string* error);
 // Parses "WxH" (each 16..16384); false otherwise.
