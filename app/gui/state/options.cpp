@@ -6,33 +6,22 @@
 #include <iostream>
 #include <sstream>
 
-namespace {
-
-const struct {
-    const char* name;
-    bool Overlays::*flag;
-} kNames[] = {{"plots", &Overlays::plots},
-              {"vectors", &Overlays::vectors},
-              {"trails", &Overlays::trails},
-              {"inspector", &Overlays::inspector},
-              {"com", &Overlays::com},
-              {"poi", &Overlays::poi},
-              {"sidebyside", &Overlays::sideBySide},
-              {"timeline", &Overlays::timeline},
-              {"cost", &Overlays::cost}};
-
-} // namespace
+std::string showNames() {
+    std::string names = "none";
+    for (const OverlayInfo& o : kOverlays) names += std::string(", ") + o.name;
+    return names;
+}
 
 std::vector<std::string> overlayNames() {
     std::vector<std::string> names;
-    for (const auto& n : kNames) names.emplace_back(n.name);
+    for (const OverlayInfo& o : kOverlays) names.emplace_back(o.name);
     return names;
 }
 
 bool setOverlay(Overlays& overlays, const std::string& name, bool on) {
-    for (const auto& n : kNames) {
-        if (name != n.name) continue;
-        overlays.*n.flag = on;
+    for (const OverlayInfo& o : kOverlays) {
+        if (name != o.name) continue;
+        overlays.*o.flag = on;
         return true;
     }
     return false;
@@ -52,9 +41,7 @@ bool parseShowList(const std::string& text, ShowSet& out, std::string* error) {
         }
         if (!setOverlay(show.overlays, name, true)) {
             if (error) {
-                *error = "unknown --show name '" + name +
-                         "' (expected none, plots, vectors, trails, inspector, com, poi, "
-                         "sidebyside, timeline, cost)";
+                *error = "unknown --show name '" + name + "' (expected " + showNames() + ")";
             }
             return false;
         }
@@ -89,9 +76,8 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_option("--frames", o.frames, "Simulate N frames first (with --record: record N)")
         ->check(CLI::Range(0, 1000000));
     app.add_option("--size", size, "Window or image size, WxH (default 1280x720)");
-    app.add_option("--show", show,
-                   "Comma-separated: none, plots, vectors, trails, inspector, com, poi, "
-                   "sidebyside, timeline, cost");
+    const std::string showHelp = "Comma-separated: " + showNames();
+    app.add_option("--show", show, showHelp);
     app.add_option("--record", o.record, "Write N numbered PNGs (and an MP4 with ffmpeg) here");
     app.add_option("--benchmark-frames", o.benchmarkFrames,
                    "Offscreen: step and render N frames, print ms per frame")
