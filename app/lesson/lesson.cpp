@@ -33,11 +33,6 @@ bool isRegularFile(const fs::path& p) {
     return fs::is_regular_file(p, ec);
 }
 
-bool isDirectory(const fs::path& p) {
-    std::error_code ec;
-    return fs::is_directory(p, ec);
-}
-
 // A name echoed in a message, quoted and escaped (no raw control bytes reach a terminal).
 std::string quoted(const std::string& s) {
     return dumpValue(json(s));
@@ -475,28 +470,4 @@ bool isLessonFile(const std::string& path) {
     std::string text;
     if (readJsonFile(path, text)) return false;
     return isLessonText(text);
-}
-
-std::string resolveLessonPath(const std::string& arg, const std::string& lessonsDir) {
-    if (arg.empty() || isRegularFile(arg)) return arg;
-    if (!lessonsDir.empty()) {
-        const fs::path inDir = fs::path(lessonsDir) / arg;
-        if (isRegularFile(inDir)) return inDir.string();
-        const fs::path withExt = fs::path(lessonsDir) / (arg + ".json");
-        if (isRegularFile(withExt)) return withExt.string();
-    }
-    return arg;
-}
-
-std::string findLessonsDirectory(const std::string& exeDir, const std::string& builtInDir) {
-    std::vector<fs::path> candidates;
-    if (!exeDir.empty()) {
-        candidates.push_back(fs::path(exeDir) / "lessons");
-        candidates.push_back(fs::path(exeDir) / ".." / "share" / "collision-sandbox" / "lessons");
-    }
-    if (!builtInDir.empty()) candidates.push_back(builtInDir);
-    candidates.push_back("lessons");
-    for (const fs::path& c : candidates)
-        if (isDirectory(c)) return c.lexically_normal().string();
-    return "";
 }

@@ -95,8 +95,3 @@ std::optional<std::size_t> stepIndex(const Lesson& lesson, long long number, std
 // anything that does not parse.
 bool isLessonText(const std::string& text);
 bool isLessonFile(const std::string& path);
-// The file a lesson argument names: the path itself, else `lessonsDir`/NAME(.json).
-std::string resolveLessonPath(const std::string& arg, const std::string& lessonsDir);
-// The first existing directory among `exeDir`/lessons, `exeDir`/../share/collision-sandbox/lessons,
-// `builtInDir`, ./lessons; "" when none exists.
-std::string findLessonsDirectory(const std::string& exeDir, const std::string& builtInDir);

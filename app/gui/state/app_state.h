@@ -6,7 +6,7 @@
 #include "app_log.h"
 #include "camera.h"
 #include "fixed_step.h"
-#include "timeline.h"
+#include "lesson_session.h"
 #include "mouse_tool.h"
 #include "options.h"
 #include "palette.h"
@@ -15,10 +15,12 @@
 #include "scene_library.h"
 #include "side_by_side.h"
 #include "telemetry.h"
+#include "timeline.h"
 #include "trails.h"
 #include "world.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,6 +59,7 @@ struct App {
     // View.
     Camera camera;
     bool autoFit = true; // refit the camera when the viewport changes, until the user zooms/pans
+    std::optional<Bounds> fitBounds; // what fitting shows (a lesson step's camera); none: bounds
     Trails trails;
     Overlays show;
     bool overlaysChosen = false; // --show given: scenes no longer pick the default overlays
@@ -89,6 +92,11 @@ struct App {
     // The shipped scenes (the picker) and where they are.
     std::string scenesDir;
     std::vector<SceneEntry> sceneFiles;
+    // The open lesson (lesson_session.h), the shipped lessons (the picker) and where they are.
+    LessonSession lesson;
+    std::string lessonsDir;
+    std::vector<SceneEntry> lessonFiles;
+    double captionHeight = 0.0; // px the lesson's caption bar takes at the top of the scene
     // --verbose: print state changes to stdout.
     bool verbose = false;
     LoggedState logged;
@@ -107,8 +115,8 @@ void setBlockKind(App& app, int index, BodyKind kind);
 // Resizes block `index` when the new size fits without overlap; false (nothing changed) if not.
 bool setBlockSize(App& app, int index, Vec2 size);
 
-// Loads `path` as the current scene. On error, keeps the current scene, sets app.error and
-// returns false.
+// Loads `path` as the current scene (closing a lesson). On error, keeps the current scene, sets
+// app.error and returns false.
 bool loadScene(App& app, const std::string& path);
 // Uses an already parsed scene (tests, and the first scene when none can be loaded).
 void setScene(App& app, const Scene& scene, const std::string& path);
