@@ -1,8 +1,8 @@
 #!/bin/bash
 # The lesson in the real window under Xvfb: `sandbox --lesson lecture3`; PageDown moves to the
 # next step and PageUp back (the screen changes, the caption says so: the --verbose log prints
-# the caption bar's heading), End goes to the last step, R restarts it and it pauses again in
-# exactly the same picture.
+# the caption bar's heading), End goes to the last step, a number and Enter jump, R restarts the
+# step and it pauses again in exactly the same picture.
 #   xvfb_lesson.sh SANDBOX PNG_DIFF CONVERT LESSON WORKDIR
 set -u
 sandbox=$1 png_diff=$2 convert=$3 lesson=$4 work=$5
@@ -29,7 +29,8 @@ sleep 0.5; shot back1
 [ "$(differing step1 back1 $caption_region)" -eq 0 ] || fail "PageUp: not step 1's caption"
 echo "ok: PageUp goes back to step 1"
 
-# The last step pauses by itself at t = 1 s; R restarts it, it plays and pauses again at the
+# End goes to the last step. Typing 1 9 Enter jumps to step 19 (the platformer, no timings on
+# screen), which pauses by itself at t = 1.5 s; R restarts it, it plays and pauses again at the
 # same state: the same picture.
 pauses() { grep -c "^paused" "$log"; }
 # wait_pause N: until the log has more than N "paused" lines.
@@ -37,12 +38,15 @@ wait_pause() {
     for _ in $(seq 100); do [ "$(pauses)" -gt "$1" ] && return 0; sleep 0.1; done
     fail "$2"
 }
-n=$(pauses)
 xdotool key End; wait_for "lesson step 20 / "
-wait_pause "$n" "the last step did not pause by itself"
+echo "ok: End goes to the last step"
+n=$(pauses)
+xdotool key 1 9 Return; wait_for "lesson step 19 / "
+echo "ok: 1 9 Enter goes to step 19"
+wait_pause "$n" "step 19 did not pause by itself"
 sleep 0.3; shot last_a
 n=$(pauses)
-xdotool key r; wait_for "lesson restart 20"
+xdotool key r; wait_for "lesson restart 19"
 sleep 0.1; shot restarted
 wait_pause "$n" "the restarted step did not pause again"
 sleep 0.3; shot last_b

@@ -30,13 +30,16 @@ const std::vector<KeyBinding>& keyBindings() {
         {keys::kHome, false, Action::LessonFirst, "Home", "Lesson: the first step"},
         {keys::kEnd, false, Action::LessonLast, "End", "Lesson: the last step"},
         {keys::kEnter, false, Action::LessonJump, "0-9, Enter", "Lesson: go to step number ..."},
-        {keys::kKeypadEnter, false, Action::LessonJump, "Keypad Enter", "", false},
+        {keys::kKeypadEnter, false, Action::LessonJump, "Keypad Enter",
+         "Lesson: go to step number ...", false},
     };
     static const std::vector<KeyBinding> withDigits = [] {
         std::vector<KeyBinding> all = bindings;
         for (int d = 0; d <= 9; ++d) {
-            all.push_back({keys::k0 + d, false, Action::LessonDigit, "", "", false});
-            all.push_back({keys::kKeypad0 + d, false, Action::LessonDigit, "", "", false});
+            all.push_back({keys::k0 + d, false, Action::LessonDigit, "0-9",
+                           "Lesson: a digit of a step number", false});
+            all.push_back({keys::kKeypad0 + d, false, Action::LessonDigit, "Keypad 0-9",
+                           "Lesson: a digit of a step number", false});
         }
         return all;
     }();
