@@ -146,7 +146,7 @@ int recordSteps(App& app, Offscreen& off, const Options& o) {
     for (std::size_t i = 0; i < steps; ++i) {
         enterStep(app, i);
         lessonShowPausePoint(app);
-        if (app.show.cost) runCostSweepNow(app);
+        if (app.show.cost) app.cost.runSweepNow(quickTradeoffSweep(app.scenesDir));
         for (int k = 0; k < kSettleFrames; ++k) renderFrame(app, off);
         std::snprintf(name, sizeof name, "/step_%02zu.png", i + 1);
         if (!writeFrame(off, o.recordSteps + name)) return 1;
