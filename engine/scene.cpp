@@ -21,6 +21,7 @@
 using json = nlohmann::json;
 using scene_json::dumpValue;
 using scene_json::numberList;
+using namespace scene_json; // the typed access below: number(), string(), vec2(), ...
 
 namespace {
 
@@ -31,15 +32,10 @@ constexpr double kMaxDt = 1.0; // s: longer frames are certainly a mistake
 constexpr int kMaxSubsteps = 1000;
 constexpr double kMaxMagnitude = 1e9; // m, m/s, m/s^2 (the messages say 1e9)
 constexpr double kMaxMass = 1e15;     // kg (the message says 1e15)
+constexpr double kMaxDrag = 1e6;      // kg/m^3 (the message says 1e6; water is 1e3)
 // m: overlaps up to this much count as touching, so stacks typed in decimals ("exactly
 // touching" up to rounding) are accepted.
 constexpr double kTouchTolerance = 1e-9;
-
-// A value error: thrown by the validators below, turned into a SceneError by parseScene.
-struct ValueError {
-    std::string path;
-    std::string message;
-};
 
 // ---- Syntax: line and column, and a pre-scan for nesting depth and duplicate keys ----
 
@@ -129,7 +125,11 @@ std::string parserMessage(const std::string& what) {
     return out;
 }
 
-// ---- Values: typed access that names the JSON path on failure ----
+} // namespace
+
+// ---- Values: typed access that names the JSON path on failure (scene_json.h) ----
+
+namespace scene_json {
 
 std::string indexPath(const std::string& path, std::size_t i) {
     return path + "[" + std::to_string(i) + "]";
@@ -185,6 +185,10 @@ Vec2 vec2(const json& value, const std::string& path) {
     return {v[0], v[1]};
 }
 
+} // namespace scene_json
+
+namespace {
+
 bool isColor(const std::string& s) {
     return s.size() == 7 && s[0] == '#' && std::all_of(s.begin() + 1, s.end(), [](char c) {
                return std::isxdigit(static_cast<unsigned char>(c)) != 0;
@@ -193,7 +197,9 @@ bool isColor(const std::string& s) {
 
 void parseWorld(const json& world, Scene& scene) {
     requireObject(world, "world");
-    checkKeys(world, "world", {"bounds", "gravity", "bounciness", "method", "dt", "substeps"});
+    checkKeys(world, "world",
+              {"bounds", "gravity", "bounciness", "method", "dt", "substeps", "resolve",
+               "integrator", "mistakes", "drag"});
     WorldSettings& s = scene.settings;
     if (world.contains("bounds")) {
         const std::vector<double> b = numbers(world["bounds"], "world.bounds", 4);
@@ -228,11 +234,44 @@ void parseWorld(const json& world, Scene& scene) {
                              "must be a whole number from 1 to " + std::to_string(kMaxSubsteps)};
         s.substeps = static_cast<int>(k);
     }
+    if (world.contains("resolve")) {
+        const std::string name = string(world["resolve"], "world.resolve");
+        if (!parseResolve(name.c_str(), s.resolve))
+            throw ValueError{"world.resolve",
+                             "must be \"momentum\" or \"reflect\", not " + dumpValue(name)};
+    }
+    if (world.contains("integrator")) {
+        const std::string name = string(world["integrator"], "world.integrator");
+        if (!parseIntegrator(name.c_str(), s.integrator))
+            throw ValueError{"world.integrator", "must be \"semi-implicit-euler\", "
+                                                 "\"explicit-euler\" or \"exact\", not " +
+                                                     dumpValue(name)};
+    }
+    if (world.contains("mistakes")) {
+        const json& list = world["mistakes"];
+        if (!list.is_array()) throw ValueError{"world.mistakes", "must be an array of names"};
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const std::string path = indexPath("world.mistakes", i);
+            const std::string name = string(list[i], path);
+            Mistake m{};
+            if (!parseMistake(name.c_str(), m))
+                throw ValueError{path, "must be \"discrete\", \"move-back\", \"first-found\" or "
+                                       "\"no-approach-test\", not " +
+                                           dumpValue(name)};
+            if (s.has(m)) throw ValueError{path, dumpValue(name) + " is listed twice"};
+            s.set(m, true);
+        }
+    }
+    if (world.contains("drag")) {
+        s.drag = number(world["drag"], "world.drag");
+        if (!(s.drag >= 0.0 && s.drag <= kMaxDrag))
+            throw ValueError{"world.drag", "must be from 0 to 1e6 kg/m^3"};
+    }
 }
 
 BlockDef parseBlock(const json& value, const std::string& path) {
     requireObject(value, path);
-    checkKeys(value, path, {"name", "position", "size", "velocity", "mass", "color"});
+    checkKeys(value, path, {"name", "position", "size", "velocity", "mass", "color", "force"});
     BlockDef b;
     if (value.contains("name")) b.name = string(value["name"], keyPath(path, "name"));
     if (!value.contains("position")) throw ValueError{path, "missing \"position\""};
@@ -267,6 +306,15 @@ BlockDef parseBlock(const json& value, const std::string& path) {
         } else {
             throw ValueError{massPath, "must be a positive number, \"static\" or \"kinematic\""};
         }
+    }
+    if (value.contains("force")) {
+        const std::string forcePath = keyPath(path, "force");
+        b.force = vec2(value["force"], forcePath);
+        if (b.kind != BodyKind::Dynamic && b.force != Vec2{})
+            throw ValueError{forcePath, "only a dynamic block (one with a mass) feels a force"};
+        // Its acceleration, like gravity, at most 1e9 m/s^2 (F/m of a light block can be huge).
+        if (length(b.force) / b.mass > kMaxMagnitude)
+            throw ValueError{forcePath, "force / mass must be at most 1e9 m/s^2"};
     }
     if (value.contains("color")) {
         b.color = string(value["color"], keyPath(path, "color"));
@@ -354,19 +402,19 @@ SceneResult failure(std::string where, std::string message) {
 
 } // namespace
 
-SceneResult parseScene(const std::string& text, const std::string& sourceName) {
-    if (text.size() > kMaxFileBytes) return failure(sourceName, "larger than 64 MiB");
+std::optional<SceneError> parseJsonText(const std::string& text, const std::string& sourceName,
+                                        json& root) {
+    if (text.size() > kMaxFileBytes) return SceneError{sourceName, "larger than 64 MiB"};
     if (std::all_of(text.begin(), text.end(),
                     [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }))
-        return failure(placeName(sourceName, text, text.size()), "the file is empty");
+        return SceneError{placeName(sourceName, text, text.size()), "the file is empty"};
     if (auto problem = prescan(text, false)) // depth first: the parser must never see it
-        return failure(placeName(sourceName, text, problem->index), problem->message);
-    json root;
+        return SceneError{placeName(sourceName, text, problem->index), problem->message};
     try {
         root = json::parse(text);
     } catch (const json::parse_error& e) {
         const std::size_t index = e.byte > 0 ? e.byte - 1 : 0;
-        return failure(placeName(sourceName, text, index), parserMessage(e.what()));
+        return SceneError{placeName(sourceName, text, index), parserMessage(e.what())};
     } catch (const json::exception& e) {
         // Number overflow (1e400) has no position in nlohmann; find the number in the text.
         std::string message = e.what();
@@ -376,14 +424,21 @@ SceneResult parseScene(const std::string& text, const std::string& sourceName) {
             index = text.find(message.substr(quote + 1, message.size() - quote - 2));
         message =
             message.substr(message.find("] ") == std::string::npos ? 0 : message.find("] ") + 2);
-        if (index == std::string::npos) return failure(sourceName, message);
-        return failure(placeName(sourceName, text, index), message);
+        if (index == std::string::npos) return SceneError{sourceName, message};
+        return SceneError{placeName(sourceName, text, index), message};
     }
     // The parser stops at a NUL byte as at the end of the text: junk after it would pass unseen.
     if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
-        return failure(placeName(sourceName, text, nul), "a NUL byte: this is not a text file");
+        return SceneError{placeName(sourceName, text, nul), "a NUL byte: this is not a text file"};
     if (auto problem = prescan(text, true))
-        return failure(placeName(sourceName, text, problem->index), problem->message);
+        return SceneError{placeName(sourceName, text, problem->index), problem->message};
+    return std::nullopt;
+}
+
+SceneResult parseScene(const std::string& text, const std::string& sourceName) {
+    json root;
+    if (auto error = parseJsonText(text, sourceName, root))
+        return failure(error->where, error->message);
     try {
         SceneResult r;
         r.scene = parseValue(root);
@@ -393,20 +448,26 @@ SceneResult parseScene(const std::string& text, const std::string& sourceName) {
     }
 }
 
-SceneResult loadSceneFile(const std::string& path) {
+std::optional<SceneError> readJsonFile(const std::string& path, std::string& text) {
     // Only regular files: a directory cannot be read and a FIFO could block forever.
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) return failure(path, "no such file");
-    if (!std::filesystem::is_regular_file(path, ec)) return failure(path, "not a regular file");
+    if (!std::filesystem::exists(path, ec)) return SceneError{path, "no such file"};
+    if (!std::filesystem::is_regular_file(path, ec)) return SceneError{path, "not a regular file"};
     std::ifstream in(path, std::ios::binary);
-    if (!in) return failure(path, "cannot open the file");
+    if (!in) return SceneError{path, "cannot open the file"};
     in.seekg(0, std::ios::end);
     const std::streamoff size = in.tellg();
-    if (size < 0) return failure(path, "cannot read the file");
+    if (size < 0) return SceneError{path, "cannot read the file"};
     if (static_cast<std::uint64_t>(size) > kMaxFileBytes)
-        return failure(path, "larger than 64 MiB");
+        return SceneError{path, "larger than 64 MiB"};
     in.seekg(0, std::ios::beg);
-    std::string text(static_cast<std::size_t>(size), '\0');
-    if (size > 0 && !in.read(&text[0], size)) return failure(path, "cannot read the file");
+    text.assign(static_cast<std::size_t>(size), '\0');
+    if (size > 0 && !in.read(&text[0], size)) return SceneError{path, "cannot read the file"};
+    return std::nullopt;
+}
+
+SceneResult loadSceneFile(const std::string& path) {
+    std::string text;
+    if (auto error = readJsonFile(path, text)) return failure(error->where, error->message);
     return parseScene(text, path);
 }

@@ -1,10 +1,13 @@
 // The sandbox-cli subcommands as plain functions: main.cpp only parses the command line.
 #pragma once
 
+#include "lesson.h"
+
 #include <cstdint>
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <vector>
 
 // Exit codes of sandbox-cli.
 enum ExitCode : int { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2 };
@@ -20,6 +23,10 @@ struct RunRequest {
     std::optional<std::string> gravity;    // "GX,GY" in m/s^2
     std::optional<std::string> steps;      // frames to simulate, >= 0
     std::optional<std::string> time;       // s of simulated time to reach, >= 0
+    std::optional<std::string> resolve;    // "momentum" | "reflect"
+    std::optional<std::string> integrator; // "semi-implicit-euler" | "explicit-euler" | "exact"
+    std::vector<std::string> mistakes;     // added to the scene's: "discrete", "move-back", ...
+    std::optional<std::string> trace;      // CSV file: a header and one row per frame
     bool json = false;                     // print one JSON object instead of a summary
 };
 
@@ -28,5 +35,11 @@ constexpr std::int64_t kDefaultSteps = 600;
 
 // Simulates the scene and prints the summary to `out`; errors go to `err`. Returns an ExitCode.
 int runCommand(const RunRequest& request, std::ostream& out, std::ostream& err);
-// Prints "ok" to `out`, or the error (naming its place) to `err`. Returns an ExitCode.
-int validateCommand(const std::string& scenePath, std::ostream& out, std::ostream& err);
+// Prints "ok" to `out`, or the error (naming its place) to `err`. Returns an ExitCode. A file with
+// a "steps" key is a lesson (docs/lesson-format.md), anything else a scene.
+int validateCommand(const std::string& path, std::ostream& out, std::ostream& err,
+                    const LessonContext& lessons = {});
+// Runs every step of a lesson to its pause point and prints, per step, where it paused and each
+// block's position and velocity there, then every failed expectation (exit 1 if any).
+int lessonCommand(const std::string& path, std::ostream& out, std::ostream& err,
+                  const LessonContext& lessons = {});

@@ -4,6 +4,9 @@
 #include "commands.h"
 
 #include <CLI/CLI.hpp>
+#ifdef SANDBOX_OVERLAY_TABLE
+#include "options.h" // the overlay table's names, for lesson files
+#endif
 
 #include <exception>
 #include <iostream>
@@ -38,6 +41,23 @@ int main(int argc, char** argv) {
                            "Simulate until T seconds of simulated time, or at most 100*T/dt frames "
                            "if the event cap holds time back");
     stepsOpt->excludes(timeOpt);
+    std::string resolve, integrator, trace;
+    CLI::Option* resolveOpt = runCmd->add_option(
+        "--resolve", resolve,
+        "Collision resolve: momentum (the lecture's formula) or reflect (without Newton: each "
+        "body reverses its own velocity, v' = -C*v) (default: the scene's)");
+    CLI::Option* integratorOpt = runCmd->add_option(
+        "--integrator", integrator,
+        "Integrator: semi-implicit-euler, explicit-euler or exact (constant acceleration "
+        "integrated exactly) (default: the scene's)");
+    CLI::Option* mistakeOpt = runCmd->add_option(
+        "--mistake", run.mistakes,
+        "Make one of the lecture's mistakes (repeatable, added to the scene's): discrete, "
+        "move-back, first-found, no-approach-test; none clears the scene's");
+    CLI::Option* traceOpt = runCmd->add_option(
+        "--trace", trace,
+        "Write a CSV file: a header and one row per frame (t, each block's x, y, vx, vy, total "
+        "momentum, kinetic and potential energy)");
     runCmd->add_flag("--json", run.json,
                      "Print one JSON object: sim_time, steps, collisions, max_penetration, "
                      "momentum, kinetic_energy, potential_energy, event_cap_hits, wall_ms, blocks");
@@ -48,11 +68,23 @@ int main(int argc, char** argv) {
     gravityOpt->type_name("GX,GY");
     stepsOpt->type_name("N");
     timeOpt->type_name("T");
+    resolveOpt->type_name("R");
+    integratorOpt->type_name("I");
+    mistakeOpt->type_name("NAME");
+    traceOpt->type_name("FILE.csv");
 
     std::string validatePath;
     CLI::App* validateCmd = app.add_subcommand(
-        "validate", "Check a scene file: print ok (exit 0) or the error and its place (exit 1).");
-    validateCmd->add_option("SCENE", validatePath, "Scene file (JSON, format v1)")->required();
+        "validate", "Check a scene or lesson file: print ok (exit 0) or the error and its place "
+                    "(exit 1).");
+    validateCmd->add_option("FILE", validatePath, "Scene file (format v1) or lesson file (JSON)")
+        ->required();
+
+    std::string lessonPath;
+    CLI::App* lessonCmd = app.add_subcommand(
+        "lesson", "Run every step of a lesson to its pause point: print where each paused and "
+                  "the blocks there, then any failed expectation (exit 1).");
+    lessonCmd->add_option("LESSON", lessonPath, "Lesson file (JSON)")->required();
 
     AnalysisRequest tradeoff;
     tradeoff.scenesDir = SANDBOX_SCENES_DIR;
@@ -90,7 +122,13 @@ int main(int argc, char** argv) {
     }
 
     try {
-        if (*validateCmd) return validateCommand(validatePath, std::cout, std::cerr);
+        LessonContext lessons;
+        lessons.scenesDir = SANDBOX_SCENES_DIR;
+#ifdef SANDBOX_OVERLAY_TABLE
+        lessons.overlayNames = overlayNames();
+#endif
+        if (*validateCmd) return validateCommand(validatePath, std::cout, std::cerr, lessons);
+        if (*lessonCmd) return lessonCommand(lessonPath, std::cout, std::cerr, lessons);
         if (*tradeoffCmd) return tradeoffCommand(tradeoff, std::cout, std::cerr);
         if (*stabilityCmd) return stabilityCommand(stability, std::cout, std::cerr);
         auto given = [](CLI::Option* option, const std::string& value) {
@@ -103,6 +141,9 @@ int main(int argc, char** argv) {
         run.gravity = given(gravityOpt, gravity);
         run.steps = given(stepsOpt, steps);
         run.time = given(timeOpt, time);
+        run.resolve = given(resolveOpt, resolve);
+        run.integrator = given(integratorOpt, integrator);
+        run.trace = given(traceOpt, trace);
         return runCommand(run, std::cout, std::cerr);
     } catch (const std::exception& e) { // e.g. out of memory on a huge scene
         std::cerr << "sandbox-cli: " << e.what() << "\n";

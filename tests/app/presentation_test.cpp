@@ -75,6 +75,17 @@ TEST(DockLayout, EveryWindowAtTheFourClassroomSizes) {
     }
 }
 
+TEST(DockLayout, ATopInsetKeepsTheSceneAndTheColumnBelowIt) {
+    LayoutInput in;
+    in.panelWidth = 350.0;
+    in.topInset = 100.0; // a lesson's caption
+    in.windows = everyWindow();
+    const Layout l = computeLayout(in);
+    expectSound(l, 1280, 720);
+    EXPECT_DOUBLE_EQ(l.scene.y, 100.0);
+    EXPECT_DOUBLE_EQ(l.find("Plots")->y, 100.0);
+}
+
 TEST(DockLayout, NoWindowsNoPanelGivesTheSceneEverything) {
     LayoutInput in;
     in.panelWidth = 0.0;

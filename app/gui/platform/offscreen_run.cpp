@@ -96,6 +96,7 @@ bool writeLayoutJson(const App& app, const std::string& path) {
 }
 
 int screenshot(App& app, Offscreen& off, const Options& o) {
+    if (app.lesson.active()) lessonShowPausePoint(app); // the step as the window shows it there
     // --frames N simulates N frames, as if P had been pressed (the badge then shows no PAUSED).
     for (int i = 0; i < o.frames; ++i) stepSimulation(app);
     if (o.frames > 0) app.paused = false;
@@ -109,14 +110,19 @@ int screenshot(App& app, Offscreen& off, const Options& o) {
     return 0;
 }
 
-int record(App& app, Offscreen& off, const Options& o) {
+// Creates `dir` (and its parents); says why on stderr when it cannot.
+bool makeDirectory(const std::string& dir) {
     std::error_code ec;
-    std::filesystem::create_directories(o.record, ec);
+    std::filesystem::create_directories(dir, ec);
     if (ec) {
-        std::fprintf(stderr, "sandbox: cannot create %s: %s\n", o.record.c_str(),
-                     ec.message().c_str());
-        return 1;
+        std::fprintf(stderr, "sandbox: cannot create %s: %s\n", dir.c_str(), ec.message().c_str());
+        return false;
     }
+    return true;
+}
+
+int record(App& app, Offscreen& off, const Options& o) {
+    if (!makeDirectory(o.record)) return 1;
     for (int i = 0; i < kSettleFrames - 1; ++i) renderFrame(app, off);
     app.paused = false; // a recording runs the scene
     char name[32];
@@ -142,6 +148,27 @@ int record(App& app, Offscreen& off, const Options& o) {
         return 1;
     }
     std::printf("%s\n", video.c_str());
+    return 0;
+}
+
+// One PNG per lesson step, each after its pause point (answers revealed): a handout.
+int recordSteps(App& app, Offscreen& off, const Options& o) {
+    if (!makeDirectory(o.recordSteps)) return 1;
+    if (!app.lesson.active()) {
+        std::fprintf(stderr, "sandbox: --record-steps needs a lesson\n");
+        return 1;
+    }
+    const std::size_t steps = app.lesson.lesson->steps.size();
+    char name[32];
+    for (std::size_t i = 0; i < steps; ++i) {
+        enterStep(app, i);
+        lessonShowPausePoint(app);
+        if (app.show.cost) app.cost.runSweepNow(quickTradeoffSweep(app.scenesDir));
+        for (int k = 0; k < kSettleFrames; ++k) renderFrame(app, off);
+        std::snprintf(name, sizeof name, "/step_%02zu.png", i + 1);
+        if (!writeFrame(off, o.recordSteps + name)) return 1;
+    }
+    std::printf("wrote %zu steps to %s\n", steps, o.recordSteps.c_str());
     return 0;
 }
 
@@ -172,7 +199,8 @@ int benchmark(App& app, Offscreen& off, const Options& o) {
 
 int runOffscreen(const Options& options) {
     Options o = options;
-    if (o.screenshot.empty() && o.record.empty() && o.benchmarkFrames <= 0) {
+    if (o.screenshot.empty() && o.record.empty() && o.benchmarkFrames <= 0 &&
+        o.recordSteps.empty()) {
         o.screenshot = "sandbox-screenshot.png";
     }
     App app;
@@ -201,6 +229,8 @@ int runOffscreen(const Options& options) {
     int code = 0;
     if (o.benchmarkFrames > 0)
         code = benchmark(app, off, o);
+    else if (!o.recordSteps.empty())
+        code = recordSteps(app, off, o);
     else if (!o.record.empty())
         code = record(app, off, o);
     else

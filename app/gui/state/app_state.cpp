@@ -68,6 +68,7 @@ bool loadScene(App& app, const std::string& path) {
         app.error = result.error.text();
         return false;
     }
+    closeLesson(app);
     // The absolute path: the settings remember it, and it must work from any directory.
     const std::string cwd = workingDirectory();
     setScene(app, *result.scene, cwd.empty() ? path : absoluteScenePath(path, cwd));
@@ -176,6 +177,7 @@ void stepSimulation(App& app) {
         app.paused = true;
         app.pausedByCollision = true;
     }
+    lessonAfterFrame(app);
 }
 
 bool isReplaying(const App& app) {
@@ -348,6 +350,8 @@ Layout computeAppLayout(const App& app, double displayWidth, double displayHeigh
     in.uiScale = app.uiScale;
     if (app.presentMode) return computeLayout(in); // the scene alone
     in.panelWidth = app.uiVisible ? panelWidth(app.uiScale, displayWidth) : 0.0;
+    // A lesson's caption bar over the top of the scene (and the column).
+    if (app.lesson.active()) in.topInset = std::min(app.captionHeight, displayHeight * 0.5);
     for (const OverlayInfo& row : kOverlays) {
         if (!row.title || !(app.show.*row.flag) || isFloating(app, row.title)) continue;
         in.windows.push_back({row.title, row.place.side, row.place.minExtent, row.place.weight,
@@ -363,8 +367,10 @@ ScreenRect sceneViewport(const App& app, double displayWidth, double displayHeig
 void updateCamera(App& app, double displayWidth, double displayHeight) {
     app.layout = computeAppLayout(app, displayWidth, displayHeight);
     app.camera.setViewport(app.layout.scene);
-    if (app.autoFit)
-        app.camera.fit(app.world.bounds, kFitMarginPx * static_cast<double>(app.uiScale));
+    if (app.autoFit) {
+        app.camera.fit(app.fitBounds ? *app.fitBounds : app.world.bounds,
+                       kFitMarginPx * static_cast<double>(app.uiScale));
+    }
 }
 
 void setBlockKind(App& app, int index, BodyKind kind) {

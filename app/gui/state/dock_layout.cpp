@@ -71,12 +71,13 @@ Layout computeLayout(const LayoutInput& in) {
                                          : std::min(std::max(wanted(bottom, s), H * kMinStripShare),
                                                     H * kMaxStripShare);
     const double columnX = W - columnW, stripY = H - stripH;
+    const double top = std::clamp(in.topInset, 0.0, std::max(0.0, stripY - 1.0));
     const double gap = kDockGap * s;
 
     // The right column, above the strip, windows stacked top to bottom.
     const double columnH = bottom.empty() ? H : stripY;
-    const std::vector<double> heights = share(right, columnH, gap, s);
-    double y = 0.0;
+    const std::vector<double> heights = share(right, columnH - top, gap, s);
+    double y = top;
     for (std::size_t i = 0; i < right.size(); ++i) {
         const double y1 = i + 1 == right.size() ? columnH : y + heights[i];
         out.windows.push_back({right[i]->name, fromEdges(columnX + gap, y, W, y1)});
@@ -91,7 +92,7 @@ Layout computeLayout(const LayoutInput& in) {
         out.windows.push_back({bottom[i]->name, fromEdges(x, stripY + gap, x1, H)});
         x = x1 + gap;
     }
-    out.scene = fromEdges(areaX, 0.0, std::max(areaX + 1.0, columnX), std::max(1.0, stripY));
+    out.scene = fromEdges(areaX, top, std::max(areaX + 1.0, columnX), std::max(top + 1.0, stripY));
     return out;
 }
 

@@ -40,6 +40,7 @@ struct LayoutInput {
     double displayHeight = 720.0;
     float uiScale = 1.0f;
     double panelWidth = 0.0; // 0: no panel (hidden, or present mode)
+    double topInset = 0.0;   // px right of the panel kept free at the top (a lesson's caption)
     std::vector<DockRequest> windows;
 };
 

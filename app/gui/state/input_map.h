@@ -19,13 +19,23 @@ constexpr int kQ = 81;
 constexpr int kR = 82;
 constexpr int kS = 83;
 constexpr int kV = 86;
+constexpr int k0 = 48; // k0 + d for the digit d
 constexpr int kEscape = 256;
+constexpr int kEnter = 257;
 constexpr int kTab = 258;
 constexpr int kDelete = 261;
+constexpr int kRight = 262;
+constexpr int kLeft = 263;
+constexpr int kPageUp = 266;
+constexpr int kPageDown = 267;
+constexpr int kHome = 268;
+constexpr int kEnd = 269;
 constexpr int kF1 = 290;
 constexpr int kF11 = 300;
+constexpr int kKeypad0 = 320; // kKeypad0 + d for the digit d
 constexpr int kKeypadSubtract = 333;
 constexpr int kKeypadAdd = 334;
+constexpr int kKeypadEnter = 335;
 } // namespace keys
 
 enum class Action {
@@ -49,6 +59,12 @@ enum class Action {
     Escape,           // Esc: closes a dialog or Help, leaves present mode or fullscreen
     Quit,             // Ctrl+Q (asks when there are unsaved edits)
     Save,             // Ctrl+S: save the current state as a scene (asks for a name)
+    LessonNext,       // PageDown, Right: the answer, or the next step of the lesson
+    LessonPrevious,   // PageUp, Left
+    LessonFirst,      // Home
+    LessonLast,       // End
+    LessonDigit,      // 0-9: a step number (digitOfKey), then...
+    LessonJump,       // Enter: go to it
 };
 
 // A key press as the window reports it (queued by the window backend, so a tap shorter than a
@@ -65,6 +81,7 @@ struct KeyBinding {
     Action action;
     const char* keyName;     // as shown in the Help window
     const char* description; // as shown in the Help window
+    bool listed = true;      // in the Help window (one row stands for the ten digit keys)
     bool shift = false;
 };
 
@@ -73,5 +90,7 @@ const std::vector<KeyBinding>& keyBindings();
 // The action for `key` pressed with (or without) Ctrl and Shift; Action::None when unbound. A key
 // bound without Shift also answers with Shift held when it has no Shift binding of its own.
 Action actionForKey(int key, bool ctrl, bool shift = false);
+// The digit a key types (0-9, top row or keypad); -1 for other keys.
+int digitOfKey(int key);
 // A short name for logs ("reset", "pause", ...).
 const char* actionName(Action action);

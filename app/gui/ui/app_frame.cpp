@@ -13,8 +13,12 @@ void handleKeys(App& app, const std::vector<KeyPress>& keys) {
     // Typing into a text field (a file name) must not trigger hotkeys; Esc still closes dialogs.
     const bool typing = ImGui::GetIO().WantTextInput;
     for (const KeyPress& k : keys) {
-        const Action a = actionForKey(k.key, k.ctrl, k.shift);
-        if (!typing || a == Action::Escape) applyAction(app, a);
+        const Action action = actionForKey(k.key, k.ctrl, k.shift);
+        if (typing && action != Action::Escape) continue;
+        if (action == Action::LessonDigit)
+            lessonTypeDigit(app, digitOfKey(k.key));
+        else
+            applyAction(app, action);
     }
 }
 
@@ -31,6 +35,10 @@ void applyAction(App& app, Action action) {
     case Action::None:
         break;
     case Action::Reset:
+        if (applyLessonAction(app, action)) { // in a lesson: restart the step
+            logEvent(app, ("lesson restart " + std::to_string(app.lesson.current + 1)).c_str());
+            break;
+        }
         resetScene(app);
         logEvent(app, "reset");
         break;
@@ -100,6 +108,15 @@ void applyAction(App& app, Action action) {
         app.saveDialogOpen = true;
         app.saveDialogPath = suggestedSavePath(app);
         break;
+    case Action::LessonNext:
+    case Action::LessonPrevious:
+    case Action::LessonFirst:
+    case Action::LessonLast:
+    case Action::LessonJump:
+        applyLessonAction(app, action);
+        break;
+    case Action::LessonDigit: // needs the key: handleKeys
+        break;
     }
 }
 
@@ -130,6 +147,7 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     drawOverlays(app);
     if (!app.presentMode) {
         if (app.uiVisible) drawControlsPanel(app);
+        if (app.lesson.active()) drawLessonCaption(app);
         if (app.helpOpen) drawHelpWindow(app);
     }
     drawDialogs(app);

@@ -36,7 +36,9 @@ void drawHelpWindow(App& app) {
     if (ImGui::BeginTabBar("help")) {
         if (ImGui::BeginTabItem("Keys")) {
             if (ImGui::BeginTable("keys", 2, flags)) {
-                for (const KeyBinding& b : keyBindings()) row(b.keyName, b.description);
+                for (const KeyBinding& b : keyBindings()) {
+                    if (b.listed) row(b.keyName, b.description);
+                }
                 ImGui::EndTable();
             }
             ImGui::EndTabItem();
