@@ -93,14 +93,10 @@ bool applyOptions(const RunRequest& r, WorldSettings& s, StopRule& stop, std::os
     return true;
 }
 
-// What a run adds up over its steps.
+// What a run adds up over its steps, and whether SIGINT stopped it before its end.
 struct RunTotals {
-    std::int64_t steps = 0;
-    std::int64_t collisions = 0;
-    std::int64_t eventCapHits = 0;
-    double maxPenetration = 0.0; // m
-    double wallMs = 0.0;         // ms spent inside World::step only
-    bool interrupted = false;    // stopped by SIGINT before its end
+    StepTotals steps;
+    bool interrupted = false;
 };
 
 // Progress on stderr for runs longer than a second: a line rewritten in place on a terminal,
@@ -140,19 +136,14 @@ RunTotals simulate(World& world, const StopRule& stop, const RunRequest& request
     // --time stops once the world time is within a tiny fraction of a frame of T, so rounding in
     // the sum of the frame lengths cannot add a frame.
     const double epsilon = 1e-6 * world.settings.dt;
-    while (totals.steps < stop.frames) {
+    while (totals.steps.steps < stop.frames) {
         if (stop.time && world.time >= *stop.time - epsilon) break;
         if (request.interrupted && *request.interrupted) {
             totals.interrupted = true;
             break;
         }
-        progress.update(totals.steps, world.time);
-        const StepStats s = world.step();
-        ++totals.steps;
-        totals.collisions += s.collisions;
-        totals.eventCapHits += s.eventCapHits;
-        totals.maxPenetration = std::max(totals.maxPenetration, s.maxPenetration);
-        totals.wallMs += s.stepMs;
+        progress.update(totals.steps.steps, world.time);
+        addStep(totals.steps, world.step());
     }
     return totals;
 }
@@ -161,7 +152,8 @@ nlohmann::ordered_json vecJson(Vec2 v) {
     return {v.x, v.y};
 }
 
-void printJson(const Scene& scene, const World& world, const RunTotals& t, std::ostream& out) {
+void printJson(const Scene& scene, const World& world, const StepTotals& t, bool interrupted,
+               std::ostream& out) {
     nlohmann::ordered_json j;
     const WorldSettings& s = world.settings;
     j["scene"] = scene.name; // dump() below escapes every control character
@@ -178,8 +170,8 @@ void printJson(const Scene& scene, const World& world, const RunTotals& t, std::
     j["kinetic_energy"] = kineticEnergy(world);
     j["potential_energy"] = potentialEnergy(world);
     j["event_cap_hits"] = t.eventCapHits;
-    j["wall_ms"] = t.wallMs;
-    j["interrupted"] = t.interrupted;
+    j["wall_ms"] = t.stepMs; // inside World::step only
+    j["interrupted"] = interrupted;
     nlohmann::ordered_json blocks = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < world.blocks.size(); ++i) {
         nlohmann::ordered_json b;
@@ -197,7 +189,8 @@ std::ostream& operator<<(std::ostream& out, Vec2 v) {
     return out << "(" << v.x << ", " << v.y << ")";
 }
 
-void printText(const Scene& scene, const World& world, const RunTotals& t, std::ostream& out) {
+void printText(const Scene& scene, const World& world, const StepTotals& t, bool interrupted,
+               std::ostream& out) {
     const WorldSettings& s = world.settings;
     const std::ios::fmtflags flags = out.flags();
     const std::streamsize precision = out.precision(6);
@@ -206,14 +199,14 @@ void printText(const Scene& scene, const World& world, const RunTotals& t, std::
         << (s.substeps == 1 ? " substep" : " substeps") << ", bounciness " << s.bounciness
         << ", gravity " << s.gravity << " m/s^2)\n"
         << "steps             " << t.steps << "  (" << world.time << " s simulated"
-        << (t.interrupted ? "; interrupted by Ctrl+C" : "") << ")\n"
+        << (interrupted ? "; interrupted by Ctrl+C" : "") << ")\n"
         << "collisions        " << t.collisions << "\n"
         << "momentum          " << totalMomentum(world) << " kg m/s\n"
         << "kinetic energy    " << kineticEnergy(world) << " J\n"
         << "potential energy  " << potentialEnergy(world) << " J\n"
         << "max penetration   " << t.maxPenetration << " m\n"
         << "event-cap hits    " << t.eventCapHits << "\n"
-        << "wall time         " << std::fixed << std::setprecision(3) << t.wallMs
+        << "wall time         " << std::fixed << std::setprecision(3) << t.stepMs
         << " ms in steps\n";
     out.flags(flags);
     out.precision(6);
@@ -244,12 +237,12 @@ int runCommand(const RunRequest& request, std::ostream& out, std::ostream& err) 
     StopRule stop;
     if (!applyOptions(request, scene.settings, stop, err)) return kExitBadInput;
     World world = makeWorld(scene);
-    const RunTotals totals = simulate(world, stop, request, err);
+    const RunTotals run = simulate(world, stop, request, err);
     if (request.json)
-        printJson(scene, world, totals, out);
+        printJson(scene, world, run.steps, run.interrupted, out);
     else
-        printText(scene, world, totals, out);
-    return totals.interrupted ? kExitInterrupted : kExitOk;
+        printText(scene, world, run.steps, run.interrupted, out);
+    return run.interrupted ? kExitInterrupted : kExitOk;
 }
 
 int validateCommand(const std::string& scenePath, std::ostream& out, std::ostream& err) {

@@ -1,6 +1,6 @@
 // Methods side by side: the same scene under the lecture's three methods at once, three worlds
 // stepped together from one starting state, with running statistics and the divergence from the
-// perfect method. Pure logic; side_by_side_view.cpp draws the ghosts and the table.
+// perfect method. Pure logic; side_by_side_overlay.cpp draws the ghosts and the table.
 #pragma once
 
 #include "world.h"
@@ -10,10 +10,8 @@
 
 struct MethodRun {
     World world;
-    StepStats stats;
-    std::uint64_t collisions = 0;
-    std::uint64_t eventCapHits = 0;
-    double maxPenetration = 0.0; // m, largest overlap seen
+    StepStats stats;   // the last step's
+    StepTotals totals; // since start()
 };
 
 struct MethodsSideBySide {
