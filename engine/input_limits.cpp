@@ -12,6 +12,11 @@ std::string formatNumber(double value) {
     if (std::isnan(value)) return "nan";
     if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
     char text[32];
+    // Whole numbers below a million in full ("1000", not "1e3").
+    if (value == std::floor(value) && std::abs(value) < 1e6) {
+        std::snprintf(text, sizeof text, "%.0f", value);
+        return text;
+    }
     for (int precision = 1; precision <= 17; ++precision) {
         std::snprintf(text, sizeof text, "%.*g", precision, value);
         if (std::strtod(text, nullptr) == value) break;
@@ -40,8 +45,8 @@ std::string violation(const Range& range, double value) {
     return "must be " + describe(range) + ", not " + formatNumber(value);
 }
 
-std::string lengthViolation(double length, double magnitude) {
-    if (std::string problem = violation(kSize, length); !problem.empty()) return problem;
+std::string lengthViolation(double length, double magnitude, const Range& range) {
+    if (std::string problem = violation(range, length); !problem.empty()) return problem;
     const double least = kResolution * magnitude;
     if (length >= least) return "";
     return "must be at least " + formatNumber(kResolution) +

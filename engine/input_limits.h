@@ -33,7 +33,8 @@ struct Range {
 inline constexpr Range kCoordinate{-1e9, 1e9, "m"};      // positions, world bounds
 inline constexpr Range kSpeed{-1e9, 1e9, "m/s"};         // each velocity component
 inline constexpr Range kGravity{-1e9, 1e9, "m/s^2"};     // each gravity component
-inline constexpr Range kSize{1e-6, 1e9, "m"};            // block width and height, bounds extent
+inline constexpr Range kSize{1e-6, 1e9, "m"};            // block width and height
+inline constexpr Range kExtent{1e-6, 2e9, "m"};          // world bounds' width and height
 inline constexpr Range kMass{1e-15, 1e15, "kg"};         // dynamic blocks
 inline constexpr Range kBounciness{0.0, 1.0, ""};        // C
 inline constexpr Range kDt{1e-6, 1.0, "s"};              // seconds per frame
@@ -47,9 +48,10 @@ inline constexpr double kResolution = 1e-9;
 std::string describe(const Range& range);
 // "" when `value` is in `range`; otherwise "must be <describe(range)>, not <value>".
 std::string violation(const Range& range, double value);
-// "" when a length (size or bounds extent) at coordinates of magnitude up to `magnitude` is
-// at least kSize.min and kResolution·magnitude and at most kSize.max; otherwise why not.
-std::string lengthViolation(double length, double magnitude);
+// "" when a length (a block's size, or with kExtent the bounds' extent) at coordinates of
+// magnitude up to `magnitude` is within `range` and at least kResolution·magnitude; otherwise
+// why not.
+std::string lengthViolation(double length, double magnitude, const Range& range = kSize);
 
 // The shortest text that reads back to the same double, exponents without padding ("1e-6").
 std::string formatNumber(double value);

@@ -249,8 +249,9 @@ Vec2 vec2(const json& value, const std::string& path, const limits::Range& range
 }
 
 // A length (a block's side, the bounds' extent) at coordinates of magnitude up to `magnitude`.
-void checkLength(double length, double magnitude, const std::string& path) {
-    if (std::string problem = limits::lengthViolation(length, magnitude); !problem.empty())
+void checkLength(double length, double magnitude, const std::string& path,
+                 const limits::Range& range = limits::kSize) {
+    if (std::string problem = limits::lengthViolation(length, magnitude, range); !problem.empty())
         throw ValueError{path, problem};
 }
 
@@ -272,7 +273,8 @@ void parseWorld(const json& world, Scene& scene) {
                                              "and ymin < ymax"};
         for (int axis = 0; axis < 2; ++axis)
             checkLength(b[axis + 2] - b[axis], std::max(std::abs(b[axis]), std::abs(b[axis + 2])),
-                        "world.bounds (" + std::string(axis ? "height" : "width") + ")");
+                        "world.bounds (" + std::string(axis ? "height" : "width") + ")",
+                        limits::kExtent);
         scene.bounds.min = {b[0], b[1]};
         scene.bounds.max = {b[2], b[3]};
     }
