@@ -6,6 +6,7 @@
 #include "png_io.h"
 #include "printable.h"
 #include "renderer.h"
+#include "ui_renderer_gl.h"
 #include "ui_style.h"
 
 #include <imgui.h>
@@ -37,6 +38,7 @@ void renderFrame(App& app, Offscreen& off) {
     appFrame(app, {}, kFrameSeconds, false);
     ImGui::Render();
     appRender(app, off.renderer, off.context.width, off.context.height);
+    uiRendererRender(ImGui::GetDrawData());
     offscreenFinish(off.context);
 }
 
@@ -91,7 +93,7 @@ int writeScreenshot(Offscreen& off, const Options& o) {
 
 int screenshot(App& app, Offscreen& off, const Options& o) {
     for (int i = 0; i < o.frames; ++i) stepSimulation(app);
-    if (app.show.cost) runCostSweepNow(app);
+    if (app.show.cost) app.cost.runSweepNow(quickTradeoffSweep(app.scenesDir)); // the chart
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off);
     return writeScreenshot(off, o);
 }
