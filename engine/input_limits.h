@@ -30,6 +30,7 @@ struct Range {
     bool whole = false;
 };
 
+inline constexpr Range kMagnitude{-1e9, 1e9, ""};        // any other number (lesson files)
 inline constexpr Range kCoordinate{-1e9, 1e9, "m"};      // positions, world bounds
 inline constexpr Range kSpeed{-1e9, 1e9, "m/s"};         // each velocity component
 inline constexpr Range kGravity{-1e9, 1e9, "m/s^2"};     // each gravity component

@@ -24,6 +24,7 @@
 using json = nlohmann::json;
 using scene_json::dumpValue;
 using scene_json::numberList;
+using namespace scene_json; // the typed access below: number(), string(), vec2(), ...
 
 namespace {
 
@@ -33,12 +34,6 @@ constexpr int kMaxDepth = 64; // the format itself needs 4 levels
 // m: overlaps up to this much count as touching, so stacks typed in decimals ("exactly
 // touching" up to rounding) are accepted.
 constexpr double kTouchTolerance = 1e-9;
-
-// A value error: thrown by the validators below, turned into a SceneError by parseScene.
-struct ValueError {
-    std::string path;
-    std::string message;
-};
 
 // ---- Syntax: line and column, and a pre-scan for nesting depth and duplicate keys ----
 
@@ -188,7 +183,11 @@ std::string parserMessage(const std::string& what) {
     return printable(message, 2 * kPrintableDefault);
 }
 
-// ---- Values: typed access that names the JSON path on failure ----
+} // namespace
+
+// ---- Values: typed access that names the JSON path on failure (scene_json.h) ----
+
+namespace scene_json {
 
 std::string indexPath(const std::string& path, std::size_t i) {
     return path + "[" + std::to_string(i) + "]";
@@ -225,7 +224,6 @@ std::string string(const json& value, const std::string& path) {
     return value.get<std::string>();
 }
 
-// A finite number within `range` (input_limits.h).
 double number(const json& value, const std::string& path, const limits::Range& range) {
     const double x = number(value, path);
     if (std::string problem = limits::violation(range, x); !problem.empty())
@@ -233,7 +231,6 @@ double number(const json& value, const std::string& path, const limits::Range& r
     return x;
 }
 
-// An array of exactly `n` finite numbers, each within `range`.
 std::vector<double> numbers(const json& value, const std::string& path, std::size_t n,
                             const limits::Range& range) {
     if (!value.is_array() || value.size() != n)
@@ -247,6 +244,18 @@ Vec2 vec2(const json& value, const std::string& path, const limits::Range& range
     const std::vector<double> v = numbers(value, path, 2, range);
     return {v[0], v[1]};
 }
+
+std::vector<double> numbers(const json& value, const std::string& path, std::size_t n) {
+    return numbers(value, path, n, limits::kMagnitude);
+}
+
+Vec2 vec2(const json& value, const std::string& path) {
+    return vec2(value, path, limits::kMagnitude);
+}
+
+} // namespace scene_json
+
+namespace {
 
 // A length (a block's side, the bounds' extent) at coordinates of magnitude up to `magnitude`.
 void checkLength(double length, double magnitude, const std::string& path,
@@ -410,29 +419,33 @@ Scene parseValue(const json& root) {
     return scene;
 }
 
-// Every error leaves here: its place (with the file's name) and message printable and bounded,
-// whatever the file's name and contents (a key, a name or a number can be megabytes long).
+// Every error leaves through here: its place (with the file's name) and message printable and
+// bounded, whatever the file's name and contents (a key, a name or a number can be megabytes).
+SceneError placed(const std::string& where, const std::string& message) {
+    return {printable(where, kPrintablePath), printable(message, 4 * kPrintableDefault)};
+}
+
 SceneResult failure(const std::string& where, const std::string& message) {
     SceneResult r;
-    r.error = {printable(where, kPrintablePath), printable(message, 4 * kPrintableDefault)};
+    r.error = placed(where, message);
     return r;
 }
 
 } // namespace
 
-SceneResult parseScene(const std::string& text, const std::string& sourceName) {
-    if (text.size() > kMaxFileBytes) return failure(sourceName, "larger than 64 MiB");
+std::optional<SceneError> parseJsonText(const std::string& text, const std::string& sourceName,
+                                        json& root) {
+    if (text.size() > kMaxFileBytes) return placed(sourceName, "larger than 64 MiB");
     if (std::all_of(text.begin(), text.end(),
                     [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }))
-        return failure(placeName(sourceName, text, text.size()), "the file is empty");
+        return placed(placeName(sourceName, text, text.size()), "the file is empty");
     if (auto problem = prescan(text, false)) // depth first: the parser must never see it
-        return failure(placeName(sourceName, text, problem->index), problem->message);
-    json root;
+        return placed(placeName(sourceName, text, problem->index), problem->message);
     try {
         root = json::parse(text);
     } catch (const json::parse_error& e) {
         const std::size_t index = e.byte > 0 ? e.byte - 1 : 0;
-        return failure(placeName(sourceName, text, index), parserMessage(e.what()));
+        return placed(placeName(sourceName, text, index), parserMessage(e.what()));
     } catch (const json::exception& e) {
         // Number overflow (1e400) has no position in nlohmann; find the number in the text.
         std::string message = e.what();
@@ -442,14 +455,21 @@ SceneResult parseScene(const std::string& text, const std::string& sourceName) {
             index = text.find(message.substr(quote + 1, message.size() - quote - 2));
         message =
             message.substr(message.find("] ") == std::string::npos ? 0 : message.find("] ") + 2);
-        if (index == std::string::npos) return failure(sourceName, message);
-        return failure(placeName(sourceName, text, index), message);
+        if (index == std::string::npos) return placed(sourceName, message);
+        return placed(placeName(sourceName, text, index), message);
     }
     // The parser stops at a NUL byte as at the end of the text: junk after it would pass unseen.
     if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
-        return failure(placeName(sourceName, text, nul), "a NUL byte: this is not a text file");
+        return placed(placeName(sourceName, text, nul), "a NUL byte: this is not a text file");
     if (auto problem = prescan(text, true))
-        return failure(placeName(sourceName, text, problem->index), problem->message);
+        return placed(placeName(sourceName, text, problem->index), problem->message);
+    return std::nullopt;
+}
+
+SceneResult parseScene(const std::string& text, const std::string& sourceName) {
+    json root;
+    if (auto error = parseJsonText(text, sourceName, root))
+        return failure(error->where, error->message);
     try {
         SceneResult r;
         r.scene = parseValue(root);
@@ -459,24 +479,28 @@ SceneResult parseScene(const std::string& text, const std::string& sourceName) {
     }
 }
 
-SceneResult loadSceneFile(const std::string& path) {
+std::optional<SceneError> readJsonFile(const std::string& path, std::string& text) {
     // Only regular files: a directory cannot be read and a FIFO could block forever. A path that
     // cannot be followed says why (a symlink loop, a directory without permission).
     std::error_code ec;
     const std::filesystem::file_status status = std::filesystem::status(path, ec);
-    if (status.type() == std::filesystem::file_type::not_found)
-        return failure(path, "no such file");
-    if (ec) return failure(path, "cannot open the file: " + ec.message());
-    if (!std::filesystem::is_regular_file(status)) return failure(path, "not a regular file");
+    if (status.type() == std::filesystem::file_type::not_found) return placed(path, "no such file");
+    if (ec) return placed(path, "cannot open the file: " + ec.message());
+    if (!std::filesystem::is_regular_file(status)) return placed(path, "not a regular file");
     std::ifstream in(path, std::ios::binary);
-    if (!in) return failure(path, "cannot open the file");
+    if (!in) return placed(path, "cannot open the file");
     in.seekg(0, std::ios::end);
     const std::streamoff size = in.tellg();
-    if (size < 0) return failure(path, "cannot read the file");
-    if (static_cast<std::uint64_t>(size) > kMaxFileBytes)
-        return failure(path, "larger than 64 MiB");
+    if (size < 0) return placed(path, "cannot read the file");
+    if (static_cast<std::uint64_t>(size) > kMaxFileBytes) return placed(path, "larger than 64 MiB");
     in.seekg(0, std::ios::beg);
-    std::string text(static_cast<std::size_t>(size), '\0');
-    if (size > 0 && !in.read(&text[0], size)) return failure(path, "cannot read the file");
+    text.assign(static_cast<std::size_t>(size), '\0');
+    if (size > 0 && !in.read(&text[0], size)) return placed(path, "cannot read the file");
+    return std::nullopt;
+}
+
+SceneResult loadSceneFile(const std::string& path) {
+    std::string text;
+    if (auto error = readJsonFile(path, text)) return failure(error->where, error->message);
     return parseScene(text, path);
 }
