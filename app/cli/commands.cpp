@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <iomanip>
 #include <ostream>
 
@@ -70,6 +72,22 @@ bool applyOptions(const RunRequest& r, WorldSettings& s, StopRule& stop, std::os
             return false;
         s.gravity = g;
     }
+    if (r.resolve && !parseResolve(r.resolve->c_str(), s.resolve))
+        return refuse(err, "--resolve", *r.resolve, "must be momentum or reflect");
+    if (r.integrator && !parseIntegrator(r.integrator->c_str(), s.integrator))
+        return refuse(err, "--integrator", *r.integrator,
+                      "must be semi-implicit-euler, explicit-euler or exact");
+    for (const std::string& name : r.mistakes) {
+        if (name == "none") { // the scene's mistakes off
+            s.mistakes = 0;
+            continue;
+        }
+        Mistake m{};
+        if (!parseMistake(name.c_str(), m))
+            return refuse(err, "--mistake", name,
+                          "must be discrete, move-back, first-found, no-approach-test or none");
+        s.set(m, true);
+    }
     if (r.steps) {
         double n = 0.0;
         if (!numberOption("--steps", *r.steps, limits::kFrames, n, err)) return false;
@@ -92,6 +110,40 @@ bool applyOptions(const RunRequest& r, WorldSettings& s, StopRule& stop, std::os
             static_cast<std::int64_t>(std::min(std::ceil(100.0 * t / s.dt), limits::kFrames.max));
     }
     return true;
+}
+
+// ---- --trace: one CSV row per frame, for a spreadsheet ----
+
+// A CSV field: quoted, quotes doubled, control bytes (never echoed raw) as spaces.
+std::string csvField(const std::string& text) {
+    std::string out = "\"";
+    for (const char c : text) {
+        if (c == '"')
+            out += "\"\"";
+        else
+            out += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? ' ' : c;
+    }
+    return out + "\"";
+}
+
+void writeTraceHeader(std::ostream& out, const Scene& scene) {
+    out << "t";
+    for (std::size_t i = 0; i < scene.blocks.size(); ++i) {
+        const std::string name = scene.blocks[i].name.empty() ? "blocks[" + std::to_string(i) + "]"
+                                                              : scene.blocks[i].name;
+        for (const char* column : {" x", " y", " vx", " vy"}) out << ',' << csvField(name + column);
+    }
+    out << ",momentum_x,momentum_y,kinetic_energy,potential_energy\n";
+}
+
+// t (s), per block position (m) and velocity (m/s), totals: momentum (kg m/s), energies (J).
+void writeTraceRow(std::ostream& out, const World& world, const StepStats& s) {
+    out << world.time;
+    for (const Block& b : world.blocks)
+        out << ',' << b.position.x << ',' << b.position.y << ',' << b.velocity.x << ','
+            << b.velocity.y;
+    out << ',' << s.momentum.x << ',' << s.momentum.y << ',' << s.kineticEnergy << ','
+        << s.potentialEnergy << '\n';
 }
 
 // What a run adds up over its steps, and whether SIGINT stopped it before its end.
@@ -131,7 +183,7 @@ class Progress {
 };
 
 RunTotals simulate(World& world, const StopRule& stop, const RunRequest& request,
-                   std::ostream& err) {
+                   std::ostream* trace, std::ostream& err) {
     RunTotals totals;
     Progress progress(request, stop.frames, err);
     // --time stops once the world time is within a tiny fraction of a frame of T, so rounding in
@@ -144,7 +196,9 @@ RunTotals simulate(World& world, const StopRule& stop, const RunRequest& request
             break;
         }
         progress.update(totals.steps.steps, world.time);
-        addStep(totals.steps, world.step());
+        const StepStats s = world.step();
+        if (trace) writeTraceRow(*trace, world, s);
+        addStep(totals.steps, s);
     }
     return totals;
 }
@@ -163,6 +217,14 @@ void printJson(const Scene& scene, const World& world, const StepTotals& t, bool
     j["substeps"] = s.substeps;
     j["bounciness"] = s.bounciness;
     j["gravity"] = vecJson(s.gravity);
+    j["resolve"] = resolveName(s.resolve);
+    j["integrator"] = integratorName(s.integrator);
+    nlohmann::ordered_json mistakes = nlohmann::ordered_json::array();
+    for (int m = 0; m < static_cast<int>(Mistake::Count); ++m)
+        if (s.has(static_cast<Mistake>(m)))
+            mistakes.push_back(mistakeName(static_cast<Mistake>(m)));
+    j["mistakes"] = std::move(mistakes);
+    j["drag"] = s.drag;
     j["sim_time"] = world.time;
     j["steps"] = t.steps;
     j["collisions"] = t.collisions;
@@ -238,7 +300,26 @@ int runCommand(const RunRequest& request, std::ostream& out, std::ostream& err) 
     StopRule stop;
     if (!applyOptions(request, scene.settings, stop, err)) return kExitBadInput;
     World world = makeWorld(scene);
-    const RunTotals run = simulate(world, stop, request, err);
+    std::ofstream trace;
+    if (request.trace) {
+        trace.open(*request.trace, std::ios::binary | std::ios::trunc);
+        if (!trace) {
+            err << "sandbox-cli run: --trace " << printable(*request.trace, kPrintablePath)
+                << ": cannot write the file\n";
+            return kExitBadInput;
+        }
+        trace << std::setprecision(17);
+        writeTraceHeader(trace, scene);
+    }
+    const RunTotals run = simulate(world, stop, request, request.trace ? &trace : nullptr, err);
+    if (request.trace) {
+        trace.close();
+        if (!trace) {
+            err << "sandbox-cli run: --trace " << printable(*request.trace, kPrintablePath)
+                << ": writing failed\n";
+            return kExitBadInput;
+        }
+    }
     if (request.json)
         printJson(scene, world, run.steps, run.interrupted, out);
     else
