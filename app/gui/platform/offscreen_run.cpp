@@ -4,6 +4,7 @@
 #include "app_setup.h"
 #include "offscreen_osmesa.h"
 #include "png_io.h"
+#include "printable.h"
 #include "renderer.h"
 #include "ui_renderer_gl.h"
 #include "ui_style.h"
@@ -95,6 +96,15 @@ bool writeLayoutJson(const App& app, const std::string& path) {
     return std::fclose(f) == 0 && ok;
 }
 
+// Writes the frame rendered last to --screenshot and prints where it is.
+int writeScreenshot(Offscreen& off, const Options& o) {
+    if (!writeFrame(off, o.screenshot)) return 1;
+    std::error_code ec; // print where the PNG is, as an absolute path when it can be had
+    const std::filesystem::path where = std::filesystem::absolute(o.screenshot, ec);
+    std::printf("%s\n", printable(ec ? o.screenshot : where.string(), kPrintablePath).c_str());
+    return 0;
+}
+
 int screenshot(App& app, Offscreen& off, const Options& o) {
     if (app.lesson.active()) lessonShowPausePoint(app); // the step as the window shows it there
     // --frames N simulates N frames, as if P had been pressed (the badge then shows no PAUSED).
@@ -102,11 +112,9 @@ int screenshot(App& app, Offscreen& off, const Options& o) {
     if (o.frames > 0) app.paused = false;
     if (app.show.cost) app.cost.runSweepNow(quickTradeoffSweep(app.scenesDir)); // the chart
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off);
-    if (!writeFrame(off, o.screenshot)) return 1;
+    const int code = writeScreenshot(off, o);
+    if (code != 0) return code;
     if (!o.layoutJson.empty() && !writeLayoutJson(app, o.layoutJson)) return 1;
-    std::error_code ec; // print where the PNG is, as an absolute path when it can be had
-    const std::filesystem::path where = std::filesystem::absolute(o.screenshot, ec);
-    std::printf("%s\n", ec ? o.screenshot.c_str() : where.c_str());
     return 0;
 }
 
@@ -192,7 +200,8 @@ int benchmark(App& app, Offscreen& off, const Options& o) {
                 "ms/frame\n",
                 perFrame, 1000.0 / perFrame, simMs / o.benchmarkFrames,
                 perFrame - simMs / o.benchmarkFrames);
-    return 0;
+    // With --screenshot too: the last frame benchmarked.
+    return o.screenshot.empty() ? 0 : writeScreenshot(off, o);
 }
 
 } // namespace
