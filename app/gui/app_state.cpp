@@ -170,6 +170,7 @@ bool saveCurrentScene(App& app, const std::string& path) {
     }
     app.error.clear();
     app.note = "Saved " + path;
+    app.savedFile = path;
     return true;
 }
 
