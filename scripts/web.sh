@@ -16,8 +16,9 @@ imgui_version=1.86+ds-1
 imgui_dir=$cache/imgui-$imgui_version
 
 # emscripten (emcc 3.1.6, clang 14, binaryen), chromium and python3-websocket (the browser
-# tests drive Chromium over the DevTools protocol), and the header-only packages the build uses.
-web_packages=(emscripten chromium python3-websocket xz-utils
+# tests drive Chromium over the DevTools protocol), python3-pil (they read its screenshots), and
+# the header-only packages the build uses.
+web_packages=(emscripten chromium python3-websocket python3-pil xz-utils
   nlohmann-json3-dev libcli11-dev libstb-dev fonts-dejavu-core cmake)
 
 install_deps() {

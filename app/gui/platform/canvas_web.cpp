@@ -29,6 +29,8 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
     for (int i = 0; i < count; ++i) gCanvas->openedFiles.emplace_back(paths[i]);
 }
 
+// JavaScript, not C++: kept as written.
+// clang-format off
 // The page's size in CSS pixels and its device pixel ratio.
 EM_JS(double, page_width, (), { return window.innerWidth; });
 EM_JS(double, page_height, (), { return window.innerHeight; });
@@ -38,7 +40,7 @@ EM_JS(char*, page_query_string, (), { return allocateUTF8(window.location.search
 EM_JS(char*, storage_get, (const char* key), {
     try {
         const v = window.localStorage.getItem(UTF8ToString(key));
-        return v == = null ? 0 : allocateUTF8(v);
+        return v === null ? 0 : allocateUTF8(v);
     } catch (e) {
         return 0; // storage disabled (private mode, file://): settings are not kept
     }
@@ -50,10 +52,10 @@ EM_JS(void, storage_set, (const char* key, const char* value), {
     }
 });
 EM_JS(void, page_open_file_picker, (), { window.sandboxPage.openFilePicker(); });
-EM_JS(void, page_download, (const char* path),
-      { window.sandboxPage.download(UTF8ToString(path)); });
-EM_JS(void, page_set_fullscreen, (int on), { window.sandboxPage.setFullscreen(on != = 0); });
+EM_JS(void, page_download, (const char* path), { window.sandboxPage.download(UTF8ToString(path)); });
+EM_JS(void, page_set_fullscreen, (int on), { window.sandboxPage.setFullscreen(on !== 0); });
 EM_JS(void, page_first_frame_shown, (), { window.sandboxPage.firstFrameShown(); });
+// clang-format on
 
 std::string takeString(char* text) {
     if (!text) return {};

@@ -155,11 +155,15 @@ void drawCostWindow(App& app) {
     if (s.running) {
         ImGui::TextColored(ImVec4(0.55f, 0.85f, 0.6f, 1.0f), "Sweep running in the background...");
     } else if (ImGui::Button("Run the tradeoff sweep (quick)")) {
+#ifdef __EMSCRIPTEN__
+        runCostSweepNow(app); // the browser build has one thread: the page waits for the sweep
+#else
         TradeoffOptions options;
         options.scenesDir = app.scenesDir;
         options.quick = true;
         s.job = std::async(std::launch::async, runTradeoff, options);
         s.running = true;
+#endif
     }
     if (!s.error.empty()) ImGui::TextWrapped("Sweep failed: %s", s.error.c_str());
     if (s.rows.empty()) {
