@@ -15,10 +15,10 @@
 // pair at one instant already merges, so jams settle sooner (a lattice of hundreds of touching
 // blocks can still end its frames at the cap: see Jams.JammedBoxOf400BlocksAdvances).
 //
-// Crushing: a block bouncing between two infinite masses that approach each other (a platform
-// pushing it into a wall) collides ever faster, without end, before they meet. After
-// kSqueezeBounces such alternating bounces in one substep its contacts are resolved by the rest
-// rule, which reverses the platform as on a wall.
+// Crushing (crush.h, shared with turn-based): a block bouncing between two infinite masses that
+// approach each other (a platform pushing it into a wall) collides ever faster, without end,
+// before they meet. After CrushRule::kSqueezeBounces such alternating bounces in one substep its
+// contacts are resolved by the rest rule, which reverses the platform as on a wall.
 //
 // Broad phase: the paths are registered in a CornerGrid (one entry per block, cheap to build for
 // blocks of similar size), or in the BroadPhase when the sizes are too mixed for it. The rest rule
@@ -28,6 +28,7 @@
 // it is then, cell for cell, the BroadPhase that would have been kept all along.
 #include "collision.h"
 #include "corner_grid.h"
+#include "crush.h"
 #include "methods.h"
 
 #include <algorithm>
@@ -38,9 +39,8 @@
 
 namespace {
 
-constexpr int kWallEvent = -1;      // Event::b for an impact with the bounds
-constexpr int kElasticRepeats = 8;  // collisions of one pair at one instant before it merges
-constexpr int kSqueezeBounces = 16; // alternating bounces between closing infinite masses
+constexpr int kWallEvent = CrushRule::kWall; // Event::b for an impact with the bounds
+constexpr int kElasticRepeats = 8; // collisions of one pair at one instant before it merges
 
 struct Event {
     double time;          // s since the substep start
@@ -60,14 +60,6 @@ struct Later {
     }
 };
 
-// Per block and axis: the infinite mass it last bounced off (a block index or kWallEvent), on
-// which side (+1 above), and how many times in a row it alternated between closing ones.
-struct Bounce {
-    int anchor = 0;
-    int side = 0;
-    int alternations = 0;
-};
-
 // A block's registered path replaced by a new one (while the BroadPhase is not kept up to date).
 struct PathChange {
     int block;
@@ -80,7 +72,7 @@ struct PathChange {
 struct PerfectScratch {
     std::vector<double> clock;
     std::vector<std::uint32_t> stamp;
-    std::vector<Bounce> bounces;
+    CrushRule crush;
     std::vector<Event> events; // a binary heap ordered by Later once the first predictions are in
     std::vector<int> changed;
     std::unordered_map<std::uint64_t, int> metAtInstant;
@@ -96,7 +88,7 @@ class PerfectSolver {
         : ctx_(ctx), blocks_(ctx.world.blocks), grid_(ctx.broadPhase),
           cornerGrid_(scratch.cornerGrid), resolver_(ctx), clock_(scratch.clock),
           stamp_(scratch.stamp), events_(scratch.events), metAtInstant_(scratch.metAtInstant),
-          bounces_(scratch.bounces), pathChanges_(scratch.pathChanges) {}
+          crush_(scratch.crush), pathChanges_(scratch.pathChanges) {}
 
     void run();
 
@@ -128,9 +120,9 @@ class PerfectSolver {
     }
     bool resolve(const Event& e, int processed);
     bool repeatsAtInstant(const Event& e, int processed);
-    bool squeezed(const Event& e, int axis);
-    double anchorVelocity(int anchor, int axis) const {
-        return anchor < 0 ? 0.0 : blocks_[anchor].velocity[axis];
+    bool squeezed(const Event& e, int axis) {
+        return crush_.squeezed(blocks_, e.a, e.b, axis, positionAt(e.a, e.time)[axis],
+                               e.b < 0 ? 0.0 : positionAt(e.b, e.time)[axis]);
     }
 
     SubstepContext& ctx_;
@@ -147,7 +139,7 @@ class PerfectSolver {
     bool heap_ = false;                 // events_ is a heap
     double instant_ = -1.0;             // s: the time of the pairs below
     std::unordered_map<std::uint64_t, int>& metAtInstant_; // collisions per pair at that time
-    std::vector<Bounce>& bounces_;                         // 2 per block
+    CrushRule& crush_;
     std::vector<PathChange>& pathChanges_; // since the substep start, while grid_ is not current
 };
 
@@ -240,32 +232,6 @@ bool PerfectSolver::repeatsAtInstant(const Event& e, int processed) {
     return ++metAtInstant_[(static_cast<std::uint64_t>(lo) << 32) | hi] > allowed;
 }
 
-// Whether the dynamic block of this event (against a wall, a static or a kinematic block) has
-// been bouncing between two infinite masses that close in on it.
-bool PerfectSolver::squeezed(const Event& e, int axis) {
-    int block = e.a, anchor = e.b;
-    if (e.b >= 0) {
-        if (blocks_[e.a].isDynamic() == blocks_[e.b].isDynamic()) return false;
-        if (!blocks_[e.a].isDynamic()) std::swap(block, anchor);
-    } else if (!blocks_[block].isDynamic()) {
-        return false;
-    }
-    const int side =
-        anchor < 0 ? (blocks_[block].velocity[axis] > 0.0 ? 1 : -1)
-                   : (positionAt(anchor, e.time)[axis] > positionAt(block, e.time)[axis] ? 1 : -1);
-    Bounce& last = bounces_[2 * block + axis];
-    // The lower and upper anchor close in when the lower one moves up faster than the upper.
-    const double lower = anchorVelocity(side > 0 ? last.anchor : anchor, axis);
-    const double upper = anchorVelocity(side > 0 ? anchor : last.anchor, axis);
-    if (last.side == -side && lower - upper > 0.0)
-        ++last.alternations;
-    else
-        last.alternations = 0;
-    last.anchor = anchor;
-    last.side = side;
-    return last.alternations > kSqueezeBounces;
-}
-
 bool PerfectSolver::resolve(const Event& e, int processed) {
     const bool repeated = repeatsAtInstant(e, processed);
     bool changed = false;
@@ -283,7 +249,7 @@ void PerfectSolver::run() {
     const int n = static_cast<int>(blocks_.size());
     clock_.assign(n, 0.0);
     stamp_.assign(n, 0);
-    bounces_.assign(2 * static_cast<size_t>(n), Bounce{});
+    crush_.reset(blocks_.size());
     events_.clear();
     metAtInstant_.clear();
     // A path and the box timeOfWallImpact tests (the block's box moved by its travel) differ by a

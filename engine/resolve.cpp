@@ -29,6 +29,7 @@ double Resolver::restThreshold(int axis) const {
 void Resolver::setVelocity(int i, int axis, double v) {
     Vec2& velocity = ctx_.world.blocks[i].velocity;
     if (velocity[axis] == v) return;
+    if (undo_) undo_->push_back({i, axis, velocity[axis]});
     velocity[axis] = v;
     changed_.push_back(i);
 }
@@ -115,7 +116,6 @@ Resolution Resolver::resolveWall(int a, int axis) {
 Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) {
     std::vector<Block>& blocks = ctx_.world.blocks;
     const Bounds& bounds = ctx_.world.bounds;
-    const int other = 1 - axis;
     const double threshold = restThreshold(axis);
     const size_t changedBefore = changed_.size();
     inCluster_.resize(blocks.size(), 0);
@@ -153,19 +153,10 @@ Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) 
         ctx_.broadPhase.query(probe, [&](int j) {
             if (inCluster_[j]) return;
             sync(j);
-            const Aabb bj = aabbOf(blocks[j]);
-            const double sideOverlap =
-                std::min(box.max[other], bj.max[other]) - std::max(box.min[other], bj.min[other]);
-            if (sideOverlap <= kTouchTolerance)
-                return; // side by side along the other axis, not resting on each other
+            const int side = faceContact(box, aabbOf(blocks[j]), axis);
+            if (side == 0) return; // apart, or side by side: not resting on each other
             const double vj = blocks[j].velocity[axis];
-            double closing;
-            if (std::abs(bj.min[axis] - box.max[axis]) <= kTouchTolerance)
-                closing = vi - vj; // j is on top of i
-            else if (std::abs(box.min[axis] - bj.max[axis]) <= kTouchTolerance)
-                closing = vj - vi; // i is on top of j
-            else
-                return;
+            const double closing = side > 0 ? vi - vj : vj - vi; // > 0: they press together
             if (closing > -threshold) add(j, closing);
         });
         // Walls are infinite masses at rest.
