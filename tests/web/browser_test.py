@@ -8,6 +8,8 @@ DevTools protocol (python3-websocket). One check per run:
   pause         P pauses: two screenshots taken frames apart are equal (and were not before)
   url-scene     ?scene=newtons_cradle&method=turn-based&show=plots,inspector selects them
   url-bad       bad URL parameters show their errors in the panel and keep the default scene
+  open-file     a picked or dropped file opens; a bad one shows its error (with its place) and
+                keeps the current scene
   shots DIR     writes 1280x720 and 1920x1080 screenshots into DIR (for looking at)
 
 Every check also fails on any console error or uncaught exception of the page. Exit 0: passed;
@@ -230,6 +232,25 @@ def url_bad(page, base):
     print(f"bad URL parameters shown: {s['error']!r}")
 
 
+def open_file(page, base):
+    page.open(base)
+
+    def pick(name, text_js):
+        # What the page's file picker does with the chosen file (index.html).
+        page.evaluate(f"FS.mkdirTree('/opened'); FS.writeFile('/opened/{name}', {text_js}); "
+                      f"Module.ccall('sandbox_web_file_opened', null, ['string'], ['/opened/{name}'])")
+        page.wait_frames(2)
+        return page.status()
+
+    s = pick("broken.json", "'{\\n  \"version\": 1,\\n  \"blocks\": [ oops'")
+    check(s["scene"].endswith("/bouncing_squares.json"), f"a bad file replaced the scene: {s}")
+    check("broken.json" in s["error"] and ":3:" in s["error"], f"no error with its place: {s}")
+    s = pick("cradle.json", "FS.readFile('/scenes/newtons_cradle.json')")
+    check(s["scene"] == "/opened/cradle.json", f"the picked file did not open: {s}")
+    check(s["error"] == "", f"error after a good file: {s}")
+    print("a bad file shows its error and keeps the scene; a good one opens")
+
+
 def shots(base, out_dir):
     os.makedirs(out_dir, exist_ok=True)
     every = "?show=plots,inspector,com,poi,timeline,vectors,trails,sidebyside,cost"
@@ -262,7 +283,7 @@ def main():
     threading.Thread(target=server.serve_forever, daemon=True).start()
     base = f"http://127.0.0.1:{server.server_address[1]}/index.html"
     checks = {"first-frame": first_frame, "pause": pause, "url-scene": url_scene,
-              "url-bad": url_bad}
+              "url-bad": url_bad, "open-file": open_file}
     try:
         if what == "shots":
             shots(base, sys.argv[3])

@@ -53,7 +53,7 @@ EM_JS(void, storage_set, (const char* key, const char* value), {
 });
 EM_JS(void, page_open_file_picker, (), { window.sandboxPage.openFilePicker(); });
 EM_JS(void, page_download, (const char* path), { window.sandboxPage.download(UTF8ToString(path)); });
-EM_JS(void, page_set_fullscreen, (int on), { window.sandboxPage.setFullscreen(on !== 0); });
+EM_JS(void, page_toggle_fullscreen, (), { window.sandboxPage.toggleFullscreen(); });
 EM_JS(void, page_first_frame_shown, (), { window.sandboxPage.firstFrameShown(); });
 // clang-format on
 
@@ -179,8 +179,8 @@ void pageDownload(const std::string& path) {
     page_download(path.c_str());
 }
 
-void pageSetFullscreen(bool fullscreen) {
-    page_set_fullscreen(fullscreen ? 1 : 0);
+void pageToggleFullscreen() {
+    page_toggle_fullscreen();
 }
 
 void pageFirstFrameShown() {

@@ -47,5 +47,5 @@ std::string storageGet(const char* key); // localStorage, "" when unset
 void storageSet(const char* key, const std::string& value);
 void pageOpenFilePicker();                  // the browser's file dialog
 void pageDownload(const std::string& path); // offers a file of the browser's FS
-void pageSetFullscreen(bool fullscreen);
+void pageToggleFullscreen();
 void pageFirstFrameShown(); // hides the loading note

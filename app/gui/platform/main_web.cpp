@@ -9,6 +9,7 @@
 #include "mouse_tool.h"
 #include "options.h"
 #include "renderer.h"
+#include "ui_renderer_gl.h"
 #include "ui_style.h"
 #include "url_params.h"
 
@@ -66,7 +67,7 @@ void answerRequests(WebApp& w) {
     app.savedFile.clear();
     if (app.filePickerRequested) pageOpenFilePicker();
     app.filePickerRequested = false;
-    if (app.fullscreenRequested) pageSetFullscreen(true);
+    if (app.fullscreenRequested) pageToggleFullscreen();
     app.fullscreenRequested = false;
     app.quitRequested = false; // Esc: closing the tab is the browser's
 }
@@ -77,7 +78,11 @@ void frame(void* arg) {
     double realSeconds = 0.0;
     canvasNewFrame(w.canvas, &realSeconds);
     followPixelRatio(w);
-    if (app.uiScale != uiCurrentScale()) uiApplyScale(app.uiScale);
+    if (app.uiScale != uiCurrentScale()) {
+        uiApplyScale(app.uiScale);
+        uiRendererFontsChanged();
+        uiRendererNewFrame(); // uploads the new atlas before this frame uses it
+    }
     for (const std::string& path : canvasTakeOpenedFiles(w.canvas)) loadScene(app, path);
     for (const TouchGesture& g : canvasTakeGestures(w.canvas))
         touchPanZoom(app, g.from, g.to, g.spreadRatio);
@@ -85,6 +90,7 @@ void frame(void* arg) {
     appFrame(app, canvasTakeKeyPresses(w.canvas), realSeconds, true);
     ImGui::Render();
     appRender(app, w.renderer, w.canvas.width, w.canvas.height);
+    uiRendererRender(ImGui::GetDrawData());
     answerRequests(w);
     saveSettings(w);
     if (w.frames++ == 0) pageFirstFrameShown();
@@ -142,6 +148,7 @@ int main() {
     w.pixelRatio = w.canvas.devicePixelRatio;
     setUiScale(app, static_cast<float>(w.config.uiScale * w.pixelRatio));
     uiApplyScale(app.uiScale);
+    uiRendererFontsChanged();
     if (!w.renderer.init(&error)) app.error = "Shader error: " + error;
     emscripten_set_main_loop_arg(frame, &w, 0, 1);
     return 0;

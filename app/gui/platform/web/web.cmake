@@ -10,7 +10,7 @@ set(WEB_DIR ${CMAKE_CURRENT_SOURCE_DIR}/platform/web)
 
 add_executable(sandbox-web platform/main_web.cpp platform/canvas_web.cpp)
 target_include_directories(sandbox-web PRIVATE platform)
-target_link_libraries(sandbox-web PRIVATE sandbox_ui glfw)
+target_link_libraries(sandbox-web PRIVATE sandbox_ui sandbox_ui_renderer glfw)
 set_target_properties(sandbox-web PROPERTIES OUTPUT_NAME sandbox
                       RUNTIME_OUTPUT_DIRECTORY ${SANDBOX_WEB_OUT})
 get_filename_component(SHIPPED_SCENES ${CMAKE_CURRENT_SOURCE_DIR}/../scenes ABSOLUTE)
