@@ -86,6 +86,36 @@ TEST(UrlParams, AnUnknownSceneKeepsTheCurrentOneAndSaysWhy) {
         << app.error;
 }
 
+TEST(UrlParams, ALessonAtAStep) {
+    const UrlParams p = parseUrlParams("?lesson=lecture3&step=5");
+    EXPECT_TRUE(p.errors.empty());
+    EXPECT_EQ(p.lesson, "lecture3");
+    EXPECT_EQ(p.step, 5);
+    App app = setUpApp();
+    applyUrlParams(app, p);
+    EXPECT_EQ(app.error, "");
+    ASSERT_TRUE(app.lesson.active());
+    EXPECT_EQ(app.lesson.current, 4u);
+}
+
+TEST(UrlParams, BadLessonParameters) {
+    const UrlParams p = parseUrlParams("?step=3");
+    ASSERT_EQ(p.errors.size(), 1u);
+    EXPECT_NE(p.errors[0].find("URL parameter step: needs a lesson"), std::string::npos);
+    EXPECT_EQ(p.step, 0);
+    EXPECT_EQ(parseUrlParams("?lesson=lecture3&step=0").errors.size(), 1u);
+    EXPECT_EQ(parseUrlParams("?lesson=lecture3&step=-2").errors.size(), 1u);
+    EXPECT_EQ(parseUrlParams("?lesson=lecture3&step=99999999999").errors.size(), 1u);
+    App app = setUpApp();
+    const std::string before = app.scenePath;
+    applyUrlParams(app, parseUrlParams("?lesson=lecture3&step=999"));
+    EXPECT_FALSE(app.error.empty()); // no step 999: the current scene stays
+    EXPECT_EQ(app.scenePath, before);
+    applyUrlParams(app, parseUrlParams("?lesson=no_such_lesson"));
+    EXPECT_NE(app.error.find("no lesson 'no_such_lesson' is shipped"), std::string::npos);
+    EXPECT_FALSE(app.lesson.active());
+}
+
 TEST(TouchGesture, PansByTheMidpointAndZoomsAboutIt) {
     App app = setUpApp();
     app.camera.setViewport({0, 0, 800, 600});

@@ -7,6 +7,7 @@ DevTools protocol (python3-websocket). One check per run:
                 controls panel visible, the default scene loaded
   pause         P pauses: two screenshots taken frames apart are equal (and were not before)
   url-scene     ?scene=newtons_cradle&method=turn-based&show=plots,inspector selects them
+  url-lesson    ?lesson=lecture3&step=5 opens the lesson at step 5
   url-bad       bad URL parameters show their errors in the panel and keep the default scene
   open-file     a picked or dropped file opens; a bad one shows its error (with its place) and
                 keeps the current scene
@@ -222,6 +223,14 @@ def url_scene(page, base):
     print(f"URL parameters: {s}")
 
 
+def url_lesson(page, base):
+    page.open(base + "?lesson=lecture3&step=5")
+    s = page.status()
+    check(s["lessonStep"] == 5, f"lesson step not selected: {s}")
+    check(s["error"] == "", f"error: {s['error']}")
+    print(f"URL lesson parameters: {s}")
+
+
 def url_bad(page, base):
     page.open(base + "?scene=no_such_scene&method=fastest")
     s = page.status()
@@ -283,7 +292,7 @@ def main():
     threading.Thread(target=server.serve_forever, daemon=True).start()
     base = f"http://127.0.0.1:{server.server_address[1]}/index.html"
     checks = {"first-frame": first_frame, "pause": pause, "url-scene": url_scene,
-              "url-bad": url_bad, "open-file": open_file}
+              "url-lesson": url_lesson, "url-bad": url_bad, "open-file": open_file}
     try:
         if what == "shots":
             shots(base, sys.argv[3])

@@ -121,7 +121,8 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
            ",\"frames\":" + std::to_string(gWeb->frames) +
            ",\"simTime\":" + std::to_string(app.world.time) + ",\"error\":" + quoted(app.error) +
            ",\"plots\":" + (app.show.plots ? "true" : "false") +
-           ",\"inspector\":" + (app.show.inspector ? "true" : "false") + "}";
+           ",\"inspector\":" + (app.show.inspector ? "true" : "false") + ",\"lessonStep\":" +
+           (app.lesson.active() ? std::to_string(app.lesson.current + 1) : std::string("0")) + "}";
     return text.c_str();
 }
 

@@ -1,6 +1,7 @@
 #include "url_params.h"
 
 #include "app_state.h"
+#include "lesson_session.h"
 #include "scene_library.h"
 
 #include <cctype>
@@ -9,6 +10,7 @@
 namespace {
 
 constexpr std::size_t kMaxEchoed = 40; // characters of a bad value quoted back
+constexpr int kMaxStep = 10000;        // a step number beyond any lesson's
 
 int hexDigit(char c) {
     if (c >= '0' && c <= '9') return c - '0';
@@ -102,26 +104,55 @@ UrlParams parseUrlParams(const std::string& query) {
             } else {
                 p.errors.push_back(where + ": " + error);
             }
+        } else if (key == "lesson") {
+            if (isSceneName(value))
+                p.lesson = value;
+            else
+                p.errors.push_back(where + ": " + echo(value) +
+                                   " is not a lesson name (letters, digits, _ and -)");
+        } else if (key == "step") {
+            const bool digits = !value.empty() && value.size() <= 5 &&
+                                value.find_first_not_of("0123456789") == std::string::npos;
+            const int step = digits ? std::stoi(value) : 0;
+            if (step >= 1 && step <= kMaxStep)
+                p.step = step;
+            else
+                p.errors.push_back(where + ": " + echo(value) +
+                                   " is not a step number (1, 2, ...)");
         } else {
-            p.errors.push_back("unknown URL parameter " + echo(key) + " (scene, method, show)");
+            p.errors.push_back("unknown URL parameter " + echo(key) +
+                               " (scene, method, show, lesson, step)");
         }
+    }
+    if (p.step > 0 && p.lesson.empty()) {
+        p.errors.push_back("URL parameter step: needs a lesson (lesson=NAME)");
+        p.step = 0;
     }
     return p;
 }
 
 void applyUrlParams(App& app, const UrlParams& params) {
     std::string errors;
-    for (const std::string& e : params.errors) errors += (errors.empty() ? "" : "\n") + e;
+    auto add = [&errors](const std::string& e) { errors += (errors.empty() ? "" : "\n") + e; };
+    for (const std::string& e : params.errors) add(e);
+    if (!params.lesson.empty()) {
+        const std::string path = app.lessonsDir + "/" + params.lesson + ".json";
+        bool shipped = false;
+        for (const SceneEntry& s : app.lessonFiles) shipped = shipped || s.path == path;
+        const std::size_t first = params.step > 0 ? static_cast<std::size_t>(params.step - 1) : 0;
+        if (!shipped)
+            add("URL parameter lesson: no lesson " + echo(params.lesson) + " is shipped");
+        else if (!openLesson(app, path, first))
+            add(app.error);
+    }
     if (!params.scene.empty()) {
         const std::string path = app.scenesDir + "/" + params.scene + ".json";
         bool shipped = false;
         for (const SceneEntry& s : app.sceneFiles) shipped = shipped || s.path == path;
-        if (!shipped) {
-            errors += std::string(errors.empty() ? "" : "\n") + "URL parameter scene: no scene " +
-                      echo(params.scene) + " is shipped";
-        } else if (!loadScene(app, path)) {
-            errors += std::string(errors.empty() ? "" : "\n") + app.error;
-        }
+        if (!shipped)
+            add("URL parameter scene: no scene " + echo(params.scene) + " is shipped");
+        else if (!loadScene(app, path))
+            add(app.error);
     }
     if (params.methodGiven) app.world.settings.method = params.method;
     if (params.showGiven) applyShowSet(app, params.show);

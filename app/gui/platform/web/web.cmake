@@ -1,5 +1,5 @@
 # The browser build's main (scripts/web.sh): sandbox.js, sandbox.wasm and sandbox.data (the
-# shipped scenes and the UI font, preloaded into the browser's file system) written with
+# shipped scenes and lessons and the UI font, preloaded into the browser's file system) written with
 # index.html into SANDBOX_WEB_OUT, a static folder any web server can serve.
 set(SANDBOX_WEB_OUT ${CMAKE_BINARY_DIR}/site CACHE PATH "Where the browser build's page goes")
 set(SANDBOX_WEB_FONT /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf)
@@ -14,11 +14,13 @@ target_link_libraries(sandbox-web PRIVATE sandbox_ui sandbox_ui_renderer glfw)
 set_target_properties(sandbox-web PROPERTIES OUTPUT_NAME sandbox
                       RUNTIME_OUTPUT_DIRECTORY ${SANDBOX_WEB_OUT})
 get_filename_component(SHIPPED_SCENES ${CMAKE_CURRENT_SOURCE_DIR}/../scenes ABSOLUTE)
-file(GLOB SHIPPED_SCENE_FILES CONFIGURE_DEPENDS ${SHIPPED_SCENES}/*.json)
+get_filename_component(SHIPPED_LESSONS ${PROJECT_SOURCE_DIR}/lessons ABSOLUTE)
+file(GLOB SHIPPED_SCENE_FILES CONFIGURE_DEPENDS ${SHIPPED_SCENES}/*.json ${SHIPPED_LESSONS}/*.json)
 target_link_options(sandbox-web PRIVATE
   -sALLOW_MEMORY_GROWTH=1
   -sEXPORTED_RUNTIME_METHODS=ccall,FS
   "SHELL:--preload-file ${SHIPPED_SCENES}@/scenes"
+  "SHELL:--preload-file ${SHIPPED_LESSONS}@/lessons"
   "SHELL:--preload-file ${SANDBOX_WEB_FONT}@${SANDBOX_WEB_FONT}")
 set_property(TARGET sandbox-web APPEND PROPERTY LINK_DEPENDS ${SHIPPED_SCENE_FILES})
 sandbox_warnings(sandbox-web)
