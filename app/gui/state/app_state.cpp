@@ -255,6 +255,7 @@ bool saveCurrentScene(App& app, const std::string& path) {
     app.blocksEdited = false;
     app.error.clear();
     app.note = "Saved " + where;
+    app.savedFile = where;
     return true;
 }
 
