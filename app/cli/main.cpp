@@ -6,9 +6,7 @@
 #include "printable.h"
 
 #include <CLI/CLI.hpp>
-#ifdef SANDBOX_OVERLAY_TABLE
-#include "options.h" // the overlay table's names, for lesson files
-#endif
+#include "overlays.h" // the overlay table (header-only): its names, for lesson files
 
 #include <csignal>
 #include <exception>
@@ -164,9 +162,7 @@ int main(int argc, char** argv) {
     try {
         LessonContext lessons;
         lessons.scenesDir = SANDBOX_SCENES_DIR;
-#ifdef SANDBOX_OVERLAY_TABLE
         lessons.overlayNames = overlayNames();
-#endif
         if (*validateCmd) return validateCommand(validatePath, std::cout, std::cerr, lessons);
         if (*lessonCmd) return lessonCommand(lessonPath, std::cout, std::cerr, lessons);
         if (*tradeoffCmd) return tradeoffCommand(tradeoff, std::cout, std::cerr);

@@ -16,12 +16,6 @@ std::string showNames() {
     return names;
 }
 
-std::vector<std::string> overlayNames() {
-    std::vector<std::string> names;
-    for (const OverlayInfo& o : kOverlays) names.emplace_back(o.name);
-    return names;
-}
-
 bool setOverlay(Overlays& overlays, const std::string& name, bool on) {
     for (const OverlayInfo& o : kOverlays) {
         if (name != o.name) continue;

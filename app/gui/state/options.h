@@ -40,8 +40,6 @@ struct Options {
     std::string recordSteps; // offscreen: one PNG per lesson step into this directory
 };
 
-// The overlay names, in the table's order (what --show and lesson files may name).
-std::vector<std::string> overlayNames();
 // Turns the overlay called `name` on or off; false for an unknown name.
 bool setOverlay(Overlays& overlays, const std::string& name, bool on);
 // Parses a comma-separated --show list; false with a message for an unknown name.

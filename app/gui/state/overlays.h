@@ -24,6 +24,8 @@
 #include "dock_layout.h"
 
 #include <cstddef>
+#include <string>
+#include <vector>
 
 // clang-format off
 #define SANDBOX_OVERLAYS(X)                                                                        \
@@ -90,4 +92,12 @@ inline constexpr std::size_t kOverlayCount = sizeof kOverlays / sizeof kOverlays
 
 inline const OverlayInfo& overlayInfo(OverlayId id) {
     return kOverlays[static_cast<std::size_t>(id)];
+}
+
+// The overlay names, in the table's order (what --show and lesson files may name). Header-only,
+// so sandbox-cli checks lesson files against the table without linking the app.
+inline std::vector<std::string> overlayNames() {
+    std::vector<std::string> names;
+    for (const OverlayInfo& o : kOverlays) names.emplace_back(o.name);
+    return names;
 }
