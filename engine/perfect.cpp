@@ -20,12 +20,8 @@
 // kSqueezeBounces such alternating bounces in one substep its contacts are resolved by the rest
 // rule, which reverses the platform as on a wall.
 //
-// Broad phase: the paths are registered in a CornerGrid (one entry per block, cheap to build for
-// blocks of similar size), or in the BroadPhase when the sizes are too mixed for it. The rest rule
-// (Resolver) reads the BroadPhase, in whose order it merges a cluster; so when the CornerGrid is
-// used, the BroadPhase is built only when the rest rule first needs it in a substep, from the
-// boxes registered at the substep's start, and the paths registered since are replayed into it:
-// it is then, cell for cell, the BroadPhase that would have been kept all along.
+// Paths: each block's swept box for the rest of the substep is registered in one PathIndex, which
+// both the predictions and the rest rule read.
 #include "collision.h"
 #include "corner_grid.h"
 #include "methods.h"
@@ -68,11 +64,53 @@ struct Bounce {
     int alternations = 0;
 };
 
-// A block's registered path replaced by a new one (while the BroadPhase is not kept up to date).
-struct PathChange {
-    int block;
-    Aabb before;
-    Aabb after;
+// The index of the paths: a CornerGrid (one entry per block, cheap to build for blocks of similar
+// size), or the BroadPhase when the sizes are too mixed for it. Both answer every query with the
+// same blocks, in different orders, on which nothing depends (each pair is predicted once per pair
+// of stamps; the rest rule sorts its cluster).
+class PathIndex final : public BlockFinder {
+  public:
+    PathIndex(CornerGrid& cornerGrid, BroadPhase& broadPhase)
+        : cornerGrid_(cornerGrid), broadPhase_(broadPhase) {}
+
+    // Registers every block i with the path pathOf(i), called once per block in index order.
+    template <class PathOf>
+    void build(const Bounds& bounds, const std::vector<Block>& blocks, PathOf&& pathOf) {
+        useCornerGrid_ = cornerGrid_.build(bounds, blocks, pathOf);
+        if (!useCornerGrid_)
+            broadPhase_.build(bounds, blocks, [&](int i) { return cornerGrid_.box(i); });
+    }
+    const Aabb& path(int i) const {
+        return useCornerGrid_ ? cornerGrid_.box(i) : broadPhase_.box(i);
+    }
+    void set(int i, const Aabb& path) {
+        if (useCornerGrid_)
+            cornerGrid_.set(i, path);
+        else
+            broadPhase_.set(i, path);
+    }
+    // visit(j) for every block j other than `self` whose path meets `box`.
+    template <class Visit> void queryOthers(const Aabb& box, int self, Visit&& visit) const {
+        if (useCornerGrid_)
+            cornerGrid_.queryOthers(box, self, visit);
+        else
+            broadPhase_.queryOthers(box, self, visit);
+    }
+    // visit(i, j) for every pair of paths that meet (right after build()).
+    template <class Visit> void forEachMeetingPair(Visit&& visit) const {
+        if (useCornerGrid_)
+            cornerGrid_.forEachMeetingPair(visit);
+        else
+            broadPhase_.forEachMeetingPair(visit);
+    }
+    void find(const Aabb& box, std::vector<int>& found) const override {
+        queryOthers(box, -1, [&](int j) { found.push_back(j); });
+    }
+
+  private:
+    CornerGrid& cornerGrid_;
+    BroadPhase& broadPhase_;
+    bool useCornerGrid_ = true;
 };
 
 // The solver's buffers, kept between substeps so a step allocates nothing once they have grown
@@ -85,18 +123,15 @@ struct PerfectScratch {
     std::vector<int> changed;
     std::unordered_map<std::uint64_t, int> metAtInstant;
     CornerGrid cornerGrid;
-    std::vector<PathChange> pathChanges;
-    std::vector<Aabb> firstPaths;
 };
 thread_local PerfectScratch scratch;
 
 class PerfectSolver {
   public:
     explicit PerfectSolver(SubstepContext& ctx)
-        : ctx_(ctx), blocks_(ctx.world.blocks), grid_(ctx.broadPhase),
-          cornerGrid_(scratch.cornerGrid), resolver_(ctx), clock_(scratch.clock),
-          stamp_(scratch.stamp), events_(scratch.events), metAtInstant_(scratch.metAtInstant),
-          bounces_(scratch.bounces), pathChanges_(scratch.pathChanges) {}
+        : ctx_(ctx), blocks_(ctx.world.blocks), paths_(scratch.cornerGrid, ctx.broadPhase),
+          resolver_(ctx, &paths_), clock_(scratch.clock), stamp_(scratch.stamp),
+          events_(scratch.events), metAtInstant_(scratch.metAtInstant), bounces_(scratch.bounces) {}
 
     void run();
 
@@ -108,11 +143,6 @@ class PerfectSolver {
         return sweptAabb(positionAt(i, now), blocks_[i].size, blocks_[i].velocity, ctx_.h - now);
     }
     void registerPaths();
-    const Aabb& registeredPath(int i) const {
-        return useCornerGrid_ ? cornerGrid_.box(i) : grid_.box(i);
-    }
-    void registerPath(int i, const Aabb& path);
-    void bringBroadPhaseUpToDate();
     void predictWalls(int i, double now, const Aabb& path);
     void predictPair(int i, int j, double now);
     void predict(int i, double now);
@@ -136,11 +166,8 @@ class PerfectSolver {
     SubstepContext& ctx_;
     std::vector<Block>& blocks_;
     Aabb wallsInside_; // the bounds shrunk by far more than rounding (see run())
-    BroadPhase& grid_;
-    CornerGrid& cornerGrid_;
-    bool useCornerGrid_ = false;    // paths are registered in cornerGrid_, else in grid_
-    bool broadPhaseCurrent_ = true; // grid_ holds the registered paths
-    Resolver resolver_;
+    PathIndex paths_;
+    Resolver resolver_;                 // its rest rule reads paths_
     std::vector<double>& clock_;        // s: the time at which each block's position is valid
     std::vector<std::uint32_t>& stamp_; // incremented on every change of velocity
     std::vector<Event>& events_;        // predicted impacts (see schedule())
@@ -148,7 +175,6 @@ class PerfectSolver {
     double instant_ = -1.0;             // s: the time of the pairs below
     std::unordered_map<std::uint64_t, int>& metAtInstant_; // collisions per pair at that time
     std::vector<Bounce>& bounces_;                         // 2 per block
-    std::vector<PathChange>& pathChanges_; // since the substep start, while grid_ is not current
 };
 
 // Registers every block's path over the whole substep, and predicts its impacts with the walls
@@ -156,39 +182,11 @@ class PerfectSolver {
 // order). The common case, a path well inside the walls (see predictWalls()), is tested here
 // without a call: a call per block cost more than the test.
 void PerfectSolver::registerPaths() {
-    const Bounds& bounds = ctx_.world.bounds;
-    useCornerGrid_ = cornerGrid_.build(bounds, blocks_, [&](int i) {
+    paths_.build(ctx_.world.bounds, blocks_, [&](int i) {
         const Aabb path = trajectory(i, 0.0);
         if (!contains(wallsInside_, path)) predictWalls(i, 0.0, path);
         return path;
     });
-    if (!useCornerGrid_) {
-        grid_.build(bounds, blocks_, [&](int i) { return cornerGrid_.box(i); });
-        return;
-    }
-    broadPhaseCurrent_ = false;
-    pathChanges_.clear();
-    resolver_.setBeforeBroadPhaseRead([this] { bringBroadPhaseUpToDate(); });
-}
-
-void PerfectSolver::registerPath(int i, const Aabb& path) {
-    if (!useCornerGrid_ || broadPhaseCurrent_) grid_.set(i, path);
-    if (!useCornerGrid_) return;
-    if (!broadPhaseCurrent_) pathChanges_.push_back({i, cornerGrid_.box(i), path});
-    cornerGrid_.set(i, path);
-}
-
-// Builds the BroadPhase from the paths registered at the substep's start (the current ones with
-// the changes undone, last first), then makes the same changes in the same order.
-void PerfectSolver::bringBroadPhaseUpToDate() {
-    if (broadPhaseCurrent_) return;
-    broadPhaseCurrent_ = true;
-    std::vector<Aabb>& first = scratch.firstPaths;
-    first.resize(blocks_.size());
-    for (size_t i = 0; i < blocks_.size(); ++i) first[i] = cornerGrid_.box(static_cast<int>(i));
-    for (auto c = pathChanges_.rbegin(); c != pathChanges_.rend(); ++c) first[c->block] = c->before;
-    grid_.build(ctx_.world.bounds, blocks_, [&](int i) { return first[i]; });
-    for (const PathChange& c : pathChanges_) grid_.set(c.block, c.after);
 }
 
 // Predicts block i's impact with the walls; `path` is trajectory(i, now).
@@ -218,10 +216,7 @@ void PerfectSolver::predict(int i, double now) {
     if (blocks_[i].kind == BodyKind::Static) return;
     const Aabb path = trajectory(i, now);
     predictWalls(i, now, path);
-    if (useCornerGrid_)
-        cornerGrid_.queryOthers(path, i, [&](int j) { predictPair(i, j, now); });
-    else
-        grid_.queryOthers(path, i, [&](int j) { predictPair(i, j, now); });
+    paths_.queryOthers(path, i, [&](int j) { predictPair(i, j, now); });
 }
 
 bool PerfectSolver::repeatsAtInstant(const Event& e, int processed) {
@@ -304,10 +299,7 @@ void PerfectSolver::run() {
         else if (blocks_[b].kind != BodyKind::Static)
             predictPair(b, a, 0.0);
     };
-    if (useCornerGrid_)
-        cornerGrid_.forEachMeetingPair(predictFirst);
-    else
-        grid_.forEachMeetingPair(predictFirst);
+    paths_.forEachMeetingPair(predictFirst);
     std::make_heap(events_.begin(), events_.end(), Later{});
     heap_ = true;
 
@@ -337,7 +329,7 @@ void PerfectSolver::run() {
         for (int j : changed) {
             ++stamp_[j];
             const Aabb path = trajectory(j, e.time);
-            if (!contains(registeredPath(j), path)) registerPath(j, path);
+            if (!contains(paths_.path(j), path)) paths_.set(j, path);
         }
         for (int j : changed) predict(j, e.time);
     }
