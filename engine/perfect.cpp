@@ -6,19 +6,30 @@
 // re-predicted against their neighbours from the broad phase. Stale predictions are recognised by
 // a per-block stamp that every change of velocity increments.
 //
-// Inelastic collapse: with C < 1 a chain of touching blocks can collide infinitely often at one
-// instant (the impulse running back and forth between walls). A pair (or a block and a wall) that
-// has already collided kElasticRepeats times at the same instant is therefore resolved perfectly
-// inelastic, by the rest rule, which merges the chain (compare the "TC model" of Luding and
-// McNamara, 1998). A Newton's cradle, or a block knocked against one resting on a wall, where
-// each pair meets once or twice, stays exact. Past half the event cap, the second meeting of a
-// pair at one instant already merges, so jams settle sooner (a lattice of hundreds of touching
-// blocks can still end its frames at the cap: see Jams.JammedBoxOf400BlocksAdvances).
-//
-// Crushing: a block bouncing between two infinite masses that approach each other (a platform
-// pushing it into a wall) collides ever faster, without end, before they meet. After
-// kSqueezeBounces such alternating bounces in one substep its contacts are resolved by the rest
-// rule, which reverses the platform as on a wall.
+// Contacts at one instant. Bodies that touch when an impact arrives (a block squeezed between a
+// heavy body and a wall, a Newton's cradle) collide many times at that one instant, and the
+// sequence is carried out collision by collision, as the same scene with the gaps going to zero
+// would be: at C = 1 it is finite whenever the touching bodies can give way on one side, and it
+// keeps energy and momentum to rounding (a light block between a wall and a block M/m times
+// heavier collides ceil(pi / atan(sqrt(m/M))) - 1 times, about pi·sqrt(M/m): G. Galperin,
+// "Playing pool with pi", Regular and Chaotic Dynamics 8, 2003). Three rules end what never ends,
+// each resolving the contact perfectly inelastic by the rest rule (Resolver::restCluster, which
+// keeps momentum and merges what rests on the contact):
+// - Collapse (C < 1): a pair (or a block and a wall) that has met more than kRepeatsAtInstant
+//   times at one instant is taken to be in inelastic collapse: infinitely many collisions at that
+//   instant whose velocities converge to a common one (McNamara and Young, "Inelastic collapse and
+//   clumping in a one-dimensional granular medium", Phys. Fluids A 4, 1992), which the merge
+//   gives at once.
+// - Trap (any C): a pair that meets more than kRepeatsAtInstant times at one instant while its
+//   block is caught along the axis between infinite masses on both sides (a row packed between
+//   walls): the impulse runs back and forth without end, and the row cannot move.
+// - Crush (any C): a block bouncing between two infinite masses that close in on it (a platform
+//   pushing it into a wall) collides ever faster, without end, before they meet. After
+//   kSqueezeBounces alternating bounces in one substep it is merged, and the platform reverses
+//   as on a wall.
+// Past half the event cap, the second meeting of a pair at one instant already counts as a
+// collapse or a trap, so jams settle sooner (a lattice of hundreds of touching blocks can still end
+// its frames at the cap: see Jams.JammedBoxOf400BlocksAdvances).
 //
 // Paths: each block's swept box for the rest of the substep is registered in one PathIndex, which
 // both the predictions and the rest rule read.
@@ -34,9 +45,9 @@
 
 namespace {
 
-constexpr int kWallEvent = -1;      // Event::b for an impact with the bounds
-constexpr int kElasticRepeats = 8;  // collisions of one pair at one instant before it merges
-constexpr int kSqueezeBounces = 16; // alternating bounces between closing infinite masses
+constexpr int kWallEvent = -1;       // Event::b for an impact with the bounds
+constexpr int kRepeatsAtInstant = 8; // meetings of one pair at one instant (collapse, trap)
+constexpr int kSqueezeBounces = 16;  // alternating bounces between closing infinite masses
 
 struct Event {
     double time;          // s since the substep start
@@ -157,7 +168,8 @@ class PerfectSolver {
         return e.stampA != stamp_[e.a] || (e.b >= 0 && e.stampB != stamp_[e.b]);
     }
     bool resolve(const Event& e, int processed);
-    bool repeatsAtInstant(const Event& e, int processed);
+    int meetingsAtInstant(const Event& e);
+    bool collapsesOrTraps(const Event& e, int axis, int meetings, int processed);
     bool squeezed(const Event& e, int axis);
     double anchorVelocity(int anchor, int axis) const {
         return anchor < 0 ? 0.0 : blocks_[anchor].velocity[axis];
@@ -219,7 +231,8 @@ void PerfectSolver::predict(int i, double now) {
     paths_.queryOthers(path, i, [&](int j) { predictPair(i, j, now); });
 }
 
-bool PerfectSolver::repeatsAtInstant(const Event& e, int processed) {
+// How many times this pair (or block and wall) has met at this event's instant, this one included.
+int PerfectSolver::meetingsAtInstant(const Event& e) {
     if (e.time != instant_) {
         instant_ = e.time;
         // clear() costs one step per bucket: after a storm at one instant, start a small table
@@ -231,8 +244,17 @@ bool PerfectSolver::repeatsAtInstant(const Event& e, int processed) {
     }
     const auto lo = static_cast<std::uint32_t>(e.b < 0 ? e.a : std::min(e.a, e.b));
     const auto hi = static_cast<std::uint32_t>(e.b < 0 ? e.b : std::max(e.a, e.b));
-    const int allowed = processed > ctx_.world.settings.eventCap / 2 ? 1 : kElasticRepeats;
-    return ++metAtInstant_[(static_cast<std::uint64_t>(lo) << 32) | hi] > allowed;
+    return ++metAtInstant_[(static_cast<std::uint64_t>(lo) << 32) | hi];
+}
+
+// The collapse and trap rules (see the top of the file).
+bool PerfectSolver::collapsesOrTraps(const Event& e, int axis, int meetings, int processed) {
+    const int allowed = processed > ctx_.world.settings.eventCap / 2 ? 1 : kRepeatsAtInstant;
+    if (meetings <= allowed) return false;
+    if (ctx_.world.settings.bounciness < 1.0) return true; // collapse
+    const int block = blocks_[e.a].isDynamic() ? e.a : e.b;
+    return block >= 0 && blocks_[block].isDynamic() &&
+           resolver_.caughtBetweenInfiniteMasses(block, axis); // trap
 }
 
 // Whether the dynamic block of this event (against a wall, a static or a kinematic block) has
@@ -262,11 +284,11 @@ bool PerfectSolver::squeezed(const Event& e, int axis) {
 }
 
 bool PerfectSolver::resolve(const Event& e, int processed) {
-    const bool repeated = repeatsAtInstant(e, processed);
+    const int meetings = meetingsAtInstant(e);
     bool changed = false;
     for (int axis = 0; axis < 2; ++axis) {
         if (!(e.axes & (1 << axis))) continue;
-        resolver_.setForceRest(repeated || squeezed(e, axis));
+        resolver_.setForceRest(collapsesOrTraps(e, axis, meetings, processed) || squeezed(e, axis));
         const Resolution r = e.b == kWallEvent ? resolver_.resolveWall(e.a, axis)
                                                : resolver_.resolvePair(e.a, e.b, axis);
         changed |= r != Resolution::None;

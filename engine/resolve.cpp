@@ -115,6 +115,46 @@ void Resolver::findNear(const Aabb& box) {
         ctx_.broadPhase.query(box, [&](int j) { found_.push_back(j); });
 }
 
+bool Resolver::caughtBetweenInfiniteMasses(int seed, int axis) {
+    std::vector<Block>& blocks = ctx_.world.blocks;
+    const Bounds& bounds = ctx_.world.bounds;
+    const int other = 1 - axis;
+    inCluster_.resize(blocks.size(), 0);
+    queue_.assign(1, seed);
+    inCluster_[seed] = 1;
+    bool below = false, above = false;
+    for (size_t q = 0; q < queue_.size() && !(below && above); ++q) {
+        const int i = queue_[q];
+        sync(i);
+        const Aabb box = aabbOf(blocks[i]);
+        below |= box.min[axis] - bounds.min[axis] <= kTouchTolerance;
+        above |= bounds.max[axis] - box.max[axis] <= kTouchTolerance;
+        Aabb probe = box;
+        probe.min[axis] -= kTouchTolerance;
+        probe.max[axis] += kTouchTolerance;
+        findNear(probe);
+        for (int j : found_) {
+            if (inCluster_[j]) continue;
+            sync(j);
+            const Aabb bj = aabbOf(blocks[j]);
+            const double sideOverlap =
+                std::min(box.max[other], bj.max[other]) - std::max(box.min[other], bj.min[other]);
+            if (sideOverlap <= kTouchTolerance) continue;
+            const bool onTop = std::abs(bj.min[axis] - box.max[axis]) <= kTouchTolerance;
+            const bool beneath = std::abs(box.min[axis] - bj.max[axis]) <= kTouchTolerance;
+            if (!onTop && !beneath) continue;
+            if (!blocks[j].isDynamic()) {
+                (onTop ? above : below) = true;
+                continue;
+            }
+            inCluster_[j] = 1;
+            queue_.push_back(j);
+        }
+    }
+    for (int j : queue_) inCluster_[j] = 0;
+    return below && above;
+}
+
 // A slow contact: the seed bodies and everything touching them along the axis that does not
 // part from them (a resting stack, a block on a platform) move on together as one perfectly
 // inelastic body: every dynamic member takes the cluster's centre-of-mass velocity u, or the
@@ -200,7 +240,9 @@ Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) 
             } else {
                 continue;
             }
-            if (closing > -threshold) add(j, closing, above);
+            // A body that parts, or closes faster than a resting contact, is not resting on the
+            // cluster: its contact is a collision of its own (unless the method forces the rest).
+            if (closing > -threshold && (forceRest_ || closing < threshold)) add(j, closing, above);
         }
         // Walls are infinite masses at rest.
         if (box.min[axis] - bounds.min[axis] <= kTouchTolerance && vi < threshold)

@@ -73,6 +73,11 @@ class Resolver {
     // rule for a pair that collides again at the same instant).
     void setForceRest(bool force) { forceRest_ = force; }
 
+    // Whether block i (dynamic) is caught along `axis` between infinite masses: the blocks that
+    // touch it along the axis, and those that touch them, reach a wall, a static or a kinematic
+    // block both below and above it. Along that line nothing can move without a collision.
+    bool caughtBetweenInfiniteMasses(int i, int axis);
+
     const std::vector<int>& changed() const { return changed_; }
     void clearChanged() { changed_.clear(); }
     // Brings block i to the current time (a no-op unless lazy clocks were given).
