@@ -2,7 +2,7 @@
 // first worked example, the timeline's scrub-and-replay (bit-exact, checked with stateHash), the
 // plot widget's ticks and time window, the point of impact and the methods side by side.
 #include "app_state.h"
-#include "history.h"
+#include "timeline.h"
 #include "inspector_format.h"
 #include "plot_logic.h"
 #include "poi.h"

@@ -6,7 +6,7 @@
 #include "app_log.h"
 #include "camera.h"
 #include "fixed_step.h"
-#include "history.h"
+#include "timeline.h"
 #include "mouse_tool.h"
 #include "options.h"
 #include "palette.h"

@@ -1,4 +1,4 @@
-#include "history.h"
+#include "timeline.h"
 
 #include <algorithm>
 

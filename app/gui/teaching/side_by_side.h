@@ -1,6 +1,6 @@
 // Methods side by side: the same scene under the lecture's three methods at once, three worlds
 // stepped together from one starting state, with running statistics and the divergence from the
-// perfect method. Pure logic; side_by_side_view.cpp draws the ghosts and the table.
+// perfect method. Pure logic; side_by_side_overlay.cpp draws the ghosts and the table.
 #pragma once
 
 #include "world.h"

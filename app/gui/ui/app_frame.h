@@ -28,7 +28,7 @@ void drawHelpWindow(App& app);
 // Mouse in the scene, block labels, hover tooltip and the status badge.
 void handleSceneMouse(App& app);
 void drawSceneDecorations(const App& app);
-// Teaching overlays (one file each): windows, and what is drawn over the scene.
+// Teaching overlays (one file each in overlays/): windows, and what is drawn over the scene.
 void drawPlotsWindow(App& app);
 void drawInspectorWindow(App& app);
 void drawTimelineWindow(App& app);
