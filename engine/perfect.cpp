@@ -36,6 +36,7 @@
 #include "collision.h"
 #include "corner_grid.h"
 #include "methods.h"
+#include "scratch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -49,14 +50,8 @@ constexpr int kWallEvent = -1;       // Event::b for an impact with the bounds
 constexpr int kRepeatsAtInstant = 8; // meetings of one pair at one instant (collapse, trap)
 constexpr int kSqueezeBounces = 16;  // alternating bounces between closing infinite masses
 
-struct Event {
-    double time;          // s since the substep start
-    int a;                // the block that predicted the impact
-    int b;                // the other block, or kWallEvent
-    std::uint32_t stampA; // a's stamp when predicted
-    std::uint32_t stampB; // b's stamp when predicted (0 for walls)
-    std::uint8_t axes;    // kAxisX | kAxisY
-};
+using Event = PerfectScratch::Event;
+using Bounce = PerfectScratch::Bounce;
 
 // Earliest first; ties in a fixed order so runs are deterministic.
 struct Later {
@@ -65,14 +60,6 @@ struct Later {
         if (x.a != y.a) return x.a > y.a;
         return x.b > y.b;
     }
-};
-
-// Per block and axis: the infinite mass it last bounced off (a block index or kWallEvent), on
-// which side (+1 above), and how many times in a row it alternated between closing ones.
-struct Bounce {
-    int anchor = 0;
-    int side = 0;
-    int alternations = 0;
 };
 
 // The index of the paths: a CornerGrid (one entry per block, cheap to build for blocks of similar
@@ -124,25 +111,13 @@ class PathIndex final : public BlockFinder {
     bool useCornerGrid_ = true;
 };
 
-// The solver's buffers, kept between substeps so a step allocates nothing once they have grown
-// (a cache only, like the broad phase's: every substep starts them afresh).
-struct PerfectScratch {
-    std::vector<double> clock;
-    std::vector<std::uint32_t> stamp;
-    std::vector<Bounce> bounces;
-    std::vector<Event> events; // a binary heap ordered by Later once the first predictions are in
-    std::vector<int> changed;
-    std::unordered_map<std::uint64_t, int> metAtInstant;
-    CornerGrid cornerGrid;
-};
-thread_local PerfectScratch scratch;
-
 class PerfectSolver {
   public:
-    explicit PerfectSolver(SubstepContext& ctx)
+    explicit PerfectSolver(SubstepContext& ctx, PerfectScratch& scratch)
         : ctx_(ctx), blocks_(ctx.world.blocks), paths_(scratch.cornerGrid, ctx.broadPhase),
           resolver_(ctx, &paths_), clock_(scratch.clock), stamp_(scratch.stamp),
-          events_(scratch.events), metAtInstant_(scratch.metAtInstant), bounces_(scratch.bounces) {}
+          events_(scratch.events), changed_(scratch.changed), metAtInstant_(scratch.metAtInstant),
+          bounces_(scratch.bounces) {}
 
     void run();
 
@@ -183,6 +158,7 @@ class PerfectSolver {
     std::vector<double>& clock_;        // s: the time at which each block's position is valid
     std::vector<std::uint32_t>& stamp_; // incremented on every change of velocity
     std::vector<Event>& events_;        // predicted impacts (see schedule())
+    std::vector<int>& changed_;         // blocks whose velocity the last event changed
     bool heap_ = false;                 // events_ is a heap
     double instant_ = -1.0;             // s: the time of the pairs below
     std::unordered_map<std::uint64_t, int>& metAtInstant_; // collisions per pair at that time
@@ -328,7 +304,7 @@ void PerfectSolver::run() {
     // Repeat: take the earliest impact, move its blocks to it, resolve, re-predict what changed.
     double lastEventTime = 0.0;
     int processed = 0;
-    std::vector<int>& changed = scratch.changed;
+    std::vector<int>& changed = changed_;
     while (!events_.empty()) {
         std::pop_heap(events_.begin(), events_.end(), Later{});
         const Event e = events_.back();
@@ -365,6 +341,6 @@ void PerfectSolver::run() {
 } // namespace
 
 void advancePerfect(SubstepContext& ctx) {
-    PerfectSolver solver(ctx);
+    PerfectSolver solver(ctx, ctx.scratch.perfect);
     solver.run();
 }

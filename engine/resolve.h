@@ -24,10 +24,14 @@ inline double velocityAfterCollision(double v, double u, double C) {
     return u - C * (v - u);
 }
 
-// What one substep of a method works with: the world, its broad phase, the statistics and log.
+struct StepScratch;
+
+// What one substep of a method works with: the world, the buffers it may reuse (scratch.h; its
+// broad phase), the statistics and log.
 struct SubstepContext {
     World& world;
-    BroadPhase& broadPhase;
+    StepScratch& scratch;
+    BroadPhase& broadPhase; // scratch.broadPhase
     StepStats& stats;
     std::vector<CollisionRecord>* log; // may be null
     double h;                          // s, substep length

@@ -6,6 +6,7 @@
 // end a block's turn, so a block can slide along a floor it rests on.
 #include "collision.h"
 #include "methods.h"
+#include "scratch.h"
 
 #include <vector>
 
@@ -67,7 +68,8 @@ void advanceTurnBased(SubstepContext& ctx) {
     });
 
     Resolver resolver(ctx);
-    thread_local FirstImpact first;
+    FirstImpact first;
+    first.blocks.swap(ctx.scratch.firstImpactBlocks); // reuses the buffer, given back below
     for (int i = 0; i < n; ++i) {
         Block& block = blocks[i];
         if (block.kind == BodyKind::Static) continue;
@@ -107,5 +109,6 @@ void advanceTurnBased(SubstepContext& ctx) {
             if (bounced || !rested) break;
         }
     }
+    first.blocks.swap(ctx.scratch.firstImpactBlocks);
     ctx.advanced = ctx.h;
 }

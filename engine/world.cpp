@@ -3,6 +3,7 @@
 #include "methods.h"
 
 #include "collision.h"
+#include "scratch.h"
 
 #include <algorithm>
 #include <chrono>
@@ -89,10 +90,35 @@ void addTotals(const World& world, StepStats& stats) {
     stats.potentialEnergy = potential;
 }
 
-// The broad phase keeps its buffers between steps (a cache only: results never depend on it).
-thread_local BroadPhase scratchBroadPhase;
+// maxOverlap, in the given grid.
+double maxOverlapIn(const World& world, BroadPhase& grid) {
+    grid.build(world.bounds, world.blocks, [&](int i) { return aabbOf(world.blocks[i]); });
+    double deepest = 0.0;
+    for (const Block& b : world.blocks)
+        deepest = std::max(deepest, outsideDepth(aabbOf(b), world.bounds));
+    grid.forEachOverlappingPair([&](int i, int j) {
+        const Block& a = world.blocks[i];
+        const Block& b = world.blocks[j];
+        if (a.kind != BodyKind::Static || b.kind != BodyKind::Static) // static pairs may overlap
+            deepest = std::max(deepest, penetration(aabbOf(a), aabbOf(b)));
+    });
+    return deepest;
+}
 
 } // namespace
+
+ScratchCache::ScratchCache() = default;
+ScratchCache::~ScratchCache() = default;
+ScratchCache::ScratchCache(const ScratchCache&) {}
+ScratchCache& ScratchCache::operator=(const ScratchCache&) {
+    return *this;
+}
+ScratchCache::ScratchCache(ScratchCache&&) noexcept = default;
+ScratchCache& ScratchCache::operator=(ScratchCache&&) noexcept = default;
+StepScratch& ScratchCache::get() {
+    if (!scratch_) scratch_ = std::make_unique<StepScratch>();
+    return *scratch_;
+}
 
 StepStats World::step(std::vector<CollisionRecord>* log) {
     const auto wallStart = std::chrono::steady_clock::now();
@@ -100,12 +126,13 @@ StepStats World::step(std::vector<CollisionRecord>* log) {
     const int substeps = settings.substeps > 0 ? settings.substeps : 1;
     const double h = settings.dt / substeps;
     double maxPenetrationSeen = 0.0;
+    StepScratch& buffers = scratch.get();
 
     for (int k = 0; k < substeps; ++k) {
         // 1. Forces: gravity changes the velocities of dynamic blocks.
         applyGravity(*this, h);
         // 2. Motion and collisions, by the chosen simulation method.
-        SubstepContext ctx{*this, scratchBroadPhase, stats, log, h, time};
+        SubstepContext ctx{*this, buffers, buffers.broadPhase, stats, log, h, time};
         advance(ctx, settings.method);
         time += ctx.advanced;
         stats.simulatedTime += ctx.advanced;
@@ -120,8 +147,10 @@ StepStats World::step(std::vector<CollisionRecord>* log) {
 
     // 4. Statistics of the new state.
     addTotals(*this, stats);
-    stats.maxPenetration = settings.measureOverlap ? std::max(maxPenetrationSeen, maxOverlap(*this))
-                                                   : maxPenetrationSeen;
+    stats.maxPenetration =
+        settings.measureOverlap
+            ? std::max(maxPenetrationSeen, maxOverlapIn(*this, buffers.overlapGrid))
+            : maxPenetrationSeen;
     const auto wallEnd = std::chrono::steady_clock::now();
     stats.stepMs = std::chrono::duration<double, std::milli>(wallEnd - wallStart).count();
     return stats;
@@ -149,18 +178,8 @@ double potentialEnergy(const World& world) {
 }
 
 double maxOverlap(const World& world) {
-    BroadPhase& grid = scratchBroadPhase;
-    grid.build(world.bounds, world.blocks, [&](int i) { return aabbOf(world.blocks[i]); });
-    double deepest = 0.0;
-    for (const Block& b : world.blocks)
-        deepest = std::max(deepest, outsideDepth(aabbOf(b), world.bounds));
-    grid.forEachOverlappingPair([&](int i, int j) {
-        const Block& a = world.blocks[i];
-        const Block& b = world.blocks[j];
-        if (a.kind != BodyKind::Static || b.kind != BodyKind::Static) // static pairs may overlap
-            deepest = std::max(deepest, penetration(aabbOf(a), aabbOf(b)));
-    });
-    return deepest;
+    BroadPhase grid;
+    return maxOverlapIn(world, grid);
 }
 
 std::uint64_t stateHash(const World& world) {

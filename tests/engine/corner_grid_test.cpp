@@ -3,6 +3,8 @@
 // the bounds, and after boxes are registered again (moved to other cells or to the large list).
 #include "corner_grid.h"
 
+#include "box_sets.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,33 +14,9 @@
 
 namespace {
 
-struct BoxSet {
-    Bounds bounds{{-3.0, 2.0}, {17.0, 14.0}};
-    std::vector<Block> blocks;
-    std::vector<Aabb> boxes;
-};
-
-// `count` boxes: most 0.2 to 0.6 m wide, one in 50 up to 6 m (large for the cells), one in 50
-// sticking out of the bounds; every tenth block static.
-BoxSet randomSetup(std::uint64_t seed, int count) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    BoxSet s;
-    for (int i = 0; i < count; ++i) {
-        const bool large = i % 50 == 7;
-        const double maxSize = large ? 6.0 : 0.6;
-        const Vec2 size{0.2 + (maxSize - 0.2) * unit(rng), 0.2 + (maxSize - 0.2) * unit(rng)};
-        const double margin = unit(rng) < 1.0 / 50.0 ? 2.0 : 0.0;
-        const Vec2 min{s.bounds.min.x - margin + 20.0 * unit(rng),
-                       s.bounds.min.y - margin + 12.0 * unit(rng)};
-        Block b;
-        b.size = size;
-        b.kind = i % 10 == 0 ? BodyKind::Static : BodyKind::Dynamic;
-        s.blocks.push_back(b);
-        s.boxes.push_back({min, min + size});
-    }
-    return s;
-}
+using box_sets::BoxSet;
+using box_sets::bruteForceQuery;
+using box_sets::randomSetup;
 
 std::vector<int> queryAnswer(const CornerGrid& grid, const Aabb& query, int self) {
     std::vector<int> found;
@@ -47,25 +25,15 @@ std::vector<int> queryAnswer(const CornerGrid& grid, const Aabb& query, int self
     return found;
 }
 
-std::vector<int> bruteForceQuery(const std::vector<Aabb>& boxes, const Aabb& query, int self) {
-    std::vector<int> found;
-    for (int j = 0; j < static_cast<int>(boxes.size()); ++j)
-        if (j != self && meets(boxes[j], query)) found.push_back(j);
-    return found;
-}
-
 TEST(CornerGrid, PairsAreExactlyTheBoxesThatMeet) {
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
         const BoxSet s = randomSetup(seed, 300);
         CornerGrid grid;
         ASSERT_TRUE(grid.build(s.bounds, s.blocks, [&](int i) { return s.boxes[i]; }));
-        std::vector<std::pair<int, int>> pairs, expected;
+        std::vector<std::pair<int, int>> pairs;
         grid.forEachMeetingPair([&](int a, int b) { pairs.emplace_back(a, b); });
         std::sort(pairs.begin(), pairs.end());
-        const int n = static_cast<int>(s.boxes.size());
-        for (int a = 0; a < n; ++a)
-            for (int b = a + 1; b < n; ++b)
-                if (meets(s.boxes[a], s.boxes[b])) expected.emplace_back(a, b);
+        const auto expected = box_sets::bruteForcePairs(s.boxes, meets);
         EXPECT_EQ(pairs, expected) << "seed " << seed;
         EXPECT_FALSE(expected.empty());
     }
