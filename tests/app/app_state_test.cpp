@@ -215,6 +215,49 @@ TEST(AppState, ShowListSetsTheOverlays) {
     EXPECT_FALSE(app.uiVisible);
 }
 
+// The overlay table (overlays.h) is what --show, the checkboxes and the log read: every row's
+// name turns on its own flag and no other, and toggling a row logs "NAME: on".
+TEST(OverlayTable, EachShowNameTurnsOnItsOwnFlagOnly) {
+    for (const OverlayInfo& row : kOverlays) {
+        ShowSet show;
+        std::string error;
+        ASSERT_TRUE(parseShowList(row.name, show, &error)) << row.name << ": " << error;
+        for (const OverlayInfo& other : kOverlays) {
+            EXPECT_EQ(show.overlays.*other.flag, &other == &row) << row.name << " / " << other.name;
+        }
+    }
+}
+
+TEST(OverlayTable, NamesAndFlagsAreUniqueAndWindowsHaveRoom) {
+    for (std::size_t i = 0; i < kOverlayCount; ++i) {
+        const OverlayInfo& a = kOverlays[i];
+        EXPECT_NE(std::string(a.name), "none");
+        EXPECT_NE(showNames().find(a.name), std::string::npos);
+        if (a.title != nullptr) {
+            EXPECT_GT(a.place.widthFraction, 0.0f) << a.name;
+            EXPECT_GT(a.place.heightFraction, 0.0f) << a.name;
+        }
+        for (std::size_t j = i + 1; j < kOverlayCount; ++j) {
+            EXPECT_NE(std::string(a.name), kOverlays[j].name);
+            EXPECT_NE(a.flag, kOverlays[j].flag) << a.name;
+        }
+    }
+    EXPECT_EQ(overlayInfo(OverlayId::plots).flag, &Overlays::plots);
+    EXPECT_EQ(overlayInfo(OverlayId::cost).flag, &Overlays::cost);
+}
+
+TEST(AppLog, LogsEveryOverlayByItsShowName) {
+    App app;
+    setScene(app, twoBlocks(), "two.json");
+    for (const OverlayInfo& row : kOverlays) {
+        const LoggedState before = snapshotForLog(app);
+        app.show.*row.flag = !(app.show.*row.flag);
+        const auto lines = describeChanges(before, snapshotForLog(app));
+        ASSERT_EQ(lines.size(), 1u) << row.name;
+        EXPECT_EQ(lines[0], std::string(row.name) + (app.show.*row.flag ? ": on" : ": off"));
+    }
+}
+
 TEST(AppLog, DescribesWhatChanged) {
     App app;
     setScene(app, twoBlocks(), "two.json");

@@ -55,17 +55,8 @@ CentreOfMass centreOfMass(const World& world) {
 }
 
 void drawMomentaDiagram(App& app) {
-    OverlayPlacement place;
-    place.anchorX = 0.0f;
-    place.anchorY = 0.5f; // left, between side by side (top) and the timeline (bottom)
-    place.widthFraction = 0.3f;
-    place.heightFraction = 0.42f;
-    place.maxWidth = 300.0f;
-    place.maxHeight = 300.0f;
-    if (!beginOverlayWindow(app, "Momenta", &app.show.com, place)) {
-        ImGui::End();
-        return;
-    }
+    OverlayWindow overlay(app, OverlayId::com);
+    if (!overlay) return;
     const World& w = app.world;
     // Tip to tail, in file order; the extent fixes the scale.
     std::vector<Vec2> tips{Vec2{}};
@@ -132,12 +123,11 @@ void drawMomentaDiagram(App& app) {
             ImVec2((a.x + b.x - ts.x) * 0.5f + off.x * 1.5f, (a.y + b.y) * 0.5f + off.y * 1.2f),
             overlay_colors::kTotal, text);
     }
-    ImGui::End();
 }
 
 } // namespace
 
-void drawCentreOfMass(App& app) {
+void drawComOverlay(App& app) {
     const CentreOfMass c = centreOfMass(app.world);
     if (c.valid) {
         ImDrawList* dl = ImGui::GetBackgroundDrawList();

@@ -118,20 +118,9 @@ void tradeoffChart(CostState& s) {
 
 } // namespace
 
-void drawCostWindow(App& app) {
-    OverlayPlacement place;
-    // Centred, and no bigger than the chart needs: an overlay this size covers much of the scene,
-    // and every covered pixel is blended again on a software rasteriser.
-    place.anchorX = 0.5f;
-    place.anchorY = 0.5f;
-    place.widthFraction = 0.6f;
-    place.heightFraction = 0.62f;
-    place.maxWidth = 540.0f;
-    place.maxHeight = 430.0f;
-    if (!beginOverlayWindow(app, "Speed versus accuracy", &app.show.cost, place)) {
-        ImGui::End();
-        return;
-    }
+void drawCostOverlay(App& app) {
+    OverlayWindow overlay(app, OverlayId::cost);
+    if (!overlay) return;
     CostState& s = state();
     pollJob(s);
     if (s.measuredScene != app.scenePath) measure(app, s);
@@ -167,7 +156,6 @@ void drawCostWindow(App& app) {
     } else {
         tradeoffChart(s);
     }
-    ImGui::End();
 }
 
 // For the offscreen renderer: runs the sweep now, so a screenshot shows the chart.

@@ -26,23 +26,13 @@ void formulaLine(const std::string& text, bool strong) {
 
 } // namespace
 
-void drawInspectorWindow(App& app) {
-    OverlayPlacement place;
-    place.anchorX = 1.0f;
-    place.anchorY = 1.0f;
-    place.widthFraction = 0.46f;
-    place.heightFraction = 0.44f;
-    place.maxWidth = 460.0f;
-    place.maxHeight = 330.0f;
-    if (!beginOverlayWindow(app, "Collision inspector", &app.show.inspector, place)) {
-        ImGui::End();
-        return;
-    }
+void drawInspectorOverlay(App& app) {
+    OverlayWindow overlay(app, OverlayId::inspector);
+    if (!overlay) return;
     ImGui::Checkbox("pause on each collision", &app.pauseOnCollision);
     const auto& recent = app.telemetry.recent;
     if (recent.empty()) {
         dimText("No collision yet. Run the scene, or step with N.");
-        ImGui::End();
         return;
     }
     const int count = static_cast<int>(recent.size());
@@ -92,5 +82,4 @@ void drawInspectorWindow(App& app) {
                     f.u.c_str(), f.v1After.c_str(), f.v2After.c_str());
         std::fflush(stdout);
     }
-    ImGui::End();
 }

@@ -38,18 +38,9 @@ PlotSeries series(const char* label, ImU32 color, const TimeSeries& ts, int chan
 
 } // namespace
 
-void drawPlotsWindow(App& app) {
-    OverlayPlacement place;
-    place.anchorX = 1.0f;
-    place.anchorY = 0.0f;
-    place.widthFraction = 0.42f;
-    place.heightFraction = 0.52f;
-    place.maxWidth = 440.0f;
-    place.maxHeight = 520.0f;
-    if (!beginOverlayWindow(app, "Plots", &app.show.plots, place)) {
-        ImGui::End();
-        return;
-    }
+void drawPlotsOverlay(App& app) {
+    OverlayWindow overlay(app, OverlayId::plots);
+    if (!overlay) return;
     const Telemetry& tm = app.telemetry;
     const double now = app.world.time;
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
@@ -88,5 +79,4 @@ void drawPlotsWindow(App& app) {
               series("potential", kPotential, tm.energy, 1, window, now),
               series("total", kTotal, tm.energy, 2, window, now)},
              markersIn(tm.collisionTimes));
-    ImGui::End();
 }

@@ -51,7 +51,7 @@ void label(ImDrawList* dl, ImVec2 at, ImU32 color, const std::string& text) {
 
 } // namespace
 
-void drawPointOfImpact(App& app) {
+void drawPoiOverlay(App& app) {
     const PoiView& p = app.poi;
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     const ScreenRect& vp = app.camera.viewport();

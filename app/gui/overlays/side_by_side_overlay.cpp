@@ -20,22 +20,12 @@ Color methodGhostColor(Method method) {
     return {1.0f, 1.0f, 1.0f, 1.0f};
 }
 
-void drawSideBySideWindow(App& app) {
-    OverlayPlacement place;
-    place.anchorX = 0.0f;
-    place.anchorY = 0.0f;
-    place.widthFraction = 0.55f; // leaves room for the plots at the top right
-    place.heightFraction = 0.3f;
-    place.maxWidth = 600.0f;
-    place.maxHeight = 170.0f;
-    if (!beginOverlayWindow(app, "Methods side by side", &app.show.sideBySide, place)) {
-        ImGui::End();
-        return;
-    }
+void drawSideBySideOverlay(App& app) {
+    OverlayWindow overlay(app, OverlayId::sideBySide);
+    if (!overlay) return;
     const MethodsSideBySide& m = app.methods;
     if (!m.running) {
         ImGui::TextWrapped("Starts from the current state when the simulation runs (P or N).");
-        ImGui::End();
         return;
     }
     const ImGuiTableFlags flags =
@@ -71,5 +61,4 @@ void drawSideBySideWindow(App& app) {
         ImGui::EndTable();
     }
     dimText("Outlines in the scene: the other methods' blocks.");
-    ImGui::End();
 }

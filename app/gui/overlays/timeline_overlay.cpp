@@ -6,22 +6,12 @@
 
 #include <cstdio>
 
-void drawTimelineWindow(App& app) {
-    OverlayPlacement place;
-    place.anchorX = 0.0f;
-    place.anchorY = 1.0f;
-    place.widthFraction = 0.52f;
-    place.heightFraction = 0.2f;
-    place.maxWidth = 560.0f;
-    place.maxHeight = 112.0f;
-    if (!beginOverlayWindow(app, "Timeline", &app.show.timeline, place)) {
-        ImGui::End();
-        return;
-    }
+void drawTimelineOverlay(App& app) {
+    OverlayWindow overlay(app, OverlayId::timeline);
+    if (!overlay) return;
     const WorldHistory& h = app.history;
     if (h.empty()) {
         dimText("Nothing recorded yet: run or step the scene.");
-        ImGui::End();
         return;
     }
     const auto first = h.firstFrame(), last = h.lastFrame();
@@ -53,5 +43,4 @@ void drawTimelineWindow(App& app) {
                   static_cast<double>(last - first) * app.world.settings.dt, h.keyframeCount(),
                   static_cast<double>(h.bytes()) / (1024.0 * 1024.0));
     dimText(info);
-    ImGui::End();
 }

@@ -19,8 +19,7 @@ LoggedState snapshotForLog(const App& app) {
     s.scene = app.scenePath;
     s.paused = app.paused;
     s.slowMotion = app.slowMotion;
-    s.trails = app.show.trails;
-    s.vectors = app.show.vectors;
+    s.overlays = app.show;
     s.uiVisible = app.uiVisible;
     s.method = methodName(app.world.settings.method);
     s.bounciness = app.world.settings.bounciness;
@@ -42,9 +41,11 @@ std::vector<std::string> describeChanges(const LoggedState& a, const LoggedState
     if (a.scene != b.scene) out.push_back("scene: " + b.scene);
     if (a.paused != b.paused) out.push_back(b.paused ? "paused" : "resumed");
     if (a.slowMotion != b.slowMotion) out.push_back("slow motion: " + onOff(b.slowMotion));
-    if (a.trails != b.trails) out.push_back("trails: " + onOff(b.trails));
+    for (const OverlayInfo& o : kOverlays) {
+        const bool was = a.overlays.*o.flag, is = b.overlays.*o.flag;
+        if (was != is) out.push_back(std::string(o.name) + ": " + onOff(is));
+    }
     if (a.trailLength > 0 && b.trailLength == 0) out.push_back("trails cleared");
-    if (a.vectors != b.vectors) out.push_back("vectors: " + onOff(b.vectors));
     if (a.uiVisible != b.uiVisible) out.push_back("ui: " + onOff(b.uiVisible));
     if (a.method != b.method) out.push_back("method: " + b.method);
     if (a.bounciness != b.bounciness) out.push_back("bounciness: " + number(b.bounciness));

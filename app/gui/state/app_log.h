@@ -3,6 +3,8 @@
 // a slider acted, and lets a lecturer keep a record of a session.
 #pragma once
 
+#include "overlays.h"
+
 #include <string>
 #include <vector>
 
@@ -12,8 +14,7 @@ struct LoggedState {
     std::string scene;
     bool paused = false;
     bool slowMotion = false;
-    bool trails = false;
-    bool vectors = false;
+    Overlays overlays;
     bool uiVisible = true;
     std::string method;
     double bounciness = 0.0;

@@ -6,19 +6,13 @@
 #include <iostream>
 #include <sstream>
 
+std::string showNames() {
+    std::string names = "none";
+    for (const OverlayInfo& o : kOverlays) names += std::string(", ") + o.name;
+    return names;
+}
+
 bool parseShowList(const std::string& text, ShowSet& out, std::string* error) {
-    static const struct {
-        const char* name;
-        bool Overlays::*flag;
-    } kNames[] = {{"plots", &Overlays::plots},
-                  {"vectors", &Overlays::vectors},
-                  {"trails", &Overlays::trails},
-                  {"inspector", &Overlays::inspector},
-                  {"com", &Overlays::com},
-                  {"poi", &Overlays::poi},
-                  {"sidebyside", &Overlays::sideBySide},
-                  {"timeline", &Overlays::timeline},
-                  {"cost", &Overlays::cost}};
     ShowSet show;
     std::istringstream in(text);
     std::string name;
@@ -31,17 +25,15 @@ bool parseShowList(const std::string& text, ShowSet& out, std::string* error) {
             continue;
         }
         bool known = false;
-        for (const auto& n : kNames) {
-            if (name == n.name) {
-                show.overlays.*n.flag = true;
+        for (const OverlayInfo& o : kOverlays) {
+            if (name == o.name) {
+                show.overlays.*o.flag = true;
                 known = true;
             }
         }
         if (!known) {
             if (error) {
-                *error = "unknown --show name '" + name +
-                         "' (expected none, plots, vectors, trails, inspector, com, poi, "
-                         "sidebyside, timeline, cost)";
+                *error = "unknown --show name '" + name + "' (expected " + showNames() + ")";
             }
             return false;
         }
@@ -76,9 +68,8 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_option("--frames", o.frames, "Simulate N frames first (with --record: record N)")
         ->check(CLI::Range(0, 1000000));
     app.add_option("--size", size, "Window or image size, WxH (default 1280x720)");
-    app.add_option("--show", show,
-                   "Comma-separated: none, plots, vectors, trails, inspector, com, poi, "
-                   "sidebyside, timeline, cost");
+    const std::string showHelp = "Comma-separated: " + showNames();
+    app.add_option("--show", show, showHelp);
     app.add_option("--record", o.record, "Write N numbered PNGs (and an MP4 with ffmpeg) here");
     app.add_option("--benchmark-frames", o.benchmarkFrames,
                    "Offscreen: step and render N frames, print ms per frame")

@@ -3,31 +3,18 @@
 //           [--record DIR] [--benchmark-frames N] [--ui-scale S] [--verbose]
 #pragma once
 
+#include "overlays.h"
+
 #include <string>
 
-// What --show turns on. "none" hides the panels and every overlay.
-// The overlays that can be shown (the View section's checkboxes and --show): trails, velocity and
-// momentum arrows, the plots, the collision inspector, the centre of mass with the momenta
-// diagram, the point of impact, the methods side by side, the timeline and the cost panel.
-struct Overlays {
-    bool trails = false;
-    bool vectors = true;
-    bool plots = false;
-    bool inspector = false;
-    bool com = false;
-    bool poi = false;
-    bool sideBySide = false;
-    bool timeline = false;
-    bool cost = false;
-};
-
-// A --show LIST: which overlays, and "none" (no panels at all).
+// A --show LIST: which overlays (names from the table in overlays.h), and "none" (no panels
+// and no overlays).
 struct ShowSet {
     bool none = false;
     Overlays overlays = noOverlays();
     static Overlays noOverlays() {
         Overlays o;
-        o.vectors = false;
+        for (const OverlayInfo& i : kOverlays) o.*i.flag = false;
         return o;
     }
 };
@@ -47,6 +34,8 @@ struct Options {
 };
 
 // Parses a comma-separated --show list; false with a message for an unknown name.
+// "none, trails, vectors, ...": the names --show accepts.
+std::string showNames();
 bool parseShowList(const std::string& text, ShowSet& out, std::string* error);
 // Parses "WxH" (each 16..16384); false otherwise.
 bool parseSize(const std::string& text, int& width, int& height);

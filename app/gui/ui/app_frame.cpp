@@ -1,5 +1,6 @@
 #include "app_frame.h"
 
+#include "overlay_window.h"
 #include "renderer.h"
 #include "ui_renderer_gl.h"
 
@@ -108,13 +109,7 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
         advanceSimulation(app, realSeconds);
     }
     drawSceneDecorations(app);
-    if (app.show.poi) drawPointOfImpact(app);
-    if (app.show.com) drawCentreOfMass(app);
-    if (app.show.plots) drawPlotsWindow(app);
-    if (app.show.inspector) drawInspectorWindow(app);
-    if (app.show.sideBySide) drawSideBySideWindow(app);
-    if (app.show.timeline) drawTimelineWindow(app);
-    if (app.show.cost) drawCostWindow(app);
+    drawOverlays(app);
     if (app.uiVisible) drawControlsPanel(app);
     if (app.helpOpen) drawHelpWindow(app);
     logStateChanges(app);

@@ -28,14 +28,7 @@ void drawHelpWindow(App& app);
 // Mouse in the scene, block labels, hover tooltip and the status badge.
 void handleSceneMouse(App& app);
 void drawSceneDecorations(const App& app);
-// Teaching overlays (one file each in overlays/): windows, and what is drawn over the scene.
-void drawPlotsWindow(App& app);
-void drawInspectorWindow(App& app);
-void drawTimelineWindow(App& app);
-void drawSideBySideWindow(App& app);
-void drawCostWindow(App& app);
-void drawCentreOfMass(App& app); // the marker with u, and the Momenta window
-void drawPointOfImpact(App& app);
+// The teaching overlays: the table in overlays.h, drawn by drawOverlays (overlay_window.h).
 // The colour of a method's ghosts and rows (methods side by side, the tradeoff chart).
 Color methodGhostColor(Method method);
 // Offscreen: runs the tradeoff sweep at once (no thread), so a screenshot shows the chart.

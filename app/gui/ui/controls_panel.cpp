@@ -185,20 +185,11 @@ void overlaysSection(App& app) {
     if (!ImGui::CollapsingHeader("Overlays", ImGuiTreeNodeFlags_DefaultOpen)) return;
     Overlays& o = app.show;
     if (!ImGui::BeginTable("overlays", 2, ImGuiTableFlags_SizingStretchSame)) return;
-    auto box = [](const char* label, bool* value, const char* help) {
+    for (const OverlayInfo& info : kOverlays) {
         ImGui::TableNextColumn();
-        ImGui::Checkbox(label, value);
-        tooltip(help);
-    };
-    box("trails (D)", &o.trails, "Trajectories fading with age; C clears them");
-    box("arrows (V)", &o.vectors, "Velocity (thin) and momentum p = m·v (wide) arrows");
-    box("plots", &o.plots, "Velocity, momentum and energy against time");
-    box("inspector", &o.inspector, "The last collisions with the lecture's formula filled in");
-    box("centre of mass", &o.com, "Centre of mass with its velocity u, and the momenta diagram");
-    box("impact point", &o.poi, "Point of impact t = a/b of the watched block's last collision");
-    box("3 methods", &o.sideBySide, "The three methods at once: outlines and statistics");
-    box("timeline", &o.timeline, "Scrub back through the last 60 s and replay");
-    box("cost", &o.cost, "Cost per step under each method and the speed-vs-accuracy chart");
+        ImGui::Checkbox(info.label, &(o.*info.flag));
+        tooltip(info.tooltip);
+    }
     ImGui::EndTable();
 }
 

@@ -45,6 +45,28 @@ bool beginOverlayWindow(const App& app, const char* title, bool* open,
     return ImGui::Begin(title, open, ImGuiWindowFlags_NoSavedSettings);
 }
 
+OverlayWindow::OverlayWindow(App& app, OverlayId id) {
+    const OverlayInfo& info = overlayInfo(id);
+    open_ = beginOverlayWindow(app, info.title, &(app.show.*info.flag), info.place);
+}
+
+OverlayWindow::~OverlayWindow() {
+    ImGui::End();
+}
+
+void drawnByTheSceneRenderer(App&) {}
+
+void drawOverlays(App& app) {
+    using Draw = void (*)(App&);
+#define SANDBOX_OVERLAY_DRAW(member, name, label, tooltip, on, title, place, draw) draw,
+    static constexpr Draw kDraw[] = {SANDBOX_OVERLAYS(SANDBOX_OVERLAY_DRAW)};
+#undef SANDBOX_OVERLAY_DRAW
+    static_assert(sizeof kDraw / sizeof kDraw[0] == kOverlayCount, "one draw function a row");
+    for (std::size_t i = 0; i < kOverlayCount; ++i) {
+        if (app.show.*kOverlays[i].flag) kDraw[i](app);
+    }
+}
+
 void dimText(const char* text) {
     ImGui::TextColored(ImVec4(0.62f, 0.66f, 0.74f, 1.0f), "%s", text);
 }

@@ -1,6 +1,7 @@
-// What the overlay windows share: a semi-transparent, movable, resizable window placed at first
-// use relative to the scene's viewport (so it lands sensibly at 720p and on a projector), and
-// placed again when the UI scale or the viewport's size changes.
+// What the overlays share: the draw functions the table in overlays.h names, drawn in its order,
+// and their window: semi-transparent, movable, resizable, placed at first use relative to the
+// scene's viewport (so it lands sensibly at 720p and on a projector), and placed again when the
+// UI scale or the viewport's size changes.
 #pragma once
 
 #include "app_state.h"
@@ -18,18 +19,36 @@ constexpr ImU32 kMomentum = IM_COL32(255, 150, 60, 255);
 constexpr ImU32 kCom = IM_COL32(255, 235, 90, 255);
 } // namespace overlay_colors
 
-// Where a window goes at first use: a corner of the scene viewport (anchor 0..1 in x and y,
-// e.g. (1, 0) top-right) and its size as a fraction of the viewport, capped in pixels at UI
-// scale 1 (scaled by the UI scale).
-struct OverlayPlacement {
-    float anchorX = 1.0f, anchorY = 0.0f;
-    float widthFraction = 0.4f, heightFraction = 0.5f;
-    float maxWidth = 480.0f, maxHeight = 480.0f;
-};
-
-// Begins a semi-transparent overlay window (ImGui::End() must follow, as with Begin).
+// Begins a semi-transparent overlay window (ImGui::End() must follow, as with Begin), placed at
+// first use by `place` (and again when the UI scale or the viewport's size changes). The one
+// placement function: every overlay window goes through it.
 bool beginOverlayWindow(const App& app, const char* title, bool* open,
                         const OverlayPlacement& place);
+
+// The window of an overlay row (overlays.h: its title and placement), closed by its close button
+// through the row's flag. Ends the window when it goes out of scope; false while collapsed:
+//     OverlayWindow overlay(app, OverlayId::plots);
+//     if (!overlay) return;
+class OverlayWindow {
+  public:
+    OverlayWindow(App& app, OverlayId id);
+    ~OverlayWindow();
+    OverlayWindow(const OverlayWindow&) = delete;
+    OverlayWindow& operator=(const OverlayWindow&) = delete;
+    explicit operator bool() const { return open_; }
+
+  private:
+    bool open_;
+};
+
+// The draw functions the table names (one file each in overlays/).
+#define SANDBOX_OVERLAY_DRAW_DECL(member, name, label, tooltip, on, title, place, draw)            \
+    void draw(App& app);
+SANDBOX_OVERLAYS(SANDBOX_OVERLAY_DRAW_DECL)
+#undef SANDBOX_OVERLAY_DRAW_DECL
+
+// The frame's part: each shown overlay's draw function, in the table's order.
+void drawOverlays(App& app);
 
 // One text line with a dim label and a value, for compact readouts.
 void dimText(const char* text);
