@@ -20,6 +20,28 @@ struct StepStats {
     double stepMs = 0.0;          // ms of wall-clock time spent in the step
 };
 
+// What a run adds up over its steps: counts summed, the largest overlap kept. The one place
+// totals are accumulated (the app's Statistics and its methods side by side, sandbox-cli run,
+// the stability matrix).
+struct StepTotals {
+    std::int64_t steps = 0;
+    std::int64_t collisions = 0;   // walls included
+    std::int64_t events = 0;       // perfect method: event instants
+    std::int64_t eventCapHits = 0; // substeps whose event cap ended them early
+    double maxPenetration = 0.0;   // m, largest overlap of any step
+    double stepMs = 0.0;           // ms of wall-clock time spent in the steps
+};
+
+// Adds one step's stats to `totals`.
+inline void addStep(StepTotals& totals, const StepStats& step) {
+    ++totals.steps;
+    totals.collisions += step.collisions;
+    totals.events += step.events;
+    totals.eventCapHits += step.eventCapHits;
+    if (step.maxPenetration > totals.maxPenetration) totals.maxPenetration = step.maxPenetration;
+    totals.stepMs += step.stepMs;
+}
+
 // One resolved collision along one axis, with the numbers of the lecture's formula:
 // u = (m1·v1 + m2·v2) / (m1 + m2),  v' = u - C·(v - u).
 struct CollisionRecord {

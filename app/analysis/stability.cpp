@@ -22,9 +22,7 @@ struct Run {
     Scene scene;
     World world;
     std::vector<Vec2> start;
-    long collisions = 0;
-    int capHits = 0;
-    double maxPenetration = 0.0;
+    StepTotals totals;
     double maxDisplacement = 0.0; // m, largest distance of a block from its start
     double startEnergy = 0.0;
     bool crossed = false; // block 0 was seen beyond block 1 along x (tunnelling)
@@ -40,10 +38,7 @@ Run simulate(const Scene& scene, Method method, double seconds) {
     const double side = run.world.blocks.size() > 1 ? run.start[1].x - run.start[0].x : 0.0;
     const long frames = std::lround(seconds / scene.settings.dt);
     for (long f = 0; f < frames; ++f) {
-        const StepStats s = run.world.step();
-        run.collisions += s.collisions;
-        run.capHits += s.eventCapHits;
-        run.maxPenetration = std::max(run.maxPenetration, s.maxPenetration);
+        addStep(run.totals, run.world.step());
         for (size_t i = 0; i < run.start.size(); ++i)
             run.maxDisplacement =
                 std::max(run.maxDisplacement, length(run.world.blocks[i].position - run.start[i]));
@@ -86,22 +81,25 @@ StabilityResult judge(const std::string& name, const Run& r) {
         out.verdict = x && y ? "both axes" : x ? "x only" : y ? "y only" : "missed";
         out.detail = "velocity components reversed by the corner hit";
     } else if (name == "high_mass_ratio") {
-        out.value = static_cast<double>(r.collisions);
-        out.fails = r.collisions != 3141 || r.maxPenetration > 1e-9;
-        out.verdict = std::to_string(r.collisions) + " collisions";
-        if (r.maxPenetration > 1e-9) out.verdict += ", overlap " + format(r.maxPenetration) + " m";
+        out.value = static_cast<double>(r.totals.collisions);
+        out.fails = r.totals.collisions != 3141 || r.totals.maxPenetration > 1e-9;
+        out.verdict = std::to_string(r.totals.collisions) + " collisions";
+        if (r.totals.maxPenetration > 1e-9)
+            out.verdict += ", overlap " + format(r.totals.maxPenetration) + " m";
         out.detail = "collisions counted (exact: 3141, the digits of pi for a mass ratio of 1e6)";
     } else { // inelastic_collapse, jammed_box: the event cap, overlap, energy
         const double drift =
             r.startEnergy > 0.0 ? (kineticEnergy(r.world) - r.startEnergy) / r.startEnergy : 0.0;
-        out.fails = r.capHits > 0 || r.maxPenetration > 1e-9 || r.maxDisplacement < 1e-9;
-        out.value = r.capHits;
+        out.fails =
+            r.totals.eventCapHits > 0 || r.totals.maxPenetration > 1e-9 || r.maxDisplacement < 1e-9;
+        out.value = static_cast<double>(r.totals.eventCapHits);
         std::string v;
-        if (r.capHits > 0)
-            v = "event cap x" + std::to_string(r.capHits) + ", time behind " +
+        if (r.totals.eventCapHits > 0)
+            v = "event cap x" + std::to_string(r.totals.eventCapHits) + ", time behind " +
                 format(r.world.frame * r.scene.settings.dt - r.world.time) + " s";
-        if (r.maxPenetration > 1e-9)
-            v += std::string(v.empty() ? "" : ", ") + "overlap " + format(r.maxPenetration) + " m";
+        if (r.totals.maxPenetration > 1e-9)
+            v += std::string(v.empty() ? "" : ", ") + "overlap " + format(r.totals.maxPenetration) +
+                 " m";
         if (r.maxDisplacement < 1e-9) v = std::string("frozen") + (v.empty() ? "" : ", " + v);
         out.verdict = v.empty() ? "settles" : v;
         out.detail =

@@ -85,28 +85,14 @@ bool applyOptions(const RunRequest& r, WorldSettings& s, StopRule& stop, std::os
     return true;
 }
 
-// What a run adds up over its steps.
-struct RunTotals {
-    std::int64_t steps = 0;
-    std::int64_t collisions = 0;
-    std::int64_t eventCapHits = 0;
-    double maxPenetration = 0.0; // m
-    double wallMs = 0.0;         // ms spent inside World::step only
-};
-
-RunTotals simulate(World& world, const StopRule& stop) {
-    RunTotals totals;
+StepTotals simulate(World& world, const StopRule& stop) {
+    StepTotals totals;
     // --time stops once the world time is within a tiny fraction of a frame of T, so rounding in
     // the sum of the frame lengths cannot add a frame.
     const double epsilon = 1e-6 * world.settings.dt;
     while (totals.steps < stop.frames) {
         if (stop.time && world.time >= *stop.time - epsilon) break;
-        const StepStats s = world.step();
-        ++totals.steps;
-        totals.collisions += s.collisions;
-        totals.eventCapHits += s.eventCapHits;
-        totals.maxPenetration = std::max(totals.maxPenetration, s.maxPenetration);
-        totals.wallMs += s.stepMs;
+        addStep(totals, world.step());
     }
     return totals;
 }
@@ -115,7 +101,7 @@ nlohmann::ordered_json vecJson(Vec2 v) {
     return {v.x, v.y};
 }
 
-void printJson(const Scene& scene, const World& world, const RunTotals& t, std::ostream& out) {
+void printJson(const Scene& scene, const World& world, const StepTotals& t, std::ostream& out) {
     nlohmann::ordered_json j;
     const WorldSettings& s = world.settings;
     j["scene"] = scene.name;
@@ -132,7 +118,7 @@ void printJson(const Scene& scene, const World& world, const RunTotals& t, std::
     j["kinetic_energy"] = kineticEnergy(world);
     j["potential_energy"] = potentialEnergy(world);
     j["event_cap_hits"] = t.eventCapHits;
-    j["wall_ms"] = t.wallMs;
+    j["wall_ms"] = t.stepMs; // inside World::step only
     nlohmann::ordered_json blocks = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < world.blocks.size(); ++i) {
         nlohmann::ordered_json b;
@@ -149,7 +135,7 @@ std::ostream& operator<<(std::ostream& out, Vec2 v) {
     return out << "(" << v.x << ", " << v.y << ")";
 }
 
-void printText(const Scene& scene, const World& world, const RunTotals& t, std::ostream& out) {
+void printText(const Scene& scene, const World& world, const StepTotals& t, std::ostream& out) {
     const WorldSettings& s = world.settings;
     const std::ios::fmtflags flags = out.flags();
     const std::streamsize precision = out.precision(6);
@@ -164,7 +150,7 @@ void printText(const Scene& scene, const World& world, const RunTotals& t, std::
         << "potential energy  " << potentialEnergy(world) << " J\n"
         << "max penetration   " << t.maxPenetration << " m\n"
         << "event-cap hits    " << t.eventCapHits << "\n"
-        << "wall time         " << std::fixed << std::setprecision(3) << t.wallMs
+        << "wall time         " << std::fixed << std::setprecision(3) << t.stepMs
         << " ms in steps\n";
     out.flags(flags);
     out.precision(6);
@@ -195,7 +181,7 @@ int runCommand(const RunRequest& request, std::ostream& out, std::ostream& err) 
     StopRule stop;
     if (!applyOptions(request, scene.settings, stop, err)) return kExitBadInput;
     World world = makeWorld(scene);
-    const RunTotals totals = simulate(world, stop);
+    const StepTotals totals = simulate(world, stop);
     if (request.json)
         printJson(scene, world, totals, out);
     else

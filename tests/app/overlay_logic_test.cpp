@@ -2,12 +2,12 @@
 // first worked example, the timeline's scrub-and-replay (bit-exact, checked with stateHash), the
 // plot widget's ticks and time window, the point of impact and the methods side by side.
 #include "app_state.h"
-#include "timeline.h"
 #include "inspector_format.h"
 #include "plot_logic.h"
 #include "poi.h"
 #include "scene_library.h"
 #include "side_by_side.h"
+#include "timeline.h"
 
 #include <gtest/gtest.h>
 
@@ -136,6 +136,45 @@ TEST(Timeline, ScrubAndReplayEqualsTheOriginalRun) {
         }
         EXPECT_FALSE(isReplaying(app));
     }
+}
+
+// A reset or a jump on the timeline starts a new Run: what the old one derived from stepping
+// (totals, trails, the log, the point of impact, the side-by-side worlds) goes with it; the
+// recording (timeline, plots) stays across a jump.
+TEST(Run, ResetAndScrubStartAFreshRun) {
+    App app = lectureExample();
+    app.show.sideBySide = true;
+    for (int i = 0; i < 60; ++i) stepSimulation(app);
+    ASSERT_GT(app.totals.collisions, 0);
+    ASSERT_EQ(app.totals.steps, 60);
+    ASSERT_TRUE(app.methods.running);
+    ASSERT_TRUE(app.poi.valid);
+    ASSERT_GT(app.trails.length(), 0);
+    const std::uint64_t frame20 = [&] {
+        World w;
+        EXPECT_TRUE(app.history.stateAt(20, w));
+        return stateHash(w);
+    }();
+
+    ASSERT_TRUE(scrubTo(app, 20));
+    EXPECT_EQ(stateHash(app.world), frame20);
+    EXPECT_EQ(app.totals.steps, 0);
+    EXPECT_EQ(app.totals.collisions, 0);
+    EXPECT_FALSE(app.methods.running);
+    EXPECT_FALSE(app.poi.valid);
+    EXPECT_EQ(app.trails.length(), 0);
+    EXPECT_TRUE(app.lastLog.empty());
+    EXPECT_EQ(app.stats.kineticEnergy, kineticEnergy(app.world));
+    EXPECT_FALSE(app.history.empty()); // the recording stays
+    EXPECT_EQ(app.history.lastFrame(), 60u);
+
+    for (int i = 0; i < 5; ++i) stepSimulation(app);
+    EXPECT_EQ(app.totals.steps, 5);
+    resetScene(app);
+    EXPECT_EQ(app.world.frame, 0u);
+    EXPECT_EQ(app.totals.steps, 0);
+    EXPECT_TRUE(app.history.empty());
+    EXPECT_EQ(stateHash(app.world), stateHash(makeWorld(app.scene)));
 }
 
 TEST(Timeline, EditsBetweenStepsAreKeyframedSoReplayStaysExact) {

@@ -114,3 +114,42 @@ TEST(Statistics, MaxOverlapSeesBlocksAndWalls) {
 }
 
 } // namespace
+
+// addStep is the one place totals add up: counts summed, the overlap maximised (not summed), the
+// time summed. Exact: small integers and binary fractions.
+TEST(Statistics, StepTotalsAddCountsAndKeepTheLargestOverlap) {
+    StepTotals totals;
+    StepStats a;
+    a.collisions = 3;
+    a.events = 2;
+    a.eventCapHits = 1;
+    a.maxPenetration = 0.25;
+    a.stepMs = 0.5;
+    StepStats b;
+    b.collisions = 4;
+    b.maxPenetration = 0.125;
+    b.stepMs = 0.25;
+    addStep(totals, a);
+    addStep(totals, b);
+    EXPECT_EQ(totals.steps, 2);
+    EXPECT_EQ(totals.collisions, 7);
+    EXPECT_EQ(totals.events, 2);
+    EXPECT_EQ(totals.eventCapHits, 1);
+    EXPECT_EQ(totals.maxPenetration, 0.25);
+    EXPECT_EQ(totals.stepMs, 0.75);
+}
+
+// Over a real run the totals are the per-step numbers added up.
+TEST(Statistics, StepTotalsOfARunMatchTheSteps) {
+    World world = smallWorld(Method::Perfect);
+    StepTotals totals;
+    std::int64_t collisions = 0;
+    for (int i = 0; i < 120; ++i) {
+        const StepStats s = world.step();
+        collisions += s.collisions;
+        addStep(totals, s);
+    }
+    EXPECT_EQ(totals.steps, 120);
+    EXPECT_EQ(totals.collisions, collisions);
+    EXPECT_GT(totals.collisions, 0);
+}

@@ -48,9 +48,9 @@ void drawSideBySideOverlay(App& app) {
             ImGui::TextColored(ImVec4(c.r, c.g, c.b, 1.0f), "%s%s", methodName(method),
                                live ? " (live)" : "");
             ImGui::TableNextColumn();
-            ImGui::Text("%llu", static_cast<unsigned long long>(r.collisions));
+            ImGui::Text("%lld", static_cast<long long>(r.totals.collisions));
             ImGui::TableNextColumn();
-            ImGui::Text("%.3g m", r.maxPenetration);
+            ImGui::Text("%.3g m", r.totals.maxPenetration);
             ImGui::TableNextColumn();
             ImGui::Text("%.4g J", r.stats.kineticEnergy + r.stats.potentialEnergy);
             ImGui::TableNextColumn();

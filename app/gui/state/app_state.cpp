@@ -16,21 +16,11 @@ std::vector<BlockLabel> labelsOf(const Scene& scene) {
 }
 
 void restartRun(App& app) {
-    app.world = makeWorld(app.scene);
+    app.run() = Run(makeWorld(app.scene));
     app.labels = labelsOf(app.scene);
-    app.stats = StepStats{};
-    app.stats.momentum = totalMomentum(app.world);
-    app.stats.kineticEnergy = kineticEnergy(app.world);
-    app.stats.potentialEnergy = potentialEnergy(app.world);
-    app.totals = RunTotals{};
     app.clock.reset();
-    app.trails.clear();
     app.history.clear();
     app.telemetry.clear();
-    app.methods.stop();
-    app.poi = PoiView{};
-    app.lastLog.clear();
-    app.previousBlocks.clear();
     app.pausedByCollision = false;
     app.telemetry.record(app.world, app.selected, {});
     app.mouse = MouseTool{};
@@ -38,6 +28,12 @@ void restartRun(App& app) {
 }
 
 } // namespace
+
+Run::Run(World start) : world(std::move(start)) {
+    stats.momentum = totalMomentum(world);
+    stats.kineticEnergy = kineticEnergy(world);
+    stats.potentialEnergy = potentialEnergy(world);
+}
 
 void setScene(App& app, const Scene& scene, const std::string& path) {
     app.scene = scene;
@@ -78,9 +74,7 @@ void stepSimulation(App& app) {
     app.lastLog.clear();
     app.stats = app.world.step(&app.lastLog);
     app.history.afterStep(app.world);
-    app.totals.collisions += static_cast<std::uint64_t>(std::max(0, app.stats.collisions));
-    app.totals.eventCapHits += static_cast<std::uint64_t>(std::max(0, app.stats.eventCapHits));
-    app.totals.maxPenetration = std::max(app.totals.maxPenetration, app.stats.maxPenetration);
+    addStep(app.totals, app.stats);
     app.trails.record(app.world);
     app.telemetry.record(app.world, app.selected, app.lastLog);
     // The point of impact of the watched block's latest collision (kept until the next one).
@@ -108,17 +102,8 @@ bool isReplaying(const App& app) {
 bool scrubTo(App& app, std::uint64_t frame) {
     World w;
     if (!app.history.stateAt(frame, w)) return false;
-    const std::size_t blocks = app.world.blocks.size();
-    app.world = std::move(w);
-    if (app.world.blocks.size() != blocks) app.labels.resize(app.world.blocks.size());
-    app.stats = StepStats{};
-    app.stats.momentum = totalMomentum(app.world);
-    app.stats.kineticEnergy = kineticEnergy(app.world);
-    app.stats.potentialEnergy = potentialEnergy(app.world);
-    app.trails.clear();
-    app.methods.stop();
-    app.poi = PoiView{};
-    app.lastLog.clear();
+    app.run() = Run(std::move(w));
+    app.labels.resize(app.world.blocks.size());
     app.mouse = MouseTool{};
     if (app.selected >= static_cast<int>(app.world.blocks.size())) app.selected = -1;
     return true;

@@ -6,7 +6,6 @@
 #include "app_log.h"
 #include "camera.h"
 #include "fixed_step.h"
-#include "timeline.h"
 #include "mouse_tool.h"
 #include "options.h"
 #include "palette.h"
@@ -15,6 +14,7 @@
 #include "scene_library.h"
 #include "side_by_side.h"
 #include "telemetry.h"
+#include "timeline.h"
 #include "trails.h"
 #include "world.h"
 
@@ -32,22 +32,32 @@ struct BlockLabel {
 // Velocity arrows are on by default for scenes with at most this many blocks (more is clutter).
 constexpr std::size_t kVectorsByDefaultUpTo = 50;
 
-// Running totals since the last load or reset.
-struct RunTotals {
-    std::uint64_t collisions = 0;
-    std::uint64_t eventCapHits = 0;
-    double maxPenetration = 0.0;
+// What one run owns: the world from a starting state and everything derived from stepping it.
+// A load or reset starts a new one from the scene, a jump on the timeline from the recorded
+// state (so its totals count from there: a replay does not count collisions twice).
+struct Run {
+    World world;
+    StepStats stats;   // the last step's (momentum and energies of the start before any step)
+    StepTotals totals; // since the run started
+    Trails trails;
+    PoiView poi;                          // point of impact of the watched block's last hit
+    std::vector<CollisionRecord> lastLog; // collisions resolved in the last frame
+    std::vector<Block> previousBlocks;    // the blocks at the start of the last frame
+    MethodsSideBySide methods;            // the three methods from the same start
+    Run() = default;
+    explicit Run(World start);
 };
 
-struct App {
+// The app: the current Run (its base, so app.world is the run's world; restart and scrub assign
+// it whole: app.run() = Run(world)), plus what outlives a run.
+struct App : Run {
+    Run& run() { return *this; }
+    const Run& run() const { return *this; }
     // The scene as loaded (Reset goes back to it) and where it came from.
     std::string scenePath;
     Scene scene;
-    // The live state.
-    World world;
+    // The live state (the world is the Run's).
     std::vector<BlockLabel> labels;
-    StepStats stats;
-    RunTotals totals;
     int selected = -1;
     // Run control.
     bool paused = false;
@@ -57,7 +67,6 @@ struct App {
     // View.
     Camera camera;
     bool autoFit = true; // refit the camera when the viewport changes, until the user zooms/pans
-    Trails trails;
     Overlays show;
     bool overlaysChosen = false; // --show given: scenes no longer pick the default overlays
     bool uiVisible = true;
@@ -68,14 +77,10 @@ struct App {
     double frameMsSmoothed = 0.0; // ms, exponential average over about 30 frames
     long long framesShown = 0;
     double secondsShown = 0.0;
-    // Teaching overlays: what the plots and the inspector read, the timeline, the methods side
-    // by side, the point of impact of the last collision of the watched block.
+    // What the plots and the inspector read, and the timeline: recorded across runs started by a
+    // jump on the timeline (the recording is cut at the jump when stepping resumes).
     Telemetry telemetry;
     WorldHistory history;
-    MethodsSideBySide methods;
-    PoiView poi;
-    std::vector<Block> previousBlocks;    // the blocks at the start of the last frame
-    std::vector<CollisionRecord> lastLog; // collisions resolved in the last frame
     bool pauseOnCollision = false;
     bool pausedByCollision = false; // the last pause came from pauseOnCollision
     // Messages for the panel: the last error (load or save) and the last note.

@@ -19,9 +19,7 @@ void MethodsSideBySide::step(const WorldSettings& live) {
         r.world.settings = live;
         r.world.settings.method = static_cast<Method>(m);
         r.stats = r.world.step();
-        r.collisions += static_cast<std::uint64_t>(std::max(0, r.stats.collisions));
-        r.eventCapHits += static_cast<std::uint64_t>(std::max(0, r.stats.eventCapHits));
-        r.maxPenetration = std::max(r.maxPenetration, r.stats.maxPenetration);
+        addStep(r.totals, r.stats);
     }
 }
 

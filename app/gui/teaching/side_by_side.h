@@ -10,10 +10,8 @@
 
 struct MethodRun {
     World world;
-    StepStats stats;
-    std::uint64_t collisions = 0;
-    std::uint64_t eventCapHits = 0;
-    double maxPenetration = 0.0; // m, largest overlap seen
+    StepStats stats;   // the last step's
+    StepTotals totals; // since start()
 };
 
 struct MethodsSideBySide {
