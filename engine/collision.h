@@ -5,6 +5,7 @@
 #include "world.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -63,6 +64,19 @@ inline bool meets(const Aabb& a, const Aabb& b) {
     constexpr double t = kTouchTolerance;
     return (a.max.x >= b.min.x - t) & (a.min.x <= b.max.x + t) & (a.max.y >= b.min.y - t) &
            (a.min.y <= b.max.y + t);
+}
+
+// How box b touches box a face to face along `axis`: +1 when b's lower face lies on a's upper
+// face (within kTouchTolerance), -1 when b's upper face lies on a's lower face, 0 otherwise
+// (apart, or side by side: overlapping by no more than kTouchTolerance along the other axis).
+inline int faceContact(const Aabb& a, const Aabb& b, int axis) {
+    const int other = 1 - axis;
+    const double sideOverlap =
+        std::min(a.max[other], b.max[other]) - std::max(a.min[other], b.min[other]);
+    if (sideOverlap <= kTouchTolerance) return 0;
+    if (std::abs(b.min[axis] - a.max[axis]) <= kTouchTolerance) return 1;
+    if (std::abs(a.min[axis] - b.max[axis]) <= kTouchTolerance) return -1;
+    return 0;
 }
 
 struct Impact {

@@ -23,10 +23,10 @@
 // - Trap (any C): a pair that meets more than kRepeatsAtInstant times at one instant while its
 //   block is caught along the axis between infinite masses on both sides (a row packed between
 //   walls): the impulse runs back and forth without end, and the row cannot move.
-// - Crush (any C): a block bouncing between two infinite masses that close in on it (a platform
-//   pushing it into a wall) collides ever faster, without end, before they meet. After
-//   kSqueezeBounces alternating bounces in one substep it is merged, and the platform reverses
-//   as on a wall.
+// - Crush (any C; crush.h, shared with turn-based): a block bouncing between two infinite masses
+//   that close in on it (a platform pushing it into a wall) collides ever faster, without end,
+//   before they meet. After CrushRule::kSqueezeBounces alternating bounces in one substep it is
+//   merged, and the platform reverses as on a wall.
 // Past half the event cap, the second meeting of a pair at one instant already counts as a
 // collapse or a trap, so jams settle sooner (a lattice of hundreds of touching blocks can still end
 // its frames at the cap: see Jams.JammedBoxOf400BlocksAdvances).
@@ -35,6 +35,7 @@
 // both the predictions and the rest rule read.
 #include "collision.h"
 #include "corner_grid.h"
+#include "crush.h"
 #include "methods.h"
 #include "scratch.h"
 
@@ -46,12 +47,10 @@
 
 namespace {
 
-constexpr int kWallEvent = -1;       // Event::b for an impact with the bounds
-constexpr int kRepeatsAtInstant = 8; // meetings of one pair at one instant (collapse, trap)
-constexpr int kSqueezeBounces = 16;  // alternating bounces between closing infinite masses
+constexpr int kWallEvent = CrushRule::kWall; // Event::b for an impact with the bounds
+constexpr int kRepeatsAtInstant = 8;         // meetings of one pair at one instant (collapse, trap)
 
 using Event = PerfectScratch::Event;
-using Bounce = PerfectScratch::Bounce;
 
 // Earliest first; ties in a fixed order so runs are deterministic.
 struct Later {
@@ -117,7 +116,7 @@ class PerfectSolver {
         : ctx_(ctx), blocks_(ctx.world.blocks), paths_(scratch.cornerGrid, ctx.broadPhase),
           resolver_(ctx, &paths_), clock_(scratch.clock), stamp_(scratch.stamp),
           events_(scratch.events), changed_(scratch.changed), metAtInstant_(scratch.metAtInstant),
-          bounces_(scratch.bounces) {}
+          crush_(scratch.crush) {}
 
     void run();
 
@@ -145,9 +144,9 @@ class PerfectSolver {
     bool resolve(const Event& e, int processed);
     int meetingsAtInstant(const Event& e);
     bool collapsesOrTraps(const Event& e, int axis, int meetings, int processed);
-    bool squeezed(const Event& e, int axis);
-    double anchorVelocity(int anchor, int axis) const {
-        return anchor < 0 ? 0.0 : blocks_[anchor].velocity[axis];
+    bool squeezed(const Event& e, int axis) {
+        return crush_.squeezed(blocks_, e.a, e.b, axis, positionAt(e.a, e.time)[axis],
+                               e.b < 0 ? 0.0 : positionAt(e.b, e.time)[axis]);
     }
 
     SubstepContext& ctx_;
@@ -162,7 +161,7 @@ class PerfectSolver {
     bool heap_ = false;                 // events_ is a heap
     double instant_ = -1.0;             // s: the time of the pairs below
     std::unordered_map<std::uint64_t, int>& metAtInstant_; // collisions per pair at that time
-    std::vector<Bounce>& bounces_;                         // 2 per block
+    CrushRule& crush_;                                     // the crush rule's bounces
 };
 
 // Registers every block's path over the whole substep, and predicts its impacts with the walls
@@ -233,32 +232,6 @@ bool PerfectSolver::collapsesOrTraps(const Event& e, int axis, int meetings, int
            resolver_.caughtBetweenInfiniteMasses(block, axis); // trap
 }
 
-// Whether the dynamic block of this event (against a wall, a static or a kinematic block) has
-// been bouncing between two infinite masses that close in on it.
-bool PerfectSolver::squeezed(const Event& e, int axis) {
-    int block = e.a, anchor = e.b;
-    if (e.b >= 0) {
-        if (blocks_[e.a].isDynamic() == blocks_[e.b].isDynamic()) return false;
-        if (!blocks_[e.a].isDynamic()) std::swap(block, anchor);
-    } else if (!blocks_[block].isDynamic()) {
-        return false;
-    }
-    const int side =
-        anchor < 0 ? (blocks_[block].velocity[axis] > 0.0 ? 1 : -1)
-                   : (positionAt(anchor, e.time)[axis] > positionAt(block, e.time)[axis] ? 1 : -1);
-    Bounce& last = bounces_[2 * block + axis];
-    // The lower and upper anchor close in when the lower one moves up faster than the upper.
-    const double lower = anchorVelocity(side > 0 ? last.anchor : anchor, axis);
-    const double upper = anchorVelocity(side > 0 ? anchor : last.anchor, axis);
-    if (last.side == -side && lower - upper > 0.0)
-        ++last.alternations;
-    else
-        last.alternations = 0;
-    last.anchor = anchor;
-    last.side = side;
-    return last.alternations > kSqueezeBounces;
-}
-
 bool PerfectSolver::resolve(const Event& e, int processed) {
     const int meetings = meetingsAtInstant(e);
     bool changed = false;
@@ -276,7 +249,7 @@ void PerfectSolver::run() {
     const int n = static_cast<int>(blocks_.size());
     clock_.assign(n, 0.0);
     stamp_.assign(n, 0);
-    bounces_.assign(2 * static_cast<size_t>(n), Bounce{});
+    crush_.reset(blocks_.size());
     events_.clear();
     metAtInstant_.clear();
     // A path and the box timeOfWallImpact tests (the block's box moved by its travel) differ by a

@@ -30,6 +30,7 @@ double Resolver::restThreshold(int axis) const {
 void Resolver::setVelocity(int i, int axis, double v) {
     Vec2& velocity = ctx_.world.blocks[i].velocity;
     if (velocity[axis] == v) return;
+    if (undo_) undo_->push_back({i, axis, velocity[axis]});
     velocity[axis] = v;
     changed_.push_back(i);
 }
@@ -118,7 +119,6 @@ void Resolver::findNear(const Aabb& box) {
 bool Resolver::caughtBetweenInfiniteMasses(int seed, int axis) {
     std::vector<Block>& blocks = ctx_.world.blocks;
     const Bounds& bounds = ctx_.world.bounds;
-    const int other = 1 - axis;
     inCluster_.resize(blocks.size(), 0);
     queue_.assign(1, seed);
     inCluster_[seed] = 1;
@@ -136,15 +136,10 @@ bool Resolver::caughtBetweenInfiniteMasses(int seed, int axis) {
         for (int j : found_) {
             if (inCluster_[j]) continue;
             sync(j);
-            const Aabb bj = aabbOf(blocks[j]);
-            const double sideOverlap =
-                std::min(box.max[other], bj.max[other]) - std::max(box.min[other], bj.min[other]);
-            if (sideOverlap <= kTouchTolerance) continue;
-            const bool onTop = std::abs(bj.min[axis] - box.max[axis]) <= kTouchTolerance;
-            const bool beneath = std::abs(box.min[axis] - bj.max[axis]) <= kTouchTolerance;
-            if (!onTop && !beneath) continue;
+            const int side = faceContact(box, aabbOf(blocks[j]), axis);
+            if (side == 0) continue; // apart, or side by side
             if (!blocks[j].isDynamic()) {
-                (onTop ? above : below) = true;
+                (side > 0 ? above : below) = true;
                 continue;
             }
             inCluster_[j] = 1;
@@ -169,7 +164,6 @@ bool Resolver::caughtBetweenInfiniteMasses(int seed, int axis) {
 Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) {
     std::vector<Block>& blocks = ctx_.world.blocks;
     const Bounds& bounds = ctx_.world.bounds;
-    const int other = 1 - axis;
     const double threshold = restThreshold(axis);
     const size_t changedBefore = changed_.size();
     inCluster_.resize(blocks.size(), 0);
@@ -223,23 +217,11 @@ Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) 
         for (int j : found_) {
             if (inCluster_[j] && blocks[j].isDynamic()) continue;
             sync(j);
-            const Aabb bj = aabbOf(blocks[j]);
-            const double sideOverlap =
-                std::min(box.max[other], bj.max[other]) - std::max(box.min[other], bj.min[other]);
-            if (sideOverlap <= kTouchTolerance)
-                continue; // side by side along the other axis, not resting on each other
+            const int side = faceContact(box, aabbOf(blocks[j]), axis);
+            if (side == 0) continue; // apart, or side by side: not resting on each other
             const double vj = blocks[j].velocity[axis];
-            double closing;
-            bool above;
-            if (std::abs(bj.min[axis] - box.max[axis]) <= kTouchTolerance) {
-                closing = vi - vj; // j is on top of i
-                above = true;
-            } else if (std::abs(box.min[axis] - bj.max[axis]) <= kTouchTolerance) {
-                closing = vj - vi; // i is on top of j
-                above = false;
-            } else {
-                continue;
-            }
+            const bool above = side > 0;                      // j is on top of i
+            const double closing = above ? vi - vj : vj - vi; // > 0: they press together
             // A body that parts, or closes faster than a resting contact, is not resting on the
             // cluster: its contact is a collision of its own (unless the method forces the rest).
             if (closing > -threshold && (forceRest_ || closing < threshold)) add(j, closing, above);

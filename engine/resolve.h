@@ -84,6 +84,16 @@ class Resolver {
 
     const std::vector<int>& changed() const { return changed_; }
     void clearChanged() { changed_.clear(); }
+
+    // One change of velocity: enough to undo it.
+    struct VelocityChange {
+        int block;
+        int axis;
+        double before; // m/s
+    };
+    // When given, every change of velocity is also appended to `undo` (turn-based undoes a
+    // sequence of collisions that would not end: see turn_based.cpp).
+    void setUndoLog(std::vector<VelocityChange>* undo) { undo_ = undo; }
     // Brings block i to the current time (a no-op unless lazy clocks were given).
     void sync(int i);
 
@@ -102,6 +112,7 @@ class Resolver {
     std::vector<double>* localTime_ = nullptr;
     bool forceRest_ = false;
     std::vector<int> changed_;
+    std::vector<VelocityChange>* undo_ = nullptr;
     // Scratch for the rest rule's cluster search.
     std::vector<int> members_;
     std::vector<int> queue_;

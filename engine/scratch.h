@@ -6,6 +6,8 @@
 
 #include "broad_phase.h"
 #include "corner_grid.h"
+#include "crush.h"
+#include "resolve.h"
 
 #include <cstdint>
 #include <unordered_map>
@@ -23,27 +25,37 @@ struct PerfectScratch {
         std::uint32_t stampB; // b's stamp when predicted (0 for walls)
         std::uint8_t axes;    // kAxisX | kAxisY
     };
-    // Per block and axis: the infinite mass it last bounced off (a block index or -1 for a
-    // wall), on which side (+1 above), and how many times in a row it alternated between closing
-    // ones (the crush rule).
-    struct Bounce {
-        int anchor = 0;
-        int side = 0;
-        int alternations = 0;
-    };
     std::vector<double> clock;        // s: the time at which each block's position is valid
     std::vector<std::uint32_t> stamp; // per block, incremented on every change of velocity
-    std::vector<Bounce> bounces;      // 2 per block
+    CrushRule crush;                  // bounces between infinite masses, per block and axis
     std::vector<Event> events;        // predicted impacts, a binary heap once the first are in
     std::vector<int> changed;         // blocks whose velocity an event changed
     std::unordered_map<std::uint64_t, int> metAtInstant; // meetings per pair at one instant
     CornerGrid cornerGrid;                               // the paths, for blocks of similar size
 };
 
+// The turn-based method's buffers (turn_based.cpp).
+struct TurnBasedScratch {
+    // A block's first impact in its turn.
+    struct FirstImpact {
+        double time = kNever; // s into the block's remaining turn
+        std::uint8_t wallAxes = 0;
+        // Blocks hit at that same time, each with its axes.
+        std::vector<std::pair<int, std::uint8_t>> blocks;
+    };
+    FirstImpact first;
+    CrushRule crush;
+    std::vector<std::pair<std::uint64_t, int>> meetings; // per pair, at the current instant
+    std::unordered_map<std::uint64_t, int> meetingMap;   // the same past a few listed pairs
+    std::vector<std::pair<int, int>> pending;            // (block, axis) whose velocity changed
+    std::vector<std::uint8_t> isPending;                 // 2 per block: in `pending` now
+    std::vector<Resolver::VelocityChange> undo;          // at the current instant
+};
+
 struct StepScratch {
     BroadPhase broadPhase;  // the methods' broad phase (every substep builds it anew)
     BroadPhase overlapGrid; // maxOverlap's own, so measuring never touches the stepping grid
-    std::vector<std::pair<int, int>> overlappingPairs;           // move-and-correct
-    std::vector<std::pair<int, std::uint8_t>> firstImpactBlocks; // turn-based: hits at one time
+    std::vector<std::pair<int, int>> overlappingPairs; // move-and-correct
+    TurnBasedScratch turnBased;
     PerfectScratch perfect;
 };

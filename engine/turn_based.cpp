@@ -4,22 +4,43 @@
 // only if the relative velocity closes. No overlaps; collisions resolve in the right direction;
 // positions are slightly off and depend on the order. A resting contact (the rest rule) does not
 // end a block's turn, so a block can slide along a floor it rests on.
+//
+// Contacts at one instant: a block that a collision sends into a body it touches cannot carry
+// that velocity out (it would move into the body), so the contact resolves it at once, and so on
+// along the blocks it sets moving (a light block hit while it rests on the floor bounces off the
+// floor, back into the heavy block, ...). Without gravity the struck block's own turn does it,
+// where the contact comes at once (time 0); with gravity, waiting would add g·h to blocks held
+// still: the sequence runs in the striking block's turn. Left to later turns and steps,
+// such velocities would keep growing with gravity while the blocks stand still. A sequence that
+// would not end is undone (only velocities changed: the blocks hold still) and the impact's
+// bodies are merged by the rest rule instead, perfectly inelastic from the velocities they had:
+//  - collapse: with C < 1 a pair that meets more than kInelasticRepeats times (infinitely many
+//    collisions converge at one instant: McNamara and Young 1992, inelastic collapse). With
+//    C = 1 a sequence is finite (a light block between a heavy one and a wall: about
+//    pi·sqrt(M/m) collisions, Galperin 2003) unless it is jammed between infinite masses (a row
+//    filling the box), so only a pair that meets more than kElasticRepeats times.
+//  - crush (crush.h, the perfect method's rule): a block bouncing between two infinite masses
+//    that close in on it (a platform pushing it into a wall). The rest rule then reverses the
+//    platforms that press, as on a wall.
+//  - more contacts at one instant than the event cap (WorldSettings::eventCap).
 #include "collision.h"
+#include "crush.h"
 #include "methods.h"
 #include "scratch.h"
 
+#include <cstdint>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace {
 
 constexpr int kMaxRestingContactsPerTurn = 4;
+constexpr int kInelasticRepeats = 8;  // C < 1: meetings of one pair in one sequence, then merged
+constexpr int kElasticRepeats = 2048; // C = 1: the same (pi·sqrt(1e6)/2 ≈ 1571 fit)
+constexpr size_t kListedPairs = 16;
 
-struct FirstImpact {
-    double time = kNever; // s into the block's remaining turn
-    std::uint8_t wallAxes = 0;
-    // Blocks hit at that same time, each with its axes.
-    std::vector<std::pair<int, std::uint8_t>> blocks;
-};
+using FirstImpact = TurnBasedScratch::FirstImpact;
 
 // The first impact of block i moving for `remaining` seconds along `path` (its swept box) with
 // everything else held still.
@@ -54,6 +75,164 @@ void findFirstImpact(SubstepContext& ctx, int i, double remaining, const Aabb& p
     });
 }
 
+// Resolves the contacts of one instant of a block's turn: its impacts, then every contact that a
+// changed velocity now closes (see the top of the file).
+class Contacts {
+  public:
+    Contacts(SubstepContext& ctx, TurnBasedScratch& s)
+        : ctx_(ctx), blocks_(ctx.world.blocks), resolver_(ctx), s_(s) {
+        s_.isPending.resize(2 * blocks_.size(), 0); // all 0: settle() leaves none set
+        allowed_ = ctx.world.settings.bounciness < 1.0 ? kInelasticRepeats : kElasticRepeats;
+    }
+
+    Resolver& resolver() { return resolver_; }
+
+    // Block i has reached `first` at `now` (s into the substep): resolves its impacts and the
+    // sequence they set off. `bounced` and `rested` say how i's own impacts were resolved.
+    void resolveInstant(int i, const FirstImpact& first, double now, bool& bounced, bool& rested) {
+        resolver_.setNow(now);
+        // A block that moved into a body it touched (time 0) starts a sequence. One that moved
+        // to its impact leaves the contacts of the blocks it hit to their turns, where they come
+        // at once (time 0), unless gravity would add g·h to them while they wait.
+        const bool moved = first.time > 0.0;
+        sequence_ = !moved || ctx_.world.settings.gravity != Vec2{};
+        if (!sequence_) {
+            resolveImpacts(i, first, bounced, rested);
+            return;
+        }
+        mover_ = moved ? i : -1; // it touches nothing else it would run into
+        s_.meetings.clear();
+        if (s_.meetingMap.bucket_count() > 64) // clear() costs one step per bucket
+            s_.meetingMap = std::unordered_map<std::uint64_t, int>{};
+        else if (!s_.meetingMap.empty())
+            s_.meetingMap.clear();
+        s_.crush.reset(blocks_.size());
+        s_.undo.clear();
+        resolver_.setUndoLog(&s_.undo);
+        const int collisionsBefore = ctx_.stats.collisions;
+        const size_t logBefore = ctx_.log ? ctx_.log->size() : 0;
+        merge_ = endless_ = false;
+        resolutions_ = 0;
+        resolveImpacts(i, first, bounced, rested);
+        settle();
+        resolver_.setUndoLog(nullptr);
+        if (!endless_) return;
+        // A sequence that would not end: undo it (the blocks are where they were, only their
+        // velocities changed) and merge the impacts' bodies by the rest rule instead.
+        for (auto c = s_.undo.rbegin(); c != s_.undo.rend(); ++c)
+            blocks_[c->block].velocity[c->axis] = c->before;
+        ctx_.stats.collisions = collisionsBefore;
+        if (ctx_.log) ctx_.log->resize(logBefore);
+        merge_ = true;
+        endless_ = false;
+        resolutions_ = 0;
+        resolveImpacts(i, first, bounced, rested);
+        settle();
+    }
+
+  private:
+    void resolveImpacts(int i, const FirstImpact& first, bool& bounced, bool& rested) {
+        bounced = rested = false;
+        auto note = [&](Resolution r) {
+            bounced |= r == Resolution::Bounce;
+            rested |= r == Resolution::Rest;
+        };
+        for (int axis = 0; axis < 2; ++axis)
+            if (first.wallAxes & (1 << axis)) note(resolve(i, CrushRule::kWall, axis));
+        for (const auto& [j, axes] : first.blocks)
+            for (int axis = 0; axis < 2; ++axis)
+                if (axes & (1 << axis)) note(resolve(i, j, axis));
+    }
+
+    // Block a against block b (b >= 0) or the wall it moves toward (b = CrushRule::kWall),
+    // along `axis`; the two touch there and approach.
+    Resolution resolve(int a, int b, int axis) {
+        if (!sequence_) {
+            resolver_.setForceRest(false);
+            return b < 0 ? resolver_.resolveWall(a, axis) : resolver_.resolvePair(a, b, axis);
+        }
+        if (endless_ || resolutions_ >= ctx_.world.settings.eventCap) {
+            endless_ = !merge_; // the event cap bounds the work whatever happens
+            return Resolution::None;
+        }
+        ++resolutions_;
+        if (!merge_ && (repeats(a, b) || squeezed(a, b, axis))) {
+            endless_ = true;
+            return Resolution::None;
+        }
+        const size_t changedBefore = resolver_.changed().size();
+        resolver_.setForceRest(merge_);
+        const Resolution r =
+            b < 0 ? resolver_.resolveWall(a, axis) : resolver_.resolvePair(a, b, axis);
+        // The blocks sent on at new velocities: their other contacts along the axis come next.
+        const std::vector<int>& changed = resolver_.changed();
+        for (size_t k = changedBefore; k < changed.size(); ++k) {
+            const int j = changed[k];
+            std::uint8_t& flag = s_.isPending[2 * static_cast<size_t>(j) + axis];
+            if (blocks_[j].isDynamic() && !flag && j != mover_) {
+                flag = 1;
+                s_.pending.emplace_back(j, axis);
+            }
+        }
+        return r;
+    }
+
+    // Resolves, one by one, the contacts the changes of velocity so far have made closing.
+    void settle() {
+        std::vector<std::pair<int, int>>& pending = s_.pending;
+        for (size_t next = 0; next < pending.size(); ++next) {
+            const auto [j, axis] = pending[next];
+            s_.isPending[2 * static_cast<size_t>(j) + axis] = 0;
+            if (endless_) continue;
+            const Aabb box = aabbOf(blocks_[j]);
+            const double v = blocks_[j].velocity[axis];
+            const Bounds& bounds = ctx_.world.bounds;
+            if ((v < 0.0 && box.min[axis] - bounds.min[axis] <= kTouchTolerance) ||
+                (v > 0.0 && bounds.max[axis] - box.max[axis] <= kTouchTolerance))
+                resolve(j, CrushRule::kWall, axis);
+            ctx_.broadPhase.queryOthers(box, j, [&](int k) {
+                const int side = faceContact(box, aabbOf(blocks_[k]), axis);
+                if (side == 0) return;
+                const double vj = blocks_[j].velocity[axis], vk = blocks_[k].velocity[axis];
+                if ((side > 0 ? vj - vk : vk - vj) > 0.0) resolve(j, k, axis);
+            });
+        }
+        pending.clear();
+    }
+
+    // The collapse rule: whether the pair has met more than allowed_ times at this instant.
+    bool repeats(int a, int b) {
+        const auto lo = static_cast<std::uint32_t>(b < 0 ? a : std::min(a, b));
+        const auto hi = static_cast<std::uint32_t>(b < 0 ? b : std::max(a, b));
+        const std::uint64_t pair = (static_cast<std::uint64_t>(lo) << 32) | hi;
+        // Nearly every instant has a pair or two: a short list, a table past kListedPairs.
+        std::vector<std::pair<std::uint64_t, int>>& list = s_.meetings;
+        for (auto& [p, count] : list)
+            if (p == pair) return ++count > allowed_;
+        if (list.size() < kListedPairs) {
+            list.emplace_back(pair, 1);
+            return 1 > allowed_;
+        }
+        return ++s_.meetingMap[pair] > allowed_;
+    }
+    // The crush rule.
+    bool squeezed(int a, int b, int axis) {
+        return s_.crush.squeezed(blocks_, a, b, axis, blocks_[a].position[axis],
+                                 b < 0 ? 0.0 : blocks_[b].position[axis]);
+    }
+
+    SubstepContext& ctx_;
+    std::vector<Block>& blocks_;
+    Resolver resolver_;
+    TurnBasedScratch& s_;
+    int allowed_ = kInelasticRepeats;
+    bool sequence_ = false; // resolving a sequence at one instant
+    int mover_ = -1;        // the block that moved to this instant's impact, if any
+    bool merge_ = false;    // merging: every contact by the rest rule
+    bool endless_ = false;  // the sequence would not end: to be undone
+    int resolutions_ = 0;   // contacts resolved at this instant
+};
+
 } // namespace
 
 void advanceTurnBased(SubstepContext& ctx) {
@@ -67,9 +246,10 @@ void advanceTurnBased(SubstepContext& ctx) {
         return sweptAabb(blocks[i].position, blocks[i].size, blocks[i].velocity, ctx.h);
     });
 
-    Resolver resolver(ctx);
-    FirstImpact first;
-    first.blocks.swap(ctx.scratch.firstImpactBlocks); // reuses the buffer, given back below
+    TurnBasedScratch& scratch = ctx.scratch.turnBased;
+    Contacts contacts(ctx, scratch);
+    Resolver& resolver = contacts.resolver();
+    FirstImpact& first = scratch.first;
     for (int i = 0; i < n; ++i) {
         Block& block = blocks[i];
         if (block.kind == BodyKind::Static) continue;
@@ -86,17 +266,8 @@ void advanceTurnBased(SubstepContext& ctx) {
             // Point of impact: POI = oldPosition + t · velocity (lecture, "Point of Impact").
             block.position += block.velocity * first.time;
             elapsed += first.time;
-            resolver.setNow(elapsed);
             bool bounced = false, rested = false;
-            auto note = [&](Resolution r) {
-                bounced |= r == Resolution::Bounce;
-                rested |= r == Resolution::Rest;
-            };
-            for (int axis = 0; axis < 2; ++axis)
-                if (first.wallAxes & (1 << axis)) note(resolver.resolveWall(i, axis));
-            for (const auto& [j, axes] : first.blocks)
-                for (int axis = 0; axis < 2; ++axis)
-                    if (axes & (1 << axis)) note(resolver.resolvePair(i, j, axis));
+            contacts.resolveInstant(i, first, elapsed, bounced, rested);
             // Blocks hit by this one changed velocity: they may go further than they registered.
             for (int j : resolver.changed()) {
                 const Block& b = blocks[j];
@@ -109,6 +280,5 @@ void advanceTurnBased(SubstepContext& ctx) {
             if (bounced || !rested) break;
         }
     }
-    first.blocks.swap(ctx.scratch.firstImpactBlocks);
     ctx.advanced = ctx.h;
 }

@@ -25,7 +25,10 @@ struct Run {
     StepTotals totals;
     double maxDisplacement = 0.0; // m, largest distance of a block from its start
     double startEnergy = 0.0;
-    bool crossed = false; // block 0 was seen beyond block 1 along x (tunnelling)
+    double startTotal = 0.0; // J, kinetic + potential at the start
+    double maxTotal = 0.0;   // J, the largest kinetic + potential seen at the end of a frame
+    double maxSpeed = 0.0;   // m/s, the fastest dynamic block seen at the end of a frame
+    bool crossed = false;    // block 0 was seen beyond block 1 along x (tunnelling)
 };
 
 Run simulate(const Scene& scene, Method method, double seconds) {
@@ -34,14 +37,19 @@ Run simulate(const Scene& scene, Method method, double seconds) {
     run.world = makeWorld(scene);
     run.world.settings.method = method;
     run.startEnergy = kineticEnergy(run.world);
+    run.startTotal = run.maxTotal = run.startEnergy + potentialEnergy(run.world);
     for (const Block& b : run.world.blocks) run.start.push_back(b.position);
     const double side = run.world.blocks.size() > 1 ? run.start[1].x - run.start[0].x : 0.0;
     const long frames = std::lround(seconds / scene.settings.dt);
     for (long f = 0; f < frames; ++f) {
-        addStep(run.totals, run.world.step());
-        for (size_t i = 0; i < run.start.size(); ++i)
-            run.maxDisplacement =
-                std::max(run.maxDisplacement, length(run.world.blocks[i].position - run.start[i]));
+        const StepStats s = run.world.step();
+        addStep(run.totals, s);
+        for (size_t i = 0; i < run.start.size(); ++i) {
+            const Block& b = run.world.blocks[i];
+            run.maxDisplacement = std::max(run.maxDisplacement, length(b.position - run.start[i]));
+            if (b.isDynamic()) run.maxSpeed = std::max(run.maxSpeed, length(b.velocity));
+        }
+        run.maxTotal = std::max(run.maxTotal, s.kineticEnergy + s.potentialEnergy);
         if (run.world.blocks.size() > 1 &&
             (run.world.blocks[1].position.x - run.world.blocks[0].position.x) * side < 0.0)
             run.crossed = true;
@@ -87,6 +95,24 @@ StabilityResult judge(const std::string& name, const Run& r) {
         if (r.totals.maxPenetration > 1e-9)
             out.verdict += ", overlap " + format(r.totals.maxPenetration) + " m";
         out.detail = "collisions counted (exact: 3141, the digits of pi for a mass ratio of 1e6)";
+    } else if (name == "heavy_on_light" || name == "pile" || name == "crushed_block") {
+        // Nothing may run away: no block faster than 30 m/s (they fall at most 12 m: 15 m/s) and,
+        // with C < 1 and no platform, the total energy never above the start (1e-9 relative:
+        // rounding of the sums).
+        const bool platform = name == "crushed_block";
+        const double growth = r.startTotal > 0.0 ? r.maxTotal / r.startTotal : 1.0;
+        const bool gains = !platform && r.maxTotal > r.startTotal + 1e-9 * std::abs(r.startTotal);
+        out.fails = r.maxSpeed > 30.0 || gains || r.totals.maxPenetration > 1e-9;
+        out.value = r.maxSpeed;
+        std::string v;
+        if (r.maxSpeed > 30.0) v = "runs away: " + format(r.maxSpeed) + " m/s";
+        if (gains) v += std::string(v.empty() ? "" : ", ") + "energy x" + format(growth);
+        if (r.totals.maxPenetration > 1e-9)
+            v += std::string(v.empty() ? "" : ", ") + "overlap " + format(r.totals.maxPenetration) +
+                 " m";
+        out.verdict = v.empty() ? "bounded" : v;
+        out.detail = "fastest block at a frame's end: " + format(r.maxSpeed) + " m/s" +
+                     (platform ? "" : "; largest total energy / start: " + format(growth));
     } else { // inelastic_collapse, jammed_box: the event cap, overlap, energy
         const double drift =
             r.startEnergy > 0.0 ? (kineticEnergy(r.world) - r.startEnergy) / r.startEnergy : 0.0;
@@ -114,9 +140,10 @@ struct FailureScene {
     double seconds;
 };
 const FailureScene kScenes[] = {
-    {"bullet_wall", 1.0},    {"resting_stack", 5.0}, {"inelastic_collapse", 2.0},
-    {"newtons_cradle", 2.0}, {"corner_hit", 1.5},    {"high_mass_ratio", 20.0},
-    {"jammed_box", 1.0},
+    {"bullet_wall", 1.0},    {"resting_stack", 5.0},   {"inelastic_collapse", 2.0},
+    {"newtons_cradle", 2.0}, {"corner_hit", 1.5},      {"high_mass_ratio", 20.0},
+    {"jammed_box", 1.0},     {"heavy_on_light", 10.0}, {"pile", 10.0},
+    {"crushed_block", 10.0},
 };
 
 } // namespace

@@ -56,14 +56,14 @@ World piScene(double x, double ratio) {
     return makeWorld(scene);
 }
 
-class TouchingPi : public ::testing::TestWithParam<double> {};
+class PerfectTouchingPi : public ::testing::TestWithParam<double> {};
 
-INSTANTIATE_TEST_SUITE_P(MassRatios, TouchingPi, ::testing::Values(1e4, 1e6),
+INSTANTIATE_TEST_SUITE_P(MassRatios, PerfectTouchingPi, ::testing::Values(1e4, 1e6),
                          [](const ::testing::TestParamInfo<double>& info) {
                              return "Ratio1e" + std::to_string(std::lround(std::log10(info.param)));
                          });
 
-TEST_P(TouchingPi, SmallBlockTouchingTheWallCountsPiAndKeepsEnergy) {
+TEST_P(PerfectTouchingPi, SmallBlockTouchingTheWallCountsPiAndKeepsEnergy) {
     // 0.5 m block at x = 0.25: its left face on the wall. 20 s: the giant comes back and leaves.
     const double ratio = GetParam();
     const World start = piScene(0.25, ratio);
