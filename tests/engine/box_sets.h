@@ -47,6 +47,26 @@ inline std::vector<int> bruteForceQuery(const std::vector<Aabb>& boxes, const Aa
     return found;
 }
 
+// Registers a random box of `s` anew: moved by up to `reach` (m) along each axis, one in twenty
+// grown fivefold, some shrunk to a fifth. Returns its index.
+inline int moveRandomBox(BoxSet& s, std::mt19937_64& rng, double reach) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const int i = static_cast<int>(unit(rng) * static_cast<double>(s.boxes.size()));
+    const Vec2 shift{reach * (2.0 * unit(rng) - 1.0), reach * (2.0 * unit(rng) - 1.0)};
+    const double grow = unit(rng) < 0.05 ? 5.0 : unit(rng) < 0.1 ? 0.2 : 1.0;
+    const Vec2 size = (s.boxes[i].max - s.boxes[i].min) * grow;
+    s.boxes[i].min += shift;
+    s.boxes[i].max = s.boxes[i].min + size;
+    return i;
+}
+
+// A query box anywhere in and around the bounds of randomSetup(), up to 3 m on a side.
+inline Aabb randomQueryBox(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const Vec2 corner{-4.0 + 22.0 * unit(rng), 1.0 + 14.0 * unit(rng)};
+    return {corner, corner + Vec2{3.0 * unit(rng), 3.0 * unit(rng)}};
+}
+
 // Every pair a < b for which test(boxes[a], boxes[b]) holds, in order.
 template <class Test>
 std::vector<std::pair<int, int>> bruteForcePairs(const std::vector<Aabb>& boxes, Test test) {

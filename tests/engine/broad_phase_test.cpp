@@ -64,24 +64,18 @@ TEST(BroadPhase, QueriesFindExactlyTheBoxesThatMeetAlsoAfterSet) {
         for (int round = 0; round < 200; ++round) {
             // Register a block again: moved (often into other cells), sometimes grown over many
             // cells or shrunk back, sometimes moved back where it was (re-entering a cell).
-            const int i = static_cast<int>(unit(rng) * n);
-            const Vec2 shift{2.0 * unit(rng) - 1.0, 2.0 * unit(rng) - 1.0};
-            const double grow = unit(rng) < 0.05 ? 5.0 : unit(rng) < 0.1 ? 0.2 : 1.0;
-            const Vec2 size = (s.boxes[i].max - s.boxes[i].min) * grow;
-            const Aabb before = s.boxes[i];
-            s.boxes[i].min += shift;
-            s.boxes[i].max = s.boxes[i].min + size;
+            const BoxSet before = s;
+            const int i = box_sets::moveRandomBox(s, rng, 1.0);
             grid.set(i, s.boxes[i]);
             if (unit(rng) < 0.2) {
-                s.boxes[i] = before;
-                grid.set(i, before);
+                s.boxes[i] = before.boxes[i];
+                grid.set(i, s.boxes[i]);
             }
             EXPECT_EQ(grid.box(i).max.x, s.boxes[i].max.x);
             const int self = static_cast<int>(unit(rng) * n);
             EXPECT_EQ(queryAnswer(grid, s.boxes[self], self),
                       bruteForceQuery(s.boxes, s.boxes[self], self));
-            const Vec2 corner{-4.0 + 22.0 * unit(rng), 1.0 + 14.0 * unit(rng)};
-            const Aabb anywhere{corner, corner + Vec2{3.0 * unit(rng), 3.0 * unit(rng)}};
+            const Aabb anywhere = box_sets::randomQueryBox(rng);
             EXPECT_EQ(queryAnswer(grid, anywhere, -1), bruteForceQuery(s.boxes, anywhere, -1));
         }
         // After all the moves, the pairs too (overflow lists and dead slots).

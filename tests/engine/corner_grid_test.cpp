@@ -50,20 +50,14 @@ TEST(CornerGrid, QueriesFindExactlyTheBoxesThatMeetAlsoAfterSet) {
         for (int round = 0; round < 200; ++round) {
             // Register a block again: moved a little (often into another cell), sometimes grown
             // into a large box or shrunk back.
-            const int i = static_cast<int>(unit(rng) * n);
-            const Vec2 shift{unit(rng) - 0.5, unit(rng) - 0.5};
-            const double grow = unit(rng) < 0.05 ? 5.0 : unit(rng) < 0.1 ? 0.2 : 1.0;
-            const Vec2 size = (s.boxes[i].max - s.boxes[i].min) * grow;
-            s.boxes[i].min += shift;
-            s.boxes[i].max = s.boxes[i].min + size;
+            const int i = box_sets::moveRandomBox(s, rng, 0.5);
             grid.set(i, s.boxes[i]);
             EXPECT_EQ(grid.box(i).max.x, s.boxes[i].max.x);
             // Query a block's own box, and a box anywhere.
             const int self = static_cast<int>(unit(rng) * n);
             EXPECT_EQ(queryAnswer(grid, s.boxes[self], self),
                       bruteForceQuery(s.boxes, s.boxes[self], self));
-            const Vec2 corner{-4.0 + 22.0 * unit(rng), 1.0 + 14.0 * unit(rng)};
-            const Aabb anywhere{corner, corner + Vec2{3.0 * unit(rng), 3.0 * unit(rng)}};
+            const Aabb anywhere = box_sets::randomQueryBox(rng);
             EXPECT_EQ(queryAnswer(grid, anywhere, -1), bruteForceQuery(s.boxes, anywhere, -1));
         }
     }
