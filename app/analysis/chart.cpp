@@ -1,13 +1,17 @@
 #include "chart.h"
 
-#include <imgui.h>
 #include <stb_image_write.h>
+#include <stb_truetype.h> // libstb.so holds the implementation: no STB_TRUETYPE_IMPLEMENTATION
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <map>
+#include <utility>
 
 namespace {
 
@@ -16,17 +20,101 @@ struct Rgb {
 };
 
 constexpr double kFloor = 1e-16;
+constexpr float kTextPx = 14.0f;  // body text height (px)
+constexpr float kTitlePx = 24.0f; // titles
+
+// The next code point of UTF-8 text at `i` (advanced past it); a malformed byte reads as '?'.
+int nextCodePoint(const std::string& s, size_t& i) {
+    const auto byte = [&](size_t k) { return static_cast<unsigned char>(s[k]); };
+    const unsigned char b = byte(i++);
+    int extra = b < 0x80 ? 0 : (b >> 5) == 6 ? 1 : (b >> 4) == 14 ? 2 : (b >> 3) == 30 ? 3 : -1;
+    if (extra < 0) return '?';
+    int cp = extra == 0 ? b : b & (0x3f >> extra);
+    for (; extra > 0; --extra) {
+        if (i >= s.size() || (byte(i) >> 6) != 2) return '?';
+        cp = (cp << 6) | (byte(i++) & 0x3f);
+    }
+    return cp;
+}
+
+// The chart's typeface: DejaVu Sans from Debian's fonts-dejavu-core (the file CMake found,
+// SANDBOX_CHART_FONT; the environment variable of that name overrides it), read when the first
+// chart is drawn and rasterised by stb_truetype, glyph by glyph.
+class Font {
+  public:
+    // Reads the font file; false with a message naming the file and the package when it is
+    // missing or not a font.
+    bool load(std::string* error) {
+        const char* override = std::getenv("SANDBOX_CHART_FONT");
+        const std::string path = override && *override ? override : SANDBOX_CHART_FONT;
+        if (ready_ && path == path_) return true;
+        ready_ = false;
+        glyphs_.clear();
+        path_ = path;
+        std::ifstream file(path, std::ios::binary);
+        data_.assign(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+        const auto* bytes = reinterpret_cast<const unsigned char*>(data_.data());
+        const int offset = data_.size() < 12 ? -1 : stbtt_GetFontOffsetForIndex(bytes, 0);
+        if (offset < 0 || !stbtt_InitFont(&info_, bytes, offset)) {
+            if (error)
+                *error = "cannot read the chart's font " + path +
+                         " (a TrueType file; Debian package fonts-dejavu-core)";
+            return false;
+        }
+        ready_ = true;
+        return true;
+    }
+
+    struct Glyph {
+        std::vector<std::uint8_t> alpha; // w x h coverage, row by row
+        int w = 0, h = 0, x = 0, y = 0;  // offset of the top-left from the pen on the baseline
+        float advance = 0.0f;            // px
+        bool made = false;
+    };
+    const Glyph& glyph(int codePoint, float px) {
+        Glyph& g = glyphs_[{codePoint, px}];
+        if (g.made) return g;
+        g.made = true;
+        const float scale = stbtt_ScaleForPixelHeight(&info_, px);
+        int advance = 0, bearing = 0;
+        stbtt_GetCodepointHMetrics(&info_, codePoint, &advance, &bearing);
+        g.advance = advance * scale;
+        unsigned char* bitmap =
+            stbtt_GetCodepointBitmap(&info_, scale, scale, codePoint, &g.w, &g.h, &g.x, &g.y);
+        if (bitmap) g.alpha.assign(bitmap, bitmap + static_cast<size_t>(g.w) * g.h);
+        stbtt_FreeBitmap(bitmap, nullptr);
+        return g;
+    }
+    float ascent(float px) const {
+        int ascent = 0, descent = 0, gap = 0;
+        stbtt_GetFontVMetrics(&info_, &ascent, &descent, &gap);
+        return ascent * stbtt_ScaleForPixelHeight(&info_, px);
+    }
+    float kerning(int a, int b, float px) const {
+        return stbtt_GetCodepointKernAdvance(&info_, a, b) * stbtt_ScaleForPixelHeight(&info_, px);
+    }
+
+  private:
+    bool ready_ = false;
+    std::string path_;
+    std::string data_; // the .ttf file: stb_truetype reads from it
+    stbtt_fontinfo info_{};
+    std::map<std::pair<int, float>, Glyph> glyphs_;
+};
+
+Font& chartFont() {
+    static Font font; // loaded once: the charts of a run share it
+    return font;
+}
 const Rgb kPalette[] = {{208, 64, 64},  {64, 112, 208}, {64, 160, 80},  {144, 80, 192},
                         {224, 138, 48}, {48, 160, 160}, {120, 120, 120}};
 
 // An RGB image with the few drawing operations a chart needs.
 class Canvas {
   public:
-    Canvas(int width, int height) : w_(width), h_(height), pixels_(width * height * 3, 255) {
-        ImFontAtlas& atlas = fontAtlas();
-        font_ = atlas.Fonts.empty() ? atlas.AddFontDefault() : atlas.Fonts[0];
-        atlas.GetTexDataAsAlpha8(&fontPixels_, &fontWidth_, &fontHeight_);
-    }
+    // `font` must be loaded.
+    Canvas(int width, int height, Font& font)
+        : w_(width), h_(height), pixels_(width * height * 3, 255), font_(font) {}
 
     void blend(int x, int y, Rgb c, float alpha) {
         if (x < 0 || y < 0 || x >= w_ || y >= h_ || alpha <= 0.0f) return;
@@ -56,46 +144,48 @@ class Canvas {
             disc(x0 + (x1 - x0) * t, y0 + (y1 - y0) * t, width / 2, c);
         }
     }
-    // Text with its top-left at (x, y), glyphs scaled by an integer factor.
-    int text(int x, int y, const std::string& s, Rgb c, int scale = 1) {
-        float pen = static_cast<float>(x);
-        for (char ch : s) {
-            const ImFontGlyph* g =
-                font_->FindGlyph(static_cast<ImWchar>(static_cast<unsigned char>(ch)));
-            if (!g) continue;
-            const int gx0 = static_cast<int>(g->U0 * fontWidth_),
-                      gy0 = static_cast<int>(g->V0 * fontHeight_);
-            const int gw = static_cast<int>((g->U1 - g->U0) * fontWidth_ + 0.5f);
-            const int gh = static_cast<int>((g->V1 - g->V0) * fontHeight_ + 0.5f);
-            for (int v = 0; v < gh * scale; ++v)
-                for (int u = 0; u < gw * scale; ++u) {
-                    const float a =
-                        fontPixels_[(gy0 + v / scale) * fontWidth_ + gx0 + u / scale] / 255.0f;
-                    blend(static_cast<int>(pen + g->X0 * scale) + u,
-                          y + static_cast<int>(g->Y0 * scale) + v, c, a);
-                }
-            pen += g->AdvanceX * scale;
-        }
-        return static_cast<int>(pen) - x;
+    // Text with its top-left at (x, y) (the top of the font's ascent), `px` high; returns its
+    // width in pixels.
+    int text(int x, int y, const std::string& s, Rgb c, float px = kTextPx) {
+        return layout(
+            s, px,
+            [&](const Font::Glyph& g, float pen) {
+                const int gx = static_cast<int>(std::lround(pen)) + g.x;
+                const int gy = y + static_cast<int>(std::lround(font_.ascent(px))) + g.y;
+                for (int v = 0; v < g.h; ++v)
+                    for (int u = 0; u < g.w; ++u)
+                        blend(gx + u, gy + v, c,
+                              g.alpha[static_cast<size_t>(v) * g.w + u] / 255.0f);
+            },
+            static_cast<float>(x));
     }
-    int textWidth(const std::string& s, int scale = 1) const {
-        return static_cast<int>(font_->CalcTextSizeA(font_->FontSize, 1e9f, 0.0f, s.c_str()).x) *
-               scale;
+    int textWidth(const std::string& s, float px = kTextPx) {
+        return layout(
+            s, px, [](const Font::Glyph&, float) {}, 0.0f);
     }
     bool save(const std::string& path) const {
         return stbi_write_png(path.c_str(), w_, h_, 3, pixels_.data(), w_ * 3) != 0;
     }
 
   private:
-    static ImFontAtlas& fontAtlas() {
-        static ImFontAtlas atlas; // built once; needs no ImGui context
-        return atlas;
+    // Calls draw(glyph, pen) for each glyph of s from `start`, kerned; returns the width.
+    template <class Draw> int layout(const std::string& s, float px, Draw&& draw, float start) {
+        float pen = start;
+        int previous = 0;
+        for (size_t i = 0; i < s.size();) {
+            const int cp = nextCodePoint(s, i);
+            if (previous) pen += font_.kerning(previous, cp, px);
+            const Font::Glyph& g = font_.glyph(cp, px);
+            draw(g, pen);
+            pen += g.advance;
+            previous = cp;
+        }
+        return static_cast<int>(std::lround(pen - start));
     }
+
     int w_, h_;
     std::vector<std::uint8_t> pixels_;
-    ImFont* font_ = nullptr;
-    unsigned char* fontPixels_ = nullptr;
-    int fontWidth_ = 0, fontHeight_ = 0;
+    Font& font_;
 };
 
 std::string decadeLabel(int exponent) {
@@ -107,7 +197,7 @@ std::string decadeLabel(int exponent) {
 void drawPanel(Canvas& canvas, const ChartPanel& panel, int x0, int y0, int w, int h,
                const std::map<std::string, Rgb>& colours) {
     const Rgb ink{40, 40, 40}, grid{225, 225, 225};
-    canvas.text(x0 + 70, y0 + 8, panel.title, ink, 2);
+    canvas.text(x0 + 70, y0 + 8, panel.title, ink, kTitlePx);
     const int left = x0 + 70, right = x0 + w - 20, top = y0 + 58, bottom = y0 + h - 50;
 
     // Data range in decades.
@@ -168,7 +258,9 @@ bool writeLogLogChart(const std::string& path, const std::vector<ChartPanel>& pa
                       const std::string& title, std::string* error) {
     const int columns = 3, panelW = 560, panelH = 400, header = 70;
     const int rows = std::max(1, static_cast<int>((panels.size() + columns - 1) / columns));
-    Canvas canvas(columns * panelW, header + rows * panelH);
+    Font& font = chartFont();
+    if (!font.load(error)) return false;
+    Canvas canvas(columns * panelW, header + rows * panelH, font);
 
     std::map<std::string, Rgb> colours;
     for (const ChartPanel& p : panels)
@@ -177,7 +269,7 @@ bool writeLogLogChart(const std::string& path, const std::vector<ChartPanel>& pa
                 colours[s.name] = kPalette[colours.size() % std::size(kPalette)];
 
     const Rgb ink{30, 30, 30};
-    canvas.text(20, 14, title, ink, 2);
+    canvas.text(20, 14, title, ink, kTitlePx);
     int lx = 20;
     for (const auto& [name, c] : colours) { // legend
         canvas.fillRect(lx, 50, lx + 14, 62, c);

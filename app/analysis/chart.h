@@ -1,6 +1,6 @@
 // A small log-log chart rendered on the CPU to a PNG (no GL): panels of series of points, axes
-// with decade ticks, a legend. Text comes from Dear ImGui's built-in font, rasterised by its
-// font atlas. Used for the speed-versus-accuracy chart of `sandbox-cli tradeoff`.
+// with decade ticks, a legend. Text in DejaVu Sans (fonts-dejavu-core), rasterised by
+// stb_truetype. Used for the speed-versus-accuracy chart of `sandbox-cli tradeoff`.
 #pragma once
 
 #include "vec2.h"
@@ -22,6 +22,7 @@ struct ChartPanel {
 
 // Writes the panels side by side (three per row) as a PNG. Values of y below 1e-16 (exact
 // answers) are drawn on the floor of the panel. Series get the same colour in every panel by
-// name. Returns false with a message in `error` when the file cannot be written.
+// name. Returns false with a message in `error` when the file cannot be written or the font
+// cannot be read.
 bool writeLogLogChart(const std::string& path, const std::vector<ChartPanel>& panels,
                       const std::string& title, std::string* error);

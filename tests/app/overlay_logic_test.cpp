@@ -2,6 +2,7 @@
 // first worked example, the timeline's scrub-and-replay (bit-exact, checked with stateHash), the
 // plot widget's ticks and time window, the point of impact and the methods side by side.
 #include "app_state.h"
+#include "cost.h"
 #include "inspector_format.h"
 #include "plot_logic.h"
 #include "poi.h"
@@ -14,6 +15,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace {
@@ -331,6 +334,69 @@ TEST(SideBySide, ThreeMethodsFromOneStart) {
     app.show.sideBySide = false;
     stepSimulation(app);
     EXPECT_FALSE(app.methods.running);
+}
+
+// The cost overlay's measurement: a copy of the world is stepped under each method, the world
+// itself is left as it was, and the measurement is kept per scene. (What a step costs is not
+// asserted: no test reads a clock.)
+TEST(CostMeasurement, MeasuresACopyUnderEachMethod) {
+    App app = lectureExample();
+    const std::uint64_t before = stateHash(app.world);
+    CostMeasurement cost;
+    EXPECT_FALSE(cost.measured(app.scenePath));
+    EXPECT_LT(cost.msPerStep(Method::Perfect), 0.0); // none yet
+    cost.measure(app.world, app.scenePath, 3);
+    EXPECT_TRUE(cost.measured(app.scenePath));
+    EXPECT_FALSE(cost.measured("other.json"));
+    for (const Method m : {Method::Perfect, Method::MoveAndCorrect, Method::TurnBased}) {
+        EXPECT_GE(cost.msPerStep(m), 0.0) << methodName(m);
+    }
+    EXPECT_EQ(stateHash(app.world), before);
+    EXPECT_EQ(app.world.frame, 0u);
+}
+
+TradeoffRow row(const char* engine, const char* scene, double cost, double error) {
+    TradeoffRow r;
+    r.engine = engine;
+    r.scene = scene;
+    r.msPerSimulatedSecond = cost;
+    r.error = error;
+    return r;
+}
+
+// The sweep runs on another thread; pollSweep takes its rows (or its error) once it is done.
+TEST(CostMeasurement, BackgroundSweepDeliversRowsOrItsError) {
+    CostMeasurement cost;
+    EXPECT_FALSE(cost.pollSweep());
+    cost.startSweep([] { return std::vector<TradeoffRow>{row("perfect", "a", 2.0, 0.1)}; });
+    EXPECT_TRUE(cost.sweepRunning());
+    EXPECT_TRUE(cost.pollSweep(true));
+    EXPECT_FALSE(cost.sweepRunning());
+    ASSERT_EQ(cost.rows().size(), 1u);
+    EXPECT_EQ(cost.rows()[0].engine, "perfect");
+    EXPECT_TRUE(cost.error().empty());
+
+    cost.startSweep([]() -> std::vector<TradeoffRow> { throw std::runtime_error("no scenes"); });
+    EXPECT_TRUE(cost.pollSweep(true));
+    EXPECT_EQ(cost.error(), "no scenes");
+    EXPECT_EQ(cost.rows().size(), 1u); // the last good rows stay
+
+    cost.runSweepNow([] { return std::vector<TradeoffRow>{}; });
+    EXPECT_TRUE(cost.rows().empty());
+    EXPECT_TRUE(cost.error().empty());
+}
+
+TEST(CostMeasurement, ChartRowsByScene) {
+    const std::vector<TradeoffRow> rows = {
+        row("perfect", "b", 3.0, 0.1), row("turn-based", "a", 1.0, 0.2),
+        row("perfect", "b", 1.0, 0.3), row("box2d", "b", 2.0, 0.4)};
+    EXPECT_EQ(tradeoffScenes(rows), (std::vector<std::string>{"b", "a"}));
+    const auto b = tradeoffRowsOf(rows, "b");
+    ASSERT_EQ(b.size(), 3u);
+    EXPECT_EQ(b[0]->msPerSimulatedSecond, 1.0);
+    EXPECT_EQ(b[1]->msPerSimulatedSecond, 2.0);
+    EXPECT_EQ(b[2]->msPerSimulatedSecond, 3.0);
+    EXPECT_TRUE(tradeoffRowsOf(rows, "c").empty());
 }
 
 } // namespace

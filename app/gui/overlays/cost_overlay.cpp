@@ -1,52 +1,15 @@
-// Speed versus accuracy in the app: the current scene's cost per step under each method (a copy
-// of the world stepped a few frames per method) and the tradeoff chart (error against cost,
-// log-log, from runTradeoff with quick = true) drawn with the plot widget. The sweep runs on a
-// background thread; the frame loop only polls it.
+// Speed versus accuracy in the app: the current scene's cost per step under each method and the
+// tradeoff chart (error against cost, log-log, from the quick sweep) drawn with the plot widget.
+// What is measured, and the background sweep, are App's CostMeasurement (teaching/cost.h).
 #include "app_frame.h"
 #include "overlay_window.h"
 #include "plot_widget.h"
-#include "side_by_side.h"
-#include "tradeoff.h"
 
 #include <algorithm>
-#include <array>
-#include <chrono>
-#include <future>
 #include <map>
-#include <set>
 #include <string>
 
-Color methodGhostColor(Method method);
-
 namespace {
-
-constexpr int kCostFrames = 30;
-
-struct CostState {
-    std::string measuredScene; // scenePath of the last measurement
-    std::array<double, 3> msPerStep{{-1.0, -1.0, -1.0}};
-    std::future<std::vector<TradeoffRow>> job;
-    bool running = false;
-    std::vector<TradeoffRow> rows;
-    std::string error;
-    int scene = 0;
-};
-
-CostState& state() {
-    static CostState s;
-    return s;
-}
-
-void measure(const App& app, CostState& s) {
-    for (int m = 0; m < 3; ++m) {
-        World w = app.world;
-        w.settings.method = static_cast<Method>(m);
-        double total = 0.0;
-        for (int i = 0; i < kCostFrames; ++i) total += w.step().stepMs;
-        s.msPerStep[static_cast<std::size_t>(m)] = total / kCostFrames;
-    }
-    s.measuredScene = app.scenePath;
-}
 
 ImU32 engineColor(const std::string& engine) {
     Method m;
@@ -55,47 +18,24 @@ ImU32 engineColor(const std::string& engine) {
     return IM_COL32(200, 200, 210, 255); // box2d
 }
 
-void pollJob(CostState& s) {
-    if (!s.running) return;
-    if (s.job.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
-    s.running = false;
-    try {
-        s.rows = s.job.get();
-        s.error.clear();
-    } catch (const std::exception& e) {
-        s.error = e.what();
-    }
-}
-
-void tradeoffChart(CostState& s) {
-    std::vector<std::string> scenes;
-    for (const TradeoffRow& r : s.rows) {
-        if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) {
-            scenes.push_back(r.scene);
-        }
-    }
+void tradeoffChart(CostMeasurement& cost) {
+    const std::vector<std::string> scenes = tradeoffScenes(cost.rows());
     if (scenes.empty()) return;
-    s.scene = std::clamp(s.scene, 0, static_cast<int>(scenes.size()) - 1);
+    int& pick = cost.chartScene;
+    pick = std::clamp(pick, 0, static_cast<int>(scenes.size()) - 1);
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12.0f);
-    if (ImGui::BeginCombo("scene", scenes[static_cast<std::size_t>(s.scene)].c_str())) {
+    if (ImGui::BeginCombo("scene", scenes[static_cast<std::size_t>(pick)].c_str())) {
         for (int i = 0; i < static_cast<int>(scenes.size()); ++i) {
-            if (ImGui::Selectable(scenes[static_cast<std::size_t>(i)].c_str(), i == s.scene)) {
-                s.scene = i;
+            if (ImGui::Selectable(scenes[static_cast<std::size_t>(i)].c_str(), i == pick)) {
+                pick = i;
             }
         }
         ImGui::EndCombo();
     }
-    const std::string& scene = scenes[static_cast<std::size_t>(s.scene)];
     std::map<std::string, PlotSeries> byEngine;
     std::string unit;
-    std::vector<const TradeoffRow*> rows;
-    for (const TradeoffRow& r : s.rows) {
-        if (r.scene == scene) rows.push_back(&r);
-    }
-    std::sort(rows.begin(), rows.end(), [](const TradeoffRow* a, const TradeoffRow* b) {
-        return a->msPerSimulatedSecond < b->msPerSimulatedSecond;
-    });
-    for (const TradeoffRow* r : rows) {
+    for (const TradeoffRow* r :
+         tradeoffRowsOf(cost.rows(), scenes[static_cast<std::size_t>(pick)])) {
         PlotSeries& ps = byEngine[r->engine];
         ps.label = r->engine;
         ps.color = engineColor(r->engine);
@@ -121,52 +61,37 @@ void tradeoffChart(CostState& s) {
 void drawCostOverlay(App& app) {
     OverlayWindow overlay(app, OverlayId::cost);
     if (!overlay) return;
-    CostState& s = state();
-    pollJob(s);
-    if (s.measuredScene != app.scenePath) measure(app, s);
+    CostMeasurement& cost = app.cost;
+    cost.pollSweep();
+    if (!cost.measured(app.scenePath)) cost.measure(app.world, app.scenePath);
     ImGui::Text("Cost per step of this scene (%zu blocks):", app.world.blocks.size());
     if (ImGui::BeginTable("cost", 2, ImGuiTableFlags_SizingStretchProp)) {
-        for (int m = 0; m < 3; ++m) {
+        for (int m = 0; m < static_cast<int>(Method::Count); ++m) {
+            const Method method = static_cast<Method>(m);
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            const Color c = methodGhostColor(static_cast<Method>(m));
-            ImGui::TextColored(ImVec4(c.r, c.g, c.b, 1.0f), "%s",
-                               methodName(static_cast<Method>(m)));
+            const Color c = methodGhostColor(method);
+            ImGui::TextColored(ImVec4(c.r, c.g, c.b, 1.0f), "%s", methodName(method));
             ImGui::TableNextColumn();
-            ImGui::Text("%.3f ms/step", s.msPerStep[static_cast<std::size_t>(m)]);
+            ImGui::Text("%.3f ms/step", cost.msPerStep(method));
         }
         ImGui::EndTable();
     }
-    if (ImGui::SmallButton("Measure again")) measure(app, s);
+    if (ImGui::SmallButton("Measure again")) cost.measure(app.world, app.scenePath);
     ImGui::SameLine();
     dimText("(a copy, 30 frames per method)");
     ImGui::Separator();
-    if (s.running) {
+    if (cost.sweepRunning()) {
         ImGui::TextColored(ImVec4(0.55f, 0.85f, 0.6f, 1.0f), "Sweep running in the background...");
     } else if (ImGui::Button("Run the tradeoff sweep (quick)")) {
-        TradeoffOptions options;
-        options.scenesDir = app.scenesDir;
-        options.quick = true;
-        s.job = std::async(std::launch::async, runTradeoff, options);
-        s.running = true;
+        cost.startSweep(quickTradeoffSweep(app.scenesDir));
     }
-    if (!s.error.empty()) ImGui::TextWrapped("Sweep failed: %s", s.error.c_str());
-    if (s.rows.empty()) {
-        if (!s.running) dimText("Sweeps method x dt x substeps over scenes with known answers.");
+    if (!cost.error().empty()) ImGui::TextWrapped("Sweep failed: %s", cost.error().c_str());
+    if (cost.rows().empty()) {
+        if (!cost.sweepRunning()) {
+            dimText("Sweeps method x dt x substeps over scenes with known answers.");
+        }
     } else {
-        tradeoffChart(s);
-    }
-}
-
-// For the offscreen renderer: runs the sweep now, so a screenshot shows the chart.
-void runCostSweepNow(const App& app) {
-    CostState& s = state();
-    TradeoffOptions options;
-    options.scenesDir = app.scenesDir;
-    options.quick = true;
-    try {
-        s.rows = runTradeoff(options);
-    } catch (const std::exception& e) {
-        s.error = e.what();
+        tradeoffChart(cost);
     }
 }

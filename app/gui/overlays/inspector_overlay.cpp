@@ -10,9 +10,6 @@
 
 namespace {
 
-int gPicked = 0;          // 0: the newest collision, 1: the one before, ...
-std::string gLoggedTitle; // --verbose prints the formula once per collision shown
-
 std::string bodyName(const App& app, int index) {
     return index < 0 ? std::string(wallName(index)) : blockDisplayName(app, index);
 }
@@ -36,14 +33,15 @@ void drawInspectorOverlay(App& app) {
         return;
     }
     const int count = static_cast<int>(recent.size());
-    if (gPicked >= count) gPicked = 0;
-    const CollisionRecord& r = recent[static_cast<std::size_t>(count - 1 - gPicked)];
+    int& picked = app.ui.inspectorPicked; // 0: the newest collision, 1: the one before, ...
+    if (picked >= count) picked = 0;
+    const CollisionRecord& r = recent[static_cast<std::size_t>(count - 1 - picked)];
     const CollisionFormula f = collisionFormula(r, bodyName(app, r.block), bodyName(app, r.other));
 
     // The list of the last collisions, newest first.
     char preview[160];
     std::snprintf(preview, sizeof preview, "%s t = %.3f s: %s / %s (%c)",
-                  gPicked == 0 ? "newest," : "", r.time, bodyName(app, r.block).c_str(),
+                  picked == 0 ? "newest," : "", r.time, bodyName(app, r.block).c_str(),
                   bodyName(app, r.other).c_str(), r.axis == 0 ? 'x' : 'y');
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::BeginCombo("##collisions", preview)) {
@@ -53,7 +51,7 @@ void drawInspectorOverlay(App& app) {
             std::snprintf(row, sizeof row, "t = %.3f s  %s / %s  (%c, toi %.2f)%s##%d", c.time,
                           bodyName(app, c.block).c_str(), bodyName(app, c.other).c_str(),
                           c.axis == 0 ? 'x' : 'y', c.toi, c.rest ? "  rest" : "", k);
-            if (ImGui::Selectable(row, k == gPicked)) gPicked = k;
+            if (ImGui::Selectable(row, k == picked)) picked = k;
         }
         ImGui::EndCombo();
     }
@@ -76,8 +74,8 @@ void drawInspectorOverlay(App& app) {
         ImGui::TextWrapped("%s", f.note.c_str());
         ImGui::PopStyleColor();
     }
-    if (app.verbose && f.title != gLoggedTitle) {
-        gLoggedTitle = f.title;
+    if (app.verbose && f.title != app.ui.inspectorLoggedTitle) {
+        app.ui.inspectorLoggedTitle = f.title;
         std::printf("inspector %s\ninspector %s\ninspector %s\ninspector %s\n", f.title.c_str(),
                     f.u.c_str(), f.v1After.c_str(), f.v2After.c_str());
         std::fflush(stdout);

@@ -11,8 +11,6 @@
 
 namespace {
 
-float gSpanSeconds = 10.0f;
-
 std::vector<double> markersIn(const std::deque<double>& times) {
     return std::vector<double>(times.begin(), times.end());
 }
@@ -44,10 +42,10 @@ void drawPlotsOverlay(App& app) {
     const Telemetry& tm = app.telemetry;
     const double now = app.world.time;
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
-    ImGui::SliderFloat("time window", &gSpanSeconds, 2.0f, 60.0f, "%.0f s",
+    ImGui::SliderFloat("time window", &app.ui.plotSpanSeconds, 2.0f, 60.0f, "%.0f s",
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     // Until the window fills, the axis grows with the run (at least 2 s), then it scrolls.
-    const double span = std::clamp(now * 1.05, 2.0, static_cast<double>(gSpanSeconds));
+    const double span = std::clamp(now * 1.05, 2.0, static_cast<double>(app.ui.plotSpanSeconds));
     const PlotRange window = scrollingWindow(now, span);
     const float spacing = ImGui::GetStyle().ItemSpacing.y;
     const float h = (ImGui::GetContentRegionAvail().y - 2.0f * spacing) / 3.0f;

@@ -7,6 +7,7 @@
 #include "options.h"
 #include "renderer.h"
 #include "scene_library.h"
+#include "ui_renderer_gl.h"
 #include "ui_style.h"
 #include "window_glfw.h"
 
@@ -85,6 +86,7 @@ int runWindow(const Options& options, char** argv, int argc) {
         int fw = 0, fh = 0;
         windowFramebufferSize(window, &fw, &fh);
         appRender(app, renderer, fw, fh);
+        uiRendererRender(ImGui::GetDrawData());
         windowPresent(window);
         if (first && app.verbose) {
             std::printf("window ready %dx%d\n", fw, fh);
@@ -95,7 +97,10 @@ int runWindow(const Options& options, char** argv, int argc) {
             windowSetFullscreen(window, !window.fullscreen);
             app.fullscreenRequested = false;
         }
-        if (app.uiScale != uiCurrentScale()) uiApplyScale(app.uiScale);
+        if (app.uiScale != uiCurrentScale()) {
+            uiApplyScale(app.uiScale);
+            uiRendererFontsChanged();
+        }
     }
     config.lastScene = app.scenePath;
     config.uiScale = app.uiScale;

@@ -1,6 +1,6 @@
-// The offscreen backend: an OSMesa OpenGL 3.3 core context (llvmpipe, no display, no GPU) and
-// ImGui's OpenGL3 backend. Init, NewFrame, Render, Shutdown like the window; plus reading the
-// pixels back.
+// The offscreen backend: an OSMesa OpenGL 3.3 core context (llvmpipe, no display, no GPU) and our
+// UI renderer (ui_renderer_gl.h, started and stopped with the context). Init, NewFrame, Finish,
+// Shutdown like the window; plus reading the pixels back.
 #pragma once
 
 #include <cstdint>

@@ -5,6 +5,7 @@
 #include "offscreen_osmesa.h"
 #include "png_io.h"
 #include "renderer.h"
+#include "ui_renderer_gl.h"
 #include "ui_style.h"
 
 #include <imgui.h>
@@ -36,6 +37,7 @@ void renderFrame(App& app, Offscreen& off) {
     appFrame(app, {}, kFrameSeconds, false);
     ImGui::Render();
     appRender(app, off.renderer, off.context.width, off.context.height);
+    uiRendererRender(ImGui::GetDrawData());
     offscreenFinish(off.context);
 }
 
@@ -81,7 +83,7 @@ bool runProgram(const std::vector<std::string>& args) {
 
 int screenshot(App& app, Offscreen& off, const Options& o) {
     for (int i = 0; i < o.frames; ++i) stepSimulation(app);
-    if (app.show.cost) runCostSweepNow(app);
+    if (app.show.cost) app.cost.runSweepNow(quickTradeoffSweep(app.scenesDir)); // the chart
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off);
     if (!writeFrame(off, o.screenshot)) return 1;
     std::error_code ec; // print where the PNG is, as an absolute path when it can be had

@@ -5,6 +5,6 @@
 
 #include "options.h"
 
-// Runs the mode the options ask for; returns the process exit code. `noDisplay`: the run stands
-// in for a window that could not open (the message says so).
+// Runs the mode the options ask for (a screenshot when none is asked); returns the process exit
+// code.
 int runOffscreen(const Options& options);

@@ -1,5 +1,6 @@
-// The window backend: a GLFW window with an OpenGL 3.3 core context and ImGui's GLFW and OpenGL3
-// backends. Init, NewFrame, Render, Shutdown, as ImGui's examples do.
+// The window backend: a GLFW window with an OpenGL 3.3 core context, ImGui's GLFW backend (input)
+// and our UI renderer (ui_renderer_gl.h, started and stopped with the window). Init, NewFrame,
+// Present, Shutdown; main_window.cpp owns the loop and draws.
 #pragma once
 
 #include "input_map.h"

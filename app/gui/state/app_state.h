@@ -5,6 +5,7 @@
 
 #include "app_log.h"
 #include "camera.h"
+#include "cost.h"
 #include "fixed_step.h"
 #include "mouse_tool.h"
 #include "options.h"
@@ -18,6 +19,7 @@
 #include "trails.h"
 #include "world.h"
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -46,6 +48,25 @@ struct Run {
     MethodsSideBySide methods;            // the three methods from the same start
     Run() = default;
     explicit Run(World start);
+};
+
+// What the panels and overlay windows keep between frames (ImGui is immediate mode: the widgets
+// keep nothing themselves). Plain data, no ImGui.
+struct UiState {
+    float plotSpanSeconds = 10.0f;    // s, the plots' time window
+    int inspectorPicked = 0;          // the inspector's collision: 0 the newest, 1 the one before
+    std::string inspectorLoggedTitle; // --verbose prints the formula once per collision shown
+    int panelFollowedSelection = -2;  // the selection the "Selected block" header last followed
+    // What each overlay window was last placed for (overlays.h); a change places it again.
+    struct PlacedFor {
+        float uiScale = 0.0f;
+        double viewportWidth = 0.0, viewportHeight = 0.0;
+        bool operator==(const PlacedFor& o) const {
+            return uiScale == o.uiScale && viewportWidth == o.viewportWidth &&
+                   viewportHeight == o.viewportHeight;
+        }
+    };
+    std::array<PlacedFor, kOverlayCount> placedFor{};
 };
 
 // The app: the current Run (its base, so app.world is the run's world; restart and scrub assign
@@ -81,6 +102,8 @@ struct App : Run {
     // jump on the timeline (the recording is cut at the jump when stepping resumes).
     Telemetry telemetry;
     WorldHistory history;
+    CostMeasurement cost; // the cost overlay's measurement and tradeoff sweep
+    UiState ui;
     bool pauseOnCollision = false;
     bool pausedByCollision = false; // the last pause came from pauseOnCollision
     // Messages for the panel: the last error (load or save) and the last note.

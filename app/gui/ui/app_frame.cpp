@@ -2,7 +2,6 @@
 
 #include "overlay_window.h"
 #include "renderer.h"
-#include "ui_renderer_gl.h"
 
 #include <imgui.h>
 
@@ -146,5 +145,4 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
         view.flingTo = view.flingFrom + (m.cursorWorld - m.pressWorld);
     }
     renderer.draw(view);
-    uiRendererRender(ImGui::GetDrawData());
 }

@@ -1,6 +1,6 @@
 // One frame of the app, shared by the window and the offscreen renderer so both show the same:
-// keys and mouse, the fixed-step simulation, the panels, then the scene drawn with GL and the
-// ImGui draw data on top.
+// keys and mouse, the fixed-step simulation, the panels, then the scene drawn with GL. The mains
+// own the loop and draw ImGui's draw data on top with the platform's UI renderer.
 #pragma once
 
 #include "app_state.h"
@@ -14,7 +14,7 @@ class SceneRenderer;
 // the simulation (when `runClock`: the window passes real time; the offscreen renderer steps
 // explicitly) and the UI.
 void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, bool runClock);
-// After ImGui::Render(): clears and draws the scene, then the ImGui draw data.
+// After ImGui::Render(): clears and draws the scene (the UI renderer draws ImGui's on top).
 void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
                int framebufferHeight);
 // Does what a key binding says (also used by the panel's buttons).
@@ -31,5 +31,3 @@ void drawSceneDecorations(const App& app);
 // The teaching overlays: the table in overlays.h, drawn by drawOverlays (overlay_window.h).
 // The colour of a method's ghosts and rows (methods side by side, the tradeoff chart).
 Color methodGhostColor(Method method);
-// Offscreen: runs the tradeoff sweep at once (no thread), so a screenshot shows the chart.
-void runCostSweepNow(const App& app);

@@ -116,10 +116,9 @@ void simulationSection(App& app) {
 
 void selectedSection(App& app) {
     // Opens when a block gets selected, closes when the selection goes; the user may still fold it.
-    static int lastSelected = -2;
-    if (app.selected != lastSelected) {
+    if (app.selected != app.ui.panelFollowedSelection) {
         ImGui::SetNextItemOpen(app.selected >= 0, ImGuiCond_Always);
-        lastSelected = app.selected;
+        app.ui.panelFollowedSelection = app.selected;
     }
     if (!ImGui::CollapsingHeader("Selected block")) return;
     const int i = app.selected;

@@ -1,27 +1,10 @@
 #include "overlay_window.h"
 
 #include <algorithm>
-#include <unordered_map>
 
-namespace {
-
-// What each overlay window was last placed for. When the UI scale or the scene's viewport changes
-// (Ctrl+= on a projector, a resized or full-screen window), the windows are placed again for it:
-// at the old pixel sizes they would overlap the wider panel and clip their larger text.
-struct PlacedFor {
-    float uiScale = 0.0f;
-    double viewportWidth = 0.0, viewportHeight = 0.0;
-    bool operator==(const PlacedFor& o) const {
-        return uiScale == o.uiScale && viewportWidth == o.viewportWidth &&
-               viewportHeight == o.viewportHeight;
-    }
-};
-std::unordered_map<ImGuiID, PlacedFor> gPlacedFor;
-
-} // namespace
-
-bool beginOverlayWindow(const App& app, const char* title, bool* open,
-                        const OverlayPlacement& place) {
+bool beginOverlayWindow(App& app, OverlayId id) {
+    const OverlayInfo& info = overlayInfo(id);
+    const OverlayPlacement& place = info.place;
     const ScreenRect& vp = app.camera.viewport();
     const float s = app.uiScale;
     const float margin = 8.0f * s;
@@ -34,21 +17,21 @@ bool beginOverlayWindow(const App& app, const char* title, bool* open,
     const float x1 = static_cast<float>(vp.x + vp.width) - margin - w;
     const float y0 = static_cast<float>(vp.y) + badge;
     const float y1 = static_cast<float>(vp.y + vp.height) - margin - h;
-    const PlacedFor now{s, vp.width, vp.height};
-    PlacedFor& placed = gPlacedFor[ImGui::GetID(title)];
+    // When the UI scale or the scene's viewport changes (Ctrl+= on a projector, a resized or
+    // full-screen window), the window is placed again for it: at the old pixel sizes it would
+    // overlap the wider panel and clip its larger text.
+    const UiState::PlacedFor now{s, vp.width, vp.height};
+    UiState::PlacedFor& placed = app.ui.placedFor[static_cast<std::size_t>(id)];
     const ImGuiCond when = placed == now ? ImGuiCond_FirstUseEver : ImGuiCond_Always;
     placed = now;
     ImGui::SetNextWindowPos(ImVec2(x0 + (x1 - x0) * place.anchorX, y0 + (y1 - y0) * place.anchorY),
                             when);
     ImGui::SetNextWindowSize(ImVec2(w, h), when);
     ImGui::SetNextWindowBgAlpha(0.80f);
-    return ImGui::Begin(title, open, ImGuiWindowFlags_NoSavedSettings);
+    return ImGui::Begin(info.title, &(app.show.*info.flag), ImGuiWindowFlags_NoSavedSettings);
 }
 
-OverlayWindow::OverlayWindow(App& app, OverlayId id) {
-    const OverlayInfo& info = overlayInfo(id);
-    open_ = beginOverlayWindow(app, info.title, &(app.show.*info.flag), info.place);
-}
+OverlayWindow::OverlayWindow(App& app, OverlayId id) : open_(beginOverlayWindow(app, id)) {}
 
 OverlayWindow::~OverlayWindow() {
     ImGui::End();

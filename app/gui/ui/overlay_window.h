@@ -19,11 +19,11 @@ constexpr ImU32 kMomentum = IM_COL32(255, 150, 60, 255);
 constexpr ImU32 kCom = IM_COL32(255, 235, 90, 255);
 } // namespace overlay_colors
 
-// Begins a semi-transparent overlay window (ImGui::End() must follow, as with Begin), placed at
-// first use by `place` (and again when the UI scale or the viewport's size changes). The one
-// placement function: every overlay window goes through it.
-bool beginOverlayWindow(const App& app, const char* title, bool* open,
-                        const OverlayPlacement& place);
+// Begins the semi-transparent window of row `id` (ImGui::End() must follow, as with Begin), with
+// the row's title, placed at first use by the row's placement (and again when the UI scale or
+// the viewport's size changes); its close button clears the row's flag. The one placement
+// function: every overlay window goes through it (through OverlayWindow).
+bool beginOverlayWindow(App& app, OverlayId id);
 
 // The window of an overlay row (overlays.h: its title and placement), closed by its close button
 // through the row's flag. Ends the window when it goes out of scope; false while collapsed:

@@ -1,7 +1,5 @@
 #include "ui_style.h"
 
-#include "ui_renderer_gl.h"
-
 #include <imgui.h>
 
 #include <cstdint>
@@ -99,5 +97,4 @@ void uiApplyScale(float scale) {
     setTheme(style);
     style.ScaleAllSizes(scale);
     ImGui::GetStyle() = style;
-    uiRendererFontsChanged();
 }

@@ -5,8 +5,8 @@
 // Creates the ImGui context and sets the theme. `iniPath` null: no ini file (offscreen runs).
 void uiCreateContext(const char* iniPath);
 void uiDestroyContext();
-// Rebuilds the font atlas and style sizes for `scale` (the UI renderer uploads the new atlas at
-// its next NewFrame).
+// Rebuilds the font atlas and style sizes for `scale`. After a change the caller tells the UI
+// renderer (uiRendererFontsChanged), which uploads the new atlas at its next NewFrame.
 void uiApplyScale(float scale);
 // The scale uiApplyScale last applied.
 float uiCurrentScale();
