@@ -21,6 +21,7 @@
 using json = nlohmann::json;
 using scene_json::dumpValue;
 using scene_json::numberList;
+using namespace scene_json; // the typed access below: number(), string(), vec2(), ...
 
 namespace {
 
@@ -34,12 +35,6 @@ constexpr double kMaxMass = 1e15;     // kg (the message says 1e15)
 // m: overlaps up to this much count as touching, so stacks typed in decimals ("exactly
 // touching" up to rounding) are accepted.
 constexpr double kTouchTolerance = 1e-9;
-
-// A value error: thrown by the validators below, turned into a SceneError by parseScene.
-struct ValueError {
-    std::string path;
-    std::string message;
-};
 
 // ---- Syntax: line and column, and a pre-scan for nesting depth and duplicate keys ----
 
@@ -129,7 +124,11 @@ std::string parserMessage(const std::string& what) {
     return out;
 }
 
-// ---- Values: typed access that names the JSON path on failure ----
+} // namespace
+
+// ---- Values: typed access that names the JSON path on failure (scene_json.h) ----
+
+namespace scene_json {
 
 std::string indexPath(const std::string& path, std::size_t i) {
     return path + "[" + std::to_string(i) + "]";
@@ -184,6 +183,10 @@ Vec2 vec2(const json& value, const std::string& path) {
     const std::vector<double> v = numbers(value, path, 2);
     return {v[0], v[1]};
 }
+
+} // namespace scene_json
+
+namespace {
 
 bool isColor(const std::string& s) {
     return s.size() == 7 && s[0] == '#' && std::all_of(s.begin() + 1, s.end(), [](char c) {
@@ -354,19 +357,19 @@ SceneResult failure(std::string where, std::string message) {
 
 } // namespace
 
-SceneResult parseScene(const std::string& text, const std::string& sourceName) {
-    if (text.size() > kMaxFileBytes) return failure(sourceName, "larger than 64 MiB");
+std::optional<SceneError> parseJsonText(const std::string& text, const std::string& sourceName,
+                                        json& root) {
+    if (text.size() > kMaxFileBytes) return SceneError{sourceName, "larger than 64 MiB"};
     if (std::all_of(text.begin(), text.end(),
                     [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }))
-        return failure(placeName(sourceName, text, text.size()), "the file is empty");
+        return SceneError{placeName(sourceName, text, text.size()), "the file is empty"};
     if (auto problem = prescan(text, false)) // depth first: the parser must never see it
-        return failure(placeName(sourceName, text, problem->index), problem->message);
-    json root;
+        return SceneError{placeName(sourceName, text, problem->index), problem->message};
     try {
         root = json::parse(text);
     } catch (const json::parse_error& e) {
         const std::size_t index = e.byte > 0 ? e.byte - 1 : 0;
-        return failure(placeName(sourceName, text, index), parserMessage(e.what()));
+        return SceneError{placeName(sourceName, text, index), parserMessage(e.what())};
     } catch (const json::exception& e) {
         // Number overflow (1e400) has no position in nlohmann; find the number in the text.
         std::string message = e.what();
@@ -376,14 +379,21 @@ SceneResult parseScene(const std::string& text, const std::string& sourceName) {
             index = text.find(message.substr(quote + 1, message.size() - quote - 2));
         message =
             message.substr(message.find("] ") == std::string::npos ? 0 : message.find("] ") + 2);
-        if (index == std::string::npos) return failure(sourceName, message);
-        return failure(placeName(sourceName, text, index), message);
+        if (index == std::string::npos) return SceneError{sourceName, message};
+        return SceneError{placeName(sourceName, text, index), message};
     }
     // The parser stops at a NUL byte as at the end of the text: junk after it would pass unseen.
     if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
-        return failure(placeName(sourceName, text, nul), "a NUL byte: this is not a text file");
+        return SceneError{placeName(sourceName, text, nul), "a NUL byte: this is not a text file"};
     if (auto problem = prescan(text, true))
-        return failure(placeName(sourceName, text, problem->index), problem->message);
+        return SceneError{placeName(sourceName, text, problem->index), problem->message};
+    return std::nullopt;
+}
+
+SceneResult parseScene(const std::string& text, const std::string& sourceName) {
+    json root;
+    if (auto error = parseJsonText(text, sourceName, root))
+        return failure(error->where, error->message);
     try {
         SceneResult r;
         r.scene = parseValue(root);
@@ -393,20 +403,26 @@ SceneResult parseScene(const std::string& text, const std::string& sourceName) {
     }
 }
 
-SceneResult loadSceneFile(const std::string& path) {
+std::optional<SceneError> readJsonFile(const std::string& path, std::string& text) {
     // Only regular files: a directory cannot be read and a FIFO could block forever.
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) return failure(path, "no such file");
-    if (!std::filesystem::is_regular_file(path, ec)) return failure(path, "not a regular file");
+    if (!std::filesystem::exists(path, ec)) return SceneError{path, "no such file"};
+    if (!std::filesystem::is_regular_file(path, ec)) return SceneError{path, "not a regular file"};
     std::ifstream in(path, std::ios::binary);
-    if (!in) return failure(path, "cannot open the file");
+    if (!in) return SceneError{path, "cannot open the file"};
     in.seekg(0, std::ios::end);
     const std::streamoff size = in.tellg();
-    if (size < 0) return failure(path, "cannot read the file");
+    if (size < 0) return SceneError{path, "cannot read the file"};
     if (static_cast<std::uint64_t>(size) > kMaxFileBytes)
-        return failure(path, "larger than 64 MiB");
+        return SceneError{path, "larger than 64 MiB"};
     in.seekg(0, std::ios::beg);
-    std::string text(static_cast<std::size_t>(size), '\0');
-    if (size > 0 && !in.read(&text[0], size)) return failure(path, "cannot read the file");
+    text.assign(static_cast<std::size_t>(size), '\0');
+    if (size > 0 && !in.read(&text[0], size)) return SceneError{path, "cannot read the file"};
+    return std::nullopt;
+}
+
+SceneResult loadSceneFile(const std::string& path) {
+    std::string text;
+    if (auto error = readJsonFile(path, text)) return failure(error->where, error->message);
     return parseScene(text, path);
 }

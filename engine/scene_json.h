@@ -1,7 +1,14 @@
-// Shared by scene.cpp (error messages) and scene_save.cpp (writing): JSON values as text.
+// Shared by scene.cpp (error messages), scene_save.cpp (writing) and other JSON file formats
+// built on scene files (lessons): JSON values as text, and the scene loader's file reading and
+// syntax checks, whose errors name the place (file:line:column).
 #pragma once
 
+#include "scene.h"
+
 #include <nlohmann/json.hpp>
+
+#include <optional>
+#include <vector>
 
 #include <initializer_list>
 #include <string>
@@ -20,4 +27,30 @@ inline std::string numberList(std::initializer_list<double> xs) {
     return out + "]";
 }
 
+// A value error at a JSON path ("blocks[3].mass"): thrown by the typed access below, turned into
+// a SceneError by the loader that called it.
+struct ValueError {
+    std::string path;
+    std::string message;
+};
+
+std::string indexPath(const std::string& path, std::size_t i);        // "blocks" -> "blocks[3]"
+std::string keyPath(const std::string& path, const std::string& key); // "world" -> "world.dt"
+// Throws for a key of `object` not in `known`.
+void checkKeys(const nlohmann::json& object, const std::string& path,
+               std::initializer_list<const char*> known);
+const nlohmann::json& requireObject(const nlohmann::json& value, const std::string& path);
+double number(const nlohmann::json& value, const std::string& path); // finite
+std::string string(const nlohmann::json& value, const std::string& path);
+// An array of exactly `n` finite numbers, each at most 1e9 in size.
+std::vector<double> numbers(const nlohmann::json& value, const std::string& path, std::size_t n);
+Vec2 vec2(const nlohmann::json& value, const std::string& path);
+
 } // namespace scene_json
+
+// Reads a regular file of at most the scene format's size limit into `text`.
+std::optional<SceneError> readJsonFile(const std::string& path, std::string& text);
+// Parses JSON text with the scene loader's checks (size, emptiness, nesting depth, NUL bytes,
+// duplicate keys); a syntax error is placed as "source:line:column".
+std::optional<SceneError> parseJsonText(const std::string& text, const std::string& sourceName,
+                                        nlohmann::json& root);

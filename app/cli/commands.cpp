@@ -1,6 +1,7 @@
 // sandbox-cli run and validate (SPEC.md, "Command-line contract").
 #include "commands.h"
 
+#include "lesson_runner.h"
 #include "scene.h"
 #include "world.h"
 
@@ -189,12 +190,57 @@ int runCommand(const RunRequest& request, std::ostream& out, std::ostream& err) 
     return kExitOk;
 }
 
-int validateCommand(const std::string& scenePath, std::ostream& out, std::ostream& err) {
-    const SceneResult loaded = loadSceneFile(scenePath);
+int validateCommand(const std::string& path, std::ostream& out, std::ostream& err,
+                    const LessonContext& lessons) {
+    if (isLessonFile(path)) {
+        const LessonResult lesson = loadLessonFile(path, lessons);
+        if (!lesson.lesson) {
+            err << lesson.error.text() << "\n";
+            return kExitBadInput;
+        }
+        const std::vector<std::string> failures = checkLesson(*lesson.lesson);
+        for (const std::string& f : failures) err << f << "\n";
+        if (!failures.empty()) return kExitBadInput;
+        out << "ok\n";
+        return kExitOk;
+    }
+    const SceneResult loaded = loadSceneFile(path);
     if (!loaded.scene) {
         err << loaded.error.text() << "\n";
         return kExitBadInput;
     }
     out << "ok\n";
     return kExitOk;
+}
+
+int lessonCommand(const std::string& path, std::ostream& out, std::ostream& err,
+                  const LessonContext& lessons) {
+    const LessonResult loaded = loadLessonFile(path, lessons);
+    if (!loaded.lesson) {
+        err << loaded.error.text() << "\n";
+        return kExitBadInput;
+    }
+    const Lesson& lesson = *loaded.lesson;
+    out << lesson.name << ": " << lesson.steps.size() << " steps\n";
+    std::vector<std::string> failures;
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+        const LessonStep& step = lesson.steps[i];
+        const StepRun run = runStepToPause(step);
+        out << i + 1 << ". " << step.title << ": " << (run.reached ? "paused" : "NOT PAUSED")
+            << " at t = " << run.world.time << " s (frame " << run.progress.frames << "), "
+            << run.progress.collisions << " collisions, " << methodName(run.world.settings.method)
+            << "\n";
+        for (std::size_t b = 0; b < run.world.blocks.size() && b < 12; ++b) {
+            const Block& block = run.world.blocks[b];
+            out << "     " << std::left << std::setw(14)
+                << (step.scene.blocks[b].name.empty() ? "#" + std::to_string(b)
+                                                      : step.scene.blocks[b].name)
+                << std::right << " position " << block.position << "  velocity " << block.velocity
+                << "\n";
+        }
+        const std::vector<std::string> f = checkStep(step, run);
+        failures.insert(failures.end(), f.begin(), f.end());
+    }
+    for (const std::string& f : failures) err << f << "\n";
+    return failures.empty() ? kExitOk : kExitBadInput;
 }

@@ -1,6 +1,8 @@
 // The sandbox-cli subcommands as plain functions: main.cpp only parses the command line.
 #pragma once
 
+#include "lesson.h"
+
 #include <cstdint>
 #include <iosfwd>
 #include <optional>
@@ -28,5 +30,11 @@ constexpr std::int64_t kDefaultSteps = 600;
 
 // Simulates the scene and prints the summary to `out`; errors go to `err`. Returns an ExitCode.
 int runCommand(const RunRequest& request, std::ostream& out, std::ostream& err);
-// Prints "ok" to `out`, or the error (naming its place) to `err`. Returns an ExitCode.
-int validateCommand(const std::string& scenePath, std::ostream& out, std::ostream& err);
+// Prints "ok" to `out`, or the error (naming its place) to `err`. Returns an ExitCode. A file with
+// a "steps" key is a lesson (docs/lesson-format.md), anything else a scene.
+int validateCommand(const std::string& path, std::ostream& out, std::ostream& err,
+                    const LessonContext& lessons = {});
+// Runs every step of a lesson to its pause point and prints, per step, where it paused and each
+// block's position and velocity there, then every failed expectation (exit 1 if any).
+int lessonCommand(const std::string& path, std::ostream& out, std::ostream& err,
+                  const LessonContext& lessons = {});

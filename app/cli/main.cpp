@@ -4,6 +4,9 @@
 #include "commands.h"
 
 #include <CLI/CLI.hpp>
+#ifdef SANDBOX_OVERLAY_TABLE
+#include "options.h" // the overlay table's names, for lesson files
+#endif
 
 #include <exception>
 #include <iostream>
@@ -51,8 +54,16 @@ int main(int argc, char** argv) {
 
     std::string validatePath;
     CLI::App* validateCmd = app.add_subcommand(
-        "validate", "Check a scene file: print ok (exit 0) or the error and its place (exit 1).");
-    validateCmd->add_option("SCENE", validatePath, "Scene file (JSON, format v1)")->required();
+        "validate", "Check a scene or lesson file: print ok (exit 0) or the error and its place "
+                    "(exit 1).");
+    validateCmd->add_option("FILE", validatePath, "Scene file (format v1) or lesson file (JSON)")
+        ->required();
+
+    std::string lessonPath;
+    CLI::App* lessonCmd = app.add_subcommand(
+        "lesson", "Run every step of a lesson to its pause point: print where each paused and "
+                  "the blocks there, then any failed expectation (exit 1).");
+    lessonCmd->add_option("LESSON", lessonPath, "Lesson file (JSON)")->required();
 
     AnalysisRequest tradeoff;
     tradeoff.scenesDir = SANDBOX_SCENES_DIR;
@@ -90,7 +101,13 @@ int main(int argc, char** argv) {
     }
 
     try {
-        if (*validateCmd) return validateCommand(validatePath, std::cout, std::cerr);
+        LessonContext lessons;
+        lessons.scenesDir = SANDBOX_SCENES_DIR;
+#ifdef SANDBOX_OVERLAY_TABLE
+        lessons.overlayNames = overlayNames();
+#endif
+        if (*validateCmd) return validateCommand(validatePath, std::cout, std::cerr, lessons);
+        if (*lessonCmd) return lessonCommand(lessonPath, std::cout, std::cerr, lessons);
         if (*tradeoffCmd) return tradeoffCommand(tradeoff, std::cout, std::cerr);
         if (*stabilityCmd) return stabilityCommand(stability, std::cout, std::cerr);
         auto given = [](CLI::Option* option, const std::string& value) {

@@ -6,74 +6,14 @@
 #   xvfb_e2e.sh SANDBOX PNG_DIFF CONVERT SCENE WORKDIR
 set -u
 sandbox=$1 png_diff=$2 convert=$3 scene=$4 work=$5
-rm -rf "$work"
-mkdir -p "$work/config"
-log=$work/app.log
-xvfb_pid= app_pid=
-
-cleanup() {
-    [ -n "$app_pid" ] && kill "$app_pid" 2>/dev/null
-    [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null
-    wait 2>/dev/null
-}
-trap cleanup EXIT
-
-fail() {
-    echo "FAIL: $*"
-    echo "--- app log ($log)"
-    cat "$log" 2>/dev/null
-    echo "--- screenshots in $work"
-    exit 1
-}
-
-# A free display number: no lock file and no socket; Xvfb must come up within 10 s.
-for n in $(seq 91 140); do
-    [ -e "/tmp/.X$n-lock" ] || [ -e "/tmp/.X11-unix/X$n" ] && continue
-    Xvfb ":$n" -screen 0 1280x800x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
-    xvfb_pid=$!
-    for _ in $(seq 100); do
-        [ -e "/tmp/.X11-unix/X$n" ] && break
-        kill -0 "$xvfb_pid" 2>/dev/null || break
-        sleep 0.1
-    done
-    if [ -e "/tmp/.X11-unix/X$n" ] && kill -0 "$xvfb_pid" 2>/dev/null; then
-        export DISPLAY=":$n"
-        break
-    fi
-    kill "$xvfb_pid" 2>/dev/null
-    xvfb_pid=
-done
-[ -n "$xvfb_pid" ] || fail "could not start Xvfb"
-echo "Xvfb on $DISPLAY"
-
-export XDG_CONFIG_HOME=$work/config
-timeout 150 "$sandbox" "$scene" --verbose --size 1280x720 >"$log" 2>&1 &
-app_pid=$!
-
-# wait_for TEXT [SECONDS]: until a log line contains TEXT.
-wait_for() {
-    local limit=$((${2:-10} * 10))
-    for _ in $(seq "$limit"); do
-        grep -q -- "$1" "$log" && return 0
-        kill -0 "$app_pid" 2>/dev/null || fail "the app exited while waiting for '$1'"
-        sleep 0.1
-    done
-    fail "no '$1' in the log"
-}
-shot() { xwd -root -silent | "$convert" xwd:- "png:$work/$1.png" || fail "screenshot $1"; }
-# differing PNG_A PNG_B X Y W H: number of differing pixels in the region.
-differing() { "$png_diff" "$work/$1.png" "$work/$2.png" "$3" "$4" "$5" "$6" || fail "png_diff $1 $2"; }
+. "$(dirname "$0")/xvfb_common.sh"
+start_app "$scene"
 
 wait_for "window ready" 30
 # The panel is 350 px wide at UI scale 1; the scene is right of it, the status badge at its top.
 scene_region="360 40 900 660"
 badge_region="350 0 500 36"
-# With no window manager, keys go to the window under the pointer: keep it inside the window,
-# below the arena's bottom wall (nothing there to hover), and give the window the focus.
-park() { xdotool mousemove 1275 715; }
-park
-win=$(xdotool search --sync --limit 1 --name "Collision sandbox") || fail "no window found"
-xdotool windowfocus --sync "$win" 2>/dev/null || true
+focus_window
 
 # The scene moves.
 shot moving_a; sleep 0.6; shot moving_b

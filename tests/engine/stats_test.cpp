@@ -118,25 +118,26 @@ TEST(Statistics, MaxOverlapSeesBlocksAndWalls) {
 // addStep is the one place totals add up: counts summed, the overlap maximised (not summed), the
 // time summed. Exact: small integers and binary fractions.
 TEST(Statistics, StepTotalsAddCountsAndKeepTheLargestOverlap) {
-    StepTotals totals;
-    StepStats a;
+    StepStats a, b;
     a.collisions = 3;
     a.events = 2;
     a.eventCapHits = 1;
     a.maxPenetration = 0.25;
     a.stepMs = 0.5;
-    StepStats b;
     b.collisions = 4;
     b.maxPenetration = 0.125;
     b.stepMs = 0.25;
-    addStep(totals, a);
-    addStep(totals, b);
-    EXPECT_EQ(totals.steps, 2);
-    EXPECT_EQ(totals.collisions, 7);
-    EXPECT_EQ(totals.events, 2);
-    EXPECT_EQ(totals.eventCapHits, 1);
-    EXPECT_EQ(totals.maxPenetration, 0.25);
-    EXPECT_EQ(totals.stepMs, 0.75);
+    StepTotals t;
+    addStep(t, a);
+    addStep(t, b);
+    // steps, collisions, events, cap hits, largest overlap (m), time (ms).
+    const std::vector<double> got = {static_cast<double>(t.steps),
+                                     static_cast<double>(t.collisions),
+                                     static_cast<double>(t.events),
+                                     static_cast<double>(t.eventCapHits),
+                                     t.maxPenetration,
+                                     t.stepMs};
+    EXPECT_EQ(got, (std::vector<double>{2, 7, 2, 1, 0.25, 0.75}));
 }
 
 // Over a real run the totals are the per-step numbers added up.

@@ -82,6 +82,7 @@ bool runProgram(const std::vector<std::string>& args) {
 }
 
 int screenshot(App& app, Offscreen& off, const Options& o) {
+    if (app.lesson.active()) lessonShowPausePoint(app); // the step as the window shows it there
     for (int i = 0; i < o.frames; ++i) stepSimulation(app);
     if (app.show.cost) app.cost.runSweepNow(quickTradeoffSweep(app.scenesDir)); // the chart
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off);
@@ -127,6 +128,33 @@ int record(App& app, Offscreen& off, const Options& o) {
     return 0;
 }
 
+// One PNG per lesson step, each after its pause point (answers revealed): a handout.
+int recordSteps(App& app, Offscreen& off, const Options& o) {
+    std::error_code ec;
+    std::filesystem::create_directories(o.recordSteps, ec);
+    if (ec) {
+        std::fprintf(stderr, "sandbox: cannot create %s: %s\n", o.recordSteps.c_str(),
+                     ec.message().c_str());
+        return 1;
+    }
+    if (!app.lesson.active()) {
+        std::fprintf(stderr, "sandbox: --record-steps needs a lesson\n");
+        return 1;
+    }
+    const std::size_t steps = app.lesson.lesson->steps.size();
+    char name[32];
+    for (std::size_t i = 0; i < steps; ++i) {
+        enterStep(app, i);
+        lessonShowPausePoint(app);
+        if (app.show.cost) app.cost.runSweepNow(quickTradeoffSweep(app.scenesDir));
+        for (int k = 0; k < kSettleFrames; ++k) renderFrame(app, off);
+        std::snprintf(name, sizeof name, "/step_%02zu.png", i + 1);
+        if (!writeFrame(off, o.recordSteps + name)) return 1;
+    }
+    std::printf("wrote %zu steps to %s\n", steps, o.recordSteps.c_str());
+    return 0;
+}
+
 int benchmark(App& app, Offscreen& off, const Options& o) {
     using Clock = std::chrono::steady_clock;
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off); // shaders compile here
@@ -154,7 +182,8 @@ int benchmark(App& app, Offscreen& off, const Options& o) {
 
 int runOffscreen(const Options& options) {
     Options o = options;
-    if (o.screenshot.empty() && o.record.empty() && o.benchmarkFrames <= 0) {
+    if (o.screenshot.empty() && o.record.empty() && o.benchmarkFrames <= 0 &&
+        o.recordSteps.empty()) {
         o.screenshot = "sandbox-screenshot.png";
     }
     App app;
@@ -182,6 +211,8 @@ int runOffscreen(const Options& options) {
     int code = 0;
     if (o.benchmarkFrames > 0)
         code = benchmark(app, off, o);
+    else if (!o.recordSteps.empty())
+        code = recordSteps(app, off, o);
     else if (!o.record.empty())
         code = record(app, off, o);
     else

@@ -20,7 +20,12 @@ static_assert(keys::kSpace == GLFW_KEY_SPACE && keys::kMinus == GLFW_KEY_MINUS &
                   keys::kTab == GLFW_KEY_TAB && keys::kDelete == GLFW_KEY_DELETE &&
                   keys::kF1 == GLFW_KEY_F1 && keys::kF11 == GLFW_KEY_F11 &&
                   keys::kKeypadSubtract == GLFW_KEY_KP_SUBTRACT &&
-                  keys::kKeypadAdd == GLFW_KEY_KP_ADD,
+                  keys::kKeypadAdd == GLFW_KEY_KP_ADD && keys::k0 == GLFW_KEY_0 &&
+                  keys::kEnter == GLFW_KEY_ENTER && keys::kRight == GLFW_KEY_RIGHT &&
+                  keys::kLeft == GLFW_KEY_LEFT && keys::kPageUp == GLFW_KEY_PAGE_UP &&
+                  keys::kPageDown == GLFW_KEY_PAGE_DOWN && keys::kHome == GLFW_KEY_HOME &&
+                  keys::kEnd == GLFW_KEY_END && keys::kKeypad0 == GLFW_KEY_KP_0 &&
+                  keys::kKeypadEnter == GLFW_KEY_KP_ENTER,
               "input_map.h key codes must match GLFW's");
 
 namespace {

@@ -32,6 +32,8 @@ LoggedState snapshotForLog(const App& app) {
     s.blocks = static_cast<int>(app.world.blocks.size());
     s.selected = app.selected;
     s.trailLength = app.trails.length();
+    if (app.lesson.active())
+        s.lesson = lessonHeading(app.lesson) + (app.lesson.revealed ? " (answer)" : "");
     return s;
 }
 
@@ -39,6 +41,7 @@ std::vector<std::string> describeChanges(const LoggedState& a, const LoggedState
     std::vector<std::string> out;
     auto onOff = [](bool v) { return v ? std::string("on") : std::string("off"); };
     if (a.scene != b.scene) out.push_back("scene: " + b.scene);
+    if (a.lesson != b.lesson && !b.lesson.empty()) out.push_back("lesson step " + b.lesson);
     if (a.paused != b.paused) out.push_back(b.paused ? "paused" : "resumed");
     if (a.slowMotion != b.slowMotion) out.push_back("slow motion: " + onOff(b.slowMotion));
     for (const OverlayInfo& o : kOverlays) {

@@ -26,6 +26,7 @@ struct LoggedState {
     int blocks = 0;
     int selected = -1;
     int trailLength = 0;
+    std::string lesson; // "3 / 20 · title", with " (answer)" once revealed
 };
 
 LoggedState snapshotForLog(const App& app);

@@ -11,8 +11,31 @@ std::string builtInScenesDirectory() {
 bool setupApp(App& app, const Options& options, const std::string& lastScene, std::string* error) {
     app.scenesDir = findScenesDirectory(executableDirectory(), builtInScenesDirectory());
     app.sceneFiles = listScenes(app.scenesDir);
+    app.lessonsDir = findDataDirectory(executableDirectory(), builtInLessonsDirectory(), "lessons");
+    app.lessonFiles = listScenes(app.lessonsDir);
     app.verbose = options.verbose;
     if (options.showGiven) applyShowSet(app, options.show);
+
+    // A lesson: --lesson NAME, or a lesson file given as the scene.
+    std::string lesson;
+    if (!options.lesson.empty()) {
+        lesson = resolveScenePath(options.lesson, app.lessonsDir); // NAME, NAME.json or a path
+    } else if (!options.scene.empty()) {
+        const std::string path = resolveScenePath(options.scene, app.scenesDir);
+        if (isLessonFile(path)) lesson = path;
+    }
+    if (!lesson.empty()) {
+        const std::size_t first = options.step > 0 ? static_cast<std::size_t>(options.step - 1) : 0;
+        if (!openLesson(app, lesson, first)) {
+            if (error) *error = app.error;
+            return false;
+        }
+        return true;
+    }
+    if (options.step > 0) {
+        if (error) *error = "--step needs a lesson (--lesson NAME or a lesson file)";
+        return false;
+    }
 
     if (!options.scene.empty()) {
         const std::string path = resolveScenePath(options.scene, app.scenesDir);

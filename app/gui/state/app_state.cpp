@@ -50,6 +50,7 @@ bool loadScene(App& app, const std::string& path) {
         app.error = result.error.text();
         return false;
     }
+    closeLesson(app);
     setScene(app, *result.scene, path);
     app.error.clear();
     app.note.clear();
@@ -93,6 +94,7 @@ void stepSimulation(App& app) {
         app.paused = true;
         app.pausedByCollision = true;
     }
+    lessonAfterFrame(app);
 }
 
 bool isReplaying(const App& app) {
@@ -210,14 +212,19 @@ double panelWidth(float uiScale, double displayWidth) {
 }
 
 ScreenRect sceneViewport(const App& app, double displayWidth, double displayHeight) {
-    if (!app.uiVisible) return {0.0, 0.0, displayWidth, displayHeight};
+    const double top = app.lesson.active() ? std::min(app.captionHeight, displayHeight * 0.5) : 0.0;
+    const double height = std::max(1.0, displayHeight - top);
+    if (!app.uiVisible) return {0.0, top, displayWidth, height};
     const double panel = panelWidth(app.uiScale, displayWidth);
-    return {panel, 0.0, std::max(1.0, displayWidth - panel), displayHeight};
+    return {panel, top, std::max(1.0, displayWidth - panel), height};
 }
 
 void updateCamera(App& app, double displayWidth, double displayHeight) {
     app.camera.setViewport(sceneViewport(app, displayWidth, displayHeight));
-    if (app.autoFit) app.camera.fit(app.world.bounds, 36.0 * static_cast<double>(app.uiScale));
+    if (app.autoFit) {
+        app.camera.fit(app.fitBounds ? *app.fitBounds : app.world.bounds,
+                       36.0 * static_cast<double>(app.uiScale));
+    }
 }
 
 void setBlockKind(App& app, int index, BodyKind kind) {

@@ -7,6 +7,7 @@
 #include "camera.h"
 #include "cost.h"
 #include "fixed_step.h"
+#include "lesson_session.h"
 #include "mouse_tool.h"
 #include "options.h"
 #include "palette.h"
@@ -21,6 +22,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,6 +90,7 @@ struct App : Run {
     // View.
     Camera camera;
     bool autoFit = true; // refit the camera when the viewport changes, until the user zooms/pans
+    std::optional<Bounds> fitBounds; // what fitting shows (a lesson step's camera); none: bounds
     Overlays show;
     bool overlaysChosen = false; // --show given: scenes no longer pick the default overlays
     bool uiVisible = true;
@@ -117,6 +120,11 @@ struct App : Run {
     // The shipped scenes (the picker) and where they are.
     std::string scenesDir;
     std::vector<SceneEntry> sceneFiles;
+    // The open lesson (lesson_session.h), the shipped lessons (the picker) and where they are.
+    LessonSession lesson;
+    std::string lessonsDir;
+    std::vector<SceneEntry> lessonFiles;
+    double captionHeight = 0.0; // px the lesson's caption bar takes at the top of the scene
     // --verbose: print state changes to stdout.
     bool verbose = false;
     LoggedState logged;
@@ -135,8 +143,8 @@ void setBlockKind(App& app, int index, BodyKind kind);
 // Resizes block `index` when the new size fits without overlap; false (nothing changed) if not.
 bool setBlockSize(App& app, int index, Vec2 size);
 
-// Loads `path` as the current scene. On error, keeps the current scene, sets app.error and
-// returns false.
+// Loads `path` as the current scene (closing a lesson). On error, keeps the current scene, sets
+// app.error and returns false.
 bool loadScene(App& app, const std::string& path);
 // Uses an already parsed scene (tests, and the first scene when none can be loaded).
 void setScene(App& app, const Scene& scene, const std::string& path);

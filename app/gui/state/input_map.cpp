@@ -2,7 +2,8 @@
 
 const std::vector<KeyBinding>& keyBindings() {
     static const std::vector<KeyBinding> bindings{
-        {keys::kR, false, Action::Reset, "R", "Reset to the scene as loaded"},
+        {keys::kR, false, Action::Reset, "R",
+         "Reset to the scene as loaded (in a lesson: restart the step)"},
         {keys::kP, false, Action::TogglePause, "P", "Pause / resume"},
         {keys::kSpace, false, Action::ToggleSlowMotion, "Space", "Slow motion (5 frames/s)"},
         {keys::kD, false, Action::ToggleTrails, "D", "Draw trajectories on / off"},
@@ -21,8 +22,35 @@ const std::vector<KeyBinding>& keyBindings() {
         {keys::kS, true, Action::Save, "Ctrl+S", "Save the current state as a scene"},
         {keys::kDelete, false, Action::DeleteSelected, "Delete", "Remove the selected block"},
         {keys::kEscape, false, Action::Quit, "Esc", "Quit"},
+        {keys::kPageDown, false, Action::LessonNext, "PageDown",
+         "Lesson: answer, then the next step"},
+        {keys::kRight, false, Action::LessonNext, "Right", "Lesson: answer, then the next step"},
+        {keys::kPageUp, false, Action::LessonPrevious, "PageUp", "Lesson: the previous step"},
+        {keys::kLeft, false, Action::LessonPrevious, "Left", "Lesson: the previous step"},
+        {keys::kHome, false, Action::LessonFirst, "Home", "Lesson: the first step"},
+        {keys::kEnd, false, Action::LessonLast, "End", "Lesson: the last step"},
+        {keys::kEnter, false, Action::LessonJump, "0-9, Enter", "Lesson: go to step number ..."},
+        {keys::kKeypadEnter, false, Action::LessonJump, "Keypad Enter",
+         "Lesson: go to step number ...", false},
     };
+    static const std::vector<KeyBinding> withDigits = [] {
+        std::vector<KeyBinding> all = bindings;
+        for (int d = 0; d <= 9; ++d) {
+            all.push_back({keys::k0 + d, false, Action::LessonDigit, "0-9",
+                           "Lesson: a digit of a step number", false});
+            all.push_back({keys::kKeypad0 + d, false, Action::LessonDigit, "Keypad 0-9",
+                           "Lesson: a digit of a step number", false});
+        }
+        return all;
+    }();
+    return withDigits;
     return bindings;
+}
+
+int digitOfKey(int key) {
+    if (key >= keys::k0 && key <= keys::k0 + 9) return key - keys::k0;
+    if (key >= keys::kKeypad0 && key <= keys::kKeypad0 + 9) return key - keys::kKeypad0;
+    return -1;
 }
 
 Action actionForKey(int key, bool ctrl) {
@@ -70,6 +98,18 @@ const char* actionName(Action action) {
         return "quit";
     case Action::Save:
         return "save";
+    case Action::LessonNext:
+        return "lesson-next";
+    case Action::LessonPrevious:
+        return "lesson-previous";
+    case Action::LessonFirst:
+        return "lesson-first";
+    case Action::LessonLast:
+        return "lesson-last";
+    case Action::LessonDigit:
+        return "lesson-digit";
+    case Action::LessonJump:
+        return "lesson-jump";
     }
     return "none";
 }

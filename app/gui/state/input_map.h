@@ -18,13 +18,23 @@ constexpr int kP = 80;
 constexpr int kR = 82;
 constexpr int kS = 83;
 constexpr int kV = 86;
+constexpr int k0 = 48; // k0 + d for the digit d
 constexpr int kEscape = 256;
+constexpr int kEnter = 257;
 constexpr int kTab = 258;
 constexpr int kDelete = 261;
+constexpr int kRight = 262;
+constexpr int kLeft = 263;
+constexpr int kPageUp = 266;
+constexpr int kPageDown = 267;
+constexpr int kHome = 268;
+constexpr int kEnd = 269;
 constexpr int kF1 = 290;
 constexpr int kF11 = 300;
+constexpr int kKeypad0 = 320; // kKeypad0 + d for the digit d
 constexpr int kKeypadSubtract = 333;
 constexpr int kKeypadAdd = 334;
+constexpr int kKeypadEnter = 335;
 } // namespace keys
 
 enum class Action {
@@ -46,6 +56,12 @@ enum class Action {
     DeleteSelected,   // Delete
     Quit,             // Esc
     Save,             // Ctrl+S: save the current state (to the path in the Save field)
+    LessonNext,       // PageDown, Right: the answer, or the next step of the lesson
+    LessonPrevious,   // PageUp, Left
+    LessonFirst,      // Home
+    LessonLast,       // End
+    LessonDigit,      // 0-9: a step number (digitOfKey), then...
+    LessonJump,       // Enter: go to it
 };
 
 // A key press as the window reports it (queued by the window backend, so a tap shorter than a
@@ -61,11 +77,14 @@ struct KeyBinding {
     Action action;
     const char* keyName;     // as shown in the Help window
     const char* description; // as shown in the Help window
+    bool listed = true;      // in the Help window (one row stands for the ten digit keys)
 };
 
 // Every binding, in the order the Help window lists them.
 const std::vector<KeyBinding>& keyBindings();
 // The action for `key` pressed with (or without) Ctrl; Action::None when unbound.
 Action actionForKey(int key, bool ctrl);
+// The digit a key types (0-9, top row or keypad); -1 for other keys.
+int digitOfKey(int key);
 // A short name for logs ("reset", "pause", ...).
 const char* actionName(Action action);

@@ -12,6 +12,21 @@ std::string showNames() {
     return names;
 }
 
+std::vector<std::string> overlayNames() {
+    std::vector<std::string> names;
+    for (const OverlayInfo& o : kOverlays) names.emplace_back(o.name);
+    return names;
+}
+
+bool setOverlay(Overlays& overlays, const std::string& name, bool on) {
+    for (const OverlayInfo& o : kOverlays) {
+        if (name != o.name) continue;
+        overlays.*o.flag = on;
+        return true;
+    }
+    return false;
+}
+
 bool parseShowList(const std::string& text, ShowSet& out, std::string* error) {
     ShowSet show;
     std::istringstream in(text);
@@ -24,14 +39,7 @@ bool parseShowList(const std::string& text, ShowSet& out, std::string* error) {
             show.none = true;
             continue;
         }
-        bool known = false;
-        for (const OverlayInfo& o : kOverlays) {
-            if (name == o.name) {
-                show.overlays.*o.flag = true;
-                known = true;
-            }
-        }
-        if (!known) {
+        if (!setOverlay(show.overlays, name, true)) {
             if (error) {
                 *error = "unknown --show name '" + name + "' (expected " + showNames() + ")";
             }
@@ -77,6 +85,12 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_option("--ui-scale", o.uiScale, "UI scale (0.75 to 3; e.g. 1.5 on a projector)")
         ->check(CLI::Range(0.75f, 3.0f));
     app.add_flag("--verbose", o.verbose, "Print state changes (pause, method, sliders) to stdout");
+    app.add_option("--lesson", o.lesson,
+                   "Open a lesson: a shipped lesson's name (lecture3) or a lesson file");
+    app.add_option("--step", o.step, "Start the lesson at step N (1 is the first)")
+        ->check(CLI::Range(1, 1000000));
+    app.add_option("--record-steps", o.recordSteps,
+                   "Offscreen: write one PNG per lesson step (after its pause point) here");
     app.set_version_flag("--version", "sandbox 0.1");
     try {
         app.parse(argc, argv);
@@ -87,6 +101,9 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
             std::string error;
             if (!parseShowList(show, o.show, &error)) throw CLI::ValidationError("--show", error);
             o.showGiven = true;
+        }
+        if (!o.recordSteps.empty() && o.lesson.empty() && o.scene.empty()) {
+            throw CLI::ValidationError("--record-steps", "needs a lesson (--lesson NAME)");
         }
         if (!o.record.empty() && o.frames <= 0) {
             throw CLI::ValidationError("--record", "needs --frames N (N > 0)");

@@ -6,6 +6,7 @@
 #include "overlays.h"
 
 #include <string>
+#include <vector>
 
 // A --show LIST: which overlays (names from the table in overlays.h), and "none" (no panels
 // and no overlays).
@@ -31,8 +32,15 @@ struct Options {
     int benchmarkFrames = 0; // offscreen: render this many frames and print ms per frame
     float uiScale = 0.0f;    // 0: the saved setting (window) or 1 (offscreen)
     bool verbose = false;    // print state changes (pause, method, sliders...) to stdout
+    std::string lesson;      // --lesson NAME or file (docs/lesson-format.md)
+    int step = 0;            // --step N (1-based) of the lesson; 0: the first
+    std::string recordSteps; // offscreen: one PNG per lesson step into this directory
 };
 
+// The overlay names, in the table's order (what --show and lesson files may name).
+std::vector<std::string> overlayNames();
+// Turns the overlay called `name` on or off; false for an unknown name.
+bool setOverlay(Overlays& overlays, const std::string& name, bool on);
 // Parses a comma-separated --show list; false with a message for an unknown name.
 // "none, trails, vectors, ...": the names --show accepts.
 std::string showNames();
@@ -51,5 +59,6 @@ ParsedOptions parseOptions(int argc, const char* const* argv);
 
 // True when the run renders offscreen rather than opening a window.
 inline bool wantsOffscreen(const Options& o) {
-    return !o.screenshot.empty() || !o.record.empty() || o.benchmarkFrames > 0;
+    return !o.screenshot.empty() || !o.record.empty() || o.benchmarkFrames > 0 ||
+           !o.recordSteps.empty();
 }

@@ -28,14 +28,19 @@ std::string executableDirectory() {
 }
 
 std::string findScenesDirectory(const std::string& exeDir, const std::string& builtInDir) {
+    return findDataDirectory(exeDir, builtInDir, "scenes");
+}
+
+std::string findDataDirectory(const std::string& exeDir, const std::string& builtInDir,
+                              const std::string& folder) {
     std::vector<fs::path> candidates;
     if (!exeDir.empty()) {
-        candidates.push_back(fs::path(exeDir) / "scenes");
-        candidates.push_back(fs::path(exeDir) / ".." / "share" / "collision-sandbox" / "scenes");
+        candidates.push_back(fs::path(exeDir) / folder);
+        candidates.push_back(fs::path(exeDir) / ".." / "share" / "collision-sandbox" / folder);
     }
     if (!builtInDir.empty()) candidates.push_back(builtInDir);
-    candidates.push_back(fs::path("app") / "scenes");
-    candidates.push_back("scenes");
+    candidates.push_back(fs::path("app") / folder);
+    candidates.push_back(folder);
     for (const fs::path& c : candidates) {
         if (isDirectory(c)) return c.lexically_normal().string();
     }

@@ -17,6 +17,9 @@ std::string executableDirectory();
 // `builtInDir` (the source tree's app/scenes, compiled in), ./app/scenes, ./scenes.
 // "" when none exists.
 std::string findScenesDirectory(const std::string& exeDir, const std::string& builtInDir);
+// The same search for another folder of shipped files ("lessons": `exeDir`/lessons, ...).
+std::string findDataDirectory(const std::string& exeDir, const std::string& builtInDir,
+                              const std::string& folder);
 
 // The .json files of `dir`, sorted by file name.
 std::vector<SceneEntry> listScenes(const std::string& dir);

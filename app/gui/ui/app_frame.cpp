@@ -12,7 +12,13 @@ namespace {
 void handleKeys(App& app, const std::vector<KeyPress>& keys) {
     // Typing into a text field (a file name) must not trigger hotkeys.
     if (ImGui::GetIO().WantTextInput) return;
-    for (const KeyPress& k : keys) applyAction(app, actionForKey(k.key, k.ctrl));
+    for (const KeyPress& k : keys) {
+        const Action action = actionForKey(k.key, k.ctrl);
+        if (action == Action::LessonDigit)
+            lessonTypeDigit(app, digitOfKey(k.key));
+        else
+            applyAction(app, action);
+    }
 }
 
 void logEvent(const App& app, const char* text) {
@@ -28,6 +34,10 @@ void applyAction(App& app, Action action) {
     case Action::None:
         break;
     case Action::Reset:
+        if (applyLessonAction(app, action)) { // in a lesson: restart the step
+            logEvent(app, ("lesson restart " + std::to_string(app.lesson.current + 1)).c_str());
+            break;
+        }
         resetScene(app);
         logEvent(app, "reset");
         break;
@@ -82,6 +92,15 @@ void applyAction(App& app, Action action) {
         if (app.savePath.empty()) app.savePath = "saved_scene.json";
         saveCurrentScene(app, app.savePath);
         break;
+    case Action::LessonNext:
+    case Action::LessonPrevious:
+    case Action::LessonFirst:
+    case Action::LessonLast:
+    case Action::LessonJump:
+        applyLessonAction(app, action);
+        break;
+    case Action::LessonDigit: // needs the key: handleKeys
+        break;
     }
 }
 
@@ -110,6 +129,7 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     drawSceneDecorations(app);
     drawOverlays(app);
     if (app.uiVisible) drawControlsPanel(app);
+    if (app.lesson.active()) drawLessonCaption(app);
     if (app.helpOpen) drawHelpWindow(app);
     logStateChanges(app);
 }

@@ -37,9 +37,47 @@ void scenePicker(App& app) {
             if (current) ImGui::SetItemDefaultFocus();
         }
         if (app.sceneFiles.empty()) ImGui::TextDisabled("no scenes found");
+        if (!app.lessonFiles.empty()) {
+            ImGui::Separator();
+            ImGui::TextDisabled("Lessons");
+        }
+        for (const SceneEntry& e : app.lessonFiles) {
+            const bool current = app.lesson.active() && app.lesson.lesson->path == e.path;
+            const std::string label = "Lesson: " + e.title;
+            if (ImGui::Selectable(label.c_str(), current)) openLesson(app, e.path);
+        }
         ImGui::EndCombo();
     }
-    tooltip("The shipped scenes (app/scenes)");
+    tooltip("The shipped scenes (app/scenes) and lessons (lessons/)");
+}
+
+// The open lesson's steps: click one to go there.
+void lessonSection(App& app) {
+    LessonSession& s = app.lesson;
+    if (!s.active()) return;
+    if (!ImGui::CollapsingHeader("Lesson", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    ImGui::TextWrapped("%s", s.lesson->name.c_str());
+    const float w = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
+    if (ImGui::Button("< Prev", ImVec2(w, 0))) applyAction(app, Action::LessonPrevious);
+    tooltip("PageUp or Left");
+    ImGui::SameLine();
+    if (ImGui::Button(s.asking() ? "Answer >" : "Next >", ImVec2(w, 0)))
+        applyAction(app, Action::LessonNext);
+    tooltip("PageDown or Right");
+    ImGui::SameLine();
+    if (ImGui::Button("Restart (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
+    const float rows = std::min<float>(8.0f, static_cast<float>(s.lesson->steps.size()));
+    ImGui::BeginChild("##steps", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing()));
+    for (std::size_t i = 0; i < s.lesson->steps.size(); ++i) {
+        const std::string label =
+            std::to_string(i + 1) + ". " + s.lesson->steps[i].title + "##step" + std::to_string(i);
+        const bool current = i == s.current;
+        if (ImGui::Selectable(label.c_str(), current)) enterStep(app, i);
+        if (current && ImGui::IsWindowAppearing()) ImGui::SetScrollHereY();
+    }
+    ImGui::EndChild();
+    if (ImGui::SmallButton("close lesson")) closeLesson(app);
+    tooltip("Leave the lesson; the current scene stays");
 }
 
 void fileSection(App& app) {
@@ -244,6 +282,7 @@ void drawControlsPanel(App& app) {
         ImGui::TextWrapped("%s", app.note.c_str());
         ImGui::PopStyleColor();
     }
+    lessonSection(app);
     ImGui::Separator();
     runSection(app);
     simulationSection(app);

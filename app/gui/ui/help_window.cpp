@@ -14,6 +14,7 @@ void drawHelpWindow(App& app) {
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
     if (ImGui::BeginTable("keys", 2, flags)) {
         for (const KeyBinding& b : keyBindings()) {
+            if (!b.listed) continue;
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(b.keyName);

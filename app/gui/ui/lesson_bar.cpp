@@ -1,0 +1,58 @@
+// The lesson's caption bar: across the top of the scene, "n / N · title" large, the caption under
+// it, then the question (or, after the next press, its answer). Opaque, so nothing shows through;
+// its height is kept in app.captionHeight and the scene's viewport starts below it.
+#include "app_frame.h"
+
+#include <imgui.h>
+
+#include <string>
+
+namespace {
+
+const ImVec4 kQuestionColor{1.0f, 0.82f, 0.40f, 1.0f};
+const ImVec4 kAnswerColor{0.55f, 0.85f, 0.60f, 1.0f};
+const ImVec4 kDimColor{0.62f, 0.66f, 0.74f, 1.0f};
+
+} // namespace
+
+void drawLessonCaption(App& app) {
+    const LessonSession& s = app.lesson;
+    const LessonStep* step = s.step();
+    if (!step) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const float left =
+        app.uiVisible ? static_cast<float>(panelWidth(app.uiScale, io.DisplaySize.x)) : 0.0f;
+    ImGui::SetNextWindowPos(ImVec2(left, 0.0f), ImGuiCond_Always);
+    const float width = io.DisplaySize.x - left; // fixed width, the height follows the text
+    ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f),
+                                        ImVec2(width, io.DisplaySize.y * 0.5f));
+    ImGui::SetNextWindowBgAlpha(1.0f);
+    const ImGuiWindowFlags flags =
+        ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+        ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing |
+        ImGuiWindowFlags_NoBringToFrontOnFocus;
+    if (!ImGui::Begin("Lesson caption", nullptr, flags)) {
+        ImGui::End();
+        return;
+    }
+    const std::string heading = lessonHeading(s);
+    ImGui::SetWindowFontScale(1.25f);
+    ImGui::TextUnformatted(heading.c_str());
+    ImGui::SetWindowFontScale(1.0f);
+    ImGui::SameLine();
+    ImGui::TextColored(kDimColor, "   PageDown next, PageUp back, R restart");
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(step->caption.c_str());
+    if (!step->question.empty()) {
+        if (s.revealed) {
+            ImGui::TextColored(kAnswerColor, "Answer: %s", step->answer.c_str());
+        } else {
+            ImGui::TextColored(kQuestionColor, "Question: %s", step->question.c_str());
+            ImGui::TextColored(kDimColor, "PageDown shows the answer");
+        }
+    }
+    if (!s.digits.empty()) ImGui::TextColored(kDimColor, "Go to step %s (Enter)", s.digits.c_str());
+    ImGui::PopTextWrapPos();
+    app.captionHeight = ImGui::GetWindowHeight();
+    ImGui::End();
+}

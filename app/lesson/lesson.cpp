@@ -1,0 +1,473 @@
+// Lesson files: parsing and validation (docs/lesson-format.md). The scene of a step is loaded
+// with the scene loader, its overrides merged into the scene's "world" object and validated by
+// the same loader, so a lesson accepts exactly the keys and values a scene file does.
+#include "lesson.h"
+
+#include "scene_json.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <system_error>
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+using namespace scene_json;
+
+namespace {
+
+constexpr std::size_t kMaxSteps = 1000;
+constexpr std::size_t kMaxExpects = 100; // per step
+constexpr std::size_t kMaxCaptionLines = 3;
+constexpr std::size_t kMaxLineChars = 200; // a caption line, a title, a question or an answer
+constexpr double kMaxPauseTime = 600.0;    // s
+constexpr int kMaxPauseCollision = 1000000;
+constexpr double kMaxFrameRate = 10000.0; // Hz (dt at least 1e-4 s)
+// Parsed-from-memory scenes are named this; their error places are rewritten to the lesson's.
+const char* const kInline = "\x01";
+
+bool isRegularFile(const fs::path& p) {
+    std::error_code ec;
+    return fs::is_regular_file(p, ec);
+}
+
+// A name echoed in a message, quoted and escaped (no raw control bytes reach a terminal).
+std::string quoted(const std::string& s) {
+    return dumpValue(json(s));
+}
+
+// A text field: a non-empty string of printable characters (newlines only where allowed), each
+// line at most kMaxLineChars.
+std::string text(const json& value, const std::string& path, std::size_t maxLines,
+                 std::size_t maxLineChars = kMaxLineChars) {
+    const std::string s = string(value, path);
+    if (s.empty()) throw ValueError{path, "must not be empty"};
+    std::size_t lines = 1, lineChars = 0;
+    for (const char c : s) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (c == '\n') {
+            if (++lines > maxLines)
+                throw ValueError{path, maxLines == 1 ? "must be one line"
+                                                     : "must be at most " +
+                                                           std::to_string(maxLines) + " lines"};
+            lineChars = 0;
+            continue;
+        }
+        if (byte < 0x20 || byte == 0x7f) throw ValueError{path, "has a control character"};
+        if ((byte & 0xc0) != 0x80 && ++lineChars > maxLineChars) // count UTF-8 characters
+            throw ValueError{path, "has a line longer than " + std::to_string(maxLineChars) +
+                                       " characters"};
+    }
+    return s;
+}
+
+int blockIndex(const Scene& scene, const std::string& name) {
+    for (std::size_t i = 0; i < scene.blocks.size(); ++i)
+        if (scene.blocks[i].name == name) return static_cast<int>(i);
+    return -1;
+}
+
+int requireBlock(const Scene& scene, const json& value, const std::string& path) {
+    const std::string name = string(value, path);
+    const int i = blockIndex(scene, name);
+    if (i < 0) throw ValueError{path, "no block named " + quoted(name) + " in the step's scene"};
+    return i;
+}
+
+std::vector<std::string> overlayList(const json& value, const std::string& path,
+                                     const LessonContext& context) {
+    if (!value.is_array()) throw ValueError{path, "must be an array of overlay names"};
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        const std::string p = indexPath(path, i);
+        const std::string name = string(value[i], p);
+        const auto& known = context.overlayNames;
+        if (!known.empty() && std::find(known.begin(), known.end(), name) == known.end()) {
+            std::string list;
+            for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+            throw ValueError{p, "unknown overlay " + quoted(name) + " (expected " + list + ")"};
+        }
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    return names;
+}
+
+// ---- The step's scene ----
+
+// A scene error from the loader, placed in the lesson: inline scenes get the step's JSON path,
+// files keep their own place after the step's.
+ValueError sceneError(const SceneError& e, const std::string& scenePath) {
+    const std::string inlinePrefix = std::string(kInline) + ": ";
+    if (e.where.rfind(inlinePrefix, 0) == 0)
+        return ValueError{scenePath + "." + e.where.substr(inlinePrefix.size()), e.message};
+    if (e.where == kInline) return ValueError{scenePath, e.message};
+    return ValueError{scenePath, e.text()};
+}
+
+// The file a step's "scene" string names: a path (relative to the lesson first), else a
+// shipped scene's name.
+std::string findSceneFile(const std::string& name, const LessonContext& context) {
+    std::vector<fs::path> candidates;
+    const fs::path p(name);
+    if (p.is_absolute()) {
+        candidates.push_back(p);
+    } else {
+        const fs::path base = context.baseDir.empty() ? fs::path(".") : fs::path(context.baseDir);
+        candidates.push_back(base / p);
+        candidates.push_back(p);
+        if (!context.scenesDir.empty()) {
+            candidates.push_back(fs::path(context.scenesDir) / p);
+            candidates.push_back(fs::path(context.scenesDir) / (name + ".json"));
+        }
+    }
+    for (const fs::path& c : candidates)
+        if (isRegularFile(c)) return c.lexically_normal().string();
+    return "";
+}
+
+// Loads the step's scene with its overrides applied; sets step.sceneSource and step.timeScale.
+void loadStepScene(const json& step, const std::string& path, const LessonContext& context,
+                   LessonStep& out) {
+    const std::string scenePath = keyPath(path, "scene");
+    if (!step.contains("scene")) throw ValueError{path, "missing \"scene\""};
+    const json& scene = step["scene"];
+    json root;
+    if (scene.is_string()) {
+        const std::string name = scene.get<std::string>();
+        const std::string file = findSceneFile(name, context);
+        if (file.empty())
+            throw ValueError{
+                scenePath, "no scene " + quoted(name) + " (neither a file nor a shipped scene in " +
+                               (context.scenesDir.empty() ? "(none)" : context.scenesDir) + ")"};
+        std::string fileText;
+        if (auto e = readJsonFile(file, fileText)) throw ValueError{scenePath, e->text()};
+        const SceneResult plain = parseScene(fileText, file); // its own errors at its own places
+        if (!plain.scene) throw ValueError{scenePath, plain.error.text()};
+        parseJsonText(fileText, file, root);
+        out.sceneSource = file;
+        out.scene = *plain.scene;
+    } else if (scene.is_object()) {
+        root = scene;
+        const SceneResult plain = parseScene(root.dump(), kInline);
+        if (!plain.scene) throw sceneError(plain.error, scenePath);
+        out.scene = *plain.scene;
+    } else {
+        throw ValueError{scenePath, "must be a shipped scene's name, a path, or a scene object"};
+    }
+    if (!step.contains("overrides")) return;
+
+    const std::string overridesPath = keyPath(path, "overrides");
+    const json& overrides = requireObject(step["overrides"], overridesPath);
+    json world = root.contains("world") ? root["world"] : json::object();
+    std::vector<std::pair<std::string, std::string>> renamed; // world key -> override key
+    for (const auto& item : overrides.items()) {
+        const std::string key = item.key();
+        const std::string keyAt = keyPath(overridesPath, key);
+        if (key == "time_scale") {
+            out.timeScale = number(item.value(), keyAt);
+            if (!(out.timeScale >= 0.01 && out.timeScale <= 100.0))
+                throw ValueError{keyAt, "must be from 0.01 to 100"};
+        } else if (key == "frame_rate") {
+            if (overrides.contains("dt")) throw ValueError{keyAt, "give \"dt\" or \"frame_rate\""};
+            const double rate = number(item.value(), keyAt);
+            if (!(rate >= 1.0 && rate <= kMaxFrameRate))
+                throw ValueError{keyAt, "must be from 1 to 10000 frames per second"};
+            world["dt"] = 1.0 / rate;
+            renamed.emplace_back("dt", key);
+        } else {
+            world[key] = item.value(); // validated below, as the scene format's "world" key
+            renamed.emplace_back(key, key);
+        }
+    }
+    root["world"] = world;
+    const SceneResult merged = parseScene(root.dump(), kInline);
+    if (merged.scene) {
+        out.scene = *merged.scene;
+        return;
+    }
+    // "world.bounciness" -> "steps[2].overrides.bounciness"; anything else the overrides broke
+    // (a block now out of the bounds) is placed at the overrides with the scene's path.
+    const ValueError e = sceneError(merged.error, "");
+    const std::string where = e.path.empty() ? "" : e.path.substr(1);
+    for (const auto& [worldKey, overrideKey] : renamed) {
+        const std::string prefix = "world." + worldKey;
+        if (where == prefix || where.rfind(prefix + "[", 0) == 0 ||
+            where.rfind(prefix + ".", 0) == 0)
+            throw ValueError{keyPath(overridesPath, overrideKey) + where.substr(prefix.size()),
+                             e.message};
+    }
+    throw ValueError{overridesPath,
+                     "with these overrides the scene fails: " + where + ": " + e.message};
+}
+
+// ---- Pause point, camera, expectations ----
+
+LessonPause parsePause(const json& value, const std::string& path, const Scene& scene) {
+    requireObject(value, path);
+    checkKeys(value, path, {"time", "collision", "first_collision_of"});
+    if (value.size() != 1)
+        throw ValueError{path, "must have one of \"time\", \"collision\", \"first_collision_of\""};
+    LessonPause pause;
+    if (value.contains("time")) {
+        const std::string p = keyPath(path, "time");
+        pause.kind = LessonPause::Kind::Time;
+        pause.time = number(value["time"], p);
+        if (!(pause.time >= 0.0 && pause.time <= kMaxPauseTime))
+            throw ValueError{p, "must be from 0 to 600 seconds"};
+    } else if (value.contains("collision")) {
+        const std::string p = keyPath(path, "collision");
+        const double k = number(value["collision"], p);
+        if (k != std::floor(k) || k < 1 || k > kMaxPauseCollision)
+            throw ValueError{p, "must be a whole number from 1 to 1000000"};
+        pause.kind = LessonPause::Kind::Collision;
+        pause.collision = static_cast<int>(k);
+    } else {
+        const std::string p = keyPath(path, "first_collision_of");
+        pause.kind = LessonPause::Kind::BlockCollision;
+        pause.block = requireBlock(scene, value["first_collision_of"], p);
+        pause.blockName = value["first_collision_of"].get<std::string>();
+    }
+    return pause;
+}
+
+Bounds parseCamera(const json& value, const std::string& path) {
+    const std::vector<double> b = numbers(value, path, 4);
+    if (!(b[0] < b[2] && b[1] < b[3]))
+        throw ValueError{path, "must be [xmin, ymin, xmax, ymax] with xmin < xmax and ymin < ymax"};
+    Bounds bounds;
+    bounds.min = {b[0], b[1]};
+    bounds.max = {b[2], b[3]};
+    return bounds;
+}
+
+struct QuantityKey {
+    const char* key;
+    LessonExpect::Quantity quantity;
+    bool perBlock;
+};
+constexpr QuantityKey kQuantities[] = {
+    {"x", LessonExpect::Quantity::X, true},
+    {"y", LessonExpect::Quantity::Y, true},
+    {"vx", LessonExpect::Quantity::Vx, true},
+    {"vy", LessonExpect::Quantity::Vy, true},
+    {"time", LessonExpect::Quantity::Time, false},
+    {"collisions", LessonExpect::Quantity::Collisions, false},
+    {"kinetic_energy", LessonExpect::Quantity::KineticEnergy, false},
+    {"max_penetration", LessonExpect::Quantity::MaxPenetration, false},
+};
+// Pairs written as one key: "position": [x, y] and so on.
+struct PairKey {
+    const char* key;
+    LessonExpect::Quantity first, second;
+    bool perBlock;
+};
+constexpr PairKey kPairs[] = {
+    {"position", LessonExpect::Quantity::X, LessonExpect::Quantity::Y, true},
+    {"velocity", LessonExpect::Quantity::Vx, LessonExpect::Quantity::Vy, true},
+    {"momentum", LessonExpect::Quantity::MomentumX, LessonExpect::Quantity::MomentumY, false},
+};
+
+// A number (equal within the tolerance) or {"min": a, "max": b}.
+void parseTarget(const json& value, const std::string& path, LessonExpect& e) {
+    if (value.is_object()) {
+        checkKeys(value, path, {"min", "max"});
+        if (value.empty()) throw ValueError{path, "needs \"min\" or \"max\""};
+        if (value.contains("min")) e.min = number(value["min"], keyPath(path, "min"));
+        if (value.contains("max")) e.max = number(value["max"], keyPath(path, "max"));
+        if (e.min && e.max && *e.min > *e.max) throw ValueError{path, "min is more than max"};
+        return;
+    }
+    if (!value.is_number()) throw ValueError{path, "must be a number or {\"min\": a, \"max\": b}"};
+    e.equals = number(value, path);
+}
+
+void parseExpect(const json& value, const std::string& path, const Scene& scene,
+                 const std::string& where, std::vector<LessonExpect>& out) {
+    requireObject(value, path);
+    LessonExpect base;
+    base.where = where;
+    int block = -1;
+    if (value.contains("block"))
+        block = requireBlock(scene, value["block"], keyPath(path, "block"));
+    if (value.contains("tolerance")) {
+        base.tolerance = number(value["tolerance"], keyPath(path, "tolerance"));
+        if (!(base.tolerance >= 0.0)) throw ValueError{keyPath(path, "tolerance"), "must be >= 0"};
+    }
+    std::vector<LessonExpect> found;
+    auto add = [&](LessonExpect::Quantity q, bool perBlock, const json& target,
+                   const std::string& p) {
+        if (target.is_null()) return; // [null, 0]: only the second is checked
+        if (perBlock && block < 0) throw ValueError{path, "needs \"block\" for " + p};
+        LessonExpect e = base;
+        e.quantity = q;
+        if (perBlock) {
+            e.block = block;
+            e.blockName = value["block"].get<std::string>();
+        }
+        parseTarget(target, p, e);
+        found.push_back(e);
+    };
+    bool perBlockKey = false;
+    for (const auto& item : value.items()) {
+        const std::string& key = item.key();
+        const std::string p = keyPath(path, key);
+        if (key == "block" || key == "tolerance") continue;
+        bool known = false;
+        for (const QuantityKey& q : kQuantities) {
+            if (key != q.key) continue;
+            known = true;
+            perBlockKey |= q.perBlock;
+            add(q.quantity, q.perBlock, item.value(), p);
+        }
+        for (const PairKey& q : kPairs) {
+            if (key != q.key) continue;
+            known = true;
+            perBlockKey |= q.perBlock;
+            if (!item.value().is_array() || item.value().size() != 2)
+                throw ValueError{p, "must be an array of 2 (numbers, {\"min\", \"max\"} or null)"};
+            add(q.first, q.perBlock, item.value()[0], indexPath(p, 0));
+            add(q.second, q.perBlock, item.value()[1], indexPath(p, 1));
+        }
+        if (!known) throw ValueError{p, "unknown key"};
+    }
+    if (found.empty()) throw ValueError{path, "expects nothing (give e.g. \"vx\" or \"position\")"};
+    if (block >= 0 && !perBlockKey)
+        throw ValueError{keyPath(path, "block"), "no block quantity (x, y, vx, vy, position, "
+                                                 "velocity) to go with it"};
+    out.insert(out.end(), found.begin(), found.end());
+}
+
+LessonStep parseStep(const json& value, const std::string& path, const std::string& source,
+                     const LessonContext& context) {
+    requireObject(value, path);
+    checkKeys(value, path,
+              {"title", "caption", "scene", "overrides", "overlays", "select", "camera", "pause_at",
+               "question", "answer", "reveal", "expect"});
+    LessonStep step;
+    if (!value.contains("title")) throw ValueError{path, "missing \"title\""};
+    step.title = text(value["title"], keyPath(path, "title"), 1);
+    if (!value.contains("caption")) throw ValueError{path, "missing \"caption\""};
+    step.caption = text(value["caption"], keyPath(path, "caption"), kMaxCaptionLines);
+    loadStepScene(value, path, context, step);
+    if (value.contains("overlays"))
+        step.overlays = overlayList(value["overlays"], keyPath(path, "overlays"), context);
+    if (value.contains("select"))
+        step.selected = requireBlock(step.scene, value["select"], keyPath(path, "select"));
+    if (value.contains("camera"))
+        step.camera = parseCamera(value["camera"], keyPath(path, "camera"));
+    if (value.contains("pause_at"))
+        step.pause = parsePause(value["pause_at"], keyPath(path, "pause_at"), step.scene);
+    if (value.contains("question")) {
+        step.question = text(value["question"], keyPath(path, "question"), kMaxCaptionLines);
+        if (!value.contains("answer")) throw ValueError{path, "a \"question\" needs an \"answer\""};
+    }
+    if (value.contains("answer")) {
+        if (!value.contains("question"))
+            throw ValueError{keyPath(path, "answer"), "an answer needs a \"question\""};
+        step.answer = text(value["answer"], keyPath(path, "answer"), kMaxCaptionLines);
+    }
+    if (value.contains("reveal")) {
+        if (!value.contains("question"))
+            throw ValueError{keyPath(path, "reveal"), "reveals with the answer: needs a "
+                                                      "\"question\""};
+        step.reveal = overlayList(value["reveal"], keyPath(path, "reveal"), context);
+    }
+    if (value.contains("expect")) {
+        const json& expect = value["expect"];
+        const std::string p = keyPath(path, "expect");
+        if (!expect.is_array()) throw ValueError{p, "must be an array"};
+        if (expect.size() > kMaxExpects) throw ValueError{p, "more than 100 expectations"};
+        for (std::size_t i = 0; i < expect.size(); ++i) {
+            const std::string at = indexPath(p, i);
+            parseExpect(expect[i], at, step.scene, source + ": " + at, step.expect);
+        }
+    }
+    return step;
+}
+
+Lesson parseLessonValue(const json& root, const std::string& source, const LessonContext& context) {
+    requireObject(root, "(top level)");
+    checkKeys(root, "", {"name", "description", "steps"});
+    Lesson lesson;
+    if (!root.contains("name")) throw ValueError{"(top level)", "missing \"name\""};
+    lesson.name = text(root["name"], "name", 1);
+    if (root.contains("description"))
+        lesson.description = text(root["description"], "description", 20, 2000);
+    if (!root.contains("steps")) throw ValueError{"(top level)", "missing \"steps\""};
+    const json& steps = root["steps"];
+    if (!steps.is_array()) throw ValueError{"steps", "must be an array"};
+    if (steps.empty()) throw ValueError{"steps", "must have at least one step"};
+    if (steps.size() > kMaxSteps) throw ValueError{"steps", "more than 1000 steps"};
+    for (std::size_t i = 0; i < steps.size(); ++i)
+        lesson.steps.push_back(parseStep(steps[i], indexPath("steps", i), source, context));
+    return lesson;
+}
+
+LessonResult lessonFailure(std::string where, std::string message) {
+    LessonResult r;
+    r.error = {std::move(where), std::move(message)};
+    return r;
+}
+
+} // namespace
+
+const char* quantityName(LessonExpect::Quantity q) {
+    for (const QuantityKey& k : kQuantities)
+        if (k.quantity == q) return k.key;
+    switch (q) {
+    case LessonExpect::Quantity::MomentumX:
+        return "momentum x";
+    case LessonExpect::Quantity::MomentumY:
+        return "momentum y";
+    default:
+        return "?";
+    }
+}
+
+LessonResult parseLesson(const std::string& text, const std::string& sourceName,
+                         const LessonContext& context) {
+    json root;
+    if (auto error = parseJsonText(text, sourceName, root))
+        return lessonFailure(error->where, error->message);
+    try {
+        LessonResult r;
+        r.lesson = parseLessonValue(root, sourceName, context);
+        return r;
+    } catch (const ValueError& e) {
+        return lessonFailure(sourceName + ": " + e.path, e.message);
+    }
+}
+
+LessonResult loadLessonFile(const std::string& path, LessonContext context) {
+    std::string text;
+    if (auto error = readJsonFile(path, text)) return lessonFailure(error->where, error->message);
+    if (context.baseDir.empty()) context.baseDir = fs::path(path).parent_path().string();
+    LessonResult r = parseLesson(text, path, context);
+    if (r.lesson) r.lesson->path = path;
+    return r;
+}
+
+std::optional<std::size_t> stepIndex(const Lesson& lesson, long long number, std::string* error) {
+    const long long count = static_cast<long long>(lesson.steps.size());
+    if (number >= 1 && number <= count) return static_cast<std::size_t>(number - 1);
+    if (error) {
+        *error = (lesson.path.empty() ? lesson.name : lesson.path) + ": no step " +
+                 std::to_string(number) + " (the lesson has steps 1 to " + std::to_string(count) +
+                 ")";
+    }
+    return std::nullopt;
+}
+
+bool isLessonText(const std::string& text) {
+    json root;
+    if (parseJsonText(text, "", root)) return false;
+    return root.is_object() && root.contains("steps");
+}
+
+bool isLessonFile(const std::string& path) {
+    std::string text;
+    if (readJsonFile(path, text)) return false;
+    return isLessonText(text);
+}

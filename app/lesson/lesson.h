@@ -1,0 +1,97 @@
+// Lesson files (docs/lesson-format.md): an ordered list of steps, each a scene with overrides,
+// overlays, a pause point, an optional question and what the engine must reach there. Parsed and
+// validated like scene files (errors name the file, line:column or a JSON path such as
+// `steps[3].overlays[0]`). No GL, no ImGui: the app, sandbox-cli and the tests share it.
+#pragma once
+
+#include "scene.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+// Where a step stops on its own: after the frame at whose end the condition first holds.
+struct LessonPause {
+    enum class Kind { None, Time, Collision, BlockCollision };
+    Kind kind = Kind::None;
+    double time = 0.0;     // s (Time): the first frame ending at or after it
+    int collision = 0;     // Collision: the k-th collision (1-based, walls included, resting
+                           // contacts of the rest rule not counted)
+    int block = -1;        // BlockCollision: the first collision of this block (index)
+    std::string blockName; // as written in the file
+};
+
+// One number the engine must reach at the pause point: equal within `tolerance`, or in
+// [min, max].
+struct LessonExpect {
+    enum class Quantity {
+        X,              // m, the block's centre
+        Y,              // m
+        Vx,             // m/s
+        Vy,             // m/s
+        Time,           // s, world time
+        Collisions,     // collisions since the step began (as for LessonPause::Collision)
+        MomentumX,      // kg·m/s, total over dynamic blocks
+        MomentumY,      // kg·m/s
+        KineticEnergy,  // J
+        MaxPenetration, // m, the largest overlap met since the step began
+    };
+    std::string where; // "file: steps[3].expect[0]" (for messages)
+    Quantity quantity = Quantity::X;
+    int block = -1; // for X, Y, Vx, Vy
+    std::string blockName;
+    std::optional<double> equals;
+    double tolerance = 1e-9; // absolute, with `equals`
+    std::optional<double> min, max;
+};
+
+// The name of a quantity as the file writes it ("x", "vy", "kinetic_energy", ...).
+const char* quantityName(LessonExpect::Quantity q);
+
+struct LessonStep {
+    std::string title;
+    std::string caption;               // one to three lines, separated by '\n'
+    std::string sceneSource;           // the file the scene came from, or "" for an inline scene
+    Scene scene;                       // with the step's overrides applied
+    double timeScale = 1.0;            // simulated seconds per real second (the app's Time scale)
+    std::vector<std::string> overlays; // names from the overlay table, on while the step shows
+    int selected = -1;                 // block index, -1 for none
+    std::optional<Bounds> camera;      // world rectangle to fit into the view; none: the bounds
+    LessonPause pause;
+    std::string question; // shown until the next press...
+    std::string answer;   // ...which shows this and turns on `reveal`
+    std::vector<std::string> reveal;
+    std::vector<LessonExpect> expect;
+};
+
+struct Lesson {
+    std::string path; // the file it was loaded from ("" when parsed from text)
+    std::string name;
+    std::string description;
+    std::vector<LessonStep> steps;
+};
+
+struct LessonResult {
+    std::optional<Lesson> lesson;
+    SceneError error; // meaningful only when !lesson
+};
+
+// What a lesson file may refer to.
+struct LessonContext {
+    std::string scenesDir;                 // shipped scenes, for "scene": "bullet_wall"
+    std::string baseDir;                   // scene paths are relative to it first ("" = cwd)
+    std::vector<std::string> overlayNames; // the overlay table's names; empty: not checked
+};
+
+// Parses and validates lesson text; `sourceName` is used in error places.
+LessonResult parseLesson(const std::string& text, const std::string& sourceName,
+                         const LessonContext& context);
+// Loads a lesson file; its directory becomes context.baseDir when that is empty.
+LessonResult loadLessonFile(const std::string& path, LessonContext context);
+// The index of step `number` (1-based, as the app and --step count); none, with a message, when
+// the lesson has no such step.
+std::optional<std::size_t> stepIndex(const Lesson& lesson, long long number, std::string* error);
+// True when `text` is a JSON object with a "steps" key (a lesson, not a scene). False for
+// anything that does not parse.
+bool isLessonText(const std::string& text);
+bool isLessonFile(const std::string& path);

@@ -1,0 +1,143 @@
+#include "lesson_runner.h"
+
+#include "scene_json.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace {
+
+// s: a frame ending within this of the pause time counts as reaching it (frame times are sums of
+// dt and carry rounding).
+constexpr double kTimeSlack = 1e-9;
+constexpr double kCollisionSearchSeconds = 120.0; // s of simulated time to find a collision
+constexpr int kFrameLimit = 200000;
+
+std::string formatNumber(double x) {
+    return scene_json::dumpValue(x);
+}
+
+} // namespace
+
+bool pausesAtStart(const LessonPause& pause) {
+    return pause.kind == LessonPause::Kind::Time && pause.time <= kTimeSlack;
+}
+
+bool countFrame(const LessonPause& pause, const World& world, const StepStats& stats,
+                const std::vector<CollisionRecord>& log, StepProgress& progress) {
+    ++progress.frames;
+    progress.maxPenetration = std::max(progress.maxPenetration, stats.maxPenetration);
+    bool blockHit = false;
+    for (const CollisionRecord& r : log) {
+        if (r.rest) continue;
+        ++progress.collisions;
+        if (r.block == pause.block || r.other == pause.block) blockHit = true;
+    }
+    switch (pause.kind) {
+    case LessonPause::Kind::None:
+        return false;
+    case LessonPause::Kind::Time:
+        return world.time >= pause.time - kTimeSlack * std::max(1.0, pause.time);
+    case LessonPause::Kind::Collision:
+        return progress.collisions >= pause.collision;
+    case LessonPause::Kind::BlockCollision:
+        if (pause.block >= 0 && blockHit) progress.blockCollided = true;
+        return progress.blockCollided;
+    }
+    return false;
+}
+
+int maxStepFrames(const LessonStep& step) {
+    const double dt = step.scene.settings.dt;
+    const double seconds = step.pause.kind == LessonPause::Kind::Time ? step.pause.time * 1.01 + 1.0
+                                                                      : kCollisionSearchSeconds;
+    return static_cast<int>(std::min<double>(kFrameLimit, std::ceil(seconds / dt) + 2));
+}
+
+World stepStartWorld(const LessonStep& step) {
+    return makeWorld(step.scene);
+}
+
+StepRun runStepToPause(const LessonStep& step) {
+    StepRun run;
+    run.world = stepStartWorld(step);
+    if (step.pause.kind == LessonPause::Kind::None || pausesAtStart(step.pause)) return run;
+    const int limit = maxStepFrames(step);
+    std::vector<CollisionRecord> log;
+    while (run.progress.frames < limit) {
+        log.clear();
+        const StepStats stats = run.world.step(&log);
+        if (countFrame(step.pause, run.world, stats, log, run.progress)) return run;
+    }
+    run.reached = false;
+    return run;
+}
+
+double measure(const LessonExpect& e, const StepRun& run) {
+    const World& w = run.world;
+    const Block* b = e.block >= 0 && e.block < static_cast<int>(w.blocks.size())
+                         ? &w.blocks[static_cast<std::size_t>(e.block)]
+                         : nullptr;
+    using Q = LessonExpect::Quantity;
+    switch (e.quantity) {
+    case Q::X:
+        return b ? b->position.x : NAN;
+    case Q::Y:
+        return b ? b->position.y : NAN;
+    case Q::Vx:
+        return b ? b->velocity.x : NAN;
+    case Q::Vy:
+        return b ? b->velocity.y : NAN;
+    case Q::Time:
+        return w.time;
+    case Q::Collisions:
+        return run.progress.collisions;
+    case Q::MomentumX:
+        return totalMomentum(w).x;
+    case Q::MomentumY:
+        return totalMomentum(w).y;
+    case Q::KineticEnergy:
+        return kineticEnergy(w);
+    case Q::MaxPenetration:
+        return run.progress.maxPenetration;
+    }
+    return NAN;
+}
+
+std::vector<std::string> checkStep(const LessonStep& step, const StepRun& run) {
+    std::vector<std::string> failures;
+    if (!run.reached) {
+        failures.push_back("step " + scene_json::dumpValue(step.title) +
+                           ": the pause point was not reached in " +
+                           std::to_string(run.progress.frames) + " frames");
+        return failures;
+    }
+    for (const LessonExpect& e : step.expect) {
+        const double value = measure(e, run);
+        const bool ok = e.equals ? std::abs(value - *e.equals) <= e.tolerance
+                                 : (!e.min || value >= *e.min) && (!e.max || value <= *e.max);
+        if (ok && std::isfinite(value)) continue;
+        std::string what = quantityName(e.quantity);
+        if (e.block >= 0) what += " of " + scene_json::dumpValue(e.blockName);
+        std::string expected;
+        if (e.equals) {
+            expected = formatNumber(*e.equals) + " within " + formatNumber(e.tolerance);
+        } else {
+            expected = std::string("in [") + (e.min ? formatNumber(*e.min) : "-inf") + ", " +
+                       (e.max ? formatNumber(*e.max) : "inf") + "]";
+        }
+        failures.push_back(e.where + ": " + what + " is " + formatNumber(value) + ", expected " +
+                           expected + " (at t = " + formatNumber(run.world.time) + " s, frame " +
+                           std::to_string(run.progress.frames) + ")");
+    }
+    return failures;
+}
+
+std::vector<std::string> checkLesson(const Lesson& lesson) {
+    std::vector<std::string> failures;
+    for (const LessonStep& step : lesson.steps) {
+        const std::vector<std::string> f = checkStep(step, runStepToPause(step));
+        failures.insert(failures.end(), f.begin(), f.end());
+    }
+    return failures;
+}

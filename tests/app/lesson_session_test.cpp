@@ -1,0 +1,188 @@
+// The lesson in the app: entering a step gives exactly the state the headless runner checks, the
+// keys walk through the steps and their questions, R restarts, a bad lesson keeps the current one.
+#include "app_state.h"
+#include "input_map.h"
+#include "lesson_runner.h"
+#include "lesson_session.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace {
+
+const std::string kLecture3 = std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json";
+const std::string kBadLessons = std::string(SANDBOX_TEST_DATA_DIR) + "/bad_lessons";
+
+App lessonApp() {
+    App app;
+    app.scenesDir = SANDBOX_SCENES_DIR;
+    EXPECT_TRUE(openLesson(app, kLecture3)) << app.error;
+    return app;
+}
+
+// Plays frame by frame as the window does, until the step pauses itself (or a bound).
+void playUntilPaused(App& app) {
+    for (int i = 0; i < 100000 && !app.paused; ++i) stepSimulation(app);
+}
+
+} // namespace
+
+TEST(LessonSession, EveryStepShowsWhatTheRunnerChecks) {
+    App app = lessonApp();
+    const Lesson& lesson = *app.lesson.lesson;
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+        ASSERT_TRUE(enterStep(app, i));
+        EXPECT_EQ(stateHash(app.world), stateHash(stepStartWorld(lesson.steps[i])));
+        EXPECT_EQ(app.world.frame, 0u);
+        lessonShowPausePoint(app);
+        const StepRun run = runStepToPause(lesson.steps[i]);
+        EXPECT_EQ(stateHash(app.world), stateHash(run.world)) << lesson.steps[i].title;
+        EXPECT_TRUE(app.paused);
+    }
+}
+
+TEST(LessonSession, PlayingPausesAtThePausePointOrJustBeforeAQuestion) {
+    App app = lessonApp();
+    const Lesson& lesson = *app.lesson.lesson;
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+        const LessonStep& step = lesson.steps[i];
+        if (step.pause.kind == LessonPause::Kind::None) continue;
+        enterStep(app, i);
+        playUntilPaused(app);
+        const StepRun run = runStepToPause(step);
+        const std::uint64_t frames = static_cast<std::uint64_t>(run.progress.frames);
+        if (step.question.empty() || frames == 0) {
+            EXPECT_EQ(app.world.frame, frames) << step.title;
+            EXPECT_EQ(stateHash(app.world), stateHash(run.world)) << step.title;
+        } else {
+            EXPECT_EQ(app.world.frame + 1, frames) << step.title; // the moment before
+            EXPECT_TRUE(app.lesson.asking());
+            applyLessonAction(app, Action::LessonNext); // the answer: one more frame
+            EXPECT_FALSE(app.lesson.asking());
+            EXPECT_EQ(app.world.frame, frames) << step.title;
+            EXPECT_EQ(stateHash(app.world), stateHash(run.world)) << step.title;
+            EXPECT_EQ(app.lesson.current, i); // still this step
+            EXPECT_NE(lessonCaption(app.lesson).find("Answer: " + step.answer), std::string::npos);
+        }
+        // Playing on does not stop again.
+        app.paused = false;
+        stepSimulation(app);
+        EXPECT_FALSE(app.paused);
+    }
+}
+
+TEST(LessonSession, KeysWalkThroughTheSteps) {
+    App app = lessonApp();
+    const std::size_t n = app.lesson.lesson->steps.size();
+    EXPECT_EQ(lessonHeading(app.lesson),
+              "1 / " + std::to_string(n) + " \xc2\xb7 " + app.lesson.lesson->steps[0].title);
+    EXPECT_EQ(actionForKey(keys::kPageDown, false), Action::LessonNext);
+    EXPECT_EQ(actionForKey(keys::kRight, false), Action::LessonNext);
+    EXPECT_EQ(actionForKey(keys::kPageUp, false), Action::LessonPrevious);
+    EXPECT_EQ(actionForKey(keys::kLeft, false), Action::LessonPrevious);
+    EXPECT_EQ(actionForKey(keys::kHome, false), Action::LessonFirst);
+    EXPECT_EQ(actionForKey(keys::kEnd, false), Action::LessonLast);
+    EXPECT_EQ(actionForKey(keys::kEnter, false), Action::LessonJump);
+    EXPECT_EQ(actionForKey(keys::k0 + 7, false), Action::LessonDigit);
+    EXPECT_EQ(digitOfKey(keys::kKeypad0 + 3), 3);
+    EXPECT_EQ(digitOfKey(keys::kEnter), -1);
+
+    applyLessonAction(app, Action::LessonNext); // step 1 has no question
+    EXPECT_EQ(app.lesson.current, 1u);
+    applyLessonAction(app, Action::LessonPrevious);
+    EXPECT_EQ(app.lesson.current, 0u);
+    applyLessonAction(app, Action::LessonPrevious); // stays at the first
+    EXPECT_EQ(app.lesson.current, 0u);
+    applyLessonAction(app, Action::LessonLast);
+    EXPECT_EQ(app.lesson.current, n - 1);
+    applyLessonAction(app, Action::LessonNext); // stays at the last
+    EXPECT_EQ(app.lesson.current, n - 1);
+    applyLessonAction(app, Action::LessonFirst);
+    EXPECT_EQ(app.lesson.current, 0u);
+
+    lessonTypeDigit(app, 1);
+    lessonTypeDigit(app, 2);
+    EXPECT_NE(lessonCaption(app.lesson).find("Go to step 12"), std::string::npos);
+    EXPECT_TRUE(lessonJump(app));
+    EXPECT_EQ(app.lesson.current, 11u);
+    lessonTypeDigit(app, 9);
+    lessonTypeDigit(app, 9);
+    EXPECT_FALSE(lessonJump(app)); // no step 99: an error, and the step stays
+    EXPECT_EQ(app.lesson.current, 11u);
+    EXPECT_NE(app.error.find("no step 99"), std::string::npos) << app.error;
+}
+
+TEST(LessonSession, LeavingAndComingBackGivesTheSameState) {
+    App app = lessonApp();
+    enterStep(app, 3);
+    const std::uint64_t start = stateHash(app.world);
+    const Overlays shown = app.show;
+    playUntilPaused(app);
+    applyLessonAction(app, Action::LessonNext); // the answer (step 4 asks)
+    applyLessonAction(app, Action::LessonNext); // step 5
+    EXPECT_EQ(app.lesson.current, 4u);
+    applyLessonAction(app, Action::LessonPrevious);
+    EXPECT_EQ(app.lesson.current, 3u);
+    EXPECT_EQ(stateHash(app.world), start);
+    EXPECT_EQ(app.world.time, 0.0);
+    EXPECT_EQ(app.show.poi, shown.poi);
+    EXPECT_EQ(app.show.inspector, shown.inspector); // the reveal's overlays are off again
+    EXPECT_TRUE(app.lesson.asking());
+}
+
+TEST(LessonSession, RRestartsTheStepExactly) {
+    App app = lessonApp();
+    enterStep(app, 6);
+    const std::uint64_t start = stateHash(app.world);
+    const int selected = app.selected;
+    for (int i = 0; i < 20; ++i) stepSimulation(app);
+    app.world.settings.bounciness = 0.3; // the lecturer played with a slider
+    applyLessonAction(app, Action::Reset);
+    EXPECT_EQ(app.lesson.current, 6u);
+    EXPECT_EQ(stateHash(app.world), start);
+    EXPECT_EQ(app.world.settings.bounciness, app.lesson.step()->scene.settings.bounciness);
+    EXPECT_EQ(app.selected, selected);
+    EXPECT_FALSE(app.paused);
+}
+
+TEST(LessonSession, StepSettingsAreApplied) {
+    App app = lessonApp();
+    for (std::size_t i = 0; i < app.lesson.lesson->steps.size(); ++i) {
+        enterStep(app, i);
+        const LessonStep& step = *app.lesson.step();
+        EXPECT_EQ(app.selected, step.selected);
+        EXPECT_EQ(app.world.settings.method, step.scene.settings.method);
+        EXPECT_EQ(app.timeScale, step.timeScale);
+        EXPECT_EQ(app.show.vectors, std::find(step.overlays.begin(), step.overlays.end(),
+                                              "vectors") != step.overlays.end());
+        EXPECT_EQ(app.fitBounds.has_value(), step.camera.has_value());
+    }
+}
+
+TEST(LessonSession, AMalformedLessonKeepsTheCurrentOne) {
+    App app = lessonApp();
+    enterStep(app, 4);
+    const std::uint64_t hash = stateHash(app.world);
+    for (const char* bad : {"unknown_overlay.json", "scene_fails.json", "bad_expectation.json",
+                            "syntax.json", "no_such_lesson.json"}) {
+        EXPECT_FALSE(openLesson(app, kBadLessons + "/" + bad));
+        EXPECT_NE(app.error.find(bad), std::string::npos) << app.error;
+        ASSERT_TRUE(app.lesson.active());
+        EXPECT_EQ(app.lesson.lesson->path, kLecture3);
+        EXPECT_EQ(app.lesson.current, 4u);
+        EXPECT_EQ(stateHash(app.world), hash);
+    }
+    EXPECT_FALSE(openLesson(app, kLecture3, 99)); // a bad step index
+    EXPECT_NE(app.error.find("no step 100"), std::string::npos) << app.error;
+    EXPECT_EQ(app.lesson.current, 4u);
+}
+
+TEST(LessonSession, LoadingASceneLeavesTheLesson) {
+    App app = lessonApp();
+    ASSERT_TRUE(loadScene(app, std::string(SANDBOX_SCENES_DIR) + "/single_bounce.json"));
+    EXPECT_FALSE(app.lesson.active());
+    EXPECT_FALSE(app.fitBounds.has_value());
+    applyLessonAction(app, Action::LessonNext); // nothing happens without a lesson
+    EXPECT_EQ(app.scene.name, "Single bounce");
+}

@@ -1,0 +1,340 @@
+// Lesson files: every expectation of every shipped lesson holds through the engine (so a lesson
+// cannot silently go wrong when the engine changes), steps are entered exactly, and malformed
+// lessons fail with their place.
+#include "lesson.h"
+#include "lesson_runner.h"
+#ifdef SANDBOX_OVERLAY_TABLE
+#include "options.h"
+#endif
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+LessonContext context() {
+    LessonContext c;
+    c.scenesDir = SANDBOX_SCENES_DIR;
+#ifdef SANDBOX_OVERLAY_TABLE
+    c.overlayNames = overlayNames();
+#else
+    c.overlayNames = {"plots", "vectors",    "trails",   "inspector", "com",
+                      "poi",   "sidebyside", "timeline", "cost"};
+#endif
+    return c;
+}
+
+std::vector<std::string> shippedLessons() {
+    std::vector<std::string> files;
+    for (const auto& entry : fs::directory_iterator(SANDBOX_LESSONS_DIR))
+        if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+struct StepCase {
+    std::string file;
+    std::size_t step;
+};
+
+void PrintTo(const StepCase& c, std::ostream* out) {
+    *out << fs::path(c.file).filename().string() << " step " << c.step + 1;
+}
+
+std::vector<StepCase> shippedSteps() {
+    std::vector<StepCase> cases;
+    for (const std::string& file : shippedLessons()) {
+        const LessonResult r = loadLessonFile(file, context());
+        const std::size_t n = r.lesson ? r.lesson->steps.size() : 1; // a broken file: one case
+        for (std::size_t i = 0; i < n; ++i) cases.push_back({file, i});
+    }
+    return cases;
+}
+
+std::string caseName(const testing::TestParamInfo<StepCase>& info) {
+    std::string name =
+        fs::path(info.param.file).stem().string() + "_step" + std::to_string(info.param.step + 1);
+    std::replace_if(
+        name.begin(), name.end(),
+        [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+    return name;
+}
+
+std::string errorOf(const std::string& file) {
+    const LessonResult r =
+        loadLessonFile(std::string(SANDBOX_TEST_DATA_DIR) + "/" + file, context());
+    EXPECT_FALSE(r.lesson) << file << " should not load";
+    return r.error.text();
+}
+
+LessonStep onlyStep(const std::string& text) {
+    const LessonResult r = parseLesson(text, "test.json", context());
+    EXPECT_TRUE(r.lesson) << r.error.text();
+    return r.lesson ? r.lesson->steps.at(0) : LessonStep{};
+}
+
+// Two blocks of the lecture's second worked example (m1 = 1 kg at 6 m/s, m2 = 2 kg at rest).
+const char* const kExample = R"({"name": "x", "world": {"gravity": [0, 0]}, "blocks": [
+    {"name": "m1", "position": [4, 6], "size": 1, "velocity": [6, 0], "mass": 1},
+    {"name": "m2", "position": [8.75, 6], "size": 1, "mass": 2}]})";
+
+std::string lessonWith(const std::string& stepFields) {
+    return std::string(R"({"name": "t", "steps": [{"title": "s", "caption": "c", "scene": )") +
+           kExample + (stepFields.empty() ? "" : ", " + stepFields) + "}]}";
+}
+
+} // namespace
+
+class ShippedLessonStep : public testing::TestWithParam<StepCase> {};
+
+// The expectations of the step, checked at its pause point through the engine.
+TEST_P(ShippedLessonStep, ReachesWhatItExpects) {
+    const LessonResult r = loadLessonFile(GetParam().file, context());
+    ASSERT_TRUE(r.lesson) << r.error.text();
+    const LessonStep& step = r.lesson->steps.at(GetParam().step);
+    const StepRun run = runStepToPause(step);
+    EXPECT_TRUE(run.reached) << step.title;
+    for (const std::string& failure : checkStep(step, run)) ADD_FAILURE() << failure;
+}
+
+INSTANTIATE_TEST_SUITE_P(Lessons, ShippedLessonStep, testing::ValuesIn(shippedSteps()), caseName);
+
+TEST(Lesson, Lecture3FollowsTheLectureWithEnoughSteps) {
+    const LessonResult r =
+        loadLessonFile(std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json", context());
+    ASSERT_TRUE(r.lesson) << r.error.text();
+    EXPECT_GE(r.lesson->steps.size(), 16u);
+    std::size_t expectations = 0;
+    for (const LessonStep& s : r.lesson->steps) expectations += s.expect.size();
+    EXPECT_GE(expectations, 30u); // most steps say what the engine must reach
+}
+
+// Entering a step twice (or after another step) gives bit-identical states at the pause point.
+TEST(Lesson, EnteringAStepIsExactEveryTime) {
+    const LessonResult r =
+        loadLessonFile(std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json", context());
+    ASSERT_TRUE(r.lesson) << r.error.text();
+    const Lesson& lesson = *r.lesson;
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+        const StepRun first = runStepToPause(lesson.steps[i]);
+        runStepToPause(lesson.steps[(i + 1) % lesson.steps.size()]);
+        const StepRun again = runStepToPause(lesson.steps[i]);
+        EXPECT_EQ(stateHash(first.world), stateHash(again.world)) << lesson.steps[i].title;
+        EXPECT_EQ(first.progress.frames, again.progress.frames);
+        EXPECT_EQ(stateHash(stepStartWorld(lesson.steps[i])),
+                  stateHash(makeWorld(lesson.steps[i].scene)));
+    }
+}
+
+// The lecture's example collides at t = 0.625 s, inside frame 38 (37/60 = 0.617 < 0.625 <=
+// 38/60): each kind of pause point stops after that frame, and the formula's numbers hold there
+// exactly (the perfect method resolves at the instant of impact; tolerance 1e-12 for rounding).
+TEST(LessonRunner, PausePointsStopAfterTheirFrame) {
+    for (const char* pause :
+         {R"("pause_at": {"collision": 1})", R"("pause_at": {"first_collision_of": "m1"})",
+          R"("pause_at": {"time": 0.63})"}) {
+        const LessonStep step = onlyStep(lessonWith(pause));
+        const StepRun run = runStepToPause(step);
+        ASSERT_TRUE(run.reached) << pause;
+        EXPECT_EQ(run.progress.frames, 38) << pause;
+        EXPECT_EQ(run.progress.collisions, 1) << pause;
+        EXPECT_NEAR(run.world.blocks[0].velocity.x, -2.0, 1e-12) << pause;
+        EXPECT_NEAR(run.world.blocks[1].velocity.x, 4.0, 1e-12) << pause;
+    }
+    const StepRun none = runStepToPause(onlyStep(lessonWith("")));
+    EXPECT_EQ(none.progress.frames, 0);
+    EXPECT_EQ(none.world.time, 0.0);
+}
+
+TEST(LessonRunner, APauseThatNeverComesIsReported) {
+    // m2 has no collision within the runner's search: its first collision is m1's hit, so ask
+    // for the 1,000th collision of a scene that has only a handful.
+    const LessonStep step = onlyStep(lessonWith(R"("pause_at": {"collision": 1000000})"));
+    const StepRun run = runStepToPause(step);
+    EXPECT_FALSE(run.reached);
+    const std::vector<std::string> failures = checkStep(step, run);
+    ASSERT_EQ(failures.size(), 1u);
+    EXPECT_NE(failures[0].find("pause point was not reached"), std::string::npos) << failures[0];
+}
+
+TEST(LessonRunner, AFailedExpectationNamesItsPlaceAndBothNumbers) {
+    const LessonResult r =
+        loadLessonFile(std::string(SANDBOX_TEST_DATA_DIR) + "/wrong_expectation.json", context());
+    ASSERT_TRUE(r.lesson) << r.error.text();
+    const std::vector<std::string> failures = checkLesson(*r.lesson);
+    ASSERT_EQ(failures.size(), 1u);
+    EXPECT_NE(failures[0].find("wrong_expectation.json: steps[1].expect[0]: vx of \"m1\" is -2"),
+              std::string::npos)
+        << failures[0];
+    EXPECT_NE(failures[0].find("expected 6"), std::string::npos) << failures[0];
+}
+
+TEST(LessonRunner, RangesAndToleranceAreChecked) {
+    const LessonStep step = onlyStep(lessonWith(
+        R"("pause_at": {"collision": 1}, "expect": [{"block": "m1", "vx": {"min": -2.5, "max": -1.5}},
+           {"block": "m2", "velocity": [4.1, null], "tolerance": 0.2}, {"momentum": [6, 0]},
+           {"collisions": 1}, {"time": {"min": 0.625}}, {"kinetic_energy": 18}])"));
+    EXPECT_EQ(step.expect.size(), 7u); // velocity [4.1, null] checks vx only; momentum is two
+    EXPECT_TRUE(checkStep(step, runStepToPause(step)).empty());
+    const LessonStep strict = onlyStep(lessonWith(
+        R"("pause_at": {"collision": 1}, "expect": [{"block": "m2", "vx": 4.1, "tolerance": 0.05}])"));
+    EXPECT_EQ(checkStep(strict, runStepToPause(strict)).size(), 1u);
+}
+
+TEST(Lesson, OverridesApplyAsSceneKeys) {
+    const LessonStep step = onlyStep(lessonWith(
+        R"("overrides": {"method": "turn-based", "bounciness": 0.5, "frame_rate": 30,
+            "substeps": 2, "gravity": [0, -1], "time_scale": 0.25})"));
+    EXPECT_EQ(step.scene.settings.method, Method::TurnBased);
+    EXPECT_EQ(step.scene.settings.bounciness, 0.5);
+    EXPECT_EQ(step.scene.settings.dt, 1.0 / 30.0);
+    EXPECT_EQ(step.scene.settings.substeps, 2);
+    EXPECT_EQ(step.scene.settings.gravity.y, -1.0);
+    EXPECT_EQ(step.timeScale, 0.25);
+    EXPECT_EQ(step.scene.blocks.size(), 2u);
+}
+
+TEST(Lesson, ShippedScenePathsAndSelection) {
+    const LessonStep step = onlyStep(
+        R"({"name": "t", "steps": [{"title": "s", "caption": "one\ntwo\nthree",
+            "scene": "single_bounce", "select": "ball", "camera": [0, 0, 10, 6],
+            "overlays": ["plots", "poi"], "question": "q?", "answer": "a.",
+            "reveal": ["inspector"]}]})");
+    EXPECT_EQ(fs::path(step.sceneSource).filename(), "single_bounce.json");
+    EXPECT_EQ(step.selected, 0);
+    ASSERT_TRUE(step.camera);
+    EXPECT_EQ(step.camera->max.x, 10.0);
+    EXPECT_EQ(step.overlays, (std::vector<std::string>{"plots", "poi"}));
+    EXPECT_EQ(step.reveal, (std::vector<std::string>{"inspector"}));
+    EXPECT_EQ(step.question, "q?");
+}
+
+TEST(Lesson, StepNumbersOutsideTheLessonAreErrors) {
+    const LessonResult r =
+        loadLessonFile(std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json", context());
+    ASSERT_TRUE(r.lesson) << r.error.text();
+    std::string error;
+    EXPECT_EQ(stepIndex(*r.lesson, 1, &error), std::optional<std::size_t>(0));
+    const long long n = static_cast<long long>(r.lesson->steps.size());
+    EXPECT_EQ(stepIndex(*r.lesson, n, &error), std::optional<std::size_t>(n - 1));
+    for (long long bad : {0LL, -1LL, n + 1, 1LL << 40}) {
+        EXPECT_FALSE(stepIndex(*r.lesson, bad, &error)) << bad;
+        EXPECT_NE(error.find("lecture3.json: no step " + std::to_string(bad)), std::string::npos)
+            << error;
+    }
+}
+
+// ---- Malformed lessons: each error names its place ----
+
+TEST(LessonErrors, UnknownOverlay) {
+    const std::string e = errorOf("unknown_overlay.json");
+    EXPECT_NE(e.find("unknown_overlay.json: steps[1].overlays[1]: unknown overlay \"sparkles\""),
+              std::string::npos)
+        << e;
+}
+
+TEST(LessonErrors, SceneThatFailsToLoad) {
+    EXPECT_NE(errorOf("scene_fails.json")
+                  .find("scene_fails.json: steps[0].scene: no scene "
+                        "\"no_such_scene\""),
+              std::string::npos)
+        << errorOf("scene_fails.json");
+    const std::string e = errorOf("inline_scene_fails.json");
+    EXPECT_NE(e.find("inline_scene_fails.json: steps[1].scene.blocks[0].mass: "), std::string::npos)
+        << e;
+}
+
+TEST(LessonErrors, BadExpectation) {
+    const std::string e = errorOf("bad_expectation.json");
+    EXPECT_NE(e.find("bad_expectation.json: steps[0].expect[1].block: no block named \"nobody\""),
+              std::string::npos)
+        << e;
+}
+
+TEST(LessonErrors, BadOverrideIsPlacedAtTheOverride) {
+    const std::string e = errorOf("bad_override.json");
+    EXPECT_NE(e.find("bad_override.json: steps[0].overrides.bounciness: must be between 0 and 1"),
+              std::string::npos)
+        << e;
+}
+
+TEST(LessonErrors, SyntaxErrorHasLineAndColumn) {
+    const std::string e = errorOf("syntax.json");
+    EXPECT_NE(e.find("syntax.json:4:29: "), std::string::npos) << e; // after the token
+}
+
+TEST(LessonErrors, ValuesNameTheirPath) {
+    struct Case {
+        std::string fields, where;
+    };
+    const Case cases[] = {
+        {R"("pause_at": {"time": -1})", "steps[0].pause_at.time"},
+        {R"("pause_at": {"collision": 1.5})", "steps[0].pause_at.collision"},
+        {R"("pause_at": {"time": 1, "collision": 2})", "steps[0].pause_at"},
+        {R"("pause_at": {"first_collision_of": "m3"})", "steps[0].pause_at.first_collision_of"},
+        {R"("select": "m3")", "steps[0].select"},
+        {R"("camera": [0, 0, -1, 5])", "steps[0].camera"},
+        {R"("overlays": "plots")", "steps[0].overlays"},
+        {R"("question": "why?")", "steps[0]"},
+        {R"("answer": "because")", "steps[0].answer"},
+        {R"("expect": [{"block": "m1"}])", "steps[0].expect[0]"},
+        {R"("expect": [{"vx": 1}])", "steps[0].expect[0]"},
+        {R"("expect": [{"block": "m1", "speed": 1}])", "steps[0].expect[0].speed"},
+        {R"("expect": [{"block": "m1", "velocity": [1]}])", "steps[0].expect[0].velocity"},
+        {R"("expect": [{"block": "m1", "vx": {"min": 2, "max": 1}}])", "steps[0].expect[0].vx"},
+        {R"("expect": [{"block": "m1", "vx": "fast"}])", "steps[0].expect[0].vx"},
+        {R"("overrides": {"frame_rate": 0})", "steps[0].overrides.frame_rate"},
+        {R"("overrides": {"method": "quick"})", "steps[0].overrides.method"},
+        {R"("overrides": {"colour": 1})", "steps[0].overrides.colour"},
+        {R"("overrides": {"bounds": [0, 0, 5, 5]})", "steps[0].overrides"},
+        {R"("overrides": {"time_scale": 1000})", "steps[0].overrides.time_scale"},
+        {R"("sparkle": true)", "steps[0].sparkle"},
+    };
+    for (const Case& c : cases) {
+        const LessonResult r = parseLesson(lessonWith(c.fields), "t.json", context());
+        ASSERT_FALSE(r.lesson) << c.fields;
+        EXPECT_EQ(r.error.where, "t.json: " + c.where) << c.fields << " -> " << r.error.text();
+    }
+    const std::pair<std::string, std::string> top[] = {
+        {R"({"name": "t"})", "t.json: (top level)"},
+        {R"({"name": "t", "steps": []})", "t.json: steps"},
+        {R"({"name": "t", "steps": [{"caption": "c", "scene": "single_bounce"}]})",
+         "t.json: steps[0]"},
+        {R"({"name": "t", "steps": [{"title": "a\nb", "caption": "c", "scene": "single_bounce"}]})",
+         "t.json: steps[0].title"},
+        {R"({"name": "t", "steps": [{"title": "a", "caption": "1\n2\n3\n4", "scene": "x"}]})",
+         "t.json: steps[0].caption"},
+        {R"({"name": "t", "steps": [{"title": "a", "caption": "c\u0007", "scene": "x"}]})",
+         "t.json: steps[0].caption"},
+        {R"({"name": "t", "steps": [{"title": "a", "caption": "c", "scene": 5}]})",
+         "t.json: steps[0].scene"},
+    };
+    for (const auto& [text, where] : top) {
+        const LessonResult r = parseLesson(text, "t.json", context());
+        ASSERT_FALSE(r.lesson) << text;
+        EXPECT_EQ(r.error.where, where) << text << " -> " << r.error.text();
+    }
+}
+
+TEST(LessonErrors, EchoedNamesAreEscaped) {
+    const LessonResult r =
+        parseLesson(lessonWith(R"("select": "\u001b[31mred")"), "t.json", context());
+    ASSERT_FALSE(r.lesson);
+    EXPECT_EQ(r.error.text().find('\x1b'), std::string::npos) << r.error.text();
+}
+
+TEST(Lesson, LessonsAreToldApartFromScenesByTheirSteps) {
+    EXPECT_TRUE(isLessonText(R"({"name": "x", "steps": []})"));
+    EXPECT_FALSE(isLessonText(kExample));
+    EXPECT_FALSE(isLessonText("{\"steps\": "));
+    EXPECT_FALSE(isLessonText(std::string(100000, '[')));
+    EXPECT_TRUE(isLessonFile(std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json"));
+    EXPECT_FALSE(isLessonFile(std::string(SANDBOX_SCENES_DIR) + "/single_bounce.json"));
+}
