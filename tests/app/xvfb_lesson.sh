@@ -17,14 +17,14 @@ focus_window
 sleep 0.5
 shot step1
 
-xdotool key Next; wait_for "lesson step 2 / "
-sleep 0.5; shot step2
+xdotool key Next; wait_for "lesson step 2 / " 30
+sleep 1; shot step2
 [ "$(differing step1 step2 $caption_region)" -gt 0 ] || fail "PageDown: the caption did not change"
 [ "$(differing step1 step2 $scene_region)" -gt 0 ] || fail "PageDown: the scene did not change"
 echo "ok: PageDown shows step 2 ($(grep "lesson step 2" "$log" | head -1))"
 
-xdotool key Prior; wait_for "lesson step 1 / "
-sleep 0.5; shot back1
+xdotool key Prior; wait_for "lesson step 1 / " 30
+sleep 1; shot back1
 [ "$(differing step2 back1 $caption_region)" -gt 0 ] || fail "PageUp: the caption did not change"
 [ "$(differing step1 back1 $caption_region)" -eq 0 ] || fail "PageUp: not step 1's caption"
 echo "ok: PageUp goes back to step 1"
@@ -35,7 +35,7 @@ echo "ok: PageUp goes back to step 1"
 pauses() { grep -c "^paused" "$log"; }
 # wait_pause N: until the log has more than N "paused" lines.
 wait_pause() {
-    for _ in $(seq 100); do [ "$(pauses)" -gt "$1" ] && return 0; sleep 0.1; done
+    for _ in $(seq 300); do [ "$(pauses)" -gt "$1" ] && return 0; sleep 0.1; done
     fail "$2"
 }
 xdotool key End; wait_for "lesson step 20 / "

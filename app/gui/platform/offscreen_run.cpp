@@ -93,14 +93,19 @@ int screenshot(App& app, Offscreen& off, const Options& o) {
     return 0;
 }
 
-int record(App& app, Offscreen& off, const Options& o) {
+// Creates `dir` (and its parents); says why on stderr when it cannot.
+bool makeDirectory(const std::string& dir) {
     std::error_code ec;
-    std::filesystem::create_directories(o.record, ec);
+    std::filesystem::create_directories(dir, ec);
     if (ec) {
-        std::fprintf(stderr, "sandbox: cannot create %s: %s\n", o.record.c_str(),
-                     ec.message().c_str());
-        return 1;
+        std::fprintf(stderr, "sandbox: cannot create %s: %s\n", dir.c_str(), ec.message().c_str());
+        return false;
     }
+    return true;
+}
+
+int record(App& app, Offscreen& off, const Options& o) {
+    if (!makeDirectory(o.record)) return 1;
     for (int i = 0; i < kSettleFrames - 1; ++i) renderFrame(app, off);
     char name[32];
     for (int i = 0; i < o.frames; ++i) {
@@ -130,13 +135,7 @@ int record(App& app, Offscreen& off, const Options& o) {
 
 // One PNG per lesson step, each after its pause point (answers revealed): a handout.
 int recordSteps(App& app, Offscreen& off, const Options& o) {
-    std::error_code ec;
-    std::filesystem::create_directories(o.recordSteps, ec);
-    if (ec) {
-        std::fprintf(stderr, "sandbox: cannot create %s: %s\n", o.recordSteps.c_str(),
-                     ec.message().c_str());
-        return 1;
-    }
+    if (!makeDirectory(o.recordSteps)) return 1;
     if (!app.lesson.active()) {
         std::fprintf(stderr, "sandbox: --record-steps needs a lesson\n");
         return 1;
