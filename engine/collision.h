@@ -118,3 +118,38 @@ inline WallImpact timeOfWallImpact(const Aabb& box, Vec2 velocity, const Bounds&
 }
 // The wall a box moving with `velocity` hits along `axis` (its sign picks the side).
 Wall wallOnAxis(int axis, double velocity);
+
+// The lecture's crooked result ("BAD: no exact point of impact"): the block moved the whole step
+// to newPosition, then back out of the overlap along the collision axis only, to the point of
+// impact's coordinate on that axis; the other axis keeps the whole step's motion.
+inline Vec2 movedBackAlongAxis(Vec2 newPosition, Vec2 pointOfImpact, int axis) {
+    Vec2 p = newPosition;
+    p[axis] = pointOfImpact[axis];
+    return p;
+}
+
+// ---- Constant acceleration: the exact integrator's parabolas (lecture, "Integration": the true
+// movement is a parabola, not piecewise linear). With zero acceleration each function below
+// gives exactly (bit for bit) its linear counterpart above. ----
+
+// Position and velocity `t` seconds on from (p, v) under acceleration a: p + v·t + a·t²/2, v + a·t.
+inline Vec2 positionAfter(Vec2 p, Vec2 v, Vec2 a, double t) {
+    return p + v * t + a * (0.5 * t * t);
+}
+inline Vec2 velocityAfter(Vec2 v, Vec2 a, double t) {
+    return v + a * t;
+}
+// The box covering a block's parabola over [0, time]: both ends and, per axis, the turning point
+// (t = -v/a) when it falls inside.
+Aabb sweptAabb(Vec2 position, Vec2 size, Vec2 velocity, Vec2 acceleration, double time);
+// Time of impact of two boxes moving with constant accelerations, within [0, maxTime]: per axis the
+// faces meet at the roots of gap = v·t + a·t²/2 (t = a/b when a = 0), so a box can enter, leave
+// and enter again; the impact is the first instant both axes overlap, its axis the one that
+// entered last. Touching boxes that accelerate into each other with no relative velocity (a block
+// resting on a static one, under gravity) report time 0. With equal accelerations the motion
+// relative to each other is linear: then this is timeOfImpact above.
+Impact timeOfImpact(const Aabb& a, Vec2 velocityA, Vec2 accelerationA, const Aabb& b,
+                    Vec2 velocityB, Vec2 accelerationB, double maxTime);
+// The same for a box and the walls (infinite masses at rest).
+WallImpact timeOfWallImpact(const Aabb& box, Vec2 velocity, Vec2 acceleration, const Bounds& bounds,
+                            double maxTime);

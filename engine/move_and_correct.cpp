@@ -62,9 +62,17 @@ void advanceMoveAndCorrect(SubstepContext& ctx) {
     std::vector<Block>& blocks = ctx.world.blocks;
     const int n = static_cast<int>(blocks.size());
 
-    // 1. Move all bodies over the whole step: position += velocity · h.
-    for (Block& b : blocks)
-        if (b.kind != BodyKind::Static) b.position += b.velocity * ctx.h;
+    // 1. Move all bodies over the whole step: position += velocity · h (with the exact
+    //    integrator along the parabola, position += v·h + a·h²/2, velocity += a·h).
+    for (int i = 0; i < n; ++i) {
+        Block& b = blocks[i];
+        if (b.kind == BodyKind::Static) continue;
+        b.position = ctx.positionAfter(i, b.position, b.velocity, ctx.h);
+        b.velocity = ctx.velocityAfter(i, b.velocity, ctx.h);
+    }
+    // The motion is done: contacts are found after a whole step, as after an Euler step, so they
+    // are resolved as then (the rest rule keeps its margin for what the step added).
+    ctx.acceleration = nullptr;
 
     // 2. Find the overlapping pairs at the new positions.
     BroadPhase& grid = ctx.broadPhase;

@@ -121,11 +121,21 @@ class PerfectSolver {
     void run();
 
   private:
+    // A block's position and velocity at time t (its own are valid at its clock); its motion
+    // (linear, or a parabola with the exact integrator) is the context's.
     Vec2 positionAt(int i, double t) const {
-        return blocks_[i].position + blocks_[i].velocity * (t - clock_[i]);
+        if (linear_) return blocks_[i].position + blocks_[i].velocity * (t - clock_[i]);
+        return ctx_.positionAfter(i, blocks_[i].position, blocks_[i].velocity, t - clock_[i]);
+    }
+    Vec2 velocityAt(int i, double t) const {
+        return linear_ ? blocks_[i].velocity
+                       : ctx_.velocityAfter(i, blocks_[i].velocity, t - clock_[i]);
     }
     Aabb trajectory(int i, double now) const {
-        return sweptAabb(positionAt(i, now), blocks_[i].size, blocks_[i].velocity, ctx_.h - now);
+        if (linear_)
+            return sweptAabb(positionAt(i, now), blocks_[i].size, blocks_[i].velocity,
+                             ctx_.h - now);
+        return ctx_.path(i, positionAt(i, now), blocks_[i].size, velocityAt(i, now), ctx_.h - now);
     }
     void registerPaths();
     void predictWalls(int i, double now, const Aabb& path);
@@ -152,6 +162,7 @@ class PerfectSolver {
     SubstepContext& ctx_;
     std::vector<Block>& blocks_;
     Aabb wallsInside_; // the bounds shrunk by far more than rounding (see run())
+    const bool linear_ = ctx_.acceleration == nullptr; // the Euler integrators: straight lines
     PathIndex paths_;
     Resolver resolver_;                 // its rest rule reads paths_
     std::vector<double>& clock_;        // s: the time at which each block's position is valid
@@ -184,7 +195,7 @@ void PerfectSolver::predictWalls(int i, double now, const Aabb& path) {
     const Block& block = blocks_[i];
     if (block.kind == BodyKind::Static) return;
     const Aabb box = aabbOf(positionAt(i, now), block.size);
-    const WallImpact wall = timeOfWallImpact(box, block.velocity, ctx_.world.bounds, ctx_.h - now);
+    const WallImpact wall = ctx_.wallImpact(i, box, velocityAt(i, now), ctx_.h - now);
     if (wall.hit()) schedule({now + wall.time, i, kWallEvent, stamp_[i], 0, wall.axes});
 }
 
@@ -192,8 +203,8 @@ void PerfectSolver::predictWalls(int i, double now, const Aabb& path) {
 void PerfectSolver::predictPair(int i, int j, double now) {
     const Block &a = blocks_[i], &b = blocks_[j];
     const Impact impact =
-        timeOfImpact(aabbOf(positionAt(i, now), a.size), a.velocity,
-                     aabbOf(positionAt(j, now), b.size), b.velocity, ctx_.h - now);
+        ctx_.impact(i, aabbOf(positionAt(i, now), a.size), velocityAt(i, now), j,
+                    aabbOf(positionAt(j, now), b.size), velocityAt(j, now), ctx_.h - now);
     if (impact.hit()) schedule({now + impact.time, i, j, stamp_[i], stamp_[j], impact.axes});
 }
 
@@ -307,7 +318,10 @@ void PerfectSolver::run() {
 
     // Move every block to the end of the substep (or to the last event when the cap was hit).
     const double end = ctx_.capHit ? lastEventTime : ctx_.h;
-    for (int i = 0; i < n; ++i) blocks_[i].position = positionAt(i, end);
+    for (int i = 0; i < n; ++i) {
+        blocks_[i].position = positionAt(i, end);
+        blocks_[i].velocity = velocityAt(i, end);
+    }
     ctx_.advanced = end;
 }
 

@@ -4,6 +4,22 @@
 
 #include <algorithm>
 
+Impact SubstepContext::impactWithOptions(int i, const Aabb& a, Vec2 va, int j, const Aabb& b,
+                                         Vec2 vb, double maxTime) const {
+    const Impact hit = acceleration ? timeOfImpact(a, va, (*acceleration)[i], b, vb,
+                                                   j >= 0 ? (*acceleration)[j] : Vec2{}, maxTime)
+                                    : timeOfImpact(a, va, b, vb, maxTime);
+    if (!hit.hit() || !world.settings.has(Mistake::Discrete)) return hit;
+    // Mistake "discrete" (lecture, "Discrete can give errors with high velocities: tunneling"):
+    // a collision is seen only if the boxes overlap at the new positions, at the end of the
+    // window; a fast block that has passed a thin one is never seen.
+    const Vec2 sizeA = a.max - a.min, sizeB = b.max - b.min;
+    const Vec2 endA = positionAfter(i, (a.min + a.max) * 0.5, va, maxTime);
+    const Vec2 endB =
+        j >= 0 ? positionAfter(j, (b.min + b.max) * 0.5, vb, maxTime) : (b.min + b.max) * 0.5;
+    return overlaps(aabbOf(endA, sizeA), aabbOf(endB, sizeB)) ? hit : Impact{};
+}
+
 Resolver::Resolver(SubstepContext& context, const BlockFinder* finder)
     : ctx_(context), finder_(finder) {}
 
@@ -16,15 +32,47 @@ void Resolver::sync(int i) {
     if (!localTime_) return;
     double& clock = (*localTime_)[i];
     Block& b = ctx_.world.blocks[i];
-    b.position += b.velocity * (now_ - clock);
+    if (ctx_.acceleration) { // along its parabola: the velocity changes too
+        const double t = now_ - clock;
+        b.position = ctx_.positionAfter(i, b.position, b.velocity, t);
+        b.velocity = ctx_.velocityAfter(i, b.velocity, t);
+    } else {
+        b.position += b.velocity * (now_ - clock);
+    }
     clock = now_;
 }
 
 // The rest rule: closing speeds below restSpeed + 2·|g|·h are what gravity alone adds to a
 // resting contact within one substep (g·h), with a margin; they are resolved perfectly inelastic.
+// With the exact integrator no margin is needed: a resting contact is found by its closing
+// acceleration (approaching() below), so only the Zeno tail of a bounce below restSpeed is cut
+// short (see docs/scene-format.md for the bound on the time this loses).
 double Resolver::restThreshold(int axis) const {
     const WorldSettings& s = ctx_.world.settings;
+    if (ctx_.acceleration) return s.restSpeed;
     return s.restSpeed + 2.0 * std::abs(s.gravity[axis]) * ctx_.h;
+}
+
+// Whether a and b approach along `axis` (lecture, "Tips – Collision Resolve": check the relative
+// velocity); `closing` (m/s) is the speed at which they close. With the exact integrator, touching
+// bodies without relative velocity that accelerate into each other (a block resting on another
+// under gravity) approach too, at closing speed 0: a resting contact.
+bool Resolver::approaching(int a, int b, int axis, double& closing) const {
+    const Block& A = ctx_.world.blocks[a];
+    const Block& B = ctx_.world.blocks[b];
+    const bool aIsLower = A.position[axis] <= B.position[axis];
+    closing = aIsLower ? A.velocity[axis] - B.velocity[axis] : B.velocity[axis] - A.velocity[axis];
+    if (closing > 0.0) return true;
+    if (closing < 0.0 || !ctx_.acceleration) return false;
+    const double accelA = (*ctx_.acceleration)[a][axis], accelB = (*ctx_.acceleration)[b][axis];
+    return aIsLower ? accelA > accelB : accelB > accelA;
+}
+
+void Resolver::setAcceleration(int i, int axis, double a) {
+    Vec2& acceleration = (*ctx_.acceleration)[i];
+    if (acceleration[axis] == a) return;
+    acceleration[axis] = a;
+    changed_.push_back(i); // its path changed: the perfect method predicts it again
 }
 
 void Resolver::setVelocity(int i, int axis, double v) {
@@ -61,11 +109,12 @@ Resolution Resolver::resolvePair(int a, int b, int axis) {
     std::vector<Block>& blocks = ctx_.world.blocks;
     const Block& A = blocks[a];
     const Block& B = blocks[b];
-    // Resolve only when they approach along the axis (lecture, "Tips – Collision Resolve").
-    const bool aIsLower = A.position[axis] <= B.position[axis];
-    const double closing =
-        aIsLower ? A.velocity[axis] - B.velocity[axis] : B.velocity[axis] - A.velocity[axis];
-    if (!(closing > 0.0)) return Resolution::None;
+    const WorldSettings& settings = ctx_.world.settings;
+    // Resolve only when they approach along the axis (lecture, "Tips – Collision Resolve"),
+    // unless the mistake "no-approach-test" is made: then separating bodies are resolved too.
+    double closing = 0.0;
+    const bool approach = approaching(a, b, axis, closing);
+    if (!approach && !settings.has(Mistake::NoApproachTest)) return Resolution::None;
 
     const double m1 = A.mass, m2 = B.mass;
     const double v1 = A.velocity[axis], v2 = B.velocity[axis];
@@ -76,10 +125,15 @@ Resolution Resolver::resolvePair(int a, int b, int axis) {
         record(a, b, axis, m1, v1, m2, v2, 0.0, 1.0, A.velocity[axis], B.velocity[axis], false);
         return Resolution::Bounce;
     }
-    if (forceRest_ || closing < restThreshold(axis)) return restCluster(a, b, axis, Wall{0});
+    if (forceRest_ || (approach && closing < restThreshold(axis)))
+        return restCluster(a, b, axis, Wall{0});
 
-    const double C = ctx_.world.settings.bounciness;
-    const double u = centerOfMassVelocity(m1, v1, m2, v2);
+    const double C = settings.bounciness;
+    // Without Newton (resolve "reflect"): each body reverses its own component as off a wall at
+    // rest, v' = -C·v, whatever the other's mass and velocity: momentum is not conserved.
+    // Against an infinite mass both resolves are the same: u is that body's velocity.
+    const bool reflect = settings.resolve == Resolve::Reflect && A.isDynamic() && B.isDynamic();
+    const double u = reflect ? 0.0 : centerOfMassVelocity(m1, v1, m2, v2);
     const double v1After = A.isDynamic() ? velocityAfterCollision(v1, u, C) : v1;
     const double v2After = B.isDynamic() ? velocityAfterCollision(v2, u, C) : v2;
     setVelocity(a, axis, v1After);
@@ -92,8 +146,10 @@ Resolution Resolver::resolveWall(int a, int axis) {
     sync(a);
     const Block& A = ctx_.world.blocks[a];
     const double v = A.velocity[axis];
-    if (v == 0.0 || A.kind == BodyKind::Static) return Resolution::None;
-    const Wall wall = wallOnAxis(axis, v);
+    // At rest against a wall, with the exact integrator: it accelerates into the wall.
+    const double into = v != 0.0 || !ctx_.acceleration ? v : (*ctx_.acceleration)[a][axis];
+    if (into == 0.0 || A.kind == BodyKind::Static) return Resolution::None;
+    const Wall wall = wallOnAxis(axis, into);
     if (A.kind == BodyKind::Kinematic) {
         reverseKinematic(a, axis);
         record(a, wall, axis, A.mass, v, kInfiniteMass, 0.0, 0.0, 1.0, -v, 0.0, false);
@@ -276,6 +332,24 @@ Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) 
     for (int j : members_) {
         if (blocks[j].isDynamic()) setVelocity(j, axis, u);
         inCluster_[j] = 0;
+    }
+    // With the exact integrator the members also move on together: with the acceleration of
+    // their anchors (0: walls, static and kinematic blocks do not accelerate), or, free, with the
+    // cluster's own (total force over total mass) when the members' differ.
+    if (ctx_.acceleration) {
+        const std::vector<Vec2>& accel = *ctx_.acceleration;
+        double a = 0.0;
+        if (!anchored) {
+            double force = 0.0, mass = 0.0;
+            bool same = true;
+            for (int j : queue_) {
+                force += blocks[j].mass * accel[j][axis];
+                mass += blocks[j].mass;
+                same &= accel[j][axis] == accel[queue_.front()][axis];
+            }
+            a = same ? accel[queue_.front()][axis] : force / mass;
+        }
+        for (int j : queue_) setAcceleration(j, axis, a);
     }
     const double m2 = seedB >= 0 ? blocks[seedB].mass : kInfiniteMass;
     record(seedA, seedB >= 0 ? seedB : seedWall, axis, blocks[seedA].mass, v1, m2, v2, u, 0.0,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "broad_phase.h"
+#include "collision.h"
 #include "stats.h"
 #include "world.h"
 
@@ -39,6 +40,40 @@ struct SubstepContext {
     double advanced = 0.0;             // s, how far the method got (h unless the cap was hit)
     bool capHit = false;               // the perfect method's event cap ended the substep
     double maxPenetrationSeen = 0.0;   // m, overlap the method met (move-and-correct)
+    // m/s^2 per block over this substep: the exact integrator's constant accelerations (the rest
+    // rule zeroes them for supported blocks). Null for the Euler integrators: motion is linear.
+    std::vector<Vec2>* acceleration = nullptr;
+
+    // How blocks move within the substep and where the methods detect impacts: the methods call
+    // these instead of the linear formulas, so the integrator and the mistake "discrete" are
+    // read here only.
+    // Linear motion and no mistakes: the methods' inner loops may call the linear formulas.
+    bool plain() const { return !acceleration && !world.settings.mistakes; }
+    Vec2 accelerationOf(int i) const { return acceleration ? (*acceleration)[i] : Vec2{}; }
+    Vec2 positionAfter(int i, Vec2 p, Vec2 v, double t) const {
+        return acceleration ? ::positionAfter(p, v, (*acceleration)[i], t) : p + v * t;
+    }
+    Vec2 velocityAfter(int i, Vec2 v, double t) const {
+        return acceleration ? ::velocityAfter(v, (*acceleration)[i], t) : v;
+    }
+    // The box block i sweeps from p over t seconds.
+    Aabb path(int i, Vec2 p, Vec2 size, Vec2 v, double t) const {
+        return acceleration ? sweptAabb(p, size, v, (*acceleration)[i], t)
+                            : sweptAabb(p, size, v, t);
+    }
+    // Impact of block i (box a, velocity va) and block j (box b, velocity vb) within maxTime;
+    // j < 0: a body held still (the turn-based method's others).
+    Impact impact(int i, const Aabb& a, Vec2 va, int j, const Aabb& b, Vec2 vb,
+                  double maxTime) const {
+        if (plain()) return timeOfImpact(a, va, b, vb, maxTime); // the common case, inline
+        return impactWithOptions(i, a, va, j, b, vb, maxTime);
+    }
+    Impact impactWithOptions(int i, const Aabb& a, Vec2 va, int j, const Aabb& b, Vec2 vb,
+                             double maxTime) const;
+    WallImpact wallImpact(int i, const Aabb& box, Vec2 v, double maxTime) const {
+        return acceleration ? timeOfWallImpact(box, v, (*acceleration)[i], world.bounds, maxTime)
+                            : timeOfWallImpact(box, v, world.bounds, maxTime);
+    }
 };
 
 // Where the rest rule looks for the bodies that touch a cluster member: every block whose
@@ -99,6 +134,8 @@ class Resolver {
 
   private:
     double restThreshold(int axis) const;
+    bool approaching(int a, int b, int axis, double& closing) const;
+    void setAcceleration(int i, int axis, double a);
     void reverseKinematic(int i, int axis);
     Resolution restCluster(int seedA, int seedB, int axis, Wall seedWall);
     void record(int a, int b, int axis, double m1, double v1, double m2, double v2, double u,

@@ -32,6 +32,7 @@ constexpr double kMaxDt = 1.0; // s: longer frames are certainly a mistake
 constexpr int kMaxSubsteps = 1000;
 constexpr double kMaxMagnitude = 1e9; // m, m/s, m/s^2 (the messages say 1e9)
 constexpr double kMaxMass = 1e15;     // kg (the message says 1e15)
+constexpr double kMaxDrag = 1e6;      // kg/m^3 (the message says 1e6; water is 1e3)
 // m: overlaps up to this much count as touching, so stacks typed in decimals ("exactly
 // touching" up to rounding) are accepted.
 constexpr double kTouchTolerance = 1e-9;
@@ -196,7 +197,9 @@ bool isColor(const std::string& s) {
 
 void parseWorld(const json& world, Scene& scene) {
     requireObject(world, "world");
-    checkKeys(world, "world", {"bounds", "gravity", "bounciness", "method", "dt", "substeps"});
+    checkKeys(world, "world",
+              {"bounds", "gravity", "bounciness", "method", "dt", "substeps", "resolve",
+               "integrator", "mistakes", "drag"});
     WorldSettings& s = scene.settings;
     if (world.contains("bounds")) {
         const std::vector<double> b = numbers(world["bounds"], "world.bounds", 4);
@@ -231,11 +234,44 @@ void parseWorld(const json& world, Scene& scene) {
                              "must be a whole number from 1 to " + std::to_string(kMaxSubsteps)};
         s.substeps = static_cast<int>(k);
     }
+    if (world.contains("resolve")) {
+        const std::string name = string(world["resolve"], "world.resolve");
+        if (!parseResolve(name.c_str(), s.resolve))
+            throw ValueError{"world.resolve",
+                             "must be \"momentum\" or \"reflect\", not " + dumpValue(name)};
+    }
+    if (world.contains("integrator")) {
+        const std::string name = string(world["integrator"], "world.integrator");
+        if (!parseIntegrator(name.c_str(), s.integrator))
+            throw ValueError{"world.integrator", "must be \"semi-implicit-euler\", "
+                                                 "\"explicit-euler\" or \"exact\", not " +
+                                                     dumpValue(name)};
+    }
+    if (world.contains("mistakes")) {
+        const json& list = world["mistakes"];
+        if (!list.is_array()) throw ValueError{"world.mistakes", "must be an array of names"};
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const std::string path = indexPath("world.mistakes", i);
+            const std::string name = string(list[i], path);
+            Mistake m{};
+            if (!parseMistake(name.c_str(), m))
+                throw ValueError{path, "must be \"discrete\", \"move-back\", \"first-found\" or "
+                                       "\"no-approach-test\", not " +
+                                           dumpValue(name)};
+            if (s.has(m)) throw ValueError{path, dumpValue(name) + " is listed twice"};
+            s.set(m, true);
+        }
+    }
+    if (world.contains("drag")) {
+        s.drag = number(world["drag"], "world.drag");
+        if (!(s.drag >= 0.0 && s.drag <= kMaxDrag))
+            throw ValueError{"world.drag", "must be from 0 to 1e6 kg/m^3"};
+    }
 }
 
 BlockDef parseBlock(const json& value, const std::string& path) {
     requireObject(value, path);
-    checkKeys(value, path, {"name", "position", "size", "velocity", "mass", "color"});
+    checkKeys(value, path, {"name", "position", "size", "velocity", "mass", "color", "force"});
     BlockDef b;
     if (value.contains("name")) b.name = string(value["name"], keyPath(path, "name"));
     if (!value.contains("position")) throw ValueError{path, "missing \"position\""};
@@ -270,6 +306,15 @@ BlockDef parseBlock(const json& value, const std::string& path) {
         } else {
             throw ValueError{massPath, "must be a positive number, \"static\" or \"kinematic\""};
         }
+    }
+    if (value.contains("force")) {
+        const std::string forcePath = keyPath(path, "force");
+        b.force = vec2(value["force"], forcePath);
+        if (b.kind != BodyKind::Dynamic && b.force != Vec2{})
+            throw ValueError{forcePath, "only a dynamic block (one with a mass) feels a force"};
+        // Its acceleration, like gravity, at most 1e9 m/s^2 (F/m of a light block can be huge).
+        if (length(b.force) / b.mass > kMaxMagnitude)
+            throw ValueError{forcePath, "force / mass must be at most 1e9 m/s^2"};
     }
     if (value.contains("color")) {
         b.color = string(value["color"], keyPath(path, "color"));

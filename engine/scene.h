@@ -13,6 +13,7 @@ struct BlockDef {
     Vec2 size{1.0, 1.0}; // m
     Vec2 velocity;       // m/s
     double mass = 1.0;   // kg (dynamic only)
+    Vec2 force;          // N, constant (dynamic only): a thruster, a = F/m
     BodyKind kind = BodyKind::Dynamic;
     std::string color; // "#rrggbb", optional ("" when absent)
 

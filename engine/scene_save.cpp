@@ -30,6 +30,7 @@ std::string blockText(const BlockDef& b) {
                       : b.kind == BodyKind::Kinematic ? json("kinematic")
                                                       : json(b.mass);
     fields.push_back(field("mass", dumpValue(mass)));
+    if (b.force != Vec2{}) fields.push_back(field("force", numberList({b.force.x, b.force.y})));
     if (!b.color.empty()) fields.push_back(field("color", dumpValue(b.color)));
     std::string out = "{";
     for (std::size_t i = 0; i < fields.size(); ++i) out += (i ? ", " : "") + fields[i];
@@ -42,7 +43,7 @@ bool BlockDef::operator==(const BlockDef& o) const {
     // A static or kinematic block's mass is not part of the file ("static"/"kinematic").
     const bool sameMass = kind != BodyKind::Dynamic || mass == o.mass;
     return name == o.name && position == o.position && size == o.size && velocity == o.velocity &&
-           kind == o.kind && sameMass && color == o.color;
+           kind == o.kind && sameMass && force == o.force && color == o.color;
 }
 
 bool Scene::operator==(const Scene& o) const {
@@ -52,7 +53,9 @@ bool Scene::operator==(const Scene& o) const {
     const WorldSettings& b = o.settings;
     return name == o.name && description == o.description && bounds.min == o.bounds.min &&
            bounds.max == o.bounds.max && a.gravity == b.gravity && a.bounciness == b.bounciness &&
-           a.dt == b.dt && a.substeps == b.substeps && a.method == b.method && blocks == o.blocks;
+           a.dt == b.dt && a.substeps == b.substeps && a.method == b.method &&
+           a.resolve == b.resolve && a.integrator == b.integrator && a.mistakes == b.mistakes &&
+           a.drag == b.drag && blocks == o.blocks;
 }
 
 std::string sceneToJson(const Scene& scene) {
@@ -68,7 +71,15 @@ std::string sceneToJson(const Scene& scene) {
     out += "    " + field("bounciness", dumpValue(s.bounciness)) + ",\n";
     out += "    " + field("method", dumpValue(methodName(s.method))) + ",\n";
     out += "    " + field("dt", dumpValue(s.dt)) + ",\n";
-    out += "    " + field("substeps", dumpValue(s.substeps)) + "\n";
+    out += "    " + field("substeps", dumpValue(s.substeps)) + ",\n";
+    out += "    " + field("resolve", dumpValue(resolveName(s.resolve))) + ",\n";
+    out += "    " + field("integrator", dumpValue(integratorName(s.integrator))) + ",\n";
+    json mistakes = json::array();
+    for (int m = 0; m < static_cast<int>(Mistake::Count); ++m)
+        if (s.has(static_cast<Mistake>(m)))
+            mistakes.push_back(mistakeName(static_cast<Mistake>(m)));
+    out += "    " + field("mistakes", dumpValue(mistakes)) + ",\n";
+    out += "    " + field("drag", dumpValue(s.drag)) + "\n";
     out += "  },\n";
     out += "  \"blocks\": [";
     for (std::size_t i = 0; i < scene.blocks.size(); ++i)
@@ -114,6 +125,7 @@ World makeWorld(const Scene& scene) {
         b.kind = def.kind;
         b.velocity = def.kind == BodyKind::Static ? Vec2{} : def.velocity;
         b.mass = def.kind == BodyKind::Dynamic ? def.mass : kInfiniteMass;
+        b.force = def.kind == BodyKind::Dynamic ? def.force : Vec2{};
         world.blocks.push_back(b);
     }
     return world;
@@ -137,7 +149,7 @@ Scene sceneFromWorld(const World& world, const Scene& original) {
         def.size = b.size;
         def.velocity = b.velocity;
         def.kind = b.kind;
-        if (b.kind == BodyKind::Dynamic) def.mass = b.mass;
+        if (b.kind == BodyKind::Dynamic) def.mass = b.mass, def.force = b.force;
         scene.blocks.push_back(def);
     }
     return scene;

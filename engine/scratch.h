@@ -56,6 +56,7 @@ struct StepScratch {
     BroadPhase broadPhase;  // the methods' broad phase (every substep builds it anew)
     BroadPhase overlapGrid; // maxOverlap's own, so measuring never touches the stepping grid
     std::vector<std::pair<int, int>> overlappingPairs; // move-and-correct
+    std::vector<Vec2> acceleration; // the exact integrator's, per block (World::step)
     TurnBasedScratch turnBased;
     PerfectScratch perfect;
 };

@@ -42,6 +42,15 @@ constexpr size_t kListedPairs = 16;
 
 using FirstImpact = TurnBasedScratch::FirstImpact;
 
+// Mistake "first-found": keeps the hit block that comes first in the list. Not inlined: the
+// query's loop stays as small as without the mistake.
+[[gnu::noinline]] void noteFirstInList(FirstImpact& first, int j, const Impact& impact) {
+    if (!first.blocks.empty() && first.blocks.front().first < j) return;
+    first.time = impact.time;
+    first.wallAxes = 0;
+    first.blocks.assign(1, {j, impact.axes});
+}
+
 // The first impact of block i moving for `remaining` seconds along `path` (its swept box) with
 // everything else held still.
 void findFirstImpact(SubstepContext& ctx, int i, double remaining, const Aabb& path,
@@ -53,18 +62,13 @@ void findFirstImpact(SubstepContext& ctx, int i, double remaining, const Aabb& p
     first.wallAxes = 0;
     first.blocks.clear();
 
-    const WallImpact wall = timeOfWallImpact(box, block.velocity, ctx.world.bounds, remaining);
+    const WallImpact wall = ctx.wallImpact(i, box, block.velocity, remaining);
     if (wall.hit()) {
         first.time = wall.time;
         first.wallAxes = wall.axes;
     }
-    ctx.broadPhase.queryOthers(path, i, [&](int j) {
-        // The others hold still: only a block the path reaches (touching counts) can be hit.
-        const Aabb other = aabbOf(blocks[j]);
-        if (other.min.x > path.max.x || other.max.x < path.min.x || other.min.y > path.max.y ||
-            other.max.y < path.min.y)
-            return;
-        const Impact impact = timeOfImpact(box, block.velocity, other, Vec2{}, remaining);
+    // Keeps the earliest impact (and every block hit at that same time).
+    auto keepEarliest = [&](int j, const Impact& impact) {
         if (!impact.hit() || impact.time > first.time) return;
         if (impact.time < first.time) {
             first.time = impact.time;
@@ -72,6 +76,31 @@ void findFirstImpact(SubstepContext& ctx, int i, double remaining, const Aabb& p
             first.blocks.clear();
         }
         first.blocks.emplace_back(j, impact.axes);
+    };
+    // The others hold still: only a block the path reaches (touching counts) can be hit.
+    auto reaches = [&](const Aabb& other) {
+        return !(other.min.x > path.max.x || other.max.x < path.min.x || other.max.y < path.min.y ||
+                 other.min.y > path.max.y);
+    };
+    if (ctx.plain()) { // linear motion, no mistakes: the plain time of impact, in a tight loop
+        ctx.broadPhase.queryOthers(path, i, [&](int j) {
+            const Aabb other = aabbOf(blocks[j]);
+            if (reaches(other))
+                keepEarliest(j, timeOfImpact(box, block.velocity, other, Vec2{}, remaining));
+        });
+        return;
+    }
+    // Mistake "first-found" (lecture, "BAD: resolving wrong collision"): the first block in list
+    // order that the path hits wins, not the earliest; walls only when no block is hit.
+    const bool firstFound = ctx.world.settings.has(Mistake::FirstFound);
+    ctx.broadPhase.queryOthers(path, i, [&](int j) {
+        const Aabb other = aabbOf(blocks[j]);
+        if (!reaches(other)) return;
+        const Impact impact = ctx.impact(i, box, block.velocity, -1, other, Vec2{}, remaining);
+        if (firstFound && impact.hit())
+            noteFirstInList(first, j, impact);
+        else
+            keepEarliest(j, impact);
     });
 }
 
@@ -243,8 +272,9 @@ void advanceTurnBased(SubstepContext& ctx) {
     // Every block registers the box it can sweep this step; a block whose velocity changes
     // re-registers before its turn, so the queries see every block wherever it is.
     grid.build(ctx.world.bounds, blocks, [&](int i) {
-        return sweptAabb(blocks[i].position, blocks[i].size, blocks[i].velocity, ctx.h);
+        return ctx.path(i, blocks[i].position, blocks[i].size, blocks[i].velocity, ctx.h);
     });
+    const bool moveBack = ctx.world.settings.has(Mistake::MoveBack);
 
     TurnBasedScratch& scratch = ctx.scratch.turnBased;
     Contacts contacts(ctx, scratch);
@@ -256,28 +286,43 @@ void advanceTurnBased(SubstepContext& ctx) {
         double elapsed = 0.0;
         for (int contact = 0; contact <= kMaxRestingContactsPerTurn; ++contact) {
             const double remaining = ctx.h - elapsed;
-            const Aabb path = sweptAabb(block.position, block.size, block.velocity, remaining);
+            const Aabb path = ctx.path(i, block.position, block.size, block.velocity, remaining);
             if (!contains(grid.box(i), path)) grid.set(i, path);
             findFirstImpact(ctx, i, remaining, path, first);
             if (first.time == kNever) { // free flight for the rest of the step
-                block.position += block.velocity * remaining;
+                block.position = ctx.positionAfter(i, block.position, block.velocity, remaining);
+                block.velocity = ctx.velocityAfter(i, block.velocity, remaining);
                 break;
             }
             // Point of impact: POI = oldPosition + t · velocity (lecture, "Point of Impact").
-            block.position += block.velocity * first.time;
+            const Vec2 poi = ctx.positionAfter(i, block.position, block.velocity, first.time);
+            if (moveBack) {
+                // Mistake "move-back" (lecture, "BAD: no exact point of impact"): moved the whole
+                // step, then back out along the collision axis only.
+                const std::uint8_t axes =
+                    first.blocks.empty() ? first.wallAxes : first.blocks.front().second;
+                const Vec2 whole = ctx.positionAfter(i, block.position, block.velocity, remaining);
+                if (axes == kAxisX || axes == kAxisY)
+                    block.position = movedBackAlongAxis(whole, poi, axes == kAxisX ? 0 : 1);
+                else
+                    block.position = poi;
+            } else {
+                block.position = poi;
+            }
+            block.velocity = ctx.velocityAfter(i, block.velocity, first.time);
             elapsed += first.time;
             bool bounced = false, rested = false;
             contacts.resolveInstant(i, first, elapsed, bounced, rested);
             // Blocks hit by this one changed velocity: they may go further than they registered.
             for (int j : resolver.changed()) {
                 const Block& b = blocks[j];
-                const Aabb reach = sweptAabb(b.position, b.size, b.velocity, ctx.h);
+                const Aabb reach = ctx.path(j, b.position, b.size, b.velocity, ctx.h);
                 if (!contains(grid.box(j), reach)) grid.set(j, reach);
             }
             resolver.clearChanged();
             // A bounce ends the turn (the rest of the step is lost, as in the lecture); so does
             // a "collision that is not really a collision". Only a resting contact lets it go on.
-            if (bounced || !rested) break;
+            if (bounced || !rested || moveBack) break;
         }
     }
     ctx.advanced = ctx.h;

@@ -18,6 +18,27 @@ const char* methodName(Method method);
 // Parses a method name; returns false (and leaves `method` alone) for an unknown name.
 bool parseMethod(const char* name, Method& method);
 
+// How a collision changes the velocities (lecture, "Demo: bouncing squares; with/without
+// Newton"): the momentum formula, or each body reversing its own component as off a wall.
+enum class Resolve : std::uint8_t { Momentum, Reflect, Count };
+// How a step advances velocities and positions (lecture, "Integration", "It is just an
+// approximation of the true movement! (Piecewise linear instead of parabola)").
+enum class Integrator : std::uint8_t { SemiImplicitEuler, ExplicitEuler, Exact, Count };
+// The Tips slides' mistakes, each off by default; WorldSettings::mistakes holds a set of them.
+enum class Mistake : std::uint8_t { Discrete, MoveBack, FirstFound, NoApproachTest, Count };
+
+// The names used in scene files and on the CLI: "momentum" | "reflect"; "semi-implicit-euler" |
+// "explicit-euler" | "exact"; "discrete" | "move-back" | "first-found" | "no-approach-test".
+// The parsers return false (and leave the value alone) for an unknown name.
+const char* resolveName(Resolve resolve);
+bool parseResolve(const char* name, Resolve& resolve);
+const char* integratorName(Integrator integrator);
+bool parseIntegrator(const char* name, Integrator& integrator);
+const char* mistakeName(Mistake mistake);
+bool parseMistake(const char* name, Mistake& mistake);
+// The lecture slide each mistake illustrates (for docs, the panel and the stability matrix).
+const char* mistakeSlide(Mistake mistake);
+
 // Dynamic blocks have a finite mass and feel gravity. Static blocks never move. Kinematic blocks
 // move at their own constant velocity, ignore gravity, and reverse the velocity component on
 // hitting a wall or a static block (a moving platform). Static and kinematic have infinite mass.
@@ -30,6 +51,7 @@ struct Block {
     Vec2 size;         // m, full width and height
     Vec2 velocity;     // m/s
     double mass = 1.0; // kg; kInfiniteMass for static and kinematic blocks
+    Vec2 force;        // N, a constant force on a dynamic block (a thruster): a = F/m
     BodyKind kind = BodyKind::Dynamic;
 
     bool isDynamic() const { return kind == BodyKind::Dynamic; }
@@ -54,6 +76,16 @@ struct WorldSettings {
     double restSpeed = 1e-6;
     int eventCap = 20000;       // perfect method: collision events per substep at most
     bool measureOverlap = true; // compute StepStats::maxPenetration (costs one broad phase)
+    Resolve resolve = Resolve::Momentum; // the lecture's formula, or "without Newton"
+    Integrator integrator = Integrator::SemiImplicitEuler;
+    std::uint8_t mistakes = 0; // bit (1 << Mistake) set: that mistake is made (all off: correct)
+    double drag = 0.0;         // k in kg/m^3: quadratic drag force -k·A·|v|·v, A = w·h (m^2)
+
+    bool has(Mistake m) const { return (mistakes >> static_cast<int>(m)) & 1u; }
+    void set(Mistake m, bool on) {
+        const auto bit = static_cast<std::uint8_t>(1u << static_cast<int>(m));
+        mistakes = static_cast<std::uint8_t>(on ? mistakes | bit : mistakes & ~bit);
+    }
 };
 
 WorldSettings defaultWorldSettings();
@@ -88,6 +120,12 @@ struct World {
     // statistics. When `log` is given, every resolved collision is appended to it.
     StepStats step(std::vector<CollisionRecord>* log = nullptr);
 };
+
+// The acceleration of a dynamic block over a step of h seconds (m/s^2, lecture "Newton's 2nd
+// law": a = F/m): gravity, its own force F/m and the world's drag -k·A·|v|·v/m, the drag's capped
+// at |v|/h (a drag can stop a block within a step, never reverse it: without the cap explicit
+// steps with k·A·|v|·h/m > 2 would grow without bound). The one place forces are summed.
+Vec2 accelerationOf(const WorldSettings& settings, const Block& block, double h);
 
 // Totals over the dynamic blocks (kinematic and static blocks have infinite mass: left out).
 Vec2 totalMomentum(const World& world);     // kg·m/s, Σ m·v

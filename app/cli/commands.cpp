@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <iomanip>
 #include <ostream>
 
@@ -72,6 +73,22 @@ bool applyOptions(const RunRequest& r, WorldSettings& s, StopRule& stop, std::os
             return bad("--gravity", *r.gravity, "must be GX,GY in m/s^2, e.g. 0,-9.81");
         s.gravity = g;
     }
+    if (r.resolve && !parseResolve(r.resolve->c_str(), s.resolve))
+        return bad("--resolve", *r.resolve, "must be momentum or reflect");
+    if (r.integrator && !parseIntegrator(r.integrator->c_str(), s.integrator))
+        return bad("--integrator", *r.integrator,
+                   "must be semi-implicit-euler, explicit-euler or exact");
+    for (const std::string& name : r.mistakes) {
+        if (name == "none") { // the scene's mistakes off
+            s.mistakes = 0;
+            continue;
+        }
+        Mistake m{};
+        if (!parseMistake(name.c_str(), m))
+            return bad("--mistake", name,
+                       "must be discrete, move-back, first-found, no-approach-test or none");
+        s.set(m, true);
+    }
     if (r.steps && !(parseInt(*r.steps, stop.frames) && stop.frames >= 0))
         return bad("--steps", *r.steps, "must be a whole number of frames, 0 or more");
     if (r.time) {
@@ -86,14 +103,50 @@ bool applyOptions(const RunRequest& r, WorldSettings& s, StopRule& stop, std::os
     return true;
 }
 
-StepTotals simulate(World& world, const StopRule& stop) {
+// ---- --trace: one CSV row per frame, for a spreadsheet ----
+
+// A CSV field: quoted, quotes doubled, control bytes (never echoed raw) as spaces.
+std::string csvField(const std::string& text) {
+    std::string out = "\"";
+    for (const char c : text) {
+        if (c == '"')
+            out += "\"\"";
+        else
+            out += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? ' ' : c;
+    }
+    return out + "\"";
+}
+
+void writeTraceHeader(std::ostream& out, const Scene& scene) {
+    out << "t";
+    for (std::size_t i = 0; i < scene.blocks.size(); ++i) {
+        const std::string name = scene.blocks[i].name.empty() ? "blocks[" + std::to_string(i) + "]"
+                                                              : scene.blocks[i].name;
+        for (const char* column : {" x", " y", " vx", " vy"}) out << ',' << csvField(name + column);
+    }
+    out << ",momentum_x,momentum_y,kinetic_energy,potential_energy\n";
+}
+
+// t (s), per block position (m) and velocity (m/s), totals: momentum (kg m/s), energies (J).
+void writeTraceRow(std::ostream& out, const World& world, const StepStats& s) {
+    out << world.time;
+    for (const Block& b : world.blocks)
+        out << ',' << b.position.x << ',' << b.position.y << ',' << b.velocity.x << ','
+            << b.velocity.y;
+    out << ',' << s.momentum.x << ',' << s.momentum.y << ',' << s.kineticEnergy << ','
+        << s.potentialEnergy << '\n';
+}
+
+StepTotals simulate(World& world, const StopRule& stop, std::ostream* trace) {
     StepTotals totals;
     // --time stops once the world time is within a tiny fraction of a frame of T, so rounding in
     // the sum of the frame lengths cannot add a frame.
     const double epsilon = 1e-6 * world.settings.dt;
     while (totals.steps < stop.frames) {
         if (stop.time && world.time >= *stop.time - epsilon) break;
-        addStep(totals, world.step());
+        const StepStats s = world.step();
+        if (trace) writeTraceRow(*trace, world, s);
+        addStep(totals, s);
     }
     return totals;
 }
@@ -111,6 +164,14 @@ void printJson(const Scene& scene, const World& world, const StepTotals& t, std:
     j["substeps"] = s.substeps;
     j["bounciness"] = s.bounciness;
     j["gravity"] = vecJson(s.gravity);
+    j["resolve"] = resolveName(s.resolve);
+    j["integrator"] = integratorName(s.integrator);
+    nlohmann::ordered_json mistakes = nlohmann::ordered_json::array();
+    for (int m = 0; m < static_cast<int>(Mistake::Count); ++m)
+        if (s.has(static_cast<Mistake>(m)))
+            mistakes.push_back(mistakeName(static_cast<Mistake>(m)));
+    j["mistakes"] = std::move(mistakes);
+    j["drag"] = s.drag;
     j["sim_time"] = world.time;
     j["steps"] = t.steps;
     j["collisions"] = t.collisions;
@@ -182,7 +243,24 @@ int runCommand(const RunRequest& request, std::ostream& out, std::ostream& err) 
     StopRule stop;
     if (!applyOptions(request, scene.settings, stop, err)) return kExitBadInput;
     World world = makeWorld(scene);
-    const StepTotals totals = simulate(world, stop);
+    std::ofstream trace;
+    if (request.trace) {
+        trace.open(*request.trace, std::ios::binary | std::ios::trunc);
+        if (!trace) {
+            err << "sandbox-cli run: --trace " << *request.trace << ": cannot write the file\n";
+            return kExitBadInput;
+        }
+        trace << std::setprecision(17);
+        writeTraceHeader(trace, scene);
+    }
+    const StepTotals totals = simulate(world, stop, request.trace ? &trace : nullptr);
+    if (request.trace) {
+        trace.close();
+        if (!trace) {
+            err << "sandbox-cli run: --trace " << *request.trace << ": writing failed\n";
+            return kExitBadInput;
+        }
+    }
     if (request.json)
         printJson(scene, world, totals, out);
     else

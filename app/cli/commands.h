@@ -7,6 +7,7 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <vector>
 
 // Exit codes of sandbox-cli.
 enum ExitCode : int { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2 };
@@ -22,6 +23,10 @@ struct RunRequest {
     std::optional<std::string> gravity;    // "GX,GY" in m/s^2
     std::optional<std::string> steps;      // frames to simulate, >= 0
     std::optional<std::string> time;       // s of simulated time to reach, >= 0
+    std::optional<std::string> resolve;    // "momentum" | "reflect"
+    std::optional<std::string> integrator; // "semi-implicit-euler" | "explicit-euler" | "exact"
+    std::vector<std::string> mistakes;     // added to the scene's: "discrete", "move-back", ...
+    std::optional<std::string> trace;      // CSV file: a header and one row per frame
     bool json = false;                     // print one JSON object instead of a summary
 };
 

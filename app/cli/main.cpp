@@ -41,6 +41,23 @@ int main(int argc, char** argv) {
                            "Simulate until T seconds of simulated time, or at most 100*T/dt frames "
                            "if the event cap holds time back");
     stepsOpt->excludes(timeOpt);
+    std::string resolve, integrator, trace;
+    CLI::Option* resolveOpt = runCmd->add_option(
+        "--resolve", resolve,
+        "Collision resolve: momentum (the lecture's formula) or reflect (without Newton: each "
+        "body reverses its own velocity, v' = -C*v) (default: the scene's)");
+    CLI::Option* integratorOpt = runCmd->add_option(
+        "--integrator", integrator,
+        "Integrator: semi-implicit-euler, explicit-euler or exact (constant acceleration "
+        "integrated exactly) (default: the scene's)");
+    CLI::Option* mistakeOpt = runCmd->add_option(
+        "--mistake", run.mistakes,
+        "Make one of the lecture's mistakes (repeatable, added to the scene's): discrete, "
+        "move-back, first-found, no-approach-test; none clears the scene's");
+    CLI::Option* traceOpt = runCmd->add_option(
+        "--trace", trace,
+        "Write a CSV file: a header and one row per frame (t, each block's x, y, vx, vy, total "
+        "momentum, kinetic and potential energy)");
     runCmd->add_flag("--json", run.json,
                      "Print one JSON object: sim_time, steps, collisions, max_penetration, "
                      "momentum, kinetic_energy, potential_energy, event_cap_hits, wall_ms, blocks");
@@ -51,6 +68,10 @@ int main(int argc, char** argv) {
     gravityOpt->type_name("GX,GY");
     stepsOpt->type_name("N");
     timeOpt->type_name("T");
+    resolveOpt->type_name("R");
+    integratorOpt->type_name("I");
+    mistakeOpt->type_name("NAME");
+    traceOpt->type_name("FILE.csv");
 
     std::string validatePath;
     CLI::App* validateCmd = app.add_subcommand(
@@ -120,6 +141,9 @@ int main(int argc, char** argv) {
         run.gravity = given(gravityOpt, gravity);
         run.steps = given(stepsOpt, steps);
         run.time = given(timeOpt, time);
+        run.resolve = given(resolveOpt, resolve);
+        run.integrator = given(integratorOpt, integrator);
+        run.trace = given(traceOpt, trace);
         return runCommand(run, std::cout, std::cerr);
     } catch (const std::exception& e) { // e.g. out of memory on a huge scene
         std::cerr << "sandbox-cli: " << e.what() << "\n";

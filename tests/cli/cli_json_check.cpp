@@ -3,6 +3,8 @@
 // Usage: cli_json_check SANDBOX_CLI SCENES_DIR. Exit 0 when every check passes.
 #include "scene.h"
 
+#include "cli_check.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -12,26 +14,8 @@
 
 namespace {
 
-int failures = 0;
-
-void check(bool ok, const std::string& what) {
-    if (!ok) {
-        ++failures;
-        std::cerr << "FAILED: " << what << "\n";
-    }
-}
-
-// Runs a shell command and returns its standard output; `status` gets the exit status.
-std::string capture(const std::string& command, int& status) {
-    std::string out;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return out;
-    char buffer[4096];
-    std::size_t n = 0;
-    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-    status = pclose(pipe);
-    return out;
-}
+using cli_check::capture;
+using cli_check::check;
 
 bool isVec2(const nlohmann::json& j) {
     return j.is_array() && j.size() == 2 && j[0].is_number() && j[1].is_number();
@@ -128,6 +112,6 @@ int main(int argc, char** argv) {
         check(near(o["sim_time"], 0.05), "5 steps of 0.01 s");
     }
 
-    if (failures == 0) std::cout << "all checks passed\n";
-    return failures == 0 ? 0 : 1;
+    if (cli_check::failures == 0) std::cout << "all checks passed\n";
+    return cli_check::failures == 0 ? 0 : 1;
 }
