@@ -106,8 +106,9 @@ Font& chartFont() {
     static Font font; // loaded once: the charts of a run share it
     return font;
 }
-const Rgb kPalette[] = {{208, 64, 64},  {64, 112, 208}, {64, 160, 80},  {144, 80, 192},
-                        {224, 138, 48}, {48, 160, 160}, {120, 120, 120}};
+const Rgb kPalette[] = {{208, 64, 64},   {64, 112, 208}, {64, 160, 80},
+                        {144, 80, 192},  {224, 138, 48}, {48, 160, 160},
+                        {120, 120, 120}, {150, 100, 40}, {220, 110, 180}};
 
 // An RGB image with the few drawing operations a chart needs.
 class Canvas {

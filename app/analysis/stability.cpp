@@ -146,16 +146,70 @@ const FailureScene kScenes[] = {
     {"crushed_block", 10.0},
 };
 
+// The Tips slides' mistakes (WorldSettings::mistakes): each scene is run as shipped, with its
+// mistake on, and again with it off; the row says what the mistake changed under each method.
+const FailureScene kMistakeScenes[] = {
+    {"mistake_discrete", 1.0},
+    {"mistake_move_back", 0.5},
+    {"mistake_first_found", 1.0},
+    {"mistake_no_approach_test", 1.0},
+};
+
+StabilityResult judgeMistake(const std::string& name, const Run& on, const Run& off) {
+    StabilityResult out;
+    out.scene = name;
+    out.method = methodName(on.world.settings.method);
+    double moved = 0.0; // m, largest difference of a block's final position
+    for (size_t i = 0; i < on.world.blocks.size(); ++i)
+        moved = std::max(moved, length(on.world.blocks[i].position - off.world.blocks[i].position));
+    const long extra = static_cast<long>(on.totals.collisions - off.totals.collisions);
+    const double overlap = on.totals.maxPenetration - off.totals.maxPenetration;
+    std::string v;
+    if (name == "mistake_discrete" && on.crossed != off.crossed) {
+        v = on.crossed ? "tunnels" : "stops";
+        out.value = 1.0;
+    } else if (overlap > 1e-9) {
+        v = "overlap " + format(on.totals.maxPenetration) + " m";
+        out.value = overlap;
+    } else if (extra != 0) {
+        v = std::to_string(extra) + " extra collisions";
+        out.value = static_cast<double>(extra);
+    } else if (moved > 1e-9) {
+        v = "crooked: " + format(moved) + " m off";
+        out.value = moved;
+    }
+    out.fails = !v.empty();
+    out.verdict = v.empty() ? "unaffected" : v;
+    out.detail = "with the mistake against without: tunnelling, extra overlap, extra collisions, "
+                 "largest difference of a final position (" +
+                 format(moved) + " m)";
+    return out;
+}
+
+Scene loadScene(const std::string& scenesDir, const char* name) {
+    SceneResult loaded = loadSceneFile(scenesDir + "/" + name + ".json");
+    if (!loaded.scene) throw std::runtime_error(loaded.error.text());
+    return *loaded.scene;
+}
+
 } // namespace
 
 std::vector<StabilityResult> runStability(const std::string& scenesDir) {
     std::vector<StabilityResult> results;
     for (const FailureScene& fs : kScenes) {
-        SceneResult loaded = loadSceneFile(scenesDir + "/" + fs.name + ".json");
-        if (!loaded.scene) throw std::runtime_error(loaded.error.text());
+        const Scene scene = loadScene(scenesDir, fs.name);
         for (int m = 0; m < static_cast<int>(Method::Count); ++m)
-            results.push_back(
-                judge(fs.name, simulate(*loaded.scene, static_cast<Method>(m), fs.seconds)));
+            results.push_back(judge(fs.name, simulate(scene, static_cast<Method>(m), fs.seconds)));
+    }
+    for (const FailureScene& fs : kMistakeScenes) {
+        const Scene scene = loadScene(scenesDir, fs.name);
+        Scene correct = scene;
+        correct.settings.mistakes = 0;
+        for (int m = 0; m < static_cast<int>(Method::Count); ++m) {
+            const Method method = static_cast<Method>(m);
+            results.push_back(judgeMistake(fs.name, simulate(scene, method, fs.seconds),
+                                           simulate(correct, method, fs.seconds)));
+        }
     }
     return results;
 }

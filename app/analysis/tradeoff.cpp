@@ -122,13 +122,14 @@ std::vector<Vec2> cradleExact(const Scene& s, double t) {
 struct Experiment {
     const char* scene;
     const char* unit;
+    bool integrators; // gravity: the methods run with the exact integrator too
 };
 const Experiment kExperiments[] = {
-    {"single_bounce", "relative energy error after 3 bounces"},
-    {"lecture_example_1", "m, position error"},
-    {"newtons_cradle", "m, position error"},
-    {"gas_100", "max(relative energy drift, overlap / size)"},
-    {"resting_stack", "m, largest displacement"},
+    {"single_bounce", "relative energy error after 3 bounces", true},
+    {"lecture_example_1", "m, position error", false},
+    {"newtons_cradle", "m, position error", false},
+    {"gas_100", "max(relative energy drift, overlap / size)", false},
+    {"resting_stack", "m, largest displacement", true},
 };
 
 struct Setup {
@@ -153,12 +154,14 @@ Setup setupFor(const std::string& name, const Scene& s) {
 // Runs one simulation for the experiment's duration (rounded to whole frames: the measures'
 // exact answers are taken at the simulated time actually reached).
 TradeoffRow runOne(const std::string& engine, const std::string& sceneName, const Scene& scene,
-                   double dt, int substeps, const char* unit) {
+                   double dt, int substeps, const char* unit, Integrator integrator) {
     std::unique_ptr<Simulation> sim;
     Method method;
-    if (parseMethod(engine.c_str(), method))
-        sim = makeEngineSimulation(scene, method, dt, substeps);
-    else
+    if (parseMethod(engine.c_str(), method)) {
+        Scene s = scene;
+        s.settings.integrator = integrator;
+        sim = makeEngineSimulation(s, method, dt, substeps);
+    } else
         sim = makePeerSimulation(engine, scene, dt, substeps);
     Setup setup = setupFor(sceneName, scene);
     // Frames to reach the duration; the exact answers are at the duration itself, so the dt grid
@@ -171,6 +174,10 @@ TradeoffRow runOne(const std::string& engine, const std::string& sceneName, cons
     }
     TradeoffRow row;
     row.engine = engine;
+    if (integrator != Integrator::SemiImplicitEuler) {
+        row.integrator = integratorName(integrator);
+        row.engine += ", " + row.integrator;
+    }
     row.scene = sceneName;
     row.dt = dt;
     row.substeps = substeps;
@@ -200,8 +207,12 @@ std::vector<TradeoffRow> runTradeoff(const TradeoffOptions& options) {
             for (double rate : rates) {
                 for (int substeps : {1, 4}) {
                     if (substeps > 1 && rate * substeps > rates.back()) continue;
-                    rows.push_back(
-                        runOne(engine, e.scene, *loaded.scene, 1.0 / rate, substeps, e.unit));
+                    rows.push_back(runOne(engine, e.scene, *loaded.scene, 1.0 / rate, substeps,
+                                          e.unit, Integrator::SemiImplicitEuler));
+                    Method method;
+                    if (e.integrators && substeps == 1 && parseMethod(engine.c_str(), method))
+                        rows.push_back(runOne(engine, e.scene, *loaded.scene, 1.0 / rate, 1, e.unit,
+                                              Integrator::Exact));
                 }
             }
         }
@@ -210,11 +221,12 @@ std::vector<TradeoffRow> runTradeoff(const TradeoffOptions& options) {
 }
 
 void writeTradeoffCsv(std::ostream& out, const std::vector<TradeoffRow>& rows) {
-    out << "method,scene,dt,substeps,cost_ms_per_simulated_second,error,error_unit\n";
+    out << "method,scene,dt,substeps,cost_ms_per_simulated_second,error,error_unit,integrator\n";
     out << std::setprecision(9);
     for (const TradeoffRow& r : rows)
-        out << r.engine << ',' << r.scene << ',' << r.dt << ',' << r.substeps << ','
-            << r.msPerSimulatedSecond << ',' << r.error << ",\"" << r.errorUnit << "\"\n";
+        out << '"' << r.engine << "\"," << r.scene << ',' << r.dt << ',' << r.substeps << ','
+            << r.msPerSimulatedSecond << ',' << r.error << ",\"" << r.errorUnit << "\","
+            << r.integrator << "\n";
 }
 
 void writeTradeoffMarkdown(std::ostream& out, const std::vector<TradeoffRow>& rows) {

@@ -1,5 +1,7 @@
 // Speed versus accuracy: every method (and peer) over a sweep of dt and substeps on scenes whose
 // answer is known, each run giving a cost (ms of stepping per simulated second) and an error.
+// Where gravity makes the integrator matter (the bounce, the stack) the methods run with the
+// exact integrator too, as engines named "METHOD, exact".
 #pragma once
 
 #include <ostream>
@@ -14,6 +16,7 @@ struct TradeoffRow {
     double msPerSimulatedSecond = 0.0; // cost
     double error = 0.0;                // the scene's error measure (see errorUnit)
     std::string errorUnit;             // what the error means, e.g. "m" or "relative energy"
+    std::string integrator = "semi-implicit-euler"; // the engine's (peers: their own)
 };
 
 struct TradeoffOptions {

@@ -87,3 +87,17 @@ TEST(Stability, NothingRunsAwayUnderTheExactMethods) {
         EXPECT_TRUE(outcome(scene, "move-and-correct").fails) << scene; // overlaps
     }
 }
+
+TEST(Stability, EachMistakeShowsWhereItsSlideSaysAndNowhereElse) {
+    // With the mistake on against off (the shipped scenes have it on).
+    EXPECT_EQ(outcome("mistake_discrete", "perfect").verdict, "tunnels");
+    EXPECT_EQ(outcome("mistake_discrete", "turn-based").verdict, "tunnels");
+    EXPECT_EQ(outcome("mistake_discrete", "move-and-correct").verdict, "unaffected");
+    EXPECT_EQ(outcome("mistake_move_back", "turn-based").verdict, "crooked: 1.25 m off");
+    EXPECT_EQ(outcome("mistake_move_back", "perfect").verdict, "unaffected");
+    EXPECT_EQ(outcome("mistake_first_found", "turn-based").verdict, "overlap 0.5 m");
+    EXPECT_EQ(outcome("mistake_first_found", "perfect").verdict, "unaffected");
+    EXPECT_EQ(outcome("mistake_no_approach_test", "turn-based").verdict, "2 extra collisions");
+    EXPECT_EQ(outcome("mistake_no_approach_test", "perfect").verdict, "unaffected");
+    EXPECT_EQ(outcome("mistake_no_approach_test", "move-and-correct").verdict, "unaffected");
+}
