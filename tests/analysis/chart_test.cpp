@@ -37,9 +37,14 @@ int darkPixels(const std::string& png, int x0, int y0, int x1, int y1) {
     return dark;
 }
 
-const std::string kPng = (std::filesystem::temp_directory_path() / "chart_test.png").string();
+// One file per test: ctest runs tests in parallel processes.
+std::string pngPath(const char* test) {
+    return (std::filesystem::temp_directory_path() / (std::string("chart_test_") + test + ".png"))
+        .string();
+}
 
 TEST(Chart, TitleTextIsDrawn) {
+    const std::string kPng = pngPath("title");
     std::string error;
     // The title's line (y 14 to 44 at 24 px) holds ink only where there is text.
     ASSERT_TRUE(writeLogLogChart(kPng, onePanel(), "", &error)) << error;
@@ -52,6 +57,8 @@ TEST(Chart, TitleTextIsDrawn) {
 }
 
 TEST(Chart, MissingFontIsAClearError) {
+    const std::string kPng = pngPath("missing_font");
+    std::remove(kPng.c_str());
     ASSERT_EQ(setenv("SANDBOX_CHART_FONT", "/nonexistent/DejaVuSans.ttf", 1), 0);
     std::string error;
     EXPECT_FALSE(writeLogLogChart(kPng, onePanel(), "title", &error));

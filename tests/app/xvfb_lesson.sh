@@ -29,7 +29,7 @@ sleep 1; shot back1
 [ "$(differing step1 back1 $caption_region)" -eq 0 ] || fail "PageUp: not step 1's caption"
 echo "ok: PageUp goes back to step 1"
 
-# End goes to the last step. Typing 1 9 Enter jumps to step 19 (the platformer, no timings on
+# End goes to the last step. Typing 2 5 Enter jumps to step 25 (the platformer, no timings on
 # screen), which pauses by itself at t = 1.5 s; R restarts it, it plays and pauses again at the
 # same state: the same picture.
 pauses() { grep -c "^paused" "$log"; }
@@ -38,15 +38,15 @@ wait_pause() {
     for _ in $(seq 300); do [ "$(pauses)" -gt "$1" ] && return 0; sleep 0.1; done
     fail "$2"
 }
-xdotool key End; wait_for "lesson step 20 / "
+xdotool key End; wait_for "lesson step 26 / "
 echo "ok: End goes to the last step"
 n=$(pauses)
-xdotool key 1 9 Return; wait_for "lesson step 19 / "
-echo "ok: 1 9 Enter goes to step 19"
-wait_pause "$n" "step 19 did not pause by itself"
+xdotool key 2 5 Return; wait_for "lesson step 25 / "
+echo "ok: 2 5 Enter goes to step 25"
+wait_pause "$n" "step 25 did not pause by itself"
 sleep 0.3; shot last_a
 n=$(pauses)
-xdotool key r; wait_for "lesson restart 19"
+xdotool key r; wait_for "lesson restart 25"
 sleep 0.1; shot restarted
 wait_pause "$n" "the restarted step did not pause again"
 sleep 0.3; shot last_b
