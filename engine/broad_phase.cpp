@@ -66,6 +66,16 @@ void BroadPhase::fillCells() {
             for (int x = r.x0; x <= r.x1; ++x)
                 sorted_[--cells_[cellIndex(x, y)].start] = {box, tagOf(index, x, y, r)};
     }
+    // Links to the next moving block's slot, for forEachPair() with many static blocks.
+    nextMoving_.clear();
+    if (staticCount_ < kLinkStatics) return;
+    nextMoving_.resize(sorted_.size() + 1);
+    auto next = static_cast<std::uint32_t>(sorted_.size());
+    nextMoving_[sorted_.size()] = next;
+    for (size_t k = sorted_.size(); k-- > 0;) {
+        if (!(sorted_[k].tag & kStatic)) next = static_cast<std::uint32_t>(k);
+        nextMoving_[k] = next;
+    }
 }
 
 std::vector<BroadPhase::Entry>& BroadPhase::overflowList(size_t c) {

@@ -11,12 +11,19 @@
 //
 // Speed: a large world's queries wait on memory and on mispredicted branches, so a cell entry is
 // small (20 bytes): a copy of the box in floats, rounded outward, and a tag: the block index (up
-// to 2^30 blocks) with two flags saying whether this cell is the first column or row of the
-// block's range (the test for the first shared cell). A query tests an entry against the float
-// box, the flags and the asking block in one branch that nearly always goes the same way (almost
-// every entry fails), and only then reads the registered double box for the exact test: the
-// float box contains it, so the answers, and their order, are exactly those of double boxes.
-// The slices of a row's cells are adjacent, so a query scans each row of its range as one span.
+// to 2^29 blocks) with a flag for static blocks and two saying whether this cell is the first
+// column or row of the block's range (the test for the first shared cell). A query tests an entry
+// against the float box, the flags and the asking block in one branch that nearly always goes the
+// same way (almost every entry fails), and only then reads the registered double box for the exact
+// test: the float box contains it, so the answers, and their order, are exactly those of double
+// boxes. The slices of a row's cells are adjacent, so a query scans each row of its range as one
+// span.
+//
+// Pairs of two static blocks are never reported: they never move, so they are never resolved
+// (SPEC lets them overlap). A tag flag marks static entries; with many static blocks, build()
+// also links each slot of the sorted array to the next slot of a moving block, so a static
+// entry is paired with the moving ones only, in the same order as before (20,000 overlapping
+// static blocks in one cell cost 20,000 pair tests, not 200 million).
 #pragma once
 
 #include "collision.h"
@@ -36,7 +43,14 @@ class BroadPhase {
         const size_t n = blocks.size();
         boxes_.resize(n);
         ranges_.resize(n);
+        statics_.clear();
+        staticCount_ = 0;
         for (size_t i = 0; i < n; ++i) {
+            if (blocks[i].kind == BodyKind::Static) {
+                if (statics_.empty()) statics_.resize(n);
+                statics_[i] = 1;
+                ++staticCount_;
+            }
             const Aabb box = boxes_[i] = boxOf(static_cast<int>(i));
             const CellRange r = ranges_[i] = rangeOf(box);
             if (isSmall(r)) {
@@ -67,8 +81,8 @@ class BroadPhase {
     // The same, leaving out block `self` (a block asking for its neighbours: it is found in
     // every cell of its own path, and skipping it there is cheaper than visiting it).
     template <class Visit> void queryOthers(const Aabb& query, int self, Visit&& visit) const;
-    // Calls visit(i, j) once for every pair of registered blocks whose boxes overlap with
-    // positive area.
+    // Calls visit(i, j) once for every pair of registered blocks, not both static, whose boxes
+    // overlap with positive area.
     template <class Visit> void forEachOverlappingPair(Visit&& visit) const {
         forEachPair(visit, [](const Aabb& a, const Aabb& b) { return overlaps(a, b); });
     }
@@ -86,13 +100,15 @@ class BroadPhase {
     struct FloatBox {
         float minX, minY, maxX, maxY;
     };
-    // Tag bits: the block index shifted left by two, and whether this cell is the block's first
-    // column or row. kDead: the block left this cell.
-    static constexpr std::uint32_t kFirstColumn = 1, kFirstRow = 2, kDead = ~std::uint32_t{0};
+    // Tag bits: the block index shifted left by three, whether the block is static, and whether
+    // this cell is the block's first column or row. kDead: the block left this cell (its static
+    // flag is set too, so moving-block links skip it).
+    static constexpr std::uint32_t kFirstColumn = 1, kFirstRow = 2, kStatic = 4;
+    static constexpr std::uint32_t kDead = ~std::uint32_t{0};
     struct Entry {
         FloatBox box;
         std::uint32_t tag;
-        int index() const { return static_cast<int>(tag >> 2); }
+        int index() const { return static_cast<int>(tag >> 3); }
     };
     static_assert(sizeof(Entry) == 20, "a cell entry is 20 bytes");
     struct Cell {
@@ -115,7 +131,16 @@ class BroadPhase {
     void sizeGrid(const Bounds& bounds, const std::vector<Block>& blocks);
     // Counting sort, pass 2: turns the counts into slices and fills them in block order.
     void fillCells();
-    template <class Visit, class Test> void forEachPair(Visit& visit, Test test) const;
+    // With kStatics false (fewer than two static blocks: no static pair exists) the pair test
+    // leaves out the static flags.
+    template <class Visit, class Test> void forEachPair(Visit& visit, Test test) const {
+        if (staticCount_ < 2)
+            forEachPairOf<false>(visit, test);
+        else
+            forEachPairOf<true>(visit, test);
+    }
+    template <bool kStatics, class Visit, class Test>
+    void forEachPairOf(Visit& visit, Test test) const;
     CellRange rangeOf(const Aabb& box) const {
         // v clamped to [0, count - 1] (NaN to 0), then truncated: the cell's column or row.
         auto clampCell = [](double v, int count) {
@@ -146,8 +171,11 @@ class BroadPhase {
     static bool isSmall(const CellRange& r) { return r.x1 - r.x0 <= 1 && r.y1 - r.y0 <= 1; }
     std::vector<Entry>& overflowList(size_t c);
     Entry* find(int x, int y, int index);
-    static std::uint32_t tagOf(int index) { return static_cast<std::uint32_t>(index) << 2; }
-    static std::uint32_t tagOf(int index, int x, int y, const CellRange& range) {
+    std::uint32_t tagOf(int index) const {
+        return (static_cast<std::uint32_t>(index) << 3) |
+               (staticCount_ && statics_[index] ? kStatic : 0u);
+    }
+    std::uint32_t tagOf(int index, int x, int y, const CellRange& range) const {
         return tagOf(index) | (x == range.x0 ? kFirstColumn : 0u) |
                (y == range.y0 ? kFirstRow : 0u);
     }
@@ -178,6 +206,12 @@ class BroadPhase {
     std::vector<Aabb> boxes_;                  // registered box per block (in rangeOf(box) cells)
     std::vector<CellRange> ranges_;            // scratch of build: rangeOf(boxes_[i])
     std::vector<double> extents_;              // scratch of sizeGrid
+    std::vector<std::uint8_t> statics_;        // per block: 1 if static (empty without any)
+    size_t staticCount_ = 0;
+    // With at least kLinkStatics static blocks: per slot of sorted_ (and one past the end), the
+    // first slot at or after it that holds a live moving block's entry (or sorted_.size()).
+    static constexpr size_t kLinkStatics = 16;
+    std::vector<std::uint32_t> nextMoving_;
 };
 
 template <class Visit>
@@ -201,7 +235,7 @@ void BroadPhase::queryOthers(const Aabb& query, int self, Visit&& visit) const {
             const FloatBox& f = e->box;
             const bool candidate = (f.maxX >= minX) & (f.minX <= maxX) & (f.maxY >= minY) &
                                    (f.minY <= maxY) & ((e->tag & need) == need) &
-                                   ((e->tag >> 2) != static_cast<std::uint32_t>(self));
+                                   ((e->tag >> 3) != static_cast<std::uint32_t>(self));
             if (!candidate || e->tag == kDead) continue;
             const int j = e->index();
             if (meets(boxes_[j], query)) visit(j);
@@ -230,7 +264,9 @@ void BroadPhase::queryOthers(const Aabb& query, int self, Visit&& visit) const {
     }
 }
 
-template <class Visit, class Test> void BroadPhase::forEachPair(Visit& visit, Test test) const {
+template <bool kStatics, class Visit, class Test>
+void BroadPhase::forEachPairOf(Visit& visit, Test test) const {
+    const bool linked = kStatics && !nextMoving_.empty();
     for (int y = 0; y < rows_; ++y) {
         for (int x = 0; x < columns_; ++x) {
             const CellView entries = cell(x, y);
@@ -239,19 +275,32 @@ template <class Visit, class Test> void BroadPhase::forEachPair(Visit& visit, Te
                 const Entry& ea = entries[a];
                 if (ea.tag == kDead) continue;
                 const Aabb fa = aabbOf(ea.box);
-                for (size_t b = a + 1; b < n; ++b) {
-                    const Entry& eb = entries[b];
+                auto pair = [&](const Entry& eb) {
                     // Everything that needs no more than the entries in one branch, as in
-                    // queryOthers(): b is alive, this is the first cell the pair shares (one of
-                    // them in its first column, one in its first row), and the test holds for the
-                    // float boxes (both tests are monotone, so it holds whenever it holds for the
-                    // double boxes inside them). The order of the tests changes no answer.
+                    // queryOthers(): b is alive, not both are static, this is the first cell the
+                    // pair shares (one of them in its first column, one in its first row), and
+                    // the test holds for the float boxes (both tests are monotone, so it holds
+                    // whenever it holds for the double boxes inside them). The order of the tests
+                    // changes no answer.
                     const std::uint32_t flags = ea.tag | eb.tag;
                     const bool candidate = (eb.tag != kDead) & ((flags & kFirstColumn) != 0) &
-                                           ((flags & kFirstRow) != 0) & test(fa, aabbOf(eb.box));
+                                           ((flags & kFirstRow) != 0) &
+                                           (!kStatics || (ea.tag & eb.tag & kStatic) == 0) &
+                                           test(fa, aabbOf(eb.box));
                     if (candidate && test(boxes_[ea.index()], boxes_[eb.index()]))
                         visit(ea.index(), eb.index());
+                };
+                size_t b = a + 1;
+                if (linked && (ea.tag & kStatic) && b < entries.sortedCount) {
+                    // A static entry: only the moving ones after it in the slice, then the
+                    // overflow list.
+                    const auto start = static_cast<size_t>(entries.sorted - sorted_.data());
+                    const size_t end = start + entries.sortedCount;
+                    for (size_t k = nextMoving_[start + b]; k < end; k = nextMoving_[k + 1])
+                        pair(sorted_[k]);
+                    b = entries.sortedCount;
                 }
+                for (; b < n; ++b) pair(entries[b]);
             }
         }
     }

@@ -55,6 +55,21 @@ bool CornerGrid::fileAll(const Bounds& bounds, const Extents& extents) {
     sorted_.resize(cellStart_[cellCount]);
     for (size_t i = n; i-- > 0;)
         if (cell_[i] != kLarge) sorted_[--cellStart_[cell_[i]]] = static_cast<int>(i);
+    // Which blocks are static, and with many of them links to the next moving block's slot
+    // (forEachMeetingPair()).
+    statics_.clear();
+    nextMoving_.clear();
+    if (staticList_.empty()) return true;
+    statics_.resize(n);
+    for (int i : staticList_) statics_[i] = 1;
+    if (staticList_.size() < 16) return true;
+    nextMoving_.resize(sorted_.size() + 1);
+    auto next = static_cast<std::uint32_t>(sorted_.size());
+    nextMoving_[sorted_.size()] = next;
+    for (size_t k = sorted_.size(); k-- > 0;) {
+        if (!statics_[sorted_[k]]) next = static_cast<std::uint32_t>(k);
+        nextMoving_[k] = next;
+    }
     return true;
 }
 

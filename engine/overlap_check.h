@@ -90,6 +90,9 @@ findOverlap(const std::vector<Box>& boxes) {
     std::vector<Event> events;
     std::vector<double> fixedYs;
     for (std::size_t i = 0; i < boxes.size(); ++i) {
+        // A box without area overlaps nothing; in the sweep it would leave before it enters
+        // (and then never leave). Scene files cannot make one (input_limits.h), code might.
+        if (!(boxes[i].minX < boxes[i].maxX && boxes[i].minY < boxes[i].maxY)) continue;
         events.push_back({boxes[i].minX, true, i});
         events.push_back({boxes[i].maxX, false, i});
         if (boxes[i].fixed) {

@@ -2,7 +2,9 @@
 // the place of every error. Saving and the conversion to and from World are in scene_save.cpp.
 #include "scene.h"
 
+#include "input_limits.h"
 #include "overlap_check.h"
+#include "printable.h"
 #include "scene_json.h"
 
 #include <nlohmann/json.hpp>
@@ -12,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -27,12 +30,7 @@ namespace {
 
 constexpr std::size_t kMaxFileBytes = 64u << 20; // 64 MiB
 constexpr std::size_t kMaxBlocks = 200000;
-constexpr int kMaxDepth = 64;  // the format itself needs 4 levels
-constexpr double kMaxDt = 1.0; // s: longer frames are certainly a mistake
-constexpr int kMaxSubsteps = 1000;
-constexpr double kMaxMagnitude = 1e9; // m, m/s, m/s^2 (the messages say 1e9)
-constexpr double kMaxMass = 1e15;     // kg (the message says 1e15)
-constexpr double kMaxDrag = 1e6;      // kg/m^3 (the message says 1e6; water is 1e3)
+constexpr int kMaxDepth = 64; // the format itself needs 4 levels
 // m: overlaps up to this much count as touching, so stacks typed in decimals ("exactly
 // touching" up to rounding) are accepted.
 constexpr double kTouchTolerance = 1e-9;
@@ -67,13 +65,79 @@ struct ScanProblem {
     std::string message;
 };
 
+// Appends code point c as UTF-8 (a lone surrogate, which the parser has refused by now, as the
+// replacement character).
+void appendUtf8(std::string& out, std::uint32_t c) {
+    if (c >= 0xd800 && c <= 0xdfff) c = 0xfffd;
+    if (c < 0x80) {
+        out += static_cast<char>(c);
+    } else if (c < 0x800) {
+        out += static_cast<char>(0xc0 | (c >> 6));
+        out += static_cast<char>(0x80 | (c & 0x3f));
+    } else if (c < 0x10000) {
+        out += static_cast<char>(0xe0 | (c >> 12));
+        out += static_cast<char>(0x80 | ((c >> 6) & 0x3f));
+        out += static_cast<char>(0x80 | (c & 0x3f));
+    } else {
+        out += static_cast<char>(0xf0 | (c >> 18));
+        out += static_cast<char>(0x80 | ((c >> 12) & 0x3f));
+        out += static_cast<char>(0x80 | ((c >> 6) & 0x3f));
+        out += static_cast<char>(0x80 | (c & 0x3f));
+    }
+}
+
+// The text of a JSON string that the parser has accepted (without its quotes), its escapes
+// decoded: "m\u0061ss" and "mass" are the same key.
+std::string decodedString(std::string_view raw) {
+    std::string out;
+    out.reserve(raw.size());
+    auto hex4 = [&](std::size_t at) {
+        std::uint32_t v = 0;
+        for (std::size_t k = at; k < at + 4 && k < raw.size(); ++k) {
+            const char c = raw[k];
+            v = v * 16 + static_cast<std::uint32_t>(std::isdigit(static_cast<unsigned char>(c))
+                                                        ? c - '0'
+                                                        : (std::tolower(c) - 'a' + 10));
+        }
+        return v;
+    };
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+        if (raw[i] != '\\' || i + 1 >= raw.size()) {
+            out += raw[i];
+            continue;
+        }
+        const char e = raw[++i];
+        if (e != 'u') {
+            const char* const from = "bfnrt";
+            const char* const to = "\b\f\n\r\t";
+            const char* const at = std::strchr(from, e);
+            out += at && *at ? to[at - from] : e; // \" \\ \/ stand for themselves
+            continue;
+        }
+        std::uint32_t c = hex4(i + 1);
+        i += 4;
+        // A high surrogate followed by a low one: one code point beyond U+FFFF.
+        if (c >= 0xd800 && c <= 0xdbff && i + 6 < raw.size() && raw[i + 1] == '\\' &&
+            raw[i + 2] == 'u') {
+            const std::uint32_t low = hex4(i + 3);
+            if (low >= 0xdc00 && low <= 0xdfff) {
+                c = 0x10000 + ((c - 0xd800) << 10) + (low - 0xdc00);
+                i += 6;
+            }
+        }
+        appendUtf8(out, c);
+    }
+    return out;
+}
+
 // Walks the text once without recursion. Finds nesting deeper than kMaxDepth (nlohmann's DOM is
 // built and destroyed recursively, so a 100,000-deep "[[[[" must never reach it) and duplicate
-// keys in one object (nlohmann would silently keep the last). Strings are skipped with their
-// escapes; anything malformed is left for the real parser to report.
+// keys in one object (nlohmann would silently keep the last), compared after decoding their
+// escapes. Strings are skipped with their escapes; anything malformed is left for the real
+// parser to report.
 std::optional<ScanProblem> prescan(const std::string& text, bool checkDuplicates) {
-    std::vector<std::set<std::string_view>> keys; // one set per open object
-    std::vector<char> open;                       // '{' or '['
+    std::vector<std::set<std::string>> keys; // one set per open object: decoded keys
+    std::vector<char> open;                  // '{' or '['
     const std::string_view all(text);
     for (std::size_t i = 0; i < text.size(); ++i) {
         const char c = text[i];
@@ -97,9 +161,14 @@ std::optional<ScanProblem> prescan(const std::string& text, bool checkDuplicates
             while (next < text.size() && std::isspace(static_cast<unsigned char>(text[next])))
                 ++next;
             if (next >= text.size() || text[next] != ':') continue; // a value, not a key
-            const std::string_view key = all.substr(start, i + 1 - start);
-            if (!keys.back().insert(key).second)
-                return ScanProblem{start, "duplicate key " + std::string(key)};
+            const std::string_view raw = all.substr(start + 1, i - start - 1);
+            std::string key = decodedString(raw);
+            if (keys.back().count(key)) {
+                std::string message = "duplicate key \"" + printable(key) + "\"";
+                if (key != raw) message += " (written \"" + printable(raw) + "\")";
+                return ScanProblem{start, message};
+            }
+            keys.back().insert(std::move(key));
         }
     }
     return std::nullopt;
@@ -111,18 +180,7 @@ std::string parserMessage(const std::string& what) {
     const std::size_t column = what.find("column ");
     const std::size_t colon = what.find(": ", column == std::string::npos ? 0 : column);
     const std::string message = colon == std::string::npos ? what : what.substr(colon + 2);
-    std::string out;
-    for (const char c : message) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte >= 0x20 && byte < 0x7f) {
-            out += c;
-        } else {
-            char hex[8];
-            std::snprintf(hex, sizeof hex, "\\x%02x", byte);
-            out += hex;
-        }
-    }
-    return out;
+    return printable(message, 2 * kPrintableDefault);
 }
 
 } // namespace
@@ -134,8 +192,10 @@ namespace scene_json {
 std::string indexPath(const std::string& path, std::size_t i) {
     return path + "[" + std::to_string(i) + "]";
 }
+// The key is from the file: shown printable (an unknown key's name may be anything).
 std::string keyPath(const std::string& path, const std::string& key) {
-    return path.empty() ? key : path + "." + key;
+    const std::string shown = printable(key);
+    return path.empty() ? shown : path + "." + shown;
 }
 
 void checkKeys(const json& object, const std::string& path,
@@ -164,30 +224,45 @@ std::string string(const json& value, const std::string& path) {
     return value.get<std::string>();
 }
 
-// An array of exactly `n` finite numbers.
-std::vector<double> numbers(const json& value, const std::string& path, std::size_t n) {
+double number(const json& value, const std::string& path, const limits::Range& range) {
+    const double x = number(value, path);
+    if (std::string problem = limits::violation(range, x); !problem.empty())
+        throw ValueError{path, problem};
+    return x;
+}
+
+std::vector<double> numbers(const json& value, const std::string& path, std::size_t n,
+                            const limits::Range& range) {
     if (!value.is_array() || value.size() != n)
         throw ValueError{path, "must be an array of " + std::to_string(n) + " numbers"};
     std::vector<double> out;
-    // Coordinates (m), speeds (m/s) and gravity (m/s^2) beyond 1e9 in size are mistakes, and
-    // squaring them (energies) would overflow.
-    for (std::size_t i = 0; i < n; ++i) {
-        out.push_back(number(value[i], indexPath(path, i)));
-        if (std::abs(out.back()) > kMaxMagnitude)
-            throw ValueError{indexPath(path, i),
-                             "must be between -1e9 and 1e9, not " + dumpValue(out.back())};
-    }
+    for (std::size_t i = 0; i < n; ++i) out.push_back(number(value[i], indexPath(path, i), range));
     return out;
 }
 
-Vec2 vec2(const json& value, const std::string& path) {
-    const std::vector<double> v = numbers(value, path, 2);
+Vec2 vec2(const json& value, const std::string& path, const limits::Range& range) {
+    const std::vector<double> v = numbers(value, path, 2, range);
     return {v[0], v[1]};
+}
+
+std::vector<double> numbers(const json& value, const std::string& path, std::size_t n) {
+    return numbers(value, path, n, limits::kMagnitude);
+}
+
+Vec2 vec2(const json& value, const std::string& path) {
+    return vec2(value, path, limits::kMagnitude);
 }
 
 } // namespace scene_json
 
 namespace {
+
+// A length (a block's side, the bounds' extent) at coordinates of magnitude up to `magnitude`.
+void checkLength(double length, double magnitude, const std::string& path,
+                 const limits::Range& range = limits::kSize) {
+    if (std::string problem = limits::lengthViolation(length, magnitude, range); !problem.empty())
+        throw ValueError{path, problem};
+}
 
 bool isColor(const std::string& s) {
     return s.size() == 7 && s[0] == '#' && std::all_of(s.begin() + 1, s.end(), [](char c) {
@@ -202,38 +277,33 @@ void parseWorld(const json& world, Scene& scene) {
                "integrator", "mistakes", "drag"});
     WorldSettings& s = scene.settings;
     if (world.contains("bounds")) {
-        const std::vector<double> b = numbers(world["bounds"], "world.bounds", 4);
+        const std::vector<double> b =
+            numbers(world["bounds"], "world.bounds", 4, limits::kCoordinate);
         if (!(b[0] < b[2] && b[1] < b[3]))
             throw ValueError{"world.bounds", "must be [xmin, ymin, xmax, ymax] with xmin < xmax "
                                              "and ymin < ymax"};
+        for (int axis = 0; axis < 2; ++axis)
+            checkLength(b[axis + 2] - b[axis], std::max(std::abs(b[axis]), std::abs(b[axis + 2])),
+                        "world.bounds (" + std::string(axis ? "height" : "width") + ")",
+                        limits::kExtent);
         scene.bounds.min = {b[0], b[1]};
         scene.bounds.max = {b[2], b[3]};
     }
-    if (world.contains("gravity")) s.gravity = vec2(world["gravity"], "world.gravity");
-    if (world.contains("bounciness")) {
-        s.bounciness = number(world["bounciness"], "world.bounciness");
-        if (s.bounciness < 0.0 || s.bounciness > 1.0)
-            throw ValueError{"world.bounciness", "must be between 0 and 1"};
-    }
+    if (world.contains("gravity"))
+        s.gravity = vec2(world["gravity"], "world.gravity", limits::kGravity);
+    if (world.contains("bounciness"))
+        s.bounciness = number(world["bounciness"], "world.bounciness", limits::kBounciness);
     if (world.contains("method")) {
         const std::string name = string(world["method"], "world.method");
         if (!parseMethod(name.c_str(), s.method))
             throw ValueError{"world.method", "must be \"perfect\", \"move-and-correct\" or "
                                              "\"turn-based\", not \"" +
-                                                 name + "\""};
+                                                 printable(name) + "\""};
     }
-    if (world.contains("dt")) {
-        s.dt = number(world["dt"], "world.dt");
-        if (!(s.dt > 0.0 && s.dt <= kMaxDt))
-            throw ValueError{"world.dt", "must be more than 0 and at most 1 second"};
-    }
-    if (world.contains("substeps")) {
-        const double k = number(world["substeps"], "world.substeps");
-        if (k != std::floor(k) || k < 1 || k > kMaxSubsteps)
-            throw ValueError{"world.substeps",
-                             "must be a whole number from 1 to " + std::to_string(kMaxSubsteps)};
-        s.substeps = static_cast<int>(k);
-    }
+    if (world.contains("dt")) s.dt = number(world["dt"], "world.dt", limits::kDt);
+    if (world.contains("substeps"))
+        s.substeps =
+            static_cast<int>(number(world["substeps"], "world.substeps", limits::kSubsteps));
     if (world.contains("resolve")) {
         const std::string name = string(world["resolve"], "world.resolve");
         if (!parseResolve(name.c_str(), s.resolve))
@@ -262,11 +332,7 @@ void parseWorld(const json& world, Scene& scene) {
             s.set(m, true);
         }
     }
-    if (world.contains("drag")) {
-        s.drag = number(world["drag"], "world.drag");
-        if (!(s.drag >= 0.0 && s.drag <= kMaxDrag))
-            throw ValueError{"world.drag", "must be from 0 to 1e6 kg/m^3"};
-    }
+    if (world.contains("drag")) s.drag = number(world["drag"], "world.drag", limits::kDrag);
 }
 
 BlockDef parseBlock(const json& value, const std::string& path) {
@@ -275,22 +341,23 @@ BlockDef parseBlock(const json& value, const std::string& path) {
     BlockDef b;
     if (value.contains("name")) b.name = string(value["name"], keyPath(path, "name"));
     if (!value.contains("position")) throw ValueError{path, "missing \"position\""};
-    b.position = vec2(value["position"], keyPath(path, "position"));
+    b.position = vec2(value["position"], keyPath(path, "position"), limits::kCoordinate);
     if (!value.contains("size")) throw ValueError{path, "missing \"size\""};
     const json& size = value["size"];
     const std::string sizePath = keyPath(path, "size");
     if (size.is_number()) {
         const double side = number(size, sizePath);
         b.size = {side, side};
+        checkLength(side, std::max(std::abs(b.position.x), std::abs(b.position.y)), sizePath);
     } else if (size.is_array()) {
-        b.size = vec2(size, sizePath);
+        b.size = vec2(size, sizePath, limits::kSize);
+        for (int axis = 0; axis < 2; ++axis)
+            checkLength(b.size[axis], std::abs(b.position[axis]), indexPath(sizePath, axis));
     } else {
         throw ValueError{sizePath, "must be a number (a square) or [width, height]"};
     }
-    if (!(b.size.x > 0.0 && b.size.y > 0.0)) throw ValueError{sizePath, "must be positive"};
-    if (b.size.x > kMaxMagnitude || b.size.y > kMaxMagnitude)
-        throw ValueError{sizePath, "must be at most 1e9 m"};
-    if (value.contains("velocity")) b.velocity = vec2(value["velocity"], keyPath(path, "velocity"));
+    if (value.contains("velocity"))
+        b.velocity = vec2(value["velocity"], keyPath(path, "velocity"), limits::kSpeed);
     // Without "mass" a block is dynamic with 1 kg (BlockDef's default).
     if (value.contains("mass")) {
         const json& mass = value["mass"];
@@ -300,20 +367,18 @@ BlockDef parseBlock(const json& value, const std::string& path) {
         } else if (mass == "kinematic") {
             b.kind = BodyKind::Kinematic;
         } else if (mass.is_number()) {
-            b.mass = number(mass, massPath);
-            if (!(b.mass > 0.0 && b.mass <= kMaxMass))
-                throw ValueError{massPath, "must be more than 0 and at most 1e15 kg"};
+            b.mass = number(mass, massPath, limits::kMass);
         } else {
             throw ValueError{massPath, "must be a positive number, \"static\" or \"kinematic\""};
         }
     }
     if (value.contains("force")) {
         const std::string forcePath = keyPath(path, "force");
-        b.force = vec2(value["force"], forcePath);
+        b.force = vec2(value["force"], forcePath, limits::kForce);
         if (b.kind != BodyKind::Dynamic && b.force != Vec2{})
             throw ValueError{forcePath, "only a dynamic block (one with a mass) feels a force"};
         // Its acceleration, like gravity, at most 1e9 m/s^2 (F/m of a light block can be huge).
-        if (length(b.force) / b.mass > kMaxMagnitude)
+        if (length(b.force) / b.mass > limits::kGravity.max)
             throw ValueError{forcePath, "force / mass must be at most 1e9 m/s^2"};
     }
     if (value.contains("color")) {
@@ -337,12 +402,12 @@ Span span(const BlockDef& b, int axis) {
 
 std::string blockLabel(const std::vector<BlockDef>& blocks, std::size_t i) {
     const std::string label = indexPath("blocks", i);
-    return blocks[i].name.empty() ? label : label + " (\"" + blocks[i].name + "\")";
+    return blocks[i].name.empty() ? label : label + " (\"" + printable(blocks[i].name) + "\")";
 }
 
 // How a message starts for block i: its name if it has one (the path is already in `where`).
 std::string blockSubject(const std::vector<BlockDef>& blocks, std::size_t i) {
-    return blocks[i].name.empty() ? "the block" : "\"" + blocks[i].name + "\"";
+    return blocks[i].name.empty() ? "the block" : "\"" + printable(blocks[i].name) + "\"";
 }
 
 void checkInBounds(const Scene& scene) {
@@ -394,9 +459,15 @@ Scene parseValue(const json& root) {
     return scene;
 }
 
-SceneResult failure(std::string where, std::string message) {
+// Every error leaves through here: its place (with the file's name) and message printable and
+// bounded, whatever the file's name and contents (a key, a name or a number can be megabytes).
+SceneError placed(const std::string& where, const std::string& message) {
+    return {printable(where, kPrintablePath), printable(message, 4 * kPrintableDefault)};
+}
+
+SceneResult failure(const std::string& where, const std::string& message) {
     SceneResult r;
-    r.error = {std::move(where), std::move(message)};
+    r.error = placed(where, message);
     return r;
 }
 
@@ -404,17 +475,17 @@ SceneResult failure(std::string where, std::string message) {
 
 std::optional<SceneError> parseJsonText(const std::string& text, const std::string& sourceName,
                                         json& root) {
-    if (text.size() > kMaxFileBytes) return SceneError{sourceName, "larger than 64 MiB"};
+    if (text.size() > kMaxFileBytes) return placed(sourceName, "larger than 64 MiB");
     if (std::all_of(text.begin(), text.end(),
                     [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }))
-        return SceneError{placeName(sourceName, text, text.size()), "the file is empty"};
+        return placed(placeName(sourceName, text, text.size()), "the file is empty");
     if (auto problem = prescan(text, false)) // depth first: the parser must never see it
-        return SceneError{placeName(sourceName, text, problem->index), problem->message};
+        return placed(placeName(sourceName, text, problem->index), problem->message);
     try {
         root = json::parse(text);
     } catch (const json::parse_error& e) {
         const std::size_t index = e.byte > 0 ? e.byte - 1 : 0;
-        return SceneError{placeName(sourceName, text, index), parserMessage(e.what())};
+        return placed(placeName(sourceName, text, index), parserMessage(e.what()));
     } catch (const json::exception& e) {
         // Number overflow (1e400) has no position in nlohmann; find the number in the text.
         std::string message = e.what();
@@ -424,14 +495,14 @@ std::optional<SceneError> parseJsonText(const std::string& text, const std::stri
             index = text.find(message.substr(quote + 1, message.size() - quote - 2));
         message =
             message.substr(message.find("] ") == std::string::npos ? 0 : message.find("] ") + 2);
-        if (index == std::string::npos) return SceneError{sourceName, message};
-        return SceneError{placeName(sourceName, text, index), message};
+        if (index == std::string::npos) return placed(sourceName, message);
+        return placed(placeName(sourceName, text, index), message);
     }
     // The parser stops at a NUL byte as at the end of the text: junk after it would pass unseen.
     if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
-        return SceneError{placeName(sourceName, text, nul), "a NUL byte: this is not a text file"};
+        return placed(placeName(sourceName, text, nul), "a NUL byte: this is not a text file");
     if (auto problem = prescan(text, true))
-        return SceneError{placeName(sourceName, text, problem->index), problem->message};
+        return placed(placeName(sourceName, text, problem->index), problem->message);
     return std::nullopt;
 }
 
@@ -449,20 +520,22 @@ SceneResult parseScene(const std::string& text, const std::string& sourceName) {
 }
 
 std::optional<SceneError> readJsonFile(const std::string& path, std::string& text) {
-    // Only regular files: a directory cannot be read and a FIFO could block forever.
+    // Only regular files: a directory cannot be read and a FIFO could block forever. A path that
+    // cannot be followed says why (a symlink loop, a directory without permission).
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) return SceneError{path, "no such file"};
-    if (!std::filesystem::is_regular_file(path, ec)) return SceneError{path, "not a regular file"};
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (status.type() == std::filesystem::file_type::not_found) return placed(path, "no such file");
+    if (ec) return placed(path, "cannot open the file: " + ec.message());
+    if (!std::filesystem::is_regular_file(status)) return placed(path, "not a regular file");
     std::ifstream in(path, std::ios::binary);
-    if (!in) return SceneError{path, "cannot open the file"};
+    if (!in) return placed(path, "cannot open the file");
     in.seekg(0, std::ios::end);
     const std::streamoff size = in.tellg();
-    if (size < 0) return SceneError{path, "cannot read the file"};
-    if (static_cast<std::uint64_t>(size) > kMaxFileBytes)
-        return SceneError{path, "larger than 64 MiB"};
+    if (size < 0) return placed(path, "cannot read the file");
+    if (static_cast<std::uint64_t>(size) > kMaxFileBytes) return placed(path, "larger than 64 MiB");
     in.seekg(0, std::ios::beg);
     text.assign(static_cast<std::size_t>(size), '\0');
-    if (size > 0 && !in.read(&text[0], size)) return SceneError{path, "cannot read the file"};
+    if (size > 0 && !in.read(&text[0], size)) return placed(path, "cannot read the file");
     return std::nullopt;
 }
 

@@ -3,6 +3,7 @@
 // syntax checks, whose errors name the place (file:line:column).
 #pragma once
 
+#include "input_limits.h"
 #include "scene.h"
 
 #include <nlohmann/json.hpp>
@@ -41,9 +42,14 @@ void checkKeys(const nlohmann::json& object, const std::string& path,
                std::initializer_list<const char*> known);
 const nlohmann::json& requireObject(const nlohmann::json& value, const std::string& path);
 double number(const nlohmann::json& value, const std::string& path); // finite
+// A finite number within `range` (input_limits.h); the message names the limit.
+double number(const nlohmann::json& value, const std::string& path, const limits::Range& range);
 std::string string(const nlohmann::json& value, const std::string& path);
-// An array of exactly `n` finite numbers, each at most 1e9 in size.
+// An array of exactly `n` finite numbers, each within `range` (by default at most 1e9 in size).
+std::vector<double> numbers(const nlohmann::json& value, const std::string& path, std::size_t n,
+                            const limits::Range& range);
 std::vector<double> numbers(const nlohmann::json& value, const std::string& path, std::size_t n);
+Vec2 vec2(const nlohmann::json& value, const std::string& path, const limits::Range& range);
 Vec2 vec2(const nlohmann::json& value, const std::string& path);
 
 } // namespace scene_json

@@ -1,6 +1,7 @@
 #include "analysis_commands.h"
 
 #include "commands.h"
+#include "printable.h"
 #include "stability.h"
 #include "tradeoff.h"
 
@@ -16,8 +17,8 @@ bool prepare(const std::string& dir, std::ostream& err) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec || !std::filesystem::is_directory(dir)) {
-        err << dir << ": cannot create the output directory" << (ec ? ": " + ec.message() : "")
-            << "\n";
+        err << printable(dir, kPrintablePath) << ": cannot create the output directory"
+            << (ec ? ": " + ec.message() : "") << "\n";
         return false;
     }
     return true;
@@ -28,7 +29,7 @@ template <class Write> bool writeFile(const std::string& path, std::ostream& err
     std::ofstream file(path);
     if (file) write(file);
     if (!file) {
-        err << path << ": cannot write\n";
+        err << printable(path, kPrintablePath) << ": cannot write\n";
         return false;
     }
     return true;
@@ -36,8 +37,9 @@ template <class Write> bool writeFile(const std::string& path, std::ostream& err
 
 } // namespace
 
+// Both commands run first and create the output directory only then: a run that fails (a scenes
+// directory without the scenes) leaves nothing behind.
 int tradeoffCommand(const AnalysisRequest& request, std::ostream& out, std::ostream& err) {
-    if (!prepare(request.outDir, err)) return kExitBadInput;
     TradeoffOptions options;
     options.scenesDir = request.scenesDir;
     options.quick = request.quick;
@@ -45,9 +47,10 @@ int tradeoffCommand(const AnalysisRequest& request, std::ostream& out, std::ostr
     try {
         rows = runTradeoff(options);
     } catch (const std::runtime_error& e) {
-        err << e.what() << "\n";
+        err << printable(e.what(), kPrintablePath) << "\n";
         return kExitBadInput;
     }
+    if (!prepare(request.outDir, err)) return kExitBadInput;
     const std::string base = request.outDir + "/tradeoff";
     std::string chartError;
     if (!writeFile(base + ".csv", err, [&](std::ostream& f) { writeTradeoffCsv(f, rows); }) ||
@@ -63,14 +66,14 @@ int tradeoffCommand(const AnalysisRequest& request, std::ostream& out, std::ostr
 }
 
 int stabilityCommand(const AnalysisRequest& request, std::ostream& out, std::ostream& err) {
-    if (!prepare(request.outDir, err)) return kExitBadInput;
     std::vector<StabilityResult> results;
     try {
         results = runStability(request.scenesDir);
     } catch (const std::runtime_error& e) {
-        err << e.what() << "\n";
+        err << printable(e.what(), kPrintablePath) << "\n";
         return kExitBadInput;
     }
+    if (!prepare(request.outDir, err)) return kExitBadInput;
     const std::string base = request.outDir + "/stability";
     if (!writeFile(base + ".csv", err, [&](std::ostream& f) { writeStabilityCsv(f, results); }) ||
         !writeFile(base + ".md", err, [&](std::ostream& f) { writeStabilityMarkdown(f, results); }))

@@ -1,14 +1,16 @@
 // sandbox-cli run and validate (SPEC.md, "Command-line contract").
 #include "commands.h"
 
+#include "input_limits.h"
 #include "lesson_runner.h"
+#include "printable.h"
 #include "scene.h"
 #include "world.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -17,27 +19,8 @@
 
 namespace {
 
-// ---- Option values: strict parsing (the whole text, finite numbers) ----
-
-bool parseDouble(const std::string& text, double& value) {
-    if (text.empty()) return false;
-    char* end = nullptr;
-    errno = 0;
-    const double x = std::strtod(text.c_str(), &end);
-    if (end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(x)) return false;
-    value = x;
-    return true;
-}
-
-bool parseInt(const std::string& text, std::int64_t& value) {
-    if (text.empty()) return false;
-    char* end = nullptr;
-    errno = 0;
-    const long long x = std::strtoll(text.c_str(), &end, 10);
-    if (end != text.c_str() + text.size() || errno == ERANGE) return false;
-    value = x;
-    return true;
-}
+// ---- Option values: the scene format's limits (input_limits.h), the same text rules for every
+// flag ----
 
 // How long to run: a number of frames, or until a simulated time.
 struct StopRule {
@@ -45,39 +28,55 @@ struct StopRule {
     std::optional<double> time;          // s, with --time
 };
 
+// A flag's value refused: the flag, its value (printable and cut) and what it must be.
+bool refuse(std::ostream& err, const char* option, const std::string& value,
+            const std::string& expected) {
+    err << "sandbox-cli run: " << option << " " << printable(value) << ": " << expected << "\n";
+    return false;
+}
+
+// Parses `text` as a number within `range`; false with a message naming the flag and the limit.
+bool numberOption(const char* option, const std::string& text, const limits::Range& range,
+                  double& value, std::ostream& err) {
+    double x = 0.0;
+    if (!limits::parseNumber(text, x))
+        return refuse(err, option, text, "must be a decimal number " + limits::describe(range));
+    if (std::string problem = limits::violation(range, x); !problem.empty())
+        return refuse(err, option, text, problem);
+    value = x;
+    return true;
+}
+
 // Applies the command-line overrides to the scene's settings. Returns false and writes a message
-// naming the option on a bad value.
+// naming the option and the limit on a bad value.
 bool applyOptions(const RunRequest& r, WorldSettings& s, StopRule& stop, std::ostream& err) {
-    auto bad = [&](const char* option, const std::string& value, const char* expected) {
-        err << "sandbox-cli run: " << option << " " << value << ": " << expected << "\n";
-        return false;
-    };
     if (r.method && !parseMethod(r.method->c_str(), s.method))
-        return bad("--method", *r.method, "must be perfect, move-and-correct or turn-based");
-    if (r.dt && !(parseDouble(*r.dt, s.dt) && s.dt > 0.0 && s.dt <= 1.0))
-        return bad("--dt", *r.dt, "must be a number of seconds more than 0 and at most 1");
+        return refuse(err, "--method", *r.method,
+                      "must be perfect, move-and-correct or turn-based");
+    if (r.dt && !numberOption("--dt", *r.dt, limits::kDt, s.dt, err)) return false;
     if (r.substeps) {
-        std::int64_t k = 0;
-        if (!parseInt(*r.substeps, k) || k < 1 || k > 1000)
-            return bad("--substeps", *r.substeps, "must be a whole number from 1 to 1000");
+        double k = 0.0;
+        if (!numberOption("--substeps", *r.substeps, limits::kSubsteps, k, err)) return false;
         s.substeps = static_cast<int>(k);
     }
     if (r.bounciness &&
-        !(parseDouble(*r.bounciness, s.bounciness) && s.bounciness >= 0.0 && s.bounciness <= 1.0))
-        return bad("--bounciness", *r.bounciness, "must be a number from 0 to 1");
+        !numberOption("--bounciness", *r.bounciness, limits::kBounciness, s.bounciness, err))
+        return false;
     if (r.gravity) {
         const std::size_t comma = r.gravity->find(',');
+        if (comma == std::string::npos)
+            return refuse(err, "--gravity", *r.gravity, "must be GX,GY in m/s^2, e.g. 0,-9.81");
         Vec2 g;
-        if (comma == std::string::npos || !parseDouble(r.gravity->substr(0, comma), g.x) ||
-            !parseDouble(r.gravity->substr(comma + 1), g.y))
-            return bad("--gravity", *r.gravity, "must be GX,GY in m/s^2, e.g. 0,-9.81");
+        if (!numberOption("--gravity", r.gravity->substr(0, comma), limits::kGravity, g.x, err) ||
+            !numberOption("--gravity", r.gravity->substr(comma + 1), limits::kGravity, g.y, err))
+            return false;
         s.gravity = g;
     }
     if (r.resolve && !parseResolve(r.resolve->c_str(), s.resolve))
-        return bad("--resolve", *r.resolve, "must be momentum or reflect");
+        return refuse(err, "--resolve", *r.resolve, "must be momentum or reflect");
     if (r.integrator && !parseIntegrator(r.integrator->c_str(), s.integrator))
-        return bad("--integrator", *r.integrator,
-                   "must be semi-implicit-euler, explicit-euler or exact");
+        return refuse(err, "--integrator", *r.integrator,
+                      "must be semi-implicit-euler, explicit-euler or exact");
     for (const std::string& name : r.mistakes) {
         if (name == "none") { // the scene's mistakes off
             s.mistakes = 0;
@@ -85,20 +84,30 @@ bool applyOptions(const RunRequest& r, WorldSettings& s, StopRule& stop, std::os
         }
         Mistake m{};
         if (!parseMistake(name.c_str(), m))
-            return bad("--mistake", name,
-                       "must be discrete, move-back, first-found, no-approach-test or none");
+            return refuse(err, "--mistake", name,
+                          "must be discrete, move-back, first-found, no-approach-test or none");
         s.set(m, true);
     }
-    if (r.steps && !(parseInt(*r.steps, stop.frames) && stop.frames >= 0))
-        return bad("--steps", *r.steps, "must be a whole number of frames, 0 or more");
+    if (r.steps) {
+        double n = 0.0;
+        if (!numberOption("--steps", *r.steps, limits::kFrames, n, err)) return false;
+        stop.frames = static_cast<std::int64_t>(n);
+    }
     if (r.time) {
         double t = 0.0;
-        if (!parseDouble(*r.time, t) || t < 0.0)
-            return bad("--time", *r.time, "must be a number of seconds, 0 or more");
-        const double backstop = std::ceil(100.0 * t / s.dt);
-        if (backstop > 1e15) return bad("--time", *r.time, "is too long for this dt");
+        if (!numberOption("--time", *r.time, limits::kTime, t, err)) return false;
+        // The frame budget holds for the frames T needs at this dt; the backstop for an event
+        // cap that holds time back (100·T/dt frames) stops at the budget too.
+        const double frames = std::ceil(t / s.dt);
+        if (frames > limits::kFrames.max)
+            return refuse(err, "--time", *r.time,
+                          "needs " + limits::formatNumber(frames) + " frames at dt " +
+                              limits::formatNumber(s.dt) + " s, more than the frame budget (" +
+                              limits::describe(limits::kFrames) + "): at most " +
+                              limits::formatNumber(limits::kFrames.max * s.dt) + " s at this dt");
         stop.time = t;
-        stop.frames = static_cast<std::int64_t>(backstop);
+        stop.frames =
+            static_cast<std::int64_t>(std::min(std::ceil(100.0 * t / s.dt), limits::kFrames.max));
     }
     return true;
 }
@@ -137,16 +146,59 @@ void writeTraceRow(std::ostream& out, const World& world, const StepStats& s) {
         << s.potentialEnergy << '\n';
 }
 
-StepTotals simulate(World& world, const StopRule& stop, std::ostream* trace) {
-    StepTotals totals;
+// What a run adds up over its steps, and whether SIGINT stopped it before its end.
+struct RunTotals {
+    StepTotals steps;
+    bool interrupted = false;
+};
+
+// Progress on stderr for runs longer than a second: a line rewritten in place on a terminal,
+// one line per report otherwise (--progress).
+class Progress {
+  public:
+    Progress(const RunRequest& r, std::int64_t frames, std::ostream& err)
+        : on_(r.progress != ProgressLines::Off), rewrite_(r.progress == ProgressLines::Terminal),
+          frames_(frames), err_(err), next_(std::chrono::steady_clock::now() + kEvery) {}
+    ~Progress() {
+        if (shown_ && rewrite_) err_ << "\n";
+    }
+    void update(std::int64_t frame, double simulated) {
+        if (!on_) return;
+        const auto now = std::chrono::steady_clock::now();
+        if (now < next_) return;
+        next_ = now + kEvery;
+        shown_ = true;
+        err_ << (rewrite_ ? "\r" : "") << "sandbox-cli run: frame " << frame << " of " << frames_
+             << " (" << limits::formatNumber(std::floor(1000.0 * frame / frames_) / 10.0) << "%), "
+             << limits::formatNumber(simulated) << " s simulated; Ctrl+C stops and "
+             << "prints the summary" << (rewrite_ ? "" : "\n") << std::flush;
+    }
+
+  private:
+    static constexpr std::chrono::seconds kEvery{1};
+    bool on_, rewrite_, shown_ = false;
+    std::int64_t frames_;
+    std::ostream& err_;
+    std::chrono::steady_clock::time_point next_;
+};
+
+RunTotals simulate(World& world, const StopRule& stop, const RunRequest& request,
+                   std::ostream* trace, std::ostream& err) {
+    RunTotals totals;
+    Progress progress(request, stop.frames, err);
     // --time stops once the world time is within a tiny fraction of a frame of T, so rounding in
     // the sum of the frame lengths cannot add a frame.
     const double epsilon = 1e-6 * world.settings.dt;
-    while (totals.steps < stop.frames) {
+    while (totals.steps.steps < stop.frames) {
         if (stop.time && world.time >= *stop.time - epsilon) break;
+        if (request.interrupted && *request.interrupted) {
+            totals.interrupted = true;
+            break;
+        }
+        progress.update(totals.steps.steps, world.time);
         const StepStats s = world.step();
         if (trace) writeTraceRow(*trace, world, s);
-        addStep(totals, s);
+        addStep(totals.steps, s);
     }
     return totals;
 }
@@ -155,10 +207,11 @@ nlohmann::ordered_json vecJson(Vec2 v) {
     return {v.x, v.y};
 }
 
-void printJson(const Scene& scene, const World& world, const StepTotals& t, std::ostream& out) {
+void printJson(const Scene& scene, const World& world, const StepTotals& t, bool interrupted,
+               std::ostream& out) {
     nlohmann::ordered_json j;
     const WorldSettings& s = world.settings;
-    j["scene"] = scene.name;
+    j["scene"] = scene.name; // dump() below escapes every control character
     j["method"] = methodName(s.method);
     j["dt"] = s.dt;
     j["substeps"] = s.substeps;
@@ -181,6 +234,7 @@ void printJson(const Scene& scene, const World& world, const StepTotals& t, std:
     j["potential_energy"] = potentialEnergy(world);
     j["event_cap_hits"] = t.eventCapHits;
     j["wall_ms"] = t.stepMs; // inside World::step only
+    j["interrupted"] = interrupted;
     nlohmann::ordered_json blocks = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < world.blocks.size(); ++i) {
         nlohmann::ordered_json b;
@@ -190,22 +244,25 @@ void printJson(const Scene& scene, const World& world, const StepTotals& t, std:
         blocks.push_back(std::move(b));
     }
     j["blocks"] = std::move(blocks);
-    out << j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
+    // ASCII only: names are \u-escaped, so no byte of them can act on a terminal.
+    out << j.dump(-1, ' ', true, nlohmann::ordered_json::error_handler_t::replace) << "\n";
 }
 
 std::ostream& operator<<(std::ostream& out, Vec2 v) {
     return out << "(" << v.x << ", " << v.y << ")";
 }
 
-void printText(const Scene& scene, const World& world, const StepTotals& t, std::ostream& out) {
+void printText(const Scene& scene, const World& world, const StepTotals& t, bool interrupted,
+               std::ostream& out) {
     const WorldSettings& s = world.settings;
     const std::ios::fmtflags flags = out.flags();
     const std::streamsize precision = out.precision(6);
-    out << "scene             " << scene.name << "\n"
+    out << "scene             " << printable(scene.name) << "\n"
         << "method            " << methodName(s.method) << "  (dt " << s.dt << " s, " << s.substeps
         << (s.substeps == 1 ? " substep" : " substeps") << ", bounciness " << s.bounciness
         << ", gravity " << s.gravity << " m/s^2)\n"
-        << "steps             " << t.steps << "  (" << world.time << " s simulated)\n"
+        << "steps             " << t.steps << "  (" << world.time << " s simulated"
+        << (interrupted ? "; interrupted by Ctrl+C" : "") << ")\n"
         << "collisions        " << t.collisions << "\n"
         << "momentum          " << totalMomentum(world) << " kg m/s\n"
         << "kinetic energy    " << kineticEnergy(world) << " J\n"
@@ -218,7 +275,7 @@ void printText(const Scene& scene, const World& world, const StepTotals& t, std:
     out.precision(6);
     if (world.blocks.size() <= 20) {
         for (std::size_t i = 0; i < world.blocks.size(); ++i) {
-            const std::string& name = scene.blocks[i].name;
+            const std::string name = printable(scene.blocks[i].name, 40);
             out << "  " << std::left << std::setw(16)
                 << (name.empty() ? "blocks[" + std::to_string(i) + "]" : name) << std::right
                 << " position " << world.blocks[i].position << "  velocity "
@@ -247,25 +304,27 @@ int runCommand(const RunRequest& request, std::ostream& out, std::ostream& err) 
     if (request.trace) {
         trace.open(*request.trace, std::ios::binary | std::ios::trunc);
         if (!trace) {
-            err << "sandbox-cli run: --trace " << *request.trace << ": cannot write the file\n";
+            err << "sandbox-cli run: --trace " << printable(*request.trace, kPrintablePath)
+                << ": cannot write the file\n";
             return kExitBadInput;
         }
         trace << std::setprecision(17);
         writeTraceHeader(trace, scene);
     }
-    const StepTotals totals = simulate(world, stop, request.trace ? &trace : nullptr);
+    const RunTotals run = simulate(world, stop, request, request.trace ? &trace : nullptr, err);
     if (request.trace) {
         trace.close();
         if (!trace) {
-            err << "sandbox-cli run: --trace " << *request.trace << ": writing failed\n";
+            err << "sandbox-cli run: --trace " << printable(*request.trace, kPrintablePath)
+                << ": writing failed\n";
             return kExitBadInput;
         }
     }
     if (request.json)
-        printJson(scene, world, totals, out);
+        printJson(scene, world, run.steps, run.interrupted, out);
     else
-        printText(scene, world, totals, out);
-    return kExitOk;
+        printText(scene, world, run.steps, run.interrupted, out);
+    return run.interrupted ? kExitInterrupted : kExitOk;
 }
 
 int validateCommand(const std::string& path, std::ostream& out, std::ostream& err,
@@ -273,11 +332,11 @@ int validateCommand(const std::string& path, std::ostream& out, std::ostream& er
     if (isLessonFile(path)) {
         const LessonResult lesson = loadLessonFile(path, lessons);
         if (!lesson.lesson) {
-            err << lesson.error.text() << "\n";
+            err << printable(lesson.error.text(), kPrintablePath) << "\n";
             return kExitBadInput;
         }
         const std::vector<std::string> failures = checkLesson(*lesson.lesson);
-        for (const std::string& f : failures) err << f << "\n";
+        for (const std::string& f : failures) err << printable(f, kPrintablePath) << "\n";
         if (!failures.empty()) return kExitBadInput;
         out << "ok\n";
         return kExitOk;

@@ -3,6 +3,7 @@
 
 #include "lesson.h"
 
+#include <csignal>
 #include <cstdint>
 #include <iosfwd>
 #include <optional>
@@ -10,7 +11,12 @@
 #include <vector>
 
 // Exit codes of sandbox-cli.
-enum ExitCode : int { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2 };
+// kExitInterrupted: `run` stopped by SIGINT (128 + 2, what shells report), after its summary.
+enum ExitCode : int { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2, kExitInterrupted = 130 };
+
+// Progress of a long run on stderr (one report a second after the first second): off, a line
+// rewritten in place (stderr is a terminal), or one line per report (--progress).
+enum class ProgressLines { Off, Terminal, Lines };
 
 // `run`, as typed on the command line: option values stay text until runCommand checks them, so
 // a bad value is reported as bad input (exit 1), not as bad usage.
@@ -28,6 +34,10 @@ struct RunRequest {
     std::vector<std::string> mistakes;     // added to the scene's: "discrete", "move-back", ...
     std::optional<std::string> trace;      // CSV file: a header and one row per frame
     bool json = false;                     // print one JSON object instead of a summary
+    ProgressLines progress = ProgressLines::Off;
+    // Set (by a SIGINT handler) to stop the run after the current frame; the summary of the
+    // frames done is printed and runCommand returns kExitInterrupted. Null: never stops early.
+    const volatile std::sig_atomic_t* interrupted = nullptr;
 };
 
 // Default length of a run when neither --steps nor --time is given.

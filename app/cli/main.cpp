@@ -2,14 +2,39 @@
 // contract"). Exit codes: 0 ok, 1 bad input (scene file or option value), 2 bad usage.
 #include "analysis_commands.h"
 #include "commands.h"
+#include "input_limits.h"
+#include "printable.h"
 
 #include <CLI/CLI.hpp>
 #ifdef SANDBOX_OVERLAY_TABLE
 #include "options.h" // the overlay table's names, for lesson files
 #endif
 
+#include <csignal>
 #include <exception>
 #include <iostream>
+
+#include <unistd.h>
+
+namespace {
+
+volatile std::sig_atomic_t interrupted = 0;
+
+// The first Ctrl+C ends `run` after the current frame (its summary is still printed); the
+// handler is then reset, so a second one ends the process at once.
+void onInterrupt(int) {
+    interrupted = 1;
+}
+
+void stopOnInterrupt() {
+    struct sigaction action {};
+    action.sa_handler = onInterrupt;
+    action.sa_flags = SA_RESETHAND;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"Collision sandbox, headless: simulate or validate scene files (format v1).\n"
@@ -25,22 +50,33 @@ int main(int argc, char** argv) {
         runCmd->add_option("--method", method,
                            "Simulation method: perfect, move-and-correct or turn-based "
                            "(default: the scene's)");
-    CLI::Option* dtOpt = runCmd->add_option("--dt", dt,
-                                            "Seconds per frame, in (0, 1] "
-                                            "(default: the scene's)");
+    // The ranges in the help are those of input_limits.h, which the values are checked against.
+    using limits::describe;
+    CLI::Option* dtOpt = runCmd->add_option(
+        "--dt", dt, "Seconds per frame, " + describe(limits::kDt) + " (default: the scene's)");
     CLI::Option* substepsOpt = runCmd->add_option(
-        "--substeps", substeps, "Substeps per frame, 1 to 1000 (default: the scene's)");
+        "--substeps", substeps,
+        "Substeps per frame, " + describe(limits::kSubsteps) + " (default: the scene's)");
     CLI::Option* bouncinessOpt = runCmd->add_option(
-        "--bounciness", bounciness, "Bounciness C in [0, 1] (default: the scene's)");
-    CLI::Option* gravityOpt = runCmd->add_option(
-        "--gravity", gravity, "Gravity GX,GY in m/s^2, e.g. 0,-9.81 (default: the scene's)");
-    CLI::Option* stepsOpt = runCmd->add_option(
-        "--steps", steps, "Frames to simulate (default 600, i.e. 10 s at dt 1/60)");
-    CLI::Option* timeOpt =
-        runCmd->add_option("--time", time,
-                           "Simulate until T seconds of simulated time, or at most 100*T/dt frames "
-                           "if the event cap holds time back");
+        "--bounciness", bounciness,
+        "Bounciness C, " + describe(limits::kBounciness) + " (default: the scene's)");
+    CLI::Option* gravityOpt =
+        runCmd->add_option("--gravity", gravity,
+                           "Gravity GX,GY, e.g. 0,-9.81, each " + describe(limits::kGravity) +
+                               " (default: the scene's)");
+    CLI::Option* stepsOpt =
+        runCmd->add_option("--steps", steps,
+                           "Frames to simulate, " + describe(limits::kFrames) +
+                               " (the frame budget; default 600, i.e. 10 s at dt 1/60)");
+    CLI::Option* timeOpt = runCmd->add_option(
+        "--time", time,
+        "Simulate until T seconds of simulated time (T/dt frames within the frame budget), or "
+        "at most 100*T/dt frames (and the budget) if the event cap holds time back");
     stepsOpt->excludes(timeOpt);
+    bool progressLines = false;
+    runCmd->add_flag("--progress", progressLines,
+                     "Report progress on stderr once a second, one line each (on a terminal a "
+                     "line rewritten in place is the default)");
     std::string resolve, integrator, trace;
     CLI::Option* resolveOpt = runCmd->add_option(
         "--resolve", resolve,
@@ -117,8 +153,12 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        // --help is a "parse error" with exit code 0; everything else is bad usage.
-        return app.exit(e) == 0 ? kExitOk : kExitUsage;
+        // --help is a "parse error" with exit code 0; everything else is bad usage, and its
+        // message (which quotes the arguments) is printed printable.
+        if (e.get_exit_code() == 0) return app.exit(e) == 0 ? kExitOk : kExitUsage;
+        std::cerr << "sandbox-cli: " << printable(e.what(), 4 * kPrintableDefault)
+                  << "\nRun with --help for more information.\n";
+        return kExitUsage;
     }
 
     try {
@@ -141,6 +181,11 @@ int main(int argc, char** argv) {
         run.gravity = given(gravityOpt, gravity);
         run.steps = given(stepsOpt, steps);
         run.time = given(timeOpt, time);
+        run.progress = progressLines ? ProgressLines::Lines
+                       : isatty(2)   ? ProgressLines::Terminal
+                                     : ProgressLines::Off;
+        run.interrupted = &interrupted;
+        stopOnInterrupt();
         run.resolve = given(resolveOpt, resolve);
         run.integrator = given(integratorOpt, integrator);
         run.trace = given(traceOpt, trace);

@@ -3,6 +3,7 @@
 // the same loader, so a lesson accepts exactly the keys and values a scene file does.
 #include "lesson.h"
 
+#include "printable.h"
 #include "scene_json.h"
 
 #include <nlohmann/json.hpp>
@@ -99,10 +100,12 @@ std::vector<std::string> overlayList(const json& value, const std::string& path,
 // A scene error from the loader, placed in the lesson: inline scenes get the step's JSON path,
 // files keep their own place after the step's.
 ValueError sceneError(const SceneError& e, const std::string& scenePath) {
-    const std::string inlinePrefix = std::string(kInline) + ": ";
+    // The loader's places are printable (printable.h): the marker arrives as "\x01".
+    const std::string inlineName = printable(kInline);
+    const std::string inlinePrefix = inlineName + ": ";
     if (e.where.rfind(inlinePrefix, 0) == 0)
         return ValueError{scenePath + "." + e.where.substr(inlinePrefix.size()), e.message};
-    if (e.where == kInline) return ValueError{scenePath, e.message};
+    if (e.where == inlineName) return ValueError{scenePath, e.message};
     return ValueError{scenePath, e.text()};
 }
 

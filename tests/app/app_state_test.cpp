@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include <unistd.h>
 
@@ -384,6 +385,35 @@ TEST(Options, RejectsBadValues) {
     EXPECT_FALSE(parseSize("100x100x3", w, h));
     EXPECT_TRUE(parseSize("640x480", w, h));
     EXPECT_EQ(w, 640);
+}
+
+// Issue 13: every option error exits 2, as sandbox-cli's bad usage (CLI11's own code for a
+// failed check is 105); a UI scale must be a number in range (NaN passed CLI::Range); a
+// benchmark does not silently drop --record.
+TEST(Options, ErrorsExitTwo) {
+    const std::vector<std::vector<const char*>> cases = {
+        {"sandbox", "--show", "vectors,bogus"},
+        {"sandbox", "--size", "12x"},
+        {"sandbox", "--record", "dir"},
+        {"sandbox", "--frobnicate"},
+        {"sandbox", "--ui-scale", "nan"},
+        {"sandbox", "--ui-scale", "inf"},
+        {"sandbox", "--ui-scale", "5"},
+        {"sandbox", "--ui-scale", "0x1"},
+        {"sandbox", "--frames", "-1"},
+        {"sandbox", "--benchmark-frames", "0"},
+        {"sandbox", "--record", "d", "--frames", "3", "--benchmark-frames", "3"}};
+    for (const auto& argv : cases) {
+        const ParsedOptions p = parseOptions(static_cast<int>(argv.size()), argv.data());
+        EXPECT_TRUE(p.exit) << argv[1];
+        EXPECT_EQ(p.exitCode, 2) << argv[1] << " " << argv[2];
+    }
+    const char* scale[] = {"sandbox", "--ui-scale", "1.5"};
+    const ParsedOptions ok = parseOptions(3, scale);
+    ASSERT_FALSE(ok.exit);
+    EXPECT_EQ(ok.options.uiScale, 1.5f);
+    const char* help[] = {"sandbox", "--help"};
+    EXPECT_EQ(parseOptions(2, help).exitCode, 0);
 }
 
 TEST(SceneLibrary, FindsShippedScenesByName) {

@@ -67,14 +67,16 @@ inline Aabb randomQueryBox(std::mt19937_64& rng) {
     return {corner, corner + Vec2{3.0 * unit(rng), 3.0 * unit(rng)}};
 }
 
-// Every pair a < b for which test(boxes[a], boxes[b]) holds, in order.
-template <class Test>
-std::vector<std::pair<int, int>> bruteForcePairs(const std::vector<Aabb>& boxes, Test test) {
+// Every pair a < b, not both static, for which test(boxes[a], boxes[b]) holds, in order (the
+// broad phases never report two static blocks: they are never resolved).
+template <class Test> std::vector<std::pair<int, int>> bruteForcePairs(const BoxSet& s, Test test) {
     std::vector<std::pair<int, int>> pairs;
-    const int n = static_cast<int>(boxes.size());
+    const int n = static_cast<int>(s.boxes.size());
     for (int a = 0; a < n; ++a)
         for (int b = a + 1; b < n; ++b)
-            if (test(boxes[a], boxes[b])) pairs.emplace_back(a, b);
+            if (test(s.boxes[a], s.boxes[b]) &&
+                !(s.blocks[a].kind == BodyKind::Static && s.blocks[b].kind == BodyKind::Static))
+                pairs.emplace_back(a, b);
     return pairs;
 }
 

@@ -47,8 +47,8 @@ TEST(BroadPhase, PairsAreExactlyTheBoxesThatOverlapOrMeet) {
         grid.build(s.bounds, s.blocks, [&](int i) { return s.boxes[i]; });
         const auto meeting = pairsOf([&](auto visit) { grid.forEachMeetingPair(visit); });
         const auto overlapping = pairsOf([&](auto visit) { grid.forEachOverlappingPair(visit); });
-        EXPECT_EQ(meeting, bruteForcePairs(s.boxes, meets)) << "seed " << seed;
-        EXPECT_EQ(overlapping, bruteForcePairs(s.boxes, overlaps)) << "seed " << seed;
+        EXPECT_EQ(meeting, bruteForcePairs(s, meets)) << "seed " << seed;
+        EXPECT_EQ(overlapping, bruteForcePairs(s, overlaps)) << "seed " << seed;
         EXPECT_FALSE(overlapping.empty());
     }
 }
@@ -80,7 +80,7 @@ TEST(BroadPhase, QueriesFindExactlyTheBoxesThatMeetAlsoAfterSet) {
         }
         // After all the moves, the pairs too (overflow lists and dead slots).
         const auto meeting = pairsOf([&](auto visit) { grid.forEachMeetingPair(visit); });
-        EXPECT_EQ(meeting, bruteForcePairs(s.boxes, meets)) << "seed " << seed;
+        EXPECT_EQ(meeting, bruteForcePairs(s, meets)) << "seed " << seed;
     }
 }
 

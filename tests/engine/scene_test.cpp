@@ -327,7 +327,8 @@ TEST(SceneBadFile, NumbersOutOfRange) {
     expectError(blocksText(R"({"position": [1, 1], "size": 1, "mass": -2})"),
                 "t.json: blocks[0].mass");
     expectError(blocksText(R"({"position": [1, 1], "size": 0})"), "t.json: blocks[0].size");
-    expectError(blocksText(R"({"position": [1, 1], "size": [1, -1]})"), "t.json: blocks[0].size");
+    expectError(blocksText(R"({"position": [1, 1], "size": [1, -1]})"),
+                "t.json: blocks[0].size[1]");
     expectError(sceneText(R"("bounciness": -0.1)", ""), "t.json: world.bounciness");
     expectError(sceneText(R"("bounciness": 1.01)", ""), "t.json: world.bounciness");
     expectError(sceneText(R"("dt": 0)", ""), "t.json: world.dt");

@@ -260,7 +260,7 @@ TEST(LessonErrors, BadExpectation) {
 
 TEST(LessonErrors, BadOverrideIsPlacedAtTheOverride) {
     const std::string e = errorOf("bad_override.json");
-    EXPECT_NE(e.find("bad_override.json: steps[0].overrides.bounciness: must be between 0 and 1"),
+    EXPECT_NE(e.find("bad_override.json: steps[0].overrides.bounciness: must be from 0 to 1"),
               std::string::npos)
         << e;
 }

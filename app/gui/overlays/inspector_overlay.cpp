@@ -4,6 +4,7 @@
 #include "app_frame.h"
 #include "inspector_format.h"
 #include "overlay_window.h"
+#include "printable.h"
 
 #include <cstdio>
 #include <string>
@@ -76,8 +77,9 @@ void drawInspectorOverlay(App& app) {
     }
     if (app.verbose && f.title != app.ui.inspectorLoggedTitle) {
         app.ui.inspectorLoggedTitle = f.title;
-        std::printf("inspector %s\ninspector %s\ninspector %s\ninspector %s\n", f.title.c_str(),
-                    f.u.c_str(), f.v1After.c_str(), f.v2After.c_str());
+        std::printf("inspector %s\ninspector %s\ninspector %s\ninspector %s\n",
+                    printable(f.title, kPrintablePath).c_str(), f.u.c_str(), f.v1After.c_str(),
+                    f.v2After.c_str());
         std::fflush(stdout);
     }
 }

@@ -4,6 +4,7 @@
 #include "app_setup.h"
 #include "offscreen_osmesa.h"
 #include "png_io.h"
+#include "printable.h"
 #include "renderer.h"
 #include "ui_renderer_gl.h"
 #include "ui_style.h"
@@ -81,16 +82,21 @@ bool runProgram(const std::vector<std::string>& args) {
     return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
+// Writes the frame rendered last to --screenshot and prints where it is.
+int writeScreenshot(Offscreen& off, const Options& o) {
+    if (!writeFrame(off, o.screenshot)) return 1;
+    std::error_code ec; // print where the PNG is, as an absolute path when it can be had
+    const std::filesystem::path where = std::filesystem::absolute(o.screenshot, ec);
+    std::printf("%s\n", printable(ec ? o.screenshot : where.string(), kPrintablePath).c_str());
+    return 0;
+}
+
 int screenshot(App& app, Offscreen& off, const Options& o) {
     if (app.lesson.active()) lessonShowPausePoint(app); // the step as the window shows it there
     for (int i = 0; i < o.frames; ++i) stepSimulation(app);
     if (app.show.cost) app.cost.runSweepNow(quickTradeoffSweep(app.scenesDir)); // the chart
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off);
-    if (!writeFrame(off, o.screenshot)) return 1;
-    std::error_code ec; // print where the PNG is, as an absolute path when it can be had
-    const std::filesystem::path where = std::filesystem::absolute(o.screenshot, ec);
-    std::printf("%s\n", ec ? o.screenshot.c_str() : where.c_str());
-    return 0;
+    return writeScreenshot(off, o);
 }
 
 // Creates `dir` (and its parents); says why on stderr when it cannot.
@@ -174,7 +180,8 @@ int benchmark(App& app, Offscreen& off, const Options& o) {
                 "ms/frame\n",
                 perFrame, 1000.0 / perFrame, simMs / o.benchmarkFrames,
                 perFrame - simMs / o.benchmarkFrames);
-    return 0;
+    // With --screenshot too: the last frame benchmarked.
+    return o.screenshot.empty() ? 0 : writeScreenshot(off, o);
 }
 
 } // namespace

@@ -1,5 +1,9 @@
 #include "options.h"
 
+#include "app_config.h"
+#include "input_limits.h"
+#include "printable.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -78,12 +82,24 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_option("--size", size, "Window or image size, WxH (default 1280x720)");
     const std::string showHelp = "Comma-separated: " + showNames();
     app.add_option("--show", show, showHelp);
-    app.add_option("--record", o.record, "Write N numbered PNGs (and an MP4 with ffmpeg) here");
+    CLI::Option* record =
+        app.add_option("--record", o.record, "Write N numbered PNGs (and an MP4 with ffmpeg) here");
     app.add_option("--benchmark-frames", o.benchmarkFrames,
-                   "Offscreen: step and render N frames, print ms per frame")
-        ->check(CLI::Range(1, 1000000));
+                   "Offscreen: step and render N frames, print ms per frame (with --screenshot: "
+                   "and write the last one)")
+        ->check(CLI::Range(1, 1000000))
+        ->excludes(record);
+    // A decimal number within the app's range (CLI::Range lets NaN through).
+    const limits::Range uiScale{kMinUiScale, kMaxUiScale, ""};
     app.add_option("--ui-scale", o.uiScale, "UI scale (0.75 to 3; e.g. 1.5 on a projector)")
-        ->check(CLI::Range(0.75f, 3.0f));
+        ->check(CLI::Validator(
+            [uiScale](std::string& text) -> std::string {
+                double x = 0.0;
+                if (!limits::parseNumber(text, x) || !limits::violation(uiScale, x).empty())
+                    return "must be a decimal number " + limits::describe(uiScale);
+                return "";
+            },
+            "S"));
     app.add_flag("--verbose", o.verbose, "Print state changes (pause, method, sliders) to stdout");
     app.add_option("--lesson", o.lesson,
                    "Open a lesson: a shipped lesson's name (lecture3) or a lesson file");
@@ -109,8 +125,17 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
             throw CLI::ValidationError("--record", "needs --frames N (N > 0)");
         }
     } catch (const CLI::ParseError& e) {
+        // --help and --version exit 0; every other error is bad usage: exit 2, as sandbox-cli
+        // (CLI11's own codes, e.g. 105, mean nothing to a script), its message printable (it
+        // quotes the arguments).
         result.exit = true;
-        result.exitCode = app.exit(e, std::cout, std::cerr);
+        if (e.get_exit_code() == 0) {
+            result.exitCode = app.exit(e, std::cout, std::cerr);
+        } else {
+            std::cerr << "sandbox: " << printable(e.what(), 4 * kPrintableDefault)
+                      << "\nRun with --help for more information.\n";
+            result.exitCode = 2;
+        }
     }
     return result;
 }

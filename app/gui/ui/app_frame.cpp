@@ -1,4 +1,5 @@
 #include "app_frame.h"
+#include "printable.h"
 
 #include "overlay_window.h"
 #include "renderer.h"
@@ -23,7 +24,7 @@ void handleKeys(App& app, const std::vector<KeyPress>& keys) {
 
 void logEvent(const App& app, const char* text) {
     if (!app.verbose) return;
-    std::printf("%s\n", text);
+    std::printf("%s\n", printable(text, kPrintablePath).c_str()); // names come from files
     std::fflush(stdout);
 }
 
@@ -108,7 +109,7 @@ void logStateChanges(App& app) {
     const LoggedState now = snapshotForLog(app);
     if (app.verbose && app.loggedValid) {
         for (const std::string& line : describeChanges(app.logged, now)) {
-            std::printf("%s\n", line.c_str());
+            std::printf("%s\n", printable(line, kPrintablePath).c_str());
         }
         std::fflush(stdout);
     }
