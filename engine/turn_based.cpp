@@ -210,7 +210,9 @@ class Contacts {
     void settle() {
         std::vector<std::pair<int, int>>& pending = s_.pending;
         for (size_t next = 0; next < pending.size(); ++next) {
-            const auto [j, axis] = pending[next];
+            // Not a structured binding: clang 14 (sanitizer and browser builds) cannot capture
+            // one in the lambda below in C++17.
+            const int j = pending[next].first, axis = pending[next].second;
             s_.isPending[2 * static_cast<size_t>(j) + axis] = 0;
             if (endless_) continue;
             const Aabb box = aabbOf(blocks_[j]);

@@ -36,15 +36,20 @@ bool SceneRenderer::init(std::string* error) {
         buildProgram(embedded_shaders::shape_vert, embedded_shaders::shape_frag, "shape", error);
     if (!shapeProgram_) return false;
     shapeTransform_ = glGetUniformLocation(shapeProgram_, "uTransform");
+    GLfloat range[2] = {1.0f, 1.0f};
+    glGetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, range);
+    GLfloat pointSizes[2] = {1.0f, 1.0f};
+#if SANDBOX_GL_ES
+    maxLineWidth_ = std::max(1.0f, range[1]); // WebGL 2: 1 (wider lines are drawn as quads)
+    glGetFloatv(GL_ALIASED_POINT_SIZE_RANGE, pointSizes);
+#else
     // Wide lines need a context that is not forward-compatible (the window asks for none).
     GLint flags = 0;
     glGetIntegerv(GL_CONTEXT_FLAGS, &flags);
-    GLfloat range[2] = {1.0f, 1.0f};
-    glGetFloatv(GL_ALIASED_LINE_WIDTH_RANGE, range);
     maxLineWidth_ =
         (flags & GL_CONTEXT_FLAG_FORWARD_COMPATIBLE_BIT) ? 1.0f : std::max(1.0f, range[1]);
-    GLfloat pointSizes[2] = {1.0f, 1.0f};
     glGetFloatv(GL_POINT_SIZE_RANGE, pointSizes);
+#endif
     maxPointPx_ = std::min(static_cast<double>(pointSizes[1]), kMaxPointSpritePx);
 
     glGenVertexArrays(1, &blockVao_);
@@ -128,8 +133,16 @@ void SceneRenderer::drawShapes(const ClipTransform& t, const ShapeBatch& batch, 
     glBindVertexArray(shapeVao_);
     glBindBuffer(GL_ARRAY_BUFFER, shapeVbo_);
     drawVertices(batch.vertices(), GL_TRIANGLES);
-    glLineWidth(std::clamp(lineWidthPx, 1.0f, maxLineWidth_));
-    drawVertices(batch.segmentVertices(), GL_LINES);
+    if (lineWidthPx <= maxLineWidth_) {
+        glLineWidth(std::max(lineWidthPx, 1.0f));
+        drawVertices(batch.segmentVertices(), GL_LINES);
+        return;
+    }
+    // No lines this wide (WebGL 2): the quads GL would have rasterised.
+    wideLineQuads_.clear();
+    appendWideLineQuads(batch.segmentVertices(), lineWidthPx, framebufferPixelsPerMetre_,
+                        wideLineQuads_);
+    drawVertices(wideLineQuads_, GL_TRIANGLES);
 }
 
 void SceneRenderer::draw(const SceneView& view) {
@@ -166,11 +179,14 @@ void SceneRenderer::draw(const SceneView& view) {
     }
 
     const ClipTransform t = view.camera->clipTransform(view.displayWidth, view.displayHeight);
+    framebufferPixelsPerMetre_ = std::abs(t.scaleX) * 0.5 * vp[2];
     geometry_.build(view, maxPointPx_);
 
     drawShapes(t, geometry_.under, kTrailWidthPx);
 
-    glEnable(GL_PROGRAM_POINT_SIZE);
+#if !SANDBOX_GL_ES
+    glEnable(GL_PROGRAM_POINT_SIZE); // always on in OpenGL ES
+#endif
     glBindBuffer(GL_ARRAY_BUFFER, instanceVbo_);
     for (int k = 0; k < kBlockStyleCount; ++k) {
         for (int shape = 0; shape < kBlockShapeCount; ++shape) {
@@ -191,7 +207,9 @@ void SceneRenderer::draw(const SceneView& view) {
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, n);
         }
     }
+#if !SANDBOX_GL_ES
     glDisable(GL_PROGRAM_POINT_SIZE);
+#endif
 
     drawShapes(t, geometry_.momenta, kMomentumShaftPx);
     drawShapes(t, geometry_.over, kVelocityShaftPx);

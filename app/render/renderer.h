@@ -33,7 +33,9 @@ class SceneRenderer {
     GLuint blockVao_ = 0, pointVao_ = 0, cornerVbo_ = 0, instanceVbo_ = 0;
     GLuint shapeVao_ = 0, shapeVbo_ = 0;
     GLint shapeTransform_ = -1;
-    float maxLineWidth_ = 1.0f;
-    double maxPointPx_ = 1.0; // the largest point sprite used for a block, pixels
+    float maxLineWidth_ = 1.0f; // the widest GL line, pixels (1 in WebGL 2)
+    double framebufferPixelsPerMetre_ = 1.0;
+    std::vector<ShapeVertex> wideLineQuads_; // segments as triangles, when lines cannot be wide
+    double maxPointPx_ = 1.0;                // the largest point sprite used for a block, pixels
     SceneGeometry geometry_;
 };

@@ -1,6 +1,7 @@
 #include "shape_batch.h"
 
 #include <algorithm>
+#include <cmath>
 
 void ShapeBatch::vertex(Vec2 p, const Color& c) {
     vertices_.push_back({static_cast<float>(p.x), static_cast<float>(p.y), c.r, c.g, c.b, c.a});
@@ -77,4 +78,20 @@ bool drawsAsPointSprite(double widthPx, double heightPx, Vec2 centre, const Scre
            centre.x - reach >= screen.x && centre.y - reach >= screen.y &&
            centre.x + reach <= screen.x + screen.width &&
            centre.y + reach <= screen.y + screen.height;
+}
+
+void appendWideLineQuads(const std::vector<ShapeVertex>& segments, double widthPx,
+                         double pixelsPerMetre, std::vector<ShapeVertex>& triangles) {
+    if (pixelsPerMetre <= 0.0) return;
+    const auto half = static_cast<float>(0.5 * widthPx / pixelsPerMetre);
+    for (std::size_t i = 0; i + 1 < segments.size(); i += 2) {
+        const ShapeVertex& a = segments[i];
+        const ShapeVertex& b = segments[i + 1];
+        const bool xMajor = std::abs(b.x - a.x) >= std::abs(b.y - a.y);
+        const float ox = xMajor ? 0.0f : half, oy = xMajor ? half : 0.0f;
+        ShapeVertex a0 = a, a1 = a, b0 = b, b1 = b;
+        a0.x -= ox, a0.y -= oy, a1.x += ox, a1.y += oy;
+        b0.x -= ox, b0.y -= oy, b1.x += ox, b1.y += oy;
+        triangles.insert(triangles.end(), {a0, a1, b1, a0, b1, b0});
+    }
 }

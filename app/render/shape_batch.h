@@ -45,6 +45,14 @@ class ShapeBatch {
     std::vector<ShapeVertex> segments_; // pairs of ends
 };
 
+// The segments (pairs of ends, as segmentVertices()) as triangles, for a GL context without wide
+// lines (WebGL 2 draws lines 1 px wide only). Each segment becomes the quad OpenGL rasterises for a
+// line `widthPx` wide: both ends moved half the width either way along the minor axis (up and
+// down for a line more horizontal than vertical), so the look is the desktop's. `pixelsPerMetre`
+// is the framebuffer's scale. Appends six vertices per segment to `triangles`.
+void appendWideLineQuads(const std::vector<ShapeVertex>& segments, double widthPx,
+                         double pixelsPerMetre, std::vector<ShapeVertex>& triangles);
+
 // Whether a block `widthPx` x `heightPx` on screen, centred at `centre` (screen pixels), is drawn
 // as a point sprite rather than a quad: it is small (the sprite, a square of its larger side
 // plus 2 px, is within `maxPointPx`), not far from square (the sprite's pixels outside the block

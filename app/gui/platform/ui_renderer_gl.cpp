@@ -87,6 +87,19 @@ void setupRenderState(const ImDrawData* data, int framebufferWidth, int framebuf
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gUi.indexBuffer);
 }
 
+// The vertex attributes read ImGui's vertices from `firstVertex` on (the VAO and the vertex buffer
+// bound): how the browser's WebGL 2, which has no glDrawElementsBaseVertex, honours VtxOffset.
+void pointAttributesAt(unsigned firstVertex) {
+    const auto stride = static_cast<GLsizei>(sizeof(ImDrawVert));
+    const std::size_t base = std::size_t{firstVertex} * sizeof(ImDrawVert);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<void*>(base + offsetof(ImDrawVert, pos)));
+    glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<void*>(base + offsetof(ImDrawVert, uv)));
+    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
+                          reinterpret_cast<void*>(base + offsetof(ImDrawVert, col)));
+}
+
 } // namespace
 
 bool uiRendererInit(std::string* error) {
@@ -103,20 +116,14 @@ bool uiRendererInit(std::string* error) {
     glBindVertexArray(gUi.vao);
     glBindBuffer(GL_ARRAY_BUFFER, gUi.vertexBuffer);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gUi.indexBuffer);
-    const auto stride = static_cast<GLsizei>(sizeof(ImDrawVert));
     glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<void*>(offsetof(ImDrawVert, pos)));
     glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<void*>(offsetof(ImDrawVert, uv)));
     glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
-                          reinterpret_cast<void*>(offsetof(ImDrawVert, col)));
+    pointAttributesAt(0);
     glBindVertexArray(0);
     ImGuiIO& io = ImGui::GetIO();
     io.BackendRendererName = "sandbox_gl33";
-    io.BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset; // glDrawElementsBaseVertex
+    io.BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset; // base vertex, or re-pointed
     gUi.fontsChanged = true;
     return true;
 }
@@ -153,6 +160,9 @@ void uiRendererRender(const ImDrawData* data) {
     const ImVec2 whiteUv = ImGui::GetIO().Fonts->TexUvWhitePixel;
     const GLenum indexType = sizeof(ImDrawIdx) == 2 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT;
     GLuint current = 0; // the program in use
+#if SANDBOX_GL_ES
+    unsigned attributesAt = ~0u; // the first vertex the attributes point at (none yet)
+#endif
     for (int n = 0; n < data->CmdListsCount; ++n) {
         const ImDrawList* list = data->CmdLists[n];
         glBufferData(GL_ARRAY_BUFFER,
@@ -187,15 +197,23 @@ void uiRendererRender(const ImDrawData* data) {
                               whiteUv, kMinSolidRunPixels, gUi.runs);
             else
                 gUi.runs.push_back({cmd.IdxOffset, cmd.ElemCount, false});
+#if SANDBOX_GL_ES
+            if (cmd.VtxOffset != attributesAt) pointAttributesAt(cmd.VtxOffset);
+            attributesAt = cmd.VtxOffset;
+#endif
             for (const UiDrawRun& run : gUi.runs) {
                 const GLuint program = run.solid ? gUi.solid.program : gUi.textured.program;
                 if (program != current) glUseProgram(program);
                 current = program;
-                glDrawElementsBaseVertex(
-                    GL_TRIANGLES, static_cast<GLsizei>(run.indexCount), indexType,
-                    reinterpret_cast<void*>(static_cast<std::size_t>(run.firstIndex) *
-                                            sizeof(ImDrawIdx)),
-                    static_cast<GLint>(cmd.VtxOffset));
+                const auto* firstIndex = reinterpret_cast<void*>(
+                    static_cast<std::size_t>(run.firstIndex) * sizeof(ImDrawIdx));
+#if SANDBOX_GL_ES
+                glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(run.indexCount), indexType,
+                               firstIndex);
+#else
+                glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(run.indexCount),
+                                         indexType, firstIndex, static_cast<GLint>(cmd.VtxOffset));
+#endif
             }
         }
     }

@@ -157,6 +157,7 @@ bool saveCurrentScene(App& app, const std::string& path) {
     }
     app.error.clear();
     app.note = "Saved " + path;
+    app.savedFile = path;
     return true;
 }
 

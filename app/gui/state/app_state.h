@@ -115,8 +115,13 @@ struct App : Run {
     // Requests to the window backend.
     bool quitRequested = false;
     bool fullscreenRequested = false;
-    std::string savePath; // the Save field's path
-    std::string openPath; // the Open field's path
+    std::string savePath;  // the Save field's path
+    std::string openPath;  // the Open field's path
+    std::string savedFile; // the file the last Save wrote (the browser offers it as a download)
+    // The browser build: Open also offers the browser's file picker (and drag and drop), Save
+    // downloads the file.
+    bool browserFiles = false;
+    bool filePickerRequested = false;
     // The shipped scenes (the picker) and where they are.
     std::string scenesDir;
     std::vector<SceneEntry> sceneFiles;

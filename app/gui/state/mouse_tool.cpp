@@ -97,3 +97,10 @@ void mouseWheel(App& app, Vec2 screen, double steps) {
     app.camera.zoomAbout(screen, std::pow(1.15, steps));
     app.autoFit = false;
 }
+
+void touchPanZoom(App& app, Vec2 from, Vec2 to, double spreadRatio) {
+    if (!std::isfinite(spreadRatio) || spreadRatio <= 0.0) return;
+    app.camera.panPixels(to - from);
+    app.camera.zoomAbout(to, spreadRatio);
+    app.autoFit = false;
+}

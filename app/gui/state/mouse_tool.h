@@ -34,3 +34,6 @@ void mouseMove(App& app, Vec2 screen);
 void mouseRelease(App& app, MouseButton button, Vec2 screen);
 // Wheel zoom about the cursor: `steps` notches (positive zooms in).
 void mouseWheel(App& app, Vec2 screen, double steps);
+// A two-finger touch gesture: pans by the move of the fingers' midpoint (`from` to `to`, screen
+// pixels) and zooms about its new place by the change of their distance (`spreadRatio`).
+void touchPanZoom(App& app, Vec2 from, Vec2 to, double spreadRatio);

@@ -18,7 +18,11 @@ void CostMeasurement::measure(const World& world, const std::string& scenePath, 
 
 void CostMeasurement::startSweep(Sweep sweep) {
     if (sweepRunning()) return;
+#ifdef __EMSCRIPTEN__
+    take(sweep); // the browser build has one thread: the sweep runs now (the page waits for it)
+#else
     job_ = std::async(std::launch::async, std::move(sweep));
+#endif
 }
 
 void CostMeasurement::take(const Sweep& sweep) {

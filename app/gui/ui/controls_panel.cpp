@@ -82,6 +82,13 @@ void lessonSection(App& app) {
 
 void fileSection(App& app) {
     if (!ImGui::CollapsingHeader("Open and save")) return;
+    if (app.browserFiles) {
+        if (ImGui::Button("Open a scene file...")) app.filePickerRequested = true;
+        tooltip("The browser's file dialog; or drop a .json file on the page");
+        if (ImGui::Button("Save (download)")) saveCurrentScene(app, app.savePath);
+        tooltip("Downloads the current state as a scene file (format v1); Ctrl+S");
+        return;
+    }
     ImGui::InputTextWithHint("##open", "path/to/scene.json", &app.openPath);
     ImGui::SameLine();
     if (ImGui::Button("Open") && !app.openPath.empty()) loadScene(app, app.openPath);

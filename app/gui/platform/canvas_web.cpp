@@ -1,0 +1,188 @@
+#include "canvas_web.h"
+
+#include "input_map.h"
+#include "ui_renderer_gl.h"
+
+#include <emscripten.h>
+#include <emscripten/html5.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace {
+
+CanvasWeb* gCanvas = nullptr; // the one canvas, for the callbacks from the page
+
+void onKey(GLFWwindow*, int key, int, int action, int mods) {
+    if (!gCanvas || action != GLFW_PRESS) return;
+    gCanvas->keyPresses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0});
+}
+
+void onDrop(GLFWwindow*, int count, const char** paths) {
+    if (!gCanvas) return;
+    for (int i = 0; i < count; ++i) gCanvas->openedFiles.emplace_back(paths[i]);
+}
+
+// JavaScript, not C++: kept as written.
+// clang-format off
+// The page's size in CSS pixels and its device pixel ratio.
+EM_JS(double, page_width, (), { return window.innerWidth; });
+EM_JS(double, page_height, (), { return window.innerHeight; });
+EM_JS(double, page_pixel_ratio, (), { return window.devicePixelRatio || 1; });
+
+EM_JS(char*, page_query_string, (), { return allocateUTF8(window.location.search || ""); });
+EM_JS(char*, storage_get, (const char* key), {
+    try {
+        const v = window.localStorage.getItem(UTF8ToString(key));
+        return v === null ? 0 : allocateUTF8(v);
+    } catch (e) {
+        return 0; // storage disabled (private mode, file://): settings are not kept
+    }
+});
+EM_JS(void, storage_set, (const char* key, const char* value), {
+    try {
+        window.localStorage.setItem(UTF8ToString(key), UTF8ToString(value));
+    } catch (e) {
+    }
+});
+EM_JS(void, page_open_file_picker, (), { window.sandboxPage.openFilePicker(); });
+EM_JS(void, page_download, (const char* path), { window.sandboxPage.download(UTF8ToString(path)); });
+EM_JS(void, page_toggle_fullscreen, (), { window.sandboxPage.toggleFullscreen(); });
+EM_JS(void, page_first_frame_shown, (), { window.sandboxPage.firstFrameShown(); });
+// clang-format on
+
+std::string takeString(char* text) {
+    if (!text) return {};
+    std::string s = text;
+    std::free(text);
+    return s;
+}
+
+// The canvas follows the page: CSS size of the window, backing store of that times the ratio.
+void followPage(CanvasWeb& c) {
+    const double ratio = page_pixel_ratio();
+    const double cssWidth = page_width(), cssHeight = page_height();
+    const int width = std::max(1, static_cast<int>(std::lround(cssWidth * ratio)));
+    const int height = std::max(1, static_cast<int>(std::lround(cssHeight * ratio)));
+    if (width == c.width && height == c.height && ratio == c.devicePixelRatio) return;
+    c.width = width;
+    c.height = height;
+    c.devicePixelRatio = ratio;
+    glfwSetWindowSize(c.window, width, height);
+    emscripten_set_element_css_size("#canvas", cssWidth, cssHeight);
+}
+
+} // namespace
+
+// Called by web/index.html: a file the user picked, already written into the browser's FS.
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_file_opened(const char* path) {
+    if (gCanvas && path) gCanvas->openedFiles.emplace_back(path);
+}
+
+// Called by web/index.html for a two-finger move: midpoints and spread in CSS pixels.
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_gesture(double fromX, double fromY, double toX,
+                                                         double toY, double spreadRatio) {
+    if (!gCanvas || !(spreadRatio > 0.0) || !std::isfinite(spreadRatio)) return;
+    const double r = gCanvas->devicePixelRatio;
+    gCanvas->gestures.push_back({{fromX * r, fromY * r}, {toX * r, toY * r}, spreadRatio});
+}
+
+bool canvasInit(CanvasWeb& c, std::string* error) {
+    if (!glfwInit()) {
+        if (error) *error = "cannot start GLFW";
+        return false;
+    }
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+    c.window = glfwCreateWindow(1280, 720, "Collision sandbox", nullptr, nullptr);
+    if (!c.window) {
+        if (error) *error = "this browser gives no WebGL 2 context";
+        glfwTerminate();
+        return false;
+    }
+    glfwMakeContextCurrent(c.window);
+    gCanvas = &c;
+    glfwSetKeyCallback(c.window, onKey);
+    glfwSetDropCallback(c.window, onDrop);
+    followPage(c);
+    std::string uiError;
+    if (!ImGui_ImplGlfw_InitForOpenGL(c.window, true) || !uiRendererInit(&uiError)) {
+        if (error) *error = "cannot start the ImGui backends: " + uiError;
+        canvasShutdown(c);
+        return false;
+    }
+    c.lastTime = glfwGetTime();
+    return true;
+}
+
+void canvasShutdown(CanvasWeb& c) {
+    if (!c.window) return;
+    uiRendererShutdown();
+    ImGui_ImplGlfw_Shutdown();
+    glfwDestroyWindow(c.window);
+    glfwTerminate();
+    c.window = nullptr;
+    gCanvas = nullptr;
+}
+
+void canvasNewFrame(CanvasWeb& c, double* realSeconds) {
+    followPage(c);
+    const double now = glfwGetTime();
+    if (realSeconds) *realSeconds = now - c.lastTime;
+    c.lastTime = now;
+    uiRendererNewFrame();
+    ImGui_ImplGlfw_NewFrame();
+}
+
+std::vector<KeyPress> canvasTakeKeyPresses(CanvasWeb& c) {
+    std::vector<KeyPress> keys;
+    keys.swap(c.keyPresses);
+    return keys;
+}
+
+std::vector<std::string> canvasTakeOpenedFiles(CanvasWeb& c) {
+    std::vector<std::string> files;
+    files.swap(c.openedFiles);
+    return files;
+}
+
+std::vector<TouchGesture> canvasTakeGestures(CanvasWeb& c) {
+    std::vector<TouchGesture> gestures;
+    gestures.swap(c.gestures);
+    return gestures;
+}
+
+std::string pageQueryString() {
+    return takeString(page_query_string());
+}
+
+std::string storageGet(const char* key) {
+    return takeString(storage_get(key));
+}
+
+void storageSet(const char* key, const std::string& value) {
+    storage_set(key, value.c_str());
+}
+
+void pageOpenFilePicker() {
+    page_open_file_picker();
+}
+
+void pageDownload(const std::string& path) {
+    page_download(path.c_str());
+}
+
+void pageToggleFullscreen() {
+    page_toggle_fullscreen();
+}
+
+void pageFirstFrameShown() {
+    page_first_frame_shown();
+}

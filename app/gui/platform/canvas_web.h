@@ -1,0 +1,51 @@
+// The browser backend: emscripten's GLFW on a WebGL 2 canvas that fills the page, with ImGui's
+// GLFW backend and the project's UI renderer. Init, NewFrame, Shutdown, as ImGui's backends; the
+// browser presents the frame itself when the main loop's callback returns. Also the page's
+// services the app uses: the URL, local storage, the file picker, downloads and full screen
+// (their JavaScript side is in web/index.html).
+#pragma once
+
+#include "input_map.h"
+#include "vec2.h"
+
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+// A two-finger gesture since the last frame: the fingers' midpoint moved from `from` to `to`
+// (framebuffer pixels) and their distance changed by `spreadRatio`.
+struct TouchGesture {
+    Vec2 from, to;
+    double spreadRatio = 1.0;
+};
+
+struct CanvasWeb {
+    GLFWwindow* window = nullptr;
+    int width = 0, height = 0;            // the canvas, framebuffer pixels (CSS pixels x ratio)
+    double devicePixelRatio = 1.0;        // framebuffer pixels per CSS pixel
+    double lastTime = 0.0;                // s
+    std::vector<KeyPress> keyPresses;     // since the last canvasTakeKeyPresses()
+    std::vector<std::string> openedFiles; // dropped or picked, in the browser's file system
+    std::vector<TouchGesture> gestures;   // since the last canvasTakeGestures()
+};
+
+// Creates the GL context on the page's canvas (ImGui context already created). False with a
+// message when the browser has no WebGL 2.
+bool canvasInit(CanvasWeb& c, std::string* error);
+void canvasShutdown(CanvasWeb& c);
+// Follows the page's size and device pixel ratio (the canvas is resized to match), then starts
+// the backends' frame. Sets `realSeconds` to the time since the previous frame.
+void canvasNewFrame(CanvasWeb& c, double* realSeconds);
+std::vector<KeyPress> canvasTakeKeyPresses(CanvasWeb& c);
+std::vector<std::string> canvasTakeOpenedFiles(CanvasWeb& c);
+std::vector<TouchGesture> canvasTakeGestures(CanvasWeb& c);
+
+// The page's services.
+std::string pageQueryString();           // location.search
+std::string storageGet(const char* key); // localStorage, "" when unset
+void storageSet(const char* key, const std::string& value);
+void pageOpenFilePicker();                  // the browser's file dialog
+void pageDownload(const std::string& path); // offers a file of the browser's FS
+void pageToggleFullscreen();
+void pageFirstFrameShown(); // hides the loading note

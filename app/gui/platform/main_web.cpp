@@ -1,0 +1,156 @@
+// sandbox in a browser: the same app as the window (scripts/web.sh builds it with emscripten).
+// The browser owns the loop: emscripten_set_main_loop calls frame() once per display refresh,
+// and the browser shows what it drew. The link chooses the scene, method and overlays
+// (url_params.h); settings persist in the browser's local storage.
+#include "app_config.h"
+#include "app_frame.h"
+#include "app_setup.h"
+#include "canvas_web.h"
+#include "mouse_tool.h"
+#include "options.h"
+#include "renderer.h"
+#include "ui_renderer_gl.h"
+#include "ui_style.h"
+#include "url_params.h"
+
+#include <emscripten.h>
+#include <imgui.h>
+
+#include <cstdio>
+#include <string>
+
+namespace {
+
+constexpr const char* kSettingsKey = "collision-sandbox/settings";  // AppConfig's text format
+constexpr const char* kImGuiIniKey = "collision-sandbox/imgui.ini"; // window placement
+
+struct WebApp {
+    App app;
+    CanvasWeb canvas;
+    SceneRenderer renderer;
+    AppConfig config;
+    std::string storedSettings; // what local storage holds, to write only on change
+    double pixelRatio = 1.0;    // the ratio app.uiScale includes (the user's scale times it)
+    long long frames = 0;
+};
+
+WebApp* gWeb = nullptr;
+
+// The UI scale follows the device pixel ratio (crisp text on high-DPI screens, and the browser's
+// zoom scales the UI as Ctrl+= / Ctrl+- do in the window).
+void followPixelRatio(WebApp& w) {
+    const double ratio = w.canvas.devicePixelRatio;
+    if (ratio == w.pixelRatio) return;
+    setUiScale(w.app, static_cast<float>(w.app.uiScale / w.pixelRatio * ratio));
+    w.pixelRatio = ratio;
+}
+
+void saveSettings(WebApp& w) {
+    w.config.lastScene = w.app.scenePath;
+    w.config.uiScale = static_cast<float>(w.app.uiScale / w.pixelRatio);
+    w.config.windowWidth = w.canvas.width;
+    w.config.windowHeight = w.canvas.height;
+    const std::string text = formatAppConfig(w.config);
+    if (text != w.storedSettings) storageSet(kSettingsKey, text);
+    w.storedSettings = text;
+    ImGuiIO& io = ImGui::GetIO();
+    if (io.WantSaveIniSettings) {
+        storageSet(kImGuiIniKey, ImGui::SaveIniSettingsToMemory());
+        io.WantSaveIniSettings = false;
+    }
+}
+
+// Requests the app made of its platform, answered by the page.
+void answerRequests(WebApp& w) {
+    App& app = w.app;
+    if (!app.savedFile.empty()) pageDownload(app.savedFile);
+    app.savedFile.clear();
+    if (app.filePickerRequested) pageOpenFilePicker();
+    app.filePickerRequested = false;
+    if (app.fullscreenRequested) pageToggleFullscreen();
+    app.fullscreenRequested = false;
+    app.quitRequested = false; // Esc: closing the tab is the browser's
+}
+
+void frame(void* arg) {
+    WebApp& w = *static_cast<WebApp*>(arg);
+    App& app = w.app;
+    double realSeconds = 0.0;
+    canvasNewFrame(w.canvas, &realSeconds);
+    followPixelRatio(w);
+    if (app.uiScale != uiCurrentScale()) {
+        uiApplyScale(app.uiScale);
+        uiRendererFontsChanged();
+        uiRendererNewFrame(); // uploads the new atlas before this frame uses it
+    }
+    for (const std::string& path : canvasTakeOpenedFiles(w.canvas)) loadScene(app, path);
+    for (const TouchGesture& g : canvasTakeGestures(w.canvas))
+        touchPanZoom(app, g.from, g.to, g.spreadRatio);
+    ImGui::NewFrame();
+    appFrame(app, canvasTakeKeyPresses(w.canvas), realSeconds, true);
+    ImGui::Render();
+    appRender(app, w.renderer, w.canvas.width, w.canvas.height);
+    uiRendererRender(ImGui::GetDrawData());
+    answerRequests(w);
+    saveSettings(w);
+    if (w.frames++ == 0) pageFirstFrameShown();
+}
+
+} // namespace
+
+// For the browser tests and the page: the app's state as JSON (scene, method, paused, frames,
+// error). The text lives until the next call.
+extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
+    static std::string text;
+    if (!gWeb) return "{}";
+    const App& app = gWeb->app;
+    auto quoted = [](const std::string& s) {
+        std::string out = "\"";
+        for (const char c : s) {
+            if (c == '"' || c == '\\') out += '\\';
+            if (static_cast<unsigned char>(c) < 0x20)
+                out += ' ';
+            else
+                out += c;
+        }
+        return out + "\"";
+    };
+    text = "{\"scene\":" + quoted(app.scenePath) +
+           ",\"method\":" + quoted(methodName(app.world.settings.method)) +
+           ",\"paused\":" + (app.paused ? "true" : "false") +
+           ",\"frames\":" + std::to_string(gWeb->frames) +
+           ",\"simTime\":" + std::to_string(app.world.time) + ",\"error\":" + quoted(app.error) +
+           ",\"plots\":" + (app.show.plots ? "true" : "false") +
+           ",\"inspector\":" + (app.show.inspector ? "true" : "false") + ",\"lessonStep\":" +
+           (app.lesson.active() ? std::to_string(app.lesson.current + 1) : std::string("0")) + "}";
+    return text.c_str();
+}
+
+int main() {
+    static WebApp w; // lives as long as the page: the loop never returns
+    gWeb = &w;
+    App& app = w.app;
+    w.storedSettings = storageGet(kSettingsKey);
+    w.config = parseAppConfig(w.storedSettings);
+    const UrlParams params = parseUrlParams(pageQueryString());
+    std::string error;
+    setupApp(app, Options{}, w.config.lastScene, &error);
+    applyUrlParams(app, params);
+    app.browserFiles = true;
+    app.savePath = "saved_scene.json";
+
+    uiCreateContext(nullptr);
+    const std::string ini = storageGet(kImGuiIniKey);
+    if (!ini.empty()) ImGui::LoadIniSettingsFromMemory(ini.c_str(), ini.size());
+    if (!canvasInit(w.canvas, &error)) {
+        std::fprintf(stderr, "sandbox: %s\n", error.c_str());
+        return 1;
+    }
+    w.pixelRatio = w.canvas.devicePixelRatio;
+    setUiScale(app, static_cast<float>(w.config.uiScale * w.pixelRatio));
+    uiApplyScale(app.uiScale);
+    uiRendererFontsChanged();
+    if (!w.renderer.init(&error)) app.error = "Shader error: " + error;
+    emscripten_set_main_loop_arg(frame, &w, 0, 1);
+    return 0;
+}

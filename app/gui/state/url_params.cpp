@@ -1,0 +1,160 @@
+#include "url_params.h"
+
+#include "app_state.h"
+#include "lesson_session.h"
+#include "scene_library.h"
+
+#include <cctype>
+#include <set>
+
+namespace {
+
+constexpr std::size_t kMaxEchoed = 40; // characters of a bad value quoted back
+constexpr int kMaxStep = 10000;        // a step number beyond any lesson's
+
+int hexDigit(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+
+std::string percentDecode(const std::string& text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '+') {
+            out += ' ';
+        } else if (c == '%' && i + 2 < text.size() && hexDigit(text[i + 1]) >= 0 &&
+                   hexDigit(text[i + 2]) >= 0) {
+            out += static_cast<char>(hexDigit(text[i + 1]) * 16 + hexDigit(text[i + 2]));
+            i += 2;
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
+// Text as it may be shown in the panel: printable ASCII only, shortened.
+std::string printable(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        if (out.size() >= kMaxEchoed) {
+            out += "...";
+            break;
+        }
+        const auto u = static_cast<unsigned char>(c);
+        out += (u >= 0x20 && u < 0x7f) ? c : '?';
+    }
+    return out;
+}
+
+std::string echo(const std::string& text) {
+    return "'" + printable(text) + "'";
+}
+
+bool isSceneName(const std::string& name) {
+    if (name.empty()) return false;
+    for (const char c : name) {
+        const auto u = static_cast<unsigned char>(c);
+        if (!std::isalnum(u) && c != '_' && c != '-') return false;
+    }
+    return true;
+}
+
+} // namespace
+
+UrlParams parseUrlParams(const std::string& query) {
+    UrlParams p;
+    std::set<std::string> seen;
+    std::size_t start = !query.empty() && query[0] == '?' ? 1 : 0;
+    while (start <= query.size()) {
+        std::size_t end = query.find('&', start);
+        if (end == std::string::npos) end = query.size();
+        const std::string pair = query.substr(start, end - start);
+        start = end + 1;
+        if (pair.empty()) continue;
+        const std::size_t eq = pair.find('=');
+        const std::string key = percentDecode(pair.substr(0, eq));
+        const std::string value = eq == std::string::npos ? "" : percentDecode(pair.substr(eq + 1));
+        const std::string where = "URL parameter " + printable(key);
+        if (!seen.insert(key).second) {
+            p.errors.push_back(where + ": given twice (the first one counts)");
+            continue;
+        }
+        if (key == "scene") {
+            if (isSceneName(value))
+                p.scene = value;
+            else
+                p.errors.push_back(where + ": " + echo(value) +
+                                   " is not a scene name (letters, digits, _ and -)");
+        } else if (key == "method") {
+            if (parseMethod(value.c_str(), p.method))
+                p.methodGiven = true;
+            else
+                p.errors.push_back(where + ": unknown method " + echo(value) +
+                                   " (perfect, move-and-correct, turn-based)");
+        } else if (key == "show") {
+            std::string error;
+            ShowSet show;
+            if (parseShowList(value, show, &error)) {
+                p.show = show;
+                p.showGiven = true;
+            } else {
+                p.errors.push_back(where + ": " + error);
+            }
+        } else if (key == "lesson") {
+            if (isSceneName(value))
+                p.lesson = value;
+            else
+                p.errors.push_back(where + ": " + echo(value) +
+                                   " is not a lesson name (letters, digits, _ and -)");
+        } else if (key == "step") {
+            const bool digits = !value.empty() && value.size() <= 5 &&
+                                value.find_first_not_of("0123456789") == std::string::npos;
+            const int step = digits ? std::stoi(value) : 0;
+            if (step >= 1 && step <= kMaxStep)
+                p.step = step;
+            else
+                p.errors.push_back(where + ": " + echo(value) +
+                                   " is not a step number (1, 2, ...)");
+        } else {
+            p.errors.push_back("unknown URL parameter " + echo(key) +
+                               " (scene, method, show, lesson, step)");
+        }
+    }
+    if (p.step > 0 && p.lesson.empty()) {
+        p.errors.push_back("URL parameter step: needs a lesson (lesson=NAME)");
+        p.step = 0;
+    }
+    return p;
+}
+
+void applyUrlParams(App& app, const UrlParams& params) {
+    std::string errors;
+    auto add = [&errors](const std::string& e) { errors += (errors.empty() ? "" : "\n") + e; };
+    for (const std::string& e : params.errors) add(e);
+    if (!params.lesson.empty()) {
+        const std::string path = app.lessonsDir + "/" + params.lesson + ".json";
+        bool shipped = false;
+        for (const SceneEntry& s : app.lessonFiles) shipped = shipped || s.path == path;
+        const std::size_t first = params.step > 0 ? static_cast<std::size_t>(params.step - 1) : 0;
+        if (!shipped)
+            add("URL parameter lesson: no lesson " + echo(params.lesson) + " is shipped");
+        else if (!openLesson(app, path, first))
+            add(app.error);
+    }
+    if (!params.scene.empty()) {
+        const std::string path = app.scenesDir + "/" + params.scene + ".json";
+        bool shipped = false;
+        for (const SceneEntry& s : app.sceneFiles) shipped = shipped || s.path == path;
+        if (!shipped)
+            add("URL parameter scene: no scene " + echo(params.scene) + " is shipped");
+        else if (!loadScene(app, path))
+            add(app.error);
+    }
+    if (params.methodGiven) app.world.settings.method = params.method;
+    if (params.showGiven) applyShowSet(app, params.show);
+    app.error = errors;
+}

@@ -1,0 +1,60 @@
+# The browser build's dependencies (scripts/web.sh configures with emcmake, so EMSCRIPTEN is set).
+# Emscripten's sysroot cannot take /usr/include whole (glibc's headers would shadow its own), so
+# the header-only Debian packages come in one by one, and the targets the desktop build finds
+# with find_package / pkg-config are defined here under the same names:
+#   nlohmann_json::nlohmann_json, CLI11::CLI11  headers of nlohmann-json3-dev, libcli11-dev
+#   PkgConfig::STB                              libstb-dev's headers (implementations compiled in)
+#   PkgConfig::IMGUI                            Dear ImGui 1.86 compiled from Debian's source
+#                                               package (SANDBOX_IMGUI_SOURCE_DIR, fetched by
+#                                               scripts/web.sh), with the GLFW backend
+#   glfw                                        emscripten's built-in GLFW 3 (-sUSE_GLFW=3)
+#   Threads::Threads                            empty: the web build runs on one thread
+# Scene files are parsed by nlohmann-json, which reports errors by throwing: keep C++ exceptions.
+add_compile_options(-fexceptions)
+add_link_options(-fexceptions)
+
+set(SANDBOX_IMGUI_SOURCE_DIR "" CACHE PATH "Dear ImGui 1.86 sources (apt-get source imgui)")
+if(NOT EXISTS "${SANDBOX_IMGUI_SOURCE_DIR}/imgui.cpp")
+  message(FATAL_ERROR "SANDBOX_IMGUI_SOURCE_DIR must hold Dear ImGui 1.86's sources "
+                      "(scripts/web.sh build fetches them)")
+endif()
+
+# /usr/include/nlohmann and /usr/include/CLI seen through a folder of their own.
+set(SANDBOX_WEB_INCLUDE ${CMAKE_BINARY_DIR}/web-include)
+file(MAKE_DIRECTORY ${SANDBOX_WEB_INCLUDE})
+foreach(dir nlohmann CLI)
+  if(NOT EXISTS /usr/include/${dir})
+    message(FATAL_ERROR "/usr/include/${dir} is missing (scripts/install-deps.sh installs it)")
+  endif()
+  file(CREATE_LINK /usr/include/${dir} ${SANDBOX_WEB_INCLUDE}/${dir} SYMBOLIC)
+endforeach()
+
+add_library(nlohmann_json::nlohmann_json INTERFACE IMPORTED)
+target_include_directories(nlohmann_json::nlohmann_json SYSTEM INTERFACE ${SANDBOX_WEB_INCLUDE})
+add_library(CLI11::CLI11 INTERFACE IMPORTED)
+target_include_directories(CLI11::CLI11 SYSTEM INTERFACE ${SANDBOX_WEB_INCLUDE})
+add_library(PkgConfig::STB INTERFACE IMPORTED)
+target_include_directories(PkgConfig::STB SYSTEM INTERFACE /usr/include/stb)
+add_library(Threads::Threads INTERFACE IMPORTED)
+
+add_library(glfw INTERFACE IMPORTED)
+target_link_options(glfw INTERFACE -sUSE_GLFW=3 -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2)
+
+# ImGui as Debian builds it (the same stb_truetype and stb_rect_pack, so glyphs rasterise alike),
+# plus the GLFW backend that Debian's libimgui.a carries.
+set(IMGUI_DIR ${SANDBOX_IMGUI_SOURCE_DIR})
+add_library(imgui_web STATIC
+  ${IMGUI_DIR}/imgui.cpp
+  ${IMGUI_DIR}/imgui_draw.cpp
+  ${IMGUI_DIR}/imgui_tables.cpp
+  ${IMGUI_DIR}/imgui_widgets.cpp
+  ${IMGUI_DIR}/misc/cpp/imgui_stdlib.cpp
+  ${IMGUI_DIR}/backends/imgui_impl_glfw.cpp)
+target_include_directories(imgui_web SYSTEM PUBLIC ${IMGUI_DIR} ${IMGUI_DIR}/backends
+                           ${IMGUI_DIR}/misc/cpp)
+target_include_directories(imgui_web SYSTEM PRIVATE /usr/include/stb)
+target_compile_definitions(imgui_web PRIVATE
+  "IMGUI_STB_TRUETYPE_FILENAME=<stb_truetype.h>" "IMGUI_STB_RECT_PACK_FILENAME=<stb_rect_pack.h>")
+target_link_libraries(imgui_web PUBLIC glfw PkgConfig::STB)
+add_library(PkgConfig::IMGUI ALIAS imgui_web)
+set(IMGUI_INCLUDEDIR ${IMGUI_DIR})

@@ -1,0 +1,166 @@
+// What the browser build adds to the app's logic (no browser needed): a link's URL parameters,
+// the two-finger gesture, and wide lines drawn as quads where WebGL 2 has 1 px lines only.
+#include "app_setup.h"
+#include "app_state.h"
+#include "mouse_tool.h"
+#include "shape_batch.h"
+#include "url_params.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace {
+
+App setUpApp() {
+    App app;
+    std::string error;
+    Options options;
+    EXPECT_TRUE(setupApp(app, options, "", &error)) << error;
+    return app;
+}
+
+TEST(UrlParams, TheLecturersLink) {
+    const UrlParams p =
+        parseUrlParams("?scene=newtons_cradle&method=turn-based&show=plots,inspector");
+    EXPECT_TRUE(p.errors.empty());
+    EXPECT_EQ(p.scene, "newtons_cradle");
+    ASSERT_TRUE(p.methodGiven);
+    EXPECT_EQ(p.method, Method::TurnBased);
+    ASSERT_TRUE(p.showGiven);
+    EXPECT_TRUE(p.show.overlays.plots);
+    EXPECT_TRUE(p.show.overlays.inspector);
+    EXPECT_FALSE(p.show.overlays.cost);
+}
+
+TEST(UrlParams, EmptyAndPercentEncoded) {
+    EXPECT_TRUE(parseUrlParams("").errors.empty());
+    EXPECT_TRUE(parseUrlParams("?").errors.empty());
+    const UrlParams p = parseUrlParams("show=plots%2Ccom&&method=move%2Dand%2Dcorrect");
+    EXPECT_TRUE(p.errors.empty()) << p.errors.front();
+    EXPECT_TRUE(p.show.overlays.plots && p.show.overlays.com);
+    EXPECT_EQ(p.method, Method::MoveAndCorrect);
+}
+
+TEST(UrlParams, EachBadParameterIsNamedAndTheGoodOnesStillCount) {
+    const UrlParams p =
+        parseUrlParams("?method=fast&scene=../etc/passwd&show=plots,bogus&zoom=2&scene=x");
+    ASSERT_EQ(p.errors.size(), 5u);
+    EXPECT_NE(p.errors[0].find("URL parameter method: unknown method 'fast'"), std::string::npos);
+    EXPECT_NE(p.errors[1].find("URL parameter scene: '../etc/passwd' is not a scene name"),
+              std::string::npos);
+    EXPECT_NE(p.errors[2].find("URL parameter show"), std::string::npos);
+    EXPECT_NE(p.errors[3].find("unknown URL parameter 'zoom'"), std::string::npos);
+    EXPECT_NE(p.errors[4].find("URL parameter scene: given twice"), std::string::npos);
+    EXPECT_FALSE(p.methodGiven);
+    EXPECT_TRUE(p.scene.empty());
+}
+
+TEST(UrlParams, ControlBytesAreNotEchoed) {
+    const UrlParams p = parseUrlParams("?method=%1b%5b2J" + std::string(100, 'a'));
+    ASSERT_EQ(p.errors.size(), 1u);
+    for (const char c : p.errors[0]) EXPECT_GE(static_cast<unsigned char>(c), 0x20);
+    EXPECT_EQ(p.errors[0].find(std::string(50, 'a')), std::string::npos); // shortened
+    EXPECT_NE(p.errors[0].find("'?[2Jaaa"), std::string::npos);
+}
+
+TEST(UrlParams, AppliedToTheApp) {
+    App app = setUpApp();
+    applyUrlParams(app, parseUrlParams("?scene=newtons_cradle&method=turn-based&show=plots"));
+    EXPECT_EQ(app.error, "");
+    EXPECT_NE(app.scenePath.find("newtons_cradle.json"), std::string::npos);
+    EXPECT_EQ(app.world.settings.method, Method::TurnBased);
+    EXPECT_TRUE(app.show.plots);
+}
+
+TEST(UrlParams, AnUnknownSceneKeepsTheCurrentOneAndSaysWhy) {
+    App app = setUpApp();
+    const std::string before = app.scenePath;
+    const std::size_t blocks = app.world.blocks.size();
+    applyUrlParams(app, parseUrlParams("?scene=no_such_scene&method=perfect"));
+    EXPECT_EQ(app.scenePath, before);
+    EXPECT_EQ(app.world.blocks.size(), blocks);
+    EXPECT_NE(app.error.find("URL parameter scene: no scene 'no_such_scene' is shipped"),
+              std::string::npos)
+        << app.error;
+}
+
+TEST(UrlParams, ALessonAtAStep) {
+    const UrlParams p = parseUrlParams("?lesson=lecture3&step=5");
+    EXPECT_TRUE(p.errors.empty());
+    EXPECT_EQ(p.lesson, "lecture3");
+    EXPECT_EQ(p.step, 5);
+    App app = setUpApp();
+    applyUrlParams(app, p);
+    EXPECT_EQ(app.error, "");
+    ASSERT_TRUE(app.lesson.active());
+    EXPECT_EQ(app.lesson.current, 4u);
+}
+
+TEST(UrlParams, BadLessonParameters) {
+    const UrlParams p = parseUrlParams("?step=3");
+    ASSERT_EQ(p.errors.size(), 1u);
+    EXPECT_NE(p.errors[0].find("URL parameter step: needs a lesson"), std::string::npos);
+    EXPECT_EQ(p.step, 0);
+    EXPECT_EQ(parseUrlParams("?lesson=lecture3&step=0").errors.size(), 1u);
+    EXPECT_EQ(parseUrlParams("?lesson=lecture3&step=-2").errors.size(), 1u);
+    EXPECT_EQ(parseUrlParams("?lesson=lecture3&step=99999999999").errors.size(), 1u);
+    App app = setUpApp();
+    const std::string before = app.scenePath;
+    applyUrlParams(app, parseUrlParams("?lesson=lecture3&step=999"));
+    EXPECT_FALSE(app.error.empty()); // no step 999: the current scene stays
+    EXPECT_EQ(app.scenePath, before);
+    applyUrlParams(app, parseUrlParams("?lesson=no_such_lesson"));
+    EXPECT_NE(app.error.find("no lesson 'no_such_lesson' is shipped"), std::string::npos);
+    EXPECT_FALSE(app.lesson.active());
+}
+
+TEST(TouchGesture, PansByTheMidpointAndZoomsAboutIt) {
+    App app = setUpApp();
+    app.camera.setViewport({0, 0, 800, 600});
+    app.camera.setPixelsPerMetre(50.0);
+    app.camera.setCentre({10.0, 6.0});
+    const Vec2 grabbed = app.camera.screenToWorld({300, 200});
+    touchPanZoom(app, {300, 200}, {340, 260}, 2.0);
+    EXPECT_FALSE(app.autoFit);
+    EXPECT_DOUBLE_EQ(app.camera.pixelsPerMetre(), 100.0);
+    // The world point under the fingers stays under them (exact up to rounding: 1e-9 m).
+    const Vec2 now = app.camera.screenToWorld({340, 260});
+    EXPECT_NEAR(now.x, grabbed.x, 1e-9);
+    EXPECT_NEAR(now.y, grabbed.y, 1e-9);
+    const double ppm = app.camera.pixelsPerMetre();
+    touchPanZoom(app, {0, 0}, {0, 0}, std::nan(""));
+    EXPECT_EQ(app.camera.pixelsPerMetre(), ppm);
+}
+
+TEST(WideLineQuads, AsOpenGLRasterisesAWideLine) {
+    ShapeBatch batch;
+    batch.segment({0.0, 0.0}, {4.0, 1.0}, Color{1, 0, 0, 1}, Color{0, 0, 1, 1}); // x-major
+    batch.segment({0.0, 0.0}, {1.0, -3.0}, Color{0, 1, 0, 1});                   // y-major
+    std::vector<ShapeVertex> tris;
+    appendWideLineQuads(batch.segmentVertices(), 4.0, 20.0, tris); // 4 px at 20 px/m: 0.2 m
+    ASSERT_EQ(tris.size(), 12u);
+    // The x-major one is widened up and down by half the width; its ends keep their colours.
+    EXPECT_FLOAT_EQ(tris[0].x, 0.0f);
+    EXPECT_FLOAT_EQ(tris[0].y, -0.1f);
+    EXPECT_FLOAT_EQ(tris[1].y, 0.1f);
+    EXPECT_FLOAT_EQ(tris[2].x, 4.0f);
+    EXPECT_FLOAT_EQ(tris[2].y, 1.1f);
+    EXPECT_EQ(tris[0].r, 1.0f);
+    EXPECT_EQ(tris[2].b, 1.0f);
+    // The y-major one left and right.
+    EXPECT_FLOAT_EQ(tris[6].x, -0.1f);
+    EXPECT_FLOAT_EQ(tris[6].y, 0.0f);
+    EXPECT_FLOAT_EQ(tris[8].x, 1.1f);
+    EXPECT_FLOAT_EQ(tris[8].y, -3.0f);
+    // Area of the two triangles = length along the major axis times the width.
+    auto area = [&](std::size_t i) {
+        const ShapeVertex &a = tris[i], &b = tris[i + 1], &c = tris[i + 2];
+        return std::abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y)) / 2.0;
+    };
+    EXPECT_NEAR(area(0) + area(3), 4.0 * 0.2, 1e-6); // float vertices: 1e-6 m^2
+    EXPECT_NEAR(area(6) + area(9), 3.0 * 0.2, 1e-6);
+}
+
+} // namespace
