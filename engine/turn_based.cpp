@@ -221,7 +221,7 @@ class Contacts {
             if ((v < 0.0 && box.min[axis] - bounds.min[axis] <= kTouchTolerance) ||
                 (v > 0.0 && bounds.max[axis] - box.max[axis] <= kTouchTolerance))
                 resolve(j, CrushRule::kWall, axis);
-            ctx_.broadPhase.queryOthers(box, j, [&](int k) {
+            ctx_.broadPhase.queryOthers(box, j, [&, j = j, axis = axis](int k) {
                 const int side = faceContact(box, aabbOf(blocks_[k]), axis);
                 if (side == 0) return;
                 const double vj = blocks_[j].velocity[axis], vk = blocks_[k].velocity[axis];
