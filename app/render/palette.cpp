@@ -77,3 +77,40 @@ Color staticBlockColor() {
 Color kinematicBlockColor() {
     return {0.62f, 0.58f, 0.48f, 1.0f};
 }
+
+namespace {
+
+double linearChannel(float c) {
+    const double v = static_cast<double>(c);
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
+double luminance(const Color& c) {
+    return 0.2126 * linearChannel(c.r) + 0.7152 * linearChannel(c.g) + 0.0722 * linearChannel(c.b);
+}
+
+} // namespace
+
+double contrastRatio(const Color& a, const Color& b) {
+    const double la = luminance(a), lb = luminance(b);
+    return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
+}
+
+Color outlineFor(const Color& fill, const Color& background) {
+    if (contrastRatio(fill, background) >= kMinBlockContrast) return scene_colors::kOutline;
+    return luminance(background) < 0.4 ? Color{0.92f, 0.93f, 0.96f, 1.0f}
+                                       : Color{0.05f, 0.05f, 0.08f, 1.0f};
+}
+
+const SceneTheme& sceneTheme(bool light) {
+    static const SceneTheme dark{scene_colors::kBackground, scene_colors::kArena,
+                                 scene_colors::kGridMinor,  scene_colors::kGridMajor,
+                                 scene_colors::kWall,       scene_colors::kLabel,
+                                 {0.0f, 0.0f, 0.0f, 0.78f}, {0.667f, 0.698f, 0.765f, 0.78f},
+                                 scene_colors::kVelocity};
+    static const SceneTheme bright{
+        {0.86f, 0.87f, 0.89f, 1.0f}, {0.975f, 0.975f, 0.965f, 1.0f}, {0.0f, 0.0f, 0.0f, 0.07f},
+        {0.0f, 0.0f, 0.0f, 0.18f},   {0.45f, 0.47f, 0.52f, 1.0f},    {0.06f, 0.06f, 0.09f, 1.0f},
+        {1.0f, 1.0f, 1.0f, 0.80f},   {0.25f, 0.27f, 0.32f, 1.0f},    {0.0f, 0.42f, 0.78f, 1.0f}};
+    return light ? bright : dark;
+}

@@ -26,6 +26,28 @@ Color blockColor(int index, const std::string& sceneColor);
 Color staticBlockColor();
 Color kinematicBlockColor();
 
+// The scene's colours for a theme: dark (the default, for a dark room or a screen) or light (for
+// a bright room, where a projector washes dark colours out).
+struct SceneTheme {
+    Color background; // outside the bounds
+    Color arena;      // inside the bounds
+    Color gridMinor, gridMajor;
+    Color wall;
+    Color text;       // labels drawn over the scene
+    Color textShadow; // behind them
+    Color axis;       // the axis numbers
+    Color velocity;   // velocity arrows (the momentum arrows keep their orange)
+};
+const SceneTheme& sceneTheme(bool light);
+
+// WCAG contrast ratio of two colours (1 to 21; alpha ignored).
+double contrastRatio(const Color& a, const Color& b);
+// Below this contrast with the arena, a block gets a contrasting outline.
+constexpr double kMinBlockContrast = 2.0;
+// The outline that makes a block of `fill` stand out from `background`: the usual dark outline,
+// or a light one (dark on a light background) when the fill is close to the background.
+Color outlineFor(const Color& fill, const Color& background);
+
 namespace scene_colors {
 constexpr Color kBackground{0.075f, 0.082f, 0.106f, 1.0f}; // outside the bounds
 constexpr Color kArena{0.118f, 0.129f, 0.165f, 1.0f};      // inside the bounds

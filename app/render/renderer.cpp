@@ -146,7 +146,7 @@ void SceneRenderer::drawShapes(const ClipTransform& t, const ShapeBatch& batch, 
 }
 
 void SceneRenderer::draw(const SceneView& view) {
-    const Color bg = scene_colors::kBackground;
+    const Color bg = view.theme->background;
     glDisable(GL_SCISSOR_TEST);
     glClearColor(bg.r, bg.g, bg.b, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
@@ -168,7 +168,7 @@ void SceneRenderer::draw(const SceneView& view) {
     const double y0 = std::max(0.0, vp[3] - lo.y * sy),
                  y1 = std::min(double(vp[3]), vp[3] - hi.y * sy);
     if (x1 > x0 && y0 > y1) {
-        const Color arena = scene_colors::kArena;
+        const Color arena = view.theme->arena;
         glEnable(GL_SCISSOR_TEST);
         glScissor(static_cast<GLint>(std::lround(x0)), static_cast<GLint>(std::lround(y1)),
                   static_cast<GLsizei>(std::lround(x1 - x0)),

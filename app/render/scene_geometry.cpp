@@ -12,6 +12,38 @@ constexpr double kGridMinPx = 12.0;
 
 } // namespace
 
+double displayedArrowPx(double lengthPx, double kneePx) {
+    if (!(lengthPx > kneePx) || !(kneePx > 0.0)) return std::max(0.0, lengthPx);
+    return std::min(2.0 * kneePx, kneePx * (1.0 + std::log(lengthPx / kneePx)));
+}
+
+ArrowOnScreen arrowOnScreen(const Camera& camera, Vec2 from, Vec2 vector) {
+    ArrowOnScreen a;
+    const double ppm = camera.pixelsPerMetre();
+    const double lengthPx = length(vector) * ppm;
+    if (!(lengthPx > 0.0) || !std::isfinite(lengthPx)) {
+        a.tip = from;
+        return a;
+    }
+    const ScreenRect& vp = camera.viewport();
+    const double knee = kArrowKneeShare * std::min(vp.width, vp.height);
+    double shown = displayedArrowPx(lengthPx, knee);
+    // Cut where the arrow leaves the viewport (the head stays inside it).
+    const Vec2 s = camera.worldToScreen(from);
+    const Vec2 dir{vector.x / length(vector), -vector.y / length(vector)}; // screen, y down
+    const double limits[2][2] = {{vp.x, vp.x + vp.width}, {vp.y, vp.y + vp.height}};
+    const double start[2] = {s.x, s.y}, d[2] = {dir.x, dir.y};
+    for (int k = 0; k < 2; ++k) {
+        if (start[k] < limits[k][0] || start[k] > limits[k][1]) continue; // from off screen
+        if (d[k] > 1e-12) shown = std::min(shown, (limits[k][1] - 2.0 - start[k]) / d[k]);
+        if (d[k] < -1e-12) shown = std::min(shown, (limits[k][0] + 2.0 - start[k]) / d[k]);
+    }
+    shown = std::max(0.0, shown);
+    a.toScale = shown >= lengthPx - 1e-9;
+    a.tip = from + vector * (shown / lengthPx);
+    return a;
+}
+
 void SceneGeometry::build(const SceneView& view, double maxPointPx) {
     under.clear();
     momenta.clear();
@@ -45,14 +77,14 @@ void SceneGeometry::addGrid(const SceneView& view) {
         const double m = std::fmod(std::abs(x - world.bounds.min.x) + 1e-9, major);
         const bool isMajor = m < 1e-6;
         under.rect({x - px * 0.5, lo.y}, {x + px * 0.5, hi.y},
-                   isMajor ? scene_colors::kGridMajor : scene_colors::kGridMinor);
+                   isMajor ? view.theme->gridMajor : view.theme->gridMinor);
     }
     const double y0 = world.bounds.min.y + std::ceil((lo.y - world.bounds.min.y) / step) * step;
     for (double y = y0; y <= hi.y; y += step) {
         const double m = std::fmod(std::abs(y - world.bounds.min.y) + 1e-9, major);
         const bool isMajor = m < 1e-6;
         under.rect({lo.x, y - px * 0.5}, {hi.x, y + px * 0.5},
-                   isMajor ? scene_colors::kGridMajor : scene_colors::kGridMinor);
+                   isMajor ? view.theme->gridMajor : view.theme->gridMinor);
     }
 }
 
@@ -97,7 +129,9 @@ void SceneGeometry::addArrows(const SceneView& view) {
     const bool heads = dynamic <= kMomentumHeadsUpTo;
     for (const Block& bl : view.world->blocks) {
         if (!bl.isDynamic()) continue;
-        const Vec2 tip = bl.position + bl.velocity * (bl.mass * kMomentumArrowScale);
+        const Vec2 tip =
+            arrowOnScreen(*view.camera, bl.position, bl.velocity * (bl.mass * kMomentumArrowScale))
+                .tip;
         if (heads)
             momenta.lineArrow(bl.position, tip, kArrowHeadPx * 1.3 * px, scene_colors::kMomentum);
         else
@@ -105,8 +139,9 @@ void SceneGeometry::addArrows(const SceneView& view) {
     }
     for (const Block& bl : view.world->blocks) {
         if (bl.kind == BodyKind::Static) continue;
-        const Vec2 tip = bl.position + bl.velocity * kVelocityArrowScale;
-        over.lineArrow(bl.position, tip, kArrowHeadPx * px, scene_colors::kVelocity);
+        const Vec2 tip =
+            arrowOnScreen(*view.camera, bl.position, bl.velocity * kVelocityArrowScale).tip;
+        over.lineArrow(bl.position, tip, kArrowHeadPx * px, view.theme->velocity);
     }
 }
 
@@ -129,7 +164,7 @@ void SceneGeometry::addBlocks(const SceneView& view, double maxPointPx) {
     // The four walls, just outside the bounds, hatched like every body of infinite mass.
     const double t = kWallThicknessPx * px;
     const Vec2 mn = world.bounds.min, mx = world.bounds.max;
-    const Color wall = scene_colors::kWall;
+    const Color wall = view.theme->wall;
     const Vec2 wallRects[4][2] = {{{mn.x - t, mn.y - t}, {mn.x, mx.y + t}},
                                   {{mx.x, mn.y - t}, {mx.x + t, mx.y + t}},
                                   {{mn.x, mn.y - t}, {mx.x, mn.y}},
@@ -146,7 +181,10 @@ void SceneGeometry::addBlocks(const SceneView& view, double maxPointPx) {
         const Block& b = world.blocks[i];
         const Color fill = i < view.blockColors.size() ? view.blockColors[i] : Color{};
         const bool selected = static_cast<int>(i) == view.selected;
-        const Color outline = selected ? scene_colors::kSelection : scene_colors::kOutline;
+        // Outlined so every block stands out from the arena, whatever its colour.
+        const Color outline =
+            selected ? scene_colors::kSelection : outlineFor(fill, view.theme->arena);
+        const bool faint = !selected && contrastRatio(fill, view.theme->arena) < kMinBlockContrast;
         const float pattern = b.kind == BodyKind::Static      ? 1.0f
                               : b.kind == BodyKind::Kinematic ? 2.0f
                                                               : 0.0f;
@@ -154,7 +192,10 @@ void SceneGeometry::addBlocks(const SceneView& view, double maxPointPx) {
                                                     float(b.size.x * 0.5), float(b.size.y * 0.5)},
                                                    {fill.r, fill.g, fill.b, fill.a},
                                                    {outline.r, outline.g, outline.b, outline.a},
-                                                   {selected ? 3.0f : 1.5f, pattern}});
+                                                   {selected ? 3.0f
+                                                    : faint  ? 2.5f
+                                                             : 1.5f,
+                                                    pattern}});
     }
 
     // Ghosts: outlines only (a transparent fill), in each ghost world's colour.

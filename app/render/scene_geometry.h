@@ -29,13 +29,27 @@ struct SceneView {
         Color color;
     };
     std::vector<Ghosts> ghosts;
-    bool flingActive = false; // the fling arrow while right-dragging
+    const SceneTheme* theme = &sceneTheme(false); // colours (blocks are outlined against arena)
+    bool flingActive = false;                     // the fling arrow while right-dragging
     Vec2 flingFrom, flingTo;
 };
 
 // Velocity arrows: metres of arrow per m/s; momentum arrows: metres per kg·m/s.
 constexpr double kVelocityArrowScale = 0.25;
 constexpr double kMomentumArrowScale = 0.15;
+
+// Long arrows keep their heads on screen: up to the knee (a share of the viewport's smaller side)
+// an arrow is drawn to scale; beyond it, its length grows with the logarithm (at most twice the
+// knee), and it is cut at the viewport's edge; the label then gives the value (300 m/s).
+constexpr double kArrowKneeShare = 0.22;
+struct ArrowOnScreen {
+    Vec2 tip;            // m, where the head is drawn
+    bool toScale = true; // false: compressed or cut, so the label must give the value
+};
+// The drawn length (px) of an arrow `lengthPx` long to scale, for a knee of `kneePx`.
+double displayedArrowPx(double lengthPx, double kneePx);
+// The arrow from `from` along `vector` (m, to scale) as drawn through `camera`.
+ArrowOnScreen arrowOnScreen(const Camera& camera, Vec2 from, Vec2 vector);
 // Blocks up to this size on screen (pixels) may be drawn as point sprites.
 constexpr double kMaxPointSpritePx = 64.0;
 // With more moving blocks than this, momentum arrows are drawn without heads (the velocity arrow

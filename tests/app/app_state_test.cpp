@@ -79,6 +79,9 @@ TEST(FixedStepClock, CapsTicksPerFrameAndDropsTheBacklog) {
 TEST(AppState, AdvanceRunsFramesUnlessPaused) {
     App app;
     setScene(app, twoBlocks(), "two.json");
+    EXPECT_TRUE(app.paused); // scenes open paused at t = 0
+    EXPECT_EQ(advanceSimulation(app, 0.05), 0);
+    app.paused = false;
     EXPECT_EQ(advanceSimulation(app, 0.05), 3);
     EXPECT_EQ(app.world.frame, 3u);
     app.paused = true;
@@ -86,18 +89,69 @@ TEST(AppState, AdvanceRunsFramesUnlessPaused) {
     EXPECT_EQ(app.world.frame, 3u);
 }
 
-TEST(AppState, ResetGoesBackToTheSceneAsLoaded) {
+TEST(AppState, ResetPutsTheBlocksBackAndKeepsTheChosenSettings) {
     App app;
     setScene(app, twoBlocks(), "two.json");
-    app.world.settings.method = Method::TurnBased;
+    app.world.settings.method = Method::TurnBased; // S
+    app.world.settings.bounciness = 0.5;           // C
+    app.world.settings.gravity = Vec2{0, -9.81};   // g
+    app.world.settings.dt = 1.0 / 120.0;           // frame rate
+    app.world.settings.substeps = 4;
     for (int i = 0; i < 10; ++i) stepSimulation(app);
+    app.world.blocks[1].mass = 7.0; // an edit of a block: R undoes it
     app.selected = 1;
-    resetScene(app);
+    resetScene(app); // R
     EXPECT_EQ(app.world.frame, 0u);
+    EXPECT_EQ(app.world.time, 0.0);
     EXPECT_EQ(app.world.blocks[0].position, (Vec2{4, 6}));
-    EXPECT_EQ(app.world.settings.method, Method::Perfect);
+    EXPECT_EQ(app.world.blocks[1].mass, 2.0);
+    EXPECT_EQ(app.world.settings.method, Method::TurnBased);
+    EXPECT_EQ(app.world.settings.bounciness, 0.5);
+    EXPECT_EQ(app.world.settings.gravity, (Vec2{0, -9.81}));
+    EXPECT_EQ(app.world.settings.dt, 1.0 / 120.0);
+    EXPECT_EQ(app.world.settings.substeps, 4);
     EXPECT_EQ(app.trails.length(), 0);
     EXPECT_EQ(app.selected, 1);
+    resetToFile(app); // Shift+R
+    EXPECT_EQ(app.world.settings.method, Method::Perfect);
+    EXPECT_EQ(app.world.settings.bounciness, 1.0);
+    EXPECT_EQ(app.world.settings.gravity, (Vec2{0, 0}));
+    EXPECT_EQ(app.world.settings.dt, 1.0 / 60.0);
+    EXPECT_EQ(app.world.settings.substeps, 1);
+}
+
+TEST(AppState, EditsAreUnsavedUntilSaved) {
+    const fs::path dir = tempDir("unsaved");
+    App app;
+    setScene(app, twoBlocks(), "two.json");
+    EXPECT_FALSE(unsavedEdits(app));
+    for (int i = 0; i < 5; ++i) stepSimulation(app); // running is not an edit
+    EXPECT_FALSE(unsavedEdits(app));
+    cycleMethod(app); // a setting
+    EXPECT_TRUE(unsavedEdits(app));
+    cycleMethod(app);
+    cycleMethod(app);
+    EXPECT_FALSE(unsavedEdits(app)); // back to the scene's method
+    ASSERT_TRUE(setBlockSize(app, 0, {0.5, 0.5}));
+    EXPECT_TRUE(unsavedEdits(app));
+    ASSERT_TRUE(saveCurrentScene(app, (dir / "s.json").string())) << app.error;
+    EXPECT_FALSE(unsavedEdits(app));
+    fs::remove_all(dir);
+}
+
+TEST(AppState, AnEditDuringReplaySaysANewFutureStarts) {
+    App app;
+    setScene(app, twoBlocks(), "two.json");
+    for (int i = 0; i < 30; ++i) stepSimulation(app);
+    ASSERT_TRUE(scrubTo(app, 10));
+    ASSERT_TRUE(isReplaying(app));
+    app.world.blocks[1].position.y = 9.0; // dragged
+    noteEdit(app, true);
+    EXPECT_NE(app.note.find("new future"), std::string::npos) << app.note;
+    EXPECT_FALSE(isReplaying(app));
+    EXPECT_EQ(app.history.lastFrame(), 10u);
+    ASSERT_TRUE(scrubTo(app, app.history.lastFrame())); // >| keeps the edit
+    EXPECT_EQ(app.world.blocks[1].position.y, 9.0);
 }
 
 TEST(AppState, CycleMethodVisitsAllThree) {
@@ -168,6 +222,42 @@ TEST(AppState, SaveKeepsNamesInStepAfterAddAndDelete) {
     fs::remove_all(dir);
 }
 
+TEST(AppState, SaveRecordsTheCurrentMassSettingsAndAnAbsolutePath) {
+    const fs::path dir = tempDir("save3");
+    App app;
+    ASSERT_TRUE(loadScene(app, resolveScenePath("lecture_example_1", SANDBOX_SCENES_DIR)));
+    EXPECT_TRUE(fs::path(app.scenePath).is_absolute());
+    app.world.blocks[0].mass = 3.0;
+    EXPECT_EQ(blockDisplayName(app, 0), "m1 = 3 kg"); // the label follows the mass
+    app.world.settings.gravity = Vec2{0, -9.81};
+    // The offered name comes from the scene's name, outside the shipped scenes, never taken.
+    const std::string offered = suggestedSavePath(app);
+    EXPECT_EQ(fs::path(offered).stem().string().rfind("lecture_example_1", 0), 0u) << offered;
+    EXPECT_FALSE(fs::exists(offered));
+    EXPECT_NE(fs::path(offered).parent_path(), fs::path(SANDBOX_SCENES_DIR));
+    const fs::path cwd = fs::current_path();
+    fs::current_path(dir);
+    ASSERT_TRUE(saveCurrentScene(app, "mine")) << app.error; // relative, no extension
+    fs::current_path(cwd);
+    const std::string saved = (dir / "mine.json").string();
+    EXPECT_EQ(app.scenePath, saved);
+    const SceneResult loaded = loadSceneFile(saved);
+    ASSERT_TRUE(loaded.scene) << loaded.error.text();
+    EXPECT_EQ(loaded.scene->blocks[0].name, "m1 = 3 kg");
+    EXPECT_EQ(loaded.scene->blocks[0].mass, 3.0);
+    EXPECT_EQ(loaded.scene->settings.gravity, (Vec2{0, -9.81}));
+    EXPECT_NE(loaded.scene->description.find("no gravity"), std::string::npos); // kept as written
+    EXPECT_NE(loaded.scene->description.find("Saved with changed settings: gravity (0, -9.81)"),
+              std::string::npos)
+        << loaded.scene->description;
+    // Offered again: the file exists now, so another name.
+    app.scenePath = saved;
+    const std::string next = suggestedSavePath(app);
+    EXPECT_EQ(fs::path(next).parent_path(), dir);
+    EXPECT_NE(next, saved);
+    fs::remove_all(dir);
+}
+
 TEST(AppState, SaveToABadPathFailsWithAMessage) {
     App app;
     setScene(app, twoBlocks(), "two.json");
@@ -235,8 +325,9 @@ TEST(OverlayTable, NamesAndFlagsAreUniqueAndWindowsHaveRoom) {
         EXPECT_NE(std::string(a.name), "none");
         EXPECT_NE(showNames().find(a.name), std::string::npos);
         if (a.title != nullptr) {
-            EXPECT_GT(a.place.widthFraction, 0.0f) << a.name;
-            EXPECT_GT(a.place.heightFraction, 0.0f) << a.name;
+            EXPECT_GT(a.place.minExtent, 0.0) << a.name;
+            EXPECT_GT(a.place.weight, 0.0) << a.name;
+            EXPECT_GT(a.place.crossExtent, 0.0) << a.name;
         }
         for (std::size_t j = i + 1; j < kOverlayCount; ++j) {
             EXPECT_NE(std::string(a.name), kOverlays[j].name);
@@ -262,6 +353,7 @@ TEST(AppLog, LogsEveryOverlayByItsShowName) {
 TEST(AppLog, DescribesWhatChanged) {
     App app;
     setScene(app, twoBlocks(), "two.json");
+    app.paused = false;
     const LoggedState before = snapshotForLog(app);
     app.paused = true;
     cycleMethod(app);

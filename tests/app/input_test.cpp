@@ -22,11 +22,14 @@ TEST(KeyMap, TheLecturesKeys) {
 
 TEST(KeyMap, TheSandboxsKeys) {
     EXPECT_EQ(actionForKey(keys::kN, false), Action::StepOnce);
-    EXPECT_EQ(actionForKey(keys::kTab, false), Action::ToggleUi);
+    EXPECT_EQ(actionForKey(keys::kTab, false), Action::TogglePresent);
+    EXPECT_EQ(actionForKey(keys::kR, false, true), Action::ResetToFile);
+    EXPECT_EQ(actionForKey(keys::kP, false, true), Action::TogglePause); // Shift does not matter
+    EXPECT_EQ(actionForKey(keys::kQ, true), Action::Quit);
     EXPECT_EQ(actionForKey(keys::kF11, false), Action::ToggleFullscreen);
     EXPECT_EQ(actionForKey(keys::kEqual, true), Action::UiScaleUp);
     EXPECT_EQ(actionForKey(keys::kMinus, true), Action::UiScaleDown);
-    EXPECT_EQ(actionForKey(keys::kEscape, false), Action::Quit);
+    EXPECT_EQ(actionForKey(keys::kEscape, false), Action::Escape); // never quits at once
     EXPECT_EQ(actionForKey(keys::kDelete, false), Action::DeleteSelected);
     EXPECT_EQ(actionForKey(keys::kS, true), Action::Save);
     EXPECT_EQ(actionForKey(keys::kEqual, false), Action::None); // Ctrl is needed
@@ -34,9 +37,9 @@ TEST(KeyMap, TheSandboxsKeys) {
 }
 
 TEST(KeyMap, NoKeyIsBoundTwiceAndEveryBindingIsDescribed) {
-    std::set<std::pair<int, bool>> seen;
+    std::set<std::pair<int, int>> seen;
     for (const KeyBinding& b : keyBindings()) {
-        EXPECT_TRUE(seen.insert({b.key, b.ctrl}).second) << b.keyName;
+        EXPECT_TRUE(seen.insert({b.key, int(b.ctrl) + 2 * int(b.shift)}).second) << b.keyName;
         EXPECT_NE(std::string(b.description), "");
         EXPECT_NE(std::string(actionName(b.action)), "none");
     }

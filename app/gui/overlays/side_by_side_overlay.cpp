@@ -28,9 +28,13 @@ void drawSideBySideOverlay(App& app) {
         ImGui::TextWrapped("Starts from the current state when the simulation runs (P or N).");
         return;
     }
-    const ImGuiTableFlags flags =
-        ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_BordersInnerV;
-    if (ImGui::BeginTable("methods", 6, flags)) {
+    // Columns at the width of their contents (never cut): a narrow window scrolls sideways.
+    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit |
+                                  ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX;
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const float rows =
+        4.0f * (ImGui::GetTextLineHeight() + 2.0f * st.CellPadding.y) + st.ScrollbarSize + 2.0f;
+    if (ImGui::BeginTable("methods", 6, flags, ImVec2(0.0f, rows))) {
         ImGui::TableSetupColumn("method");
         ImGui::TableSetupColumn("collisions");
         ImGui::TableSetupColumn("max overlap");

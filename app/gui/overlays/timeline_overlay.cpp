@@ -30,7 +30,8 @@ void drawTimelineOverlay(App& app) {
     ImGui::SameLine();
     if (ImGui::Button(">|")) go(static_cast<long long>(last));
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(-1.0f);
+    dimText(isReplaying(app) ? "REPLAY" : "live");
+    ImGui::SetNextItemWidth(-1.0f); // the slider on its own line: it must show frame and time
     char label[64];
     std::snprintf(label, sizeof label, "frame %%d   t = %.2f s", app.world.time);
     if (ImGui::SliderInt("##frame", &frame, static_cast<int>(first), static_cast<int>(last), label,
@@ -38,9 +39,11 @@ void drawTimelineOverlay(App& app) {
         go(frame);
     }
     char info[160];
-    std::snprintf(info, sizeof info, "%s  %.1f s recorded, %zu keyframes, %.1f MB",
-                  isReplaying(app) ? "REPLAY: play or step to continue from here." : "live.",
-                  static_cast<double>(last - first) * app.world.settings.dt, h.keyframeCount(),
-                  static_cast<double>(h.bytes()) / (1024.0 * 1024.0));
+    std::snprintf(
+        info, sizeof info, "%.1f s recorded, %zu keyframes, %.1f MB%s", h.recordedSeconds(),
+        h.keyframeCount(), static_cast<double>(h.bytes()) / (1024.0 * 1024.0),
+        isReplaying(app) ? ". Play or step to go on from here; an edit starts a new future." : "");
+    ImGui::PushTextWrapPos(0.0f);
     dimText(info);
+    ImGui::PopTextWrapPos();
 }

@@ -53,6 +53,10 @@ int runWindow(const Options& options, char** argv, int argc) {
         return 1;
     }
     setUiScale(app, options.uiScale > 0.0f ? options.uiScale : config.uiScale);
+    app.lightTheme = config.lightTheme;
+    app.labelScale = config.labelScale;
+    app.firstLaunch = !config.existed;
+    if (options.present) setPresentMode(app, true);
     const bool sizeGiven = options.width != 1280 || options.height != 720;
     const int width = sizeGiven ? options.width : config.windowWidth;
     const int height = sizeGiven ? options.height : config.windowHeight;
@@ -64,7 +68,7 @@ int runWindow(const Options& options, char** argv, int argc) {
         if (!ec) iniPath = configDir + "/imgui.ini";
     }
     uiCreateContext(iniPath.empty() ? nullptr : iniPath.c_str());
-    uiApplyScale(app.uiScale);
+    uiApplyLook(app.uiScale, app.labelScale, app.lightTheme);
     WindowGlfw window;
     if (!windowInit(window, width, height, "Collision sandbox", &error)) {
         uiDestroyContext();
@@ -80,6 +84,12 @@ int runWindow(const Options& options, char** argv, int argc) {
     bool first = true;
     double realSeconds = 0.0;
     while (!app.quitRequested && windowNewFrame(window, &realSeconds)) {
+        if (window.closeRequested) { // the close button: asks when there are unsaved edits
+            window.closeRequested = false;
+            requestQuit(app);
+            if (app.quitDialogOpen && app.verbose) std::printf("quit: unsaved edits, asking\n");
+        }
+        app.fullscreen = window.fullscreen;
         ImGui::NewFrame();
         appFrame(app, windowTakeKeyPresses(window), realSeconds, true);
         ImGui::Render();
@@ -97,13 +107,13 @@ int runWindow(const Options& options, char** argv, int argc) {
             windowSetFullscreen(window, !window.fullscreen);
             app.fullscreenRequested = false;
         }
-        if (app.uiScale != uiCurrentScale()) {
-            uiApplyScale(app.uiScale);
-            uiRendererFontsChanged();
-        }
+        // Fonts and theme, only what changed; new fonts go to the UI renderer.
+        if (uiApplyLook(app.uiScale, app.labelScale, app.lightTheme)) uiRendererFontsChanged();
     }
     config.lastScene = app.scenePath;
     config.uiScale = app.uiScale;
+    config.lightTheme = app.lightTheme;
+    config.labelScale = app.labelScale;
     windowSize(window, &config.windowWidth, &config.windowHeight);
     if (!saveAppConfig(configDir, config) && !configDir.empty()) {
         std::fprintf(stderr, "sandbox: cannot save settings in %s\n", configDir.c_str());

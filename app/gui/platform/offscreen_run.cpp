@@ -82,6 +82,20 @@ bool runProgram(const std::vector<std::string>& args) {
     return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
+// The layout of the last frame (SPEC's --layout-json): the scene's rectangle, the world's bounds
+// as drawn, and every window drawn, in image pixels.
+bool writeLayoutJson(const App& app, const std::string& path) {
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    if (!f) {
+        std::fprintf(stderr, "sandbox: cannot write %s\n", path.c_str());
+        return false;
+    }
+    const std::string json = layoutJson(
+        app.camera.viewport(), worldRectOnScreen(app.camera, app.world.bounds), app.shownWindows);
+    const bool ok = std::fputs(json.c_str(), f) >= 0;
+    return std::fclose(f) == 0 && ok;
+}
+
 // Writes the frame rendered last to --screenshot and prints where it is.
 int writeScreenshot(Offscreen& off, const Options& o) {
     if (!writeFrame(off, o.screenshot)) return 1;
@@ -93,10 +107,15 @@ int writeScreenshot(Offscreen& off, const Options& o) {
 
 int screenshot(App& app, Offscreen& off, const Options& o) {
     if (app.lesson.active()) lessonShowPausePoint(app); // the step as the window shows it there
+    // --frames N simulates N frames, as if P had been pressed (the badge then shows no PAUSED).
     for (int i = 0; i < o.frames; ++i) stepSimulation(app);
+    if (o.frames > 0) app.paused = false;
     if (app.show.cost) app.cost.runSweepNow(quickTradeoffSweep(app.scenesDir)); // the chart
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off);
-    return writeScreenshot(off, o);
+    const int code = writeScreenshot(off, o);
+    if (code != 0) return code;
+    if (!o.layoutJson.empty() && !writeLayoutJson(app, o.layoutJson)) return 1;
+    return 0;
 }
 
 // Creates `dir` (and its parents); says why on stderr when it cannot.
@@ -113,6 +132,7 @@ bool makeDirectory(const std::string& dir) {
 int record(App& app, Offscreen& off, const Options& o) {
     if (!makeDirectory(o.record)) return 1;
     for (int i = 0; i < kSettleFrames - 1; ++i) renderFrame(app, off);
+    app.paused = false; // a recording runs the scene
     char name[32];
     for (int i = 0; i < o.frames; ++i) {
         stepSimulation(app);
@@ -199,8 +219,9 @@ int runOffscreen(const Options& options) {
         return 1;
     }
     setUiScale(app, o.uiScale > 0.0f ? o.uiScale : 1.0f);
+    if (o.present) setPresentMode(app, true);
     uiCreateContext(nullptr);
-    uiApplyScale(app.uiScale);
+    uiApplyLook(app.uiScale, app.labelScale, app.lightTheme);
     Offscreen off;
     if (!offscreenInit(off.context, o.width, o.height, &error)) {
         std::fprintf(stderr, "sandbox: %s\n", error.c_str());

@@ -15,11 +15,11 @@
 static_assert(keys::kSpace == GLFW_KEY_SPACE && keys::kMinus == GLFW_KEY_MINUS &&
                   keys::kEqual == GLFW_KEY_EQUAL && keys::kC == GLFW_KEY_C &&
                   keys::kD == GLFW_KEY_D && keys::kF == GLFW_KEY_F && keys::kN == GLFW_KEY_N &&
-                  keys::kP == GLFW_KEY_P && keys::kR == GLFW_KEY_R && keys::kS == GLFW_KEY_S &&
-                  keys::kV == GLFW_KEY_V && keys::kEscape == GLFW_KEY_ESCAPE &&
-                  keys::kTab == GLFW_KEY_TAB && keys::kDelete == GLFW_KEY_DELETE &&
-                  keys::kF1 == GLFW_KEY_F1 && keys::kF11 == GLFW_KEY_F11 &&
-                  keys::kKeypadSubtract == GLFW_KEY_KP_SUBTRACT &&
+                  keys::kP == GLFW_KEY_P && keys::kQ == GLFW_KEY_Q && keys::kR == GLFW_KEY_R &&
+                  keys::kS == GLFW_KEY_S && keys::kV == GLFW_KEY_V &&
+                  keys::kEscape == GLFW_KEY_ESCAPE && keys::kTab == GLFW_KEY_TAB &&
+                  keys::kDelete == GLFW_KEY_DELETE && keys::kF1 == GLFW_KEY_F1 &&
+                  keys::kF11 == GLFW_KEY_F11 && keys::kKeypadSubtract == GLFW_KEY_KP_SUBTRACT &&
                   keys::kKeypadAdd == GLFW_KEY_KP_ADD && keys::k0 == GLFW_KEY_0 &&
                   keys::kEnter == GLFW_KEY_ENTER && keys::kRight == GLFW_KEY_RIGHT &&
                   keys::kLeft == GLFW_KEY_LEFT && keys::kPageUp == GLFW_KEY_PAGE_UP &&
@@ -40,7 +40,7 @@ void onGlfwError(int code, const char* description) {
 void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     auto* w = static_cast<WindowGlfw*>(glfwGetWindowUserPointer(window));
     if (!w || action != GLFW_PRESS) return;
-    w->keyPresses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0});
+    w->keyPresses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0});
 }
 
 } // namespace
@@ -89,7 +89,11 @@ void windowShutdown(WindowGlfw& w) {
 
 bool windowNewFrame(WindowGlfw& w, double* realSeconds) {
     glfwPollEvents();
-    if (glfwWindowShouldClose(w.window)) return false;
+    // The close button asks the app, which may ask the user (unsaved edits): not closed here.
+    if (glfwWindowShouldClose(w.window)) {
+        glfwSetWindowShouldClose(w.window, GLFW_FALSE);
+        w.closeRequested = true;
+    }
     const double now = glfwGetTime();
     if (realSeconds) *realSeconds = now - w.lastTime;
     w.lastTime = now;

@@ -16,12 +16,13 @@ struct WindowGlfw {
     int windowedX = 0, windowedY = 0, windowedWidth = 1280, windowedHeight = 720;
     double lastTime = 0.0;
     std::vector<KeyPress> keyPresses; // since the last windowTakeKeyPresses()
+    bool closeRequested = false;      // the close button was pressed (the app decides)
 };
 
 // Opens the window (ImGui context already created). False with a message on failure.
 bool windowInit(WindowGlfw& w, int width, int height, const char* title, std::string* error);
 void windowShutdown(WindowGlfw& w);
-// Polls events and starts the backends' frame; false when the window should close. Sets
+// Polls events and starts the backends' frame (the close button sets w.closeRequested). Sets
 // `realSeconds` to the time since the previous frame.
 bool windowNewFrame(WindowGlfw& w, double* realSeconds);
 // Swaps buffers.

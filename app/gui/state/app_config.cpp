@@ -43,6 +43,13 @@ AppConfig parseAppConfig(const std::string& text) {
             if (parseNumber(value, s) && s == s) {
                 config.uiScale = std::clamp(s, kMinUiScale, kMaxUiScale);
             }
+        } else if (key == "light_theme") {
+            config.lightTheme = value == "1" || value == "true";
+        } else if (key == "label_scale") {
+            float s = 1.0f;
+            if (parseNumber(value, s) && s == s) {
+                config.labelScale = std::clamp(s, kMinLabelScale, kMaxLabelScale);
+            }
         } else if (key == "window_width") {
             int w = 0;
             if (parseNumber(value, w)) config.windowWidth = std::clamp(w, 320, 16384);
@@ -59,6 +66,8 @@ std::string formatAppConfig(const AppConfig& config) {
     out << "# collision sandbox settings (written on exit)\n";
     out << "last_scene = " << config.lastScene << "\n";
     out << "ui_scale = " << config.uiScale << "\n";
+    out << "light_theme = " << (config.lightTheme ? 1 : 0) << "\n";
+    out << "label_scale = " << config.labelScale << "\n";
     out << "window_width = " << config.windowWidth << "\n";
     out << "window_height = " << config.windowHeight << "\n";
     return out.str();
@@ -78,7 +87,9 @@ AppConfig loadAppConfig(const std::string& dir) {
     if (!in) return {};
     std::stringstream text;
     text << in.rdbuf();
-    return parseAppConfig(text.str());
+    AppConfig config = parseAppConfig(text.str());
+    config.existed = true;
+    return config;
 }
 
 bool saveAppConfig(const std::string& dir, const AppConfig& config) {

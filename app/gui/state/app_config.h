@@ -6,14 +6,19 @@
 #include <string>
 
 struct AppConfig {
-    std::string lastScene;
+    std::string lastScene; // an absolute path
     float uiScale = 1.0f;
+    bool lightTheme = false;
+    float labelScale = 1.0f; // scene labels relative to the UI font
+    bool existed = false;    // loaded from a file (false: the first launch)
     int windowWidth = 1280;
     int windowHeight = 720;
 };
 
 constexpr float kMinUiScale = 0.75f;
 constexpr float kMaxUiScale = 3.0f;
+constexpr float kMinLabelScale = 0.75f;
+constexpr float kMaxLabelScale = 2.5f;
 
 // Parses the file's text; unknown keys and bad values are ignored (a hand-edited file never
 // stops the app from starting). Values are clamped to sane ranges.

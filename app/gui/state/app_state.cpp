@@ -1,10 +1,16 @@
 #include "app_state.h"
 
 #include "app_config.h"
+#include "classroom.h"
+#include "overlays.h"
 #include "placement.h"
+#include "save_naming.h"
+#include "text_format.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 
 namespace {
 
@@ -41,8 +47,20 @@ void setScene(App& app, const Scene& scene, const std::string& path) {
     app.scenePath = path;
     app.selected = -1;
     app.autoFit = true;
+    app.paused = true;
+    app.blocksEdited = false;
     restartRun(app);
 }
+
+namespace {
+
+std::string workingDirectory() {
+    std::error_code ec;
+    const std::filesystem::path cwd = std::filesystem::current_path(ec);
+    return ec ? std::string() : cwd.string();
+}
+
+} // namespace
 
 bool loadScene(App& app, const std::string& path) {
     const SceneResult result = loadSceneFile(path);
@@ -51,14 +69,79 @@ bool loadScene(App& app, const std::string& path) {
         return false;
     }
     closeLesson(app);
-    setScene(app, *result.scene, path);
+    // The absolute path: the settings remember it, and it must work from any directory.
+    const std::string cwd = workingDirectory();
+    setScene(app, *result.scene, cwd.empty() ? path : absoluteScenePath(path, cwd));
     app.error.clear();
     app.note.clear();
     return true;
 }
 
 void resetScene(App& app) {
+    const WorldSettings chosen = app.world.settings;
     restartRun(app);
+    app.world.settings = chosen;
+}
+
+void resetToFile(App& app) {
+    restartRun(app);
+}
+
+void noteEdit(App& app, bool blocks) {
+    if (blocks) app.blocksEdited = true;
+    if (app.history.empty()) return;
+    const bool replaying = isReplaying(app);
+    app.history.editedAt(app.world);
+    app.telemetry.truncateAfter(app.world.time);
+    if (replaying) {
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      "Edited at t = %.2f s during the replay: a new future starts here (the "
+                      "recorded one after it is dropped).",
+                      app.world.time);
+        app.note = text;
+    }
+}
+
+bool unsavedEdits(const App& app) {
+    return hasUnsavedEdits(app.blocksEdited, app.scene.settings, app.world.settings);
+}
+
+void requestQuit(App& app) {
+    if (app.quitDialogOpen || !unsavedEdits(app)) {
+        app.quitRequested = true;
+        return;
+    }
+    app.quitDialogOpen = true;
+}
+
+void setPresentMode(App& app, bool on) {
+    app.presentMode = on;
+    app.autoFit = true; // the scene's rectangle changes: fit the world into it again
+}
+
+EscapeEffect pressEscape(App& app) {
+    const EscapeEffect e = escapeEffect(app.quitDialogOpen || app.saveDialogOpen, app.helpOpen,
+                                        app.presentMode, app.fullscreen);
+    switch (e) {
+    case EscapeEffect::CloseDialog:
+        app.quitDialogOpen = false;
+        app.saveDialogOpen = false;
+        break;
+    case EscapeEffect::CloseHelp:
+        app.helpOpen = false;
+        break;
+    case EscapeEffect::LeavePresent:
+        setPresentMode(app, false);
+        break;
+    case EscapeEffect::LeaveFullscreen:
+        app.fullscreenRequested = true;
+        break;
+    case EscapeEffect::Nothing:
+        app.note = "Esc closes windows and leaves present mode or fullscreen; Ctrl+Q quits.";
+        break;
+    }
+    return e;
 }
 
 void stepSimulation(App& app) {
@@ -131,17 +214,22 @@ void cycleMethod(App& app) {
     const int count = static_cast<int>(Method::Count);
     const int next = (static_cast<int>(app.world.settings.method) + 1) % count;
     app.world.settings.method = static_cast<Method>(next);
+    noteEdit(app, false);
 }
 
 Scene currentScene(const App& app) {
     Scene original = app.scene;
     original.blocks.clear();
-    for (const BlockLabel& label : app.labels) {
+    for (std::size_t i = 0; i < app.labels.size(); ++i) {
         BlockDef def;
-        def.name = label.name;
-        def.color = label.color;
+        def.name = i < app.world.blocks.size()
+                       ? nameWithMass(app.labels[i].name, app.world.blocks[i].mass)
+                       : app.labels[i].name;
+        def.color = app.labels[i].color;
         original.blocks.push_back(def);
     }
+    original.description =
+        savedDescription(app.scene.description, app.scene.settings, app.world.settings);
     return sceneFromWorld(app.world, original);
 }
 
@@ -150,15 +238,52 @@ bool saveCurrentScene(App& app, const std::string& path) {
         app.error = "Save: no file name given";
         return false;
     }
+    const std::string cwd = workingDirectory();
+    const std::string where = cwd.empty() ? path : absoluteScenePath(path, cwd);
+    const Scene scene = currentScene(app);
     std::string error;
-    if (!saveSceneFile(currentScene(app), path, &error)) {
-        app.error = "Save failed: " + (error.empty() ? path : error);
+    if (!saveSceneFile(scene, where, &error)) {
+        app.error = "Save failed: " + (error.empty() ? where : error);
         return false;
     }
+    // The saved file is now the current scene's: the settings remember it, reset to file and R
+    // go back to it, and there is nothing unsaved.
+    app.scene = scene;
+    app.scenePath = where;
+    app.labels.clear();
+    for (const BlockDef& def : scene.blocks) app.labels.push_back({def.name, def.color});
+    app.blocksEdited = false;
     app.error.clear();
-    app.note = "Saved " + path;
-    app.savedFile = path;
+    app.note = "Saved " + where;
+    app.savedFile = where;
     return true;
+}
+
+std::string suggestedSavePath(const App& app) {
+    namespace fs = std::filesystem;
+    std::string dir = workingDirectory();
+    if (!app.scenePath.empty()) {
+        const fs::path sceneDir = fs::path(app.scenePath).parent_path();
+        std::error_code ec;
+        const bool shipped =
+            !app.scenesDir.empty() && fs::equivalent(sceneDir, fs::path(app.scenesDir), ec) && !ec;
+        if (!shipped && !sceneDir.empty()) dir = sceneDir.string();
+    }
+    return suggestSavePath(app.scene.name, dir, [](const std::string& p) {
+        std::error_code ec;
+        return fs::exists(p, ec);
+    });
+}
+
+bool isFloating(const App& app, const std::string& title) {
+    return std::find(app.floatingWindows.begin(), app.floatingWindows.end(), title) !=
+           app.floatingWindows.end();
+}
+
+void setFloating(App& app, const std::string& title, bool floating) {
+    auto& f = app.floatingWindows;
+    f.erase(std::remove(f.begin(), f.end(), title), f.end());
+    if (floating) f.push_back(title);
 }
 
 int addBlockAt(App& app, Vec2 at) {
@@ -177,6 +302,7 @@ int addBlockAt(App& app, Vec2 at) {
     app.labels.push_back({"", ""});
     app.labels.back().name = "new " + std::to_string(app.world.blocks.size());
     app.selected = static_cast<int>(app.world.blocks.size()) - 1;
+    noteEdit(app, true);
     return app.selected;
 }
 
@@ -187,6 +313,7 @@ void deleteSelected(App& app) {
     if (i < static_cast<int>(app.labels.size())) app.labels.erase(app.labels.begin() + i);
     app.selected = -1;
     app.mouse = MouseTool{};
+    noteEdit(app, true);
 }
 
 void applyShowSet(App& app, const ShowSet& show) {
@@ -203,7 +330,12 @@ void setUiScale(App& app, float scale) {
 std::string blockDisplayName(const App& app, int index) {
     if (index >= 0 && index < static_cast<int>(app.labels.size()) &&
         !app.labels[static_cast<std::size_t>(index)].name.empty()) {
-        return app.labels[static_cast<std::size_t>(index)].name;
+        const std::string& name = app.labels[static_cast<std::size_t>(index)].name;
+        // A name that states a mass ("m1 = 1 kg") states the current one.
+        if (index < static_cast<int>(app.world.blocks.size())) {
+            return nameWithMass(name, app.world.blocks[static_cast<std::size_t>(index)].mass);
+        }
+        return name;
     }
     return "#" + std::to_string(index);
 }
@@ -212,19 +344,33 @@ double panelWidth(float uiScale, double displayWidth) {
     return std::min(350.0 * static_cast<double>(uiScale), displayWidth * 0.45);
 }
 
+Layout computeAppLayout(const App& app, double displayWidth, double displayHeight) {
+    LayoutInput in;
+    in.displayWidth = displayWidth;
+    in.displayHeight = displayHeight;
+    in.uiScale = app.uiScale;
+    if (app.presentMode) return computeLayout(in); // the scene alone
+    in.panelWidth = app.uiVisible ? panelWidth(app.uiScale, displayWidth) : 0.0;
+    // A lesson's caption bar over the top of the scene (and the column).
+    if (app.lesson.active()) in.topInset = std::min(app.captionHeight, displayHeight * 0.5);
+    for (const OverlayInfo& row : kOverlays) {
+        if (!row.title || !(app.show.*row.flag) || isFloating(app, row.title)) continue;
+        in.windows.push_back({row.title, row.place.side, row.place.minExtent, row.place.weight,
+                              row.place.crossExtent});
+    }
+    return computeLayout(in);
+}
+
 ScreenRect sceneViewport(const App& app, double displayWidth, double displayHeight) {
-    const double top = app.lesson.active() ? std::min(app.captionHeight, displayHeight * 0.5) : 0.0;
-    const double height = std::max(1.0, displayHeight - top);
-    if (!app.uiVisible) return {0.0, top, displayWidth, height};
-    const double panel = panelWidth(app.uiScale, displayWidth);
-    return {panel, top, std::max(1.0, displayWidth - panel), height};
+    return computeAppLayout(app, displayWidth, displayHeight).scene;
 }
 
 void updateCamera(App& app, double displayWidth, double displayHeight) {
-    app.camera.setViewport(sceneViewport(app, displayWidth, displayHeight));
+    app.layout = computeAppLayout(app, displayWidth, displayHeight);
+    app.camera.setViewport(app.layout.scene);
     if (app.autoFit) {
         app.camera.fit(app.fitBounds ? *app.fitBounds : app.world.bounds,
-                       36.0 * static_cast<double>(app.uiScale));
+                       kFitMarginPx * static_cast<double>(app.uiScale));
     }
 }
 
@@ -239,6 +385,7 @@ void setBlockKind(App& app, int index, BodyKind kind) {
         b.mass = kInfiniteMass;
         if (kind == BodyKind::Static) b.velocity = Vec2{};
     }
+    noteEdit(app, true);
 }
 
 bool setBlockSize(App& app, int index, Vec2 size) {
@@ -255,6 +402,7 @@ bool setBlockSize(App& app, int index, Vec2 size) {
     }
     if (overlapsAnyBlock(app.world, index, b.position, size)) return false;
     b.size = size;
+    noteEdit(app, true);
     return true;
 }
 

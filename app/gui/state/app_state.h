@@ -5,7 +5,9 @@
 
 #include "app_log.h"
 #include "camera.h"
+#include "classroom.h"
 #include "cost.h"
+#include "dock_layout.h"
 #include "fixed_step.h"
 #include "lesson_session.h"
 #include "mouse_tool.h"
@@ -59,16 +61,6 @@ struct UiState {
     int inspectorPicked = 0;          // the inspector's collision: 0 the newest, 1 the one before
     std::string inspectorLoggedTitle; // --verbose prints the formula once per collision shown
     int panelFollowedSelection = -2;  // the selection the "Selected block" header last followed
-    // What each overlay window was last placed for (overlays.h); a change places it again.
-    struct PlacedFor {
-        float uiScale = 0.0f;
-        double viewportWidth = 0.0, viewportHeight = 0.0;
-        bool operator==(const PlacedFor& o) const {
-            return uiScale == o.uiScale && viewportWidth == o.viewportWidth &&
-                   viewportHeight == o.viewportHeight;
-        }
-    };
-    std::array<PlacedFor, kOverlayCount> placedFor{};
 };
 
 // The app: the current Run (its base, so app.world is the run's world; restart and scrub assign
@@ -82,8 +74,9 @@ struct App : Run {
     // The live state (the world is the Run's).
     std::vector<BlockLabel> labels;
     int selected = -1;
-    // Run control.
-    bool paused = false;
+    // Run control. Scenes open paused at t = 0 (a collision at 0.625 s is over before anyone
+    // looks); the scene view says "P to play".
+    bool paused = true;
     bool slowMotion = false;
     double timeScale = 1.0;
     FixedStepClock clock;
@@ -96,6 +89,26 @@ struct App : Run {
     bool uiVisible = true;
     bool helpOpen = false;
     float uiScale = 1.0f;
+    // Present mode (Tab): the scene and a one-line caption only; every panel and window hidden,
+    // and back as they were when it is left.
+    bool presentMode = false;
+    bool fullscreen = false;  // the window is full screen (the window backend keeps it true)
+    bool firstLaunch = false; // no settings file yet: the start hint names the first keys
+    bool lightTheme = false;  // View section; persisted
+    float labelScale = 1.0f;  // size of the scene's labels relative to the UI font; persisted
+    // This frame's layout: the panel, the docked overlay windows and the scene's rectangle.
+    Layout layout;
+    // Overlay windows pulled out of the layout to float (by title); put back with "Dock".
+    std::vector<std::string> floatingWindows;
+    // Every window drawn this frame with its rectangle (for --layout-json), in drawing order.
+    std::vector<DockedWindow> shownWindows;
+    // Edits of blocks (drag, fling, add, delete, the panel's fields) since the last load or save;
+    // quitting asks when there are any, or when the settings differ from the scene's.
+    bool blocksEdited = false;
+    // Dialogs: quit with unsaved edits, and Save (a name, and whether to overwrite).
+    bool quitDialogOpen = false;
+    bool saveDialogOpen = false;
+    std::string saveDialogPath;
     MouseTool mouse;
     // The window's own pace (real time between displayed frames), for Statistics; zero offscreen.
     double frameMsSmoothed = 0.0; // ms, exponential average over about 30 frames
@@ -139,9 +152,16 @@ struct App : Run {
 
 // Width of the controls panel in pixels for a UI scale and window width.
 double panelWidth(float uiScale, double displayWidth);
-// The part of the window the scene is drawn into (right of the panel, or all when hidden).
+// Pixels (at UI scale 1) between the world's bounds and the scene's rectangle when the camera
+// fits the world: room for the axis numbers and, at the top, the status badge or caption.
+constexpr double kFitMarginPx = 36.0;
+// This frame's layout: the panel (unless hidden), the shown overlay windows that are not floating
+// docked around the scene (none in present mode), and the scene's rectangle.
+Layout computeAppLayout(const App& app, double displayWidth, double displayHeight);
+// The part of the window the scene is drawn into (computeAppLayout's scene).
 ScreenRect sceneViewport(const App& app, double displayWidth, double displayHeight);
-// Gives the camera this frame's viewport; refits the world while app.autoFit holds.
+// Lays out the frame (app.layout), gives the camera the scene's rectangle and refits the world
+// while app.autoFit holds.
 void updateCamera(App& app, double displayWidth, double displayHeight);
 // Changes the kind of block `index` (dynamic blocks get mass 1 kg when they had none).
 void setBlockKind(App& app, int index, BodyKind kind);
@@ -153,8 +173,23 @@ bool setBlockSize(App& app, int index, Vec2 size);
 bool loadScene(App& app, const std::string& path);
 // Uses an already parsed scene (tests, and the first scene when none can be loaded).
 void setScene(App& app, const Scene& scene, const std::string& path);
-// Back to the scene as loaded (settings included); trails cleared.
+// R: the blocks and time back to the scene as loaded; the chosen method, bounciness, gravity,
+// frame rate and substeps stay (comparing methods is S then R). Trails cleared.
 void resetScene(App& app);
+// Shift+R, "reset to file": everything back to the scene as loaded, settings included.
+void resetToFile(App& app);
+// The user changed the world (`blocks`: a block; otherwise a setting) between steps. While the
+// timeline replays, this starts a new future from here, and the note says so.
+void noteEdit(App& app, bool blocks);
+// True when quitting would lose edits (see App::blocksEdited).
+bool unsavedEdits(const App& app);
+// Ctrl+Q or the window's close button: quits, or opens the quit dialog when there are unsaved
+// edits (a second request while it is open quits).
+void requestQuit(App& app);
+// Present mode on or off: every panel and window hidden, and back as they were.
+void setPresentMode(App& app, bool on);
+// Esc (see escapeEffect): returns what it did.
+EscapeEffect pressEscape(App& app);
 // One simulation frame of settings.dt; updates stats, totals and trails.
 void stepSimulation(App& app);
 // Advances the fixed-step clock by `realSeconds` and runs the due frames (none while paused or
@@ -171,8 +206,15 @@ bool isReplaying(const App& app);
 void cycleMethod(App& app);
 // The current state as a format v1 scene (names and colours kept).
 Scene currentScene(const App& app);
-// Saves currentScene() to `path`; sets app.note or app.error.
+// Saves currentScene() to `path` (made absolute), which then is the current scene's file (what
+// the settings remember; reset to file goes back to it); sets app.note or app.error.
 bool saveCurrentScene(App& app, const std::string& path);
+// The path the Save dialog offers: from the scene's name, in the scene's own directory unless
+// that is the shipped scenes' (then the working directory), never an existing file.
+std::string suggestedSavePath(const App& app);
+// Is `title` an overlay window pulled out of the layout to float?
+bool isFloating(const App& app, const std::string& title);
+void setFloating(App& app, const std::string& title, bool floating);
 // Adds a 1 m dynamic block near `at` without overlap; returns its index or -1 (no room).
 int addBlockAt(App& app, Vec2 at);
 // Removes the selected block (if any).

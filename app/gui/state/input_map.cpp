@@ -3,7 +3,10 @@
 const std::vector<KeyBinding>& keyBindings() {
     static const std::vector<KeyBinding> bindings{
         {keys::kR, false, Action::Reset, "R",
-         "Reset to the scene as loaded (in a lesson: restart the step)"},
+         "Reset blocks and time (keeps method, C, g, frame rate, substeps; in a lesson: restart "
+         "the step)"},
+        {keys::kR, false, Action::ResetToFile, "Shift+R", "Reset to file: everything as loaded",
+         true, true},
         {keys::kP, false, Action::TogglePause, "P", "Pause / resume"},
         {keys::kSpace, false, Action::ToggleSlowMotion, "Space", "Slow motion (5 frames/s)"},
         {keys::kD, false, Action::ToggleTrails, "D", "Draw trajectories on / off"},
@@ -12,7 +15,8 @@ const std::vector<KeyBinding>& keyBindings() {
         {keys::kN, false, Action::StepOnce, "N", "Single step (pauses)"},
         {keys::kV, false, Action::ToggleVectors, "V", "Velocity arrows on / off"},
         {keys::kF, false, Action::FitView, "F", "Fit the world into the view"},
-        {keys::kTab, false, Action::ToggleUi, "Tab", "Hide / show the panels"},
+        {keys::kTab, false, Action::TogglePresent, "Tab",
+         "Present mode: only the scene and a caption (again: all back)"},
         {keys::kF11, false, Action::ToggleFullscreen, "F11", "Fullscreen"},
         {keys::kF1, false, Action::ToggleHelp, "F1", "This help"},
         {keys::kEqual, true, Action::UiScaleUp, "Ctrl+=", "Larger UI (projector)"},
@@ -21,7 +25,9 @@ const std::vector<KeyBinding>& keyBindings() {
         {keys::kKeypadSubtract, true, Action::UiScaleDown, "Ctrl+Keypad -", "Smaller UI"},
         {keys::kS, true, Action::Save, "Ctrl+S", "Save the current state as a scene"},
         {keys::kDelete, false, Action::DeleteSelected, "Delete", "Remove the selected block"},
-        {keys::kEscape, false, Action::Quit, "Esc", "Quit"},
+        {keys::kEscape, false, Action::Escape, "Esc",
+         "Close Help or a dialog; leave present mode or fullscreen"},
+        {keys::kQ, true, Action::Quit, "Ctrl+Q", "Quit (asks when there are unsaved edits)"},
         {keys::kPageDown, false, Action::LessonNext, "PageDown",
          "Lesson: answer, then the next step"},
         {keys::kRight, false, Action::LessonNext, "Right", "Lesson: answer, then the next step"},
@@ -53,10 +59,11 @@ int digitOfKey(int key) {
     return -1;
 }
 
-Action actionForKey(int key, bool ctrl) {
+Action actionForKey(int key, bool ctrl, bool shift) {
     for (const KeyBinding& b : keyBindings()) {
-        if (b.key == key && b.ctrl == ctrl) return b.action;
+        if (b.key == key && b.ctrl == ctrl && b.shift == shift) return b.action;
     }
+    if (shift) return actionForKey(key, ctrl, false);
     return Action::None;
 }
 
@@ -66,6 +73,8 @@ const char* actionName(Action action) {
         return "none";
     case Action::Reset:
         return "reset";
+    case Action::ResetToFile:
+        return "reset-to-file";
     case Action::TogglePause:
         return "pause";
     case Action::ToggleSlowMotion:
@@ -82,8 +91,8 @@ const char* actionName(Action action) {
         return "vectors";
     case Action::FitView:
         return "fit-view";
-    case Action::ToggleUi:
-        return "toggle-ui";
+    case Action::TogglePresent:
+        return "present";
     case Action::ToggleFullscreen:
         return "fullscreen";
     case Action::ToggleHelp:
@@ -94,6 +103,8 @@ const char* actionName(Action action) {
         return "ui-scale-down";
     case Action::DeleteSelected:
         return "delete";
+    case Action::Escape:
+        return "escape";
     case Action::Quit:
         return "quit";
     case Action::Save:

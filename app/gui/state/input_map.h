@@ -15,6 +15,7 @@ constexpr int kD = 68;
 constexpr int kF = 70;
 constexpr int kN = 78;
 constexpr int kP = 80;
+constexpr int kQ = 81;
 constexpr int kR = 82;
 constexpr int kS = 83;
 constexpr int kV = 86;
@@ -39,7 +40,8 @@ constexpr int kKeypadEnter = 335;
 
 enum class Action {
     None,
-    Reset,            // R: back to the scene as loaded
+    Reset,            // R: blocks and time back to the scene as loaded; settings kept
+    ResetToFile,      // Shift+R: everything back to the scene as loaded
     TogglePause,      // P
     ToggleSlowMotion, // Space: 5 simulation frames per second, as in the lecture's demo
     ToggleTrails,     // D: draw trajectories
@@ -48,14 +50,15 @@ enum class Action {
     StepOnce,         // N: one frame (pauses)
     ToggleVectors,    // V: velocity arrows
     FitView,          // F: show the whole world
-    ToggleUi,         // Tab
+    TogglePresent,    // Tab: present mode (the scene and a caption only)
     ToggleFullscreen, // F11
     ToggleHelp,       // F1
     UiScaleUp,        // Ctrl+=
     UiScaleDown,      // Ctrl+-
     DeleteSelected,   // Delete
-    Quit,             // Esc
-    Save,             // Ctrl+S: save the current state (to the path in the Save field)
+    Escape,           // Esc: closes a dialog or Help, leaves present mode or fullscreen
+    Quit,             // Ctrl+Q (asks when there are unsaved edits)
+    Save,             // Ctrl+S: save the current state as a scene (asks for a name)
     LessonNext,       // PageDown, Right: the answer, or the next step of the lesson
     LessonPrevious,   // PageUp, Left
     LessonFirst,      // Home
@@ -69,6 +72,7 @@ enum class Action {
 struct KeyPress {
     int key;
     bool ctrl;
+    bool shift = false;
 };
 
 struct KeyBinding {
@@ -78,12 +82,14 @@ struct KeyBinding {
     const char* keyName;     // as shown in the Help window
     const char* description; // as shown in the Help window
     bool listed = true;      // in the Help window (one row stands for the ten digit keys)
+    bool shift = false;
 };
 
 // Every binding, in the order the Help window lists them.
 const std::vector<KeyBinding>& keyBindings();
-// The action for `key` pressed with (or without) Ctrl; Action::None when unbound.
-Action actionForKey(int key, bool ctrl);
+// The action for `key` pressed with (or without) Ctrl and Shift; Action::None when unbound. A key
+// bound without Shift also answers with Shift held when it has no Shift binding of its own.
+Action actionForKey(int key, bool ctrl, bool shift = false);
 // The digit a key types (0-9, top row or keypad); -1 for other keys.
 int digitOfKey(int key);
 // A short name for logs ("reset", "pause", ...).

@@ -79,11 +79,13 @@ void mouseRelease(App& app, MouseButton button, Vec2 screen) {
         Block& b = app.world.blocks[static_cast<std::size_t>(m.block)];
         const auto spot = placeWithoutOverlap(app.world, m.block, b.position, b.size);
         b.position = spot ? *spot : m.startPosition;
+        if (b.position != m.startPosition) noteEdit(app, true);
     } else if (button == MouseButton::Right && m.mode == MouseTool::Mode::Flinging &&
                validBlock(app, m.block)) {
         const Vec2 v = m.flingVelocity();
         if (std::isfinite(v.x) && std::isfinite(v.y)) {
             app.world.blocks[static_cast<std::size_t>(m.block)].velocity = v;
+            noteEdit(app, true);
         }
     } else if (!(button == MouseButton::Middle && m.mode == MouseTool::Mode::Panning)) {
         return; // a release that ends nothing in progress

@@ -101,6 +101,11 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
             },
             "S"));
     app.add_flag("--verbose", o.verbose, "Print state changes (pause, method, sliders) to stdout");
+    app.add_flag("--present", o.present,
+                 "Start in present mode: only the scene and a one-line caption (Tab toggles)");
+    app.add_option("--layout-json", o.layoutJson,
+                   "Offscreen (with --screenshot): write the scene's, the world's and every "
+                   "window's rectangle in image pixels to this JSON file");
     app.add_option("--lesson", o.lesson,
                    "Open a lesson: a shipped lesson's name (lecture3) or a lesson file");
     app.add_option("--step", o.step, "Start the lesson at step N (1 is the first)")
@@ -117,6 +122,9 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
             std::string error;
             if (!parseShowList(show, o.show, &error)) throw CLI::ValidationError("--show", error);
             o.showGiven = true;
+        }
+        if (!o.layoutJson.empty() && o.screenshot.empty()) {
+            throw CLI::ValidationError("--layout-json", "needs --screenshot FILE");
         }
         if (!o.recordSteps.empty() && o.lesson.empty() && o.scene.empty()) {
             throw CLI::ValidationError("--record-steps", "needs a lesson (--lesson NAME)");

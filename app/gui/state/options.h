@@ -1,6 +1,7 @@
 // The command line shared by `sandbox` and `sandbox-offscreen` (SPEC's public contract):
 //   sandbox [SCENE] [--screenshot FILE] [--frames N] [--size WxH] [--show LIST]
-//           [--record DIR] [--benchmark-frames N] [--ui-scale S] [--verbose]
+//           [--record DIR] [--benchmark-frames N] [--ui-scale S] [--verbose] [--present]
+//           [--layout-json FILE]
 #pragma once
 
 #include "overlays.h"
@@ -32,6 +33,8 @@ struct Options {
     int benchmarkFrames = 0; // offscreen: render this many frames and print ms per frame
     float uiScale = 0.0f;    // 0: the saved setting (window) or 1 (offscreen)
     bool verbose = false;    // print state changes (pause, method, sliders...) to stdout
+    bool present = false;    // start in present mode: the scene and a caption, no panel or window
+    std::string layoutJson;  // offscreen: write the layout (scene, world, windows) here, in pixels
     std::string lesson;      // --lesson NAME or file (docs/lesson-format.md)
     int step = 0;            // --step N (1-based) of the lesson; 0: the first
     std::string recordSteps; // offscreen: one PNG per lesson step into this directory

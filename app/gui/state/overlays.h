@@ -12,54 +12,47 @@
 //   label    the checkbox's label; tooltip the checkbox's tooltip
 //   on       shown by default (before a scene or --show chooses)
 //   title    the window's title, or nullptr for what is drawn over the scene only
-//   place    where the window goes at first use (OverlayPlacement, in parentheses)
+//   place    where the window docks: its side of the scene and its share (DockWish, in
+//            parentheses; sizes in px at UI scale 1): the layout (dock_layout.h) docks every
+//            shown window, the scene takes the rest
 //   draw     void draw(App&), defined in overlays/ (the ImGui layer; this header only names it);
 //            drawnByTheSceneRenderer when the scene renderer draws it (trails, arrows)
 // The draw function of a row with a title draws the window's contents (the window is open);
 // one without a title draws over the scene.
 #pragma once
 
-#include <cstddef>
+#include "dock_layout.h"
 
-// Where an overlay window goes at first use: a corner of the scene viewport (anchor 0..1 in x and
-// y, e.g. (1, 0) top-right) and its size as a fraction of the viewport, capped in pixels at UI
-// scale 1 (scaled by the UI scale).
-struct OverlayPlacement {
-    float anchorX = 1.0f, anchorY = 0.0f;
-    float widthFraction = 0.4f, heightFraction = 0.5f;
-    float maxWidth = 480.0f, maxHeight = 480.0f; // px at UI scale 1
-};
+#include <cstddef>
 
 // clang-format off
 #define SANDBOX_OVERLAYS(X)                                                                        \
     X(trails, "trails", "trails (D)", "Trajectories fading with age; C clears them",               \
-      false, nullptr, (OverlayPlacement{}), drawnByTheSceneRenderer)                               \
+      false, nullptr, (DockWish{}), drawnByTheSceneRenderer)                                       \
     X(vectors, "vectors", "arrows (V)", "Velocity (thin) and momentum p = m·v (wide) arrows",      \
-      true, nullptr, (OverlayPlacement{}), drawnByTheSceneRenderer)                                \
+      true, nullptr, (DockWish{}), drawnByTheSceneRenderer)                                        \
     X(plots, "plots", "plots", "Velocity, momentum and energy against time",                       \
-      false, "Plots", (OverlayPlacement{1.0f, 0.0f, 0.42f, 0.52f, 440.0f, 520.0f}),                \
+      false, "Plots", (DockWish{DockSide::Right, 240.0, 3.0, 400.0}),                              \
       drawPlotsOverlay)                                                                            \
     X(inspector, "inspector", "inspector", "The last collisions with the lecture's formula filled in", \
-      false, "Collision inspector", (OverlayPlacement{1.0f, 1.0f, 0.46f, 0.44f, 460.0f, 330.0f}), \
+      false, "Collision inspector", (DockWish{DockSide::Right, 200.0, 2.0, 430.0}),                \
       drawInspectorOverlay)                                                                        \
-    /* The marker with u over the scene, and the momenta window: left, between side by side  */   \
-    /* (top) and the timeline (bottom).                                                        */   \
+    /* The marker with u over the scene, and the momenta window (square: the bottom strip). */     \
     X(com, "com", "centre of mass", "Centre of mass with its velocity u, and the momenta diagram", \
-      false, "Momenta", (OverlayPlacement{0.0f, 0.5f, 0.3f, 0.42f, 300.0f, 300.0f}),              \
+      false, "Momenta", (DockWish{DockSide::Bottom, 170.0, 1.0, 175.0}),                           \
       drawComOverlay)                                                                              \
     X(poi, "poi", "impact point", "Point of impact t = a/b of the watched block's last collision", \
-      false, nullptr, (OverlayPlacement{}), drawPoiOverlay)                                        \
-    /* Leaves room for the plots at the top right. */                                              \
+      false, nullptr, (DockWish{}), drawPoiOverlay)                                                \
+    /* A wide table: the bottom strip. */                                                          \
     X(sideBySide, "sidebyside", "3 methods", "The three methods at once: outlines and statistics", \
-      false, "Methods side by side", (OverlayPlacement{0.0f, 0.0f, 0.55f, 0.3f, 600.0f, 170.0f}), \
+      false, "Methods side by side", (DockWish{DockSide::Bottom, 420.0, 2.0, 185.0}),              \
       drawSideBySideOverlay)                                                                       \
     X(timeline, "timeline", "timeline", "Scrub back through the last 60 s and replay",             \
-      false, "Timeline", (OverlayPlacement{0.0f, 1.0f, 0.52f, 0.2f, 560.0f, 112.0f}),              \
+      false, "Timeline", (DockWish{DockSide::Bottom, 260.0, 1.0, 110.0}),                          \
       drawTimelineOverlay)                                                                         \
-    /* Centred, and no bigger than the chart needs: an overlay this size covers much of the    */  \
-    /* scene, and every covered pixel is blended again on a software rasteriser.               */  \
+    /* The chart needs height: the right column, under the plots and the inspector. */             \
     X(cost, "cost", "cost", "Cost per step under each method and the speed-vs-accuracy chart",     \
-      false, "Speed versus accuracy", (OverlayPlacement{0.5f, 0.5f, 0.6f, 0.62f, 540.0f, 430.0f}), \
+      false, "Speed versus accuracy", (DockWish{DockSide::Right, 200.0, 1.0, 400.0}),              \
       drawCostOverlay)
 // clang-format on
 
@@ -77,7 +70,7 @@ struct OverlayInfo {
     const char* label;
     const char* tooltip;
     const char* title; // nullptr: drawn over the scene, no window
-    OverlayPlacement place;
+    DockWish place;
 };
 
 // The rows' indices: OverlayId::plots, ...

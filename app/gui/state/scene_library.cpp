@@ -1,7 +1,10 @@
 #include "scene_library.h"
 
+#include "scene.h"
+
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <system_error>
 
 namespace fs = std::filesystem;
@@ -50,17 +53,36 @@ std::string findDataDirectory(const std::string& exeDir, const std::string& buil
 std::vector<SceneEntry> listScenes(const std::string& dir) {
     std::vector<SceneEntry> entries;
     if (dir.empty()) return entries;
+    std::vector<std::string> order; // file names in the lecture's order
+    std::ifstream orderFile(fs::path(dir) / kSceneOrderFile);
+    for (std::string line; std::getline(orderFile, line);) {
+        while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+        if (!line.empty() && line[0] != '#') order.push_back(line);
+    }
+    std::vector<std::size_t> rank;
     std::error_code ec;
     for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
         const fs::path& p = it->path();
         if (p.extension() != ".json" || !isFile(p)) continue;
-        std::string title = p.stem().string();
-        std::replace(title.begin(), title.end(), '_', ' ');
+        const SceneResult scene = loadSceneFile(p.string());
+        std::string title =
+            scene.scene && !scene.scene->name.empty() ? scene.scene->name : p.stem().string();
+        if (!scene.scene) std::replace(title.begin(), title.end(), '_', ' ');
         entries.push_back({p.string(), title});
+        const auto at = std::find(order.begin(), order.end(), p.filename().string());
+        rank.push_back(static_cast<std::size_t>(at - order.begin()));
     }
-    std::sort(entries.begin(), entries.end(),
-              [](const SceneEntry& a, const SceneEntry& b) { return a.path < b.path; });
-    return entries;
+    std::vector<std::size_t> index(entries.size());
+    for (std::size_t i = 0; i < index.size(); ++i) index[i] = i;
+    std::sort(index.begin(), index.end(), [&](std::size_t a, std::size_t b) {
+        if (rank[a] != rank[b]) return rank[a] < rank[b];
+        if (entries[a].title != entries[b].title) return entries[a].title < entries[b].title;
+        return entries[a].path < entries[b].path;
+    });
+    std::vector<SceneEntry> sorted;
+    sorted.reserve(entries.size());
+    for (std::size_t i : index) sorted.push_back(entries[i]);
+    return sorted;
 }
 
 std::string resolveScenePath(const std::string& arg, const std::string& scenesDir) {

@@ -7,8 +7,11 @@
 
 struct SceneEntry {
     std::string path;  // full path of the .json file
-    std::string title; // the file name without ".json", underscores as spaces
+    std::string title; // the scene's name (the file name, underscores as spaces, if it has none)
 };
+
+// The file in a scenes directory that lists its scenes in the lecture's order.
+constexpr const char* kSceneOrderFile = "lecture_order.txt";
 
 // The directory of the running executable ("" when unknown).
 std::string executableDirectory();
@@ -21,7 +24,8 @@ std::string findScenesDirectory(const std::string& exeDir, const std::string& bu
 std::string findDataDirectory(const std::string& exeDir, const std::string& builtInDir,
                               const std::string& folder);
 
-// The .json files of `dir`, sorted by file name.
+// The .json files of `dir`: first those kSceneOrderFile lists, in its order, then the others by
+// title.
 std::vector<SceneEntry> listScenes(const std::string& dir);
 
 // The file `arg` names: `arg` itself when it exists, else `scenesDir`/`arg`, else

@@ -3,28 +3,6 @@
 #include <cmath>
 #include <cstdio>
 
-std::string formatNumber(double value) {
-    if (std::isnan(value)) return "nan";
-    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-    char text[48];
-    const double a = std::abs(value);
-    if (a >= 1e6 || (a > 0.0 && a < 5e-4)) {
-        std::snprintf(text, sizeof text, "%.3g", value);
-        return text;
-    }
-    std::snprintf(text, sizeof text, "%.3f", value);
-    std::string s = text;
-    while (!s.empty() && s.back() == '0') s.pop_back();
-    if (!s.empty() && s.back() == '.') s.pop_back();
-    if (s == "-0") s = "0";
-    return s;
-}
-
-std::string operand(double value) {
-    const std::string s = formatNumber(value);
-    return !s.empty() && s[0] == '-' ? "(" + s + ")" : s;
-}
-
 const char* wallName(int other) {
     switch (other) {
     case kWallLeft:
@@ -42,10 +20,10 @@ const char* wallName(int other) {
 
 namespace {
 
-std::string vAfterLine(const char* name, double u, double C, double v, double after) {
+std::string vAfterLine(const std::string& v, double u, double C, double before, double after) {
     // v' = u - C·(v - u)
-    return std::string(name) + "' = " + formatNumber(u) + " - " + operand(C) + "·(" +
-           formatNumber(v) + " - " + operand(u) + ") = " + formatNumber(after);
+    return v + "' = " + formatNumber(u) + " - " + operand(C) + "·(" + formatNumber(before) + " - " +
+           operand(u) + ") = " + formatNumber(after);
 }
 
 } // namespace
@@ -54,23 +32,44 @@ CollisionFormula collisionFormula(const CollisionRecord& r, const std::string& n
                                   const std::string& name2) {
     CollisionFormula f;
     const char axis = r.axis == 0 ? 'x' : 'y';
+    const bool wall = r.other < 0;
+    // The symbols: m1, v1 for block "m1"; 1 and 2 when the names give none (or the same one).
+    std::string s1 = formulaSymbol(name1), s2 = wall ? std::string() : formulaSymbol(name2);
+    if (!wall && (s1.empty() || s2.empty() || s1 == s2)) {
+        s1 = "1";
+        s2 = "2";
+    }
+    const std::string m1 = "m" + s1, v1 = "v" + s1, m2 = "m" + s2, v2 = "v" + s2;
     f.title =
         name1 + "  hits  " + name2 + "  along " + axis + " at t = " + formatNumber(r.time) + " s";
-    f.given = "m1 = " + formatNumber(r.m1) + ", m2 = " + formatNumber(r.m2) +
-              ", v1 = " + formatNumber(r.v1) + ", v2 = " + formatNumber(r.v2) +
-              ", C = " + formatNumber(r.C);
     const bool finite1 = std::isfinite(r.m1), finite2 = std::isfinite(r.m2);
+    if (wall) {
+        f.given = m1 + " = " + formatNumber(r.m1) + ", " + v1 + " = " + formatNumber(r.v1) +
+                  ", C = " + formatNumber(r.C) + "; the " + name2 + " does not move";
+        f.u = "u = " + formatNumber(r.u) + "   (the " + name2 + "'s velocity: infinite mass)";
+        f.v1After = vAfterLine(v1, r.u, r.C, r.v1, r.v1After);
+        f.momentumBefore = "p" + s1 + " before = " + operand(r.m1) + "·" + operand(r.v1) + " = " +
+                           formatNumber(r.m1 * r.v1) + " kg·m/s";
+        f.momentumAfter = "p" + s1 + " after  = " + operand(r.m1) + "·" + operand(r.v1After) +
+                          " = " + formatNumber(r.m1 * r.v1After) + " kg·m/s";
+        f.note = "A wall takes any impulse: the block's momentum is not conserved.";
+        if (r.rest) f.note = "Rest rule: closing too slowly to bounce, resolved with C = 0.";
+        return f;
+    }
+    f.given = m1 + " = " + formatNumber(r.m1) + ", " + m2 + " = " + formatNumber(r.m2) + ", " + v1 +
+              " = " + formatNumber(r.v1) + ", " + v2 + " = " + formatNumber(r.v2) +
+              ", C = " + formatNumber(r.C);
     if (finite1 && finite2) {
         f.u = "u = (" + operand(r.m1) + "·" + operand(r.v1) + " + " + operand(r.m2) + "·" +
               operand(r.v2) + ")/(" + formatNumber(r.m1) + " + " + formatNumber(r.m2) +
               ") = " + formatNumber(r.u);
     } else if (!finite2) {
-        f.u = "u = v2 = " + formatNumber(r.u) + "   (m2 is infinite)";
+        f.u = "u = " + v2 + " = " + formatNumber(r.u) + "   (" + m2 + " is infinite)";
     } else {
-        f.u = "u = v1 = " + formatNumber(r.u) + "   (m1 is infinite)";
+        f.u = "u = " + v1 + " = " + formatNumber(r.u) + "   (" + m1 + " is infinite)";
     }
-    f.v1After = vAfterLine("v1", r.u, r.C, r.v1, r.v1After);
-    f.v2After = vAfterLine("v2", r.u, r.C, r.v2, r.v2After);
+    f.v1After = vAfterLine(v1, r.u, r.C, r.v1, r.v1After);
+    f.v2After = vAfterLine(v2, r.u, r.C, r.v2, r.v2After);
     if (finite1 && finite2) {
         f.momentumBefore = "p before = " + operand(r.m1) + "·" + operand(r.v1) + " + " +
                            operand(r.m2) + "·" + operand(r.v2) + " = " +
@@ -81,11 +80,11 @@ CollisionFormula collisionFormula(const CollisionRecord& r, const std::string& n
     } else {
         const double m = finite1 ? r.m1 : r.m2;
         const double before = finite1 ? r.v1 : r.v2, after = finite1 ? r.v1After : r.v2After;
-        const char* who = finite1 ? "p1" : "p2";
-        f.momentumBefore = std::string(who) + " before = " + operand(m) + "·" + operand(before) +
-                           " = " + formatNumber(m * before) + " kg·m/s";
-        f.momentumAfter = std::string(who) + " after  = " + operand(m) + "·" + operand(after) +
-                          " = " + formatNumber(m * after) + " kg·m/s";
+        const std::string who = "p" + (finite1 ? s1 : s2);
+        f.momentumBefore = who + " before = " + operand(m) + "·" + operand(before) + " = " +
+                           formatNumber(m * before) + " kg·m/s";
+        f.momentumAfter = who + " after  = " + operand(m) + "·" + operand(after) + " = " +
+                          formatNumber(m * after) + " kg·m/s";
         f.note =
             "An infinite mass takes any impulse: momentum of the finite body is not conserved.";
     }

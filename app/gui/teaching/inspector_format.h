@@ -5,27 +5,24 @@
 #pragma once
 
 #include "stats.h"
+#include "text_format.h"
 
 #include <string>
-
-// A number as the inspector writes it: up to 3 decimals, trailing zeros dropped ("2", "-0.5",
-// "0.625"), "inf" for infinity; very large or tiny values in %.3g.
-std::string formatNumber(double value);
-// formatNumber, in parentheses when negative (an operand after an operator: "1·(-2)").
-std::string operand(double value);
 
 struct CollisionFormula {
     std::string title;          // "m1 = 1 kg  hits  m2 = 2 kg along x at t = 0.625 s"
     std::string given;          // "m1 = 1, m2 = 2, v1 = 6, v2 = 0, C = 1"
     std::string u;              // "u = (1·6 + 2·0)/(1 + 2) = 2"
     std::string v1After;        // "v1' = 2 - 1·(6 - 2) = -2"
-    std::string v2After;        // "v2' = 2 - 1·(0 - 2) = 4"
+    std::string v2After;        // "v2' = 2 - 1·(0 - 2) = 4" ("" for a wall: it does not move)
     std::string momentumBefore; // "p before = 1·6 + 2·0 = 6"
     std::string momentumAfter;  // "p after = 1·(-2) + 2·4 = 6"
     std::string note;           // why momentum is not conserved (a wall), or the rest rule
 };
 
-// The formula for `record`; `name1` and `name2` name the bodies (a wall's name for walls).
+// The formula for `record`; `name1` and `name2` name the bodies (a wall's name for walls). The
+// symbols follow the names: blocks "m1" and "m2" (or "A" and "B") give m1, v1 (mA, vA), other
+// names 1 and 2; a block hitting a wall keeps its own symbol (or none: m, v).
 CollisionFormula collisionFormula(const CollisionRecord& record, const std::string& name1,
                                   const std::string& name2);
 // "left wall", "right wall", "floor", "ceiling" for a negative CollisionRecord::other.

@@ -106,6 +106,24 @@ void WorldHistory::truncateAfter(std::uint64_t frame) {
     }
 }
 
+void WorldHistory::editedAt(const World& world) {
+    if (keyframes_.empty()) return;
+    if (world.frame < keyframes_.front().frame) {
+        clear();
+        return;
+    }
+    while (!keyframes_.empty() && keyframes_.back().frame >= world.frame) keyframes_.pop_back();
+    keyframes_.push_back(world);
+    last_ = world;
+    haveLast_ = true;
+}
+
+double WorldHistory::recordedSeconds() const {
+    if (keyframes_.empty()) return 0.0;
+    const double newest = haveLast_ ? last_.time : keyframes_.back().time;
+    return std::max(0.0, newest - keyframes_.front().time);
+}
+
 std::size_t WorldHistory::bytes() const {
     std::size_t total = sizeof(*this);
     for (const World& w : keyframes_) total += sizeof(World) + w.blocks.capacity() * sizeof(Block);

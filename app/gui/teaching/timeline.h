@@ -29,6 +29,12 @@ class WorldHistory {
     bool stateAt(std::uint64_t frame, World& out) const;
     // Drops everything after `frame`.
     void truncateAfter(std::uint64_t frame);
+    // The world was edited (a drag, a slider) at its frame: the edited state becomes the newest
+    // recorded one, and the recorded future after it is dropped (a new future starts there).
+    void editedAt(const World& world);
+    // Seconds of simulated time from the oldest to the newest recorded frame (the frames' own
+    // times, so a change of frame rate on the way is counted right).
+    double recordedSeconds() const;
     std::size_t keyframeCount() const { return keyframes_.size(); }
     std::size_t bytes() const;
 

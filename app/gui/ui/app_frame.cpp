@@ -11,10 +11,11 @@
 namespace {
 
 void handleKeys(App& app, const std::vector<KeyPress>& keys) {
-    // Typing into a text field (a file name) must not trigger hotkeys.
-    if (ImGui::GetIO().WantTextInput) return;
+    // Typing into a text field (a file name) must not trigger hotkeys; Esc still closes dialogs.
+    const bool typing = ImGui::GetIO().WantTextInput;
     for (const KeyPress& k : keys) {
-        const Action action = actionForKey(k.key, k.ctrl);
+        const Action action = actionForKey(k.key, k.ctrl, k.shift);
+        if (typing && action != Action::Escape) continue;
         if (action == Action::LessonDigit)
             lessonTypeDigit(app, digitOfKey(k.key));
         else
@@ -42,6 +43,10 @@ void applyAction(App& app, Action action) {
         resetScene(app);
         logEvent(app, "reset");
         break;
+    case Action::ResetToFile:
+        resetToFile(app);
+        logEvent(app, "reset to file");
+        break;
     case Action::TogglePause:
         app.paused = !app.paused;
         break;
@@ -68,8 +73,9 @@ void applyAction(App& app, Action action) {
     case Action::FitView:
         app.autoFit = true;
         break;
-    case Action::ToggleUi:
-        app.uiVisible = !app.uiVisible;
+    case Action::TogglePresent:
+        setPresentMode(app, !app.presentMode);
+        logEvent(app, app.presentMode ? "present mode: on" : "present mode: off");
         break;
     case Action::ToggleFullscreen:
         app.fullscreenRequested = true;
@@ -86,12 +92,22 @@ void applyAction(App& app, Action action) {
     case Action::DeleteSelected:
         deleteSelected(app);
         break;
+    case Action::Escape: {
+        const EscapeEffect e = pressEscape(app);
+        logEvent(app, e == EscapeEffect::CloseDialog       ? "escape: dialog closed"
+                      : e == EscapeEffect::CloseHelp       ? "escape: help closed"
+                      : e == EscapeEffect::LeavePresent    ? "escape: present mode off"
+                      : e == EscapeEffect::LeaveFullscreen ? "escape: fullscreen off"
+                                                           : "escape: nothing to close");
+        break;
+    }
     case Action::Quit:
-        app.quitRequested = true;
+        requestQuit(app);
+        if (app.quitDialogOpen) logEvent(app, "quit: unsaved edits, asking");
         break;
     case Action::Save:
-        if (app.savePath.empty()) app.savePath = "saved_scene.json";
-        saveCurrentScene(app, app.savePath);
+        app.saveDialogOpen = true;
+        app.saveDialogPath = suggestedSavePath(app);
         break;
     case Action::LessonNext:
     case Action::LessonPrevious:
@@ -119,6 +135,7 @@ void logStateChanges(App& app) {
 
 void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, bool runClock) {
     const ImGuiIO& io = ImGui::GetIO();
+    app.shownWindows.clear();
     updateCamera(app, io.DisplaySize.x, io.DisplaySize.y);
     handleKeys(app, keys);
     handleSceneMouse(app);
@@ -129,9 +146,12 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     }
     drawSceneDecorations(app);
     drawOverlays(app);
-    if (app.uiVisible) drawControlsPanel(app);
-    if (app.lesson.active()) drawLessonCaption(app);
-    if (app.helpOpen) drawHelpWindow(app);
+    if (!app.presentMode) {
+        if (app.uiVisible) drawControlsPanel(app);
+        if (app.lesson.active()) drawLessonCaption(app);
+        if (app.helpOpen) drawHelpWindow(app);
+    }
+    drawDialogs(app);
     logStateChanges(app);
 }
 
@@ -145,6 +165,7 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
     view.displayWidth = io.DisplaySize.x;
     view.displayHeight = io.DisplaySize.y;
     view.selected = app.selected;
+    view.theme = &sceneTheme(app.lightTheme);
     view.vectors = app.show.vectors;
     view.trails = app.show.trails ? &app.trails : nullptr;
     if (app.show.sideBySide && app.methods.running) {

@@ -25,6 +25,8 @@ void logStateChanges(App& app);
 // Panels (one file each).
 void drawControlsPanel(App& app);
 void drawHelpWindow(App& app);
+// The quit dialog (unsaved edits) and the Save dialog (a name; overwriting asks), when open.
+void drawDialogs(App& app);
 // The lesson's caption bar over the top of the scene ("n / N · title", caption, question).
 void drawLessonCaption(App& app);
 // Mouse in the scene, block labels, hover tooltip and the status badge.

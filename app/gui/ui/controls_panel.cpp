@@ -1,6 +1,9 @@
 // The controls panel: scene, run control, simulation settings, the selected block, statistics
 // and view options, bound to App every frame (immediate mode: no state of its own).
+#include "app_config.h"
 #include "app_frame.h"
+#include "overlay_window.h"
+#include "save_naming.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -30,7 +33,8 @@ void statRow(const char* name, const char* fmt, double value) {
 void scenePicker(App& app) {
     const char* preview = app.scene.name.empty() ? "(no scene)" : app.scene.name.c_str();
     ImGui::SetNextItemWidth(-1.0f);
-    if (ImGui::BeginCombo("##scene", preview)) {
+    // Taller than the default 8 rows: every shipped scene at once, in the lecture's order.
+    if (ImGui::BeginCombo("##scene", preview, ImGuiComboFlags_HeightLargest)) {
         for (const SceneEntry& e : app.sceneFiles) {
             const bool current = e.path == app.scenePath;
             if (ImGui::Selectable(e.title.c_str(), current)) loadScene(app, e.path);
@@ -48,7 +52,8 @@ void scenePicker(App& app) {
         }
         ImGui::EndCombo();
     }
-    tooltip("The shipped scenes (app/scenes) and lessons (lessons/)");
+    tooltip("The shipped scenes in the lecture's order (app/scenes/lecture_order.txt), and "
+            "lessons (lessons/)");
 }
 
 // The open lesson's steps: click one to go there.
@@ -92,10 +97,8 @@ void fileSection(App& app) {
     ImGui::InputTextWithHint("##open", "path/to/scene.json", &app.openPath);
     ImGui::SameLine();
     if (ImGui::Button("Open") && !app.openPath.empty()) loadScene(app, app.openPath);
-    ImGui::InputTextWithHint("##save", "save as .json", &app.savePath);
-    ImGui::SameLine();
-    if (ImGui::Button("Save")) saveCurrentScene(app, app.savePath);
-    tooltip("Save the current state as a scene file (format v1); Ctrl+S");
+    if (ImGui::Button("Save as... (Ctrl+S)")) applyAction(app, Action::Save);
+    tooltip("Save the current state as a scene file (format v1): asks for a name");
 }
 
 void runSection(App& app) {
@@ -107,10 +110,12 @@ void runSection(App& app) {
     if (ImGui::Button("Step (N)", ImVec2(w, 0))) applyAction(app, Action::StepOnce);
     ImGui::SameLine();
     if (ImGui::Button("Reset (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
+    tooltip("Blocks and time back to the start; keeps the method, C, g, frame rate, substeps");
     ImGui::Checkbox("Slow motion (Space)", &app.slowMotion);
     tooltip("5 simulation frames per second, as in the lecture's demo");
     ImGui::SameLine();
-    ImGui::TextColored(kDimColor, "t = %.2f s", app.world.time);
+    if (ImGui::Button("Reset to file")) applyAction(app, Action::ResetToFile);
+    tooltip("Shift+R: everything as the scene file has it, settings included");
 }
 
 void simulationSection(App& app) {
@@ -135,8 +140,16 @@ void simulationSection(App& app) {
         app.layoutLogged = true;
     }
     float g[2] = {static_cast<float>(s.gravity.x), static_cast<float>(s.gravity.y)};
-    if (ImGui::SliderFloat2("##gravity", g, -20.0f, 20.0f, "%.2f")) s.gravity = Vec2{g[0], g[1]};
-    tooltip("Gravity (x, y) in m/s²");
+    if (ImGui::SliderFloat2("##gravity", g, -20.0f, 20.0f, "%.2f")) {
+        // A value typed with Ctrl+click may lie outside the slider: kept within it, and said so.
+        const TypedValue gx = checkTypedValue("gravity x", g[0], -20.0, 20.0, "m/s²");
+        const TypedValue gy = checkTypedValue("gravity y", g[1], -20.0, 20.0, "m/s²");
+        s.gravity = Vec2{gx.value, gy.value};
+        if (!gx.message.empty() || !gy.message.empty()) {
+            app.error = gx.message.empty() ? gy.message : gx.message;
+        }
+    }
+    tooltip("Gravity (x, y) in m/s² (Ctrl+click to type a value)");
     ImGui::SameLine();
     if (ImGui::SmallButton("0")) s.gravity = Vec2{0.0, 0.0};
     tooltip("No gravity");
@@ -186,18 +199,28 @@ void selectedSection(App& app) {
         if (ImGui::SliderFloat("mass", &mass, 0.01f, 1000.0f, "%.3g kg",
                                ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
             b.mass = mass;
+            noteEdit(app, true);
         }
     } else {
         ImGui::TextColored(kDimColor, "mass: infinite");
     }
     float size[2] = {static_cast<float>(b.size.x), static_cast<float>(b.size.y)};
     if (ImGui::DragFloat2("size", size, 0.02f, 0.05f, 50.0f, "%.2f m")) {
-        if (!setBlockSize(app, i, {size[0], size[1]})) app.note = "That size would overlap";
+        if (!(size[0] > 0.0f && size[1] > 0.0f)) {
+            app.error = "A block's size must be larger than 0 m";
+        } else if (!setBlockSize(app, i, {size[0], size[1]})) {
+            app.error = "That size would overlap another block or a wall";
+        } else if (app.error.rfind("A block's size", 0) == 0 ||
+                   app.error.rfind("That size", 0) == 0) {
+            app.error.clear(); // the size took: the message about it goes
+        }
     }
     if (b.kind != BodyKind::Static) {
         float v[2] = {static_cast<float>(b.velocity.x), static_cast<float>(b.velocity.y)};
-        if (ImGui::DragFloat2("velocity", v, 0.05f, -1000.0f, 1000.0f, "%.2f m/s")) {
+        if (ImGui::DragFloat2("velocity", v, 0.05f, -1000.0f, 1000.0f, "%.2f m/s",
+                              ImGuiSliderFlags_AlwaysClamp)) {
             b.velocity = Vec2{v[0], v[1]};
+            noteEdit(app, true);
         }
     }
     ImGui::TextColored(kDimColor, "position (%.2f, %.2f) m", b.position.x, b.position.y);
@@ -246,7 +269,19 @@ void viewSection(App& app) {
         app.note = "UI scale applies on release";
     }
     if (ImGui::IsItemDeactivatedAfterEdit()) setUiScale(app, scale);
+    float labels = app.labelScale;
+    if (ImGui::SliderFloat("scene labels", &labels, kMinLabelScale, kMaxLabelScale, "%.2fx",
+                           ImGuiSliderFlags_AlwaysClamp)) {
+        app.note = "Label size applies on release";
+    }
+    tooltip("Size of the block names and numbers in the scene, apart from the UI scale");
+    if (ImGui::IsItemDeactivatedAfterEdit()) app.labelScale = labels;
+    ImGui::Checkbox("light theme (bright rooms)", &app.lightTheme);
+    tooltip("Dark text on a light scene and panels: a projector in a lit room washes dark "
+            "themes out");
     if (ImGui::Button("Fit view (F)")) applyAction(app, Action::FitView);
+    ImGui::SameLine();
+    if (ImGui::Button("Present (Tab)")) applyAction(app, Action::TogglePresent);
     ImGui::SameLine();
     if (ImGui::Button("Help (F1)")) app.helpOpen = true;
 }
@@ -265,6 +300,8 @@ void drawControlsPanel(App& app) {
         ImGui::End();
         return;
     }
+    recordShownWindow(app, "Controls");
+    const WorldSettings before = app.world.settings;
     ImGui::PushItemWidth(width * 0.52f);
     scenePicker(app);
     if (!app.scene.description.empty()) {
@@ -292,6 +329,9 @@ void drawControlsPanel(App& app) {
     lessonSection(app);
     ImGui::Separator();
     runSection(app);
+    // Play, Step and Reset stay in view: the sections below scroll on their own.
+    ImGui::BeginChild("##sections", ImVec2(0.0f, 0.0f), false);
+    ImGui::PushItemWidth(width * 0.52f);
     simulationSection(app);
     overlaysSection(app);
     selectedSection(app);
@@ -299,5 +339,8 @@ void drawControlsPanel(App& app) {
     viewSection(app);
     fileSection(app);
     ImGui::PopItemWidth();
+    ImGui::EndChild();
+    ImGui::PopItemWidth();
     ImGui::End();
+    if (settingsDiffer(before, app.world.settings)) noteEdit(app, false);
 }

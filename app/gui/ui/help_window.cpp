@@ -1,42 +1,73 @@
-// The Help window: every key (from the key map, so it cannot drift) and what the mouse does.
+// The Help window: every key (from the key map, so it cannot drift), what the mouse does, and
+// what each overlay shows (from the overlay table) and how the windows dock. Tabs keep it within
+// a 720p screen at UI scale 1.5; a tab longer than the window scrolls.
 #include "app_frame.h"
+#include "overlay_window.h"
 
 #include <imgui.h>
+
+namespace {
+
+void row(const char* a, const char* b) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(a);
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(b);
+}
+
+} // namespace
 
 void drawHelpWindow(App& app) {
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f),
-                            ImGuiCond_FirstUseEver, ImVec2(0.5f, 0.5f));
-    if (!ImGui::Begin("Help", &app.helpOpen, ImGuiWindowFlags_AlwaysAutoResize)) {
+                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f),
+                                        ImVec2(io.DisplaySize.x * 0.9f, io.DisplaySize.y * 0.9f));
+    ImGui::SetNextWindowBgAlpha(0.98f);
+    if (!ImGui::Begin("Help", &app.helpOpen,
+                      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
         ImGui::End();
         return;
     }
+    recordShownWindow(app, "Help");
+    ImGui::TextUnformatted("Esc closes this window.  Tab: present mode.  Ctrl+Q quits.");
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
-    if (ImGui::BeginTable("keys", 2, flags)) {
-        for (const KeyBinding& b : keyBindings()) {
-            if (!b.listed) continue;
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(b.keyName);
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(b.description);
+    if (ImGui::BeginTabBar("help")) {
+        if (ImGui::BeginTabItem("Keys")) {
+            if (ImGui::BeginTable("keys", 2, flags)) {
+                for (const KeyBinding& b : keyBindings()) {
+                    if (b.listed) row(b.keyName, b.description);
+                }
+                ImGui::EndTable();
+            }
+            ImGui::EndTabItem();
         }
-        const char* mouse[][2] = {
-            {"Left click", "Select a block"},
-            {"Left drag", "Move a block (the simulation waits; drops beside, never on top)"},
-            {"Right drag", "Fling: the arrow is the new velocity"},
-            {"Double-click", "Add a block on empty space"},
-            {"Wheel", "Zoom about the cursor"},
-            {"Middle drag", "Pan"},
-        };
-        for (const auto& row : mouse) {
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(row[0]);
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(row[1]);
+        if (ImGui::BeginTabItem("Mouse")) {
+            if (ImGui::BeginTable("mouse", 2, flags)) {
+                row("Left click", "Select a block");
+                row("Left drag", "Move a block (the simulation waits; drops beside, never on top)");
+                row("Right drag", "Fling: the arrow is the new velocity");
+                row("Double-click", "Add a block on empty space");
+                row("Wheel", "Zoom about the cursor (F fits the world again)");
+                row("Middle drag", "Pan");
+                ImGui::EndTable();
+            }
+            ImGui::EndTabItem();
         }
-        ImGui::EndTable();
+        if (ImGui::BeginTabItem("Overlays")) {
+            dimText("Turn them on in the Overlays section. Windows dock around the scene, which "
+                    "keeps the rest; drag a window by its title to float it, \"dock\" puts it "
+                    "back.");
+            if (ImGui::BeginTable("overlays", 2, flags)) {
+                for (const OverlayInfo& o : kOverlays) {
+                    row(o.title ? o.title : o.label, o.tooltip);
+                }
+                ImGui::EndTable();
+            }
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
     }
     ImGui::End();
 }

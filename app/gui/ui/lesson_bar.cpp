@@ -2,6 +2,7 @@
 // it, then the question (or, after the next press, its answer). Opaque, so nothing shows through;
 // its height is kept in app.captionHeight and the scene's viewport starts below it.
 #include "app_frame.h"
+#include "overlay_window.h"
 
 #include <imgui.h>
 
@@ -35,6 +36,7 @@ void drawLessonCaption(App& app) {
         ImGui::End();
         return;
     }
+    recordShownWindow(app, "Lesson caption");
     const std::string heading = lessonHeading(s);
     ImGui::SetWindowFontScale(1.25f);
     ImGui::TextUnformatted(heading.c_str());

@@ -1,40 +1,84 @@
 #include "overlay_window.h"
 
+#include "ui_style.h"
+
 #include <algorithm>
+
+namespace {
+
+// Overlay windows whose title bar the left button went down on while docked: dragging on from
+// there pulls the window out of the layout.
+std::unordered_map<ImGuiID, bool> gTitlePressed;
+
+// Background alpha: opaque enough that nothing of the scene shows through the text.
+constexpr float kWindowAlpha = 0.97f;
+
+} // namespace
+
+void recordShownWindow(App& app, const char* name) {
+    const ImVec2 p = ImGui::GetWindowPos(), s = ImGui::GetWindowSize();
+    app.shownWindows.push_back({name, {p.x, p.y, s.x, s.y}});
+}
 
 bool beginOverlayWindow(App& app, OverlayId id) {
     const OverlayInfo& info = overlayInfo(id);
-    const OverlayPlacement& place = info.place;
-    const ScreenRect& vp = app.camera.viewport();
-    const float s = app.uiScale;
-    const float margin = 8.0f * s;
-    const float badge = 36.0f * s; // the method/time badge at the top of the viewport
-    const float w =
-        std::min(place.maxWidth * s, static_cast<float>(vp.width) * place.widthFraction);
-    const float h =
-        std::min(place.maxHeight * s, static_cast<float>(vp.height - badge) * place.heightFraction);
-    const float x0 = static_cast<float>(vp.x) + margin;
-    const float x1 = static_cast<float>(vp.x + vp.width) - margin - w;
-    const float y0 = static_cast<float>(vp.y) + badge;
-    const float y1 = static_cast<float>(vp.y + vp.height) - margin - h;
-    // When the UI scale or the scene's viewport changes (Ctrl+= on a projector, a resized or
-    // full-screen window), the window is placed again for it: at the old pixel sizes it would
-    // overlap the wider panel and clip its larger text.
-    const UiState::PlacedFor now{s, vp.width, vp.height};
-    UiState::PlacedFor& placed = app.ui.placedFor[static_cast<std::size_t>(id)];
-    const ImGuiCond when = placed == now ? ImGuiCond_FirstUseEver : ImGuiCond_Always;
-    placed = now;
-    ImGui::SetNextWindowPos(ImVec2(x0 + (x1 - x0) * place.anchorX, y0 + (y1 - y0) * place.anchorY),
-                            when);
-    ImGui::SetNextWindowSize(ImVec2(w, h), when);
-    ImGui::SetNextWindowBgAlpha(0.80f);
-    return ImGui::Begin(info.title, &(app.show.*info.flag), ImGuiWindowFlags_NoSavedSettings);
+    const char* title = info.title;
+    bool* open = &(app.show.*info.flag);
+    const ScreenRect* docked = app.layout.find(title);
+    ImGuiWindowFlags flags = ImGuiWindowFlags_NoSavedSettings;
+    if (docked) {
+        ImGui::SetNextWindowPos(
+            ImVec2(static_cast<float>(docked->x), static_cast<float>(docked->y)), ImGuiCond_Always);
+        ImGui::SetNextWindowSize(
+            ImVec2(static_cast<float>(docked->width), static_cast<float>(docked->height)),
+            ImGuiCond_Always);
+        ImGui::SetNextWindowCollapsed(false, ImGuiCond_Always);
+        flags |= ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+    }
+    ImGui::SetNextWindowBgAlpha(kWindowAlpha);
+    const bool visible = ImGui::Begin(title, open, flags);
+    recordShownWindow(app, title);
+    const ImGuiID imguiId = ImGui::GetID(title);
+    const ImGuiIO& io = ImGui::GetIO();
+    const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    if (docked) {
+        // A press on the title bar, then a drag: the window floats from here on (ImGui moves it
+        // with the mouse from the next frame, when the layout no longer places it).
+        const bool onTitle =
+            io.MousePos.y >= pos.y && io.MousePos.y < pos.y + ImGui::GetFrameHeight();
+        if (ImGui::IsWindowHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && onTitle) {
+            gTitlePressed[imguiId] = true;
+        }
+        if (gTitlePressed[imguiId] &&
+            ImGui::IsMouseDragging(ImGuiMouseButton_Left, 8.0f * app.uiScale)) {
+            setFloating(app, title, true);
+            gTitlePressed[imguiId] = false;
+        }
+        if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) gTitlePressed[imguiId] = false;
+    } else {
+        // Floating: kept on screen, and a button to put it back.
+        const ImVec2 display = io.DisplaySize;
+        const float keep = 40.0f * app.uiScale;
+        ImVec2 p = pos;
+        p.x = std::clamp(p.x, keep - size.x, display.x - keep);
+        p.y = std::clamp(p.y, 0.0f, display.y - ImGui::GetFrameHeight());
+        if (p.x != pos.x || p.y != pos.y) ImGui::SetWindowPos(p);
+        if (visible) {
+            if (ImGui::SmallButton("dock")) setFloating(app, title, false);
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("Put the window back beside the scene");
+        }
+    }
+    return visible;
 }
 
-OverlayWindow::OverlayWindow(App& app, OverlayId id) : open_(beginOverlayWindow(app, id)) {}
+OverlayWindow::OverlayWindow(App& app, OverlayId id) {
+    if (app.presentMode) return; // present mode: the scene only
+    begun_ = true;
+    open_ = beginOverlayWindow(app, id);
+}
 
 OverlayWindow::~OverlayWindow() {
-    ImGui::End();
+    if (begun_) ImGui::End();
 }
 
 void drawnByTheSceneRenderer(App&) {}
@@ -51,5 +95,9 @@ void drawOverlays(App& app) {
 }
 
 void dimText(const char* text) {
-    ImGui::TextColored(ImVec4(0.62f, 0.66f, 0.74f, 1.0f), "%s", text);
+    const ImVec4 dim =
+        uiLightTheme() ? ImVec4(0.32f, 0.35f, 0.42f, 1.0f) : ImVec4(0.62f, 0.66f, 0.74f, 1.0f);
+    ImGui::PushStyleColor(ImGuiCol_Text, dim);
+    ImGui::TextWrapped("%s", text); // wrapped: a docked window may be narrow, nothing is cut
+    ImGui::PopStyleColor();
 }

@@ -1,7 +1,8 @@
 // What the overlays share: the draw functions the table in overlays.h names, drawn in its order,
-// and their window: semi-transparent, movable, resizable, placed at first use relative to the
-// scene's viewport (so it lands sensibly at 720p and on a projector), and placed again when the
-// UI scale or the viewport's size changes.
+// and their window: docked where the frame's layout (app.layout) puts it, around the scene and
+// never over the world, and opaque enough to read. Dragging a docked window by its title bar
+// pulls it out to float (movable, resizable); its "dock" button puts it back. In present mode no
+// window is drawn.
 #pragma once
 
 #include "app_state.h"
@@ -19,11 +20,13 @@ constexpr ImU32 kMomentum = IM_COL32(255, 150, 60, 255);
 constexpr ImU32 kCom = IM_COL32(255, 235, 90, 255);
 } // namespace overlay_colors
 
-// Begins the semi-transparent window of row `id` (ImGui::End() must follow, as with Begin), with
-// the row's title, placed at first use by the row's placement (and again when the UI scale or
-// the viewport's size changes); its close button clears the row's flag. The one placement
-// function: every overlay window goes through it (through OverlayWindow).
+// Begins the window of row `id` (ImGui::End() must follow, as with Begin), with the row's title,
+// docked at its rectangle in app.layout, or floating when pulled out; its close button clears the
+// row's flag. The one placement function: every overlay window goes through it (through
+// OverlayWindow).
 bool beginOverlayWindow(App& app, OverlayId id);
+// Notes the current window (between Begin and End) in app.shownWindows, for --layout-json.
+void recordShownWindow(App& app, const char* name);
 
 // The window of an overlay row (overlays.h: its title and placement), closed by its close button
 // through the row's flag. Ends the window when it goes out of scope; false while collapsed:
@@ -38,7 +41,8 @@ class OverlayWindow {
     explicit operator bool() const { return open_; }
 
   private:
-    bool open_;
+    bool begun_ = false;
+    bool open_ = false;
 };
 
 // The draw functions the table names (one file each in overlays/).

@@ -1,22 +1,42 @@
 // The scene's ImGui side: the mouse in the scene (fed to mouse_tool), and what is drawn over the
-// GL scene with ImGui's background draw list: block labels, axis numbers, the status badge, the
-// fling readout and the hover tooltip.
+// GL scene with ImGui's background draw list, in the scene labels' own font: block labels (with
+// the current mass), axis numbers, the values of arrows too long to draw to scale, the reference
+// line of a resting stack, the status badge with the "P to play" hint (or, in present mode, the
+// caption), a large collision count where the count is the lesson, the fling readout and the
+// hover tooltip.
 #include "app_frame.h"
 
 #include "placement.h"
+#include "scene_geometry.h"
+#include "text_format.h"
+#include "ui_style.h"
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace {
 
 constexpr int kMaxLabelledBlocks = 200;
+// Arrows whose value is written beside them when they are not drawn to scale, at most.
+constexpr int kMaxArrowValueLabels = 20;
 
-void shadowText(ImDrawList* dl, ImVec2 at, ImU32 color, const char* text) {
-    dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), IM_COL32(0, 0, 0, 200), text);
+ImU32 packed(const Color& c) {
+    return c.packed();
+}
+
+const SceneTheme& theme() {
+    return sceneTheme(uiLightTheme());
+}
+
+void shadowText(ImDrawList* dl, ImVec2 at, ImU32 color, const char* text,
+                ImU32 shadow = IM_COL32(0, 0, 0, 200)) {
+    dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), shadow, text);
     dl->AddText(at, color, text);
 }
 
@@ -89,7 +109,10 @@ void drawLabels(const App& app, ImDrawList* dl) {
         const std::string name = blockDisplayName(app, i);
         char second[48] = "";
         if (b.isDynamic()) {
-            std::snprintf(second, sizeof second, "%.3g kg", b.mass);
+            // A name that states the mass ("m1 = 1 kg") needs no second line saying it again.
+            if (!nameStatesMass(app.labels[static_cast<std::size_t>(i)].name)) {
+                std::snprintf(second, sizeof second, "%s kg", formatNumber(b.mass).c_str());
+            }
         } else {
             std::snprintf(second, sizeof second, "%s", kindText(b.kind));
         }
@@ -98,9 +121,11 @@ void drawLabels(const App& app, ImDrawList* dl) {
         const double hPx = app.camera.metresToPixels(b.size.y);
         const ImVec2 nameSize = ImGui::CalcTextSize(name.c_str());
         const ImVec2 secondSize = ImGui::CalcTextSize(second);
-        const bool twoLines = hPx > 2.6 * lineHeight && secondSize.x < wPx - 6.0;
+        const bool twoLines = second[0] && hPx > 2.6 * lineHeight && secondSize.x < wPx - 6.0;
         const bool inside = nameSize.x < wPx - 6.0 && hPx > lineHeight + 4.0;
+        // White with a dark shadow on the block; the theme's text colour beside it.
         const ImU32 white = IM_COL32(255, 255, 255, 240);
+        const ImU32 beside = packed(theme().text);
         if (inside) {
             const float top = static_cast<float>(c.y) - (twoLines ? lineHeight : lineHeight * 0.5f);
             shadowText(dl, ImVec2(static_cast<float>(c.x) - nameSize.x * 0.5f, top), white,
@@ -118,7 +143,7 @@ void drawLabels(const App& app, ImDrawList* dl) {
             const float below = static_cast<float>(c.y + hPx * 0.5) + 2.0f;
             const float top = freeSpot(placed, x, above, below, nameSize, lineHeight);
             placed.emplace_back(x, top, x + nameSize.x, top + nameSize.y);
-            shadowText(dl, ImVec2(x, top), white, name.c_str());
+            shadowText(dl, ImVec2(x, top), beside, name.c_str(), packed(theme().textShadow));
         }
     }
 }
@@ -127,7 +152,7 @@ void drawAxisNumbers(const App& app, ImDrawList* dl) {
     const Camera& cam = app.camera;
     const Bounds& bounds = app.world.bounds;
     const double step = gridSpacing(cam.pixelsPerMetre(), 12.0) * 5.0;
-    const ImU32 color = IM_COL32(170, 178, 195, 200);
+    const ImU32 color = packed(theme().axis);
     const float gap = 14.0f;
     char text[32];
     for (double x = bounds.min.x; x <= bounds.max.x + 1e-9; x += step) {
@@ -155,26 +180,136 @@ void drawAxisNumbers(const App& app, ImDrawList* dl) {
                 color, "m");
 }
 
-void drawBadge(const App& app, ImDrawList* dl) {
-    const ScreenRect& vp = app.camera.viewport();
-    char text[96];
-    std::snprintf(text, sizeof text, "%s   t = %.2f s", methodName(app.world.settings.method),
-                  app.world.time);
-    const float pad = 8.0f * app.uiScale;
-    ImVec2 at(static_cast<float>(vp.x) + pad * 1.5f, static_cast<float>(vp.y) + pad);
+// A text on a rounded plate; returns its width with the padding.
+float plate(ImDrawList* dl, ImVec2 at, const char* text, ImU32 bg, ImU32 fg, float pad) {
     const ImVec2 size = ImGui::CalcTextSize(text);
     dl->AddRectFilled(ImVec2(at.x - pad * 0.5f, at.y - pad * 0.25f),
-                      ImVec2(at.x + size.x + pad * 0.5f, at.y + size.y + pad * 0.25f),
-                      IM_COL32(20, 22, 30, 200), 4.0f);
-    dl->AddText(at, IM_COL32(225, 230, 240, 255), text);
-    at.x += size.x + pad * 1.5f;
+                      ImVec2(at.x + size.x + pad * 0.5f, at.y + size.y + pad * 0.25f), bg, 4.0f);
+    dl->AddText(at, fg, text);
+    return size.x + pad * 1.5f;
+}
+
+// `text` cut to `width` pixels with "..." at the end (whole UTF-8 characters).
+std::string fitted(const std::string& text, float width) {
+    if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
+    std::string s = text;
+    while (!s.empty()) {
+        do {
+            s.pop_back();
+        } while (!s.empty() && (static_cast<unsigned char>(s.back()) & 0xC0) == 0x80);
+        if (!s.empty() && (static_cast<unsigned char>(s.back()) & 0x80)) s.pop_back();
+        if (ImGui::CalcTextSize((s + "...").c_str()).x <= width) return s + "...";
+    }
+    return "";
+}
+
+void drawBadge(const App& app, ImDrawList* dl) {
+    const ScreenRect& vp = app.camera.viewport();
+    const float pad = 8.0f * app.uiScale;
+    ImVec2 at(static_cast<float>(vp.x) + pad * 1.5f, static_cast<float>(vp.y) + pad);
+    const ImU32 plateBg = uiLightTheme() ? IM_COL32(235, 236, 240, 230) : IM_COL32(20, 22, 30, 200);
+    const ImU32 plateFg = uiLightTheme() ? IM_COL32(20, 22, 30, 255) : IM_COL32(225, 230, 240, 255);
+    if (app.presentMode) {
+        // The caption: what the scene is, the method and the time, on one line.
+        const float room = static_cast<float>(vp.width) - pad * 4.0f;
+        std::string caption = presentCaption(app.scene.name, app.scene.description,
+                                             app.world.settings.method, app.world.time);
+        if (ImGui::CalcTextSize(caption.c_str()).x > room) {
+            const std::string tail =
+                presentCaption("", "", app.world.settings.method, app.world.time, false);
+            const float tailWidth = ImGui::CalcTextSize(tail.c_str()).x;
+            std::string what = app.scene.name;
+            if (!app.scene.description.empty()) what += ": " + firstSentence(app.scene.description);
+            caption = fitted(what, room - tailWidth) + tail;
+        }
+        at.x += plate(dl, at, caption.c_str(), plateBg, plateFg, pad);
+    } else {
+        char text[160];
+        std::snprintf(text, sizeof text, "%s   t = %.2f s   %llu collision%s",
+                      methodName(app.world.settings.method), app.world.time,
+                      static_cast<unsigned long long>(app.totals.collisions),
+                      app.totals.collisions == 1 ? "" : "s");
+        at.x += plate(dl, at, text, plateBg, plateFg, pad);
+    }
     const char* state = app.paused ? "PAUSED" : app.slowMotion ? "SLOW MOTION  5 fps" : nullptr;
-    if (!state) return;
-    const ImU32 bg = app.paused ? IM_COL32(220, 150, 40, 235) : IM_COL32(60, 130, 220, 235);
-    const ImVec2 s2 = ImGui::CalcTextSize(state);
-    dl->AddRectFilled(ImVec2(at.x - pad * 0.5f, at.y - pad * 0.25f),
-                      ImVec2(at.x + s2.x + pad * 0.5f, at.y + s2.y + pad * 0.25f), bg, 4.0f);
-    dl->AddText(at, IM_COL32(15, 15, 20, 255), state);
+    if (state && !app.presentMode) {
+        const ImU32 bg = app.paused ? IM_COL32(220, 150, 40, 235) : IM_COL32(60, 130, 220, 235);
+        at.x += plate(dl, at, state, bg, IM_COL32(15, 15, 20, 255), pad);
+    }
+    // Paused at t = 0: how to start (the first time the app runs, with the first keys).
+    const std::string hint = startHint(app.paused, app.world.time, app.firstLaunch);
+    if (!hint.empty()) {
+        plate(dl, at, hint.c_str(), IM_COL32(60, 150, 90, 235), IM_COL32(10, 16, 12, 255), pad);
+    }
+}
+
+// The collision count, large, in the world's top right corner, where the count is the lesson:
+// few blocks, no gravity and many collisions (high_mass_ratio's 3141).
+void drawLargeCount(const App& app, ImDrawList* dl) {
+    std::size_t dynamic = 0;
+    for (const Block& b : app.world.blocks) dynamic += b.isDynamic();
+    // (No gravity: under gravity a resting block counts a contact every frame.)
+    if (dynamic == 0 || dynamic > 3 || app.totals.collisions < 100 ||
+        app.world.settings.gravity != Vec2{}) {
+        return;
+    }
+    char text[48];
+    std::snprintf(text, sizeof text, "%llu",
+                  static_cast<unsigned long long>(app.totals.collisions));
+    ImFont* font = ImGui::GetFont();
+    const float size = ImGui::GetFontSize() * 3.0f;
+    const ImVec2 ts = font->CalcTextSizeA(size, 1e9f, 0.0f, text);
+    const ScreenRect world = worldRectOnScreen(app.camera, app.world.bounds);
+    const ImVec2 at(static_cast<float>(world.x + world.width) - ts.x - 12.0f * app.uiScale,
+                    static_cast<float>(world.y) + 8.0f * app.uiScale);
+    const ImU32 color = uiLightTheme() ? IM_COL32(30, 40, 60, 230) : IM_COL32(240, 240, 250, 230);
+    dl->AddText(font, size, at, color, text);
+    const char* unit = "collisions";
+    const ImVec2 us = ImGui::CalcTextSize(unit);
+    dl->AddText(ImVec2(at.x + ts.x - us.x, at.y + ts.y), packed(theme().axis), unit);
+}
+
+// Arrows too long to draw to scale (compressed and cut at the view's edge) carry their value.
+void drawArrowValues(const App& app, ImDrawList* dl) {
+    if (!app.show.vectors) return;
+    int written = 0;
+    for (const Block& b : app.world.blocks) {
+        if (b.kind == BodyKind::Static || written >= kMaxArrowValueLabels) continue;
+        const ArrowOnScreen a =
+            arrowOnScreen(app.camera, b.position, b.velocity * kVelocityArrowScale);
+        if (a.toScale) continue;
+        char text[48];
+        std::snprintf(text, sizeof text, "%s m/s", formatNumber(length(b.velocity)).c_str());
+        const Vec2 tip = app.camera.worldToScreen(a.tip);
+        const ImVec2 ts = ImGui::CalcTextSize(text);
+        const ScreenRect& vp = app.camera.viewport();
+        const float x =
+            std::clamp(static_cast<float>(tip.x) - ts.x * 0.5f, static_cast<float>(vp.x),
+                       static_cast<float>(vp.x + vp.width) - ts.x);
+        shadowText(dl, ImVec2(x, static_cast<float>(tip.y) - ts.y - 6.0f), packed(theme().velocity),
+                   text, packed(theme().textShadow));
+        ++written;
+    }
+}
+
+// A resting stack's expected top as a dashed line: a method that lets it sink shows the gap.
+void drawReferenceLine(const App& app, ImDrawList* dl) {
+    const std::optional<double> top = restingStackTop(app.scene);
+    if (!top) return;
+    const Bounds& bounds = app.world.bounds;
+    const Vec2 a = app.camera.worldToScreen({bounds.min.x, *top});
+    const Vec2 b = app.camera.worldToScreen({bounds.max.x, *top});
+    const ImU32 color = uiLightTheme() ? IM_COL32(200, 60, 40, 220) : IM_COL32(255, 120, 90, 220);
+    const float dash = 10.0f * app.uiScale, y = static_cast<float>(a.y);
+    for (float x = static_cast<float>(a.x); x < static_cast<float>(b.x); x += 2.0f * dash) {
+        dl->AddLine(ImVec2(x, y), ImVec2(std::min(x + dash, static_cast<float>(b.x)), y), color,
+                    2.0f * app.uiScale);
+    }
+    char text[64];
+    std::snprintf(text, sizeof text, "top of the stack at the start: %s m",
+                  formatNumber(*top).c_str());
+    shadowText(dl, ImVec2(static_cast<float>(a.x) + 6.0f, y - ImGui::GetFontSize() - 4.0f), color,
+               text, packed(theme().textShadow));
 }
 
 void drawFlingReadout(const App& app, ImDrawList* dl) {
@@ -224,9 +359,14 @@ void handleSceneMouse(App& app) {
 
 void drawSceneDecorations(const App& app) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    ImGui::PushFont(uiLabelFont()); // the scene's labels have a size of their own
     drawAxisNumbers(app, dl);
+    drawReferenceLine(app, dl);
     drawLabels(app, dl);
+    drawArrowValues(app, dl);
+    drawLargeCount(app, dl);
     drawBadge(app, dl);
     drawFlingReadout(app, dl);
+    ImGui::PopFont();
     drawHoverTooltip(app);
 }

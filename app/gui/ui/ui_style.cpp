@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 
@@ -10,6 +11,9 @@ namespace {
 constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 constexpr float kBaseFontPx = 16.0f;
 float gScale = 0.0f;
+float gLabelScale = 1.0f;
+bool gLight = false;
+ImFont* gLabelFont = nullptr;
 
 bool fileExists(const char* path) {
     if (std::FILE* f = std::fopen(path, "rb")) {
@@ -19,8 +23,26 @@ bool fileExists(const char* path) {
     return false;
 }
 
-void setTheme(ImGuiStyle& style) {
-    ImGui::StyleColorsDark(&style);
+// The light theme: ImGui's light colours, windows opaque, the title bars in the same blue.
+void setLightColors(ImGuiStyle& style) {
+    ImGui::StyleColorsLight(&style);
+    ImVec4* c = style.Colors;
+    c[ImGuiCol_WindowBg] = ImVec4(0.96f, 0.96f, 0.95f, 0.98f);
+    c[ImGuiCol_PopupBg] = ImVec4(0.98f, 0.98f, 0.97f, 0.99f);
+    c[ImGuiCol_TitleBg] = ImVec4(0.30f, 0.45f, 0.68f, 1.0f);
+    c[ImGuiCol_TitleBgActive] = ImVec4(0.30f, 0.45f, 0.68f, 1.0f);
+    c[ImGuiCol_TitleBgCollapsed] = ImVec4(0.30f, 0.45f, 0.68f, 1.0f);
+    c[ImGuiCol_Text] = ImVec4(0.05f, 0.05f, 0.08f, 1.0f);
+    c[ImGuiCol_FrameBg] = ImVec4(0.86f, 0.87f, 0.90f, 1.0f);
+    c[ImGuiCol_Button] = ImVec4(0.62f, 0.74f, 0.92f, 1.0f);
+    c[ImGuiCol_Header] = ImVec4(0.80f, 0.84f, 0.91f, 1.0f);
+}
+
+void setTheme(ImGuiStyle& style, bool light) {
+    if (light)
+        setLightColors(style);
+    else
+        ImGui::StyleColorsDark(&style);
     style.WindowRounding = 6.0f;
     style.FrameRounding = 4.0f;
     style.GrabRounding = 4.0f;
@@ -34,6 +56,7 @@ void setTheme(ImGuiStyle& style) {
     // No anti-aliased fringe around filled shapes: it doubled the triangles of the panel, and
     // every thin triangle costs a software rasteriser; rounded corners stay smooth enough.
     style.AntiAliasedFill = false;
+    if (light) return;
     ImVec4* c = style.Colors;
     c[ImGuiCol_WindowBg] = ImVec4(0.105f, 0.113f, 0.140f, 0.97f);
     c[ImGuiCol_PopupBg] = ImVec4(0.12f, 0.13f, 0.16f, 0.98f);
@@ -55,6 +78,10 @@ void setTheme(ImGuiStyle& style) {
     c[ImGuiCol_Separator] = ImVec4(0.28f, 0.30f, 0.36f, 1.0f);
 }
 
+void setTheme(ImGuiStyle& style) {
+    setTheme(style, gLight);
+}
+
 } // namespace
 
 void uiCreateContext(const char* iniPath) {
@@ -64,6 +91,7 @@ void uiCreateContext(const char* iniPath) {
     io.IniFilename = iniPath;
     setTheme(ImGui::GetStyle());
     gScale = 0.0f;
+    gLabelFont = nullptr;
 }
 
 void uiDestroyContext() {
@@ -74,11 +102,7 @@ float uiCurrentScale() {
     return gScale;
 }
 
-void uiApplyScale(float scale) {
-    if (scale == gScale) return;
-    gScale = scale;
-    ImGuiIO& io = ImGui::GetIO();
-    io.Fonts->Clear();
+ImFont* addFont(ImGuiIO& io, float px) {
     if (fileExists(kFontPath)) {
         // Glyphs baked at their screen size and snapped to whole pixels: the atlas maps 1:1 onto
         // the screen, so it can be sampled with the nearest texel (see ui_renderer_gl.cpp).
@@ -86,15 +110,43 @@ void uiApplyScale(float scale) {
         config.OversampleH = 1;
         config.OversampleV = 1;
         config.PixelSnapH = true;
-        io.Fonts->AddFontFromFileTTF(kFontPath, kBaseFontPx * scale, &config);
-    } else {
-        ImFontConfig config;
-        config.SizePixels = 13.0f * scale;
-        io.Fonts->AddFontDefault(&config);
+        return io.Fonts->AddFontFromFileTTF(kFontPath, px, &config);
     }
-    io.Fonts->Build();
+    ImFontConfig config;
+    config.SizePixels = px * 13.0f / kBaseFontPx;
+    return io.Fonts->AddFontDefault(&config);
+}
+
+bool uiApplyLook(float scale, float labelScale, bool light) {
+    const bool fonts = scale != gScale || labelScale != gLabelScale || !gLabelFont;
+    if (!fonts && light == gLight) return false;
+    gScale = scale;
+    gLabelScale = labelScale;
+    gLight = light;
+    if (fonts) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.Fonts->Clear();
+        addFont(io, kBaseFontPx * scale); // the first font is ImGui's default: the UI's
+        // The scene's labels: a font of their own size (a scaled UI font would be blurred).
+        gLabelFont = labelScale == 1.0f ? io.Fonts->Fonts[0]
+                                        : addFont(io, std::round(kBaseFontPx * scale * labelScale));
+        io.Fonts->Build();
+    }
     ImGuiStyle style;
-    setTheme(style);
+    setTheme(style, light);
     style.ScaleAllSizes(scale);
     ImGui::GetStyle() = style;
+    return fonts;
+}
+
+bool uiApplyScale(float scale) {
+    return uiApplyLook(scale, gLabelScale, gLight);
+}
+
+ImFont* uiLabelFont() {
+    return gLabelFont ? gLabelFont : ImGui::GetFont();
+}
+
+bool uiLightTheme() {
+    return gLight;
 }

@@ -5,8 +5,15 @@
 // Creates the ImGui context and sets the theme. `iniPath` null: no ini file (offscreen runs).
 void uiCreateContext(const char* iniPath);
 void uiDestroyContext();
-// Rebuilds the font atlas and style sizes for `scale`. After a change the caller tells the UI
-// renderer (uiRendererFontsChanged), which uploads the new atlas at its next NewFrame.
-void uiApplyScale(float scale);
-// The scale uiApplyScale last applied.
+// Rebuilds the font atlas and style sizes for `scale`, with the scene labels' font at
+// `labelScale` times the UI font, and the dark or light theme. Does only what changed since the
+// last call; true when the fonts changed: the caller then tells the UI renderer
+// (uiRendererFontsChanged), which uploads the new atlas at its next NewFrame.
+bool uiApplyLook(float scale, float labelScale, bool light);
+bool uiApplyScale(float scale); // uiApplyLook with the current label scale and theme
+// The scale uiApplyLook last applied.
 float uiCurrentScale();
+// The font of the scene's labels (block names, axis numbers, the caption): its own size.
+struct ImFont;
+ImFont* uiLabelFont();
+bool uiLightTheme();

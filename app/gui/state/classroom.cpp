@@ -1,0 +1,84 @@
+#include "classroom.h"
+
+#include "text_format.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+EscapeEffect escapeEffect(bool dialogOpen, bool helpOpen, bool presentMode, bool fullscreen) {
+    if (dialogOpen) return EscapeEffect::CloseDialog;
+    if (helpOpen && !presentMode) return EscapeEffect::CloseHelp; // Help is hidden in present mode
+    if (presentMode) return EscapeEffect::LeavePresent;
+    if (fullscreen) return EscapeEffect::LeaveFullscreen;
+    return EscapeEffect::Nothing;
+}
+
+bool hasUnsavedEdits(bool blocksEdited, const WorldSettings& scene, const WorldSettings& now) {
+    return blocksEdited || now.gravity != scene.gravity || now.bounciness != scene.bounciness ||
+           now.method != scene.method || now.dt != scene.dt || now.substeps != scene.substeps;
+}
+
+std::string firstSentence(const std::string& text) {
+    const std::size_t end = text.find(". ");
+    return end == std::string::npos ? text : text.substr(0, end + 1);
+}
+
+std::string presentCaption(const std::string& sceneName, const std::string& description,
+                           Method method, double time, bool withDescription) {
+    char t[48];
+    std::snprintf(t, sizeof t, "t = %.2f s", time);
+    std::string what = sceneName;
+    if (withDescription && !description.empty()) what += ": " + firstSentence(description);
+    return what + "   ·   " + methodName(method) + "   ·   " + t;
+}
+
+std::string startHint(bool paused, double time, bool firstLaunch) {
+    if (!paused || time != 0.0) return "";
+    if (firstLaunch) return "P to play   ·   N one step   ·   F1 help (keys, overlays)";
+    return "P to play";
+}
+
+TypedValue checkTypedValue(const char* what, double typed, double lo, double hi, const char* unit) {
+    TypedValue out;
+    if (std::isnan(typed)) {
+        out.value = lo <= 0.0 && 0.0 <= hi ? 0.0 : lo;
+        out.message =
+            std::string(what) + ": not a number; set to " + formatNumber(out.value) + " " + unit;
+        return out;
+    }
+    out.value = typed < lo ? lo : typed > hi ? hi : typed;
+    if (out.value != typed) {
+        out.message = std::string(what) + " " + formatNumber(typed) + " " + unit + " is outside " +
+                      formatNumber(lo) + " to " + formatNumber(hi) + " " + unit + ": set to " +
+                      formatNumber(out.value) + " " + unit;
+    }
+    return out;
+}
+
+std::optional<double> restingStackTop(const Scene& scene) {
+    const WorldSettings& s = scene.settings;
+    if (!(s.gravity.y < 0.0) || s.gravity.x != 0.0) return std::nullopt;
+    constexpr double kTouch = 1e-9; // m: faces this close count as touching
+    bool any = false;
+    double top = 0.0;
+    for (const BlockDef& b : scene.blocks) {
+        if (b.kind != BodyKind::Dynamic) continue;
+        if (b.velocity != Vec2{}) return std::nullopt;
+        const double bottom = b.position.y - b.size.y * 0.5;
+        bool supported = std::abs(bottom - scene.bounds.min.y) <= kTouch;
+        for (const BlockDef& o : scene.blocks) {
+            if (&o == &b) continue;
+            const bool below = std::abs(o.position.y + o.size.y * 0.5 - bottom) <= kTouch;
+            const bool sideBySide =
+                std::abs(o.position.x - b.position.x) < (o.size.x + b.size.x) * 0.5;
+            if (below && sideBySide) supported = true;
+        }
+        if (!supported) return std::nullopt;
+        const double t = b.position.y + b.size.y * 0.5;
+        top = any ? std::max(top, t) : t;
+        any = true;
+    }
+    if (!any) return std::nullopt;
+    return top;
+}

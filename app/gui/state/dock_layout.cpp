@@ -1,0 +1,153 @@
+#include "dock_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace {
+
+// A rectangle from edges rounded to whole pixels, so neighbours share an edge exactly.
+ScreenRect fromEdges(double x0, double y0, double x1, double y1) {
+    const double l = std::round(x0), t = std::round(y0);
+    const double r = std::max(l, std::round(x1)), b = std::max(t, std::round(y1));
+    return {l, t, r - l, b - t};
+}
+
+// Splits `length` pixels among `items` along a stack: each gets its minimum (all minimums
+// shrunk alike when they do not fit), then what is left by weight. Returns the extents.
+std::vector<double> share(const std::vector<const DockRequest*>& items, double length, double gap,
+                          double scale) {
+    std::vector<double> out(items.size(), 0.0);
+    if (items.empty()) return out;
+    const double usable = std::max(0.0, length - gap * static_cast<double>(items.size() - 1));
+    double mins = 0.0, weights = 0.0;
+    for (const DockRequest* r : items) {
+        mins += std::max(0.0, r->minExtent) * scale;
+        weights += std::max(0.0, r->weight);
+    }
+    const double shrink = mins > usable && mins > 0.0 ? usable / mins : 1.0;
+    const double left = std::max(0.0, usable - mins * shrink);
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        const double w = std::max(0.0, items[i]->weight);
+        const double extra =
+            weights > 0.0 ? left * w / weights : left / static_cast<double>(items.size());
+        out[i] = std::max(0.0, items[i]->minExtent) * scale * shrink + extra;
+    }
+    return out;
+}
+
+double wanted(const std::vector<const DockRequest*>& items, double scale) {
+    double w = 0.0;
+    for (const DockRequest* r : items) w = std::max(w, r->crossExtent * scale);
+    return w;
+}
+
+} // namespace
+
+const ScreenRect* Layout::find(const std::string& name) const {
+    for (const DockedWindow& w : windows) {
+        if (w.name == name) return &w.rect;
+    }
+    return nullptr;
+}
+
+Layout computeLayout(const LayoutInput& in) {
+    Layout out;
+    const double W = std::max(1.0, in.displayWidth), H = std::max(1.0, in.displayHeight);
+    const double s = in.uiScale > 0.0f ? static_cast<double>(in.uiScale) : 1.0;
+    const double panel = std::clamp(in.panelWidth, 0.0, W * 0.5);
+    out.panel = panel > 0.0 ? fromEdges(0.0, 0.0, panel, H) : ScreenRect{0.0, 0.0, 0.0, H};
+    const double areaX = out.panel.width, areaW = W - areaX;
+
+    std::vector<const DockRequest*> right, bottom;
+    for (const DockRequest& r : in.windows) {
+        (r.side == DockSide::Right ? right : bottom).push_back(&r);
+    }
+    const double columnW = right.empty()
+                               ? 0.0
+                               : std::min(std::max(wanted(right, s), areaW * kMinColumnShare),
+                                          areaW * kMaxColumnShare);
+    const double stripH = bottom.empty() ? 0.0
+                                         : std::min(std::max(wanted(bottom, s), H * kMinStripShare),
+                                                    H * kMaxStripShare);
+    const double columnX = W - columnW, stripY = H - stripH;
+    const double top = std::clamp(in.topInset, 0.0, std::max(0.0, stripY - 1.0));
+    const double gap = kDockGap * s;
+
+    // The right column, above the strip, windows stacked top to bottom.
+    const double columnH = bottom.empty() ? H : stripY;
+    const std::vector<double> heights = share(right, columnH - top, gap, s);
+    double y = top;
+    for (std::size_t i = 0; i < right.size(); ++i) {
+        const double y1 = i + 1 == right.size() ? columnH : y + heights[i];
+        out.windows.push_back({right[i]->name, fromEdges(columnX + gap, y, W, y1)});
+        y = y1 + gap;
+    }
+    // The bottom strip, from the panel to the right edge (under the column), left to right.
+    const double stripX0 = areaX + (panel > 0.0 ? gap : 0.0);
+    const std::vector<double> widths = share(bottom, W - stripX0, gap, s);
+    double x = stripX0;
+    for (std::size_t i = 0; i < bottom.size(); ++i) {
+        const double x1 = i + 1 == bottom.size() ? W : x + widths[i];
+        out.windows.push_back({bottom[i]->name, fromEdges(x, stripY + gap, x1, H)});
+        x = x1 + gap;
+    }
+    out.scene = fromEdges(areaX, top, std::max(areaX + 1.0, columnX), std::max(top + 1.0, stripY));
+    return out;
+}
+
+bool rectsOverlap(const ScreenRect& a, const ScreenRect& b) {
+    return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height &&
+           b.y < a.y + a.height;
+}
+
+bool rectInside(const ScreenRect& inner, const ScreenRect& outer) {
+    return inner.x >= outer.x && inner.y >= outer.y &&
+           inner.x + inner.width <= outer.x + outer.width &&
+           inner.y + inner.height <= outer.y + outer.height;
+}
+
+ScreenRect worldRectOnScreen(const Camera& camera, const Bounds& bounds) {
+    const Vec2 a = camera.worldToScreen(bounds.min), b = camera.worldToScreen(bounds.max);
+    const double x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
+    return {x0, y0, std::max(a.x, b.x) - x0, std::max(a.y, b.y) - y0};
+}
+
+namespace {
+
+std::string jsonRect(const ScreenRect& r) {
+    char text[128];
+    std::snprintf(text, sizeof text, "[%.10g, %.10g, %.10g, %.10g]", r.x, r.y, r.width, r.height);
+    return text;
+}
+
+std::string jsonString(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        const unsigned char u = static_cast<unsigned char>(c);
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (u < 0x20) {
+            char esc[8];
+            std::snprintf(esc, sizeof esc, "\\u%04x", u);
+            out += esc;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+} // namespace
+
+std::string layoutJson(const ScreenRect& scene, const ScreenRect& world,
+                       const std::vector<DockedWindow>& windows) {
+    std::string out =
+        "{\"scene\": " + jsonRect(scene) + ", \"world\": " + jsonRect(world) + ", \"windows\": [";
+    for (std::size_t i = 0; i < windows.size(); ++i) {
+        out += (i ? ", " : "") + std::string("{\"name\": ") + jsonString(windows[i].name) +
+               ", \"rect\": " + jsonRect(windows[i].rect) + "}";
+    }
+    return out + "]}\n";
+}

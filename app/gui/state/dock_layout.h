@@ -1,0 +1,81 @@
+// The docked layout: where the controls panel, the overlay windows and the scene go on screen.
+// The panel is a column on the left; docked overlay windows stack in a column on the right and
+// side by side in a strip along the bottom (right of the panel, under the column); the scene
+// takes the rectangle that is left, and the
+// camera fits the world into it, so no docked window ever covers the world. Pure logic (no GL,
+// no ImGui): given the display size, the UI scale, the panel and the visible windows with their
+// wishes, it returns rectangles in screen pixels (whole pixels, inside the display, disjoint).
+#pragma once
+
+#include "camera.h"
+
+#include <string>
+#include <vector>
+
+enum class DockSide { Right, Bottom };
+
+// Where a window docks, as the overlay table (overlays.h) states it: the fields of DockRequest
+// without the name.
+struct DockWish {
+    DockSide side = DockSide::Right;
+    double minExtent = 120.0;
+    double weight = 1.0;
+    double crossExtent = 360.0;
+};
+
+// What a window asks of the layout. Sizes are pixels at UI scale 1 (scaled by the UI scale).
+struct DockRequest {
+    std::string name;
+    DockSide side = DockSide::Right;
+    // Along the region's stack (a height in the right column, a width in the bottom strip): the
+    // least the window needs, and its weight in sharing what is left once every window has that.
+    double minExtent = 120.0;
+    double weight = 1.0;
+    // Across the region (the column's width, the strip's height): what the window would like.
+    double crossExtent = 360.0;
+};
+
+struct LayoutInput {
+    double displayWidth = 1280.0;
+    double displayHeight = 720.0;
+    float uiScale = 1.0f;
+    double panelWidth = 0.0; // 0: no panel (hidden, or present mode)
+    double topInset = 0.0;   // px right of the panel kept free at the top (a lesson's caption)
+    std::vector<DockRequest> windows;
+};
+
+struct DockedWindow {
+    std::string name;
+    ScreenRect rect;
+};
+
+struct Layout {
+    ScreenRect panel; // width 0 when there is none
+    ScreenRect scene; // what the scene view gets
+    std::vector<DockedWindow> windows;
+    // The rectangle of window `name`, or nullptr when it is not docked.
+    const ScreenRect* find(const std::string& name) const;
+};
+
+// Shares of the display the regions never go beyond, so the scene keeps at least about half of
+// what the panel leaves in each direction.
+constexpr double kMaxColumnShare = 0.42; // of the width right of the panel
+constexpr double kMinColumnShare = 0.30;
+constexpr double kMaxStripShare = 0.38; // of the height
+constexpr double kMinStripShare = 0.15;
+// Pixels (at UI scale 1) between neighbouring windows.
+constexpr double kDockGap = 4.0;
+
+Layout computeLayout(const LayoutInput& input);
+
+// True when the two rectangles share positive area (touching edges do not count).
+bool rectsOverlap(const ScreenRect& a, const ScreenRect& b);
+// True when `inner` lies inside `outer` (edges may coincide).
+bool rectInside(const ScreenRect& inner, const ScreenRect& outer);
+// The world's bounds on screen through `camera` (top-left corner and size, y down).
+ScreenRect worldRectOnScreen(const Camera& camera, const Bounds& bounds);
+
+// The --layout-json document (SPEC): rectangles as [x, y, w, h] in image pixels,
+//   {"scene": [...], "world": [...], "windows": [{"name": "Plots", "rect": [...]}, ...]}
+std::string layoutJson(const ScreenRect& scene, const ScreenRect& world,
+                       const std::vector<DockedWindow>& windows);

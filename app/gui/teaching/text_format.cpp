@@ -1,0 +1,117 @@
+#include "text_format.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+bool isRoundingNoise(double value, double scale) {
+    if (!std::isfinite(value)) return false;
+    const double s = std::isfinite(scale) ? std::max(std::abs(scale), 1.0) : 1.0;
+    return std::abs(value) <= kNoiseRelative * s;
+}
+
+std::string formatNumber(double value, double scale) {
+    if (std::isnan(value)) return "nan";
+    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    if (isRoundingNoise(value, scale)) return "0";
+    char text[48];
+    const double a = std::abs(value);
+    if (a >= 1e6) {
+        if (a < 1e12 && value == std::round(value))
+            std::snprintf(text, sizeof text, "%.0f", value);
+        else
+            std::snprintf(text, sizeof text, "%.3g", value);
+        return text;
+    }
+    if (a < 5e-4) {
+        std::snprintf(text, sizeof text, "%.3g", value);
+        std::string s = text;
+        // "%.3g" writes 1.23e-05 below 1e-4; a fixed form reads better down to 1e-6.
+        if (a >= 1e-6 && s.find('e') != std::string::npos) {
+            std::snprintf(text, sizeof text, "%.*f", a >= 1e-5 ? 7 : 8, value);
+            s = text;
+            while (!s.empty() && s.back() == '0') s.pop_back();
+        }
+        return s;
+    }
+    std::snprintf(text, sizeof text, "%.3f", value);
+    std::string s = text;
+    while (!s.empty() && s.back() == '0') s.pop_back();
+    if (!s.empty() && s.back() == '.') s.pop_back();
+    if (s == "-0") s = "0";
+    return s;
+}
+
+std::string operand(double value) {
+    const std::string s = formatNumber(value);
+    return !s.empty() && s[0] == '-' ? "(" + s + ")" : s;
+}
+
+std::string formatQuantity(double value, const char* unit) {
+    return formatNumber(value) + " " + unit;
+}
+
+namespace {
+
+std::string trimmed(const std::string& s) {
+    std::size_t a = 0, b = s.size();
+    while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
+    while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
+    return s.substr(a, b - a);
+}
+
+// True when `text` is a number followed by "kg" (spaces allowed around both).
+bool isMassText(const std::string& text) {
+    const std::string t = trimmed(text);
+    if (t.size() < 3 || t.compare(t.size() - 2, 2, "kg") != 0) return false;
+    const std::string number = trimmed(t.substr(0, t.size() - 2));
+    if (number.empty()) return false;
+    char* end = nullptr;
+    std::strtod(number.c_str(), &end);
+    return end && *end == '\0';
+}
+
+// Where the mass part of `name` starts ("m1 = 1 kg": at " = "; "A (2 kg)": at " ("), or npos.
+std::size_t massPart(const std::string& name) {
+    const std::size_t eq = name.rfind('=');
+    if (eq != std::string::npos && eq > 0 && isMassText(name.substr(eq + 1))) return eq;
+    const std::size_t open = name.rfind('(');
+    if (open != std::string::npos && open > 0 && !name.empty() && name.back() == ')' &&
+        isMassText(name.substr(open + 1, name.size() - open - 2))) {
+        return open;
+    }
+    return std::string::npos;
+}
+
+} // namespace
+
+std::string baseBlockName(const std::string& name) {
+    const std::size_t at = massPart(name);
+    return at == std::string::npos ? name : trimmed(name.substr(0, at));
+}
+
+bool nameStatesMass(const std::string& name) {
+    return massPart(name) != std::string::npos;
+}
+
+std::string nameWithMass(const std::string& name, double mass) {
+    const std::size_t at = massPart(name);
+    if (at == std::string::npos) return name;
+    const std::string base = trimmed(name.substr(0, at));
+    const std::string m = std::isfinite(mass) ? formatNumber(mass) + " kg" : "infinite mass";
+    return name[at] == '=' ? base + " = " + m : base + " (" + m + ")";
+}
+
+std::string formulaSymbol(const std::string& name) {
+    const std::string base = baseBlockName(name);
+    if (base.empty() || base.size() > 3) return "";
+    for (char c : base) {
+        if (!std::isalnum(static_cast<unsigned char>(c))) return "";
+    }
+    // "m1" is already a mass symbol: its bodies' symbols are m1 and v1.
+    if (base.size() >= 2 && base[0] == 'm' && std::isdigit(static_cast<unsigned char>(base[1])))
+        return base.substr(1);
+    return base;
+}

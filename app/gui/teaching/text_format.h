@@ -1,0 +1,34 @@
+// How numbers and names read on screen: short, readable numbers with floating-point noise shown
+// as 0 (a student must never see "t = 6.56e-13 of the frame"), and block names that carry the
+// current mass ("m1 = 1 kg" becomes "m1 = 3 kg" when the mass is changed to 3). Pure functions.
+#pragma once
+
+#include <string>
+
+// Values this close to zero, relative to the scale of what they are compared with, are rounding
+// noise (a double carries about 16 digits; the engine's sums lose a few).
+constexpr double kNoiseRelative = 1e-9;
+
+// True when |value| <= kNoiseRelative · max(|scale|, 1): noise around zero for a quantity of that
+// scale (scale 1 for fractions and for values in SI units of everyday size).
+bool isRoundingNoise(double value, double scale = 1.0);
+// A number as the UI writes it: rounding noise as "0"; up to 3 decimals, trailing zeros dropped
+// ("2", "-0.5", "0.625"); 3 significant digits below 0.0005 ("0.000123"); whole numbers up to a
+// trillion written out ("1000000"), larger ones as "1.5e+12"; "inf" for infinity.
+std::string formatNumber(double value, double scale = 1.0);
+// formatNumber, in parentheses when negative (an operand after an operator: "1·(-2)").
+std::string operand(double value);
+// formatNumber with a unit: "0.625 s", "6 m/s".
+std::string formatQuantity(double value, const char* unit);
+
+// A block's name without a mass written into it: "m1 = 1 kg" -> "m1", "heavy (5 kg)" -> "heavy";
+// other names unchanged.
+std::string baseBlockName(const std::string& name);
+// True when the scene's name for a block states its mass ("m1 = 1 kg", "A (2 kg)").
+bool nameStatesMass(const std::string& name);
+// The name to show for a block of `mass` (kg; infinite for static and kinematic blocks): a name
+// that states a mass states this one ("m1 = 3 kg"); others are shown as they are.
+std::string nameWithMass(const std::string& name, double mass);
+// The suffix the lecture's formula gives a body's symbols (m1, v1): "1" for "m1", "A" for "A";
+// "" when the name is not a short symbol.
+std::string formulaSymbol(const std::string& name);

@@ -1,0 +1,475 @@
+// Classroom presentation logic without GL: the docked layout (no window over the world, none off
+// screen), numbers as students read them, block names with the current mass, save naming.
+#include "classroom.h"
+#include "dock_layout.h"
+#include "inspector_format.h"
+#include "palette.h"
+#include "save_naming.h"
+#include "scene_geometry.h"
+#include "scene_library.h"
+#include "text_format.h"
+#include "timeline.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+namespace {
+
+// Every overlay window, with the wishes the app gives them (overlay table).
+std::vector<DockRequest> everyWindow() {
+    return {{"Plots", DockSide::Right, 240, 3, 400},
+            {"Collision inspector", DockSide::Right, 200, 2, 430},
+            {"Speed versus accuracy", DockSide::Right, 260, 2, 400},
+            {"Timeline", DockSide::Bottom, 330, 1, 100},
+            {"Methods side by side", DockSide::Bottom, 480, 2, 150},
+            {"Momenta", DockSide::Bottom, 200, 1, 200}};
+}
+
+void expectSound(const Layout& l, double w, double h) {
+    const ScreenRect screen{0, 0, w, h};
+    EXPECT_TRUE(rectInside(l.scene, screen));
+    EXPECT_GT(l.scene.width, w * 0.3);
+    EXPECT_GT(l.scene.height, h * 0.5);
+    if (l.panel.width > 0) {
+        EXPECT_TRUE(rectInside(l.panel, screen));
+        EXPECT_FALSE(rectsOverlap(l.panel, l.scene));
+    }
+    for (std::size_t i = 0; i < l.windows.size(); ++i) {
+        const ScreenRect& r = l.windows[i].rect;
+        EXPECT_TRUE(rectInside(r, screen)) << l.windows[i].name;
+        EXPECT_GT(r.width, 50.0) << l.windows[i].name;
+        EXPECT_GT(r.height, 50.0) << l.windows[i].name;
+        EXPECT_FALSE(rectsOverlap(r, l.scene)) << l.windows[i].name;
+        if (l.panel.width > 0) {
+            EXPECT_FALSE(rectsOverlap(r, l.panel)) << l.windows[i].name;
+        }
+        for (std::size_t j = i + 1; j < l.windows.size(); ++j) {
+            EXPECT_FALSE(rectsOverlap(r, l.windows[j].rect))
+                << l.windows[i].name << " / " << l.windows[j].name;
+        }
+        // Whole pixels, so neighbours never overlap by rounding.
+        EXPECT_EQ(r.x, std::round(r.x));
+        EXPECT_EQ(r.width, std::round(r.width));
+    }
+}
+
+TEST(DockLayout, EveryWindowAtTheFourClassroomSizes) {
+    for (const auto& size : {std::pair<double, double>{1280, 720}, {1920, 1080}}) {
+        for (float scale : {1.0f, 1.5f}) {
+            LayoutInput in;
+            in.displayWidth = size.first;
+            in.displayHeight = size.second;
+            in.uiScale = scale;
+            in.panelWidth = std::min(350.0 * scale, size.first * 0.45);
+            in.windows = everyWindow();
+            const Layout l = computeLayout(in);
+            SCOPED_TRACE(std::to_string(size.first) + "x" + std::to_string(scale));
+            ASSERT_EQ(l.windows.size(), in.windows.size());
+            expectSound(l, size.first, size.second);
+            EXPECT_DOUBLE_EQ(l.scene.x, l.panel.width); // the scene starts where the panel ends
+        }
+    }
+}
+
+TEST(DockLayout, ATopInsetKeepsTheSceneAndTheColumnBelowIt) {
+    LayoutInput in;
+    in.panelWidth = 350.0;
+    in.topInset = 100.0; // a lesson's caption
+    in.windows = everyWindow();
+    const Layout l = computeLayout(in);
+    expectSound(l, 1280, 720);
+    EXPECT_DOUBLE_EQ(l.scene.y, 100.0);
+    EXPECT_DOUBLE_EQ(l.find("Plots")->y, 100.0);
+}
+
+TEST(DockLayout, NoWindowsNoPanelGivesTheSceneEverything) {
+    LayoutInput in;
+    in.panelWidth = 0.0;
+    const Layout l = computeLayout(in);
+    EXPECT_DOUBLE_EQ(l.scene.x, 0.0);
+    EXPECT_DOUBLE_EQ(l.scene.width, 1280.0);
+    EXPECT_DOUBLE_EQ(l.scene.height, 720.0);
+    EXPECT_TRUE(l.windows.empty());
+    EXPECT_EQ(l.find("Plots"), nullptr);
+}
+
+TEST(DockLayout, RightColumnOnlyLeavesTheFullHeightAndStacksByWeight) {
+    LayoutInput in;
+    in.panelWidth = 350.0;
+    in.windows = {{"a", DockSide::Right, 100, 3, 360}, {"b", DockSide::Right, 100, 1, 360}};
+    const Layout l = computeLayout(in);
+    expectSound(l, 1280, 720);
+    EXPECT_DOUBLE_EQ(l.scene.height, 720.0);
+    const ScreenRect* a = l.find("a");
+    const ScreenRect* b = l.find("b");
+    ASSERT_TRUE(a && b);
+    EXPECT_LT(a->y, b->y);                                   // stacked top to bottom
+    EXPECT_GT(a->height, b->height);                         // weight 3 against 1
+    EXPECT_DOUBLE_EQ(b->y + b->height, 720.0);               // down to the bottom edge
+    EXPECT_DOUBLE_EQ(a->x + a->width, 1280.0);               // against the right edge
+    EXPECT_DOUBLE_EQ(l.scene.x + l.scene.width + 4.0, a->x); // the column starts after a gap
+}
+
+TEST(DockLayout, BottomStripOnlySpansFromThePanelToTheEdge) {
+    LayoutInput in;
+    in.panelWidth = 350.0;
+    in.windows = {{"t", DockSide::Bottom, 200, 1, 80}};
+    const Layout l = computeLayout(in);
+    expectSound(l, 1280, 720);
+    const ScreenRect* t = l.find("t");
+    ASSERT_TRUE(t);
+    EXPECT_DOUBLE_EQ(l.scene.width, 1280.0 - 350.0);
+    EXPECT_DOUBLE_EQ(t->x + t->width, 1280.0);
+    EXPECT_GE(t->y, l.scene.y + l.scene.height);
+    EXPECT_NEAR(t->height, 720 * kMinStripShare - 4.0,
+                1.0); // 110 px is less than the minimum share
+}
+
+TEST(DockLayout, MinimumsThatDoNotFitShrinkAlikeAndStayInside) {
+    LayoutInput in;
+    in.displayWidth = 640;
+    in.displayHeight = 360;
+    in.uiScale = 2.0f;
+    in.panelWidth = 280;
+    for (int i = 0; i < 6; ++i) in.windows.push_back({"w" + std::to_string(i), DockSide::Right});
+    const Layout l = computeLayout(in);
+    const ScreenRect screen{0, 0, 640, 360};
+    for (const DockedWindow& w : l.windows) {
+        EXPECT_TRUE(rectInside(w.rect, screen)) << w.name;
+        EXPECT_FALSE(rectsOverlap(w.rect, l.scene)) << w.name;
+    }
+}
+
+TEST(DockLayout, WorldRectOnScreenFollowsTheCamera) {
+    Camera cam;
+    cam.setViewport({350, 0, 600, 500});
+    cam.fit(Bounds{{0, 0}, {20, 12}}, 36);
+    const ScreenRect w = worldRectOnScreen(cam, Bounds{{0, 0}, {20, 12}});
+    EXPECT_TRUE(rectInside(w, cam.viewport()));
+    EXPECT_NEAR(w.width / w.height, 20.0 / 12.0, 1e-9);
+    EXPECT_NEAR(w.x - 350, 36, 1e-9); // the width is the limit: 36 px margin left and right
+}
+
+TEST(DockLayout, LayoutJsonIsTheSpecsDocument) {
+    const std::string json =
+        layoutJson({350, 0, 600, 500}, {386, 70, 528, 316.8},
+                   {{"Plots", {954, 0, 326, 300}}, {"a \"b\"\n", {0, 0, 1, 1}}});
+    EXPECT_EQ(json, "{\"scene\": [350, 0, 600, 500], \"world\": [386, 70, 528, 316.8], "
+                    "\"windows\": [{\"name\": \"Plots\", \"rect\": [954, 0, 326, 300]}, "
+                    "{\"name\": \"a \\\"b\\\"\\u000a\", \"rect\": [0, 0, 1, 1]}]}\n");
+    EXPECT_EQ(layoutJson({0, 0, 1280, 720}, {36, 36, 10, 10}, {}),
+              "{\"scene\": [0, 0, 1280, 720], \"world\": [36, 36, 10, 10], \"windows\": []}\n");
+}
+
+TEST(TextFormat, RoundingNoiseReadsAsZero) {
+    EXPECT_EQ(formatNumber(6.56e-13), "0");  // "t = 6.56e-13 of the frame"
+    EXPECT_EQ(formatNumber(-7.11e-15), "0"); // "a = 7.11e-15 m"
+    EXPECT_EQ(formatNumber(-1e-12), "0");
+    EXPECT_EQ(formatNumber(2e-9, 1e3), "0"); // noise relative to the scale of the quantity
+    EXPECT_EQ(formatNumber(2e-9), "2e-09");  // above the noise of a quantity of scale 1
+    EXPECT_TRUE(isRoundingNoise(1e-10));
+    EXPECT_FALSE(isRoundingNoise(1e-6));
+    EXPECT_FALSE(isRoundingNoise(INFINITY));
+}
+
+TEST(TextFormat, ReadablePrecision) {
+    EXPECT_EQ(formatNumber(2.0), "2");
+    EXPECT_EQ(formatNumber(-2.0), "-2");
+    EXPECT_EQ(formatNumber(0.625), "0.625");
+    EXPECT_EQ(formatNumber(1.0 / 3.0), "0.333");
+    EXPECT_EQ(formatNumber(-0.0), "0");
+    EXPECT_EQ(formatNumber(0.000123), "0.000123");
+    EXPECT_EQ(formatNumber(1.5e-5), "0.000015");
+    EXPECT_EQ(formatNumber(1e6), "1000000");
+    EXPECT_EQ(formatNumber(1.5e12), "1.5e+12");
+    EXPECT_EQ(formatNumber(INFINITY), "inf");
+    EXPECT_EQ(formatQuantity(0.625, "s"), "0.625 s");
+    EXPECT_EQ(operand(-2.0), "(-2)");
+    EXPECT_EQ(operand(4.0), "4");
+}
+
+TEST(TextFormat, NamesCarryTheCurrentMass) {
+    EXPECT_EQ(baseBlockName("m1 = 1 kg"), "m1");
+    EXPECT_EQ(baseBlockName("heavy (5 kg)"), "heavy");
+    EXPECT_EQ(baseBlockName("bullet"), "bullet");
+    EXPECT_EQ(baseBlockName("x = 3"), "x = 3"); // not a mass
+    EXPECT_TRUE(nameStatesMass("m2 = 2 kg"));
+    EXPECT_FALSE(nameStatesMass("giant"));
+    EXPECT_EQ(nameWithMass("m1 = 1 kg", 3.0), "m1 = 3 kg");
+    EXPECT_EQ(nameWithMass("heavy (5 kg)", 0.5), "heavy (0.5 kg)");
+    EXPECT_EQ(nameWithMass("m1 = 1 kg", INFINITY), "m1 = infinite mass");
+    EXPECT_EQ(nameWithMass("giant", 3.0), "giant");
+    EXPECT_EQ(formulaSymbol("m1 = 1 kg"), "1");
+    EXPECT_EQ(formulaSymbol("A"), "A");
+    EXPECT_EQ(formulaSymbol("bullet"), "");
+}
+
+CollisionRecord wallHit() {
+    CollisionRecord r;
+    r.time = 1.5;
+    r.block = 1;
+    r.other = kWallRight;
+    r.axis = 0;
+    r.m1 = 2.0;
+    r.m2 = INFINITY;
+    r.v1 = 4.0;
+    r.u = 0.0;
+    r.C = 0.5;
+    r.v1After = -2.0;
+    return r;
+}
+
+TEST(InspectorNames, AWallHitNamesTheBlockThatHit) {
+    const CollisionFormula f = collisionFormula(wallHit(), "m2 = 2 kg", wallName(kWallRight));
+    EXPECT_EQ(f.title, "m2 = 2 kg  hits  right wall  along x at t = 1.5 s");
+    EXPECT_EQ(f.given, "m2 = 2, v2 = 4, C = 0.5; the right wall does not move");
+    EXPECT_EQ(f.v1After, "v2' = 0 - 0.5·(4 - 0) = -2");
+    EXPECT_EQ(f.momentumBefore, "p2 before = 2·4 = 8 kg·m/s");
+    EXPECT_TRUE(f.v2After.empty());
+    const CollisionFormula g = collisionFormula(wallHit(), "bullet", "floor");
+    EXPECT_EQ(g.v1After, "v' = 0 - 0.5·(4 - 0) = -2");
+}
+
+TEST(InspectorNames, SymbolsFollowTheNamesInEitherOrder) {
+    CollisionRecord r;
+    r.block = 1;
+    r.other = 0;
+    r.m1 = 2.0;
+    r.m2 = 1.0;
+    r.v1 = -2.0;
+    r.v2 = 4.0;
+    r.u = 0.0;
+    r.C = 0.0;
+    const CollisionFormula f = collisionFormula(r, "m2 = 2 kg", "m1 = 1 kg");
+    EXPECT_EQ(f.given, "m2 = 2, m1 = 1, v2 = -2, v1 = 4, C = 0");
+    EXPECT_EQ(f.u, "u = (2·(-2) + 1·4)/(2 + 1) = 0");
+    const CollisionFormula g = collisionFormula(r, "left", "right");
+    EXPECT_EQ(g.given, "m1 = 2, m2 = 1, v1 = -2, v2 = 4, C = 0");
+}
+
+TEST(SaveNaming, OffersANameFromTheSceneAndNeverAnExistingFile) {
+    EXPECT_EQ(sceneFileStem("Lecture example 1"), "lecture_example_1");
+    EXPECT_EQ(sceneFileStem("High mass ratio (counting pi)"), "high_mass_ratio_counting_pi");
+    EXPECT_EQ(sceneFileStem("!!!"), "scene");
+    std::set<std::string> taken = {"/home/u/lecture_example_1.json",
+                                   "/home/u/lecture_example_1-2.json"};
+    const auto exists = [&taken](const std::string& p) { return taken.count(p) > 0; };
+    EXPECT_EQ(suggestSavePath("Lecture example 1", "/home/u", exists),
+              "/home/u/lecture_example_1-3.json");
+    EXPECT_EQ(suggestSavePath("Two blocks", "/home/u/", exists), "/home/u/two_blocks.json");
+}
+
+TEST(SaveNaming, PathsAreAbsolute) {
+    EXPECT_EQ(absoluteScenePath("my_scene", "/home/u"), "/home/u/my_scene.json");
+    EXPECT_EQ(absoluteScenePath("../x/a.json", "/home/u/work"), "/home/u/x/a.json");
+    EXPECT_EQ(absoluteScenePath("/tmp/b.json", "/home/u"), "/tmp/b.json");
+    EXPECT_EQ(absoluteScenePath("", "/home/u"), "");
+}
+
+TEST(SaveNaming, TheDescriptionSaysWhichSettingsChanged) {
+    WorldSettings original;
+    original.gravity = Vec2{0, 0};
+    WorldSettings now = original;
+    EXPECT_FALSE(settingsDiffer(original, now));
+    EXPECT_EQ(savedDescription("A block, no gravity.", original, now), "A block, no gravity.");
+    now.gravity = Vec2{0, -9.81};
+    now.method = Method::TurnBased;
+    EXPECT_TRUE(settingsDiffer(original, now));
+    EXPECT_EQ(savedDescription("A block, no gravity.", original, now),
+              "A block, no gravity. Saved with changed settings: gravity (0, -9.81) m/s², method "
+              "turn-based.");
+    now = original;
+    now.dt = 1.0 / 120.0;
+    EXPECT_EQ(changedSettingsNote(original, now),
+              "Saved with changed settings: frame rate 120 Hz.");
+}
+
+TEST(Arrows, ShortArrowsToScaleLongOnesCompressedWithTheirHeadsOnScreen) {
+    EXPECT_DOUBLE_EQ(displayedArrowPx(50, 100), 50);
+    EXPECT_GT(displayedArrowPx(300, 100), 100);
+    EXPECT_LE(displayedArrowPx(1e9, 100), 200);
+    Camera cam;
+    cam.setViewport({350, 0, 930, 720});
+    cam.fit(Bounds{{0, 0}, {20, 12}}, 36);
+    // A 1 m/s arrow is drawn to scale.
+    const ArrowOnScreen slow = arrowOnScreen(cam, {10, 6}, Vec2{1, 0} * kVelocityArrowScale);
+    EXPECT_TRUE(slow.toScale);
+    EXPECT_NEAR(slow.tip.x, 10.25, 1e-12);
+    // bullet_wall: 300 m/s from x = 1 would end 75 m away; its head stays in the viewport.
+    const ArrowOnScreen fast = arrowOnScreen(cam, {1, 6}, Vec2{300, 0} * kVelocityArrowScale);
+    EXPECT_FALSE(fast.toScale);
+    EXPECT_TRUE(cam.viewport().contains(cam.worldToScreen(fast.tip)));
+    EXPECT_GT(fast.tip.x, 1.0);
+    EXPECT_NEAR(fast.tip.y, 6.0, 1e-12); // same direction
+    // high_mass_ratio: the giant's momentum 1e6 kg·m/s to the left stays inside on the left.
+    const ArrowOnScreen giant = arrowOnScreen(cam, {10, 6}, Vec2{-1e6, 0} * kMomentumArrowScale);
+    EXPECT_FALSE(giant.toScale);
+    EXPECT_TRUE(cam.viewport().contains(cam.worldToScreen(giant.tip)));
+}
+
+TEST(BlockContrast, ADarkBlockOnTheDarkArenaGetsALightOutline) {
+    Color bullet;
+    ASSERT_TRUE(parseHexColor("#202020", bullet)); // bullet_wall's bullet
+    EXPECT_LT(contrastRatio(bullet, scene_colors::kArena), kMinBlockContrast);
+    const Color o = outlineFor(bullet, scene_colors::kArena);
+    EXPECT_GE(contrastRatio(o, scene_colors::kArena), 7.0);
+    Color red;
+    ASSERT_TRUE(parseHexColor("#d04040", red));
+    EXPECT_GE(contrastRatio(red, scene_colors::kArena), kMinBlockContrast);
+    EXPECT_EQ(outlineFor(red, scene_colors::kArena).packed(), scene_colors::kOutline.packed());
+    // On a light arena a light block gets a dark outline.
+    const Color lightArena{0.95f, 0.95f, 0.93f, 1.0f};
+    const Color pale{0.9f, 0.9f, 0.88f, 1.0f};
+    EXPECT_GE(contrastRatio(outlineFor(pale, lightArena), lightArena), 7.0);
+    EXPECT_DOUBLE_EQ(contrastRatio(red, red), 1.0);
+}
+
+TEST(ScenePicker, ShippedScenesInTheLecturesOrderWithTheirTitles) {
+    const auto list = listScenes(SANDBOX_SCENES_DIR);
+    ASSERT_GE(list.size(), 15u);
+    EXPECT_EQ(list[0].title, "Bouncing squares");
+    auto at = [&list](const std::string& file) {
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            if (std::filesystem::path(list[i].path).filename() == file) return i;
+        }
+        return list.size();
+    };
+    EXPECT_LT(at("lecture_example_1.json"), at("lecture_example_2.json"));
+    EXPECT_LT(at("point_of_impact.json"), at("lecture_example_1.json"));
+    EXPECT_LT(at("lecture_example_2.json"), at("bullet_wall.json"));
+    EXPECT_LT(at("bullet_wall.json"), at("gas_500.json"));
+    for (const SceneEntry& e : list) {
+        const SceneResult r = loadSceneFile(e.path);
+        ASSERT_TRUE(r.scene) << e.path;
+        EXPECT_EQ(e.title, r.scene->name);
+    }
+    // Every scene the order file names exists (a renamed scene must be renamed there too).
+    std::ifstream order(std::filesystem::path(SANDBOX_SCENES_DIR) / kSceneOrderFile);
+    int named = 0;
+    for (std::string line; std::getline(order, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        EXPECT_LT(at(line), list.size()) << line;
+        ++named;
+    }
+    EXPECT_GE(named, 15);
+}
+
+TEST(Classroom, EscapeClosesTheTopmostThingAndNeverQuits) {
+    EXPECT_EQ(escapeEffect(true, true, true, true), EscapeEffect::CloseDialog);
+    EXPECT_EQ(escapeEffect(false, true, false, true), EscapeEffect::CloseHelp);
+    EXPECT_EQ(escapeEffect(false, true, true, false), EscapeEffect::LeavePresent);
+    EXPECT_EQ(escapeEffect(false, false, false, true), EscapeEffect::LeaveFullscreen);
+    EXPECT_EQ(escapeEffect(false, false, false, false), EscapeEffect::Nothing);
+}
+
+TEST(Classroom, UnsavedEditsAreBlockEditsOrChangedSettings) {
+    WorldSettings scene;
+    EXPECT_FALSE(hasUnsavedEdits(false, scene, scene));
+    EXPECT_TRUE(hasUnsavedEdits(true, scene, scene));
+    WorldSettings now = scene;
+    now.method = Method::TurnBased;
+    EXPECT_TRUE(hasUnsavedEdits(false, scene, now));
+    now = scene;
+    now.restSpeed = 1.0; // not a setting the user edits
+    EXPECT_FALSE(hasUnsavedEdits(false, scene, now));
+}
+
+TEST(Classroom, PresentCaptionSaysWhatTheSceneIsTheMethodAndTheTime) {
+    EXPECT_EQ(firstSentence("One. Two. Three"), "One.");
+    EXPECT_EQ(firstSentence("No stop"), "No stop");
+    EXPECT_EQ(presentCaption("Lecture example 1", "A hits B. Then more.", Method::Perfect, 0.625),
+              "Lecture example 1: A hits B.   ·   perfect   ·   t = 0.62 s");
+    EXPECT_EQ(presentCaption("Lecture example 1", "A hits B.", Method::TurnBased, 2, false),
+              "Lecture example 1   ·   turn-based   ·   t = 2.00 s");
+}
+
+TEST(Classroom, PausedAtTheStartSaysPToPlay) {
+    EXPECT_EQ(startHint(true, 0.0, false), "P to play");
+    EXPECT_NE(startHint(true, 0.0, true).find("F1"), std::string::npos);
+    EXPECT_EQ(startHint(false, 0.0, true), "");
+    EXPECT_EQ(startHint(true, 1.0, false), "");
+}
+
+TEST(Classroom, TypedValuesAreRangeChecked) {
+    const TypedValue g = checkTypedValue("gravity y", 1e30, -20, 20, "m/s²");
+    EXPECT_EQ(g.value, 20.0);
+    EXPECT_EQ(g.message, "gravity y 1e+30 m/s² is outside -20 to 20 m/s²: set to 20 m/s²");
+    const TypedValue ok = checkTypedValue("gravity y", -9.81, -20, 20, "m/s²");
+    EXPECT_EQ(ok.value, -9.81);
+    EXPECT_TRUE(ok.message.empty());
+    const TypedValue nan = checkTypedValue("bounciness C", NAN, 0, 1, "");
+    EXPECT_EQ(nan.value, 0.0);
+    EXPECT_FALSE(nan.message.empty());
+}
+
+TEST(Classroom, RestingStackHasAReferenceHeight) {
+    const SceneResult stack =
+        loadSceneFile(std::string(SANDBOX_SCENES_DIR) + "/resting_stack.json");
+    ASSERT_TRUE(stack.scene);
+    const auto top = restingStackTop(*stack.scene);
+    ASSERT_TRUE(top);
+    EXPECT_DOUBLE_EQ(*top, 5.0); // five 1 m blocks on the floor
+    const SceneResult moving =
+        loadSceneFile(std::string(SANDBOX_SCENES_DIR) + "/lecture_example_1.json");
+    ASSERT_TRUE(moving.scene);
+    EXPECT_FALSE(restingStackTop(*moving.scene)); // no gravity, moving blocks
+    Scene floating = *stack.scene;
+    floating.blocks[0].position.y += 0.5; // the stack no longer stands on the floor
+    EXPECT_FALSE(restingStackTop(floating));
+}
+
+World movingWorld() {
+    World w;
+    w.settings.gravity = Vec2{0, 0};
+    Block b;
+    b.position = {5, 5};
+    b.size = {1, 1};
+    b.velocity = {1, 0};
+    b.mass = 1;
+    w.blocks = {b};
+    return w;
+}
+
+// Steps `w` `n` frames, recording each in `h` as the app does.
+void steps(WorldHistory& h, World& w, int n) {
+    for (int i = 0; i < n; ++i) {
+        h.beforeStep(w);
+        w.step();
+        h.afterStep(w);
+    }
+}
+
+TEST(HistoryForTheTimeline, RecordedSecondsUseTheFramesOwnTimes) {
+    WorldHistory h;
+    World w = movingWorld();
+    steps(h, w, 60);
+    EXPECT_NEAR(h.recordedSeconds(), 1.0, 1e-12);
+    w.settings.dt = 1.0 / 30.0; // a frame-rate change: frames times the current dt would say 2 s
+    steps(h, w, 30);
+    EXPECT_NEAR(h.recordedSeconds(), 2.0, 1e-12); // 1 s at 60 Hz and 1 s at 30 Hz
+}
+
+TEST(HistoryForTheTimeline, AnEditDuringReplayStartsANewFuture) {
+    WorldHistory h;
+    World w = movingWorld();
+    steps(h, w, 60);
+    World back;
+    ASSERT_TRUE(h.stateAt(20, back));
+    back.blocks[0].position.y = 8.0; // dragged during replay
+    h.editedAt(back);
+    EXPECT_EQ(h.lastFrame(), 20u); // the old future is gone
+    World newest;
+    ASSERT_TRUE(h.stateAt(h.lastFrame(), newest));
+    EXPECT_EQ(newest.blocks[0].position.y, 8.0); // >| keeps the edit
+    steps(h, back, 1);
+    EXPECT_EQ(h.lastFrame(), 21u);
+    World again;
+    ASSERT_TRUE(h.stateAt(20, again));
+    EXPECT_EQ(again.blocks[0].position.y, 8.0); // scrubbing back shows the edited state
+}
+
+} // namespace
