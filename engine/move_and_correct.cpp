@@ -4,6 +4,7 @@
 // fast bodies tunnel through thin ones, and a deep overlap can be resolved in the wrong direction.
 #include "collision.h"
 #include "methods.h"
+#include "scratch.h"
 
 #include <algorithm>
 #include <utility>
@@ -76,7 +77,7 @@ void advanceMoveAndCorrect(SubstepContext& ctx) {
     // 2. Find the overlapping pairs at the new positions.
     BroadPhase& grid = ctx.broadPhase;
     grid.build(ctx.world.bounds, blocks, [&](int i) { return aabbOf(blocks[i]); });
-    thread_local std::vector<std::pair<int, int>> pairs;
+    std::vector<std::pair<int, int>>& pairs = ctx.scratch.overlappingPairs;
     pairs.clear();
     grid.forEachOverlappingPair([&](int a, int b) {
         if (blocks[a].kind != BodyKind::Static || blocks[b].kind != BodyKind::Static)

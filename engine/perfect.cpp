@@ -6,30 +6,38 @@
 // re-predicted against their neighbours from the broad phase. Stale predictions are recognised by
 // a per-block stamp that every change of velocity increments.
 //
-// Inelastic collapse: with C < 1 a chain of touching blocks can collide infinitely often at one
-// instant (the impulse running back and forth between walls). A pair (or a block and a wall) that
-// has already collided kElasticRepeats times at the same instant is therefore resolved perfectly
-// inelastic, by the rest rule, which merges the chain (compare the "TC model" of Luding and
-// McNamara, 1998). A Newton's cradle, or a block knocked against one resting on a wall, where
-// each pair meets once or twice, stays exact. Past half the event cap, the second meeting of a
-// pair at one instant already merges, so jams settle sooner (a lattice of hundreds of touching
-// blocks can still end its frames at the cap: see Jams.JammedBoxOf400BlocksAdvances).
+// Contacts at one instant. Bodies that touch when an impact arrives (a block squeezed between a
+// heavy body and a wall, a Newton's cradle) collide many times at that one instant, and the
+// sequence is carried out collision by collision, as the same scene with the gaps going to zero
+// would be: at C = 1 it is finite whenever the touching bodies can give way on one side, and it
+// keeps energy and momentum to rounding (a light block between a wall and a block M/m times
+// heavier collides ceil(pi / atan(sqrt(m/M))) - 1 times, about pi·sqrt(M/m): G. Galperin,
+// "Playing pool with pi", Regular and Chaotic Dynamics 8, 2003). Three rules end what never ends,
+// each resolving the contact perfectly inelastic by the rest rule (Resolver::restCluster, which
+// keeps momentum and merges what rests on the contact):
+// - Collapse (C < 1): a pair (or a block and a wall) that has met more than kRepeatsAtInstant
+//   times at one instant is taken to be in inelastic collapse: infinitely many collisions at that
+//   instant whose velocities converge to a common one (McNamara and Young, "Inelastic collapse and
+//   clumping in a one-dimensional granular medium", Phys. Fluids A 4, 1992), which the merge
+//   gives at once.
+// - Trap (any C): a pair that meets more than kRepeatsAtInstant times at one instant while its
+//   block is caught along the axis between infinite masses on both sides (a row packed between
+//   walls): the impulse runs back and forth without end, and the row cannot move.
+// - Crush (any C; crush.h, shared with turn-based): a block bouncing between two infinite masses
+//   that close in on it (a platform pushing it into a wall) collides ever faster, without end,
+//   before they meet. After CrushRule::kSqueezeBounces alternating bounces in one substep it is
+//   merged, and the platform reverses as on a wall.
+// Past half the event cap, the second meeting of a pair at one instant already counts as a
+// collapse or a trap, so jams settle sooner (a lattice of hundreds of touching blocks can still end
+// its frames at the cap: see Jams.JammedBoxOf400BlocksAdvances).
 //
-// Crushing (crush.h, shared with turn-based): a block bouncing between two infinite masses that
-// approach each other (a platform pushing it into a wall) collides ever faster, without end,
-// before they meet. After CrushRule::kSqueezeBounces such alternating bounces in one substep its
-// contacts are resolved by the rest rule, which reverses the platform as on a wall.
-//
-// Broad phase: the paths are registered in a CornerGrid (one entry per block, cheap to build for
-// blocks of similar size), or in the BroadPhase when the sizes are too mixed for it. The rest rule
-// (Resolver) reads the BroadPhase, in whose order it merges a cluster; so when the CornerGrid is
-// used, the BroadPhase is built only when the rest rule first needs it in a substep, from the
-// boxes registered at the substep's start, and the paths registered since are replayed into it:
-// it is then, cell for cell, the BroadPhase that would have been kept all along.
+// Paths: each block's swept box for the rest of the substep is registered in one PathIndex, which
+// both the predictions and the rest rule read.
 #include "collision.h"
 #include "corner_grid.h"
 #include "crush.h"
 #include "methods.h"
+#include "scratch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,16 +48,9 @@
 namespace {
 
 constexpr int kWallEvent = CrushRule::kWall; // Event::b for an impact with the bounds
-constexpr int kElasticRepeats = 8; // collisions of one pair at one instant before it merges
+constexpr int kRepeatsAtInstant = 8;         // meetings of one pair at one instant (collapse, trap)
 
-struct Event {
-    double time;          // s since the substep start
-    int a;                // the block that predicted the impact
-    int b;                // the other block, or kWallEvent
-    std::uint32_t stampA; // a's stamp when predicted
-    std::uint32_t stampB; // b's stamp when predicted (0 for walls)
-    std::uint8_t axes;    // kAxisX | kAxisY
-};
+using Event = PerfectScratch::Event;
 
 // Earliest first; ties in a fixed order so runs are deterministic.
 struct Later {
@@ -60,35 +61,62 @@ struct Later {
     }
 };
 
-// A block's registered path replaced by a new one (while the BroadPhase is not kept up to date).
-struct PathChange {
-    int block;
-    Aabb before;
-    Aabb after;
-};
+// The index of the paths: a CornerGrid (one entry per block, cheap to build for blocks of similar
+// size), or the BroadPhase when the sizes are too mixed for it. Both answer every query with the
+// same blocks, in different orders, on which nothing depends (each pair is predicted once per pair
+// of stamps; the rest rule sorts its cluster).
+class PathIndex final : public BlockFinder {
+  public:
+    PathIndex(CornerGrid& cornerGrid, BroadPhase& broadPhase)
+        : cornerGrid_(cornerGrid), broadPhase_(broadPhase) {}
 
-// The solver's buffers, kept between substeps so a step allocates nothing once they have grown
-// (a cache only, like the broad phase's: every substep starts them afresh).
-struct PerfectScratch {
-    std::vector<double> clock;
-    std::vector<std::uint32_t> stamp;
-    CrushRule crush;
-    std::vector<Event> events; // a binary heap ordered by Later once the first predictions are in
-    std::vector<int> changed;
-    std::unordered_map<std::uint64_t, int> metAtInstant;
-    CornerGrid cornerGrid;
-    std::vector<PathChange> pathChanges;
-    std::vector<Aabb> firstPaths;
+    // Registers every block i with the path pathOf(i), called once per block in index order.
+    template <class PathOf>
+    void build(const Bounds& bounds, const std::vector<Block>& blocks, PathOf&& pathOf) {
+        useCornerGrid_ = cornerGrid_.build(bounds, blocks, pathOf);
+        if (!useCornerGrid_)
+            broadPhase_.build(bounds, blocks, [&](int i) { return cornerGrid_.box(i); });
+    }
+    const Aabb& path(int i) const {
+        return useCornerGrid_ ? cornerGrid_.box(i) : broadPhase_.box(i);
+    }
+    void set(int i, const Aabb& path) {
+        if (useCornerGrid_)
+            cornerGrid_.set(i, path);
+        else
+            broadPhase_.set(i, path);
+    }
+    // visit(j) for every block j other than `self` whose path meets `box`.
+    template <class Visit> void queryOthers(const Aabb& box, int self, Visit&& visit) const {
+        if (useCornerGrid_)
+            cornerGrid_.queryOthers(box, self, visit);
+        else
+            broadPhase_.queryOthers(box, self, visit);
+    }
+    // visit(i, j) for every pair of paths that meet (right after build()).
+    template <class Visit> void forEachMeetingPair(Visit&& visit) const {
+        if (useCornerGrid_)
+            cornerGrid_.forEachMeetingPair(visit);
+        else
+            broadPhase_.forEachMeetingPair(visit);
+    }
+    void find(const Aabb& box, std::vector<int>& found) const override {
+        queryOthers(box, -1, [&](int j) { found.push_back(j); });
+    }
+
+  private:
+    CornerGrid& cornerGrid_;
+    BroadPhase& broadPhase_;
+    bool useCornerGrid_ = true;
 };
-thread_local PerfectScratch scratch;
 
 class PerfectSolver {
   public:
-    explicit PerfectSolver(SubstepContext& ctx)
-        : ctx_(ctx), blocks_(ctx.world.blocks), grid_(ctx.broadPhase),
-          cornerGrid_(scratch.cornerGrid), resolver_(ctx), clock_(scratch.clock),
-          stamp_(scratch.stamp), events_(scratch.events), metAtInstant_(scratch.metAtInstant),
-          crush_(scratch.crush), pathChanges_(scratch.pathChanges) {}
+    explicit PerfectSolver(SubstepContext& ctx, PerfectScratch& scratch)
+        : ctx_(ctx), blocks_(ctx.world.blocks), paths_(scratch.cornerGrid, ctx.broadPhase),
+          resolver_(ctx, &paths_), clock_(scratch.clock), stamp_(scratch.stamp),
+          events_(scratch.events), changed_(scratch.changed), metAtInstant_(scratch.metAtInstant),
+          crush_(scratch.crush) {}
 
     void run();
 
@@ -110,11 +138,6 @@ class PerfectSolver {
         return ctx_.path(i, positionAt(i, now), blocks_[i].size, velocityAt(i, now), ctx_.h - now);
     }
     void registerPaths();
-    const Aabb& registeredPath(int i) const {
-        return useCornerGrid_ ? cornerGrid_.box(i) : grid_.box(i);
-    }
-    void registerPath(int i, const Aabb& path);
-    void bringBroadPhaseUpToDate();
     void predictWalls(int i, double now, const Aabb& path);
     void predictPair(int i, int j, double now);
     void predict(int i, double now);
@@ -129,7 +152,8 @@ class PerfectSolver {
         return e.stampA != stamp_[e.a] || (e.b >= 0 && e.stampB != stamp_[e.b]);
     }
     bool resolve(const Event& e, int processed);
-    bool repeatsAtInstant(const Event& e, int processed);
+    int meetingsAtInstant(const Event& e);
+    bool collapsesOrTraps(const Event& e, int axis, int meetings, int processed);
     bool squeezed(const Event& e, int axis) {
         return crush_.squeezed(blocks_, e.a, e.b, axis, positionAt(e.a, e.time)[axis],
                                e.b < 0 ? 0.0 : positionAt(e.b, e.time)[axis]);
@@ -138,20 +162,17 @@ class PerfectSolver {
     SubstepContext& ctx_;
     std::vector<Block>& blocks_;
     Aabb wallsInside_; // the bounds shrunk by far more than rounding (see run())
-    BroadPhase& grid_;
-    CornerGrid& cornerGrid_;
     const bool linear_ = ctx_.acceleration == nullptr; // the Euler integrators: straight lines
-    bool useCornerGrid_ = false;    // paths are registered in cornerGrid_, else in grid_
-    bool broadPhaseCurrent_ = true; // grid_ holds the registered paths
-    Resolver resolver_;
+    PathIndex paths_;
+    Resolver resolver_;                 // its rest rule reads paths_
     std::vector<double>& clock_;        // s: the time at which each block's position is valid
     std::vector<std::uint32_t>& stamp_; // incremented on every change of velocity
     std::vector<Event>& events_;        // predicted impacts (see schedule())
+    std::vector<int>& changed_;         // blocks whose velocity the last event changed
     bool heap_ = false;                 // events_ is a heap
     double instant_ = -1.0;             // s: the time of the pairs below
     std::unordered_map<std::uint64_t, int>& metAtInstant_; // collisions per pair at that time
-    CrushRule& crush_;
-    std::vector<PathChange>& pathChanges_; // since the substep start, while grid_ is not current
+    CrushRule& crush_;                                     // the crush rule's bounces
 };
 
 // Registers every block's path over the whole substep, and predicts its impacts with the walls
@@ -159,39 +180,11 @@ class PerfectSolver {
 // order). The common case, a path well inside the walls (see predictWalls()), is tested here
 // without a call: a call per block cost more than the test.
 void PerfectSolver::registerPaths() {
-    const Bounds& bounds = ctx_.world.bounds;
-    useCornerGrid_ = cornerGrid_.build(bounds, blocks_, [&](int i) {
+    paths_.build(ctx_.world.bounds, blocks_, [&](int i) {
         const Aabb path = trajectory(i, 0.0);
         if (!contains(wallsInside_, path)) predictWalls(i, 0.0, path);
         return path;
     });
-    if (!useCornerGrid_) {
-        grid_.build(bounds, blocks_, [&](int i) { return cornerGrid_.box(i); });
-        return;
-    }
-    broadPhaseCurrent_ = false;
-    pathChanges_.clear();
-    resolver_.setBeforeBroadPhaseRead([this] { bringBroadPhaseUpToDate(); });
-}
-
-void PerfectSolver::registerPath(int i, const Aabb& path) {
-    if (!useCornerGrid_ || broadPhaseCurrent_) grid_.set(i, path);
-    if (!useCornerGrid_) return;
-    if (!broadPhaseCurrent_) pathChanges_.push_back({i, cornerGrid_.box(i), path});
-    cornerGrid_.set(i, path);
-}
-
-// Builds the BroadPhase from the paths registered at the substep's start (the current ones with
-// the changes undone, last first), then makes the same changes in the same order.
-void PerfectSolver::bringBroadPhaseUpToDate() {
-    if (broadPhaseCurrent_) return;
-    broadPhaseCurrent_ = true;
-    std::vector<Aabb>& first = scratch.firstPaths;
-    first.resize(blocks_.size());
-    for (size_t i = 0; i < blocks_.size(); ++i) first[i] = cornerGrid_.box(static_cast<int>(i));
-    for (auto c = pathChanges_.rbegin(); c != pathChanges_.rend(); ++c) first[c->block] = c->before;
-    grid_.build(ctx_.world.bounds, blocks_, [&](int i) { return first[i]; });
-    for (const PathChange& c : pathChanges_) grid_.set(c.block, c.after);
 }
 
 // Predicts block i's impact with the walls; `path` is trajectory(i, now).
@@ -221,13 +214,11 @@ void PerfectSolver::predict(int i, double now) {
     if (blocks_[i].kind == BodyKind::Static) return;
     const Aabb path = trajectory(i, now);
     predictWalls(i, now, path);
-    if (useCornerGrid_)
-        cornerGrid_.queryOthers(path, i, [&](int j) { predictPair(i, j, now); });
-    else
-        grid_.queryOthers(path, i, [&](int j) { predictPair(i, j, now); });
+    paths_.queryOthers(path, i, [&](int j) { predictPair(i, j, now); });
 }
 
-bool PerfectSolver::repeatsAtInstant(const Event& e, int processed) {
+// How many times this pair (or block and wall) has met at this event's instant, this one included.
+int PerfectSolver::meetingsAtInstant(const Event& e) {
     if (e.time != instant_) {
         instant_ = e.time;
         // clear() costs one step per bucket: after a storm at one instant, start a small table
@@ -239,16 +230,25 @@ bool PerfectSolver::repeatsAtInstant(const Event& e, int processed) {
     }
     const auto lo = static_cast<std::uint32_t>(e.b < 0 ? e.a : std::min(e.a, e.b));
     const auto hi = static_cast<std::uint32_t>(e.b < 0 ? e.b : std::max(e.a, e.b));
-    const int allowed = processed > ctx_.world.settings.eventCap / 2 ? 1 : kElasticRepeats;
-    return ++metAtInstant_[(static_cast<std::uint64_t>(lo) << 32) | hi] > allowed;
+    return ++metAtInstant_[(static_cast<std::uint64_t>(lo) << 32) | hi];
+}
+
+// The collapse and trap rules (see the top of the file).
+bool PerfectSolver::collapsesOrTraps(const Event& e, int axis, int meetings, int processed) {
+    const int allowed = processed > ctx_.world.settings.eventCap / 2 ? 1 : kRepeatsAtInstant;
+    if (meetings <= allowed) return false;
+    if (ctx_.world.settings.bounciness < 1.0) return true; // collapse
+    const int block = blocks_[e.a].isDynamic() ? e.a : e.b;
+    return block >= 0 && blocks_[block].isDynamic() &&
+           resolver_.caughtBetweenInfiniteMasses(block, axis); // trap
 }
 
 bool PerfectSolver::resolve(const Event& e, int processed) {
-    const bool repeated = repeatsAtInstant(e, processed);
+    const int meetings = meetingsAtInstant(e);
     bool changed = false;
     for (int axis = 0; axis < 2; ++axis) {
         if (!(e.axes & (1 << axis))) continue;
-        resolver_.setForceRest(repeated || squeezed(e, axis));
+        resolver_.setForceRest(collapsesOrTraps(e, axis, meetings, processed) || squeezed(e, axis));
         const Resolution r = e.b == kWallEvent ? resolver_.resolveWall(e.a, axis)
                                                : resolver_.resolvePair(e.a, e.b, axis);
         changed |= r != Resolution::None;
@@ -281,17 +281,14 @@ void PerfectSolver::run() {
         else if (blocks_[b].kind != BodyKind::Static)
             predictPair(b, a, 0.0);
     };
-    if (useCornerGrid_)
-        cornerGrid_.forEachMeetingPair(predictFirst);
-    else
-        grid_.forEachMeetingPair(predictFirst);
+    paths_.forEachMeetingPair(predictFirst);
     std::make_heap(events_.begin(), events_.end(), Later{});
     heap_ = true;
 
     // Repeat: take the earliest impact, move its blocks to it, resolve, re-predict what changed.
     double lastEventTime = 0.0;
     int processed = 0;
-    std::vector<int>& changed = scratch.changed;
+    std::vector<int>& changed = changed_;
     while (!events_.empty()) {
         std::pop_heap(events_.begin(), events_.end(), Later{});
         const Event e = events_.back();
@@ -314,7 +311,7 @@ void PerfectSolver::run() {
         for (int j : changed) {
             ++stamp_[j];
             const Aabb path = trajectory(j, e.time);
-            if (!contains(registeredPath(j), path)) registerPath(j, path);
+            if (!contains(paths_.path(j), path)) paths_.set(j, path);
         }
         for (int j : changed) predict(j, e.time);
     }
@@ -331,6 +328,6 @@ void PerfectSolver::run() {
 } // namespace
 
 void advancePerfect(SubstepContext& ctx) {
-    PerfectSolver solver(ctx);
+    PerfectSolver solver(ctx, ctx.scratch.perfect);
     solver.run();
 }

@@ -20,7 +20,8 @@ Impact SubstepContext::impactWithOptions(int i, const Aabb& a, Vec2 va, int j, c
     return overlaps(aabbOf(endA, sizeA), aabbOf(endB, sizeB)) ? hit : Impact{};
 }
 
-Resolver::Resolver(SubstepContext& context) : ctx_(context) {}
+Resolver::Resolver(SubstepContext& context, const BlockFinder* finder)
+    : ctx_(context), finder_(finder) {}
 
 void Resolver::setNow(double now, std::vector<double>* localTime) {
     now_ = now;
@@ -163,12 +164,59 @@ Resolution Resolver::resolveWall(int a, int axis) {
     return Resolution::Bounce;
 }
 
+void Resolver::findNear(const Aabb& box) {
+    found_.clear();
+    if (finder_)
+        finder_->find(box, found_);
+    else
+        ctx_.broadPhase.query(box, [&](int j) { found_.push_back(j); });
+}
+
+bool Resolver::caughtBetweenInfiniteMasses(int seed, int axis) {
+    std::vector<Block>& blocks = ctx_.world.blocks;
+    const Bounds& bounds = ctx_.world.bounds;
+    inCluster_.resize(blocks.size(), 0);
+    queue_.assign(1, seed);
+    inCluster_[seed] = 1;
+    bool below = false, above = false;
+    for (size_t q = 0; q < queue_.size() && !(below && above); ++q) {
+        const int i = queue_[q];
+        sync(i);
+        const Aabb box = aabbOf(blocks[i]);
+        below |= box.min[axis] - bounds.min[axis] <= kTouchTolerance;
+        above |= bounds.max[axis] - box.max[axis] <= kTouchTolerance;
+        Aabb probe = box;
+        probe.min[axis] -= kTouchTolerance;
+        probe.max[axis] += kTouchTolerance;
+        findNear(probe);
+        for (int j : found_) {
+            if (inCluster_[j]) continue;
+            sync(j);
+            const int side = faceContact(box, aabbOf(blocks[j]), axis);
+            if (side == 0) continue; // apart, or side by side
+            if (!blocks[j].isDynamic()) {
+                (side > 0 ? above : below) = true;
+                continue;
+            }
+            inCluster_[j] = 1;
+            queue_.push_back(j);
+        }
+    }
+    for (int j : queue_) inCluster_[j] = 0;
+    return below && above;
+}
+
 // A slow contact: the seed bodies and everything touching them along the axis that does not
 // part from them (a resting stack, a block on a platform) move on together as one perfectly
 // inelastic body: every dynamic member takes the cluster's centre-of-mass velocity u, or the
 // velocity of the infinite masses it rests on. Infinite masses anchor the cluster; the search
 // does not pass through them. Anchors that disagree (a platform pressing the cluster against a
 // wall, two platforms squeezing it) crush it: the platforms that press reverse, as on a wall.
+//
+// The answer does not depend on the order in which the search meets the bodies: which bodies
+// belong is a property of each touching pair (the velocities do not change during the search),
+// a platform presses if it closes on any member, and the sums run over the members sorted by
+// index.
 Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) {
     std::vector<Block>& blocks = ctx_.world.blocks;
     const Bounds& bounds = ctx_.world.bounds;
@@ -178,27 +226,42 @@ Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) 
     members_.clear();
     queue_.clear();
     kinematics_.clear();
-    bool restsOnStatic = seedWall != Wall{0};
+    // The static anchors (walls, static blocks) below and above the cluster.
+    bool staticBelow = seedWall == kWallLeft || seedWall == kWallBottom;
+    bool staticAbove = seedWall == kWallRight || seedWall == kWallTop;
 
-    // `closing` > 0: the body presses into the cluster member that found it.
-    auto add = [&](int j, double closing) {
-        if (inCluster_[j]) return;
+    // `closing` > 0: the pair of j and the member that found it approaches; `above`: j lies
+    // above that member along the axis.
+    auto add = [&](int j, double closing, bool above) {
+        const Block& b = blocks[j];
+        if (b.kind == BodyKind::Static) {
+            (above ? staticAbove : staticBelow) = true;
+            return;
+        }
+        if (inCluster_[j]) {
+            if (b.kind == BodyKind::Kinematic)
+                for (Anchor& k : kinematics_)
+                    if (k.block == j) {
+                        k.presses |= closing > 0.0;
+                        (above ? k.above : k.below) = true;
+                    }
+            return;
+        }
         inCluster_[j] = 1;
         members_.push_back(j);
-        const Block& b = blocks[j];
         if (b.isDynamic())
             queue_.push_back(j);
-        else if (b.kind == BodyKind::Static)
-            restsOnStatic = true;
         else
-            kinematics_.push_back({j, closing > 0.0});
+            kinematics_.push_back({j, closing > 0.0, !above, above});
     };
     const double v1 = blocks[seedA].velocity[axis];
     const double v2 = seedB >= 0 ? blocks[seedB].velocity[axis] : 0.0;
-    add(seedA, 1.0); // the seed pair approaches: resolvePair and resolveWall checked
-    if (seedB >= 0) add(seedB, 1.0);
+    // The seed pair approaches (resolvePair and resolveWall checked); each lies on one side of
+    // the other.
+    const bool bAboveA = seedB >= 0 && blocks[seedB].position[axis] > blocks[seedA].position[axis];
+    add(seedA, 1.0, seedB >= 0 && !bAboveA);
+    if (seedB >= 0) add(seedB, 1.0, bAboveA);
 
-    if (beforeBroadPhaseRead_) beforeBroadPhaseRead_();
     for (size_t q = 0; q < queue_.size(); ++q) {
         const int i = queue_[q];
         const Aabb box = aabbOf(blocks[i]);
@@ -206,54 +269,65 @@ Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) 
         Aabb probe = box;
         probe.min[axis] -= kTouchTolerance;
         probe.max[axis] += kTouchTolerance;
-        ctx_.broadPhase.query(probe, [&](int j) {
-            if (inCluster_[j]) return;
+        findNear(probe);
+        for (int j : found_) {
+            if (inCluster_[j] && blocks[j].isDynamic()) continue;
             sync(j);
             const int side = faceContact(box, aabbOf(blocks[j]), axis);
-            if (side == 0) return; // apart, or side by side: not resting on each other
+            if (side == 0) continue; // apart, or side by side: not resting on each other
             const double vj = blocks[j].velocity[axis];
-            const double closing = side > 0 ? vi - vj : vj - vi; // > 0: they press together
-            if (closing > -threshold) add(j, closing);
-        });
+            const bool above = side > 0;                      // j is on top of i
+            const double closing = above ? vi - vj : vj - vi; // > 0: they press together
+            // A body that parts, or closes faster than a resting contact, is not resting on the
+            // cluster: its contact is a collision of its own (unless the method forces the rest).
+            if (closing > -threshold && (forceRest_ || closing < threshold)) add(j, closing, above);
+        }
         // Walls are infinite masses at rest.
         if (box.min[axis] - bounds.min[axis] <= kTouchTolerance && vi < threshold)
-            restsOnStatic = true;
+            staticBelow = true;
         if (bounds.max[axis] - box.max[axis] <= kTouchTolerance && vi > -threshold)
-            restsOnStatic = true;
+            staticAbove = true;
     }
+    std::sort(members_.begin(), members_.end());
+    std::sort(queue_.begin(), queue_.end());
+    std::sort(kinematics_.begin(), kinematics_.end(),
+              [](const Anchor& x, const Anchor& y) { return x.block < y.block; });
 
-    // The anchors' velocity along the axis: 0 for walls and static blocks, else the platforms'.
+    // The anchors (infinite masses) and their velocities along the axis: 0 for walls and static
+    // blocks, else the platforms'. The cluster moves with them when they agree.
+    double u = 0.0;
+    const bool restsOnStatic = staticBelow || staticAbove;
     bool anchored = restsOnStatic, jammed = false;
-    double anchorVelocity = 0.0;
-    for (const auto& [k, presses] : kinematics_) {
-        const double vk = blocks[k].velocity[axis];
+    for (const Anchor& k : kinematics_) {
+        const double vk = blocks[k.block].velocity[axis];
         if (!anchored) {
             anchored = true;
-            anchorVelocity = vk;
-        } else if (vk != anchorVelocity) {
+            u = vk;
+        } else if (vk != u) {
             jammed = true;
         }
     }
-    if (jammed) {
-        anchored = restsOnStatic;
-        anchorVelocity = 0.0;
-        for (const auto& [k, presses] : kinematics_) {
-            if (presses) {
-                reverseKinematic(k, axis);
-            } else if (!anchored) {
-                anchored = true;
-                anchorVelocity = blocks[k].velocity[axis];
-            }
-        }
-    }
-    double u = anchorVelocity;
-    if (!anchored) {
+    if (!anchored || jammed) {
         double momentum = 0.0, mass = 0.0;
-        for (int j : queue_) { // the dynamic members
+        for (int j : queue_) { // the dynamic members, by index
             momentum += blocks[j].mass * blocks[j].velocity[axis];
             mass += blocks[j].mass;
         }
         u = momentum / mass;
+    }
+    if (jammed) {
+        // Anchors that disagree crush the cluster: the platforms that press on it reverse, and
+        // it moves as freely as the anchors on its two sides let it (no faster toward one below
+        // than it moves, nor toward one above).
+        double lowest = staticBelow ? 0.0 : -kInfiniteMass;
+        double highest = staticAbove ? 0.0 : kInfiniteMass;
+        for (const Anchor& k : kinematics_) {
+            if (k.presses) reverseKinematic(k.block, axis);
+            const double vk = blocks[k.block].velocity[axis];
+            if (k.below) lowest = std::max(lowest, vk);
+            if (k.above) highest = std::min(highest, vk);
+        }
+        u = lowest <= highest ? std::min(std::max(u, lowest), highest) : 0.5 * (lowest + highest);
     }
     for (int j : members_) {
         if (blocks[j].isDynamic()) setVelocity(j, axis, u);

@@ -8,7 +8,6 @@
 #include "world.h"
 
 #include <cmath>
-#include <functional>
 #include <utility>
 #include <vector>
 
@@ -26,10 +25,14 @@ inline double velocityAfterCollision(double v, double u, double C) {
     return u - C * (v - u);
 }
 
-// What one substep of a method works with: the world, its broad phase, the statistics and log.
+struct StepScratch;
+
+// What one substep of a method works with: the world, the buffers it may reuse (scratch.h; its
+// broad phase), the statistics and log.
 struct SubstepContext {
     World& world;
-    BroadPhase& broadPhase;
+    StepScratch& scratch;
+    BroadPhase& broadPhase; // scratch.broadPhase
     StepStats& stats;
     std::vector<CollisionRecord>* log; // may be null
     double h;                          // s, substep length
@@ -73,6 +76,17 @@ struct SubstepContext {
     }
 };
 
+// Where the rest rule looks for the bodies that touch a cluster member: every block whose
+// registered box meets `box`, appended to `found` in any order (the rule's answer does not depend
+// on it). The BroadPhase by default; the perfect method passes the index of its paths.
+class BlockFinder {
+  public:
+    virtual void find(const Aabb& box, std::vector<int>& found) const = 0;
+
+  protected:
+    ~BlockFinder() = default;
+};
+
 // What resolving a contact did: nothing (not approaching), a bounce by the formula (or a
 // kinematic reversing), or the rest rule's perfectly inelastic merge.
 enum class Resolution { None, Bounce, Rest };
@@ -82,7 +96,8 @@ enum class Resolution { None, Bounce, Rest };
 // perfect method uses to bring a lazily moved block to the current time.
 class Resolver {
   public:
-    explicit Resolver(SubstepContext& context);
+    // `finder`: where the rest rule finds neighbours (null: ctx.broadPhase).
+    explicit Resolver(SubstepContext& context, const BlockFinder* finder = nullptr);
 
     // The time (s since the substep start) at which contacts are being resolved, and, for the
     // perfect method, each block's own clock (its position is valid at that time).
@@ -96,11 +111,11 @@ class Resolver {
     // Resolve the next contacts perfectly inelastic whatever their speed (the perfect method's
     // rule for a pair that collides again at the same instant).
     void setForceRest(bool force) { forceRest_ = force; }
-    // Called before the rest rule reads the broad phase: the perfect method registers paths in
-    // its own grid and brings the broad phase up to date only when it is read.
-    void setBeforeBroadPhaseRead(std::function<void()> hook) {
-        beforeBroadPhaseRead_ = std::move(hook);
-    }
+
+    // Whether block i (dynamic) is caught along `axis` between infinite masses: the blocks that
+    // touch it along the axis, and those that touch them, reach a wall, a static or a kinematic
+    // block both below and above it. Along that line nothing can move without a collision.
+    bool caughtBetweenInfiniteMasses(int i, int axis);
 
     const std::vector<int>& changed() const { return changed_; }
     void clearChanged() { changed_.clear(); }
@@ -126,17 +141,25 @@ class Resolver {
     void record(int a, int b, int axis, double m1, double v1, double m2, double v2, double u,
                 double C, double v1After, double v2After, bool rest);
     void setVelocity(int i, int axis, double v);
+    void findNear(const Aabb& box);
 
     SubstepContext& ctx_;
+    const BlockFinder* finder_;
     double now_ = 0.0;
     std::vector<double>* localTime_ = nullptr;
     bool forceRest_ = false;
-    std::function<void()> beforeBroadPhaseRead_;
     std::vector<int> changed_;
     std::vector<VelocityChange>* undo_ = nullptr;
     // Scratch for the rest rule's cluster search.
     std::vector<int> members_;
     std::vector<int> queue_;
+    std::vector<int> found_;
     std::vector<unsigned char> inCluster_;
-    std::vector<std::pair<int, bool>> kinematics_; // kinematic members, and whether they press
+    struct Anchor {
+        int block;    // a kinematic member
+        bool presses; // it approaches a member that touches it
+        bool below;   // it lies below a member it touches
+        bool above;   // it lies above one
+    };
+    std::vector<Anchor> kinematics_;
 };

@@ -26,6 +26,7 @@
 #include "collision.h"
 #include "crush.h"
 #include "methods.h"
+#include "scratch.h"
 
 #include <cstdint>
 #include <unordered_map>
@@ -39,24 +40,7 @@ constexpr int kInelasticRepeats = 8;  // C < 1: meetings of one pair in one sequ
 constexpr int kElasticRepeats = 2048; // C = 1: the same (pi·sqrt(1e6)/2 ≈ 1571 fit)
 constexpr size_t kListedPairs = 16;
 
-struct FirstImpact {
-    double time = kNever; // s into the block's remaining turn
-    std::uint8_t wallAxes = 0;
-    // Blocks hit at that same time, each with its axes.
-    std::vector<std::pair<int, std::uint8_t>> blocks;
-};
-
-// The method's buffers, kept between substeps (a cache only: every substep starts them afresh).
-struct TurnBasedScratch {
-    FirstImpact first;
-    CrushRule crush;
-    std::vector<std::pair<std::uint64_t, int>> meetings; // per pair, at the current instant
-    std::unordered_map<std::uint64_t, int> meetingMap;   // the same past kListedPairs pairs
-    std::vector<std::pair<int, int>> pending;            // (block, axis) whose velocity changed
-    std::vector<std::uint8_t> isPending;                 // 2 per block: in `pending` now
-    std::vector<Resolver::VelocityChange> undo;          // at the current instant
-};
-thread_local TurnBasedScratch scratch;
+using FirstImpact = TurnBasedScratch::FirstImpact;
 
 // Mistake "first-found": keeps the hit block that comes first in the list. Not inlined: the
 // query's loop stays as small as without the mistake.
@@ -294,6 +278,7 @@ void advanceTurnBased(SubstepContext& ctx) {
     });
     const bool moveBack = ctx.world.settings.has(Mistake::MoveBack);
 
+    TurnBasedScratch& scratch = ctx.scratch.turnBased;
     Contacts contacts(ctx, scratch);
     Resolver& resolver = contacts.resolver();
     FirstImpact& first = scratch.first;

@@ -3,6 +3,7 @@
 #include "methods.h"
 
 #include "collision.h"
+#include "scratch.h"
 
 #include <algorithm>
 #include <chrono>
@@ -156,11 +157,35 @@ void addTotals(const World& world, StepStats& stats) {
     stats.potentialEnergy = potential;
 }
 
-// The broad phase keeps its buffers between steps (a cache only: results never depend on it).
-thread_local BroadPhase scratchBroadPhase;
-thread_local std::vector<Vec2> scratchAcceleration;
+// maxOverlap, in the given grid.
+double maxOverlapIn(const World& world, BroadPhase& grid) {
+    grid.build(world.bounds, world.blocks, [&](int i) { return aabbOf(world.blocks[i]); });
+    double deepest = 0.0;
+    for (const Block& b : world.blocks)
+        deepest = std::max(deepest, outsideDepth(aabbOf(b), world.bounds));
+    grid.forEachOverlappingPair([&](int i, int j) {
+        const Block& a = world.blocks[i];
+        const Block& b = world.blocks[j];
+        if (a.kind != BodyKind::Static || b.kind != BodyKind::Static) // static pairs may overlap
+            deepest = std::max(deepest, penetration(aabbOf(a), aabbOf(b)));
+    });
+    return deepest;
+}
 
 } // namespace
+
+ScratchCache::ScratchCache() = default;
+ScratchCache::~ScratchCache() = default;
+ScratchCache::ScratchCache(const ScratchCache&) {}
+ScratchCache& ScratchCache::operator=(const ScratchCache&) {
+    return *this;
+}
+ScratchCache::ScratchCache(ScratchCache&&) noexcept = default;
+ScratchCache& ScratchCache::operator=(ScratchCache&&) noexcept = default;
+StepScratch& ScratchCache::get() {
+    if (!scratch_) scratch_ = std::make_unique<StepScratch>();
+    return *scratch_;
+}
 
 StepStats World::step(std::vector<CollisionRecord>* log) {
     const auto wallStart = std::chrono::steady_clock::now();
@@ -168,6 +193,7 @@ StepStats World::step(std::vector<CollisionRecord>* log) {
     const int substeps = settings.substeps > 0 ? settings.substeps : 1;
     const double h = settings.dt / substeps;
     double maxPenetrationSeen = 0.0;
+    StepScratch& buffers = scratch.get();
 
     const Integrator integrator = settings.integrator; // read here only
     for (int k = 0; k < substeps; ++k) {
@@ -177,10 +203,10 @@ StepStats World::step(std::vector<CollisionRecord>* log) {
         //    hands each block's acceleration to the method, which moves along the parabola
         //    x += v·h + a·h²/2, v += a·h and finds impacts as roots of the quadratic.
         if (integrator == Integrator::SemiImplicitEuler) applyForces(*this, h);
-        SubstepContext ctx{*this, scratchBroadPhase, stats, log, h, time};
+        SubstepContext ctx{*this, buffers, buffers.broadPhase, stats, log, h, time};
         if (integrator == Integrator::Exact) {
-            accelerations(*this, h, scratchAcceleration);
-            ctx.acceleration = &scratchAcceleration;
+            accelerations(*this, h, buffers.acceleration);
+            ctx.acceleration = &buffers.acceleration;
         }
         // 2. Motion and collisions, by the chosen simulation method.
         advance(ctx, settings.method);
@@ -199,8 +225,10 @@ StepStats World::step(std::vector<CollisionRecord>* log) {
 
     // 5. Statistics of the new state.
     addTotals(*this, stats);
-    stats.maxPenetration = settings.measureOverlap ? std::max(maxPenetrationSeen, maxOverlap(*this))
-                                                   : maxPenetrationSeen;
+    stats.maxPenetration =
+        settings.measureOverlap
+            ? std::max(maxPenetrationSeen, maxOverlapIn(*this, buffers.overlapGrid))
+            : maxPenetrationSeen;
     const auto wallEnd = std::chrono::steady_clock::now();
     stats.stepMs = std::chrono::duration<double, std::milli>(wallEnd - wallStart).count();
     return stats;
@@ -228,18 +256,8 @@ double potentialEnergy(const World& world) {
 }
 
 double maxOverlap(const World& world) {
-    BroadPhase& grid = scratchBroadPhase;
-    grid.build(world.bounds, world.blocks, [&](int i) { return aabbOf(world.blocks[i]); });
-    double deepest = 0.0;
-    for (const Block& b : world.blocks)
-        deepest = std::max(deepest, outsideDepth(aabbOf(b), world.bounds));
-    grid.forEachOverlappingPair([&](int i, int j) {
-        const Block& a = world.blocks[i];
-        const Block& b = world.blocks[j];
-        if (a.kind != BodyKind::Static || b.kind != BodyKind::Static) // static pairs may overlap
-            deepest = std::max(deepest, penetration(aabbOf(a), aabbOf(b)));
-    });
-    return deepest;
+    BroadPhase grid;
+    return maxOverlapIn(world, grid);
 }
 
 std::uint64_t stateHash(const World& world) {

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 
 // The lecture's three simulation methods (lecture, "Physics Engine Setup").
@@ -89,12 +90,31 @@ struct WorldSettings {
 
 WorldSettings defaultWorldSettings();
 
+struct StepScratch;
+
+// Owns the buffers the methods reuse between steps (scratch.h), made at the first step. A copy
+// starts without any (and a copied-to world keeps its own): two worlds never share them.
+class ScratchCache {
+  public:
+    ScratchCache();
+    ~ScratchCache();
+    ScratchCache(const ScratchCache&);
+    ScratchCache& operator=(const ScratchCache&);
+    ScratchCache(ScratchCache&&) noexcept;
+    ScratchCache& operator=(ScratchCache&&) noexcept;
+    StepScratch& get();
+
+  private:
+    std::unique_ptr<StepScratch> scratch_;
+};
+
 struct World {
     WorldSettings settings = defaultWorldSettings();
     Bounds bounds;
     std::vector<Block> blocks;
     double time = 0.0;       // s of simulated time
     std::uint64_t frame = 0; // frames stepped
+    ScratchCache scratch;    // the methods' buffers (a cache: no result depends on it)
 
     // Advances one frame of settings.dt: gravity, then the chosen method, per substep; then the
     // statistics. When `log` is given, every resolved collision is appended to it.

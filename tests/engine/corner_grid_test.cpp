@@ -3,6 +3,8 @@
 // the bounds, and after boxes are registered again (moved to other cells or to the large list).
 #include "corner_grid.h"
 
+#include "box_sets.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,33 +14,9 @@
 
 namespace {
 
-struct BoxSet {
-    Bounds bounds{{-3.0, 2.0}, {17.0, 14.0}};
-    std::vector<Block> blocks;
-    std::vector<Aabb> boxes;
-};
-
-// `count` boxes: most 0.2 to 0.6 m wide, one in 50 up to 6 m (large for the cells), one in 50
-// sticking out of the bounds; every tenth block static.
-BoxSet randomSetup(std::uint64_t seed, int count) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    BoxSet s;
-    for (int i = 0; i < count; ++i) {
-        const bool large = i % 50 == 7;
-        const double maxSize = large ? 6.0 : 0.6;
-        const Vec2 size{0.2 + (maxSize - 0.2) * unit(rng), 0.2 + (maxSize - 0.2) * unit(rng)};
-        const double margin = unit(rng) < 1.0 / 50.0 ? 2.0 : 0.0;
-        const Vec2 min{s.bounds.min.x - margin + 20.0 * unit(rng),
-                       s.bounds.min.y - margin + 12.0 * unit(rng)};
-        Block b;
-        b.size = size;
-        b.kind = i % 10 == 0 ? BodyKind::Static : BodyKind::Dynamic;
-        s.blocks.push_back(b);
-        s.boxes.push_back({min, min + size});
-    }
-    return s;
-}
+using box_sets::BoxSet;
+using box_sets::bruteForceQuery;
+using box_sets::randomSetup;
 
 std::vector<int> queryAnswer(const CornerGrid& grid, const Aabb& query, int self) {
     std::vector<int> found;
@@ -47,28 +25,16 @@ std::vector<int> queryAnswer(const CornerGrid& grid, const Aabb& query, int self
     return found;
 }
 
-std::vector<int> bruteForceQuery(const std::vector<Aabb>& boxes, const Aabb& query, int self) {
-    std::vector<int> found;
-    for (int j = 0; j < static_cast<int>(boxes.size()); ++j)
-        if (j != self && meets(boxes[j], query)) found.push_back(j);
-    return found;
-}
-
 TEST(CornerGrid, PairsAreExactlyTheBoxesThatMeet) {
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
         const BoxSet s = randomSetup(seed, 300);
         CornerGrid grid;
         ASSERT_TRUE(grid.build(s.bounds, s.blocks, [&](int i) { return s.boxes[i]; }));
-        std::vector<std::pair<int, int>> pairs, expected;
+        std::vector<std::pair<int, int>> pairs;
         grid.forEachMeetingPair([&](int a, int b) { pairs.emplace_back(a, b); });
         std::sort(pairs.begin(), pairs.end());
-        const int n = static_cast<int>(s.boxes.size());
         // Every pair that meets, except two static blocks (never resolved, never reported).
-        for (int a = 0; a < n; ++a)
-            for (int b = a + 1; b < n; ++b)
-                if (meets(s.boxes[a], s.boxes[b]) &&
-                    !(s.blocks[a].kind == BodyKind::Static && s.blocks[b].kind == BodyKind::Static))
-                    expected.emplace_back(a, b);
+        const auto expected = box_sets::bruteForcePairs(s, meets);
         EXPECT_EQ(pairs, expected) << "seed " << seed;
         EXPECT_FALSE(expected.empty());
     }
@@ -85,20 +51,14 @@ TEST(CornerGrid, QueriesFindExactlyTheBoxesThatMeetAlsoAfterSet) {
         for (int round = 0; round < 200; ++round) {
             // Register a block again: moved a little (often into another cell), sometimes grown
             // into a large box or shrunk back.
-            const int i = static_cast<int>(unit(rng) * n);
-            const Vec2 shift{unit(rng) - 0.5, unit(rng) - 0.5};
-            const double grow = unit(rng) < 0.05 ? 5.0 : unit(rng) < 0.1 ? 0.2 : 1.0;
-            const Vec2 size = (s.boxes[i].max - s.boxes[i].min) * grow;
-            s.boxes[i].min += shift;
-            s.boxes[i].max = s.boxes[i].min + size;
+            const int i = box_sets::moveRandomBox(s, rng, 0.5);
             grid.set(i, s.boxes[i]);
             EXPECT_EQ(grid.box(i).max.x, s.boxes[i].max.x);
             // Query a block's own box, and a box anywhere.
             const int self = static_cast<int>(unit(rng) * n);
             EXPECT_EQ(queryAnswer(grid, s.boxes[self], self),
                       bruteForceQuery(s.boxes, s.boxes[self], self));
-            const Vec2 corner{-4.0 + 22.0 * unit(rng), 1.0 + 14.0 * unit(rng)};
-            const Aabb anywhere{corner, corner + Vec2{3.0 * unit(rng), 3.0 * unit(rng)}};
+            const Aabb anywhere = box_sets::randomQueryBox(rng);
             EXPECT_EQ(queryAnswer(grid, anywhere, -1), bruteForceQuery(s.boxes, anywhere, -1));
         }
     }

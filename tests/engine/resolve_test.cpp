@@ -2,6 +2,7 @@
 // u = (m1·v1 + m2·v2)/(m1 + m2), v' = u − C·(v − u); infinite masses; and the Resolver that the
 // three methods share (pair and wall contacts, kinematic reversal, the rest rule).
 #include "resolve.h"
+#include "scratch.h"
 
 #include "test_worlds.h"
 
@@ -78,14 +79,15 @@ TEST(ResolveFormula, MomentumConservedForRandomPairsAndEnergyWhenElastic) {
 // A one-substep context around a world, as the methods build it.
 struct ResolverHarness {
     World world;
-    BroadPhase grid;
+    StepScratch scratch;
+    BroadPhase& grid = scratch.broadPhase;
     StepStats stats;
     std::vector<CollisionRecord> log;
     SubstepContext ctx;
     Resolver resolver;
 
     explicit ResolverHarness(World w, double h = 1.0 / 60.0)
-        : world(std::move(w)), ctx{world, grid, stats, &log, h, 0.0}, resolver(ctx) {
+        : world(std::move(w)), ctx{world, scratch, grid, stats, &log, h, 0.0}, resolver(ctx) {
         grid.build(world.bounds, world.blocks, [this](int i) { return aabbOf(world.blocks[i]); });
         resolver.setNow(0.0);
     }

@@ -1,0 +1,62 @@
+// The buffers the methods reuse from step to step, so that a step allocates nothing once they have
+// grown. A cache only: what a step computes never depends on what they held before. Each World
+// owns one (World::scratch), and World::step passes it to the methods in the SubstepContext;
+// copying a World gives the copy empty buffers of its own, so two worlds never share them.
+#pragma once
+
+#include "broad_phase.h"
+#include "corner_grid.h"
+#include "crush.h"
+#include "resolve.h"
+
+#include <cstdint>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+// The perfect method's buffers (perfect.cpp).
+struct PerfectScratch {
+    // A predicted impact.
+    struct Event {
+        double time;          // s since the substep start
+        int a;                // the block that predicted the impact
+        int b;                // the other block, or -1 for the bounds
+        std::uint32_t stampA; // a's stamp when predicted
+        std::uint32_t stampB; // b's stamp when predicted (0 for walls)
+        std::uint8_t axes;    // kAxisX | kAxisY
+    };
+    std::vector<double> clock;        // s: the time at which each block's position is valid
+    std::vector<std::uint32_t> stamp; // per block, incremented on every change of velocity
+    CrushRule crush;                  // bounces between infinite masses, per block and axis
+    std::vector<Event> events;        // predicted impacts, a binary heap once the first are in
+    std::vector<int> changed;         // blocks whose velocity an event changed
+    std::unordered_map<std::uint64_t, int> metAtInstant; // meetings per pair at one instant
+    CornerGrid cornerGrid;                               // the paths, for blocks of similar size
+};
+
+// The turn-based method's buffers (turn_based.cpp).
+struct TurnBasedScratch {
+    // A block's first impact in its turn.
+    struct FirstImpact {
+        double time = kNever; // s into the block's remaining turn
+        std::uint8_t wallAxes = 0;
+        // Blocks hit at that same time, each with its axes.
+        std::vector<std::pair<int, std::uint8_t>> blocks;
+    };
+    FirstImpact first;
+    CrushRule crush;
+    std::vector<std::pair<std::uint64_t, int>> meetings; // per pair, at the current instant
+    std::unordered_map<std::uint64_t, int> meetingMap;   // the same past a few listed pairs
+    std::vector<std::pair<int, int>> pending;            // (block, axis) whose velocity changed
+    std::vector<std::uint8_t> isPending;                 // 2 per block: in `pending` now
+    std::vector<Resolver::VelocityChange> undo;          // at the current instant
+};
+
+struct StepScratch {
+    BroadPhase broadPhase;  // the methods' broad phase (every substep builds it anew)
+    BroadPhase overlapGrid; // maxOverlap's own, so measuring never touches the stepping grid
+    std::vector<std::pair<int, int>> overlappingPairs; // move-and-correct
+    std::vector<Vec2> acceleration; // the exact integrator's, per block (World::step)
+    TurnBasedScratch turnBased;
+    PerfectScratch perfect;
+};
