@@ -3,6 +3,7 @@
 #include "ui_style.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace {
 
