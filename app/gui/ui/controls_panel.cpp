@@ -65,11 +65,11 @@ void lessonSection(App& app) {
     ImGui::TextWrapped("%s", s.lesson->name.c_str());
     const float w = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
     if (ImGui::Button("< Prev", ImVec2(w, 0))) applyAction(app, Action::LessonPrevious);
-    tooltip("PageUp or Left");
+    tooltip("PageUp (or Left, with thrust off)");
     ImGui::SameLine();
     if (ImGui::Button(s.asking() ? "Answer >" : "Next >", ImVec2(w, 0)))
         applyAction(app, Action::LessonNext);
-    tooltip("PageDown or Right");
+    tooltip("PageDown (or Right, with thrust off)");
     ImGui::SameLine();
     if (ImGui::Button("Restart (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
     const float rows = std::min<float>(8.0f, static_cast<float>(s.lesson->steps.size()));
