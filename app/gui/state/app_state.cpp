@@ -191,7 +191,21 @@ void stepSimulation(App& app) {
         app.paused = true;
         app.pausedByCollision = true;
     }
+    if (reachesSceneEnd(app.scene, frameStart, app.world.time, app.world.settings.dt) &&
+        !app.lesson.active()) {
+        app.paused = true;
+        app.note =
+            "The scene has made its point at t = " + formatQuantity(*app.scene.duration, "s") +
+            ": P plays on, R replays.";
+    }
     lessonAfterFrame(app);
+}
+
+bool reachesSceneEnd(const Scene& scene, double frameStart, double frameEnd, double dt) {
+    if (!scene.duration) return false;
+    // Half a frame of slack: T/dt frames of dt end within rounding of T, on either side.
+    const double end = *scene.duration - 0.5 * dt;
+    return frameStart < end && frameEnd >= end;
 }
 
 bool isReplaying(const App& app) {

@@ -215,6 +215,9 @@ void noteFrameShown(App& app, double realSeconds);
 // Stepping from there replays, bit for bit, unless something is changed first.
 bool scrubTo(App& app, std::uint64_t frame);
 // True while the world shows a frame earlier than the newest recorded one.
+// True when the frame from frameStart to frameEnd (s) reaches the scene's "duration" (the app
+// pauses there once; P plays on).
+bool reachesSceneEnd(const Scene& scene, double frameStart, double frameEnd, double dt);
 bool isReplaying(const App& app);
 // The block the keyboard thrust pushes this frame: the selected block when thrust is on, it is
 // dynamic and an arrow key is held; -1 otherwise.
