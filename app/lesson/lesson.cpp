@@ -346,8 +346,8 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
                      const LessonContext& context) {
     requireObject(value, path);
     checkKeys(value, path,
-              {"title", "caption", "scene", "overrides", "overlays", "select", "camera", "pause_at",
-               "question", "answer", "reveal", "expect"});
+              {"title", "caption", "scene", "overrides", "overlays", "select", "camera", "frame",
+               "pause_at", "question", "answer", "reveal", "expect"});
     LessonStep step;
     if (!value.contains("title")) throw ValueError{path, "missing \"title\""};
     step.title = text(value["title"], keyPath(path, "title"), 1);
@@ -360,6 +360,14 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
         step.selected = requireBlock(step.scene, value["select"], keyPath(path, "select"));
     if (value.contains("camera"))
         step.camera = parseCamera(value["camera"], keyPath(path, "camera"));
+    if (value.contains("frame")) {
+        // The app's view frames (view_frame.h): the world's, or the centre of mass's.
+        const std::string p = keyPath(path, "frame");
+        const std::string frame = string(value["frame"], p);
+        if (frame != "world" && frame != "com")
+            throw ValueError{p, "unknown frame " + quoted(frame) + " (expected world or com)"};
+        step.centreOfMassFrame = frame == "com";
+    }
     if (value.contains("pause_at"))
         step.pause = parsePause(value["pause_at"], keyPath(path, "pause_at"), step.scene);
     if (value.contains("question")) {

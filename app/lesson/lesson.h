@@ -57,6 +57,7 @@ struct LessonStep {
     std::vector<std::string> overlays; // names from the overlay table, on while the step shows
     int selected = -1;                 // block index, -1 for none
     std::optional<Bounds> camera;      // world rectangle to fit into the view; none: the bounds
+    bool centreOfMassFrame = false;    // "frame": "com": seen moving with the centre of mass
     LessonPause pause;
     std::string question; // shown until the next press...
     std::string answer;   // ...which shows this and turns on `reveal`

@@ -23,6 +23,7 @@ struct SceneView {
     int selected = -1;
     const Trails* trails = nullptr; // drawn when set
     bool vectors = false;           // velocity and momentum arrows
+    Vec2 frameVelocity;             // m/s, subtracted from every arrow (the frame moves with it)
     // Other worlds drawn as coloured outlines over this one (the methods side by side).
     struct Ghosts {
         const World* world = nullptr;
