@@ -74,6 +74,9 @@ struct UiState {
     int inspectorPicked = 0;          // the inspector's collision: 0 the newest, 1 the one before
     std::string inspectorLoggedTitle; // --verbose prints the formula once per collision shown
     int panelFollowedSelection = -2;  // the selection the "Selected block" header last followed
+    // The docked window whose title bar the left button went down on (one at a time): dragging
+    // on from there pulls it out of the layout.
+    std::string titlePressed;
     std::string physicsFollowedScene; // the scene the "Physics" header last opened or closed for
 };
 
