@@ -285,6 +285,28 @@ TEST(InspectorFormat, StatesTheRelativeVelocityTest) {
               "rel. vel. along y = 0 - v = 0 - (-5) = 5 > 0: approaching, resolved");
 }
 
+// The point-of-impact caption never covers a block: it goes to the scene's margin when there is
+// room, else into the world where no block is, the top first.
+TEST(CaptionPlacement, NeverCoversABlock) {
+    const ScreenRect scene{400, 100, 1000, 800};
+    const ScreenRect world{420, 120, 960, 760}; // the world fills the scene, a 20 px margin
+    const std::vector<ScreenRect> blocks = {{430, 130, 300, 200}, {900, 600, 200, 200}};
+    const ScreenRect r = placeCaption(400, 120, scene, world, blocks, 10);
+    for (const ScreenRect& b : blocks) EXPECT_FALSE(rectsOverlap(r, b));
+    EXPECT_TRUE(rectInside(r, scene));
+    EXPECT_TRUE(rectInside(r, {world.x + 10, world.y + 10, world.width - 20, world.height - 20}));
+    EXPECT_EQ(r.y, 130); // the top: right of the first block
+    EXPECT_GE(r.x, 730);
+    // A wide margin above the world: the caption goes there, off the world.
+    const ScreenRect low{420, 400, 960, 480};
+    const ScreenRect m = placeCaption(400, 120, scene, low, blocks, 10);
+    EXPECT_FALSE(rectsOverlap(m, low));
+    EXPECT_TRUE(rectInside(m, scene));
+    // No free spot at all: the least covered one, still inside the scene.
+    const ScreenRect full = placeCaption(400, 120, scene, world, {scene}, 10);
+    EXPECT_TRUE(rectInside(full, scene));
+}
+
 TEST(SaveNaming, OffersANameFromTheSceneAndNeverAnExistingFile) {
     EXPECT_EQ(sceneFileStem("Lecture example 1"), "lecture_example_1");
     EXPECT_EQ(sceneFileStem("High mass ratio (counting pi)"), "high_mass_ratio_counting_pi");
