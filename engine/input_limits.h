@@ -46,7 +46,6 @@ inline constexpr Range kFrameRate{1.0 / kDt.max, 1.0 / kDt.min, "Hz"}; // 1/dt (
 inline constexpr Range kTimeScale{0.01, 100.0, ""}; // simulated s per real s (app, lessons)
 inline constexpr Range kFrames{0.0, 1e7, "", true}; // frames of one run (the frame budget)
 inline constexpr Range kTime{0.0, kFrames.max* kDt.max, "s"}; // simulated time of one run
-inline constexpr Range kEndTime{kDt.min, kTime.max, "s"};        // a scene's "end_time"
 // A length must be at least this fraction of the magnitude of the coordinates it sits at.
 inline constexpr double kResolution = 1e-9;
 

@@ -439,14 +439,12 @@ void checkOverlaps(const std::vector<BlockDef>& blocks) {
 
 Scene parseValue(const json& root) {
     requireObject(root, "(top level)");
-    checkKeys(root, "", {"name", "description", "end_time", "world", "blocks"});
+    checkKeys(root, "", {"name", "description", "world", "blocks"});
     Scene scene;
     if (!root.contains("name")) throw ValueError{"(top level)", "missing \"name\""};
     scene.name = string(root["name"], "name");
     if (root.contains("description"))
         scene.description = string(root["description"], "description");
-    if (root.contains("end_time"))
-        scene.endTime = number(root["end_time"], "end_time", limits::kEndTime);
     if (root.contains("world")) parseWorld(root["world"], scene);
     if (!root.contains("blocks")) throw ValueError{"(top level)", "missing \"blocks\""};
     const json& blocks = root["blocks"];

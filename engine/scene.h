@@ -26,9 +26,6 @@ struct Scene {
     Bounds bounds;
     WorldSettings settings = defaultWorldSettings();
     std::vector<BlockDef> blocks;
-    // s, "end_time": the time the scene is watched to (the app pauses there by itself, e.g. once
-    // high_mass_ratio's count is complete and before its giant comes back); 0: none.
-    double endTime = 0.0;
 
     bool operator==(const Scene& o) const;
 };

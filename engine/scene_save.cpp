@@ -55,7 +55,7 @@ bool Scene::operator==(const Scene& o) const {
            bounds.max == o.bounds.max && a.gravity == b.gravity && a.bounciness == b.bounciness &&
            a.dt == b.dt && a.substeps == b.substeps && a.method == b.method &&
            a.resolve == b.resolve && a.integrator == b.integrator && a.mistakes == b.mistakes &&
-           a.drag == b.drag && endTime == o.endTime && blocks == o.blocks;
+           a.drag == b.drag && blocks == o.blocks;
 }
 
 std::string sceneToJson(const Scene& scene) {
@@ -64,7 +64,6 @@ std::string sceneToJson(const Scene& scene) {
     out += "  " + field("name", dumpValue(scene.name)) + ",\n";
     if (!scene.description.empty())
         out += "  " + field("description", dumpValue(scene.description)) + ",\n";
-    if (scene.endTime > 0.0) out += "  " + field("end_time", dumpValue(scene.endTime)) + ",\n";
     out += "  \"world\": {\n";
     const Bounds& b = scene.bounds;
     out += "    " + field("bounds", numberList({b.min.x, b.min.y, b.max.x, b.max.y})) + ",\n";

@@ -108,29 +108,4 @@ TEST(SceneKeys, EveryValueOfEveryNameRoundTrips) {
     }
 }
 
-
-// The top-level "end_time" (issue 15: high_mass_ratio ends as its description says): optional,
-// validated with its place, saved and read back.
-TEST(SceneKeys, EndTimeIsOptionalValidatedAndSaved) {
-    const std::string blocks = R"("blocks": [{"position": [5, 5], "size": 1}]})";
-    const SceneResult none = parseScene(R"({"name": "t", )" + blocks, "t.json");
-    ASSERT_TRUE(none.scene) << none.error.text();
-    EXPECT_EQ(none.scene->endTime, 0.0);
-    EXPECT_EQ(sceneToJson(*none.scene).find("end_time"), std::string::npos);
-    const SceneResult r = parseScene(R"({"name": "t", "end_time": 20, )" + blocks, "t.json");
-    ASSERT_TRUE(r.scene) << r.error.text();
-    EXPECT_EQ(r.scene->endTime, 20.0);
-    const SceneResult again = parseScene(sceneToJson(*r.scene), "again.json");
-    ASSERT_TRUE(again.scene) << again.error.text();
-    EXPECT_EQ(*again.scene, *r.scene);
-    for (const char* bad : {"0", "-1", "1e8", "\"20\""}) {
-        const SceneResult e =
-            parseScene(std::string(R"({"name": "t", "end_time": )") + bad + ", " + blocks, "t.json");
-        ASSERT_FALSE(e.scene) << bad;
-        EXPECT_EQ(e.error.where, "t.json: end_time") << bad;
-    }
-    EXPECT_EQ(errorOf(R"({"name": "t", "end_time": 0, )" + blocks).message,
-              "must be from 1e-6 to 1e7 s, not 0");
-}
-
 } // namespace

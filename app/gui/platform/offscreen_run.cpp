@@ -108,9 +108,8 @@ int writeScreenshot(Offscreen& off, const Options& o) {
 int screenshot(App& app, Offscreen& off, const Options& o) {
     if (app.lesson.active()) lessonShowPausePoint(app); // the step as the window shows it there
     // --frames N simulates N frames, as if P had been pressed (the badge then shows no PAUSED).
-    // A scene's end_time stops it there, as in the window.
-    for (int i = 0; i < o.frames && !app.endReached; ++i) stepSimulation(app);
-    if (o.frames > 0) app.paused = app.endReached;
+    for (int i = 0; i < o.frames; ++i) stepSimulation(app);
+    if (o.frames > 0) app.paused = false;
     if (o.timelineFrame >= 0) { // the timeline's slider, dragged back: paused there, replaying
         scrubTo(app, static_cast<std::uint64_t>(o.timelineFrame));
         app.paused = true;

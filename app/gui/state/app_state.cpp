@@ -28,7 +28,6 @@ void restartRun(App& app) {
     app.history.clear();
     app.telemetry.clear();
     app.pausedByCollision = false;
-    app.endReached = false;
     app.telemetry.record(app.world, app.selected, {});
     app.mouse = MouseTool{};
     if (app.selected >= static_cast<int>(app.world.blocks.size())) app.selected = -1;
@@ -178,19 +177,6 @@ void stepSimulation(App& app) {
     if (collided && app.pauseOnCollision) {
         app.paused = true;
         app.pausedByCollision = true;
-    }
-    // The scene's end_time (half a frame's rounding): it pauses there once; P plays on.
-    const double end = app.scene.endTime - 0.5 * app.world.settings.dt;
-    if (app.scene.endTime > 0.0 && frameStart < end && app.world.time >= end) {
-        app.paused = true;
-        app.endReached = true;
-        char text[200];
-        std::snprintf(text, sizeof text,
-                      "t = %s s: the scene ends here (its end_time), %llu collisions. P plays on, "
-                      "R starts again.",
-                      formatNumber(app.scene.endTime).c_str(),
-                      static_cast<unsigned long long>(app.totals.collisions));
-        app.note = text;
     }
     lessonAfterFrame(app);
 }

@@ -123,7 +123,6 @@ struct App : Run {
     UiState ui;
     bool pauseOnCollision = false;
     bool pausedByCollision = false; // the last pause came from pauseOnCollision
-    bool endReached = false;        // the run reached the scene's end_time (and paused there)
     // Messages for the panel: the last error (load or save) and the last note.
     std::string error;
     std::string note;
