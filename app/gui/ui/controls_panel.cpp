@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace {
 
@@ -100,11 +101,11 @@ void lessonSection(App& app) {
     ImGui::TextWrapped("%s", s.lesson->name.c_str());
     const float w = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
     if (ImGui::Button("< Prev", ImVec2(w, 0))) applyAction(app, Action::LessonPrevious);
-    tooltip("PageUp or Left");
+    tooltip("PageUp (or Left, with thrust off)");
     ImGui::SameLine();
     if (ImGui::Button(s.asking() ? "Answer >" : "Next >", ImVec2(w, 0)))
         applyAction(app, Action::LessonNext);
-    tooltip("PageDown or Right");
+    tooltip("PageDown (or Right, with thrust off)");
     ImGui::SameLine();
     if (ImGui::Button("Restart (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
     const float rows = std::min<float>(8.0f, static_cast<float>(s.lesson->steps.size()));
@@ -216,6 +217,90 @@ void simulationSection(App& app) {
     typedWarning(app, "time scale");
 }
 
+// A combo over the engine's own list of names (resolveName, integratorName): no second list.
+template <typename E> bool enumCombo(const char* label, E& value, const char* (*name)(E)) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, name(value))) {
+        for (int i = 0; i < static_cast<int>(E::Count); ++i) {
+            const E e = static_cast<E>(i);
+            if (ImGui::Selectable(name(e), e == value) && e != value) {
+                value = e;
+                changed = true;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+// Issue 16's settings (each a scene key, kept by R, restored by Shift+R, saved by Ctrl+S) and the
+// keyboard thrust (the app's own: kept by both resets, set by a lesson step).
+void physicsSection(App& app) {
+    // Opens for a scene that uses it (thruster, feather and stone, the mistakes), else closed.
+    const std::string scene = app.scenePath + "\n" + app.scene.name;
+    if (scene != app.ui.physicsFollowedScene) {
+        ImGui::SetNextItemOpen(usesPhysicsSection(app), ImGuiCond_Always);
+        app.ui.physicsFollowedScene = scene;
+    }
+    if (!ImGui::CollapsingHeader("Physics")) return;
+    WorldSettings& s = app.world.settings;
+    enumCombo("resolve", s.resolve, resolveName);
+    tooltip("momentum: with Newton, the lecture's formula u = (m1·v1 + m2·v2)/(m1 + m2), "
+            "v' = u - C·(v - u)\nreflect: without Newton, each body reverses its own component "
+            "as off a wall, v' = -C·v (momentum is not kept)\n(slide \"Demo: bouncing squares; "
+            "with/without Newton\")");
+    enumCombo("integrator", s.integrator, integratorName);
+    tooltip("semi-implicit-euler: v += a·h, then x += v·h (the lecture's)\nexplicit-euler: x "
+            "moves with the old v\nexact: x += v·h + a·h²/2, the parabola (slide \"It is just an "
+            "approximation of the true movement!\")");
+    float drag = static_cast<float>(s.drag);
+    if (ImGui::SliderFloat("drag k", &drag, 0.0f, 1000.0f, "%.3g kg/m³",
+                           ImGuiSliderFlags_Logarithmic)) {
+        acceptTyped(app, "drag k", drag, s.drag, limits::kDrag, s.drag);
+    }
+    tooltip("Quadratic drag: force -k·A·|v|·v, A = w·h; terminal speed sqrt(m·g/(k·A)). Air 1.2, "
+            "water 1000 (slide \"Viscosity/drag: a feather falls slower than a stone\"; "
+            "Ctrl+click to type)");
+    typedWarning(app, "drag k");
+    ImGui::TextColored(kDimColor, "Mistakes (the Tips slides' bugs)");
+    for (int m = 0; m < static_cast<int>(Mistake::Count); ++m) {
+        const Mistake mistake = static_cast<Mistake>(m);
+        bool on = s.has(mistake);
+        if (ImGui::Checkbox(mistakeName(mistake), &on)) s.set(mistake, on);
+        tooltip((std::string("Slide: \"") + mistakeSlide(mistake) + "\"").c_str());
+    }
+    ImGui::Separator();
+    ImGui::Checkbox("Thrust (arrow keys)", &app.thrust.on);
+    tooltip("Hold the arrow keys to push the selected block with the thrust force (added to its "
+            "own force while held). The arrows then do not step a lesson: PageDown / PageUp do "
+            "(slide \"Spaceship thruster: big ship: slow acceleration; small ship: fast\")");
+    float thrust = static_cast<float>(app.thrust.force);
+    if (ImGui::SliderFloat("thrust force", &thrust, 0.1f, 1000.0f, "%.3g N",
+                           ImGuiSliderFlags_Logarithmic)) {
+        acceptTyped(app, "thrust force", thrust, app.thrust.force, limits::kThrust,
+                    app.thrust.force);
+    }
+    tooltip("F in N: the same force gives a heavy block a small acceleration a = F/m, a light one "
+            "a large one (Ctrl+click to type)");
+    typedWarning(app, "thrust force");
+    if (app.thrust.on &&
+        !(app.selected >= 0 && app.selected < static_cast<int>(app.world.blocks.size()) &&
+          app.world.blocks[static_cast<std::size_t>(app.selected)].isDynamic())) {
+        ImGui::TextColored(kDimColor, "Select a moving block to push it.");
+    }
+}
+
+// The selected block's own constant force [fx, fy] (N): a thruster that is always on.
+void blockForceField(App& app, Block& b) {
+    float f[2] = {static_cast<float>(b.force.x), static_cast<float>(b.force.y)};
+    if (ImGui::DragFloat2("force", f, 0.05f, -1000.0f, 1000.0f, "%.2f N")) {
+        if (acceptTyped2(app, "force", f, b.force, limits::kForce, b.force)) noteEdit(app, true);
+    }
+    tooltip("A constant force on the block (N), a = F/m (Ctrl+click to type); its arrow is drawn "
+            "with the arrows overlay");
+    typedWarning(app, "force");
+}
+
 void selectedSection(App& app) {
     // Opens when a block gets selected, closes when the selection goes; the user may still fold it.
     if (app.selected != app.ui.panelFollowedSelection) {
@@ -246,6 +331,7 @@ void selectedSection(App& app) {
             noteEdit(app, true);
         }
         typedWarning(app, "mass");
+        blockForceField(app, b);
     } else {
         ImGui::TextColored(kDimColor, "mass: infinite");
     }
@@ -388,6 +474,7 @@ void drawControlsPanel(App& app) {
     ImGui::BeginChild("##sections", ImVec2(0.0f, 0.0f), false);
     ImGui::PushItemWidth(width * 0.52f);
     simulationSection(app);
+    physicsSection(app);
     overlaysSection(app);
     selectedSection(app);
     statisticsSection(app);
