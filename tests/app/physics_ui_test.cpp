@@ -5,6 +5,7 @@
 #include "input_map.h"
 #include "lesson_session.h"
 #include "save_naming.h"
+#include "scene_geometry.h"
 
 #include <gtest/gtest.h>
 
@@ -307,4 +308,40 @@ TEST(PhysicsSettings, TheLessonsPlatformerTurnsThrustOnAndTheArrowsDoNotStep) {
     EXPECT_TRUE(applyLessonAction(app, actionForKey(keys::kPageDown, false, false, app.thrust.on)));
     EXPECT_EQ(app.lesson.current, platformer + 1);
     EXPECT_FALSE(app.thrust.on); // the next step does not use it
+}
+
+// What the scene renderer draws for forces: a block's own force with the arrows overlay, the
+// held thrust on its block with or without it, nothing for a block with neither.
+TEST(ForceArrows, OwnForceWithTheArrowsAndTheHeldThrustAlways) {
+    World w;
+    Block pushed;
+    pushed.position = {4, 4};
+    pushed.mass = 2.0;
+    Block thruster = pushed;
+    thruster.position = {12, 4};
+    thruster.force = {2.0, 0.0};
+    w.blocks = {pushed, thruster};
+    Camera camera;
+    camera.setViewport({0.0, 0.0, 1280.0, 720.0});
+    camera.fit(w.bounds, 20.0);
+    SceneView view;
+    view.world = &w;
+    view.camera = &camera;
+    view.blockColors = {Color{}, Color{}};
+    SceneGeometry g;
+    g.build(view, 1.0); // arrows off, no thrust: no arrow at all
+    EXPECT_EQ(shownForce(view, 1), Vec2{});
+    EXPECT_TRUE(g.over.vertices().empty());
+    view.thrustBlock = 0;
+    view.thrust = {0.0, 10.0};
+    g.build(view, 1.0); // the thrust alone: one force arrow (shaft and head: 3 triangles)
+    EXPECT_EQ(shownForce(view, 0), (Vec2{0.0, 10.0}));
+    EXPECT_EQ(shownForce(view, 1), Vec2{});
+    EXPECT_EQ(g.over.vertices().size(), 9u);
+    view.vectors = true;
+    EXPECT_EQ(shownForce(view, 1), (Vec2{2.0, 0.0})); // its own force, with the arrows on
+    view.thrustBlock = 1;
+    view.thrust = {3.0, 0.0};
+    EXPECT_EQ(shownForce(view, 1), (Vec2{5.0, 0.0})); // added while held
+    EXPECT_EQ(shownForce(view, 0), Vec2{});
 }
