@@ -347,7 +347,7 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
     requireObject(value, path);
     checkKeys(value, path,
               {"title", "caption", "scene", "overrides", "overlays", "select", "thrust", "camera",
-               "pause_at", "question", "answer", "reveal", "expect"});
+               "frame", "pause_at", "question", "answer", "reveal", "expect"});
     LessonStep step;
     if (!value.contains("title")) throw ValueError{path, "missing \"title\""};
     step.title = text(value["title"], keyPath(path, "title"), 1);
@@ -370,6 +370,14 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
     }
     if (value.contains("camera"))
         step.camera = parseCamera(value["camera"], keyPath(path, "camera"));
+    if (value.contains("frame")) {
+        // The app's view frames (view_frame.h): the world's, or the centre of mass's.
+        const std::string p = keyPath(path, "frame");
+        const std::string frame = string(value["frame"], p);
+        if (frame != "world" && frame != "com")
+            throw ValueError{p, "unknown frame " + quoted(frame) + " (expected world or com)"};
+        step.centreOfMassFrame = frame == "com";
+    }
     if (value.contains("pause_at"))
         step.pause = parsePause(value["pause_at"], keyPath(path, "pause_at"), step.scene);
     if (value.contains("question")) {

@@ -2,6 +2,7 @@
 // kinetic, potential and total energy against time, in a scrolling window with a marker at each
 // collision; all drawn with the one plot widget.
 #include "app_frame.h"
+#include "csv_export.h"
 #include "overlay_window.h"
 #include "plot_widget.h"
 
@@ -34,6 +35,28 @@ PlotSeries series(const char* label, ImU32 color, const TimeSeries& ts, int chan
     return s;
 }
 
+// One button per plot: its whole recorded series (the last 60 s) as CSV (csv_export.h).
+void exportButtons(App& app) {
+    const Telemetry& tm = app.telemetry;
+    ImGui::TextDisabled("CSV:");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("velocity")) {
+        const std::string name =
+            tm.watched >= 0 ? blockDisplayName(app, tm.watched) + " " : std::string();
+        exportCsv(app, "velocity",
+                  timeSeriesTable(tm.velocity, {name + "vx (m/s)", name + "vy (m/s)"}));
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("momentum"))
+        exportCsv(app, "momentum", timeSeriesTable(tm.momentum, {"px (kg*m/s)", "py (kg*m/s)"}));
+    ImGui::SameLine();
+    if (ImGui::SmallButton("energy")) {
+        exportCsv(app, "energy",
+                  timeSeriesTable(tm.energy, {"kinetic (J)", "potential (J)", "total (J)"}));
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Each writes its plot's series as a CSV file");
+}
+
 } // namespace
 
 void drawPlotsOverlay(App& app) {
@@ -44,6 +67,7 @@ void drawPlotsOverlay(App& app) {
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
     ImGui::SliderFloat("time window", &app.ui.plotSpanSeconds, 2.0f, 60.0f, "%.0f s",
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    exportButtons(app);
     // Until the window fills, the axis grows with the run (at least 2 s), then it scrolls.
     const double span = std::clamp(now * 1.05, 2.0, static_cast<double>(app.ui.plotSpanSeconds));
     const PlotRange window = scrollingWindow(now, span);

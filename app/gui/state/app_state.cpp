@@ -30,6 +30,7 @@ void restartRun(App& app) {
     app.pausedByCollision = false;
     app.telemetry.record(app.world, app.selected, {});
     app.mouse = MouseTool{};
+    anchorFrameCamera(app.frameCamera, app.world); // the view follows from the run's start
     if (app.selected >= static_cast<int>(app.world.blocks.size())) app.selected = -1;
 }
 
@@ -320,7 +321,7 @@ bool saveCurrentScene(App& app, const std::string& path) {
     return true;
 }
 
-std::string suggestedSavePath(const App& app) {
+std::string saveDirectory(const App& app) {
     namespace fs = std::filesystem;
     std::string dir = workingDirectory();
     if (!app.scenePath.empty()) {
@@ -330,10 +331,16 @@ std::string suggestedSavePath(const App& app) {
             !app.scenesDir.empty() && fs::equivalent(sceneDir, fs::path(app.scenesDir), ec) && !ec;
         if (!shipped && !sceneDir.empty()) dir = sceneDir.string();
     }
-    return suggestSavePath(app.scene.name, dir, [](const std::string& p) {
-        std::error_code ec;
-        return fs::exists(p, ec);
-    });
+    return dir;
+}
+
+bool pathExists(const std::string& path) {
+    std::error_code ec;
+    return std::filesystem::exists(path, ec);
+}
+
+std::string suggestedSavePath(const App& app) {
+    return suggestSavePath(app.scene.name, saveDirectory(app), pathExists);
 }
 
 bool isFloating(const App& app, const std::string& title) {
@@ -433,6 +440,13 @@ void updateCamera(App& app, double displayWidth, double displayHeight) {
         app.camera.fit(app.fitBounds ? *app.fitBounds : app.world.bounds,
                        kFitMarginPx * static_cast<double>(app.uiScale));
     }
+    app.camera.setCentre(app.camera.centre() +
+                         followShift(app.frameCamera, app.world, app.frame, app.autoFit));
+}
+
+void setViewFrame(App& app, ViewFrame frame) {
+    app.frame = frame;
+    app.frameCamera.anchored = false;
 }
 
 void setBlockKind(App& app, int index, BodyKind kind) {

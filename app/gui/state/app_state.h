@@ -20,6 +20,7 @@
 #include "telemetry.h"
 #include "timeline.h"
 #include "trails.h"
+#include "view_frame.h"
 #include "world.h"
 
 #include <array>
@@ -97,6 +98,10 @@ struct App : Run {
     Camera camera;
     bool autoFit = true; // refit the camera when the viewport changes, until the user zooms/pans
     std::optional<Bounds> fitBounds; // what fitting shows (a lesson step's camera); none: bounds
+    // The frame of reference (view_frame.h): in the centre of mass's the camera moves with u and
+    // the arrows show w = v - u (View section, U, --frame com, a lesson step's "frame").
+    ViewFrame frame = ViewFrame::World;
+    FrameCamera frameCamera;
     Overlays show;
     bool overlaysChosen = false; // --show given: scenes no longer pick the default overlays
     bool uiVisible = true;
@@ -177,6 +182,8 @@ ScreenRect sceneViewport(const App& app, double displayWidth, double displayHeig
 // Lays out the frame (app.layout), gives the camera the scene's rectangle and refits the world
 // while app.autoFit holds.
 void updateCamera(App& app, double displayWidth, double displayHeight);
+// Sees the scene in `frame` from now on (the camera follows the centre of mass from where it is).
+void setViewFrame(App& app, ViewFrame frame);
 // Changes the kind of block `index` (dynamic blocks get mass 1 kg when they had none).
 void setBlockKind(App& app, int index, BodyKind kind);
 // Resizes block `index` when the new size fits without overlap; false (nothing changed) if not.
@@ -239,6 +246,11 @@ bool saveCurrentScene(App& app, const std::string& path);
 // The path the Save dialog offers: from the scene's name, in the scene's own directory unless
 // that is the shipped scenes' (then the working directory), never an existing file.
 std::string suggestedSavePath(const App& app);
+// Where Save offers to write (and the plots' CSV exports go): the scene's own directory unless
+// that is the shipped scenes' (then the working directory).
+std::string saveDirectory(const App& app);
+// True when `path` names something on disk (an error reads as false).
+bool pathExists(const std::string& path);
 // Is `title` an overlay window pulled out of the layout to float?
 bool isFloating(const App& app, const std::string& title);
 void setFloating(App& app, const std::string& title, bool floating);

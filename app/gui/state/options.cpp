@@ -100,6 +100,10 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_option("--layout-json", o.layoutJson,
                    "Offscreen (with --screenshot): write the scene's, the world's and every "
                    "window's rectangle in image pixels to this JSON file");
+    std::string frame;
+    app.add_option("--frame", frame,
+                   "Start in this frame of reference: world, or com (the view moves with the "
+                   "centre of mass, arrows show w = v - u; U toggles)");
     app.add_option("--lesson", o.lesson,
                    "Open a lesson: a shipped lesson's name (lecture3) or a lesson file");
     app.add_option("--step", o.step, "Start the lesson at step N (1 is the first)")
@@ -116,6 +120,11 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
             std::string error;
             if (!parseShowList(show, o.show, &error)) throw CLI::ValidationError("--show", error);
             o.showGiven = true;
+        }
+        if (!frame.empty()) {
+            o.frame = parseViewFrame(frame);
+            if (!o.frame)
+                throw CLI::ValidationError("--frame", "expected world or com, got '" + frame + "'");
         }
         if (!o.layoutJson.empty() && o.screenshot.empty()) {
             throw CLI::ValidationError("--layout-json", "needs --screenshot FILE");

@@ -355,6 +355,11 @@ void overlaysSection(App& app) {
 
 void viewSection(App& app) {
     if (!ImGui::CollapsingHeader("View")) return;
+    bool com = app.frame == ViewFrame::CentreOfMass;
+    if (ImGui::Checkbox("centre-of-mass frame (U)", &com))
+        setViewFrame(app, com ? ViewFrame::CentreOfMass : ViewFrame::World);
+    tooltip("The view moves with the centre of mass's velocity u and the arrows show w = v - u "
+            "(the walls drift across the view: they move at -u in this frame)");
     if (ImGui::SmallButton("clear trails (C)")) applyAction(app, Action::ClearTrails);
     float scale = app.uiScale;
     if (ImGui::SliderFloat("UI scale", &scale, 0.75f, 3.0f, "%.2f")) {
