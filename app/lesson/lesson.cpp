@@ -3,6 +3,7 @@
 // the same loader, so a lesson accepts exactly the keys and values a scene file does.
 #include "lesson.h"
 
+#include "input_limits.h"
 #include "printable.h"
 #include "scene_json.h"
 
@@ -170,8 +171,9 @@ void loadStepScene(const json& step, const std::string& path, const LessonContex
         const std::string keyAt = keyPath(overridesPath, key);
         if (key == "time_scale") {
             out.timeScale = number(item.value(), keyAt);
-            if (!(out.timeScale >= 0.01 && out.timeScale <= 100.0))
-                throw ValueError{keyAt, "must be from 0.01 to 100"};
+            if (const std::string bad = limits::violation(limits::kTimeScale, out.timeScale);
+                !bad.empty())
+                throw ValueError{keyAt, bad};
         } else if (key == "frame_rate") {
             if (overrides.contains("dt")) throw ValueError{keyAt, "give \"dt\" or \"frame_rate\""};
             const double rate = number(item.value(), keyAt);

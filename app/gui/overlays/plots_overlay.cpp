@@ -7,9 +7,9 @@
 #include "plot_widget.h"
 
 #include <algorithm>
+#include <cmath>
 #include <deque>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace {
@@ -18,14 +18,29 @@ std::vector<double> markersIn(const std::deque<double>& times) {
     return std::vector<double>(times.begin(), times.end());
 }
 
-// Series `channel` of `ts` within [window.lo, now].
-void fill(PlotSeries& s, const TimeSeries& ts, int channel, PlotRange window, double now) {
-    for (std::size_t i = ts.firstAtOrAfter(window.lo); i < ts.size(); ++i) {
+// Series `channel` of `ts` within [window.lo, window.hi] and [from, to].
+PlotSeries series(const char* label, ImU32 color, const TimeSeries& ts, int channel,
+                  PlotRange window, double from, double to) {
+    PlotSeries s;
+    s.label = label;
+    s.color = color;
+    for (std::size_t i = ts.firstAtOrAfter(std::max(window.lo, from)); i < ts.size(); ++i) {
         const double t = ts.time(i);
-        if (t > now + 1e-12) break;
+        if (t > std::min(window.hi, to) + 1e-12) break;
         s.x.push_back(t);
         s.y.push_back(ts.value(i, channel));
     }
+    return s;
+}
+
+// A series up to `now` and, while the timeline replays, its recorded future, faded and without
+// a legend entry.
+void addSeries(std::vector<PlotSeries>& out, const char* label, ImU32 color, const TimeSeries& ts,
+               int channel, PlotRange window, double now, bool replaying) {
+    out.push_back(series(label, color, ts, channel, window, -INFINITY, now));
+    if (!replaying) return;
+    const ImU32 faded = (color & ~IM_COL32_A_MASK) | IM_COL32(0, 0, 0, 70);
+    out.push_back(series("", faded, ts, channel, window, now, INFINITY));
 }
 
 // The three plots, in one table: what each draws and what its CSV button writes.
@@ -85,9 +100,8 @@ void exportButtons(App& app) {
     for (const PlotRow& row : plotRows()) {
         ImGui::SameLine();
         if (!ImGui::SmallButton(row.name)) continue;
-        const std::string prefix = row.ofWatchedBlock && app.telemetry.watched >= 0
-                                       ? blockDisplayName(app, app.telemetry.watched) + " "
-                                       : std::string();
+        const std::string prefix =
+            row.ofWatchedBlock && app.telemetry.watched >= 0 ? watchedName(app) + " " : "";
         std::vector<std::string> columns;
         for (const PlotChannel& c : row.channels) columns.push_back(prefix + c.column);
         exportCsv(app, row.name, timeSeriesTable(app.telemetry.*row.series, columns));
@@ -101,14 +115,19 @@ void drawPlotsOverlay(App& app) {
     OverlayWindow overlay(app, OverlayId::plots);
     if (!overlay) return;
     const Telemetry& tm = app.telemetry;
+    // While the timeline replays, the plots show the recorded run around the scrubbed time, with
+    // a "now" line there; live, the last seconds up to now.
     const double now = app.world.time;
+    const bool replaying = isReplaying(app);
+    const double newest =
+        tm.energy.size() > 0 ? std::max(now, tm.energy.time(tm.energy.size() - 1)) : now;
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
     ImGui::SliderFloat("time window", &app.ui.plotSpanSeconds, 2.0f, 60.0f, "%.0f s",
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     exportButtons(app);
     // Until the window fills, the axis grows with the run (at least 2 s), then it scrolls.
-    const double span = std::clamp(now * 1.05, 2.0, static_cast<double>(app.ui.plotSpanSeconds));
-    const PlotRange window = scrollingWindow(now, span);
+    const double span = std::clamp(newest * 1.05, 2.0, static_cast<double>(app.ui.plotSpanSeconds));
+    const PlotRange window = timelineWindow(now, replaying ? newest : now, span);
     const std::vector<PlotRow>& rows = plotRows();
     const float spacing = ImGui::GetStyle().ItemSpacing.y;
     const float h = (ImGui::GetContentRegionAvail().y - (rows.size() - 1) * spacing) /
@@ -119,18 +138,15 @@ void drawPlotsOverlay(App& app) {
         o.xUnit = "s";
         o.height = h;
         o.includeZero = true;
+        if (replaying) o.cursor = now;
         const std::string title =
             row.ofWatchedBlock ? std::string(row.title) + " " + watchedName(app) : row.title;
         o.title = title.c_str();
         o.yUnit = row.unit;
         std::vector<PlotSeries> series;
-        for (std::size_t c = 0; c < row.channels.size(); ++c) {
-            PlotSeries s;
-            s.label = row.channels[c].label;
-            s.color = row.channels[c].color;
-            fill(s, tm.*row.series, static_cast<int>(c), window, now);
-            series.push_back(std::move(s));
-        }
+        for (std::size_t c = 0; c < row.channels.size(); ++c)
+            addSeries(series, row.channels[c].label, row.channels[c].color, tm.*row.series,
+                      static_cast<int>(c), window, now, replaying);
         const std::string id = std::string("##") + row.name;
         drawPlot(id.c_str(), o, series, markersIn(tm.*row.markers));
     }

@@ -50,6 +50,7 @@ void setScene(App& app, const Scene& scene, const std::string& path) {
     app.autoFit = true;
     app.paused = true;
     app.blocksEdited = false;
+    app.ui.typedWarning.clear();
     restartRun(app);
 }
 
@@ -217,6 +218,10 @@ bool scrubTo(App& app, std::uint64_t frame) {
     World w;
     if (!app.history.stateAt(frame, w)) return false;
     app.run() = Run(std::move(w));
+    // The inspector lists the last collisions up to the frame shown, not the newest recorded.
+    const std::vector<CollisionRecord> upTo = app.history.collisionsUpTo(frame, kRecentCollisions);
+    app.telemetry.recent.assign(upTo.begin(), upTo.end());
+    app.ui.inspectorPicked = 0;
     app.labels.resize(app.world.blocks.size());
     app.mouse = MouseTool{};
     if (app.selected >= static_cast<int>(app.world.blocks.size())) app.selected = -1;
@@ -417,10 +422,10 @@ Layout computeAppLayout(const App& app, double displayWidth, double displayHeigh
     in.displayWidth = displayWidth;
     in.displayHeight = displayHeight;
     in.uiScale = app.uiScale;
-    if (app.presentMode) return computeLayout(in); // the scene alone
-    in.panelWidth = app.uiVisible ? panelWidth(app.uiScale, displayWidth) : 0.0;
-    // A lesson's caption bar over the top of the scene (and the column).
+    // A lesson's caption bar over the top of the scene (and the column), presenting too.
     if (app.lesson.active()) in.topInset = std::min(app.captionHeight, displayHeight * 0.5);
+    if (app.presentMode) return computeLayout(in); // the scene alone (under a lesson's caption)
+    in.panelWidth = app.uiVisible ? panelWidth(app.uiScale, displayWidth) : 0.0;
     for (const OverlayInfo& row : kOverlays) {
         if (!row.title || !(app.show.*row.flag) || isFloating(app, row.title)) continue;
         in.windows.push_back({row.title, row.place.side, row.place.minExtent, row.place.weight,

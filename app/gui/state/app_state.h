@@ -74,6 +74,7 @@ struct UiState {
     int inspectorPicked = 0;          // the inspector's collision: 0 the newest, 1 the one before
     std::string inspectorLoggedTitle; // --verbose prints the formula once per collision shown
     int panelFollowedSelection = -2;  // the selection the "Selected block" header last followed
+    TypedWarning typedWarning;        // a refused typed value, shown under its field
     // The docked window whose title bar the left button went down on (one at a time): dragging
     // on from there pulls it out of the layout.
     std::string titlePressed;
@@ -222,7 +223,8 @@ int advanceSimulation(App& app, double realSeconds);
 // The window showed a frame `realSeconds` after the previous one (its pace, for Statistics).
 void noteFrameShown(App& app, double realSeconds);
 // Goes back (or forward) to frame `frame` of the timeline; false when it is not recorded.
-// Stepping from there replays, bit for bit, unless something is changed first.
+// Stepping from there replays, bit for bit, unless something is changed first. The inspector's
+// collisions become the last ones up to that frame (rebuilt from the history).
 bool scrubTo(App& app, std::uint64_t frame);
 // True while the world shows a frame earlier than the newest recorded one.
 // True when the frame from frameStart to frameEnd (s) reaches the scene's "duration" (the app

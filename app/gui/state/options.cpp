@@ -110,6 +110,13 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         ->check(CLI::Range(1, 1000000));
     app.add_option("--record-steps", o.recordSteps,
                    "Offscreen: write one PNG per lesson step (after its pause point) here");
+    app.add_option("--theme", o.theme,
+                   "dark or light (bright rooms); the window's default is the saved setting")
+        ->check(CLI::IsMember({"dark", "light"}));
+    app.add_option("--timeline-frame", o.timelineFrame,
+                   "Offscreen: after --frames, go back to this frame on the timeline (as its "
+                   "slider does): the replay as the overlays show it")
+        ->check(CLI::Range(0LL, 10000000LL));
     app.set_version_flag("--version", "sandbox 0.1");
     try {
         app.parse(argc, argv);
@@ -131,6 +138,11 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         }
         if (!o.recordSteps.empty() && o.lesson.empty() && o.scene.empty()) {
             throw CLI::ValidationError("--record-steps", "needs a lesson (--lesson NAME)");
+        }
+        if (o.timelineFrame > o.frames) {
+            throw CLI::ValidationError("--timeline-frame", "must be at most --frames (" +
+                                                               std::to_string(o.frames) +
+                                                               "): the frames recorded");
         }
         if (!o.record.empty() && o.frames <= 0) {
             throw CLI::ValidationError("--record", "needs --frames N (N > 0)");

@@ -165,9 +165,9 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     }
     drawSceneDecorations(app);
     drawOverlays(app);
+    if (app.lesson.active()) drawLessonCaption(app); // a lesson's one caption, presenting too
     if (!app.presentMode) {
         if (app.uiVisible) drawControlsPanel(app);
-        if (app.lesson.active()) drawLessonCaption(app);
         if (app.helpOpen) drawHelpWindow(app);
     }
     drawDialogs(app);

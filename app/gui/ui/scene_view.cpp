@@ -210,7 +210,9 @@ void drawBadge(const App& app, ImDrawList* dl) {
     ImVec2 at(static_cast<float>(vp.x) + pad * 1.5f, static_cast<float>(vp.y) + pad);
     const ImU32 plateBg = uiLightTheme() ? IM_COL32(235, 236, 240, 230) : IM_COL32(20, 22, 30, 200);
     const ImU32 plateFg = uiLightTheme() ? IM_COL32(20, 22, 30, 255) : IM_COL32(225, 230, 240, 255);
-    if (app.presentMode) {
+    if (app.presentMode && app.lesson.active()) {
+        // A lesson's caption bar says it all (lesson_bar.cpp): nothing more over the scene.
+    } else if (app.presentMode) {
         // The caption: what the scene is, the method and the time, on one line.
         const float room = static_cast<float>(vp.width) - pad * 4.0f;
         std::string caption = presentCaption(app.scene.name, app.scene.description,
