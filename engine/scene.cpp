@@ -439,12 +439,14 @@ void checkOverlaps(const std::vector<BlockDef>& blocks) {
 
 Scene parseValue(const json& root) {
     requireObject(root, "(top level)");
-    checkKeys(root, "", {"name", "description", "world", "blocks"});
+    checkKeys(root, "", {"name", "description", "duration", "world", "blocks"});
     Scene scene;
     if (!root.contains("name")) throw ValueError{"(top level)", "missing \"name\""};
     scene.name = string(root["name"], "name");
     if (root.contains("description"))
         scene.description = string(root["description"], "description");
+    if (root.contains("duration"))
+        scene.duration = number(root["duration"], "duration", limits::kDuration);
     if (root.contains("world")) parseWorld(root["world"], scene);
     if (!root.contains("blocks")) throw ValueError{"(top level)", "missing \"blocks\""};
     const json& blocks = root["blocks"];

@@ -23,6 +23,10 @@ struct BlockDef {
 struct Scene {
     std::string name;
     std::string description;
+    // s, optional: how long the scene is meant to be watched (it has made its point by then, e.g.
+    // before a wall hit spoils a conservation law). The app pauses there once; `sandbox-cli run`
+    // without --steps or --time simulates this long. None: the scene runs on.
+    std::optional<double> duration;
     Bounds bounds;
     WorldSettings settings = defaultWorldSettings();
     std::vector<BlockDef> blocks;

@@ -51,11 +51,11 @@ bool Scene::operator==(const Scene& o) const {
     // measureOverlap) are not part of format v1.
     const WorldSettings& a = settings;
     const WorldSettings& b = o.settings;
-    return name == o.name && description == o.description && bounds.min == o.bounds.min &&
-           bounds.max == o.bounds.max && a.gravity == b.gravity && a.bounciness == b.bounciness &&
-           a.dt == b.dt && a.substeps == b.substeps && a.method == b.method &&
-           a.resolve == b.resolve && a.integrator == b.integrator && a.mistakes == b.mistakes &&
-           a.drag == b.drag && blocks == o.blocks;
+    return name == o.name && description == o.description && duration == o.duration &&
+           bounds.min == o.bounds.min && bounds.max == o.bounds.max && a.gravity == b.gravity &&
+           a.bounciness == b.bounciness && a.dt == b.dt && a.substeps == b.substeps &&
+           a.method == b.method && a.resolve == b.resolve && a.integrator == b.integrator &&
+           a.mistakes == b.mistakes && a.drag == b.drag && blocks == o.blocks;
 }
 
 std::string sceneToJson(const Scene& scene) {
@@ -64,6 +64,7 @@ std::string sceneToJson(const Scene& scene) {
     out += "  " + field("name", dumpValue(scene.name)) + ",\n";
     if (!scene.description.empty())
         out += "  " + field("description", dumpValue(scene.description)) + ",\n";
+    if (scene.duration) out += "  " + field("duration", dumpValue(*scene.duration)) + ",\n";
     out += "  \"world\": {\n";
     const Bounds& b = scene.bounds;
     out += "    " + field("bounds", numberList({b.min.x, b.min.y, b.max.x, b.max.y})) + ",\n";

@@ -47,9 +47,27 @@ bool numberOption(const char* option, const std::string& text, const limits::Ran
     return true;
 }
 
+// Stops the run at `t` simulated seconds. The frame budget holds for the frames T needs at this
+// dt; the backstop for an event cap that holds time back (100·T/dt frames) stops at the budget too.
+bool stopAtTime(double t, const WorldSettings& s, const char* what, const std::string& text,
+                StopRule& stop, std::ostream& err) {
+    const double frames = std::ceil(t / s.dt);
+    if (frames > limits::kFrames.max)
+        return refuse(err, what, text,
+                      "needs " + limits::formatNumber(frames) + " frames at dt " +
+                          limits::formatNumber(s.dt) + " s, more than the frame budget (" +
+                          limits::describe(limits::kFrames) + "): at most " +
+                          limits::formatNumber(limits::kFrames.max * s.dt) + " s at this dt");
+    stop.time = t;
+    stop.frames =
+        static_cast<std::int64_t>(std::min(std::ceil(100.0 * t / s.dt), limits::kFrames.max));
+    return true;
+}
+
 // Applies the command-line overrides to the scene's settings. Returns false and writes a message
 // naming the option and the limit on a bad value.
-bool applyOptions(const RunRequest& r, WorldSettings& s, StopRule& stop, std::ostream& err) {
+bool applyOptions(const RunRequest& r, std::optional<double> duration, WorldSettings& s,
+                  StopRule& stop, std::ostream& err) {
     if (r.method && !parseMethod(r.method->c_str(), s.method))
         return refuse(err, "--method", *r.method,
                       "must be perfect, move-and-correct or turn-based");
@@ -96,19 +114,12 @@ bool applyOptions(const RunRequest& r, WorldSettings& s, StopRule& stop, std::os
     if (r.time) {
         double t = 0.0;
         if (!numberOption("--time", *r.time, limits::kTime, t, err)) return false;
-        // The frame budget holds for the frames T needs at this dt; the backstop for an event
-        // cap that holds time back (100·T/dt frames) stops at the budget too.
-        const double frames = std::ceil(t / s.dt);
-        if (frames > limits::kFrames.max)
-            return refuse(err, "--time", *r.time,
-                          "needs " + limits::formatNumber(frames) + " frames at dt " +
-                              limits::formatNumber(s.dt) + " s, more than the frame budget (" +
-                              limits::describe(limits::kFrames) + "): at most " +
-                              limits::formatNumber(limits::kFrames.max * s.dt) + " s at this dt");
-        stop.time = t;
-        stop.frames =
-            static_cast<std::int64_t>(std::min(std::ceil(100.0 * t / s.dt), limits::kFrames.max));
+        return stopAtTime(t, s, "--time", *r.time, stop, err);
     }
+    // Neither --steps nor --time: a scene that states how long it is watched runs that long.
+    if (!r.steps && duration)
+        return stopAtTime(*duration, s, "the scene's duration", limits::formatNumber(*duration),
+                          stop, err);
     return true;
 }
 
@@ -298,7 +309,7 @@ int runCommand(const RunRequest& request, std::ostream& out, std::ostream& err) 
     }
     Scene scene = *loaded.scene;
     StopRule stop;
-    if (!applyOptions(request, scene.settings, stop, err)) return kExitBadInput;
+    if (!applyOptions(request, scene.duration, scene.settings, stop, err)) return kExitBadInput;
     World world = makeWorld(scene);
     std::ofstream trace;
     if (request.trace) {

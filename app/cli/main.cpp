@@ -5,8 +5,8 @@
 #include "input_limits.h"
 #include "printable.h"
 
-#include <CLI/CLI.hpp>
 #include "overlays.h" // the overlay table (header-only): its names, for lesson files
+#include <CLI/CLI.hpp>
 
 #include <csignal>
 #include <exception>
@@ -62,10 +62,10 @@ int main(int argc, char** argv) {
         runCmd->add_option("--gravity", gravity,
                            "Gravity GX,GY, e.g. 0,-9.81, each " + describe(limits::kGravity) +
                                " (default: the scene's)");
-    CLI::Option* stepsOpt =
-        runCmd->add_option("--steps", steps,
-                           "Frames to simulate, " + describe(limits::kFrames) +
-                               " (the frame budget; default 600, i.e. 10 s at dt 1/60)");
+    CLI::Option* stepsOpt = runCmd->add_option("--steps", steps,
+                                               "Frames to simulate, " + describe(limits::kFrames) +
+                                                   " (the frame budget; default: the scene's "
+                                                   "\"duration\", else 600, i.e. 10 s at dt 1/60)");
     CLI::Option* timeOpt = runCmd->add_option(
         "--time", time,
         "Simulate until T seconds of simulated time (T/dt frames within the frame budget), or "

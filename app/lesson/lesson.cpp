@@ -346,8 +346,8 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
                      const LessonContext& context) {
     requireObject(value, path);
     checkKeys(value, path,
-              {"title", "caption", "scene", "overrides", "overlays", "select", "camera", "pause_at",
-               "question", "answer", "reveal", "expect"});
+              {"title", "caption", "scene", "overrides", "overlays", "select", "thrust", "camera",
+               "pause_at", "question", "answer", "reveal", "expect"});
     LessonStep step;
     if (!value.contains("title")) throw ValueError{path, "missing \"title\""};
     step.title = text(value["title"], keyPath(path, "title"), 1);
@@ -358,6 +358,16 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
         step.overlays = overlayList(value["overlays"], keyPath(path, "overlays"), context);
     if (value.contains("select"))
         step.selected = requireBlock(step.scene, value["select"], keyPath(path, "select"));
+    if (value.contains("thrust")) {
+        const std::string p = keyPath(path, "thrust");
+        step.thrust = number(value["thrust"], p, limits::kThrust);
+        if (step.selected < 0)
+            throw ValueError{p, "needs \"select\": the block the arrow keys push"};
+        const BlockDef& b = step.scene.blocks[static_cast<std::size_t>(step.selected)];
+        if (b.kind != BodyKind::Dynamic)
+            throw ValueError{p, "the selected block " + quoted(b.name) +
+                                    " has no mass: thrust pushes a dynamic block"};
+    }
     if (value.contains("camera"))
         step.camera = parseCamera(value["camera"], keyPath(path, "camera"));
     if (value.contains("pause_at"))

@@ -56,7 +56,10 @@ struct LessonStep {
     double timeScale = 1.0;            // simulated seconds per real second (the app's Time scale)
     std::vector<std::string> overlays; // names from the overlay table, on while the step shows
     int selected = -1;                 // block index, -1 for none
-    std::optional<Bounds> camera;      // world rectangle to fit into the view; none: the bounds
+    // N: the keyboard thrust on with this force (the arrow keys push the selected block, which
+    // is dynamic); none: thrust off.
+    std::optional<double> thrust;
+    std::optional<Bounds> camera; // world rectangle to fit into the view; none: the bounds
     LessonPause pause;
     std::string question; // shown until the next press...
     std::string answer;   // ...which shows this and turns on `reveal`

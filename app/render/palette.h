@@ -59,5 +59,6 @@ constexpr Color kSelection{1.0f, 0.86f, 0.25f, 1.0f};
 constexpr Color kVelocity{0.35f, 0.85f, 1.0f, 0.95f};
 constexpr Color kMomentum{1.0f, 0.59f, 0.24f, 0.55f};
 constexpr Color kFling{1.0f, 0.55f, 0.2f, 1.0f};
+constexpr Color kForce{0.92f, 0.32f, 0.86f, 0.95f}; // force arrows (magenta: not v, not p)
 constexpr Color kLabel{1.0f, 1.0f, 1.0f, 0.95f};
 } // namespace scene_colors

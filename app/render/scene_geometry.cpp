@@ -8,6 +8,7 @@ namespace {
 constexpr double kWallThicknessPx = 10.0;
 constexpr double kArrowWidthPx = 2.5; // the fling arrow's shaft (triangles)
 constexpr double kArrowHeadPx = 11.0;
+constexpr double kForceShaftPx = 5.0; // force arrows (triangles)
 constexpr double kGridMinPx = 12.0;
 
 } // namespace
@@ -44,13 +45,22 @@ ArrowOnScreen arrowOnScreen(const Camera& camera, Vec2 from, Vec2 vector) {
     return a;
 }
 
+Vec2 shownForce(const SceneView& view, std::size_t index) {
+    if (!view.world || index >= view.world->blocks.size()) return {};
+    const Block& b = view.world->blocks[index];
+    if (!b.isDynamic()) return {};
+    const bool thrusted = static_cast<int>(index) == view.thrustBlock;
+    if (!view.vectors && !thrusted) return {};
+    return thrusted ? b.force + view.thrust : b.force;
+}
+
 void SceneGeometry::build(const SceneView& view, double maxPointPx) {
     under.clear();
     momenta.clear();
     over.clear();
     addGrid(view);
     if (view.trails) addTrails(view, *view.trails);
-    if (view.vectors) addArrows(view);
+    if (view.vectors || view.thrustBlock >= 0) addArrows(view);
     if (view.flingActive) {
         const double px = view.camera->pixelsToMetres(1.0);
         over.arrow(view.flingFrom, view.flingTo, kArrowWidthPx * 1.6 * px, kArrowHeadPx * 1.5 * px,
@@ -124,6 +134,15 @@ void SceneGeometry::addTrails(const SceneView& view, const Trails& trails) {
 // blocks: p = m·v points the same way as v, so the two share a line.
 void SceneGeometry::addArrows(const SceneView& view) {
     const double px = view.camera->pixelsToMetres(1.0);
+    // Forces: wide arrows under the velocity arrows (a thrust along the motion shares their line).
+    for (std::size_t i = 0; i < view.world->blocks.size(); ++i) {
+        const Vec2 f = shownForce(view, i);
+        if (f == Vec2{}) continue;
+        const Vec2 from = view.world->blocks[i].position;
+        const Vec2 tip = arrowOnScreen(*view.camera, from, f * kForceArrowScale).tip;
+        over.arrow(from, tip, kForceShaftPx * px, kArrowHeadPx * 1.3 * px, scene_colors::kForce);
+    }
+    if (!view.vectors) return;
     std::size_t dynamic = 0;
     for (const Block& bl : view.world->blocks) dynamic += bl.isDynamic();
     const bool heads = dynamic <= kMomentumHeadsUpTo;

@@ -22,7 +22,11 @@ struct SceneView {
     double displayHeight = 720.0;
     int selected = -1;
     const Trails* trails = nullptr; // drawn when set
-    bool vectors = false;           // velocity and momentum arrows
+    bool vectors = false;           // velocity, momentum and force arrows
+    // The keyboard thrust (N) on block `thrustBlock` this frame (-1: none), added to its own
+    // force; its force arrow is drawn with or without `vectors`.
+    int thrustBlock = -1;
+    Vec2 thrust;
     // Other worlds drawn as coloured outlines over this one (the methods side by side).
     struct Ghosts {
         const World* world = nullptr;
@@ -37,6 +41,12 @@ struct SceneView {
 // Velocity arrows: metres of arrow per m/s; momentum arrows: metres per kg·m/s.
 constexpr double kVelocityArrowScale = 0.25;
 constexpr double kMomentumArrowScale = 0.15;
+
+// Force arrows (lecture, "Newton's 2nd law", F = m·a): metres of arrow per newton.
+constexpr double kForceArrowScale = 0.75;
+// The force arrow block `index` of `view` shows (N): its own force plus the thrust on it; zero
+// when none is drawn (no force, or arrows off and no thrust on it).
+Vec2 shownForce(const SceneView& view, std::size_t index);
 
 // Long arrows keep their heads on screen: up to the knee (a share of the viewport's smaller side)
 // an arrow is drawn to scale; beyond it, its length grows with the logarithm (at most twice the

@@ -89,6 +89,30 @@ TEST(AppState, AdvanceRunsFramesUnlessPaused) {
     EXPECT_EQ(app.world.frame, 3u);
 }
 
+// A scene with a "duration" pauses once when a frame reaches it (within half a frame: 180 frames
+// of 1/60 s end within rounding of 3 s); P then plays on past it.
+TEST(AppState, PausesOnceAtTheScenesDuration) {
+    App app;
+    Scene scene = twoBlocks();
+    scene.duration = 0.5; // 30 frames
+    setScene(app, scene, "two.json");
+    app.paused = false;
+    for (int i = 0; i < 40 && !app.paused; ++i) stepSimulation(app);
+    EXPECT_TRUE(app.paused);
+    EXPECT_EQ(app.world.frame, 30u);
+    EXPECT_NE(app.note.find("P plays on"), std::string::npos) << app.note;
+    app.paused = false;
+    for (int i = 0; i < 30; ++i) stepSimulation(app);
+    EXPECT_FALSE(app.paused);
+    EXPECT_EQ(app.world.frame, 60u);
+    // Edges: a frame ending less than half a frame before the duration reaches it; one ending more
+    // than half a frame before does not.
+    const double dt = 1.0 / 60.0;
+    EXPECT_TRUE(reachesSceneEnd(scene, 0.5 - 1.4 * dt, 0.5 - 0.4 * dt, dt));
+    EXPECT_FALSE(reachesSceneEnd(scene, 0.5 - 1.6 * dt, 0.5 - 0.6 * dt, dt));
+    EXPECT_FALSE(reachesSceneEnd(twoBlocks(), 0.0, 1e9, dt)); // no duration: runs on
+}
+
 TEST(AppState, ResetPutsTheBlocksBackAndKeepsTheChosenSettings) {
     App app;
     setScene(app, twoBlocks(), "two.json");

@@ -157,6 +157,12 @@ int main(int argc, char** argv) {
                   "trace: momentum 6 in row " + std::to_string(r));
     }
 
+    // Without --steps or --time the scene's "duration" (3 s) is the run's length: the same rows,
+    // so the plain `run lecture_example_1.json --trace FILE` shows momentum conserved.
+    run(cli, dir + "lecture_example_1.json", "--trace '" + trace + "'");
+    const auto plain = readCsv(trace);
+    check(plain == rows, "trace without --steps: the scene's 3 s, the same 180 rows");
+
     if (cli_check::failures == 0) std::cout << "all checks passed\n";
     return cli_check::failures == 0 ? 0 : 1;
 }

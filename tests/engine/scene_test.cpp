@@ -341,6 +341,23 @@ TEST(SceneBadFile, NumbersOutOfRange) {
     expectError(sceneText(R"("bounds": [0, 0, 10])", ""), "t.json: world.bounds");
 }
 
+// "duration" (s): optional, positive, finite; it round-trips through the writer.
+TEST(SceneDuration, ParsedCheckedAndSaved) {
+    EXPECT_EQ(loadShipped("lecture_example_1.json").duration, 3.0);
+    EXPECT_FALSE(loadShipped("newtons_cradle.json").duration.has_value());
+    const std::string blocks = R"("blocks": [{"position": [1, 1], "size": 1}]})";
+    expectError(R"({"name": "t", "duration": 0, )" + blocks, "t.json: duration");
+    expectError(R"({"name": "t", "duration": -1, )" + blocks, "t.json: duration");
+    expectError(R"({"name": "t", "duration": "3 s", )" + blocks, "t.json: duration");
+    expectError(R"({"name": "t", "duration": 1e300, )" + blocks, "t.json: duration");
+    const SceneResult r = parseScene(R"({"name": "t", "duration": 2.5, )" + blocks, "t.json");
+    ASSERT_TRUE(r.scene) << r.error.text();
+    EXPECT_EQ(r.scene->duration, 2.5);
+    const SceneResult again = parseScene(sceneToJson(*r.scene), "saved.json");
+    ASSERT_TRUE(again.scene) << again.error.text();
+    EXPECT_EQ(*again.scene, *r.scene);
+}
+
 TEST(SceneBadFile, Overlaps) {
     // Dynamic on dynamic, dynamic in a static, kinematic in a static; the later block is named.
     expectError(blocksText(R"({"position": [5, 5], "size": 1}, {"position": [5.9, 5.9],

@@ -216,6 +216,22 @@ TEST(Lesson, ShippedScenePathsAndSelection) {
     EXPECT_EQ(step.question, "q?");
 }
 
+TEST(Lesson, AStepCanTurnThrustOnForTheSelectedBlock) {
+    const LessonStep step = onlyStep(lessonWith(R"("select": "m2", "thrust": 12.5)"));
+    EXPECT_EQ(step.selected, 1);
+    ASSERT_TRUE(step.thrust);
+    EXPECT_EQ(*step.thrust, 12.5);
+    EXPECT_FALSE(onlyStep(lessonWith(R"("select": "m2")")).thrust); // without it: off
+    // A block without a mass cannot be pushed: the error says which and where.
+    const LessonResult r = parseLesson(
+        R"({"name": "t", "steps": [{"title": "s", "caption": "c", "scene": "platformer",
+            "select": "lift", "thrust": 20}]})",
+        "t.json", context());
+    ASSERT_FALSE(r.lesson);
+    EXPECT_EQ(r.error.text(), "t.json: steps[0].thrust: the selected block \"lift\" has no mass: "
+                              "thrust pushes a dynamic block");
+}
+
 TEST(Lesson, StepNumbersOutsideTheLessonAreErrors) {
     const LessonResult r =
         loadLessonFile(std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json", context());
@@ -296,6 +312,9 @@ TEST(LessonErrors, ValuesNameTheirPath) {
         {R"("overrides": {"bounds": [0, 0, 5, 5]})", "steps[0].overrides"},
         {R"("overrides": {"time_scale": 1000})", "steps[0].overrides.time_scale"},
         {R"("sparkle": true)", "steps[0].sparkle"},
+        {R"("thrust": 5)", "steps[0].thrust"}, // no "select": no block to push
+        {R"("select": "m1", "thrust": 0)", "steps[0].thrust"},
+        {R"("select": "m1", "thrust": "strong")", "steps[0].thrust"},
     };
     for (const Case& c : cases) {
         const LessonResult r = parseLesson(lessonWith(c.fields), "t.json", context());

@@ -1,5 +1,6 @@
 #include "classroom.h"
 
+#include "save_naming.h"
 #include "text_format.h"
 
 #include <algorithm>
@@ -15,8 +16,7 @@ EscapeEffect escapeEffect(bool dialogOpen, bool helpOpen, bool presentMode, bool
 }
 
 bool hasUnsavedEdits(bool blocksEdited, const WorldSettings& scene, const WorldSettings& now) {
-    return blocksEdited || now.gravity != scene.gravity || now.bounciness != scene.bounciness ||
-           now.method != scene.method || now.dt != scene.dt || now.substeps != scene.substeps;
+    return blocksEdited || settingsDiffer(scene, now);
 }
 
 std::string firstSentence(const std::string& text) {

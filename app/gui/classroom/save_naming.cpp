@@ -54,7 +54,8 @@ std::string suggestSavePath(const std::string& sceneName, const std::string& dir
 
 bool settingsDiffer(const WorldSettings& a, const WorldSettings& b) {
     return a.gravity != b.gravity || a.bounciness != b.bounciness || a.method != b.method ||
-           a.dt != b.dt || a.substeps != b.substeps;
+           a.dt != b.dt || a.substeps != b.substeps || a.resolve != b.resolve ||
+           a.integrator != b.integrator || a.mistakes != b.mistakes || a.drag != b.drag;
 }
 
 std::string changedSettingsNote(const WorldSettings& original, const WorldSettings& now) {
@@ -69,6 +70,19 @@ std::string changedSettingsNote(const WorldSettings& original, const WorldSettin
     if (now.method != original.method) add(std::string("method ") + methodName(now.method));
     if (now.dt != original.dt) add("frame rate " + formatNumber(1.0 / now.dt) + " Hz");
     if (now.substeps != original.substeps) add("substeps " + std::to_string(now.substeps));
+    if (now.resolve != original.resolve) add(std::string("resolve ") + resolveName(now.resolve));
+    if (now.integrator != original.integrator)
+        add(std::string("integrator ") + integratorName(now.integrator));
+    if (now.mistakes != original.mistakes) {
+        std::string names;
+        for (int m = 0; m < static_cast<int>(Mistake::Count); ++m) {
+            if (!now.has(static_cast<Mistake>(m))) continue;
+            names +=
+                (names.empty() ? "" : " and ") + std::string(mistakeName(static_cast<Mistake>(m)));
+        }
+        add(names.empty() ? std::string("no mistakes") : "mistakes " + names);
+    }
+    if (now.drag != original.drag) add("drag " + formatNumber(now.drag) + " kg/m³");
     if (parts.empty()) return "";
     return std::string(kNoteStart) + parts + ".";
 }

@@ -27,6 +27,11 @@ LoggedState snapshotForLog(const App& app) {
     s.gravityY = app.world.settings.gravity.y;
     s.dt = app.world.settings.dt;
     s.substeps = app.world.settings.substeps;
+    s.resolve = resolveName(app.world.settings.resolve);
+    s.integrator = integratorName(app.world.settings.integrator);
+    s.mistakes = app.world.settings.mistakes;
+    s.drag = app.world.settings.drag;
+    s.thrust = app.thrust.on;
     s.timeScale = app.timeScale;
     s.uiScale = app.uiScale;
     s.blocks = static_cast<int>(app.world.blocks.size());
@@ -57,6 +62,11 @@ std::vector<std::string> describeChanges(const LoggedState& a, const LoggedState
     }
     if (a.dt != b.dt) out.push_back("dt: " + number(b.dt));
     if (a.substeps != b.substeps) out.push_back("substeps: " + std::to_string(b.substeps));
+    if (a.resolve != b.resolve) out.push_back("resolve: " + b.resolve);
+    if (a.integrator != b.integrator) out.push_back("integrator: " + b.integrator);
+    if (a.mistakes != b.mistakes) out.push_back("mistakes: " + std::to_string(b.mistakes));
+    if (a.drag != b.drag) out.push_back("drag: " + number(b.drag));
+    if (a.thrust != b.thrust) out.push_back("thrust: " + onOff(b.thrust));
     if (a.timeScale != b.timeScale) out.push_back("time scale: " + number(b.timeScale));
     if (a.uiScale != b.uiScale) out.push_back("ui scale: " + number(b.uiScale));
     if (a.blocks != b.blocks) out.push_back("blocks: " + std::to_string(b.blocks));

@@ -21,6 +21,10 @@ struct LoggedState {
     double gravityX = 0.0, gravityY = 0.0;
     double dt = 0.0;
     int substeps = 0;
+    std::string resolve, integrator;
+    unsigned mistakes = 0;
+    double drag = 0.0;
+    bool thrust = false;
     double timeScale = 0.0;
     float uiScale = 0.0f;
     int blocks = 0;

@@ -147,17 +147,31 @@ EscapeEffect pressEscape(App& app) {
 void stepSimulation(App& app) {
     if (isReplaying(app)) app.telemetry.truncateAfter(app.world.time);
     app.history.beforeStep(app.world);
+    // The held thrust is added to the block's own force for this frame only (F = m·a: the same
+    // force accelerates a heavy block slowly and a light one fast), then taken off again.
+    const int pushed = thrustedBlock(app);
+    const Vec2 thrust = thrustForce(app);
     if (app.show.sideBySide) {
         if (!app.methods.running) app.methods.start(app.world);
-        app.methods.step(app.world.settings);
+        app.methods.step(app.world.settings, pushed, thrust);
     } else {
         app.methods.stop();
     }
     app.previousBlocks = app.world.blocks;
     const double frameStart = app.world.time;
     app.lastLog.clear();
+    Vec2 ownForce;
+    if (pushed >= 0) {
+        Block& b = app.world.blocks[static_cast<std::size_t>(pushed)];
+        ownForce = b.force;
+        b.force = ownForce + thrust;
+    }
     app.stats = app.world.step(&app.lastLog);
+    if (pushed >= 0) app.world.blocks[static_cast<std::size_t>(pushed)].force = ownForce;
     app.history.afterStep(app.world);
+    // The timeline rebuilds frames by stepping keyframes, which knows nothing of the keys held:
+    // a thrust frame's result is kept as a keyframe of its own (replays stay bit for bit).
+    if (pushed >= 0) app.history.editedAt(app.world);
     addStep(app.totals, app.stats);
     app.trails.record(app.world);
     app.telemetry.record(app.world, app.selected, app.lastLog);
@@ -177,7 +191,21 @@ void stepSimulation(App& app) {
         app.paused = true;
         app.pausedByCollision = true;
     }
+    if (reachesSceneEnd(app.scene, frameStart, app.world.time, app.world.settings.dt) &&
+        !app.lesson.active()) {
+        app.paused = true;
+        app.note =
+            "The scene has made its point at t = " + formatQuantity(*app.scene.duration, "s") +
+            ": P plays on, R replays.";
+    }
     lessonAfterFrame(app);
+}
+
+bool reachesSceneEnd(const Scene& scene, double frameStart, double frameEnd, double dt) {
+    if (!scene.duration) return false;
+    // Half a frame of slack: T/dt frames of dt end within rounding of T, on either side.
+    const double end = *scene.duration - 0.5 * dt;
+    return frameStart < end && frameEnd >= end;
 }
 
 bool isReplaying(const App& app) {
@@ -208,6 +236,39 @@ int advanceSimulation(App& app, double realSeconds) {
         ++ran;
     }
     return ran;
+}
+
+int thrustedBlock(const App& app) {
+    const int i = app.selected;
+    if (!app.thrust.on || app.thrust.direction == Vec2{} || i < 0 ||
+        i >= static_cast<int>(app.world.blocks.size()) ||
+        !app.world.blocks[static_cast<std::size_t>(i)].isDynamic()) {
+        return -1;
+    }
+    return i;
+}
+
+Vec2 thrustForce(const App& app) {
+    return thrustedBlock(app) < 0 ? Vec2{} : app.thrust.direction * app.thrust.force;
+}
+
+Vec2 appliedForce(const App& app, int index) {
+    if (index < 0 || index >= static_cast<int>(app.world.blocks.size())) return {};
+    const Vec2 own = app.world.blocks[static_cast<std::size_t>(index)].force;
+    return index == thrustedBlock(app) ? own + thrustForce(app) : own;
+}
+
+bool usesPhysicsSection(const App& app) {
+    const WorldSettings& s = app.scene.settings;
+    const WorldSettings d = defaultWorldSettings();
+    if (app.thrust.on || s.resolve != d.resolve || s.integrator != d.integrator ||
+        s.mistakes != d.mistakes || s.drag != d.drag) {
+        return true;
+    }
+    for (const BlockDef& b : app.scene.blocks) {
+        if (b.force != Vec2{}) return true;
+    }
+    return false;
 }
 
 void cycleMethod(App& app) {

@@ -54,6 +54,18 @@ struct Run {
     explicit Run(World start);
 };
 
+// Thrust from the keyboard (the Physics section; lecture, "Spaceship thruster: normal engine, big
+// ship: slow acceleration; small ship: fast acceleration"): with `on` and a dynamic block
+// selected, the held arrow keys push that block with `force` newtons along `direction`, added to
+// its own constant force for the frames they are held; released, no force. The thrust is never
+// part of the world's state (not saved, not kept by the block). Kept by R and Shift+R (it is not
+// in the scene file), set by a lesson step.
+struct ThrustControl {
+    bool on = false;
+    double force = 10.0; // N (limits::kThrust)
+    Vec2 direction;      // the held arrow keys' unit vector this frame; zero: none held
+};
+
 // What the panels and overlay windows keep between frames (ImGui is immediate mode: the widgets
 // keep nothing themselves). Plain data, no ImGui.
 struct UiState {
@@ -61,6 +73,7 @@ struct UiState {
     int inspectorPicked = 0;          // the inspector's collision: 0 the newest, 1 the one before
     std::string inspectorLoggedTitle; // --verbose prints the formula once per collision shown
     int panelFollowedSelection = -2;  // the selection the "Selected block" header last followed
+    std::string physicsFollowedScene; // the scene the "Physics" header last opened or closed for
 };
 
 // The app: the current Run (its base, so app.world is the run's world; restart and scrub assign
@@ -120,6 +133,7 @@ struct App : Run {
     WorldHistory history;
     CostMeasurement cost; // the cost overlay's measurement and tradeoff sweep
     UiState ui;
+    ThrustControl thrust;
     bool pauseOnCollision = false;
     bool pausedByCollision = false; // the last pause came from pauseOnCollision
     // Messages for the panel: the last error (load or save) and the last note.
@@ -201,7 +215,20 @@ void noteFrameShown(App& app, double realSeconds);
 // Stepping from there replays, bit for bit, unless something is changed first.
 bool scrubTo(App& app, std::uint64_t frame);
 // True while the world shows a frame earlier than the newest recorded one.
+// True when the frame from frameStart to frameEnd (s) reaches the scene's "duration" (the app
+// pauses there once; P plays on).
+bool reachesSceneEnd(const Scene& scene, double frameStart, double frameEnd, double dt);
 bool isReplaying(const App& app);
+// The block the keyboard thrust pushes this frame: the selected block when thrust is on, it is
+// dynamic and an arrow key is held; -1 otherwise.
+int thrustedBlock(const App& app);
+// The thrust's force on it (N): direction · force; zero when thrustedBlock() is -1.
+Vec2 thrustForce(const App& app);
+// The force on block `index` this frame (N): its own constant force plus the thrust on it.
+Vec2 appliedForce(const App& app, int index);
+// True when the scene uses what the Physics section sets (a resolve, integrator, mistake or drag
+// other than the default, a block's force) or the thrust is on: the section opens for it.
+bool usesPhysicsSection(const App& app);
 // perfect -> move-and-correct -> turn-based -> perfect.
 void cycleMethod(App& app);
 // The current state as a format v1 scene (names and colours kept).

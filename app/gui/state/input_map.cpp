@@ -1,5 +1,7 @@
 #include "input_map.h"
 
+#include <cmath>
+
 const std::vector<KeyBinding>& keyBindings() {
     static const std::vector<KeyBinding> bindings{
         {keys::kR, false, Action::Reset, "R",
@@ -30,14 +32,26 @@ const std::vector<KeyBinding>& keyBindings() {
         {keys::kQ, true, Action::Quit, "Ctrl+Q", "Quit (asks when there are unsaved edits)"},
         {keys::kPageDown, false, Action::LessonNext, "PageDown",
          "Lesson: answer, then the next step"},
-        {keys::kRight, false, Action::LessonNext, "Right", "Lesson: answer, then the next step"},
+        {keys::kRight, false, Action::LessonNext, "Right",
+         "Lesson: answer, then the next step (thrust off)", true, false, KeyWhen::ThrustOff},
         {keys::kPageUp, false, Action::LessonPrevious, "PageUp", "Lesson: the previous step"},
-        {keys::kLeft, false, Action::LessonPrevious, "Left", "Lesson: the previous step"},
+        {keys::kLeft, false, Action::LessonPrevious, "Left",
+         "Lesson: the previous step (thrust off)", true, false, KeyWhen::ThrustOff},
         {keys::kHome, false, Action::LessonFirst, "Home", "Lesson: the first step"},
         {keys::kEnd, false, Action::LessonLast, "End", "Lesson: the last step"},
         {keys::kEnter, false, Action::LessonJump, "0-9, Enter", "Lesson: go to step number ..."},
         {keys::kKeypadEnter, false, Action::LessonJump, "Keypad Enter",
          "Lesson: go to step number ...", false},
+        {keys::kRight, false, Action::ThrustRight, "Arrow keys",
+         "Thrust on (Physics section): push the selected block while held; the arrows then do "
+         "not step a lesson (PageDown / PageUp do)",
+         true, false, KeyWhen::ThrustOn},
+        {keys::kLeft, false, Action::ThrustLeft, "Left", "Thrust: push left", false, false,
+         KeyWhen::ThrustOn},
+        {keys::kUp, false, Action::ThrustUp, "Up", "Thrust: push up", false, false,
+         KeyWhen::ThrustOn},
+        {keys::kDown, false, Action::ThrustDown, "Down", "Thrust: push down", false, false,
+         KeyWhen::ThrustOn},
     };
     static const std::vector<KeyBinding> withDigits = [] {
         std::vector<KeyBinding> all = bindings;
@@ -50,7 +64,6 @@ const std::vector<KeyBinding>& keyBindings() {
         return all;
     }();
     return withDigits;
-    return bindings;
 }
 
 int digitOfKey(int key) {
@@ -59,12 +72,37 @@ int digitOfKey(int key) {
     return -1;
 }
 
-Action actionForKey(int key, bool ctrl, bool shift) {
+Action actionForKey(int key, bool ctrl, bool shift, bool thrust) {
     for (const KeyBinding& b : keyBindings()) {
+        if (b.when == (thrust ? KeyWhen::ThrustOff : KeyWhen::ThrustOn)) continue;
         if (b.key == key && b.ctrl == ctrl && b.shift == shift) return b.action;
     }
-    if (shift) return actionForKey(key, ctrl, false);
+    if (shift) return actionForKey(key, ctrl, false, thrust);
     return Action::None;
+}
+
+Vec2 thrustDirectionOf(Action action) {
+    switch (action) {
+    case Action::ThrustLeft:
+        return {-1.0, 0.0};
+    case Action::ThrustRight:
+        return {1.0, 0.0};
+    case Action::ThrustDown:
+        return {0.0, -1.0};
+    case Action::ThrustUp:
+        return {0.0, 1.0};
+    default:
+        return {};
+    }
+}
+
+Vec2 heldThrustDirection(const std::function<bool(int key)>& isDown) {
+    Vec2 sum;
+    for (const KeyBinding& b : keyBindings()) {
+        if (b.when == KeyWhen::ThrustOn && isDown(b.key)) sum = sum + thrustDirectionOf(b.action);
+    }
+    const double n = std::hypot(sum.x, sum.y);
+    return n > 0.0 ? sum * (1.0 / n) : Vec2{};
 }
 
 const char* actionName(Action action) {
@@ -121,6 +159,14 @@ const char* actionName(Action action) {
         return "lesson-digit";
     case Action::LessonJump:
         return "lesson-jump";
+    case Action::ThrustLeft:
+        return "thrust-left";
+    case Action::ThrustRight:
+        return "thrust-right";
+    case Action::ThrustDown:
+        return "thrust-down";
+    case Action::ThrustUp:
+        return "thrust-up";
     }
     return "none";
 }

@@ -2,6 +2,9 @@
 // data and one function, so the Help window and the tests read the same table.
 #pragma once
 
+#include "vec2.h"
+
+#include <functional>
 #include <vector>
 
 // Key codes are GLFW's: ImGui 1.86 with its GLFW backend indexes io.KeysDown by them, and the
@@ -26,6 +29,8 @@ constexpr int kTab = 258;
 constexpr int kDelete = 261;
 constexpr int kRight = 262;
 constexpr int kLeft = 263;
+constexpr int kDown = 264;
+constexpr int kUp = 265;
 constexpr int kPageUp = 266;
 constexpr int kPageDown = 267;
 constexpr int kHome = 268;
@@ -65,7 +70,17 @@ enum class Action {
     LessonLast,       // End
     LessonDigit,      // 0-9: a step number (digitOfKey), then...
     LessonJump,       // Enter: go to it
+    // Thrust on (the Physics section): the arrow keys push the selected block while held. The
+    // frame reads which are down (heldThrustDirection); a press itself does nothing.
+    ThrustLeft,
+    ThrustRight,
+    ThrustDown,
+    ThrustUp,
 };
+
+// When a binding holds: always, or only with thrust off or on (the arrow keys step the lesson
+// with thrust off and push the selected block with it on).
+enum class KeyWhen { Always, ThrustOff, ThrustOn };
 
 // A key press as the window reports it (queued by the window backend, so a tap shorter than a
 // frame is not lost: ImGui 1.86 only sees keys still down at the start of a frame).
@@ -83,13 +98,21 @@ struct KeyBinding {
     const char* description; // as shown in the Help window
     bool listed = true;      // in the Help window (one row stands for the ten digit keys)
     bool shift = false;
+    KeyWhen when = KeyWhen::Always;
 };
 
 // Every binding, in the order the Help window lists them.
 const std::vector<KeyBinding>& keyBindings();
-// The action for `key` pressed with (or without) Ctrl and Shift; Action::None when unbound. A key
-// bound without Shift also answers with Shift held when it has no Shift binding of its own.
-Action actionForKey(int key, bool ctrl, bool shift = false);
+// The action for `key` pressed with (or without) Ctrl and Shift, with thrust on or off;
+// Action::None when unbound. A key bound without Shift also answers with Shift held when it has
+// no Shift binding of its own.
+Action actionForKey(int key, bool ctrl, bool shift = false, bool thrust = false);
+// The unit vector a thrust action pushes along ((1, 0) for ThrustRight); zero for other actions.
+Vec2 thrustDirectionOf(Action action);
+// The direction the held thrust keys push (their bindings in the table, `isDown` asked for each
+// key): the sum of their directions made unit length (Right and Up: diagonal, opposite keys
+// cancel); zero when none is held.
+Vec2 heldThrustDirection(const std::function<bool(int key)>& isDown);
 // The digit a key types (0-9, top row or keypad); -1 for other keys.
 int digitOfKey(int key);
 // A short name for logs ("reset", "pause", ...).

@@ -79,6 +79,8 @@ bool enterStep(App& app, std::size_t index) {
     app.slowMotion = false;
     app.pauseOnCollision = false;
     app.selected = step.selected;
+    app.thrust.on = step.thrust.has_value(); // the step states it, like its overlays
+    if (step.thrust) app.thrust.force = *step.thrust;
     resetScene(app); // again, with the selection: the plots and the point of impact follow it
     const StepRun run = runStepToPause(step);
     s.pauseFrame = static_cast<std::uint64_t>(run.progress.frames);

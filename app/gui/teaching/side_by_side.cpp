@@ -12,13 +12,22 @@ void MethodsSideBySide::start(const World& world) {
     running = true;
 }
 
-void MethodsSideBySide::step(const WorldSettings& live) {
+void MethodsSideBySide::step(const WorldSettings& live, int pushed, Vec2 thrust) {
     if (!running) return;
     for (std::size_t m = 0; m < runs.size(); ++m) {
         MethodRun& r = runs[m];
         r.world.settings = live;
         r.world.settings.method = static_cast<Method>(m);
+        const bool push = pushed >= 0 && static_cast<std::size_t>(pushed) < r.world.blocks.size() &&
+                          r.world.blocks[static_cast<std::size_t>(pushed)].isDynamic();
+        Vec2 own;
+        if (push) {
+            Block& b = r.world.blocks[static_cast<std::size_t>(pushed)];
+            own = b.force;
+            b.force = own + thrust;
+        }
         r.stats = r.world.step();
+        if (push) r.world.blocks[static_cast<std::size_t>(pushed)].force = own;
         addStep(r.totals, r.stats);
     }
 }

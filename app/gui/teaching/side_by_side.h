@@ -21,8 +21,9 @@ struct MethodsSideBySide {
     // Copies `world` once per method (each with its own method).
     void start(const World& world);
     void stop() { running = false; }
-    // Steps the three worlds one frame, with `live`'s settings (the sliders) except the method.
-    void step(const WorldSettings& live);
+    // Steps the three worlds one frame, with `live`'s settings (the sliders) except the method;
+    // block `pushed` (when >= 0) feels `thrust` (N) besides its own force this frame.
+    void step(const WorldSettings& live, int pushed = -1, Vec2 thrust = {});
     // Largest distance (m) between a block under `method` and the same block under perfect.
     double divergence(Method method) const;
     const MethodRun& run(Method method) const { return runs[static_cast<std::size_t>(method)]; }

@@ -16,7 +16,8 @@ bool sameSettings(const WorldSettings& a, const WorldSettings& b) {
     return sameVec(a.gravity, b.gravity) && sameBits(a.bounciness, b.bounciness) &&
            sameBits(a.dt, b.dt) && a.substeps == b.substeps && a.method == b.method &&
            sameBits(a.restSpeed, b.restSpeed) && a.eventCap == b.eventCap &&
-           a.measureOverlap == b.measureOverlap;
+           a.measureOverlap == b.measureOverlap && a.resolve == b.resolve &&
+           a.integrator == b.integrator && a.mistakes == b.mistakes && sameBits(a.drag, b.drag);
 }
 
 } // namespace
@@ -39,7 +40,8 @@ bool WorldHistory::sameAsLast(const World& w) const {
     for (std::size_t i = 0; i < w.blocks.size(); ++i) {
         const Block &a = w.blocks[i], &b = last_.blocks[i];
         if (!sameVec(a.position, b.position) || !sameVec(a.velocity, b.velocity) ||
-            !sameVec(a.size, b.size) || !sameBits(a.mass, b.mass) || a.kind != b.kind) {
+            !sameVec(a.size, b.size) || !sameBits(a.mass, b.mass) || !sameVec(a.force, b.force) ||
+            a.kind != b.kind) {
             return false;
         }
     }

@@ -14,7 +14,7 @@ void handleKeys(App& app, const std::vector<KeyPress>& keys) {
     // Typing into a text field (a file name) must not trigger hotkeys; Esc still closes dialogs.
     const bool typing = ImGui::GetIO().WantTextInput;
     for (const KeyPress& k : keys) {
-        const Action action = actionForKey(k.key, k.ctrl, k.shift);
+        const Action action = actionForKey(k.key, k.ctrl, k.shift, app.thrust.on);
         if (typing && action != Action::Escape) continue;
         if (action == Action::LessonDigit)
             lessonTypeDigit(app, digitOfKey(k.key));
@@ -118,6 +118,11 @@ void applyAction(App& app, Action action) {
         break;
     case Action::LessonDigit: // needs the key: handleKeys
         break;
+    case Action::ThrustLeft: // held, not pressed: appFrame reads the keys down
+    case Action::ThrustRight:
+    case Action::ThrustDown:
+    case Action::ThrustUp:
+        break;
     }
 }
 
@@ -138,6 +143,12 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     app.shownWindows.clear();
     updateCamera(app, io.DisplaySize.x, io.DisplaySize.y);
     handleKeys(app, keys);
+    // Thrust: the arrow keys held now (not while typing into a field).
+    const bool typing = io.WantTextInput;
+    app.thrust.direction = app.thrust.on && !typing ? heldThrustDirection([&io](int key) {
+        return key >= 0 && key < IM_ARRAYSIZE(io.KeysDown) && io.KeysDown[key];
+    })
+                                                    : Vec2{};
     handleSceneMouse(app);
     updateCamera(app, io.DisplaySize.x, io.DisplaySize.y); // the UI toggle may have changed it
     if (runClock) {
@@ -167,6 +178,8 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
     view.selected = app.selected;
     view.theme = &sceneTheme(app.lightTheme);
     view.vectors = app.show.vectors;
+    view.thrustBlock = thrustedBlock(app);
+    view.thrust = thrustForce(app);
     view.trails = app.show.trails ? &app.trails : nullptr;
     if (app.show.sideBySide && app.methods.running) {
         for (int m = 0; m < static_cast<int>(Method::Count); ++m) {

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace {
 
@@ -64,11 +65,11 @@ void lessonSection(App& app) {
     ImGui::TextWrapped("%s", s.lesson->name.c_str());
     const float w = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
     if (ImGui::Button("< Prev", ImVec2(w, 0))) applyAction(app, Action::LessonPrevious);
-    tooltip("PageUp or Left");
+    tooltip("PageUp (or Left, with thrust off)");
     ImGui::SameLine();
     if (ImGui::Button(s.asking() ? "Answer >" : "Next >", ImVec2(w, 0)))
         applyAction(app, Action::LessonNext);
-    tooltip("PageDown or Right");
+    tooltip("PageDown (or Right, with thrust off)");
     ImGui::SameLine();
     if (ImGui::Button("Restart (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
     const float rows = std::min<float>(8.0f, static_cast<float>(s.lesson->steps.size()));
@@ -172,6 +173,97 @@ void simulationSection(App& app) {
     }
 }
 
+// A combo over the engine's own list of names (resolveName, integratorName): no second list.
+template <typename E> bool enumCombo(const char* label, E& value, const char* (*name)(E)) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, name(value))) {
+        for (int i = 0; i < static_cast<int>(E::Count); ++i) {
+            const E e = static_cast<E>(i);
+            if (ImGui::Selectable(name(e), e == value) && e != value) {
+                value = e;
+                changed = true;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+// Issue 16's settings (each a scene key, kept by R, restored by Shift+R, saved by Ctrl+S) and the
+// keyboard thrust (the app's own: kept by both resets, set by a lesson step).
+void physicsSection(App& app) {
+    // Opens for a scene that uses it (thruster, feather and stone, the mistakes), else closed.
+    const std::string scene = app.scenePath + "\n" + app.scene.name;
+    if (scene != app.ui.physicsFollowedScene) {
+        ImGui::SetNextItemOpen(usesPhysicsSection(app), ImGuiCond_Always);
+        app.ui.physicsFollowedScene = scene;
+    }
+    if (!ImGui::CollapsingHeader("Physics")) return;
+    WorldSettings& s = app.world.settings;
+    enumCombo("resolve", s.resolve, resolveName);
+    tooltip("momentum: with Newton, the lecture's formula u = (m1·v1 + m2·v2)/(m1 + m2), "
+            "v' = u - C·(v - u)\nreflect: without Newton, each body reverses its own component "
+            "as off a wall, v' = -C·v (momentum is not kept)\n(slide \"Demo: bouncing squares; "
+            "with/without Newton\")");
+    enumCombo("integrator", s.integrator, integratorName);
+    tooltip("semi-implicit-euler: v += a·h, then x += v·h (the lecture's)\nexplicit-euler: x "
+            "moves with the old v\nexact: x += v·h + a·h²/2, the parabola (slide \"It is just an "
+            "approximation of the true movement!\")");
+    float drag = static_cast<float>(s.drag);
+    if (ImGui::SliderFloat("drag k", &drag, 0.0f, 1000.0f, "%.3g kg/m³",
+                           ImGuiSliderFlags_Logarithmic)) {
+        // A value typed with Ctrl+click may lie outside the slider: kept within it, and said so.
+        const TypedValue k = checkTypedValue("drag k", drag, 0.0, 1000.0, "kg/m³");
+        s.drag = k.value;
+        if (!k.message.empty()) app.error = k.message;
+    }
+    tooltip("Quadratic drag: force -k·A·|v|·v, A = w·h; terminal speed sqrt(m·g/(k·A)). Air 1.2, "
+            "water 1000 (slide \"Viscosity/drag: a feather falls slower than a stone\"; "
+            "Ctrl+click to type)");
+    ImGui::TextColored(kDimColor, "Mistakes (the Tips slides' bugs)");
+    for (int m = 0; m < static_cast<int>(Mistake::Count); ++m) {
+        const Mistake mistake = static_cast<Mistake>(m);
+        bool on = s.has(mistake);
+        if (ImGui::Checkbox(mistakeName(mistake), &on)) s.set(mistake, on);
+        tooltip((std::string("Slide: \"") + mistakeSlide(mistake) + "\"").c_str());
+    }
+    ImGui::Separator();
+    ImGui::Checkbox("Thrust (arrow keys)", &app.thrust.on);
+    tooltip("Hold the arrow keys to push the selected block with the thrust force (added to its "
+            "own force while held). The arrows then do not step a lesson: PageDown / PageUp do "
+            "(slide \"Spaceship thruster: big ship: slow acceleration; small ship: fast\")");
+    float thrust = static_cast<float>(app.thrust.force);
+    if (ImGui::SliderFloat("thrust force", &thrust, 0.1f, 1000.0f, "%.3g N",
+                           ImGuiSliderFlags_Logarithmic)) {
+        const TypedValue f = checkTypedValue("thrust force", thrust, 0.1, 1000.0, "N");
+        app.thrust.force = f.value;
+        if (!f.message.empty()) app.error = f.message;
+    }
+    tooltip("F in N: the same force gives a heavy block a small acceleration a = F/m, a light one "
+            "a large one (Ctrl+click to type)");
+    if (app.thrust.on &&
+        !(app.selected >= 0 && app.selected < static_cast<int>(app.world.blocks.size()) &&
+          app.world.blocks[static_cast<std::size_t>(app.selected)].isDynamic())) {
+        ImGui::TextColored(kDimColor, "Select a moving block to push it.");
+    }
+}
+
+// The selected block's own constant force [fx, fy] (N): a thruster that is always on.
+void blockForceField(App& app, Block& b) {
+    float f[2] = {static_cast<float>(b.force.x), static_cast<float>(b.force.y)};
+    if (ImGui::DragFloat2("force", f, 0.05f, -1000.0f, 1000.0f, "%.2f N")) {
+        // Typed (Ctrl+click) values outside the field's range are kept within it, and said so.
+        const TypedValue fx = checkTypedValue("force x", f[0], -1000.0, 1000.0, "N");
+        const TypedValue fy = checkTypedValue("force y", f[1], -1000.0, 1000.0, "N");
+        b.force = Vec2{fx.value, fy.value};
+        if (!fx.message.empty() || !fy.message.empty())
+            app.error = fx.message.empty() ? fy.message : fx.message;
+        noteEdit(app, true);
+    }
+    tooltip("A constant force on the block (N), a = F/m (Ctrl+click to type); its arrow is drawn "
+            "with the arrows overlay");
+}
+
 void selectedSection(App& app) {
     // Opens when a block gets selected, closes when the selection goes; the user may still fold it.
     if (app.selected != app.ui.panelFollowedSelection) {
@@ -201,6 +293,7 @@ void selectedSection(App& app) {
             b.mass = mass;
             noteEdit(app, true);
         }
+        blockForceField(app, b);
     } else {
         ImGui::TextColored(kDimColor, "mass: infinite");
     }
@@ -333,6 +426,7 @@ void drawControlsPanel(App& app) {
     ImGui::BeginChild("##sections", ImVec2(0.0f, 0.0f), false);
     ImGui::PushItemWidth(width * 0.52f);
     simulationSection(app);
+    physicsSection(app);
     overlaysSection(app);
     selectedSection(app);
     statisticsSection(app);

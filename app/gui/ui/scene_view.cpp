@@ -292,6 +292,40 @@ void drawArrowValues(const App& app, ImDrawList* dl) {
     }
 }
 
+// Force arrows carry their value, "F = 2 N" (or the vector when it is not along an axis), at the
+// head: the arrow's length is to scale only up to the knee.
+void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl) {
+    int written = 0;
+    for (std::size_t i = 0; i < app.world.blocks.size() && written < kMaxArrowValueLabels; ++i) {
+        const Vec2 f = shownForce(view, i);
+        if (f == Vec2{}) continue;
+        const Block& b = app.world.blocks[i];
+        const ArrowOnScreen a = arrowOnScreen(app.camera, b.position, f * kForceArrowScale);
+        char text[80];
+        if (f.x == 0.0 || f.y == 0.0) {
+            std::snprintf(text, sizeof text, "F = %s N", formatNumber(length(f)).c_str());
+        } else {
+            std::snprintf(text, sizeof text, "F = (%s, %s) N", formatNumber(f.x).c_str(),
+                          formatNumber(f.y).c_str());
+        }
+        const Vec2 tip = app.camera.worldToScreen(a.tip);
+        const ImVec2 ts = ImGui::CalcTextSize(text);
+        const ScreenRect& vp = app.camera.viewport();
+        // Past the head, along the arrow: beside it for a mostly sideways force, above or
+        // below it for a mostly vertical one (kept in the view).
+        const float gap = 6.0f, tx = static_cast<float>(tip.x), ty = static_cast<float>(tip.y);
+        float x = tx - ts.x * 0.5f, y = f.y > 0.0 ? ty - ts.y - gap : ty + gap;
+        if (std::abs(f.x) >= std::abs(f.y)) {
+            x = f.x > 0.0 ? tx + gap : tx - gap - ts.x;
+            y = ty - ts.y * 0.5f;
+        }
+        x = std::clamp(x, static_cast<float>(vp.x), static_cast<float>(vp.x + vp.width) - ts.x);
+        shadowText(dl, ImVec2(x, y), scene_colors::kForce.packed(), text,
+                   packed(theme().textShadow));
+        ++written;
+    }
+}
+
 // A resting stack's expected top as a dashed line: a method that lets it sink shows the gap.
 void drawReferenceLine(const App& app, ImDrawList* dl) {
     const std::optional<double> top = restingStackTop(app.scene);
@@ -364,6 +398,12 @@ void drawSceneDecorations(const App& app) {
     drawReferenceLine(app, dl);
     drawLabels(app, dl);
     drawArrowValues(app, dl);
+    SceneView forces; // what the scene renderer draws the force arrows from
+    forces.world = &app.world;
+    forces.vectors = app.show.vectors;
+    forces.thrustBlock = thrustedBlock(app);
+    forces.thrust = thrustForce(app);
+    drawForceValues(app, forces, dl);
     drawLargeCount(app, dl);
     drawBadge(app, dl);
     drawFlingReadout(app, dl);
