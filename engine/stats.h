@@ -56,4 +56,8 @@ struct CollisionRecord {
     double C = 0.0;            // bounciness used (0 when the rest rule applied)
     double v1After = 0.0, v2After = 0.0; // m/s after
     bool rest = false;                   // resolved by the rest rule (a resting contact)
+    // Two bodies: the first one's centre is at most the other's along the axis, so they approach
+    // when v1 - v2 > 0 (else when v2 - v1 > 0): the relative-velocity test the inspector shows
+    // (lecture, "Tips – Collision Resolve"). A wall's side is in `other`.
+    bool firstBelow = true;
 };

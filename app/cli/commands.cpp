@@ -1,6 +1,8 @@
 // sandbox-cli run and validate (SPEC.md, "Command-line contract").
 #include "commands.h"
 
+#include "csv.h"
+
 #include "input_limits.h"
 #include "lesson_runner.h"
 #include "printable.h"
@@ -124,18 +126,6 @@ bool applyOptions(const RunRequest& r, std::optional<double> duration, WorldSett
 }
 
 // ---- --trace: one CSV row per frame, for a spreadsheet ----
-
-// A CSV field: quoted, quotes doubled, control bytes (never echoed raw) as spaces.
-std::string csvField(const std::string& text) {
-    std::string out = "\"";
-    for (const char c : text) {
-        if (c == '"')
-            out += "\"\"";
-        else
-            out += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? ' ' : c;
-    }
-    return out + "\"";
-}
 
 void writeTraceHeader(std::ostream& out, const Scene& scene) {
     out << "t";

@@ -3,6 +3,7 @@
 // the same loader, so a lesson accepts exactly the keys and values a scene file does.
 #include "lesson.h"
 
+#include "input_limits.h"
 #include "printable.h"
 #include "scene_json.h"
 
@@ -170,8 +171,9 @@ void loadStepScene(const json& step, const std::string& path, const LessonContex
         const std::string keyAt = keyPath(overridesPath, key);
         if (key == "time_scale") {
             out.timeScale = number(item.value(), keyAt);
-            if (!(out.timeScale >= 0.01 && out.timeScale <= 100.0))
-                throw ValueError{keyAt, "must be from 0.01 to 100"};
+            if (const std::string bad = limits::violation(limits::kTimeScale, out.timeScale);
+                !bad.empty())
+                throw ValueError{keyAt, bad};
         } else if (key == "frame_rate") {
             if (overrides.contains("dt")) throw ValueError{keyAt, "give \"dt\" or \"frame_rate\""};
             const double rate = number(item.value(), keyAt);
@@ -347,7 +349,7 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
     requireObject(value, path);
     checkKeys(value, path,
               {"title", "caption", "scene", "overrides", "overlays", "select", "thrust", "camera",
-               "pause_at", "question", "answer", "reveal", "expect"});
+               "frame", "pause_at", "question", "answer", "reveal", "expect"});
     LessonStep step;
     if (!value.contains("title")) throw ValueError{path, "missing \"title\""};
     step.title = text(value["title"], keyPath(path, "title"), 1);
@@ -370,6 +372,14 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
     }
     if (value.contains("camera"))
         step.camera = parseCamera(value["camera"], keyPath(path, "camera"));
+    if (value.contains("frame")) {
+        // The app's view frames (view_frame.h): the world's, or the centre of mass's.
+        const std::string p = keyPath(path, "frame");
+        const std::string frame = string(value["frame"], p);
+        if (frame != "world" && frame != "com")
+            throw ValueError{p, "unknown frame " + quoted(frame) + " (expected world or com)"};
+        step.centreOfMassFrame = frame == "com";
+    }
     if (value.contains("pause_at"))
         step.pause = parsePause(value["pause_at"], keyPath(path, "pause_at"), step.scene);
     if (value.contains("question")) {

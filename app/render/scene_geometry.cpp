@@ -131,7 +131,8 @@ void SceneGeometry::addTrails(const SceneView& view, const Trails& trails) {
 }
 
 // Momentum arrows (wide, translucent, under) and velocity arrows from the centres of moving
-// blocks: p = m·v points the same way as v, so the two share a line.
+// blocks: p = m·v points the same way as v, so the two share a line. Both as seen in the view's
+// frame: w = v - u in the centre of mass's.
 void SceneGeometry::addArrows(const SceneView& view) {
     const double px = view.camera->pixelsToMetres(1.0);
     // Forces: wide arrows under the velocity arrows (a thrust along the motion shares their line).
@@ -149,7 +150,8 @@ void SceneGeometry::addArrows(const SceneView& view) {
     for (const Block& bl : view.world->blocks) {
         if (!bl.isDynamic()) continue;
         const Vec2 tip =
-            arrowOnScreen(*view.camera, bl.position, bl.velocity * (bl.mass * kMomentumArrowScale))
+            arrowOnScreen(*view.camera, bl.position,
+                          (bl.velocity - view.frameVelocity) * (bl.mass * kMomentumArrowScale))
                 .tip;
         if (heads)
             momenta.lineArrow(bl.position, tip, kArrowHeadPx * 1.3 * px, scene_colors::kMomentum);
@@ -158,8 +160,9 @@ void SceneGeometry::addArrows(const SceneView& view) {
     }
     for (const Block& bl : view.world->blocks) {
         if (bl.kind == BodyKind::Static) continue;
-        const Vec2 tip =
-            arrowOnScreen(*view.camera, bl.position, bl.velocity * kVelocityArrowScale).tip;
+        const Vec2 tip = arrowOnScreen(*view.camera, bl.position,
+                                       (bl.velocity - view.frameVelocity) * kVelocityArrowScale)
+                             .tip;
         over.lineArrow(bl.position, tip, kArrowHeadPx * px, view.theme->velocity);
     }
 }

@@ -23,6 +23,7 @@ struct SceneView {
     int selected = -1;
     const Trails* trails = nullptr; // drawn when set
     bool vectors = false;           // velocity, momentum and force arrows
+    Vec2 frameVelocity;             // m/s, subtracted from every arrow (the frame moves with it)
     // The keyboard thrust (N) on block `thrustBlock` this frame (-1: none), added to its own
     // force; its force arrow is drawn with or without `vectors`.
     int thrustBlock = -1;

@@ -178,6 +178,69 @@ TEST(AppState, AnEditDuringReplaySaysANewFutureStarts) {
     EXPECT_EQ(app.world.blocks[1].position.y, 9.0);
 }
 
+// Issue 15: scrubbed back on the timeline, the inspector lists the last collisions up to the
+// time shown (the same records, bit for bit, as when they happened), not the newest ones.
+TEST(AppState, TheInspectorFollowsTheScrubbedTime) {
+    App app;
+    setScene(app, twoBlocks(), "two.json");
+    std::vector<CollisionRecord> all;            // every collision as it happened
+    std::vector<std::size_t> countAfterFrame{0}; // collisions up to frame f
+    for (int i = 0; i < 900; ++i) {
+        stepSimulation(app);
+        for (const CollisionRecord& r : app.lastLog) {
+            if (!r.rest) all.push_back(r);
+        }
+        countAfterFrame.push_back(all.size());
+    }
+    ASSERT_GE(all.size(), 4u); // A hits B, B the right wall, ...
+    const std::uint64_t newest = app.world.frame;
+    auto expectUpTo = [&](std::uint64_t frame) {
+        ASSERT_TRUE(scrubTo(app, frame));
+        const std::size_t n = countAfterFrame[frame];
+        const std::size_t first = n > kRecentCollisions ? n - kRecentCollisions : 0;
+        const auto& recent = app.telemetry.recent;
+        ASSERT_EQ(recent.size(), n - first) << "frame " << frame;
+        for (std::size_t k = first; k < n; ++k) {
+            const CollisionRecord &want = all[k], &got = recent[k - first];
+            EXPECT_EQ(got.time, want.time);
+            EXPECT_EQ(got.block, want.block);
+            EXPECT_EQ(got.other, want.other);
+            EXPECT_EQ(got.v1After, want.v1After);
+            EXPECT_LE(got.time, app.world.time + 1e-12);
+        }
+    };
+    // Just before the first collision's frame, just after it, between later ones, the newest.
+    std::uint64_t firstHit = 0;
+    while (countAfterFrame[firstHit] == 0) ++firstHit;
+    expectUpTo(firstHit - 1);
+    EXPECT_TRUE(app.telemetry.recent.empty());
+    expectUpTo(firstHit);
+    expectUpTo(newest / 2);
+    expectUpTo(newest - 1);
+    expectUpTo(newest);
+    EXPECT_EQ(app.telemetry.recent.size(), std::min(all.size(), kRecentCollisions));
+}
+
+TEST(HistoryForTheInspector, TheWalkBackStopsAtItsBudget) {
+    App app;
+    setScene(app, twoBlocks(), "two.json");
+    std::vector<std::size_t> countAfterFrame{0};
+    std::size_t count = 0;
+    for (int i = 0; i < 900; ++i) {
+        stepSimulation(app);
+        for (const CollisionRecord& r : app.lastLog) count += r.rest ? 0 : 1;
+        countAfterFrame.push_back(count);
+    }
+    // A budget of one block-step: only the frames since the last keyframe (every 12 frames, no
+    // edits here) are stepped again, nothing older is searched.
+    for (std::uint64_t f = 1; f <= 900; ++f) {
+        const std::uint64_t keyframe = f / 12 * 12 == f ? f - 12 : f / 12 * 12;
+        const std::size_t want = countAfterFrame[f] - countAfterFrame[keyframe];
+        EXPECT_EQ(app.history.collisionsUpTo(f, 24, 1).size(), std::min<std::size_t>(want, 24))
+            << "frame " << f;
+    }
+}
+
 TEST(AppState, CycleMethodVisitsAllThree) {
     App app;
     setScene(app, twoBlocks(), "two.json");
@@ -547,3 +610,26 @@ TEST(SceneLibrary, FindsShippedScenesByName) {
 }
 
 } // namespace
+
+// Issue 15: high_mass_ratio ends as its description says: exactly 3141 collisions, paused at its
+// "duration" (20 s) before the giant comes back from the far wall (about 26 s).
+TEST(AppState, HighMassRatioStopsAtItsDurationWith3141) {
+    App app;
+    const SceneResult loaded =
+        loadSceneFile(std::string(SANDBOX_SCENES_DIR) + "/high_mass_ratio.json");
+    ASSERT_TRUE(loaded.scene) << loaded.error.text();
+    ASSERT_TRUE(loaded.scene->duration);
+    setScene(app, *loaded.scene, "high_mass_ratio.json");
+    app.paused = false;
+    int frames = 0;
+    while (!app.paused && frames < 3000) {
+        advanceSimulation(app, 1.0 / 60.0);
+        ++frames;
+    }
+    ASSERT_TRUE(app.paused);
+    EXPECT_EQ(app.world.frame, 1200u); // 20 s at 60 frames/s
+    EXPECT_EQ(app.totals.collisions, 3141u);
+    // Played on, the giant comes back from the far wall: the count goes on (why it ends at 20 s).
+    for (int i = 0; i < 900; ++i) stepSimulation(app);
+    EXPECT_GT(app.totals.collisions, 3141u);
+}

@@ -2,6 +2,7 @@
 // classroom sizes (1280x720 and 1920x1080, UI scale 1 and 1.5) with every overlay on. No window
 // may cover the world's rectangle, every window lies inside the image, and the scene view holds
 // the world. In present mode (--present) there is no window at all.
+#include "overlays.h"
 #include "scene_library.h"
 
 #include <gtest/gtest.h>
@@ -19,8 +20,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kEveryOverlay =
-    "plots,vectors,trails,inspector,com,poi,sidebyside,timeline,cost";
+// Every row of the overlay table, so a new overlay is checked too.
+const std::string kEveryOverlay = [] {
+    std::string list;
+    for (const std::string& name : overlayNames()) list += (list.empty() ? "" : ",") + name;
+    return list;
+}();
 
 struct Rect {
     double x = 0, y = 0, w = 0, h = 0;

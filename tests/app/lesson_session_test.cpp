@@ -2,6 +2,7 @@
 // keys walk through the steps and their questions, R restarts, a bad lesson keeps the current one.
 #include "app_state.h"
 #include "input_map.h"
+#include "inspector_format.h"
 #include "lesson_runner.h"
 #include "lesson_session.h"
 
@@ -185,4 +186,39 @@ TEST(LessonSession, LoadingASceneLeavesTheLesson) {
     EXPECT_FALSE(app.fitBounds.has_value());
     applyLessonAction(app, Action::LessonNext); // nothing happens without a lesson
     EXPECT_EQ(app.scene.name, "Single bounce");
+}
+
+// Issue 18: in present mode a lesson keeps one caption bar ("n / N · title", the caption, and
+// the method and t beside the heading, since the status badge is hidden), the scene below it,
+// and no window.
+TEST(LessonSession, PresentModeKeepsTheOneCaptionBar) {
+    App app = lessonApp();
+    app.captionHeight = 120.0; // what the bar measured last frame
+    app.show.plots = true;
+    setPresentMode(app, true);
+    const Layout layout = computeAppLayout(app, 1920, 1080);
+    EXPECT_TRUE(layout.windows.empty());
+    EXPECT_EQ(layout.panel.width, 0.0);
+    EXPECT_GE(layout.scene.y, 120.0); // the world is fitted below the bar
+    EXPECT_EQ(lessonBarStatus(true, Method::Perfect, 0.625), "perfect   ·   t = 0.62 s");
+    EXPECT_EQ(lessonBarStatus(false, Method::Perfect, 0.625),
+              "PageDown next, PageUp back, R restart");
+    EXPECT_EQ(lessonHeading(app.lesson).rfind("1 / ", 0), 0u) << lessonHeading(app.lesson);
+}
+
+// Issue 18: step 24 ("collisions that are not really collisions") pauses on the collision the
+// relative-velocity test refuses, and the inspector says so as the Tips slide does.
+TEST(LessonSession, TheNotACollisionStepShowsTheRelativeVelocityTest) {
+    App app = lessonApp();
+    ASSERT_TRUE(enterStep(app, 23)) << app.error;
+    ASSERT_EQ(app.lesson.step()->title, "Tips: BAD, a collision that is not a collision");
+    lessonShowPausePoint(app);
+    ASSERT_FALSE(app.telemetry.recent.empty());
+    const CollisionRecord& r = app.telemetry.recent.back();
+    EXPECT_TRUE(r.firstBelow); // red is behind (left of) blue
+    const CollisionFormula f =
+        collisionFormula(r, blockDisplayName(app, r.block), blockDisplayName(app, r.other));
+    EXPECT_TRUE(f.separating);
+    EXPECT_EQ(f.relative.rfind("rel. vel. along x = v1 - v2 = 3 - 4 = -1 < 0: separating", 0), 0u)
+        << f.relative;
 }

@@ -241,6 +241,20 @@ TEST(PlotLogic, NiceTicks) {
     EXPECT_EQ(decadeLabel(6.0), "1e+06");
 }
 
+TEST(PlotLogic, WhileReplayingTheWindowFollowsTheScrubbedTime) {
+    // Live (nothing recorded after now): the scrolling window, now at its right edge.
+    EXPECT_DOUBLE_EQ(timelineWindow(25.0, 25.0, 10.0).lo, 15.0);
+    EXPECT_DOUBLE_EQ(timelineWindow(25.0, 25.0, 10.0).hi, 25.0);
+    // Scrubbed back to 20 s of a 40 s recording: now in the middle of the window.
+    EXPECT_DOUBLE_EQ(timelineWindow(20.0, 40.0, 10.0).lo, 15.0);
+    EXPECT_DOUBLE_EQ(timelineWindow(20.0, 40.0, 10.0).hi, 25.0);
+    // Near the newest frame: the window ends at the recording's end, now inside it.
+    EXPECT_DOUBLE_EQ(timelineWindow(38.0, 40.0, 10.0).hi, 40.0);
+    // Near the start: [0, span].
+    EXPECT_DOUBLE_EQ(timelineWindow(1.0, 40.0, 10.0).lo, 0.0);
+    EXPECT_DOUBLE_EQ(timelineWindow(1.0, 40.0, 10.0).hi, 10.0);
+}
+
 TEST(PlotLogic, ScrollingWindowAndRanges) {
     EXPECT_DOUBLE_EQ(scrollingWindow(3.0, 10.0).lo, 0.0);
     EXPECT_DOUBLE_EQ(scrollingWindow(3.0, 10.0).hi, 10.0);

@@ -1,6 +1,7 @@
 // The Physics section's logic (no GL): the keyboard thrust (key routing with thrust on and off,
 // the force only while held, a = F/m on one frame), issue 16's settings under R, Shift+R, save
 // and the timeline, and a lesson step that turns the thrust on.
+#include "app_log.h"
 #include "app_state.h"
 #include "input_map.h"
 #include "lesson_session.h"
@@ -9,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -344,4 +346,23 @@ TEST(ForceArrows, OwnForceWithTheArrowsAndTheHeldThrustAlways) {
     view.thrust = {3.0, 0.0};
     EXPECT_EQ(shownForce(view, 1), (Vec2{5.0, 0.0})); // added while held
     EXPECT_EQ(shownForce(view, 0), Vec2{});
+}
+
+// --verbose logs the Physics settings and the held thrust (the window test reads these lines).
+TEST(PhysicsLog, SettingsAndTheHeldThrust) {
+    App app = shipsApp();
+    const LoggedState before = snapshotForLog(app);
+    app.world.settings.resolve = Resolve::Reflect;
+    app.world.settings.drag = 1.5;
+    app.thrust.on = true;
+    app.thrust.force = 20.0;
+    app.selected = 1;
+    app.thrust.direction = {-1.0, 0.0};
+    const LoggedState held = snapshotForLog(app);
+    const std::vector<std::string> lines = describeChanges(before, held);
+    for (const char* line : {"resolve: reflect", "drag: 1.5", "thrust: on", "thrust held: -20,0 N"})
+        EXPECT_NE(std::find(lines.begin(), lines.end(), line), lines.end()) << line;
+    app.thrust.direction = {};
+    EXPECT_EQ(describeChanges(held, snapshotForLog(app)),
+              std::vector<std::string>{"thrust released"});
 }

@@ -1,5 +1,6 @@
 // Classroom presentation logic without GL: the docked layout (no window over the world, none off
 // screen), numbers as students read them, block names with the current mass, save naming.
+#include "app_state.h"
 #include "classroom.h"
 #include "dock_layout.h"
 #include "inspector_format.h"
@@ -251,6 +252,61 @@ TEST(InspectorNames, SymbolsFollowTheNamesInEitherOrder) {
     EXPECT_EQ(g.given, "m1 = 2, m2 = 1, v1 = -2, v2 = 4, C = 0");
 }
 
+// Issue 18: the inspector states the lecture's relative-velocity test ("Tips – Collision
+// Resolve": resolve only when the relative velocity along the axis closes).
+TEST(InspectorFormat, StatesTheRelativeVelocityTest) {
+    CollisionRecord r;
+    r.block = 0;
+    r.other = 1;
+    r.m1 = 1.0, r.m2 = 1.0, r.C = 0.5, r.u = 3.5;
+    r.v1 = 3.0, r.v2 = 4.0; // red follows the faster blue: separating, resolved by the mistake
+    r.v1After = 3.75, r.v2After = 3.25;
+    r.firstBelow = true;
+    CollisionFormula f = collisionFormula(r, "red", "blue");
+    EXPECT_EQ(f.relative, "rel. vel. along x = v1 - v2 = 3 - 4 = -1 < 0: separating, not a "
+                          "collision (resolved anyway: the mistake no-approach-test)");
+    EXPECT_TRUE(f.separating);
+    r.v1 = 3.75, r.v2 = 3.25; // the next frame: red really hits blue
+    f = collisionFormula(r, "red", "blue");
+    EXPECT_EQ(f.relative, "rel. vel. along x = v1 - v2 = 3.75 - 3.25 = 0.5 > 0: approaching, "
+                          "resolved");
+    EXPECT_FALSE(f.separating);
+    // The first body on the upper side: the test reads v2 - v1 (lecture example 1 seen from m2).
+    r.v1 = 0.0, r.v2 = 6.0;
+    r.firstBelow = false;
+    f = collisionFormula(r, "m2 = 2 kg", "m1 = 1 kg");
+    EXPECT_EQ(f.relative, "rel. vel. along x = v1 - v2 = 6 - 0 = 6 > 0: approaching, resolved");
+    // Walls: the right wall is above the block, the floor below it.
+    EXPECT_EQ(collisionFormula(wallHit(), "m2 = 2 kg", "right wall").relative,
+              "rel. vel. along x = v2 - 0 = 4 - 0 = 4 > 0: approaching, resolved");
+    CollisionRecord drop = wallHit();
+    drop.other = kWallBottom, drop.axis = 1, drop.v1 = -5.0;
+    EXPECT_EQ(collisionFormula(drop, "ball", "floor").relative,
+              "rel. vel. along y = 0 - v = 0 - (-5) = 5 > 0: approaching, resolved");
+}
+
+// The point-of-impact caption never covers a block: it goes to the scene's margin when there is
+// room, else into the world where no block is, the top first.
+TEST(CaptionPlacement, NeverCoversABlock) {
+    const ScreenRect scene{400, 100, 1000, 800};
+    const ScreenRect world{420, 120, 960, 760}; // the world fills the scene, a 20 px margin
+    const std::vector<ScreenRect> blocks = {{430, 130, 300, 200}, {900, 600, 200, 200}};
+    const ScreenRect r = placeCaption(400, 120, scene, world, blocks, 10);
+    for (const ScreenRect& b : blocks) EXPECT_FALSE(rectsOverlap(r, b));
+    EXPECT_TRUE(rectInside(r, scene));
+    EXPECT_TRUE(rectInside(r, {world.x + 10, world.y + 10, world.width - 20, world.height - 20}));
+    EXPECT_EQ(r.y, 130); // the top: right of the first block
+    EXPECT_GE(r.x, 730);
+    // A wide margin above the world: the caption goes there, off the world.
+    const ScreenRect low{420, 400, 960, 480};
+    const ScreenRect m = placeCaption(400, 120, scene, low, blocks, 10);
+    EXPECT_FALSE(rectsOverlap(m, low));
+    EXPECT_TRUE(rectInside(m, scene));
+    // No free spot at all: the least covered one, still inside the scene.
+    const ScreenRect full = placeCaption(400, 120, scene, world, {scene}, 10);
+    EXPECT_TRUE(rectInside(full, scene));
+}
+
 TEST(SaveNaming, OffersANameFromTheSceneAndNeverAnExistingFile) {
     EXPECT_EQ(sceneFileStem("Lecture example 1"), "lecture_example_1");
     EXPECT_EQ(sceneFileStem("High mass ratio (counting pi)"), "high_mass_ratio_counting_pi");
@@ -394,16 +450,67 @@ TEST(Classroom, PausedAtTheStartSaysPToPlay) {
     EXPECT_EQ(startHint(true, 1.0, false), "");
 }
 
-TEST(Classroom, TypedValuesAreRangeChecked) {
-    const TypedValue g = checkTypedValue("gravity y", 1e30, -20, 20, "m/s²");
-    EXPECT_EQ(g.value, 20.0);
-    EXPECT_EQ(g.message, "gravity y 1e+30 m/s² is outside -20 to 20 m/s²: set to 20 m/s²");
-    const TypedValue ok = checkTypedValue("gravity y", -9.81, -20, 20, "m/s²");
-    EXPECT_EQ(ok.value, -9.81);
-    EXPECT_TRUE(ok.message.empty());
-    const TypedValue nan = checkTypedValue("bounciness C", NAN, 0, 1, "");
-    EXPECT_EQ(nan.value, 0.0);
-    EXPECT_FALSE(nan.message.empty());
+TEST(Classroom, TypedValuesAreCheckedAgainstTheInputLimits) {
+    // Gravity typed as 1e30 (the slider says +-20): refused, the field keeps its value.
+    const TypedValue g = checkTypedValue("gravity", 1e30, -9.81, limits::kGravity);
+    EXPECT_FALSE(g.ok);
+    EXPECT_EQ(g.value, -9.81);
+    EXPECT_EQ(g.message, "gravity: must be from -1e9 to 1e9 m/s^2, not 1e30");
+    // Beyond the slider but within the limits: taken.
+    const TypedValue g50 = checkTypedValue("gravity", -50.0, -9.81, limits::kGravity);
+    EXPECT_TRUE(g50.ok);
+    EXPECT_EQ(g50.value, -50.0);
+    EXPECT_TRUE(g50.message.empty());
+    // Each field of the panel against its row of the one table.
+    EXPECT_EQ(checkTypedValue("bounciness C", 1.5, 1.0, limits::kBounciness).message,
+              "bounciness C: must be from 0 to 1, not 1.5");
+    EXPECT_EQ(checkTypedValue("frame rate", 2e6, 60.0, limits::kFrameRate).message,
+              "frame rate: must be from 1 to 1e6 Hz, not 2e6");
+    EXPECT_TRUE(checkTypedValue("frame rate", 1000.0, 60.0, limits::kFrameRate).ok);
+    EXPECT_EQ(checkTypedValue("substeps", 0, 1, limits::kSubsteps).message,
+              "substeps: must be a whole number from 1 to 1000, not 0");
+    EXPECT_EQ(checkTypedValue("time scale", 0.0, 1.0, limits::kTimeScale).message,
+              "time scale: must be from 0.01 to 100, not 0");
+    EXPECT_EQ(checkTypedValue("mass", 0.0, 2.0, limits::kMass).message,
+              "mass: must be from 1e-15 to 1e15 kg, not 0");
+    EXPECT_TRUE(checkTypedValue("mass", 1e6, 2.0, limits::kMass).ok); // high_mass_ratio's giant
+    EXPECT_EQ(checkTypedValue("size", 0.0, 1.0, limits::kSize).message,
+              "size: must be from 1e-6 to 1e9 m, not 0");
+    EXPECT_EQ(checkTypedValue("velocity", -2e9, 3.0, limits::kSpeed).message,
+              "velocity: must be from -1e9 to 1e9 m/s, not -2e9");
+    const TypedValue nan = checkTypedValue("bounciness C", NAN, 0.5, limits::kBounciness);
+    EXPECT_FALSE(nan.ok);
+    EXPECT_EQ(nan.value, 0.5);
+    const TypedValue inf = checkTypedValue("mass", INFINITY, 2.0, limits::kMass);
+    EXPECT_FALSE(inf.ok);
+    EXPECT_EQ(inf.value, 2.0);
+}
+
+TEST(Classroom, TheTypedValueWarningClearsWhenAGoodValueComes) {
+    TypedWarning w;
+    EXPECT_FALSE(w.note("mass", checkTypedValue("mass", 0.0, 2.0, limits::kMass)));
+    EXPECT_EQ(w.field, "mass");
+    EXPECT_EQ(w.message, "mass: must be from 1e-15 to 1e15 kg, not 0");
+    // A good value of another field leaves it; a good mass clears it.
+    EXPECT_TRUE(w.note("velocity", checkTypedValue("velocity", 3.0, 0.0, limits::kSpeed)));
+    EXPECT_EQ(w.field, "mass");
+    EXPECT_TRUE(w.note("mass", checkTypedValue("mass", 0.5, 2.0, limits::kMass)));
+    EXPECT_TRUE(w.message.empty());
+    EXPECT_TRUE(w.field.empty());
+    // A new refusal replaces the warning (one at a time, under its field).
+    w.note("substeps", checkTypedValue("substeps", 2000, 1, limits::kSubsteps));
+    w.note("frame rate", checkTypedValue("frame rate", 0.5, 60, limits::kFrameRate));
+    EXPECT_EQ(w.field, "frame rate");
+}
+
+TEST(Classroom, ANewSceneClearsTheTypedValueWarning) {
+    const SceneResult stack =
+        loadSceneFile(std::string(SANDBOX_SCENES_DIR) + "/resting_stack.json");
+    ASSERT_TRUE(stack.scene);
+    App app;
+    app.ui.typedWarning.note("mass", checkTypedValue("mass", 0.0, 2.0, limits::kMass));
+    setScene(app, *stack.scene, "resting_stack.json");
+    EXPECT_TRUE(app.ui.typedWarning.message.empty());
 }
 
 TEST(Classroom, RestingStackHasAReferenceHeight) {

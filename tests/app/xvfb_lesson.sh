@@ -2,7 +2,8 @@
 # The lesson in the real window under Xvfb: `sandbox --lesson lecture3`; PageDown moves to the
 # next step and PageUp back (the screen changes, the caption says so: the --verbose log prints
 # the caption bar's heading), End goes to the last step, a number and Enter jump, R restarts the
-# step and it pauses again in exactly the same picture.
+# step and it pauses again in exactly the same picture; on the platformer step (thrust on) Right
+# pushes the player instead of stepping.
 #   xvfb_lesson.sh SANDBOX PNG_DIFF CONVERT LESSON WORKDIR
 set -u
 sandbox=$1 png_diff=$2 convert=$3 lesson=$4 work=$5
@@ -53,6 +54,28 @@ sleep 0.3; shot last_b
 [ "$(differing last_a restarted $scene_region)" -gt 0 ] || fail "R: the step did not restart"
 [ "$(differing last_a last_b $scene_region)" -eq 0 ] || fail "R: a different state at the pause"
 echo "ok: R restarts the step and it pauses in the same state"
+
+# Step 25 turns the thrust on (the player selected): held, Right is the player's thrust (the log
+# says so) and does not step the lesson; released, it stops; PageDown still steps, to a step
+# without thrust.
+grep -q "^thrust: on" "$log" || fail "step 25 did not turn the thrust on"
+count() { grep -c -- "$1" "$log"; }
+# wait_more PATTERN N: until the log has more than N lines matching PATTERN.
+wait_more() {
+    for _ in $(seq 300); do [ "$(count "$1")" -gt "$2" ] && return 0; sleep 0.1; done
+    fail "no new '$1' in the log"
+}
+steps=$(count "^lesson step")
+xdotool keydown Right; wait_for "thrust held: 20,0 N" 30
+xdotool keyup Right; wait_for "thrust released" 30
+sleep 0.3
+[ "$(count "^lesson step")" -eq "$steps" ] || fail "Right stepped the lesson with thrust on"
+echo "ok: with thrust on, Right is the player's thrust and does not step the lesson"
+n=$(count "lesson step 26 / ")
+off=$(count "^thrust: off")
+xdotool key Next; wait_more "lesson step 26 / " "$n"
+wait_more "^thrust: off" "$off"
+echo "ok: PageDown steps on; the next step turns the thrust off"
 
 kill "$app_pid" 2>/dev/null
 wait "$app_pid" 2>/dev/null

@@ -297,6 +297,8 @@ TEST(LessonErrors, ValuesNameTheirPath) {
         {R"("pause_at": {"first_collision_of": "m3"})", "steps[0].pause_at.first_collision_of"},
         {R"("select": "m3")", "steps[0].select"},
         {R"("camera": [0, 0, -1, 5])", "steps[0].camera"},
+        {R"("frame": "moving")", "steps[0].frame"},
+        {R"("frame": 1)", "steps[0].frame"},
         {R"("overlays": "plots")", "steps[0].overlays"},
         {R"("question": "why?")", "steps[0]"},
         {R"("answer": "because")", "steps[0].answer"},

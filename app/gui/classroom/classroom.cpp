@@ -24,13 +24,22 @@ std::string firstSentence(const std::string& text) {
     return end == std::string::npos ? text : text.substr(0, end + 1);
 }
 
-std::string presentCaption(const std::string& sceneName, const std::string& description,
-                           Method method, double time, bool withDescription) {
+std::string methodAndTime(Method method, double time) {
     char t[48];
     std::snprintf(t, sizeof t, "t = %.2f s", time);
+    return std::string(methodName(method)) + "   ·   " + t;
+}
+
+std::string presentCaption(const std::string& sceneName, const std::string& description,
+                           Method method, double time, bool withDescription) {
     std::string what = sceneName;
     if (withDescription && !description.empty()) what += ": " + firstSentence(description);
-    return what + "   ·   " + methodName(method) + "   ·   " + t;
+    return what + "   ·   " + methodAndTime(method, time);
+}
+
+std::string lessonBarStatus(bool presentMode, Method method, double time) {
+    if (presentMode) return methodAndTime(method, time);
+    return "PageDown next, PageUp back, R restart";
 }
 
 std::string startHint(bool paused, double time, bool firstLaunch) {
@@ -39,21 +48,24 @@ std::string startHint(bool paused, double time, bool firstLaunch) {
     return "P to play";
 }
 
-TypedValue checkTypedValue(const char* what, double typed, double lo, double hi, const char* unit) {
+TypedValue checkTypedValue(const char* field, double typed, double current,
+                           const limits::Range& range) {
     TypedValue out;
-    if (std::isnan(typed)) {
-        out.value = lo <= 0.0 && 0.0 <= hi ? 0.0 : lo;
-        out.message =
-            std::string(what) + ": not a number; set to " + formatNumber(out.value) + " " + unit;
-        return out;
-    }
-    out.value = typed < lo ? lo : typed > hi ? hi : typed;
-    if (out.value != typed) {
-        out.message = std::string(what) + " " + formatNumber(typed) + " " + unit + " is outside " +
-                      formatNumber(lo) + " to " + formatNumber(hi) + " " + unit + ": set to " +
-                      formatNumber(out.value) + " " + unit;
-    }
+    const std::string problem = limits::violation(range, typed);
+    out.ok = problem.empty();
+    out.value = out.ok ? typed : current;
+    if (!out.ok) out.message = std::string(field) + ": " + problem;
     return out;
+}
+
+bool TypedWarning::note(const char* name, const TypedValue& check) {
+    if (!check.ok) {
+        field = name;
+        message = check.message;
+    } else if (field == name) {
+        clear();
+    }
+    return check.ok;
 }
 
 std::optional<double> restingStackTop(const Scene& scene) {

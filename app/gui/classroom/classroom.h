@@ -1,8 +1,9 @@
 // The classroom rules of the app as pure functions (tested without a window): what Esc does,
 // when quitting must ask, the present mode's caption, the hints a first-time user sees, typed
-// values checked against their slider's range, and the reference line of a resting stack.
+// typed values checked against the input limits, and the reference line of a resting stack.
 #pragma once
 
+#include "input_limits.h"
 #include "scene.h"
 
 #include <optional>
@@ -24,20 +25,41 @@ std::string firstSentence(const std::string& text);
 // "Lecture example 1: A 1 kg block at 6 m/s hits a 2 kg block at rest, bounciness 1, no gravity.
 //  ·  perfect  ·  t = 0.62 s". The description part is dropped when `withDescription` is false
 // (the caller shortens it to fit the screen).
+// "perfect   ·   t = 0.62 s": the method and the time, as the captions write them.
+std::string methodAndTime(Method method, double time);
 std::string presentCaption(const std::string& sceneName, const std::string& description,
                            Method method, double time, bool withDescription = true);
+
+// In a lesson there is one caption bar (app/gui/ui/lesson_bar.cpp), presenting or not:
+// "n / N · title", then on the same line this, then the caption and the question or answer.
+// In present mode the method and time (methodAndTime: the status badge that shows them is
+// hidden there, and present mode's one-line caption gives way to the bar); otherwise the keys.
+std::string lessonBarStatus(bool presentMode, Method method, double time);
 
 // The hint shown over a paused scene: at t = 0 "P to play" (and, the first time the app runs,
 // the keys to start with); "" while it runs or once it has run.
 std::string startHint(bool paused, double time, bool firstLaunch);
 
-// A value typed into a slider (Ctrl+click) checked against the slider's range: clamped into
-// [lo, hi], with a message naming what was typed and what was kept ("" when it was in range).
+// A number typed into a field of the controls panel (Ctrl+click on a slider, or a drag field),
+// checked against its limit in engine/input_limits.h, the table that scene files and flags use:
+// a good value is taken; any other leaves the field at `current` with a message naming the
+// field, the limit and what was typed ("frame rate: must be from 1 to 1e6 Hz, not 2e6").
 struct TypedValue {
-    double value = 0.0;
+    bool ok = true;
+    double value = 0.0; // what the field takes: the typed value, or `current` when refused
     std::string message;
 };
-TypedValue checkTypedValue(const char* what, double typed, double lo, double hi, const char* unit);
+TypedValue checkTypedValue(const char* field, double typed, double current,
+                           const limits::Range& range);
+// The panel's one warning about a typed value (shown under its field in the warning colour):
+// set by a refused value, cleared by the next good value of the same field or by a new scene.
+struct TypedWarning {
+    std::string field;
+    std::string message;
+    // Notes the outcome of `field`'s check; returns check.ok.
+    bool note(const char* field, const TypedValue& check);
+    void clear() { field.clear(), message.clear(); }
+};
 
 // The height (m) the top of a resting stack must keep: when every dynamic block starts at rest
 // under gravity pointing down, supported by the floor or by a block below it, the top of the

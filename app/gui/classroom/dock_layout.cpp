@@ -107,6 +107,56 @@ bool rectInside(const ScreenRect& inner, const ScreenRect& outer) {
            inner.y + inner.height <= outer.y + outer.height;
 }
 
+namespace {
+
+double overlapArea(const ScreenRect& a, const ScreenRect& b) {
+    const double w = std::min(a.x + a.width, b.x + b.width) - std::max(a.x, b.x);
+    const double h = std::min(a.y + a.height, b.y + b.height) - std::max(a.y, b.y);
+    return w > 0.0 && h > 0.0 ? w * h : 0.0;
+}
+
+} // namespace
+
+ScreenRect placeCaption(double width, double height, const ScreenRect& scene,
+                        const ScreenRect& world, const std::vector<ScreenRect>& avoid,
+                        double inset) {
+    const double x0 = scene.x + inset, x1 = scene.x + scene.width - inset - width;
+    const double y0 = scene.y + inset, y1 = scene.y + scene.height - inset - height;
+    // Candidate corners: along the scene's and the world's edges, and a grid between them.
+    std::vector<double> xs = {x0, world.x + inset, world.x + world.width - inset - width, x1,
+                              world.x - inset - width};
+    std::vector<double> ys = {y0, world.y + inset, world.y + world.height - inset - height, y1,
+                              world.y - inset - height};
+    constexpr int kSteps = 16;
+    for (int i = 0; i <= kSteps; ++i) {
+        xs.push_back(x0 + (x1 - x0) * i / kSteps);
+        ys.push_back(y0 + (y1 - y0) * i / kSteps);
+    }
+    const ScreenRect inner{world.x + inset, world.y + inset, world.width - 2.0 * inset,
+                           world.height - 2.0 * inset};
+    ScreenRect best{x0, y0, width, height};
+    // (covered area, tier, y, x): the smallest wins.
+    double bestCovered = INFINITY, bestTier = INFINITY, bestY = INFINITY, bestX = INFINITY;
+    for (double y : ys) {
+        for (double x : xs) {
+            if (x < x0 - 1e-9 || x > x1 + 1e-9 || y < y0 - 1e-9 || y > y1 + 1e-9) continue;
+            const ScreenRect r{std::round(x), std::round(y), width, height};
+            double covered = 0.0;
+            for (const ScreenRect& a : avoid) covered += overlapArea(r, a);
+            const double tier = !rectsOverlap(r, world) ? 0.0 : rectInside(r, inner) ? 1.0 : 2.0;
+            const bool better =
+                covered < bestCovered ||
+                (covered == bestCovered &&
+                 (tier < bestTier ||
+                  (tier == bestTier && (r.y < bestY || (r.y == bestY && r.x < bestX)))));
+            if (!better) continue;
+            best = r;
+            bestCovered = covered, bestTier = tier, bestY = r.y, bestX = r.x;
+        }
+    }
+    return best;
+}
+
 ScreenRect worldRectOnScreen(const Camera& camera, const Bounds& bounds) {
     const Vec2 a = camera.worldToScreen(bounds.min), b = camera.worldToScreen(bounds.max);
     const double x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);

@@ -72,6 +72,14 @@ Layout computeLayout(const LayoutInput& input);
 bool rectsOverlap(const ScreenRect& a, const ScreenRect& b);
 // True when `inner` lies inside `outer` (edges may coincide).
 bool rectInside(const ScreenRect& inner, const ScreenRect& outer);
+// Where a caption of `width` x `height` px drawn over the scene goes (the point-of-impact
+// overlay's numbers): inside `scene` (`inset` px from its edges), covering none of `avoid` (the
+// blocks on screen, grown by their labels). Preferred, in this order: wholly in the scene's
+// margin outside `world`, wholly inside `world` (`inset` from its walls), anywhere else; the top
+// first, then the left. When every spot covers something, the one covering the least area.
+ScreenRect placeCaption(double width, double height, const ScreenRect& scene,
+                        const ScreenRect& world, const std::vector<ScreenRect>& avoid,
+                        double inset);
 // The world's bounds on screen through `camera` (top-left corner and size, y down).
 ScreenRect worldRectOnScreen(const Camera& camera, const Bounds& bounds);
 

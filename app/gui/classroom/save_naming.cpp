@@ -39,14 +39,15 @@ std::string absoluteScenePath(const std::string& path, const std::string& cwd) {
 }
 
 std::string suggestSavePath(const std::string& sceneName, const std::string& dir,
-                            const std::function<bool(const std::string&)>& exists) {
+                            const std::function<bool(const std::string&)>& exists,
+                            const std::string& extension) {
     const std::string stem = sceneFileStem(sceneName);
     const fs::path base(dir);
-    const std::string first = (base / (stem + ".json")).lexically_normal().string();
+    const std::string first = (base / (stem + extension)).lexically_normal().string();
     if (!exists(first)) return first;
     for (int k = 2; k <= 999; ++k) {
         const std::string p =
-            (base / (stem + "-" + std::to_string(k) + ".json")).lexically_normal().string();
+            (base / (stem + "-" + std::to_string(k) + extension)).lexically_normal().string();
         if (!exists(p)) return p;
     }
     return first;

@@ -16,9 +16,11 @@ std::string sceneFileStem(const std::string& sceneName);
 // has no extension. "" stays "".
 std::string absoluteScenePath(const std::string& path, const std::string& cwd);
 // The path offered for saving `sceneName` in `dir`: dir/STEM.json, or dir/STEM-2.json, -3, ...
-// the first one `exists` says is free (up to -999, then STEM.json again).
+// the first one `exists` says is free (up to -999, then STEM.json again). `extension` ".csv" for
+// a plot's export.
 std::string suggestSavePath(const std::string& sceneName, const std::string& dir,
-                            const std::function<bool(const std::string&)>& exists);
+                            const std::function<bool(const std::string&)>& exists,
+                            const std::string& extension = ".json");
 // "" when `now` has the settings `original` has (gravity, bounciness, method, frame rate,
 // substeps, resolve, integrator, mistakes, drag); else one sentence naming what changed, e.g.
 // "Saved with changed settings: gravity (0, -9.81) m/s², method turn-based."

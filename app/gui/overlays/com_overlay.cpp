@@ -1,9 +1,11 @@
 // Centre of mass of the dynamic blocks with its velocity u (= total momentum / total mass), drawn
 // in the scene, and the momenta diagram: every block's momentum tip to tail and their sum, as
-// teachers draw it (PhET's Collision Lab).
+// teachers draw it (PhET's Collision Lab). In the centre-of-mass frame (view_frame.h) the marker
+// stands still and the diagram adds m·w: it closes, total momentum zero in that frame.
 #include "app_frame.h"
 #include "overlay_window.h"
 #include "renderer.h"
+#include "text_format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,45 +34,28 @@ void arrow(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 color, float width, float h
                           ImVec2(base.x + uy * h * 0.5f, base.y - ux * h * 0.5f), color);
 }
 
-struct CentreOfMass {
-    bool valid = false;
-    double mass = 0.0;
-    Vec2 position, velocity;
-};
-
-CentreOfMass centreOfMass(const World& world) {
-    CentreOfMass c;
-    Vec2 mp, mv;
-    for (const Block& b : world.blocks) {
-        if (!b.isDynamic()) continue;
-        c.mass += b.mass;
-        mp += b.position * b.mass;
-        mv += b.velocity * b.mass;
-    }
-    if (!(c.mass > 0.0)) return c;
-    c.valid = true;
-    c.position = mp / c.mass;
-    c.velocity = mv / c.mass;
-    return c;
-}
-
 void drawMomentaDiagram(App& app) {
     OverlayWindow overlay(app, OverlayId::com);
     if (!overlay) return;
     const World& w = app.world;
+    const Vec2 u = frameVelocity(w, app.frame);
     // Tip to tail, in file order; the extent fixes the scale.
     std::vector<Vec2> tips{Vec2{}};
     std::vector<int> owner;
     for (std::size_t i = 0; i < w.blocks.size(); ++i) {
         const Block& b = w.blocks[i];
         if (!b.isDynamic()) continue;
-        tips.push_back(tips.back() + b.velocity * b.mass);
+        tips.push_back(tips.back() + (b.velocity - u) * b.mass);
         owner.push_back(static_cast<int>(i));
     }
     const Vec2 total = tips.back();
-    char text[96];
-    std::snprintf(text, sizeof text, "total p = (%.3g, %.3g) kg·m/s", total.x, total.y);
-    dimText(text);
+    // Rounding noise reads 0 (in the centre-of-mass frame the sum is zero but for it).
+    double sum = 0.0;
+    for (std::size_t k = 1; k < tips.size(); ++k) sum += length(tips[k] - tips[k - 1]);
+    const std::string text = "total p = (" + formatNumber(total.x, sum) + ", " +
+                             formatNumber(total.y, sum) + ") kg·m/s" +
+                             (app.frame == ViewFrame::World ? "" : " (centre-of-mass frame)");
+    dimText(text.c_str());
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     ImGui::InvisibleButton("##momenta", ImVec2(std::max(avail.x, 40.0f), std::max(avail.y, 40.0f)));
     ImDrawList* dl = ImGui::GetWindowDrawList();
@@ -134,7 +119,9 @@ void drawComOverlay(App& app) {
         const ImVec2 p = toScreen(app, c.position);
         const float r = 9.0f * app.uiScale;
         const ImU32 col = overlay_colors::kCom;
-        const Vec2 tip = c.position + c.velocity * kVelocityArrowScale;
+        // In its own frame the centre of mass stands still: no arrow.
+        const Vec2 tip =
+            c.position + (c.velocity - frameVelocity(app.world, app.frame)) * kVelocityArrowScale;
         arrow(dl, p, toScreen(app, tip), col, 3.0f * app.uiScale, 13.0f * app.uiScale);
         dl->AddCircleFilled(p, r, IM_COL32(20, 20, 20, 220));
         dl->AddCircle(p, r, col, 20, 2.5f * app.uiScale);

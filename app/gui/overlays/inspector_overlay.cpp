@@ -28,9 +28,10 @@ void drawInspectorOverlay(App& app) {
     OverlayWindow overlay(app, OverlayId::inspector);
     if (!overlay) return;
     ImGui::Checkbox("pause on each collision", &app.pauseOnCollision);
-    const auto& recent = app.telemetry.recent;
+    const auto& recent = app.telemetry.recent; // up to the scrubbed time while replaying
     if (recent.empty()) {
-        dimText("No collision yet. Run the scene, or step with N.");
+        dimText(isReplaying(app) ? "No collision up to this point of the replay."
+                                 : "No collision yet. Run the scene, or step with N.");
         return;
     }
     const int count = static_cast<int>(recent.size());
@@ -42,8 +43,11 @@ void drawInspectorOverlay(App& app) {
     // The list of the last collisions, newest first.
     char preview[160];
     std::snprintf(preview, sizeof preview, "%s t = %.3f s: %s / %s (%c)",
-                  picked == 0 ? "newest," : "", r.time, bodyName(app, r.block).c_str(),
-                  bodyName(app, r.other).c_str(), r.axis == 0 ? 'x' : 'y');
+                  picked != 0        ? ""
+                  : isReplaying(app) ? "last so far,"
+                                     : "newest,",
+                  r.time, bodyName(app, r.block).c_str(), bodyName(app, r.other).c_str(),
+                  r.axis == 0 ? 'x' : 'y');
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::BeginCombo("##collisions", preview)) {
         for (int k = 0; k < count; ++k) {
@@ -63,6 +67,14 @@ void drawInspectorOverlay(App& app) {
                   formatNumber(r.toi).c_str());
     dimText(toi);
     dimText(f.given.c_str());
+    // The relative-velocity test decides whether this is a collision at all.
+    if (f.separating) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.35f, 1.0f));
+        ImGui::TextWrapped("%s", f.relative.c_str());
+        ImGui::PopStyleColor();
+    } else {
+        ImGui::TextWrapped("%s", f.relative.c_str());
+    }
     ImGui::Spacing();
     formulaLine(f.u, true);
     formulaLine(f.v1After, true);

@@ -53,7 +53,7 @@ int runWindow(const Options& options, char** argv, int argc) {
         return 1;
     }
     setUiScale(app, options.uiScale > 0.0f ? options.uiScale : config.uiScale);
-    app.lightTheme = config.lightTheme;
+    app.lightTheme = options.theme.empty() ? config.lightTheme : options.theme == "light";
     app.labelScale = config.labelScale;
     app.firstLaunch = !config.existed;
     if (options.present) setPresentMode(app, true);

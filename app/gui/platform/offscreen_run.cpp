@@ -110,6 +110,10 @@ int screenshot(App& app, Offscreen& off, const Options& o) {
     // --frames N simulates N frames, as if P had been pressed (the badge then shows no PAUSED).
     for (int i = 0; i < o.frames; ++i) stepSimulation(app);
     if (o.frames > 0) app.paused = false;
+    if (o.timelineFrame >= 0) { // the timeline's slider, dragged back: paused there, replaying
+        scrubTo(app, static_cast<std::uint64_t>(o.timelineFrame));
+        app.paused = true;
+    }
     if (app.show.cost) app.cost.runSweepNow(quickTradeoffSweep(app.scenesDir)); // the chart
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off);
     const int code = writeScreenshot(off, o);
@@ -220,6 +224,7 @@ int runOffscreen(const Options& options) {
     }
     setUiScale(app, o.uiScale > 0.0f ? o.uiScale : 1.0f);
     if (o.present) setPresentMode(app, true);
+    app.lightTheme = o.theme == "light";
     uiCreateContext(nullptr);
     uiApplyLook(app.uiScale, app.labelScale, app.lightTheme);
     Offscreen off;

@@ -32,6 +32,9 @@ LoggedState snapshotForLog(const App& app) {
     s.mistakes = app.world.settings.mistakes;
     s.drag = app.world.settings.drag;
     s.thrust = app.thrust.on;
+    const Vec2 pushing = thrustForce(app);
+    s.thrustX = pushing.x;
+    s.thrustY = pushing.y;
     s.timeScale = app.timeScale;
     s.uiScale = app.uiScale;
     s.blocks = static_cast<int>(app.world.blocks.size());
@@ -67,6 +70,11 @@ std::vector<std::string> describeChanges(const LoggedState& a, const LoggedState
     if (a.mistakes != b.mistakes) out.push_back("mistakes: " + std::to_string(b.mistakes));
     if (a.drag != b.drag) out.push_back("drag: " + number(b.drag));
     if (a.thrust != b.thrust) out.push_back("thrust: " + onOff(b.thrust));
+    if (a.thrustX != b.thrustX || a.thrustY != b.thrustY) {
+        out.push_back(b.thrustX == 0.0 && b.thrustY == 0.0
+                          ? std::string("thrust released")
+                          : "thrust held: " + number(b.thrustX) + "," + number(b.thrustY) + " N");
+    }
     if (a.timeScale != b.timeScale) out.push_back("time scale: " + number(b.timeScale));
     if (a.uiScale != b.uiScale) out.push_back("ui scale: " + number(b.uiScale));
     if (a.blocks != b.blocks) out.push_back("blocks: " + std::to_string(b.blocks));

@@ -25,6 +25,7 @@ struct LoggedState {
     unsigned mistakes = 0;
     double drag = 0.0;
     bool thrust = false;
+    double thrustX = 0.0, thrustY = 0.0; // N, the held thrust this frame (zero: none)
     double timeScale = 0.0;
     float uiScale = 0.0f;
     int blocks = 0;

@@ -8,14 +8,10 @@ std::string builtInScenesDirectory() {
     return SANDBOX_SCENES_DIR;
 }
 
-bool setupApp(App& app, const Options& options, const std::string& lastScene, std::string* error) {
-    app.scenesDir = findScenesDirectory(executableDirectory(), builtInScenesDirectory());
-    app.sceneFiles = listScenes(app.scenesDir);
-    app.lessonsDir = findDataDirectory(executableDirectory(), builtInLessonsDirectory(), "lessons");
-    app.lessonFiles = listScenes(app.lessonsDir);
-    app.verbose = options.verbose;
-    if (options.showGiven) applyShowSet(app, options.show);
+namespace {
 
+// The lesson or scene to start with (see setupApp).
+bool openFirst(App& app, const Options& options, const std::string& lastScene, std::string* error) {
     // A lesson: --lesson NAME, or a lesson file given as the scene.
     std::string lesson;
     if (!options.lesson.empty()) {
@@ -54,5 +50,21 @@ bool setupApp(App& app, const Options& options, const std::string& lastScene, st
     const std::string why = app.error;
     setScene(app, empty, "");
     app.error = why.empty() ? "No scene found" : why;
+    return true;
+}
+
+} // namespace
+
+bool setupApp(App& app, const Options& options, const std::string& lastScene, std::string* error) {
+    app.scenesDir = findScenesDirectory(executableDirectory(), builtInScenesDirectory());
+    app.sceneFiles = listScenes(app.scenesDir);
+    app.lessonsDir = findDataDirectory(executableDirectory(), builtInLessonsDirectory(), "lessons");
+    app.lessonFiles = listScenes(app.lessonsDir);
+    app.verbose = options.verbose;
+    if (options.showGiven) applyShowSet(app, options.show);
+    if (!openFirst(app, options, lastScene, error)) return false;
+    // --frame: the run has just started, so the camera follows from its start (the anchor the
+    // run set stays; setViewFrame would anchor at the first frame drawn, after --frames N).
+    if (options.frame) app.frame = *options.frame;
     return true;
 }

@@ -30,6 +30,7 @@ void restartRun(App& app) {
     app.pausedByCollision = false;
     app.telemetry.record(app.world, app.selected, {});
     app.mouse = MouseTool{};
+    anchorFrameCamera(app.frameCamera, app.world); // the view follows from the run's start
     if (app.selected >= static_cast<int>(app.world.blocks.size())) app.selected = -1;
 }
 
@@ -49,6 +50,7 @@ void setScene(App& app, const Scene& scene, const std::string& path) {
     app.autoFit = true;
     app.paused = true;
     app.blocksEdited = false;
+    app.ui.typedWarning.clear();
     restartRun(app);
 }
 
@@ -216,6 +218,10 @@ bool scrubTo(App& app, std::uint64_t frame) {
     World w;
     if (!app.history.stateAt(frame, w)) return false;
     app.run() = Run(std::move(w));
+    // The inspector lists the last collisions up to the frame shown, not the newest recorded.
+    const std::vector<CollisionRecord> upTo = app.history.collisionsUpTo(frame, kRecentCollisions);
+    app.telemetry.recent.assign(upTo.begin(), upTo.end());
+    app.ui.inspectorPicked = 0;
     app.labels.resize(app.world.blocks.size());
     app.mouse = MouseTool{};
     if (app.selected >= static_cast<int>(app.world.blocks.size())) app.selected = -1;
@@ -320,7 +326,7 @@ bool saveCurrentScene(App& app, const std::string& path) {
     return true;
 }
 
-std::string suggestedSavePath(const App& app) {
+std::string saveDirectory(const App& app) {
     namespace fs = std::filesystem;
     std::string dir = workingDirectory();
     if (!app.scenePath.empty()) {
@@ -330,10 +336,16 @@ std::string suggestedSavePath(const App& app) {
             !app.scenesDir.empty() && fs::equivalent(sceneDir, fs::path(app.scenesDir), ec) && !ec;
         if (!shipped && !sceneDir.empty()) dir = sceneDir.string();
     }
-    return suggestSavePath(app.scene.name, dir, [](const std::string& p) {
-        std::error_code ec;
-        return fs::exists(p, ec);
-    });
+    return dir;
+}
+
+bool pathExists(const std::string& path) {
+    std::error_code ec;
+    return std::filesystem::exists(path, ec);
+}
+
+std::string suggestedSavePath(const App& app) {
+    return suggestSavePath(app.scene.name, saveDirectory(app), pathExists);
 }
 
 bool isFloating(const App& app, const std::string& title) {
@@ -410,10 +422,10 @@ Layout computeAppLayout(const App& app, double displayWidth, double displayHeigh
     in.displayWidth = displayWidth;
     in.displayHeight = displayHeight;
     in.uiScale = app.uiScale;
-    if (app.presentMode) return computeLayout(in); // the scene alone
-    in.panelWidth = app.uiVisible ? panelWidth(app.uiScale, displayWidth) : 0.0;
-    // A lesson's caption bar over the top of the scene (and the column).
+    // A lesson's caption bar over the top of the scene (and the column), presenting too.
     if (app.lesson.active()) in.topInset = std::min(app.captionHeight, displayHeight * 0.5);
+    if (app.presentMode) return computeLayout(in); // the scene alone (under a lesson's caption)
+    in.panelWidth = app.uiVisible ? panelWidth(app.uiScale, displayWidth) : 0.0;
     for (const OverlayInfo& row : kOverlays) {
         if (!row.title || !(app.show.*row.flag) || isFloating(app, row.title)) continue;
         in.windows.push_back({row.title, row.place.side, row.place.minExtent, row.place.weight,
@@ -433,6 +445,13 @@ void updateCamera(App& app, double displayWidth, double displayHeight) {
         app.camera.fit(app.fitBounds ? *app.fitBounds : app.world.bounds,
                        kFitMarginPx * static_cast<double>(app.uiScale));
     }
+    app.camera.setCentre(app.camera.centre() +
+                         followShift(app.frameCamera, app.world, app.frame, app.autoFit));
+}
+
+void setViewFrame(App& app, ViewFrame frame) {
+    app.frame = frame;
+    app.frameCamera.anchored = false;
 }
 
 void setBlockKind(App& app, int index, BodyKind kind) {

@@ -20,6 +20,7 @@
 #include "telemetry.h"
 #include "timeline.h"
 #include "trails.h"
+#include "view_frame.h"
 #include "world.h"
 
 #include <array>
@@ -73,6 +74,7 @@ struct UiState {
     int inspectorPicked = 0;          // the inspector's collision: 0 the newest, 1 the one before
     std::string inspectorLoggedTitle; // --verbose prints the formula once per collision shown
     int panelFollowedSelection = -2;  // the selection the "Selected block" header last followed
+    TypedWarning typedWarning;        // a refused typed value, shown under its field
     std::string physicsFollowedScene; // the scene the "Physics" header last opened or closed for
 };
 
@@ -97,6 +99,10 @@ struct App : Run {
     Camera camera;
     bool autoFit = true; // refit the camera when the viewport changes, until the user zooms/pans
     std::optional<Bounds> fitBounds; // what fitting shows (a lesson step's camera); none: bounds
+    // The frame of reference (view_frame.h): in the centre of mass's the camera moves with u and
+    // the arrows show w = v - u (View section, U, --frame com, a lesson step's "frame").
+    ViewFrame frame = ViewFrame::World;
+    FrameCamera frameCamera;
     Overlays show;
     bool overlaysChosen = false; // --show given: scenes no longer pick the default overlays
     bool uiVisible = true;
@@ -177,6 +183,8 @@ ScreenRect sceneViewport(const App& app, double displayWidth, double displayHeig
 // Lays out the frame (app.layout), gives the camera the scene's rectangle and refits the world
 // while app.autoFit holds.
 void updateCamera(App& app, double displayWidth, double displayHeight);
+// Sees the scene in `frame` from now on (the camera follows the centre of mass from where it is).
+void setViewFrame(App& app, ViewFrame frame);
 // Changes the kind of block `index` (dynamic blocks get mass 1 kg when they had none).
 void setBlockKind(App& app, int index, BodyKind kind);
 // Resizes block `index` when the new size fits without overlap; false (nothing changed) if not.
@@ -212,7 +220,8 @@ int advanceSimulation(App& app, double realSeconds);
 // The window showed a frame `realSeconds` after the previous one (its pace, for Statistics).
 void noteFrameShown(App& app, double realSeconds);
 // Goes back (or forward) to frame `frame` of the timeline; false when it is not recorded.
-// Stepping from there replays, bit for bit, unless something is changed first.
+// Stepping from there replays, bit for bit, unless something is changed first. The inspector's
+// collisions become the last ones up to that frame (rebuilt from the history).
 bool scrubTo(App& app, std::uint64_t frame);
 // True while the world shows a frame earlier than the newest recorded one.
 // True when the frame from frameStart to frameEnd (s) reaches the scene's "duration" (the app
@@ -239,6 +248,11 @@ bool saveCurrentScene(App& app, const std::string& path);
 // The path the Save dialog offers: from the scene's name, in the scene's own directory unless
 // that is the shipped scenes' (then the working directory), never an existing file.
 std::string suggestedSavePath(const App& app);
+// Where Save offers to write (and the plots' CSV exports go): the scene's own directory unless
+// that is the shipped scenes' (then the working directory).
+std::string saveDirectory(const App& app);
+// True when `path` names something on disk (an error reads as false).
+bool pathExists(const std::string& path);
 // Is `title` an overlay window pulled out of the layout to float?
 bool isFloating(const App& app, const std::string& title);
 void setFloating(App& app, const std::string& title, bool floating);

@@ -16,6 +16,8 @@ const std::vector<KeyBinding>& keyBindings() {
         {keys::kS, false, Action::CycleMethod, "S", "Cycle the simulation method"},
         {keys::kN, false, Action::StepOnce, "N", "Single step (pauses)"},
         {keys::kV, false, Action::ToggleVectors, "V", "Velocity arrows on / off"},
+        {keys::kU, false, Action::ToggleFrame, "U",
+         "Centre-of-mass frame: the view moves with u, arrows show w = v - u (again: the world's)"},
         {keys::kF, false, Action::FitView, "F", "Fit the world into the view"},
         {keys::kTab, false, Action::TogglePresent, "Tab",
          "Present mode: only the scene and a caption (again: all back)"},
@@ -127,6 +129,8 @@ const char* actionName(Action action) {
         return "step";
     case Action::ToggleVectors:
         return "vectors";
+    case Action::ToggleFrame:
+        return "frame";
     case Action::FitView:
         return "fit-view";
     case Action::TogglePresent:

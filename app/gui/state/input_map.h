@@ -21,6 +21,7 @@ constexpr int kP = 80;
 constexpr int kQ = 81;
 constexpr int kR = 82;
 constexpr int kS = 83;
+constexpr int kU = 85;
 constexpr int kV = 86;
 constexpr int k0 = 48; // k0 + d for the digit d
 constexpr int kEscape = 256;
@@ -54,6 +55,7 @@ enum class Action {
     CycleMethod,      // S: perfect -> move-and-correct -> turn-based
     StepOnce,         // N: one frame (pauses)
     ToggleVectors,    // V: velocity arrows
+    ToggleFrame,      // U: the centre-of-mass frame (the camera moves with u) or the world's
     FitView,          // F: show the whole world
     TogglePresent,    // Tab: present mode (the scene and a caption only)
     ToggleFullscreen, // F11

@@ -100,12 +100,23 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_option("--layout-json", o.layoutJson,
                    "Offscreen (with --screenshot): write the scene's, the world's and every "
                    "window's rectangle in image pixels to this JSON file");
+    std::string frame;
+    app.add_option("--frame", frame,
+                   "Start in this frame of reference: world, or com (the view moves with the "
+                   "centre of mass, arrows show w = v - u; U toggles)");
     app.add_option("--lesson", o.lesson,
                    "Open a lesson: a shipped lesson's name (lecture3) or a lesson file");
     app.add_option("--step", o.step, "Start the lesson at step N (1 is the first)")
         ->check(CLI::Range(1, 1000000));
     app.add_option("--record-steps", o.recordSteps,
                    "Offscreen: write one PNG per lesson step (after its pause point) here");
+    app.add_option("--theme", o.theme,
+                   "dark or light (bright rooms); the window's default is the saved setting")
+        ->check(CLI::IsMember({"dark", "light"}));
+    app.add_option("--timeline-frame", o.timelineFrame,
+                   "Offscreen: after --frames, go back to this frame on the timeline (as its "
+                   "slider does): the replay as the overlays show it")
+        ->check(CLI::Range(0LL, 10000000LL));
     app.set_version_flag("--version", "sandbox 0.1");
     try {
         app.parse(argc, argv);
@@ -117,11 +128,21 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
             if (!parseShowList(show, o.show, &error)) throw CLI::ValidationError("--show", error);
             o.showGiven = true;
         }
+        if (!frame.empty()) {
+            o.frame = parseViewFrame(frame);
+            if (!o.frame)
+                throw CLI::ValidationError("--frame", "expected world or com, got '" + frame + "'");
+        }
         if (!o.layoutJson.empty() && o.screenshot.empty()) {
             throw CLI::ValidationError("--layout-json", "needs --screenshot FILE");
         }
         if (!o.recordSteps.empty() && o.lesson.empty() && o.scene.empty()) {
             throw CLI::ValidationError("--record-steps", "needs a lesson (--lesson NAME)");
+        }
+        if (o.timelineFrame > o.frames) {
+            throw CLI::ValidationError("--timeline-frame", "must be at most --frames (" +
+                                                               std::to_string(o.frames) +
+                                                               "): the frames recorded");
         }
         if (!o.record.empty() && o.frames <= 0) {
             throw CLI::ValidationError("--record", "needs --frames N (N > 0)");

@@ -1,11 +1,13 @@
 // The command line shared by `sandbox` and `sandbox-offscreen` (SPEC's public contract):
 //   sandbox [SCENE] [--screenshot FILE] [--frames N] [--size WxH] [--show LIST]
 //           [--record DIR] [--benchmark-frames N] [--ui-scale S] [--verbose] [--present]
-//           [--layout-json FILE]
+//           [--layout-json FILE] [--frame world|com] [--theme dark|light] [--timeline-frame N]
 #pragma once
 
 #include "overlays.h"
+#include "view_frame.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +40,9 @@ struct Options {
     std::string lesson;      // --lesson NAME or file (docs/lesson-format.md)
     int step = 0;            // --step N (1-based) of the lesson; 0: the first
     std::string recordSteps; // offscreen: one PNG per lesson step into this directory
+    std::optional<ViewFrame> frame; // --frame: start in this frame (a lesson's steps choose theirs)
+    std::string theme;       // --theme dark|light; "": the saved setting (window) or dark
+    long long timelineFrame = -1; // offscreen: after --frames, back to this frame (the timeline)
 };
 
 // Turns the overlay called `name` on or off; false for an unknown name.

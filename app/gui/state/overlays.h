@@ -52,6 +52,12 @@
     X(timeline, "timeline", "timeline", "Scrub back through the last 60 s and replay",             \
       false, "Timeline", (DockWish{DockSide::Bottom, 260.0, 1.0, 110.0}),                          \
       drawTimelineOverlay)                                                                         \
+    /* A square picture with its caption beside it: the bottom strip. */                           \
+    X(velocitySpace, "velocityspace", "velocity space",                                            \
+      "Two blocks' state at (sqrt(m1)·v1, sqrt(m2)·v2): energy a circle, momentum a line, "         \
+      "collisions reflections (why high_mass_ratio counts pi)",                                    \
+      false, "Velocity space", (DockWish{DockSide::Bottom, 300.0, 1.5, 185.0}),                    \
+      drawVelocitySpaceOverlay)                                                                    \
     /* The chart needs height: the right column, under the plots and the inspector. */             \
     X(cost, "cost", "cost", "Cost per step under each method and the speed-vs-accuracy chart",     \
       false, "Speed versus accuracy", (DockWish{DockSide::Right, 200.0, 1.0, 400.0}),              \

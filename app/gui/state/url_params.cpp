@@ -2,6 +2,7 @@
 
 #include "app_state.h"
 #include "lesson_session.h"
+#include "printable.h"
 #include "scene_library.h"
 
 #include <cctype>
@@ -36,22 +37,8 @@ std::string percentDecode(const std::string& text) {
     return out;
 }
 
-// Text as it may be shown in the panel: printable ASCII only, shortened.
-std::string printable(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        if (out.size() >= kMaxEchoed) {
-            out += "...";
-            break;
-        }
-        const auto u = static_cast<unsigned char>(c);
-        out += (u >= 0x20 && u < 0x7f) ? c : '?';
-    }
-    return out;
-}
-
 std::string echo(const std::string& text) {
-    return "'" + printable(text) + "'";
+    return "'" + printable(text, kMaxEchoed) + "'"; // controls escaped, long values cut
 }
 
 bool isSceneName(const std::string& name) {

@@ -26,6 +26,27 @@ std::string vAfterLine(const std::string& v, double u, double C, double before, 
            operand(u) + ") = " + formatNumber(after);
 }
 
+// The relative-velocity test along `axis`: `lower` and `upper` name the velocities of the body
+// on the lower side and the one on the upper side (the wall's is 0), which approach when
+// lower - upper > 0.
+void relativeLine(CollisionFormula& f, char axis, const std::string& lowerName, double lower,
+                  const std::string& upperName, double upper) {
+    const double closing = lower - upper;
+    f.relative = std::string("rel. vel. along ") + axis + " = " + lowerName + " - " + upperName +
+                 " = " + formatNumber(lower) + " - " + operand(upper) + " = " +
+                 formatNumber(closing);
+    const std::string shown = formatNumber(closing);
+    if (shown == "0") {
+        f.relative += ": not closing, resolved";
+    } else if (closing > 0.0) {
+        f.relative += " > 0: approaching, resolved";
+    } else {
+        f.separating = true;
+        f.relative += " < 0: separating, not a collision (resolved anyway: the mistake "
+                      "no-approach-test)";
+    }
+}
+
 } // namespace
 
 CollisionFormula collisionFormula(const CollisionRecord& r, const std::string& name1,
@@ -46,6 +67,11 @@ CollisionFormula collisionFormula(const CollisionRecord& r, const std::string& n
     if (wall) {
         f.given = m1 + " = " + formatNumber(r.m1) + ", " + v1 + " = " + formatNumber(r.v1) +
                   ", C = " + formatNumber(r.C) + "; the " + name2 + " does not move";
+        // The wall is on the upper side of the block (right, ceiling) or the lower (left, floor).
+        if (r.other == kWallRight || r.other == kWallTop)
+            relativeLine(f, axis, v1, r.v1, "0", 0.0);
+        else
+            relativeLine(f, axis, "0", 0.0, v1, r.v1);
         f.u = "u = " + formatNumber(r.u) + "   (the " + name2 + "'s velocity: infinite mass)";
         f.v1After = vAfterLine(v1, r.u, r.C, r.v1, r.v1After);
         f.momentumBefore = "p" + s1 + " before = " + operand(r.m1) + "·" + operand(r.v1) + " = " +
@@ -59,6 +85,10 @@ CollisionFormula collisionFormula(const CollisionRecord& r, const std::string& n
     f.given = m1 + " = " + formatNumber(r.m1) + ", " + m2 + " = " + formatNumber(r.m2) + ", " + v1 +
               " = " + formatNumber(r.v1) + ", " + v2 + " = " + formatNumber(r.v2) +
               ", C = " + formatNumber(r.C);
+    if (r.firstBelow)
+        relativeLine(f, axis, v1, r.v1, v2, r.v2);
+    else
+        relativeLine(f, axis, v2, r.v2, v1, r.v1);
     if (finite1 && finite2) {
         f.u = "u = (" + operand(r.m1) + "·" + operand(r.v1) + " + " + operand(r.m2) + "·" +
               operand(r.v2) + ")/(" + formatNumber(r.m1) + " + " + formatNumber(r.m2) +

@@ -10,8 +10,15 @@
 #include <string>
 
 struct CollisionFormula {
-    std::string title;          // "m1 = 1 kg  hits  m2 = 2 kg along x at t = 0.625 s"
-    std::string given;          // "m1 = 1, m2 = 2, v1 = 6, v2 = 0, C = 1"
+    std::string title; // "m1 = 1 kg  hits  m2 = 2 kg along x at t = 0.625 s"
+    std::string given; // "m1 = 1, m2 = 2, v1 = 6, v2 = 0, C = 1"
+    // The relative-velocity test (lecture, "Tips – Collision Resolve": resolve only when the
+    // relative velocity along the axis closes), e.g.
+    // "rel. vel. along x = v1 - v2 = 6 - 0 = 6 > 0: approaching, resolved", or
+    // "rel. vel. along x = v1 - v2 = 3 - 4 = -1 < 0: separating, not a collision (resolved
+    //  anyway: the mistake no-approach-test)".
+    std::string relative;
+    bool separating = false;    // the test says no collision (resolved by a mistake)
     std::string u;              // "u = (1·6 + 2·0)/(1 + 2) = 2"
     std::string v1After;        // "v1' = 2 - 1·(6 - 2) = -2"
     std::string v2After;        // "v2' = 2 - 1·(0 - 2) = 4" ("" for a wall: it does not move)

@@ -59,6 +59,7 @@ bool openLesson(App& app, const std::string& path, std::size_t first) {
 void closeLesson(App& app) {
     app.lesson = LessonSession{};
     app.fitBounds.reset();
+    setViewFrame(app, ViewFrame::World); // a step's frame ends with the lesson
 }
 
 bool enterStep(App& app, std::size_t index) {
@@ -75,6 +76,7 @@ bool enterStep(App& app, std::size_t index) {
     app.show = shown;
     app.fitBounds = step.camera;
     app.autoFit = true;
+    setViewFrame(app, step.centreOfMassFrame ? ViewFrame::CentreOfMass : ViewFrame::World);
     app.timeScale = step.timeScale;
     app.slowMotion = false;
     app.pauseOnCollision = false;

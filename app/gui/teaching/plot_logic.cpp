@@ -71,6 +71,12 @@ PlotRange scrollingWindow(double now, double span) {
     return {now - span, now};
 }
 
+PlotRange timelineWindow(double now, double newest, double span) {
+    if (!(span > 0.0)) span = 1.0;
+    const double end = newest > now ? std::min(newest, now + 0.5 * span) : now;
+    return scrollingWindow(end, span);
+}
+
 PlotRange paddedRange(double lo, double hi, double margin) {
     if (!std::isfinite(lo) || !std::isfinite(hi) || lo > hi) return {-1.0, 1.0};
     if (hi - lo < 1e-12 * std::max(1.0, std::abs(hi))) {

@@ -25,6 +25,10 @@ std::string tickLabel(double value, double step);
 std::string decadeLabel(double exponent);
 // The last `span` seconds before `now`, or [0, span] while now < span.
 PlotRange scrollingWindow(double now, double span);
+// The plots' window at `now` when the recording reaches `newest`: the scrolling window while
+// live (newest <= now); while the timeline replays an earlier time, moved on so that `now` sits
+// in the middle of it as far as the recorded future allows (at most span/2 after now).
+PlotRange timelineWindow(double now, double newest, double span);
 // [lo, hi] widened by `margin` of its span on both sides; a flat range becomes +-1 around it
 // (or +-10% of its value), so a constant series still shows as a line in the middle.
 PlotRange paddedRange(double lo, double hi, double margin = 0.08);

@@ -7,6 +7,7 @@ void Telemetry::clear() {
     collisionTimes.clear();
     watchedCollisionTimes.clear();
     recent.clear();
+    velocitySpace.clear();
     watched = -1;
 }
 
@@ -31,6 +32,7 @@ void Telemetry::record(const World& world, int selected, const std::vector<Colli
         const double vv[2] = {v.x, v.y};
         velocity.push(world.time, vv);
     }
+    velocitySpace.record(world, log);
     const Vec2 p = totalMomentum(world);
     const double pp[2] = {p.x, p.y};
     momentum.push(world.time, pp);
@@ -59,4 +61,5 @@ void Telemetry::truncateAfter(double t) {
         watchedCollisionTimes.pop_back();
     }
     while (!recent.empty() && recent.back().time > t) recent.pop_back();
+    velocitySpace.truncateAfter(t);
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "plot_logic.h"
+#include "velocity_space.h"
 #include "world.h"
 
 #include <cstddef>
@@ -21,6 +22,7 @@ struct Telemetry {
     std::deque<double> collisionTimes;        // every collision (not the rest rule), newest last
     std::deque<double> watchedCollisionTimes; // those of the watched block
     std::deque<CollisionRecord> recent;       // newest last, at most kRecentCollisions
+    VelocitySpacePath velocitySpace;          // the two dynamic blocks' state (velocity_space)
 
     void clear();
     // Samples `world` (after a step) and appends this frame's `log`. The watched block is

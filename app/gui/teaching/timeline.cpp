@@ -126,6 +126,37 @@ double WorldHistory::recordedSeconds() const {
     return std::max(0.0, newest - keyframes_.front().time);
 }
 
+std::vector<CollisionRecord> WorldHistory::collisionsUpTo(std::uint64_t frame, std::size_t count,
+                                                          std::size_t budgetBlockSteps) const {
+    std::vector<CollisionRecord> found; // newest first while walking back
+    if (keyframes_.empty() || count == 0) return found;
+    frame = std::min(frame, lastFrame());
+    // The last keyframe at or before `frame`; each pass steps one keyframe to the next (or to
+    // `frame`), which replays the frames between them with their collisions.
+    auto it = std::upper_bound(keyframes_.begin(), keyframes_.end(), frame,
+                               [](std::uint64_t f, const World& w) { return f < w.frame; });
+    std::uint64_t end = frame;
+    std::size_t spent = 0;
+    std::vector<CollisionRecord> log, segment;
+    while (it != keyframes_.begin() && found.size() < count && spent < budgetBlockSteps) {
+        --it;
+        World w = *it;
+        segment.clear();
+        while (w.frame < end) {
+            log.clear();
+            w.step(&log);
+            spent += std::max<std::size_t>(1, w.blocks.size());
+            for (const CollisionRecord& r : log) {
+                if (!r.rest) segment.push_back(r);
+            }
+        }
+        found.insert(found.end(), segment.rbegin(), segment.rend());
+        end = it->frame;
+    }
+    if (found.size() > count) found.resize(count);
+    return std::vector<CollisionRecord>(found.rbegin(), found.rend());
+}
+
 std::size_t WorldHistory::bytes() const {
     std::size_t total = sizeof(*this);
     for (const World& w : keyframes_) total += sizeof(World) + w.blocks.capacity() * sizeof(Block);

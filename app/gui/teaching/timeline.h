@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <vector>
 
 class WorldHistory {
   public:
@@ -35,6 +36,13 @@ class WorldHistory {
     // Seconds of simulated time from the oldest to the newest recorded frame (the frames' own
     // times, so a change of frame rate on the way is counted right).
     double recordedSeconds() const;
+    // The last `count` collisions (the rest rule's contacts left out) resolved in the frames up
+    // to and including `frame`, oldest first: what the inspector lists when the timeline shows
+    // `frame`. Rebuilt by stepping the keyframes again (bit-exact, as stateAt), walking back
+    // from `frame` until `count` are found, the history ends, or about `budgetBlockSteps`
+    // block-steps were spent (a big scene far from its last collision).
+    std::vector<CollisionRecord> collisionsUpTo(std::uint64_t frame, std::size_t count,
+                                                std::size_t budgetBlockSteps = 200000) const;
     std::size_t keyframeCount() const { return keyframes_.size(); }
     std::size_t bytes() const;
 

@@ -70,8 +70,14 @@ void applyAction(App& app, Action action) {
     case Action::ToggleVectors:
         app.show.vectors = !app.show.vectors;
         break;
+    case Action::ToggleFrame:
+        setViewFrame(app,
+                     app.frame == ViewFrame::World ? ViewFrame::CentreOfMass : ViewFrame::World);
+        logEvent(app, app.frame == ViewFrame::World ? "frame: world" : "frame: com");
+        break;
     case Action::FitView:
         app.autoFit = true;
+        app.frameCamera.anchored = false; // the whole world now, followed from here
         break;
     case Action::TogglePresent:
         setPresentMode(app, !app.presentMode);
@@ -154,12 +160,14 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     if (runClock) {
         noteFrameShown(app, realSeconds);
         advanceSimulation(app, realSeconds);
+        // The centre-of-mass frame follows the world as drawn this frame.
+        if (app.frame != ViewFrame::World) updateCamera(app, io.DisplaySize.x, io.DisplaySize.y);
     }
     drawSceneDecorations(app);
     drawOverlays(app);
+    if (app.lesson.active()) drawLessonCaption(app); // a lesson's one caption, presenting too
     if (!app.presentMode) {
         if (app.uiVisible) drawControlsPanel(app);
-        if (app.lesson.active()) drawLessonCaption(app);
         if (app.helpOpen) drawHelpWindow(app);
     }
     drawDialogs(app);
@@ -178,6 +186,7 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
     view.selected = app.selected;
     view.theme = &sceneTheme(app.lightTheme);
     view.vectors = app.show.vectors;
+    view.frameVelocity = frameVelocity(app.world, app.frame);
     view.thrustBlock = thrustedBlock(app);
     view.thrust = thrustForce(app);
     view.trails = app.show.trails ? &app.trails : nullptr;

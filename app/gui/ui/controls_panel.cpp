@@ -18,6 +18,7 @@ namespace {
 const ImVec4 kErrorColor{1.0f, 0.45f, 0.42f, 1.0f};
 const ImVec4 kNoteColor{0.55f, 0.85f, 0.60f, 1.0f};
 const ImVec4 kDimColor{0.62f, 0.66f, 0.74f, 1.0f};
+const ImVec4 kWarningColor{1.0f, 0.76f, 0.28f, 1.0f};
 
 void tooltip(const char* text) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
@@ -29,6 +30,41 @@ void statRow(const char* name, const char* fmt, double value) {
     ImGui::TextUnformatted(name);
     ImGui::TableNextColumn();
     ImGui::Text(fmt, value);
+}
+
+// A value typed into `field` (Ctrl+click on a slider, or a drag field) checked against its limit
+// (checkTypedValue, engine/input_limits.h): true and `out` set when it is good; otherwise the
+// field keeps `current` and the panel warns under it until a good value comes.
+bool acceptTyped(App& app, const char* field, double typed, double current,
+                 const limits::Range& range, double& out) {
+    const TypedValue check = checkTypedValue(field, typed, current, range);
+    out = check.value;
+    return app.ui.typedWarning.note(field, check);
+}
+
+// The same for a pair (x, y) from a 2-component field: each component that changed is checked,
+// and both are taken or neither. The one that did not change keeps its double value.
+bool acceptTyped2(App& app, const char* field, const float typed[2], Vec2 current,
+                  const limits::Range& range, Vec2& out) {
+    const double now[2] = {current.x, current.y};
+    double wanted[2] = {current.x, current.y};
+    TypedValue check;
+    for (int k = 0; k < 2 && check.ok; ++k) {
+        if (typed[k] == static_cast<float>(now[k])) continue;
+        check = checkTypedValue(field, typed[k], now[k], range);
+        wanted[k] = check.value;
+    }
+    if (check.ok) out = Vec2{wanted[0], wanted[1]};
+    return app.ui.typedWarning.note(field, check);
+}
+
+// The warning about `field`'s last typed value, under the field, in the warning colour.
+void typedWarning(const App& app, const char* field) {
+    const TypedWarning& w = app.ui.typedWarning;
+    if (w.message.empty() || w.field != field) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, kWarningColor);
+    ImGui::TextWrapped("%s", w.message.c_str());
+    ImGui::PopStyleColor();
 }
 
 void scenePicker(App& app) {
@@ -130,8 +166,8 @@ void simulationSection(App& app) {
             "apart\nturn-based: one body at a time");
     float c = static_cast<float>(s.bounciness);
     const float sliderWidth = ImGui::CalcItemWidth();
-    if (ImGui::SliderFloat("bounciness C", &c, 0.0f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) {
-        s.bounciness = c;
+    if (ImGui::SliderFloat("bounciness C", &c, 0.0f, 1.0f, "%.2f")) {
+        acceptTyped(app, "bounciness C", c, s.bounciness, limits::kBounciness, s.bounciness);
     }
     tooltip("Coefficient of restitution: 1 elastic, 0 perfectly inelastic");
     if (app.verbose && !app.layoutLogged) {
@@ -140,37 +176,45 @@ void simulationSection(App& app) {
                     static_cast<int>(sliderWidth), static_cast<int>(b.y - a.y));
         app.layoutLogged = true;
     }
+    typedWarning(app, "bounciness C");
     float g[2] = {static_cast<float>(s.gravity.x), static_cast<float>(s.gravity.y)};
     if (ImGui::SliderFloat2("##gravity", g, -20.0f, 20.0f, "%.2f")) {
-        // A value typed with Ctrl+click may lie outside the slider: kept within it, and said so.
-        const TypedValue gx = checkTypedValue("gravity x", g[0], -20.0, 20.0, "m/s²");
-        const TypedValue gy = checkTypedValue("gravity y", g[1], -20.0, 20.0, "m/s²");
-        s.gravity = Vec2{gx.value, gy.value};
-        if (!gx.message.empty() || !gy.message.empty()) {
-            app.error = gx.message.empty() ? gy.message : gx.message;
-        }
+        // Ctrl+click types a value beyond the slider: any within the limits is taken.
+        acceptTyped2(app, "gravity", g, s.gravity, limits::kGravity, s.gravity);
     }
     tooltip("Gravity (x, y) in m/s² (Ctrl+click to type a value)");
     ImGui::SameLine();
     if (ImGui::SmallButton("0")) s.gravity = Vec2{0.0, 0.0};
+    if (ImGui::IsItemActivated()) app.ui.typedWarning.note("gravity", TypedValue{});
     tooltip("No gravity");
     ImGui::SameLine();
     if (ImGui::SmallButton("9.81")) s.gravity = Vec2{0.0, -9.81};
+    if (ImGui::IsItemActivated()) app.ui.typedWarning.note("gravity", TypedValue{});
     tooltip("Gravity 9.81 m/s² down");
     ImGui::SameLine();
     ImGui::TextUnformatted("g");
+    typedWarning(app, "gravity");
     float hz = static_cast<float>(1.0 / s.dt);
-    if (ImGui::SliderFloat("frame rate", &hz, 5.0f, 240.0f, "%.0f Hz",
-                           ImGuiSliderFlags_AlwaysClamp)) {
-        s.dt = 1.0 / static_cast<double>(hz);
+    if (ImGui::SliderFloat("frame rate", &hz, 5.0f, 240.0f, "%.0f Hz")) {
+        double rate = 1.0 / s.dt;
+        if (acceptTyped(app, "frame rate", hz, rate, limits::kFrameRate, rate)) s.dt = 1.0 / rate;
     }
     tooltip("Simulation frames per simulated second: dt = 1 / rate");
-    ImGui::SliderInt("substeps", &s.substeps, 1, 32, "%d", ImGuiSliderFlags_AlwaysClamp);
+    typedWarning(app, "frame rate");
+    int substeps = s.substeps;
+    if (ImGui::SliderInt("substeps", &substeps, 1, 32, "%d")) {
+        double k = s.substeps;
+        if (acceptTyped(app, "substeps", substeps, k, limits::kSubsteps, k)) {
+            s.substeps = static_cast<int>(k);
+        }
+    }
+    typedWarning(app, "substeps");
     float scale = static_cast<float>(app.timeScale);
     if (ImGui::SliderFloat("time scale", &scale, 0.05f, 4.0f, "%.2fx",
-                           ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
-        app.timeScale = scale;
+                           ImGuiSliderFlags_Logarithmic)) {
+        acceptTyped(app, "time scale", scale, app.timeScale, limits::kTimeScale, app.timeScale);
     }
+    typedWarning(app, "time scale");
 }
 
 // A combo over the engine's own list of names (resolveName, integratorName): no second list.
@@ -212,14 +256,12 @@ void physicsSection(App& app) {
     float drag = static_cast<float>(s.drag);
     if (ImGui::SliderFloat("drag k", &drag, 0.0f, 1000.0f, "%.3g kg/m³",
                            ImGuiSliderFlags_Logarithmic)) {
-        // A value typed with Ctrl+click may lie outside the slider: kept within it, and said so.
-        const TypedValue k = checkTypedValue("drag k", drag, 0.0, 1000.0, "kg/m³");
-        s.drag = k.value;
-        if (!k.message.empty()) app.error = k.message;
+        acceptTyped(app, "drag k", drag, s.drag, limits::kDrag, s.drag);
     }
     tooltip("Quadratic drag: force -k·A·|v|·v, A = w·h; terminal speed sqrt(m·g/(k·A)). Air 1.2, "
             "water 1000 (slide \"Viscosity/drag: a feather falls slower than a stone\"; "
             "Ctrl+click to type)");
+    typedWarning(app, "drag k");
     ImGui::TextColored(kDimColor, "Mistakes (the Tips slides' bugs)");
     for (int m = 0; m < static_cast<int>(Mistake::Count); ++m) {
         const Mistake mistake = static_cast<Mistake>(m);
@@ -235,12 +277,12 @@ void physicsSection(App& app) {
     float thrust = static_cast<float>(app.thrust.force);
     if (ImGui::SliderFloat("thrust force", &thrust, 0.1f, 1000.0f, "%.3g N",
                            ImGuiSliderFlags_Logarithmic)) {
-        const TypedValue f = checkTypedValue("thrust force", thrust, 0.1, 1000.0, "N");
-        app.thrust.force = f.value;
-        if (!f.message.empty()) app.error = f.message;
+        acceptTyped(app, "thrust force", thrust, app.thrust.force, limits::kThrust,
+                    app.thrust.force);
     }
     tooltip("F in N: the same force gives a heavy block a small acceleration a = F/m, a light one "
             "a large one (Ctrl+click to type)");
+    typedWarning(app, "thrust force");
     if (app.thrust.on &&
         !(app.selected >= 0 && app.selected < static_cast<int>(app.world.blocks.size()) &&
           app.world.blocks[static_cast<std::size_t>(app.selected)].isDynamic())) {
@@ -252,16 +294,11 @@ void physicsSection(App& app) {
 void blockForceField(App& app, Block& b) {
     float f[2] = {static_cast<float>(b.force.x), static_cast<float>(b.force.y)};
     if (ImGui::DragFloat2("force", f, 0.05f, -1000.0f, 1000.0f, "%.2f N")) {
-        // Typed (Ctrl+click) values outside the field's range are kept within it, and said so.
-        const TypedValue fx = checkTypedValue("force x", f[0], -1000.0, 1000.0, "N");
-        const TypedValue fy = checkTypedValue("force y", f[1], -1000.0, 1000.0, "N");
-        b.force = Vec2{fx.value, fy.value};
-        if (!fx.message.empty() || !fy.message.empty())
-            app.error = fx.message.empty() ? fy.message : fx.message;
-        noteEdit(app, true);
+        if (acceptTyped2(app, "force", f, b.force, limits::kForce, b.force)) noteEdit(app, true);
     }
     tooltip("A constant force on the block (N), a = F/m (Ctrl+click to type); its arrow is drawn "
             "with the arrows overlay");
+    typedWarning(app, "force");
 }
 
 void selectedSection(App& app) {
@@ -289,32 +326,32 @@ void selectedSection(App& app) {
     if (b.isDynamic()) {
         float mass = static_cast<float>(b.mass);
         if (ImGui::SliderFloat("mass", &mass, 0.01f, 1000.0f, "%.3g kg",
-                               ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
-            b.mass = mass;
+                               ImGuiSliderFlags_Logarithmic) &&
+            acceptTyped(app, "mass", mass, b.mass, limits::kMass, b.mass)) {
             noteEdit(app, true);
         }
+        typedWarning(app, "mass");
         blockForceField(app, b);
     } else {
         ImGui::TextColored(kDimColor, "mass: infinite");
     }
     float size[2] = {static_cast<float>(b.size.x), static_cast<float>(b.size.y)};
     if (ImGui::DragFloat2("size", size, 0.02f, 0.05f, 50.0f, "%.2f m")) {
-        if (!(size[0] > 0.0f && size[1] > 0.0f)) {
-            app.error = "A block's size must be larger than 0 m";
-        } else if (!setBlockSize(app, i, {size[0], size[1]})) {
-            app.error = "That size would overlap another block or a wall";
-        } else if (app.error.rfind("A block's size", 0) == 0 ||
-                   app.error.rfind("That size", 0) == 0) {
-            app.error.clear(); // the size took: the message about it goes
+        Vec2 wanted = b.size;
+        if (acceptTyped2(app, "size", size, b.size, limits::kSize, wanted) &&
+            !setBlockSize(app, i, wanted)) {
+            app.ui.typedWarning.note(
+                "size", {false, 0.0, "size: that size would overlap another block or a wall"});
         }
     }
+    typedWarning(app, "size");
     if (b.kind != BodyKind::Static) {
         float v[2] = {static_cast<float>(b.velocity.x), static_cast<float>(b.velocity.y)};
-        if (ImGui::DragFloat2("velocity", v, 0.05f, -1000.0f, 1000.0f, "%.2f m/s",
-                              ImGuiSliderFlags_AlwaysClamp)) {
-            b.velocity = Vec2{v[0], v[1]};
+        if (ImGui::DragFloat2("velocity", v, 0.05f, -1000.0f, 1000.0f, "%.2f m/s") &&
+            acceptTyped2(app, "velocity", v, b.velocity, limits::kSpeed, b.velocity)) {
             noteEdit(app, true);
         }
+        typedWarning(app, "velocity");
     }
     ImGui::TextColored(kDimColor, "position (%.2f, %.2f) m", b.position.x, b.position.y);
     if (ImGui::Button("Delete block")) deleteSelected(app);
@@ -355,20 +392,36 @@ void overlaysSection(App& app) {
 
 void viewSection(App& app) {
     if (!ImGui::CollapsingHeader("View")) return;
+    bool com = app.frame == ViewFrame::CentreOfMass;
+    if (ImGui::Checkbox("centre-of-mass frame (U)", &com))
+        setViewFrame(app, com ? ViewFrame::CentreOfMass : ViewFrame::World);
+    tooltip("The view moves with the centre of mass's velocity u and the arrows show w = v - u "
+            "(the walls drift across the view: they move at -u in this frame)");
     if (ImGui::SmallButton("clear trails (C)")) applyAction(app, Action::ClearTrails);
     float scale = app.uiScale;
     if (ImGui::SliderFloat("UI scale", &scale, 0.75f, 3.0f, "%.2f")) {
         // Applied when released: rebuilding the font under the cursor would fight the slider.
         app.note = "UI scale applies on release";
     }
-    if (ImGui::IsItemDeactivatedAfterEdit()) setUiScale(app, scale);
+    constexpr limits::Range kUiScaleRange{kMinUiScale, kMaxUiScale, ""};
+    double applied = app.uiScale;
+    if (ImGui::IsItemDeactivatedAfterEdit() &&
+        acceptTyped(app, "UI scale", scale, app.uiScale, kUiScaleRange, applied)) {
+        setUiScale(app, static_cast<float>(applied));
+    }
+    typedWarning(app, "UI scale");
     float labels = app.labelScale;
-    if (ImGui::SliderFloat("scene labels", &labels, kMinLabelScale, kMaxLabelScale, "%.2fx",
-                           ImGuiSliderFlags_AlwaysClamp)) {
+    if (ImGui::SliderFloat("scene labels", &labels, kMinLabelScale, kMaxLabelScale, "%.2fx")) {
         app.note = "Label size applies on release";
     }
     tooltip("Size of the block names and numbers in the scene, apart from the UI scale");
-    if (ImGui::IsItemDeactivatedAfterEdit()) app.labelScale = labels;
+    constexpr limits::Range kLabelRange{kMinLabelScale, kMaxLabelScale, ""};
+    double labelScale = app.labelScale;
+    if (ImGui::IsItemDeactivatedAfterEdit() &&
+        acceptTyped(app, "scene labels", labels, app.labelScale, kLabelRange, labelScale)) {
+        app.labelScale = static_cast<float>(labelScale);
+    }
+    typedWarning(app, "scene labels");
     ImGui::Checkbox("light theme (bright rooms)", &app.lightTheme);
     tooltip("Dark text on a light scene and panels: a projector in a lit room washes dark "
             "themes out");

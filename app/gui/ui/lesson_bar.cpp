@@ -1,6 +1,9 @@
-// The lesson's caption bar: across the top of the scene, "n / N · title" large, the caption under
-// it, then the question (or, after the next press, its answer). Opaque, so nothing shows through;
-// its height is kept in app.captionHeight and the scene's viewport starts below it.
+// The lesson's caption bar: across the top of the scene, "n / N · title" large, the keys (in
+// present mode the method and t: lessonBarStatus) beside it, the caption under it, then the
+// question (or, after the next press, its answer). The one caption of a lesson, presenting or
+// not (present mode's one-line caption is for scenes). Opaque, so nothing shows through; its
+// height is kept in app.captionHeight and the scene's viewport starts below it. In present mode
+// it is the scene's caption, not a window: --layout-json lists no window there.
 #include "app_frame.h"
 #include "overlay_window.h"
 
@@ -21,8 +24,9 @@ void drawLessonCaption(App& app) {
     const LessonStep* step = s.step();
     if (!step) return;
     const ImGuiIO& io = ImGui::GetIO();
-    const float left =
-        app.uiVisible ? static_cast<float>(panelWidth(app.uiScale, io.DisplaySize.x)) : 0.0f;
+    const float left = app.uiVisible && !app.presentMode
+                           ? static_cast<float>(panelWidth(app.uiScale, io.DisplaySize.x))
+                           : 0.0f;
     ImGui::SetNextWindowPos(ImVec2(left, 0.0f), ImGuiCond_Always);
     const float width = io.DisplaySize.x - left; // fixed width, the height follows the text
     ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f),
@@ -36,13 +40,18 @@ void drawLessonCaption(App& app) {
         ImGui::End();
         return;
     }
-    recordShownWindow(app, "Lesson caption");
+    if (!app.presentMode) recordShownWindow(app, "Lesson caption");
     const std::string heading = lessonHeading(s);
     ImGui::SetWindowFontScale(1.25f);
     ImGui::TextUnformatted(heading.c_str());
     ImGui::SetWindowFontScale(1.0f);
     ImGui::SameLine();
-    ImGui::TextColored(kDimColor, "   PageDown next, PageUp back, R restart");
+    const std::string status =
+        lessonBarStatus(app.presentMode, app.world.settings.method, app.world.time);
+    if (app.presentMode)
+        ImGui::Text("   %s", status.c_str());
+    else
+        ImGui::TextColored(kDimColor, "   %s", status.c_str());
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextUnformatted(step->caption.c_str());
     if (!step->question.empty()) {

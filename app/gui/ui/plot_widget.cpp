@@ -11,6 +11,7 @@ constexpr ImU32 kGrid = IM_COL32(255, 255, 255, 28);
 constexpr ImU32 kZero = IM_COL32(255, 255, 255, 70);
 constexpr ImU32 kAxisText = IM_COL32(190, 198, 215, 255);
 constexpr ImU32 kMarker = IM_COL32(255, 196, 80, 80);
+constexpr ImU32 kCursor = IM_COL32(120, 220, 255, 230);
 constexpr std::size_t kMaxMarkers = 150;
 constexpr float kColumnPx = 2.0f; // series thinned to their extremes per column this wide
 
@@ -53,7 +54,9 @@ std::vector<HeaderItem> layoutHeader(const PlotOptions& o, const std::vector<Plo
     std::vector<HeaderItem> items;
     if (*o.title) items.push_back({o.title, IM_COL32(235, 238, 245, 255)});
     if (*o.yUnit) items.push_back({std::string("[") + o.yUnit + "]", kAxisText});
-    for (const PlotSeries& ps : series) items.push_back({ps.label, 0, &ps});
+    for (const PlotSeries& ps : series) {
+        if (!ps.label.empty()) items.push_back({ps.label, 0, &ps});
+    }
     float x = left;
     int line = 0;
     for (HeaderItem& it : items) {
@@ -205,6 +208,15 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
         }
         if (s.points) {
             for (const ImVec2& p : pts) dl->AddCircleFilled(p, thickness * 1.8f, s.color, 8);
+        }
+    }
+    // The timeline's "now": where the scrubbed time is in the recorded run.
+    if (std::isfinite(o.cursor)) {
+        const double x = axisValue(o.cursor, o.logX);
+        if (x >= x0 && x <= x1) {
+            const float sx = std::round(m.sx(x));
+            dl->AddRectFilled(ImVec2(sx - 1.0f, m.min.y), ImVec2(sx + 1.0f, m.max.y), kCursor);
+            dl->AddText(ImVec2(sx + font * 0.25f, m.max.y - font * 1.1f), kCursor, "now");
         }
     }
     dl->PopClipRect();

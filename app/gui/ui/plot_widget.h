@@ -8,11 +8,12 @@
 
 #include <imgui.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
 struct PlotSeries {
-    std::string label;
+    std::string label; // "" : no legend entry (the faded part of a series)
     ImU32 color = IM_COL32(255, 255, 255, 255);
     std::vector<double> x, y;
     bool points = false; // draw a dot at every sample (sparse data: the tradeoff chart)
@@ -27,6 +28,7 @@ struct PlotOptions {
     bool logX = false, logY = false;
     bool includeZero = false; // keep y = 0 in view
     float height = 0.0f;      // px; 0: the rest of the window
+    double cursor = NAN; // x of a vertical "now" line (the timeline's scrubbed time); NAN: none
 };
 
 // Draws the plot at the cursor, full width. `markers` are x values drawn as vertical lines.

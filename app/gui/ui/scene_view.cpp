@@ -87,12 +87,13 @@ float freeSpot(const std::vector<ImVec4>& placed, float x, float above, float be
 
 constexpr int kCrowdedScene = 20; // blocks
 
-void drawLabels(const App& app, ImDrawList* dl) {
+// `placed`: the rectangles taken on screen, the blocks and each label (the arrows' values
+// avoid them).
+void drawLabels(const App& app, ImDrawList* dl, std::vector<ImVec4>& placed) {
     const int n = static_cast<int>(app.world.blocks.size());
     if (n > kMaxLabelledBlocks) return;
     const float lineHeight = ImGui::GetFontSize();
     // Rectangles already taken on screen: the blocks themselves, then each label placed.
-    std::vector<ImVec4> placed;
     placed.reserve(static_cast<std::size_t>(2 * n));
     for (const Block& b : app.world.blocks) {
         const Vec2 lo = app.camera.worldToScreen(b.position - b.size * 0.5);
@@ -209,7 +210,9 @@ void drawBadge(const App& app, ImDrawList* dl) {
     ImVec2 at(static_cast<float>(vp.x) + pad * 1.5f, static_cast<float>(vp.y) + pad);
     const ImU32 plateBg = uiLightTheme() ? IM_COL32(235, 236, 240, 230) : IM_COL32(20, 22, 30, 200);
     const ImU32 plateFg = uiLightTheme() ? IM_COL32(20, 22, 30, 255) : IM_COL32(225, 230, 240, 255);
-    if (app.presentMode) {
+    if (app.presentMode && app.lesson.active()) {
+        // A lesson's caption bar says it all (lesson_bar.cpp): nothing more over the scene.
+    } else if (app.presentMode) {
         // The caption: what the scene is, the method and the time, on one line.
         const float room = static_cast<float>(vp.width) - pad * 4.0f;
         std::string caption = presentCaption(app.scene.name, app.scene.description,
@@ -235,6 +238,17 @@ void drawBadge(const App& app, ImDrawList* dl) {
     if (state && !app.presentMode) {
         const ImU32 bg = app.paused ? IM_COL32(220, 150, 40, 235) : IM_COL32(60, 130, 220, 235);
         at.x += plate(dl, at, state, bg, IM_COL32(15, 15, 20, 255), pad);
+    }
+    // The frame of reference, when it is not the world's (the walls drift: that is why).
+    if (app.frame == ViewFrame::CentreOfMass && !app.presentMode) {
+        const Vec2 u = frameVelocity(app.world, app.frame);
+        const std::string text =
+            "centre-of-mass frame, u = " +
+            (isRoundingNoise(u.y, length(u))
+                 ? formatQuantity(u.x, "m/s")
+                 : "(" + formatNumber(u.x) + ", " + formatNumber(u.y) + ") m/s");
+        at.x += plate(dl, at, text.c_str(), IM_COL32(255, 235, 90, 235), IM_COL32(15, 15, 20, 255),
+                      pad);
     }
     // Paused at t = 0: how to start (the first time the app runs, with the first keys).
     const std::string hint = startHint(app.paused, app.world.time, app.firstLaunch);
@@ -269,25 +283,49 @@ void drawLargeCount(const App& app, ImDrawList* dl) {
     dl->AddText(ImVec2(at.x + ts.x - us.x, at.y + ts.y), packed(theme().axis), unit);
 }
 
-// Arrows too long to draw to scale (compressed and cut at the view's edge) carry their value.
-void drawArrowValues(const App& app, ImDrawList* dl) {
+// Arrows too long to draw to scale (compressed and cut at the view's edge) carry their value; in
+// the centre-of-mass frame every arrow does (w1 = 4 m/s: the lecture's numbers), in a scene of
+// few blocks.
+void drawArrowValues(const App& app, ImDrawList* dl, std::vector<ImVec4>& placed) {
     if (!app.show.vectors) return;
+    const bool relative = app.frame != ViewFrame::World;
+    const Vec2 u = frameVelocity(app.world, app.frame);
+    const bool labelAll =
+        relative && app.world.blocks.size() <= static_cast<std::size_t>(kCrowdedScene);
     int written = 0;
-    for (const Block& b : app.world.blocks) {
+    for (std::size_t i = 0; i < app.world.blocks.size(); ++i) {
+        const Block& b = app.world.blocks[i];
         if (b.kind == BodyKind::Static || written >= kMaxArrowValueLabels) continue;
-        const ArrowOnScreen a =
-            arrowOnScreen(app.camera, b.position, b.velocity * kVelocityArrowScale);
-        if (a.toScale) continue;
-        char text[48];
-        std::snprintf(text, sizeof text, "%s m/s", formatNumber(length(b.velocity)).c_str());
-        const Vec2 tip = app.camera.worldToScreen(a.tip);
-        const ImVec2 ts = ImGui::CalcTextSize(text);
+        const Vec2 w = b.velocity - u;
+        const ArrowOnScreen a = arrowOnScreen(app.camera, b.position, w * kVelocityArrowScale);
+        if (a.toScale && !labelAll) continue;
+        const std::string text =
+            relative
+                ? frameVelocityLabel(i < app.labels.size() ? app.labels[i].name : "", w, app.frame)
+                : formatNumber(length(w)) + " m/s";
+        const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
         const ScreenRect& vp = app.camera.viewport();
-        const float x =
-            std::clamp(static_cast<float>(tip.x) - ts.x * 0.5f, static_cast<float>(vp.x),
-                       static_cast<float>(vp.x + vp.width) - ts.x);
-        shadowText(dl, ImVec2(x, static_cast<float>(tip.y) - ts.y - 6.0f), packed(theme().velocity),
-                   text, packed(theme().textShadow));
+        // Over the arrow's head; every arrow's value (labelAll): under its block (the name is
+        // over it), moved down a line at a time until it overlaps no value written before.
+        Vec2 at = app.camera.worldToScreen(a.tip);
+        at.y -= ts.y + 6.0;
+        if (labelAll) {
+            at = app.camera.worldToScreen(b.position - Vec2{0.0, b.size.y * 0.5});
+            at.y += 3.0;
+        }
+        const float x = std::clamp(static_cast<float>(at.x) - ts.x * 0.5f, static_cast<float>(vp.x),
+                                   static_cast<float>(vp.x + vp.width) - ts.x);
+        float y = static_cast<float>(at.y);
+        for (int k = 0; k < 6; ++k) {
+            const ImVec4 r(x - 4.0f, y, x + ts.x + 4.0f, y + ts.y);
+            if (std::none_of(placed.begin(), placed.end(),
+                             [&r](const ImVec4& p) { return intersects(r, p); }))
+                break;
+            y += ts.y;
+        }
+        placed.emplace_back(x, y, x + ts.x, y + ts.y);
+        shadowText(dl, ImVec2(x, y), packed(theme().velocity), text.c_str(),
+                   packed(theme().textShadow));
         ++written;
     }
 }
@@ -396,8 +434,9 @@ void drawSceneDecorations(const App& app) {
     ImGui::PushFont(uiLabelFont()); // the scene's labels have a size of their own
     drawAxisNumbers(app, dl);
     drawReferenceLine(app, dl);
-    drawLabels(app, dl);
-    drawArrowValues(app, dl);
+    std::vector<ImVec4> placed; // blocks and labels on screen
+    drawLabels(app, dl, placed);
+    drawArrowValues(app, dl, placed);
     SceneView forces; // what the scene renderer draws the force arrows from
     forces.world = &app.world;
     forces.vectors = app.show.vectors;

@@ -101,6 +101,9 @@ void Resolver::record(int a, int b, int axis, double m1, double v1, double m2, d
     r.axis = axis;
     r.m1 = m1, r.m2 = m2, r.v1 = v1, r.v2 = v2, r.u = u, r.C = C;
     r.v1After = v1After, r.v2After = v2After, r.rest = rest;
+    if (b >= 0) {
+        r.firstBelow = ctx_.world.blocks[a].position[axis] <= ctx_.world.blocks[b].position[axis];
+    }
     ctx_.log->push_back(r);
 }
 

@@ -43,7 +43,9 @@ inline constexpr Range kSubsteps{1.0, 1000.0, "", true}; // steps per frame
 inline constexpr Range kForce{-1e9, 1e9, "N"};           // each force component (and F/m <= 1e9)
 inline constexpr Range kDrag{0.0, 1e6, "kg/m^3"};        // the medium's density (water: 1e3)
 inline constexpr Range kThrust{0.01, 1e4, "N"};          // the keyboard thrust (app, lessons)
-inline constexpr Range kFrames{0.0, 1e7, "", true};      // frames of one run (the frame budget)
+inline constexpr Range kFrameRate{1.0 / kDt.max, 1.0 / kDt.min, "Hz"}; // 1/dt (the app's field)
+inline constexpr Range kTimeScale{0.01, 100.0, ""}; // simulated s per real s (app, lessons)
+inline constexpr Range kFrames{0.0, 1e7, "", true}; // frames of one run (the frame budget)
 inline constexpr Range kTime{0.0, kFrames.max* kDt.max, "s"}; // simulated time of one run
 inline constexpr Range kDuration{1e-6, kTime.max, "s"};       // a scene's "duration"
 // A length must be at least this fraction of the magnitude of the coordinates it sits at.
