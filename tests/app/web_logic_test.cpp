@@ -75,6 +75,17 @@ TEST(UrlParams, AppliedToTheApp) {
     EXPECT_TRUE(app.show.plots);
 }
 
+TEST(UrlParams, TheCentreOfMassFrame) {
+    App app = setUpApp();
+    applyUrlParams(app, parseUrlParams("?scene=lecture_example_1&frame=com"));
+    EXPECT_EQ(app.error, "");
+    EXPECT_EQ(app.frame, ViewFrame::CentreOfMass);
+    const UrlParams bad = parseUrlParams("?frame=moving");
+    EXPECT_FALSE(bad.frame.has_value());
+    ASSERT_EQ(bad.errors.size(), 1u);
+    EXPECT_EQ(bad.errors[0], "URL parameter frame: unknown frame 'moving' (world, com)");
+}
+
 TEST(UrlParams, AnUnknownSceneKeepsTheCurrentOneAndSaysWhy) {
     App app = setUpApp();
     const std::string before = app.scenePath;

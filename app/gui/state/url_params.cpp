@@ -91,6 +91,10 @@ UrlParams parseUrlParams(const std::string& query) {
             } else {
                 p.errors.push_back(where + ": " + error);
             }
+        } else if (key == "frame") {
+            p.frame = parseViewFrame(value);
+            if (!p.frame)
+                p.errors.push_back(where + ": unknown frame " + echo(value) + " (world, com)");
         } else if (key == "lesson") {
             if (isSceneName(value))
                 p.lesson = value;
@@ -108,7 +112,7 @@ UrlParams parseUrlParams(const std::string& query) {
                                    " is not a step number (1, 2, ...)");
         } else {
             p.errors.push_back("unknown URL parameter " + echo(key) +
-                               " (scene, method, show, lesson, step)");
+                               " (scene, method, show, frame, lesson, step)");
         }
     }
     if (p.step > 0 && p.lesson.empty()) {
@@ -143,5 +147,6 @@ void applyUrlParams(App& app, const UrlParams& params) {
     }
     if (params.methodGiven) app.world.settings.method = params.method;
     if (params.showGiven) applyShowSet(app, params.show);
+    if (params.frame) setViewFrame(app, *params.frame);
     app.error = errors;
 }

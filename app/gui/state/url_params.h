@@ -2,13 +2,15 @@
 //   index.html?scene=newtons_cradle&method=turn-based&show=plots,inspector
 //   index.html?lesson=lecture3&step=5
 // scene: a shipped scene's name; method: perfect, move-and-correct or turn-based; show: a --show
-// list; lesson: a shipped lesson's name, step: its step (1-based, needs lesson). Pure logic (no
+// list; frame: world or com (the centre-of-mass frame, view_frame.h); lesson: a shipped lesson's
+// name, step: its step (1-based, needs lesson). Pure logic (no
 // browser): the web main reads location.search and hands it here.
 #pragma once
 
 #include "options.h"
 #include "world.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,8 +22,9 @@ struct UrlParams {
     Method method = Method::Perfect;
     bool showGiven = false;
     ShowSet show;
-    std::string lesson; // a shipped lesson's name, "" when not given
-    int step = 0;       // 1-based; 0 when not given
+    std::optional<ViewFrame> frame; // none when not given
+    std::string lesson;             // a shipped lesson's name, "" when not given
+    int step = 0;                   // 1-based; 0 when not given
     // One message per bad parameter, naming it ("URL parameter method: unknown 'x' ...").
     std::vector<std::string> errors;
 };
