@@ -32,6 +32,32 @@ struct PerfectScratch {
     std::vector<int> changed;         // blocks whose velocity an event changed
     std::unordered_map<std::uint64_t, int> metAtInstant; // meetings per pair at one instant
     CornerGrid cornerGrid;                               // the paths, for blocks of similar size
+
+    // Windows (perfect.cpp, "Windows"): for substeps in which blocks cross the world many times.
+    // A block's motion: its position and velocity, valid at `clock` (s since the substep start).
+    struct Motion {
+        Vec2 position;
+        Vec2 velocity;
+        double clock;
+    };
+    // How the windows are used: 0 when the substep's motion calls for them (the default), -1
+    // never, a positive factor always, with windows that many times shorter than the default
+    // (tests compare the three: the impacts found, and so every result, are the same).
+    double windowPolicy = 0.0;
+    CornerGrid windowGrid; // each block's current window (or, for very mixed sizes, in:)
+    BroadPhase windows;
+    std::vector<int> horizons;      // every block, a binary heap by windowEnd (earliest first)
+    std::vector<int> horizonSlot;   // per block: its place in `horizons`
+    std::vector<Event> pendingWall; // per block: its wall impact, until its window reaches it
+    std::vector<std::uint32_t> changeSerial;    // per block: the event of its last change (0: none)
+    std::vector<double> changeTime;             // s: per block, the time of that change
+    std::vector<Aabb> changePath;               // per block: its trajectory from that change
+    std::vector<std::vector<Motion>> motions;   // per block: its motion then, and after each sync
+    std::vector<double> windowStart, windowEnd; // s: per block, its current window [start, end)
+    std::vector<std::uint32_t> windowBatch;     // per block: the batch that registered it
+    std::vector<int> windowCount;               // per block: windows since its last change
+    std::vector<int> syncLog;                   // blocks brought to the current time (Resolver)
+    std::uint64_t horizonsPassed = 0; // windows after a block's first, all substeps (for tests)
 };
 
 // The turn-based method's buffers (turn_based.cpp).

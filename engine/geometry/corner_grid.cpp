@@ -9,11 +9,16 @@ bool CornerGrid::fileAll(const Bounds& bounds, const Extents& extents) {
     // large.
     const double limit = extents.count > 0 ? 2.0 * extents.sum / extents.count : 0.0;
     maxSmallExtent_ = limit < extents.largest ? limit : extents.largest; // NaN limit: ignored
+    // Boxes that large compared with the world (blocks crossing much of it in a substep) make a
+    // handful of cells anyway: then every box goes into cells, which costs a query no more than
+    // a list of large boxes would, where the BroadPhase would file each in all of its cells (and
+    // move each through all of them on set(): a 1000-block storm at 1e9 m/s spent 90% there).
+    const Vec2 span = bounds.max - bounds.min;
+    if (maxSmallExtent_ >= 0.25 * std::max(span.x, span.y)) maxSmallExtent_ = extents.largest;
     // The cell: more than maxSmallExtent + t, so that the corners of two small boxes that meet
     // are at most one cell apart (see queryOthers()), with room for rounding: a relative 2^-20,
     // and 2^-40 of the coordinates' magnitude, where one step of rounding loses 2^-53. No more
     // cells than about four per block (BroadPhase's rule), nor more columns or rows than that.
-    const Vec2 span = bounds.max - bounds.min;
     const size_t n = boxes_.size();
     const double maxCells = 4.0 * static_cast<double>(n) + 64.0;
     const double magnitude = std::max(std::abs(bounds.min.x), std::abs(bounds.min.y)) +

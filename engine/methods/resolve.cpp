@@ -31,6 +31,7 @@ void Resolver::setNow(double now, std::vector<double>* localTime) {
 void Resolver::sync(int i) {
     if (!localTime_) return;
     double& clock = (*localTime_)[i];
+    if (syncLog_ && clock != now_) syncLog_->push_back(i);
     Block& b = ctx_.world.blocks[i];
     if (ctx_.acceleration) { // along its parabola: the velocity changes too
         const double t = now_ - clock;

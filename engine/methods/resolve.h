@@ -131,6 +131,9 @@ class Resolver {
     void setUndoLog(std::vector<VelocityChange>* undo) { undo_ = undo; }
     // Brings block i to the current time (a no-op unless lazy clocks were given).
     void sync(int i);
+    // When given, every block that sync() brings to the current time is also appended to `log`
+    // (the perfect method keeps the motion it had before, for impacts it finds later: perfect.cpp).
+    void setSyncLog(std::vector<int>* log) { syncLog_ = log; }
 
   private:
     double restThreshold(int axis) const;
@@ -150,6 +153,7 @@ class Resolver {
     bool forceRest_ = false;
     std::vector<int> changed_;
     std::vector<VelocityChange>* undo_ = nullptr;
+    std::vector<int>* syncLog_ = nullptr;
     // Scratch for the rest rule's cluster search.
     std::vector<int> members_;
     std::vector<int> queue_;

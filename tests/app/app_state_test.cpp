@@ -633,3 +633,20 @@ TEST(AppState, HighMassRatioStopsAtItsDurationWith3141) {
     for (int i = 0; i < 900; ++i) stepSimulation(app);
     EXPECT_GT(app.totals.collisions, 3141u);
 }
+
+// --theme starts with the light theme (issue 15: bright rooms); --timeline-frame shows the replay
+// offscreen and cannot go past the frames simulated.
+TEST(Options, ThemeAndTimelineFrame) {
+    const char* light[] = {"sandbox", "--theme", "light", "--frames", "90", "--timeline-frame",
+                           "30"};
+    const ParsedOptions p = parseOptions(7, light);
+    ASSERT_FALSE(p.exit);
+    EXPECT_EQ(p.options.theme, "light");
+    EXPECT_EQ(p.options.timelineFrame, 30);
+    const char* badTheme[] = {"sandbox", "--theme", "pink"};
+    EXPECT_EQ(parseOptions(3, badTheme).exitCode, 2);
+    const char* pastTheEnd[] = {"sandbox", "--frames", "10", "--timeline-frame", "20"};
+    EXPECT_EQ(parseOptions(5, pastTheEnd).exitCode, 2);
+    const char* none[] = {"sandbox"};
+    EXPECT_TRUE(parseOptions(1, none).options.theme.empty()); // the saved setting decides
+}

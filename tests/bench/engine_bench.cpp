@@ -2,6 +2,7 @@
 // perfect method's collisions per second. Run: build/tests/bench/engine_bench
 #include "gas.h"
 #include "scene.h"
+#include "scratch.h"
 
 #include <benchmark/benchmark.h>
 
@@ -49,8 +50,23 @@ void BM_Gas500Scene(benchmark::State& state) {
         benchmark::Counter(static_cast<double>(collisions), benchmark::Counter::kIsRate);
 }
 
+// Issue 13's event storm (gas.h): every frame is 20,000 events (the cap), so events/s is the
+// cost per event at speeds where every block crosses the world about a million times a frame.
+// Argument 1: the plain search only (as before windows, issue 13), to compare in one sitting.
+void BM_PerfectStorm(benchmark::State& state) {
+    World world = makeStorm();
+    if (state.range(0) == 1) world.scratch.get().perfect.windowPolicy = -1.0;
+    long events = 0;
+    for (auto _ : state) events += world.step().events;
+    state.counters["events/s"] =
+        benchmark::Counter(static_cast<double>(events), benchmark::Counter::kIsRate);
+    state.counters["events/step"] =
+        benchmark::Counter(static_cast<double>(events), benchmark::Counter::kAvgIterations);
+}
+
 } // namespace
 
+BENCHMARK(BM_PerfectStorm)->DenseRange(0, 1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Gas500Scene)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Perfect)
     ->RangeMultiplier(10)

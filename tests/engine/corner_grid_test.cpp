@@ -78,20 +78,42 @@ TEST(CornerGrid, TouchingAndNearlyTouchingBoxesMeet) {
     EXPECT_EQ(pairs, (std::vector<std::pair<int, int>>{{0, 1}, {1, 2}}));
 }
 
-TEST(CornerGrid, DeclinesWhenManyBoxesAreLargeForTheCells) {
+// One box in three 12 m wide, the others 0.1 m: twice the mean extent is 8.3 m, so 34 boxes are
+// too large for cells sized by the typical box.
+BoxSet mixedSizes() {
     BoxSet s;
     Block b;
     for (int i = 0; i < 100; ++i) {
-        // One in three 12 m wide, the others 0.1 m: twice the mean extent is 8.3 m, so 34 boxes
-        // are too large for the cells.
         const double size = i % 3 == 0 ? 12.0 : 0.1;
         s.blocks.push_back(b);
         const Vec2 min{-3.0 + 0.15 * i, 2.0};
         s.boxes.push_back({min, min + Vec2{size, 0.1}});
     }
+    return s;
+}
+
+TEST(CornerGrid, DeclinesWhenManyBoxesAreLargeForTheCells) {
+    BoxSet s = mixedSizes();
+    // In a world 100 m wide (8.3 m is less than a quarter of it: see the next test).
+    s.bounds = {{-3.0, 2.0}, {97.0, 14.0}};
     CornerGrid grid;
     EXPECT_FALSE(grid.build(s.bounds, s.blocks, [&](int i) { return s.boxes[i]; }));
     EXPECT_EQ(grid.box(3).max.x, s.boxes[3].max.x) << "the boxes stay readable";
+}
+
+TEST(CornerGrid, TakesEveryBoxWhenTheBoxesSpanMuchOfTheWorld) {
+    // The same boxes in the 20 m world: 8.3 m is more than a quarter of it, so a cell holds
+    // every box (paths of blocks crossing the world, issue 13), and the answers stay exact.
+    const BoxSet s = mixedSizes();
+    CornerGrid grid;
+    ASSERT_TRUE(grid.build(s.bounds, s.blocks, [&](int i) { return s.boxes[i]; }));
+    std::vector<std::pair<int, int>> pairs, expected;
+    grid.forEachMeetingPair([&](int i, int j) { pairs.emplace_back(i, j); });
+    for (int i = 0; i < 100; ++i)
+        for (int j = i + 1; j < 100; ++j)
+            if (meets(s.boxes[i], s.boxes[j])) expected.emplace_back(i, j);
+    std::sort(pairs.begin(), pairs.end());
+    EXPECT_EQ(pairs, expected);
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 #include "overlay_window.h"
 #include "renderer.h"
 #include "text_format.h"
+#include "ui_style.h"
 
 #include <algorithm>
 #include <cmath>
@@ -60,7 +61,8 @@ void drawMomentaDiagram(App& app) {
     ImGui::InvisibleButton("##momenta", ImVec2(std::max(avail.x, 40.0f), std::max(avail.y, 40.0f)));
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-    dl->AddRectFilled(lo, hi, IM_COL32(10, 12, 18, 150), 3.0f);
+    dl->AddRectFilled(
+        lo, hi, uiLightTheme() ? IM_COL32(255, 255, 255, 235) : IM_COL32(10, 12, 18, 150), 3.0f);
     Vec2 mn{0.0, 0.0}, mx{0.0, 0.0};
     for (const Vec2& t : tips) {
         mn = Vec2{std::min(mn.x, t.x), std::min(mn.y, t.y)};
@@ -99,14 +101,14 @@ void drawMomentaDiagram(App& app) {
     const ImVec2 off = len > 1.0f ? ImVec2(-dy / len * shift, dx / len * shift) : ImVec2(0, 0);
     a = ImVec2(a.x + off.x, a.y + off.y);
     b = ImVec2(b.x + off.x, b.y + off.y);
-    arrow(dl, a, b, overlay_colors::kTotal, width * 1.3f, head * 1.2f);
-    dl->AddCircleFilled(map(Vec2{}), width * 1.5f, overlay_colors::kTotal);
+    arrow(dl, a, b, uiThemed(overlay_colors::kTotal), width * 1.3f, head * 1.2f);
+    dl->AddCircleFilled(map(Vec2{}), width * 1.5f, uiThemed(overlay_colors::kTotal));
     if (len > 1.0f) {
         const char* text = "total";
         const ImVec2 ts = ImGui::CalcTextSize(text);
         dl->AddText(
             ImVec2((a.x + b.x - ts.x) * 0.5f + off.x * 1.5f, (a.y + b.y) * 0.5f + off.y * 1.2f),
-            overlay_colors::kTotal, text);
+            uiThemed(overlay_colors::kTotal), text);
     }
 }
 
@@ -118,12 +120,13 @@ void drawComOverlay(App& app) {
         ImDrawList* dl = ImGui::GetBackgroundDrawList();
         const ImVec2 p = toScreen(app, c.position);
         const float r = 9.0f * app.uiScale;
-        const ImU32 col = overlay_colors::kCom;
+        const ImU32 col = uiThemed(overlay_colors::kCom);
         // In its own frame the centre of mass stands still: no arrow.
         const Vec2 tip =
             c.position + (c.velocity - frameVelocity(app.world, app.frame)) * kVelocityArrowScale;
         arrow(dl, p, toScreen(app, tip), col, 3.0f * app.uiScale, 13.0f * app.uiScale);
-        dl->AddCircleFilled(p, r, IM_COL32(20, 20, 20, 220));
+        dl->AddCircleFilled(
+            p, r, uiLightTheme() ? IM_COL32(255, 255, 255, 220) : IM_COL32(20, 20, 20, 220));
         dl->AddCircle(p, r, col, 20, 2.5f * app.uiScale);
         dl->AddLine(ImVec2(p.x - r, p.y), ImVec2(p.x + r, p.y), col, 2.0f);
         dl->AddLine(ImVec2(p.x, p.y - r), ImVec2(p.x, p.y + r), col, 2.0f);
@@ -131,7 +134,7 @@ void drawComOverlay(App& app) {
         std::snprintf(text, sizeof text, "centre of mass  u = (%.2f, %.2f) m/s", c.velocity.x,
                       c.velocity.y);
         const ImVec2 at(p.x + r + 4.0f, p.y - r - ImGui::GetFontSize());
-        dl->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 220), text);
+        if (!uiLightTheme()) dl->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 220), text);
         dl->AddText(at, col, text);
     }
     drawMomentaDiagram(app);

@@ -5,6 +5,7 @@
 #include "inspector_format.h"
 #include "overlay_window.h"
 #include "printable.h"
+#include "ui_style.h"
 
 #include <cstdio>
 #include <string>
@@ -17,7 +18,7 @@ std::string bodyName(const App& app, int index) {
 
 void formulaLine(const std::string& text, bool strong) {
     if (strong)
-        ImGui::TextColored(ImVec4(1.0f, 0.93f, 0.55f, 1.0f), "%s", text.c_str());
+        ImGui::TextColored(uiThemed(ImVec4(1.0f, 0.93f, 0.55f, 1.0f)), "%s", text.c_str());
     else
         ImGui::TextUnformatted(text.c_str());
 }
@@ -69,7 +70,7 @@ void drawInspectorOverlay(App& app) {
     dimText(f.given.c_str());
     // The relative-velocity test decides whether this is a collision at all.
     if (f.separating) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.35f, 1.0f));
+        ImGui::PushStyleColor(ImGuiCol_Text, uiThemed(ImVec4(1.0f, 0.55f, 0.35f, 1.0f)));
         ImGui::TextWrapped("%s", f.relative.c_str());
         ImGui::PopStyleColor();
     } else {
@@ -83,7 +84,7 @@ void drawInspectorOverlay(App& app) {
     formulaLine(f.momentumBefore, false);
     formulaLine(f.momentumAfter, false);
     if (!f.note.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.62f, 0.66f, 0.74f, 1.0f));
+        ImGui::PushStyleColor(ImGuiCol_Text, uiThemed(ImVec4(0.62f, 0.66f, 0.74f, 1.0f)));
         ImGui::TextWrapped("%s", f.note.c_str());
         ImGui::PopStyleColor();
     }

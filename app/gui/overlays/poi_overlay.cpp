@@ -5,6 +5,7 @@
 #include "app_frame.h"
 #include "inspector_format.h"
 #include "overlay_window.h"
+#include "ui_style.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,8 +25,9 @@ ImVec2 toScreen(const App& app, Vec2 p) {
     return ImVec2(static_cast<float>(s.x), static_cast<float>(s.y));
 }
 
-void box(const App& app, ImDrawList* dl, Vec2 centre, Vec2 size, ImU32 color, float width,
+void box(const App& app, ImDrawList* dl, Vec2 centre, Vec2 size, ImU32 darkColor, float width,
          bool dashed) {
+    const ImU32 color = uiThemed(darkColor);
     const ImVec2 a = toScreen(app, centre - size * 0.5), b = toScreen(app, centre + size * 0.5);
     const ImVec2 lo(std::min(a.x, b.x), std::min(a.y, b.y)),
         hi(std::max(a.x, b.x), std::max(a.y, b.y));
@@ -79,8 +81,9 @@ ImVec2 captionPlace(const App& app, float width, float height) {
 }
 
 void label(ImDrawList* dl, ImVec2 at, ImU32 color, const std::string& text) {
-    dl->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 230), text.c_str());
-    dl->AddText(at, color, text.c_str());
+    if (!uiLightTheme())
+        dl->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 230), text.c_str());
+    dl->AddText(at, uiThemed(color), text.c_str());
 }
 
 } // namespace
@@ -139,9 +142,9 @@ void drawPoiOverlay(App& app) {
     // The plate is 6 px (x UI scale) wider than the text on each side, 4 px taller.
     const ImVec2 plate = captionPlace(app, width + 12.0f * s, 4.0f * font + 8.0f * s);
     const ImVec2 at(plate.x + 6.0f * s, plate.y + 4.0f * s);
-    dl->AddRectFilled(ImVec2(at.x - 6 * s, at.y - 4 * s),
-                      ImVec2(at.x + width + 6 * s, at.y + 4 * font + 4 * s),
-                      IM_COL32(16, 18, 26, 215), 4.0f);
+    dl->AddRectFilled(
+        ImVec2(at.x - 6 * s, at.y - 4 * s), ImVec2(at.x + width + 6 * s, at.y + 4 * font + 4 * s),
+        uiLightTheme() ? IM_COL32(250, 250, 252, 230) : IM_COL32(16, 18, 26, 215), 4.0f);
     for (int i = 0; i < 4; ++i)
-        dl->AddText(ImVec2(at.x, at.y + i * font), colors[i], lines[i].c_str());
+        dl->AddText(ImVec2(at.x, at.y + i * font), uiThemed(colors[i]), lines[i].c_str());
 }

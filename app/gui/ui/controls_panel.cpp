@@ -4,6 +4,7 @@
 #include "app_frame.h"
 #include "overlay_window.h"
 #include "save_naming.h"
+#include "ui_style.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -15,10 +16,18 @@
 
 namespace {
 
-const ImVec4 kErrorColor{1.0f, 0.45f, 0.42f, 1.0f};
-const ImVec4 kNoteColor{0.55f, 0.85f, 0.60f, 1.0f};
-const ImVec4 kDimColor{0.62f, 0.66f, 0.74f, 1.0f};
-const ImVec4 kWarningColor{1.0f, 0.76f, 0.28f, 1.0f};
+ImVec4 errorColor() {
+    return uiThemed(ImVec4{1.0f, 0.45f, 0.42f, 1.0f});
+}
+ImVec4 noteColor() {
+    return uiThemed(ImVec4{0.55f, 0.85f, 0.60f, 1.0f});
+}
+ImVec4 dimColor() {
+    return uiThemed(ImVec4{0.62f, 0.66f, 0.74f, 1.0f});
+}
+ImVec4 warningColor() {
+    return uiThemed(ImVec4{1.0f, 0.76f, 0.28f, 1.0f});
+}
 
 void tooltip(const char* text) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
@@ -62,7 +71,7 @@ bool acceptTyped2(App& app, const char* field, const float typed[2], Vec2 curren
 void typedWarning(const App& app, const char* field) {
     const TypedWarning& w = app.ui.typedWarning;
     if (w.message.empty() || w.field != field) return;
-    ImGui::PushStyleColor(ImGuiCol_Text, kWarningColor);
+    ImGui::PushStyleColor(ImGuiCol_Text, warningColor());
     ImGui::TextWrapped("%s", w.message.c_str());
     ImGui::PopStyleColor();
 }
@@ -262,7 +271,7 @@ void physicsSection(App& app) {
             "water 1000 (slide \"Viscosity/drag: a feather falls slower than a stone\"; "
             "Ctrl+click to type)");
     typedWarning(app, "drag k");
-    ImGui::TextColored(kDimColor, "Mistakes (the Tips slides' bugs)");
+    ImGui::TextColored(dimColor(), "Mistakes (the Tips slides' bugs)");
     for (int m = 0; m < static_cast<int>(Mistake::Count); ++m) {
         const Mistake mistake = static_cast<Mistake>(m);
         bool on = s.has(mistake);
@@ -286,7 +295,7 @@ void physicsSection(App& app) {
     if (app.thrust.on &&
         !(app.selected >= 0 && app.selected < static_cast<int>(app.world.blocks.size()) &&
           app.world.blocks[static_cast<std::size_t>(app.selected)].isDynamic())) {
-        ImGui::TextColored(kDimColor, "Select a moving block to push it.");
+        ImGui::TextColored(dimColor(), "Select a moving block to push it.");
     }
 }
 
@@ -310,8 +319,8 @@ void selectedSection(App& app) {
     if (!ImGui::CollapsingHeader("Selected block")) return;
     const int i = app.selected;
     if (i < 0 || i >= static_cast<int>(app.world.blocks.size())) {
-        ImGui::TextColored(kDimColor, "Click a block to select it.");
-        ImGui::TextColored(kDimColor, "Double-click empty space to add one.");
+        ImGui::TextColored(dimColor(), "Click a block to select it.");
+        ImGui::TextColored(dimColor(), "Double-click empty space to add one.");
         return;
     }
     Block& b = app.world.blocks[static_cast<std::size_t>(i)];
@@ -333,7 +342,7 @@ void selectedSection(App& app) {
         typedWarning(app, "mass");
         blockForceField(app, b);
     } else {
-        ImGui::TextColored(kDimColor, "mass: infinite");
+        ImGui::TextColored(dimColor(), "mass: infinite");
     }
     float size[2] = {static_cast<float>(b.size.x), static_cast<float>(b.size.y)};
     if (ImGui::DragFloat2("size", size, 0.02f, 0.05f, 50.0f, "%.2f m")) {
@@ -353,7 +362,7 @@ void selectedSection(App& app) {
         }
         typedWarning(app, "velocity");
     }
-    ImGui::TextColored(kDimColor, "position (%.2f, %.2f) m", b.position.x, b.position.y);
+    ImGui::TextColored(dimColor(), "position (%.2f, %.2f) m", b.position.x, b.position.y);
     if (ImGui::Button("Delete block")) deleteSelected(app);
 }
 
@@ -457,18 +466,18 @@ void drawControlsPanel(App& app) {
         const float needed =
             ImGui::CalcTextSize(app.scene.description.c_str(), nullptr, false, wrap).y;
         ImGui::BeginChild("##description", ImVec2(0.0f, std::min(lines, needed + 2.0f)));
-        ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+        ImGui::PushStyleColor(ImGuiCol_Text, dimColor());
         ImGui::TextWrapped("%s", app.scene.description.c_str());
         ImGui::PopStyleColor();
         ImGui::EndChild();
     }
     if (!app.error.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
+        ImGui::PushStyleColor(ImGuiCol_Text, errorColor());
         ImGui::TextWrapped("%s", app.error.c_str());
         ImGui::PopStyleColor();
         if (ImGui::SmallButton("dismiss")) app.error.clear();
     } else if (!app.note.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kNoteColor);
+        ImGui::PushStyleColor(ImGuiCol_Text, noteColor());
         ImGui::TextWrapped("%s", app.note.c_str());
         ImGui::PopStyleColor();
     }

@@ -6,6 +6,7 @@
 // it is the scene's caption, not a window: --layout-json lists no window there.
 #include "app_frame.h"
 #include "overlay_window.h"
+#include "ui_style.h"
 
 #include <imgui.h>
 
@@ -13,9 +14,15 @@
 
 namespace {
 
-const ImVec4 kQuestionColor{1.0f, 0.82f, 0.40f, 1.0f};
-const ImVec4 kAnswerColor{0.55f, 0.85f, 0.60f, 1.0f};
-const ImVec4 kDimColor{0.62f, 0.66f, 0.74f, 1.0f};
+ImVec4 questionColor() {
+    return uiThemed(ImVec4{1.0f, 0.82f, 0.40f, 1.0f});
+}
+ImVec4 answerColor() {
+    return uiThemed(ImVec4{0.55f, 0.85f, 0.60f, 1.0f});
+}
+ImVec4 dimColor() {
+    return uiThemed(ImVec4{0.62f, 0.66f, 0.74f, 1.0f});
+}
 
 } // namespace
 
@@ -51,18 +58,19 @@ void drawLessonCaption(App& app) {
     if (app.presentMode)
         ImGui::Text("   %s", status.c_str());
     else
-        ImGui::TextColored(kDimColor, "   %s", status.c_str());
+        ImGui::TextColored(dimColor(), "   %s", status.c_str());
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextUnformatted(step->caption.c_str());
     if (!step->question.empty()) {
         if (s.revealed) {
-            ImGui::TextColored(kAnswerColor, "Answer: %s", step->answer.c_str());
+            ImGui::TextColored(answerColor(), "Answer: %s", step->answer.c_str());
         } else {
-            ImGui::TextColored(kQuestionColor, "Question: %s", step->question.c_str());
-            ImGui::TextColored(kDimColor, "PageDown shows the answer");
+            ImGui::TextColored(questionColor(), "Question: %s", step->question.c_str());
+            ImGui::TextColored(dimColor(), "PageDown shows the answer");
         }
     }
-    if (!s.digits.empty()) ImGui::TextColored(kDimColor, "Go to step %s (Enter)", s.digits.c_str());
+    if (!s.digits.empty())
+        ImGui::TextColored(dimColor(), "Go to step %s (Enter)", s.digits.c_str());
     ImGui::PopTextWrapPos();
     app.captionHeight = ImGui::GetWindowHeight();
     ImGui::End();

@@ -1,17 +1,32 @@
 #include "plot_widget.h"
 
+#include "ui_style.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 namespace {
 
-constexpr ImU32 kFrameBg = IM_COL32(10, 12, 18, 150);
-constexpr ImU32 kGrid = IM_COL32(255, 255, 255, 28);
-constexpr ImU32 kZero = IM_COL32(255, 255, 255, 70);
-constexpr ImU32 kAxisText = IM_COL32(190, 198, 215, 255);
-constexpr ImU32 kMarker = IM_COL32(255, 196, 80, 80);
-constexpr ImU32 kCursor = IM_COL32(120, 220, 255, 230);
+// The plot's colours in the current theme (the light one: a white plot area, dark lines).
+ImU32 frameBg() {
+    return uiLightTheme() ? IM_COL32(255, 255, 255, 235) : IM_COL32(10, 12, 18, 150);
+}
+ImU32 gridColor() {
+    return uiLightTheme() ? IM_COL32(0, 0, 0, 30) : IM_COL32(255, 255, 255, 28);
+}
+ImU32 zeroColor() {
+    return uiLightTheme() ? IM_COL32(0, 0, 0, 90) : IM_COL32(255, 255, 255, 70);
+}
+ImU32 axisText() {
+    return uiThemed(IM_COL32(190, 198, 215, 255));
+}
+ImU32 markerColor() {
+    return uiThemed(IM_COL32(255, 196, 80, 80));
+}
+ImU32 cursorColor() {
+    return uiThemed(IM_COL32(120, 220, 255, 230));
+}
 constexpr std::size_t kMaxMarkers = 150;
 constexpr float kColumnPx = 2.0f; // series thinned to their extremes per column this wide
 
@@ -52,8 +67,8 @@ std::vector<HeaderItem> layoutHeader(const PlotOptions& o, const std::vector<Plo
                                      float left, float right, float top) {
     const float font = ImGui::GetFontSize();
     std::vector<HeaderItem> items;
-    if (*o.title) items.push_back({o.title, IM_COL32(235, 238, 245, 255)});
-    if (*o.yUnit) items.push_back({std::string("[") + o.yUnit + "]", kAxisText});
+    if (*o.title) items.push_back({o.title, uiThemed(IM_COL32(235, 238, 245, 255))});
+    if (*o.yUnit) items.push_back({std::string("[") + o.yUnit + "]", axisText()});
     for (const PlotSeries& ps : series) {
         if (!ps.label.empty()) items.push_back({ps.label, 0, &ps});
     }
@@ -140,28 +155,28 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
               ImVec2(outerMin.x + labelW + font * 0.6f, outerMin.y + header),
               ImVec2(outerMax.x - font * 0.5f, outerMax.y - font * 1.4f)};
     if (m.max.x - m.min.x < 10.0f || m.max.y - m.min.y < 10.0f) return;
-    dl->AddRectFilled(m.min, m.max, kFrameBg, 3.0f);
+    dl->AddRectFilled(m.min, m.max, frameBg(), 3.0f);
 
     // Grid and tick labels.
     for (std::size_t i = 0; i < yTicks.size(); ++i) {
         const float y = m.sy(yTicks[i]);
         dl->AddLine(ImVec2(m.min.x, y), ImVec2(m.max.x, y),
-                    yTicks[i] == 0.0 && !o.logY ? kZero : kGrid);
+                    yTicks[i] == 0.0 && !o.logY ? zeroColor() : gridColor());
         const ImVec2 ts = ImGui::CalcTextSize(yLabels[i].c_str());
-        dl->AddText(ImVec2(m.min.x - ts.x - font * 0.3f, y - ts.y * 0.5f), kAxisText,
+        dl->AddText(ImVec2(m.min.x - ts.x - font * 0.3f, y - ts.y * 0.5f), axisText(),
                     yLabels[i].c_str());
     }
     const int xMaxTicks = std::max(2, int((m.max.x - m.min.x) / (font * 4.5f)));
     const std::vector<double> xTicks = ticksFor(x0, x1, o.logX, xMaxTicks);
     for (std::size_t i = 0; i < xTicks.size(); ++i) {
         const float x = m.sx(xTicks[i]);
-        dl->AddLine(ImVec2(x, m.min.y), ImVec2(x, m.max.y), kGrid);
+        dl->AddLine(ImVec2(x, m.min.y), ImVec2(x, m.max.y), gridColor());
         std::string text = labelFor(xTicks[i], x0, x1, o.logX, xMaxTicks);
         if (i + 1 == xTicks.size() && *o.xUnit) text += std::string(" ") + o.xUnit;
         const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
         float tx = x - ts.x * 0.5f;
         tx = std::min(tx, outerMax.x - ts.x);
-        dl->AddText(ImVec2(tx, m.max.y + font * 0.15f), kAxisText, text.c_str());
+        dl->AddText(ImVec2(tx, m.max.y + font * 0.15f), axisText(), text.c_str());
     }
 
     dl->PushClipRect(m.min, m.max, true);
@@ -177,7 +192,7 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
         const float sx = std::floor(m.sx(x) / 3.0f) * 3.0f;
         if (sx == lastColumn) continue;
         lastColumn = sx;
-        dl->AddRectFilled(ImVec2(sx, m.min.y), ImVec2(sx + 1.0f, m.max.y), kMarker);
+        dl->AddRectFilled(ImVec2(sx, m.min.y), ImVec2(sx + 1.0f, m.max.y), markerColor());
         ++drawn;
     }
     // Series.
@@ -204,10 +219,12 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
             for (std::size_t k : columnExtremes(xs, ys, kColumnPx)) pts.push_back(mapped[k]);
         }
         if (pts.size() >= 2) {
-            dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), s.color, 0, thickness);
+            dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), uiThemed(s.color), 0,
+                            thickness);
         }
         if (s.points) {
-            for (const ImVec2& p : pts) dl->AddCircleFilled(p, thickness * 1.8f, s.color, 8);
+            for (const ImVec2& p : pts)
+                dl->AddCircleFilled(p, thickness * 1.8f, uiThemed(s.color), 8);
         }
     }
     // The timeline's "now": where the scrubbed time is in the recorded run.
@@ -215,8 +232,9 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
         const double x = axisValue(o.cursor, o.logX);
         if (x >= x0 && x <= x1) {
             const float sx = std::round(m.sx(x));
-            dl->AddRectFilled(ImVec2(sx - 1.0f, m.min.y), ImVec2(sx + 1.0f, m.max.y), kCursor);
-            dl->AddText(ImVec2(sx + font * 0.25f, m.max.y - font * 1.1f), kCursor, "now");
+            dl->AddRectFilled(ImVec2(sx - 1.0f, m.min.y), ImVec2(sx + 1.0f, m.max.y),
+                              cursorColor());
+            dl->AddText(ImVec2(sx + font * 0.25f, m.max.y - font * 1.1f), cursorColor(), "now");
         }
     }
     dl->PopClipRect();
@@ -225,9 +243,9 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
     for (const HeaderItem& it : items) {
         if (it.series) {
             const float cy = it.y + font * 0.5f;
-            dl->AddLine(ImVec2(it.x, cy), ImVec2(it.x + font * 0.9f, cy), it.series->color,
-                        thickness * 1.5f);
-            dl->AddText(ImVec2(it.x + font * 1.2f, it.y), IM_COL32(225, 230, 240, 255),
+            dl->AddLine(ImVec2(it.x, cy), ImVec2(it.x + font * 0.9f, cy),
+                        uiThemed(it.series->color), thickness * 1.5f);
+            dl->AddText(ImVec2(it.x + font * 1.2f, it.y), uiThemed(IM_COL32(225, 230, 240, 255)),
                         it.text.c_str());
         } else {
             dl->AddText(ImVec2(it.x, it.y), it.color, it.text.c_str());
@@ -239,7 +257,7 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
         const ImVec2 mouse = ImGui::GetIO().MousePos;
         if (mouse.x >= m.min.x && mouse.x <= m.max.x) {
             dl->AddLine(ImVec2(mouse.x, m.min.y), ImVec2(mouse.x, m.max.y),
-                        IM_COL32(255, 255, 255, 90));
+                        uiThemed(IM_COL32(255, 255, 255, 90)));
             const double x = x0 + (mouse.x - m.min.x) / (m.max.x - m.min.x) * (x1 - x0);
             ImGui::BeginTooltip();
             ImGui::Text("x = %.4g %s", o.logX ? std::pow(10.0, x) : x, o.xUnit);
@@ -255,8 +273,8 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
                     }
                 }
                 if (std::isfinite(value)) {
-                    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(s.color), "%s = %.4g %s",
-                                       s.label.c_str(), value, o.yUnit);
+                    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(uiThemed(s.color)),
+                                       "%s = %.4g %s", s.label.c_str(), value, o.yUnit);
                 }
             }
             ImGui::EndTooltip();

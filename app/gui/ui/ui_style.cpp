@@ -150,3 +150,23 @@ ImFont* uiLabelFont() {
 bool uiLightTheme() {
     return gLight;
 }
+
+ImVec4 uiThemed(const ImVec4& c) {
+    if (!gLight) return c;
+    float h = 0.0f, s = 0.0f, v = 0.0f;
+    ImGui::ColorConvertRGBtoHSV(c.x, c.y, c.z, h, s, v);
+    if (s < 0.25f) {
+        v = std::fmin(0.45f, std::fmax(0.08f, 1.05f - v)); // white near black, grey darker
+    } else {
+        s = std::fmax(s, 0.7f);
+        v = std::fmin(v, 0.6f);
+    }
+    ImVec4 out(0.0f, 0.0f, 0.0f, c.w);
+    ImGui::ColorConvertHSVtoRGB(h, s, v, out.x, out.y, out.z);
+    return out;
+}
+
+ImU32 uiThemed(ImU32 c) {
+    if (!gLight) return c;
+    return ImGui::ColorConvertFloat4ToU32(uiThemed(ImGui::ColorConvertU32ToFloat4(c)));
+}

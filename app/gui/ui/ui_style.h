@@ -17,3 +17,10 @@ float uiCurrentScale();
 struct ImFont;
 ImFont* uiLabelFont();
 bool uiLightTheme();
+// A colour chosen for the dark theme (text, lines and marks over a dark background), as the
+// current theme draws it: itself in the dark theme; in the light one a dark tone of the same hue
+// (bright colours deepened, greys and white turned dark), alpha kept, so it reads on light.
+using ImU32 = unsigned int;
+struct ImVec4;
+ImU32 uiThemed(ImU32 darkThemeColor);
+ImVec4 uiThemed(const ImVec4& darkThemeColor);
