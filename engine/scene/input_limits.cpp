@@ -45,6 +45,13 @@ std::string violation(const Range& range, double value) {
     return "must be " + describe(range) + ", not " + formatNumber(value);
 }
 
+std::string accelerationViolation(double force, double mass) {
+    const double a = force / mass;
+    if (a <= kGravity.max) return "";
+    return "force / mass must be at most " + formatNumber(kGravity.max) + " m/s^2, not " +
+           formatNumber(a) + " (" + formatNumber(force) + " N on " + formatNumber(mass) + " kg)";
+}
+
 std::string lengthViolation(double length, double magnitude, const Range& range) {
     if (std::string problem = violation(range, length); !problem.empty()) return problem;
     const double least = kResolution * magnitude;

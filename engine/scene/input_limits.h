@@ -60,6 +60,11 @@ std::string violation(const Range& range, double value);
 // why not.
 std::string lengthViolation(double length, double magnitude, const Range& range = kSize);
 
+// "" when a force of magnitude `force` (N) on `mass` (kg) accelerates it at most as much as
+// gravity may (kGravity: 1e9 m/s^2); otherwise why not. The scene loader and the app's force and
+// mass fields use it, so what the app saves loads back.
+std::string accelerationViolation(double force, double mass);
+
 // The shortest text that reads back to the same double, exponents without padding ("1e-6").
 std::string formatNumber(double value);
 

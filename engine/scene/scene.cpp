@@ -378,8 +378,9 @@ BlockDef parseBlock(const json& value, const std::string& path) {
         if (b.kind != BodyKind::Dynamic && b.force != Vec2{})
             throw ValueError{forcePath, "only a dynamic block (one with a mass) feels a force"};
         // Its acceleration, like gravity, at most 1e9 m/s^2 (F/m of a light block can be huge).
-        if (length(b.force) / b.mass > limits::kGravity.max)
-            throw ValueError{forcePath, "force / mass must be at most 1e9 m/s^2"};
+        if (std::string problem = limits::accelerationViolation(length(b.force), b.mass);
+            !problem.empty())
+            throw ValueError{forcePath, problem};
     }
     if (value.contains("color")) {
         b.color = string(value["color"], keyPath(path, "color"));

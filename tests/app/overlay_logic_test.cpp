@@ -327,6 +327,36 @@ TEST(PointOfImpact, TimeOfImpactIsAOverB) {
     EXPECT_NEAR(p.crooked.y, 8.0, 1e-12); // moving back along x only keeps the whole y motion
 }
 
+// The point of impact uses the velocity the engine moves the block with: gravity, the block's own
+// force and drag (v + a·dt), so a thruster's hit is where the engine puts it.
+TEST(PointOfImpact, AForcedBlockMovesWithItsFrameVelocity) {
+    std::vector<Block> blocks(1);
+    blocks[0].position = Vec2{9.2, 5.0};
+    blocks[0].size = Vec2{1.0, 1.0};
+    blocks[0].mass = 2.0;
+    blocks[0].velocity = Vec2{4.0, 0.0};
+    blocks[0].force = Vec2{20.0, 0.0}; // a = 10 m/s^2
+    WorldSettings s;
+    s.gravity = Vec2{0.0, 0.0};
+    s.dt = 0.1;
+    const Bounds bounds{{0.0, 0.0}, {10.0, 10.0}};
+    const PoiView p = computePoi(blocks, bounds, s, 0.0, 0);
+    ASSERT_TRUE(p.valid);
+    EXPECT_EQ(p.other, kWallRight);
+    EXPECT_NEAR(p.velocity.x, 5.0, 1e-12);      // 4 + 10 * 0.1
+    EXPECT_NEAR(p.t, 0.3 / (5.0 * 0.1), 1e-12); // a = 0.3 m to the wall, b = 0.5 m: t = 0.6
+    EXPECT_NEAR(p.ghost.x, 9.5, 1e-12);
+    // The engine agrees (perfect method, C = 1): at the wall after 0.06 s, then back at 5 m/s for
+    // the frame's other 0.04 s, to 9.3. Without the force the POI would have said t = 0.75.
+    World world;
+    world.bounds = bounds;
+    world.settings = s;
+    world.blocks = blocks;
+    world.step();
+    EXPECT_NEAR(world.blocks[0].position.x, 9.3, 1e-12);
+    EXPECT_NEAR(world.blocks[0].velocity.x, -5.0, 1e-12);
+}
+
 TEST(PointOfImpact, LectureExampleRecordsThePoiOfTheCollision) {
     App app = lectureExample();
     for (int i = 0; i < 45; ++i) stepSimulation(app);

@@ -1,5 +1,6 @@
 // Scene files, format v1: every shipped scene loads and round-trips; every kind of bad file is
 // rejected with an error naming its place.
+#include "input_limits.h"
 #include "scene.h"
 
 #include <gtest/gtest.h>
@@ -339,6 +340,19 @@ TEST(SceneBadFile, NumbersOutOfRange) {
     expectError(sceneText(R"("bounds": [0, 0, 0, 10])", ""), "t.json: world.bounds");
     expectError(sceneText(R"("bounds": [10, 0, 0, 10])", ""), "t.json: world.bounds");
     expectError(sceneText(R"("bounds": [0, 0, 10])", ""), "t.json: world.bounds");
+}
+
+// A force is refused when F/m exceeds what gravity may be (1e9 m/s^2): the app's force and mass
+// fields check the same rule (limits::accelerationViolation), so what it saves loads back.
+TEST(SceneBadFile, ForceOverMassBeyondTheLimit) {
+    expectError(blocksText(R"({"position": [1, 1], "size": 1, "mass": 1e-12, "force": [1000, 0]})"),
+                "t.json: blocks[0].force");
+    const SceneResult ok = parseScene(
+        blocksText(R"({"position": [1, 1], "size": 1, "mass": 1e-6, "force": [1000, 0]})"),
+        "t.json");
+    EXPECT_TRUE(ok.scene) << ok.error.text(); // exactly 1e9 m/s^2
+    EXPECT_EQ(limits::accelerationViolation(1000.0, 1e-6), "");
+    EXPECT_NE(limits::accelerationViolation(1000.0, 1e-12).find("force / mass"), std::string::npos);
 }
 
 // "duration" (s): optional, positive, finite; it round-trips through the writer.

@@ -6,8 +6,10 @@
 
 namespace {
 
+// The velocity a block moves with over the frame (semi-implicit Euler, lecture "Integration"):
+// v + a·dt, with a everything the engine adds (gravity, the block's force, drag: accelerationOf).
 Vec2 frameVelocity(const Block& b, const WorldSettings& s) {
-    if (b.isDynamic()) return b.velocity + s.gravity * s.dt;
+    if (b.isDynamic()) return b.velocity + accelerationOf(s, b, s.dt) * s.dt;
     if (b.kind == BodyKind::Kinematic) return b.velocity;
     return {};
 }
@@ -55,11 +57,7 @@ PoiView computePoi(const std::vector<Block>& before, const Bounds& bounds,
     p.newPosition = me.position + v * dt;
     p.t = best / dt;
     p.ghost = me.position + v * best;
-    p.crooked = p.newPosition;
-    if (p.axis == 0)
-        p.crooked.x = p.ghost.x;
-    else
-        p.crooked.y = p.ghost.y;
+    p.crooked = movedBackAlongAxis(p.newPosition, p.ghost, p.axis);
     const double speed = std::abs(p.axis == 0 ? v.x : v.y);
     p.a = speed * best;
     p.b = speed * dt;

@@ -67,6 +67,15 @@ bool acceptTyped2(App& app, const char* field, const float typed[2], Vec2 curren
     return app.ui.typedWarning.note(field, check);
 }
 
+// A block's force and mass together: F/m within what a scene file may hold (else the saved file
+// would not load back); false and a warning under `field` when not.
+bool acceptAcceleration(App& app, const char* field, Vec2 force, double mass) {
+    const std::string problem = limits::accelerationViolation(length(force), mass);
+    if (problem.empty()) return true;
+    return app.ui.typedWarning.note(field,
+                                    TypedValue{false, 0.0, std::string(field) + ": " + problem});
+}
+
 // The warning about `field`'s last typed value, under the field, in the warning colour.
 void typedWarning(const App& app, const char* field) {
     const TypedWarning& w = app.ui.typedWarning;
@@ -302,8 +311,12 @@ void physicsSection(App& app) {
 // The selected block's own constant force [fx, fy] (N): a thruster that is always on.
 void blockForceField(App& app, Block& b) {
     float f[2] = {static_cast<float>(b.force.x), static_cast<float>(b.force.y)};
-    if (ImGui::DragFloat2("force", f, 0.05f, -1000.0f, 1000.0f, "%.2f N")) {
-        if (acceptTyped2(app, "force", f, b.force, limits::kForce, b.force)) noteEdit(app, true);
+    Vec2 force = b.force;
+    if (ImGui::DragFloat2("force", f, 0.05f, -1000.0f, 1000.0f, "%.2f N") &&
+        acceptTyped2(app, "force", f, b.force, limits::kForce, force) &&
+        acceptAcceleration(app, "force", force, b.mass)) {
+        b.force = force;
+        noteEdit(app, true);
     }
     tooltip("A constant force on the block (N), a = F/m (Ctrl+click to type); its arrow is drawn "
             "with the arrows overlay");
@@ -334,9 +347,12 @@ void selectedSection(App& app) {
     if (changed) setBlockKind(app, i, static_cast<BodyKind>(kind));
     if (b.isDynamic()) {
         float mass = static_cast<float>(b.mass);
+        double newMass = b.mass;
         if (ImGui::SliderFloat("mass", &mass, 0.01f, 1000.0f, "%.3g kg",
                                ImGuiSliderFlags_Logarithmic) &&
-            acceptTyped(app, "mass", mass, b.mass, limits::kMass, b.mass)) {
+            acceptTyped(app, "mass", mass, b.mass, limits::kMass, newMass) &&
+            acceptAcceleration(app, "mass", b.force, newMass)) {
+            b.mass = newMass;
             noteEdit(app, true);
         }
         typedWarning(app, "mass");
