@@ -43,24 +43,68 @@ void addSeries(std::vector<PlotSeries>& out, const char* label, ImU32 color, con
     out.push_back(series("", faded, ts, channel, window, now, INFINITY));
 }
 
+// The three plots, in one table: what each draws and what its CSV button writes.
+struct PlotChannel {
+    const char* label; // in the legend
+    ImU32 color;
+    const char* column; // its CSV column, with the unit
+};
+struct PlotRow {
+    const char* name;  // the plot's ImGui id, its CSV button and its file's name
+    const char* title; // over the plot ("v of m1" for the watched block's)
+    const char* unit;
+    TimeSeries Telemetry::*series;
+    std::deque<double> Telemetry::*markers;
+    std::vector<PlotChannel> channels;
+    bool ofWatchedBlock; // the title and CSV columns name the watched block
+};
+
+const std::vector<PlotRow>& plotRows() {
+    using namespace overlay_colors;
+    static const std::vector<PlotRow> rows{
+        {"velocity",
+         "v of",
+         "m/s",
+         &Telemetry::velocity,
+         &Telemetry::watchedCollisionTimes,
+         {{"vx", kX, "vx (m/s)"}, {"vy", kY, "vy (m/s)"}},
+         true},
+        {"momentum",
+         "total momentum",
+         "kg·m/s",
+         &Telemetry::momentum,
+         &Telemetry::collisionTimes,
+         {{"px", kX, "px (kg*m/s)"}, {"py", kY, "py (kg*m/s)"}},
+         false},
+        {"energy",
+         "energy",
+         "J",
+         &Telemetry::energy,
+         &Telemetry::collisionTimes,
+         {{"kinetic", kKinetic, "kinetic (J)"},
+          {"potential", kPotential, "potential (J)"},
+          {"total", kTotal, "total (J)"}},
+         false},
+    };
+    return rows;
+}
+
+std::string watchedName(const App& app) {
+    const int watched = app.telemetry.watched;
+    return watched >= 0 ? blockDisplayName(app, watched) : std::string("(no block)");
+}
+
 // One button per plot: its whole recorded series (the last 60 s) as CSV (csv_export.h).
 void exportButtons(App& app) {
-    const Telemetry& tm = app.telemetry;
     ImGui::TextDisabled("CSV:");
-    ImGui::SameLine();
-    if (ImGui::SmallButton("velocity")) {
-        const std::string name =
-            tm.watched >= 0 ? blockDisplayName(app, tm.watched) + " " : std::string();
-        exportCsv(app, "velocity",
-                  timeSeriesTable(tm.velocity, {name + "vx (m/s)", name + "vy (m/s)"}));
-    }
-    ImGui::SameLine();
-    if (ImGui::SmallButton("momentum"))
-        exportCsv(app, "momentum", timeSeriesTable(tm.momentum, {"px (kg*m/s)", "py (kg*m/s)"}));
-    ImGui::SameLine();
-    if (ImGui::SmallButton("energy")) {
-        exportCsv(app, "energy",
-                  timeSeriesTable(tm.energy, {"kinetic (J)", "potential (J)", "total (J)"}));
+    for (const PlotRow& row : plotRows()) {
+        ImGui::SameLine();
+        if (!ImGui::SmallButton(row.name)) continue;
+        const std::string prefix =
+            row.ofWatchedBlock && app.telemetry.watched >= 0 ? watchedName(app) + " " : "";
+        std::vector<std::string> columns;
+        for (const PlotChannel& c : row.channels) columns.push_back(prefix + c.column);
+        exportCsv(app, row.name, timeSeriesTable(app.telemetry.*row.series, columns));
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Each writes its plot's series as a CSV file");
 }
@@ -84,35 +128,26 @@ void drawPlotsOverlay(App& app) {
     // Until the window fills, the axis grows with the run (at least 2 s), then it scrolls.
     const double span = std::clamp(newest * 1.05, 2.0, static_cast<double>(app.ui.plotSpanSeconds));
     const PlotRange window = timelineWindow(now, replaying ? newest : now, span);
+    const std::vector<PlotRow>& rows = plotRows();
     const float spacing = ImGui::GetStyle().ItemSpacing.y;
-    const float h = (ImGui::GetContentRegionAvail().y - 2.0f * spacing) / 3.0f;
-    using namespace overlay_colors;
-
-    PlotOptions o;
-    o.x = window;
-    o.xUnit = "s";
-    o.height = h;
-    o.includeZero = true;
-    if (replaying) o.cursor = now;
-    std::string title =
-        "v of " + (tm.watched >= 0 ? blockDisplayName(app, tm.watched) : std::string("(no block)"));
-    o.title = title.c_str();
-    o.yUnit = "m/s";
-    std::vector<PlotSeries> s;
-    addSeries(s, "vx", kX, tm.velocity, 0, window, now, replaying);
-    addSeries(s, "vy", kY, tm.velocity, 1, window, now, replaying);
-    drawPlot("##velocity", o, s, markersIn(tm.watchedCollisionTimes));
-    o.title = "total momentum";
-    o.yUnit = "kg·m/s";
-    s.clear();
-    addSeries(s, "px", kX, tm.momentum, 0, window, now, replaying);
-    addSeries(s, "py", kY, tm.momentum, 1, window, now, replaying);
-    drawPlot("##momentum", o, s, markersIn(tm.collisionTimes));
-    o.title = "energy";
-    o.yUnit = "J";
-    s.clear();
-    addSeries(s, "kinetic", kKinetic, tm.energy, 0, window, now, replaying);
-    addSeries(s, "potential", kPotential, tm.energy, 1, window, now, replaying);
-    addSeries(s, "total", kTotal, tm.energy, 2, window, now, replaying);
-    drawPlot("##energy", o, s, markersIn(tm.collisionTimes));
+    const float h = (ImGui::GetContentRegionAvail().y - (rows.size() - 1) * spacing) /
+                    static_cast<float>(rows.size());
+    for (const PlotRow& row : rows) {
+        PlotOptions o;
+        o.x = window;
+        o.xUnit = "s";
+        o.height = h;
+        o.includeZero = true;
+        if (replaying) o.cursor = now;
+        const std::string title =
+            row.ofWatchedBlock ? std::string(row.title) + " " + watchedName(app) : row.title;
+        o.title = title.c_str();
+        o.yUnit = row.unit;
+        std::vector<PlotSeries> series;
+        for (std::size_t c = 0; c < row.channels.size(); ++c)
+            addSeries(series, row.channels[c].label, row.channels[c].color, tm.*row.series,
+                      static_cast<int>(c), window, now, replaying);
+        const std::string id = std::string("##") + row.name;
+        drawPlot(id.c_str(), o, series, markersIn(tm.*row.markers));
+    }
 }

@@ -75,6 +75,9 @@ struct UiState {
     std::string inspectorLoggedTitle; // --verbose prints the formula once per collision shown
     int panelFollowedSelection = -2;  // the selection the "Selected block" header last followed
     TypedWarning typedWarning;        // a refused typed value, shown under its field
+    // The docked window whose title bar the left button went down on (one at a time): dragging
+    // on from there pulls it out of the layout.
+    std::string titlePressed;
     std::string physicsFollowedScene; // the scene the "Physics" header last opened or closed for
 };
 

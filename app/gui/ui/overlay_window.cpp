@@ -3,13 +3,9 @@
 #include "ui_style.h"
 
 #include <algorithm>
-#include <unordered_map>
+#include <string>
 
 namespace {
-
-// Overlay windows whose title bar the left button went down on while docked: dragging on from
-// there pulls the window out of the layout.
-std::unordered_map<ImGuiID, bool> gTitlePressed;
 
 // Background alpha: opaque enough that nothing of the scene shows through the text.
 constexpr float kWindowAlpha = 0.97f;
@@ -39,7 +35,6 @@ bool beginOverlayWindow(App& app, OverlayId id) {
     ImGui::SetNextWindowBgAlpha(kWindowAlpha);
     const bool visible = ImGui::Begin(title, open, flags);
     recordShownWindow(app, title);
-    const ImGuiID imguiId = ImGui::GetID(title);
     const ImGuiIO& io = ImGui::GetIO();
     const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
     if (docked) {
@@ -47,15 +42,14 @@ bool beginOverlayWindow(App& app, OverlayId id) {
         // with the mouse from the next frame, when the layout no longer places it).
         const bool onTitle =
             io.MousePos.y >= pos.y && io.MousePos.y < pos.y + ImGui::GetFrameHeight();
-        if (ImGui::IsWindowHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && onTitle) {
-            gTitlePressed[imguiId] = true;
-        }
-        if (gTitlePressed[imguiId] &&
-            ImGui::IsMouseDragging(ImGuiMouseButton_Left, 8.0f * app.uiScale)) {
+        std::string& pressed = app.ui.titlePressed;
+        if (ImGui::IsWindowHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && onTitle)
+            pressed = title;
+        if (pressed == title && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 8.0f * app.uiScale)) {
             setFloating(app, title, true);
-            gTitlePressed[imguiId] = false;
+            pressed.clear();
         }
-        if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) gTitlePressed[imguiId] = false;
+        if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) pressed.clear();
     } else {
         // Floating: kept on screen, and a button to put it back.
         const ImVec2 display = io.DisplaySize;
