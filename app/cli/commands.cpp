@@ -40,12 +40,8 @@ bool refuse(std::ostream& err, const char* option, const std::string& value,
 // Parses `text` as a number within `range`; false with a message naming the flag and the limit.
 bool numberOption(const char* option, const std::string& text, const limits::Range& range,
                   double& value, std::ostream& err) {
-    double x = 0.0;
-    if (!limits::parseNumber(text, x))
-        return refuse(err, option, text, "must be a decimal number " + limits::describe(range));
-    if (std::string problem = limits::violation(range, x); !problem.empty())
+    if (std::string problem = limits::textViolation(text, range, value); !problem.empty())
         return refuse(err, option, text, problem);
-    value = x;
     return true;
 }
 

@@ -52,6 +52,15 @@ std::string accelerationViolation(double force, double mass) {
            formatNumber(a) + " (" + formatNumber(force) + " N on " + formatNumber(mass) + " kg)";
 }
 
+std::string textViolation(std::string_view text, const Range& range, double& value) {
+    double x = 0.0;
+    if (!parseNumber(text, x))
+        return "must be " + std::string(range.whole ? "" : "a decimal number ") + describe(range);
+    if (std::string problem = violation(range, x); !problem.empty()) return problem;
+    value = x;
+    return "";
+}
+
 std::string lengthViolation(double length, double magnitude, const Range& range) {
     if (std::string problem = violation(range, length); !problem.empty()) return problem;
     const double least = kResolution * magnitude;

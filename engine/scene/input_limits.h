@@ -46,8 +46,9 @@ inline constexpr Range kThrust{0.01, 1e4, "N"};          // the keyboard thrust 
 inline constexpr Range kFrameRate{1.0 / kDt.max, 1.0 / kDt.min, "Hz"}; // 1/dt (the app's field)
 inline constexpr Range kTimeScale{0.01, 100.0, ""}; // simulated s per real s (app, lessons)
 inline constexpr Range kFrames{0.0, 1e7, "", true}; // frames of one run (the frame budget)
-inline constexpr Range kTime{0.0, kFrames.max* kDt.max, "s"}; // simulated time of one run
-inline constexpr Range kDuration{1e-6, kTime.max, "s"};       // a scene's "duration"
+inline constexpr Range kBenchmarkFrames{1.0, kFrames.max, "", true}; // frames a benchmark renders
+inline constexpr Range kTime{0.0, kFrames.max* kDt.max, "s"};        // simulated time of one run
+inline constexpr Range kDuration{1e-6, kTime.max, "s"};              // a scene's "duration"
 // A length must be at least this fraction of the magnitude of the coordinates it sits at.
 inline constexpr double kResolution = 1e-9;
 
@@ -55,6 +56,10 @@ inline constexpr double kResolution = 1e-9;
 std::string describe(const Range& range);
 // "" when `value` is in `range`; otherwise "must be <describe(range)>, not <value>".
 std::string violation(const Range& range, double value);
+// A flag's text: "" when it is a decimal number (parseNumber()) in `range`, stored in `value`;
+// otherwise why not ("must be a decimal number from 1e-6 to 1 s", or violation()'s message).
+// sandbox-cli and the app's options both check their numbers with it: the same messages.
+std::string textViolation(std::string_view text, const Range& range, double& value);
 // "" when a length (a block's size, or with kExtent the bounds' extent) at coordinates of
 // magnitude up to `magnitude` is within `range` and at least kResolution·magnitude; otherwise
 // why not.

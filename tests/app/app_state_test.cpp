@@ -580,7 +580,11 @@ TEST(Options, ErrorsExitTwo) {
         {"sandbox", "--ui-scale", "5"},
         {"sandbox", "--ui-scale", "0x1"},
         {"sandbox", "--frames", "-1"},
+        {"sandbox", "--frames", "1e8"},
+        {"sandbox", "--frames", "2.5"},
+        {"sandbox", "--frames", "0x10"},
         {"sandbox", "--benchmark-frames", "0"},
+        {"sandbox", "--benchmark-frames", "1e8"},
         {"sandbox", "--record", "d", "--frames", "3", "--benchmark-frames", "3"}};
     for (const auto& argv : cases) {
         const ParsedOptions p = parseOptions(static_cast<int>(argv.size()), argv.data());
@@ -591,6 +595,12 @@ TEST(Options, ErrorsExitTwo) {
     const ParsedOptions ok = parseOptions(3, scale);
     ASSERT_FALSE(ok.exit);
     EXPECT_EQ(ok.options.uiScale, 1.5f);
+    // Counts of frames as sandbox-cli reads them: an exponent is a number (the limits table).
+    const char* frames[] = {"sandbox", "--frames", "1e3", "--benchmark-frames", "2E1"};
+    const ParsedOptions counted = parseOptions(5, frames);
+    ASSERT_FALSE(counted.exit);
+    EXPECT_EQ(counted.options.frames, 1000);
+    EXPECT_EQ(counted.options.benchmarkFrames, 20);
     const char* help[] = {"sandbox", "--help"};
     EXPECT_EQ(parseOptions(2, help).exitCode, 0);
 }
@@ -637,8 +647,8 @@ TEST(AppState, HighMassRatioStopsAtItsDurationWith3141) {
 // --theme starts with the light theme (issue 15: bright rooms); --timeline-frame shows the replay
 // offscreen and cannot go past the frames simulated.
 TEST(Options, ThemeAndTimelineFrame) {
-    const char* light[] = {"sandbox", "--theme", "light", "--frames", "90", "--timeline-frame",
-                           "30"};
+    const char* light[] = {"sandbox", "--theme",          "light", "--frames",
+                           "90",      "--timeline-frame", "30"};
     const ParsedOptions p = parseOptions(7, light);
     ASSERT_FALSE(p.exit);
     EXPECT_EQ(p.options.theme, "light");

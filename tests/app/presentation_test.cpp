@@ -580,3 +580,14 @@ TEST(HistoryForTheTimeline, AnEditDuringReplayStartsANewFuture) {
 }
 
 } // namespace
+
+// Every overlay on at 1280x720 makes small windows: they switch to the compact font; at
+// 1920x1080 (UI scale 1.5) and with few windows they keep the UI font.
+TEST(CompactWindows, SmallDockedWindowsUseTheCompactFont) {
+    EXPECT_TRUE(compactWindow(387, 198, 16));   // the plots, all overlays on at 1280x720
+    EXPECT_TRUE(compactWindow(135, 181, 16));   // the momenta
+    EXPECT_FALSE(compactWindow(387, 720, 16));  // the inspector alone
+    EXPECT_FALSE(compactWindow(560, 470, 24));  // 1920x1080 at UI scale 1.5
+    EXPECT_TRUE(compactWindow(560, 300, 24));
+    EXPECT_LT(kCompactFontScale, 1.0);
+}

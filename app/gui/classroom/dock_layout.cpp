@@ -96,6 +96,10 @@ Layout computeLayout(const LayoutInput& in) {
     return out;
 }
 
+bool compactWindow(double width, double height, double fontPx) {
+    return height < 14.0 * fontPx || width < 18.0 * fontPx;
+}
+
 bool rectsOverlap(const ScreenRect& a, const ScreenRect& b) {
     return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height &&
            b.y < a.y + a.height;

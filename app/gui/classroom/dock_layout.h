@@ -68,6 +68,12 @@ constexpr double kDockGap = 4.0;
 
 Layout computeLayout(const LayoutInput& input);
 
+// A docked window this small for its font (under 14 lines high or 18 ems wide: every overlay on
+// at 1280x720) draws its contents in a font kCompactFontScale of the UI font's size, so that more
+// of them fit before text wraps or a table scrolls.
+constexpr double kCompactFontScale = 0.85;
+bool compactWindow(double width, double height, double fontPx);
+
 // True when the two rectangles share positive area (touching edges do not count).
 bool rectsOverlap(const ScreenRect& a, const ScreenRect& b);
 // True when `inner` lies inside `outer` (edges may coincide).

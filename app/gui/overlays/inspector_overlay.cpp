@@ -28,11 +28,14 @@ void formulaLine(const std::string& text, bool strong) {
 void drawInspectorOverlay(App& app) {
     OverlayWindow overlay(app, OverlayId::inspector);
     if (!overlay) return;
-    ImGui::Checkbox("pause on each collision", &app.pauseOnCollision);
+    // A small window shows the formula first, the switch under it.
+    auto pauseSwitch = [&] { ImGui::Checkbox("pause on each collision", &app.pauseOnCollision); };
+    if (!overlay.compact()) pauseSwitch();
     const auto& recent = app.telemetry.recent; // up to the scrubbed time while replaying
     if (recent.empty()) {
         dimText(isReplaying(app) ? "No collision up to this point of the replay."
                                  : "No collision yet. Run the scene, or step with N.");
+        if (overlay.compact()) pauseSwitch();
         return;
     }
     const int count = static_cast<int>(recent.size());
@@ -66,8 +69,11 @@ void drawInspectorOverlay(App& app) {
     char toi[96];
     std::snprintf(toi, sizeof toi, "time of impact: t = %s of the frame (t = a/b)",
                   formatNumber(r.toi).c_str());
-    dimText(toi);
-    dimText(f.given.c_str());
+    // A small window: the test and the formula first, the time of impact and the givens after.
+    if (!overlay.compact()) {
+        dimText(toi);
+        dimText(f.given.c_str());
+    }
     // The relative-velocity test decides whether this is a collision at all.
     if (f.separating) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiThemed(ImVec4(1.0f, 0.55f, 0.35f, 1.0f)));
@@ -80,6 +86,10 @@ void drawInspectorOverlay(App& app) {
     formulaLine(f.u, true);
     formulaLine(f.v1After, true);
     formulaLine(f.v2After, true);
+    if (overlay.compact()) {
+        dimText(toi);
+        dimText(f.given.c_str());
+    }
     ImGui::Spacing();
     formulaLine(f.momentumBefore, false);
     formulaLine(f.momentumAfter, false);
@@ -88,6 +98,7 @@ void drawInspectorOverlay(App& app) {
         ImGui::TextWrapped("%s", f.note.c_str());
         ImGui::PopStyleColor();
     }
+    if (overlay.compact()) pauseSwitch();
     if (app.verbose && f.title != app.ui.inspectorLoggedTitle) {
         app.ui.inspectorLoggedTitle = f.title;
         std::printf("inspector %s\ninspector %s\ninspector %s\ninspector %s\n",

@@ -71,8 +71,24 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     std::string size, show;
     app.add_option("scene", o.scene, "Scene file, or the name of a shipped scene");
     app.add_option("--screenshot", o.screenshot, "Render offscreen and write this PNG");
-    app.add_option("--frames", o.frames, "Simulate N frames first (with --record: record N)")
-        ->check(CLI::Range(0, 1000000));
+    // Counts of frames: rows of the limits table (input_limits.h), checked as sandbox-cli checks
+    // its numbers (the same messages; "1e3" is 1000), then handed to CLI11 as a plain integer (a
+    // transform).
+    auto frameCount = [](const limits::Range& range) {
+        return CLI::Validator(
+            [range](std::string& text) -> std::string {
+                double n = 0.0;
+                if (std::string problem = limits::textViolation(text, range, n); !problem.empty())
+                    return problem;
+                text = std::to_string(static_cast<long long>(n));
+                return "";
+            },
+            "N");
+    };
+    app.add_option("--frames", o.frames,
+                   "Simulate N frames first (with --record: record N), " +
+                       limits::describe(limits::kFrames))
+        ->transform(frameCount(limits::kFrames));
     app.add_option("--size", size, "Window or image size, WxH (default 1280x720)");
     const std::string showHelp = "Comma-separated: " + showNames();
     app.add_option("--show", show, showHelp);
@@ -80,8 +96,9 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         app.add_option("--record", o.record, "Write N numbered PNGs (and an MP4 with ffmpeg) here");
     app.add_option("--benchmark-frames", o.benchmarkFrames,
                    "Offscreen: step and render N frames, print ms per frame (with --screenshot: "
-                   "and write the last one)")
-        ->check(CLI::Range(1, 1000000))
+                   "and write the last one), " +
+                       limits::describe(limits::kBenchmarkFrames))
+        ->transform(frameCount(limits::kBenchmarkFrames))
         ->excludes(record);
     // A decimal number within the app's range (CLI::Range lets NaN through).
     const limits::Range uiScale{kMinUiScale, kMaxUiScale, ""};
@@ -89,9 +106,7 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         ->check(CLI::Validator(
             [uiScale](std::string& text) -> std::string {
                 double x = 0.0;
-                if (!limits::parseNumber(text, x) || !limits::violation(uiScale, x).empty())
-                    return "must be a decimal number " + limits::describe(uiScale);
-                return "";
+                return limits::textViolation(text, uiScale, x);
             },
             "S"));
     app.add_flag("--verbose", o.verbose, "Print state changes (pause, method, sliders) to stdout");

@@ -70,9 +70,17 @@ OverlayWindow::OverlayWindow(App& app, OverlayId id) {
     if (app.presentMode) return; // present mode: the scene only
     begun_ = true;
     open_ = beginOverlayWindow(app, id);
+    // A small docked window (every overlay on at 1280x720) draws its contents in the compact
+    // font, baked at its own size (a scaled font would be blurred).
+    const ScreenRect* docked = app.layout.find(overlayInfo(id).title);
+    if (open_ && docked && compactWindow(docked->width, docked->height, ImGui::GetFontSize())) {
+        ImGui::PushFont(uiCompactFont());
+        font_ = true;
+    }
 }
 
 OverlayWindow::~OverlayWindow() {
+    if (font_) ImGui::PopFont();
     if (begun_) ImGui::End();
 }
 

@@ -39,10 +39,13 @@ class OverlayWindow {
     OverlayWindow(const OverlayWindow&) = delete;
     OverlayWindow& operator=(const OverlayWindow&) = delete;
     explicit operator bool() const { return open_; }
+    // Docked and small (compactWindow): drawn in the compact font; show what matters first.
+    bool compact() const { return font_; }
 
   private:
     bool begun_ = false;
     bool open_ = false;
+    bool font_ = false; // the compact font pushed
 };
 
 // The draw functions the table names (one file each in overlays/).

@@ -1,5 +1,7 @@
 #include "ui_style.h"
 
+#include "dock_layout.h"
+
 #include <imgui.h>
 
 #include <cmath>
@@ -14,6 +16,7 @@ float gScale = 0.0f;
 float gLabelScale = 1.0f;
 bool gLight = false;
 ImFont* gLabelFont = nullptr;
+ImFont* gCompactFont = nullptr;
 
 bool fileExists(const char* path) {
     if (std::FILE* f = std::fopen(path, "rb")) {
@@ -92,6 +95,7 @@ void uiCreateContext(const char* iniPath) {
     setTheme(ImGui::GetStyle());
     gScale = 0.0f;
     gLabelFont = nullptr;
+    gCompactFont = nullptr;
 }
 
 void uiDestroyContext() {
@@ -130,6 +134,8 @@ bool uiApplyLook(float scale, float labelScale, bool light) {
         // The scene's labels: a font of their own size (a scaled UI font would be blurred).
         gLabelFont = labelScale == 1.0f ? io.Fonts->Fonts[0]
                                         : addFont(io, std::round(kBaseFontPx * scale * labelScale));
+        gCompactFont =
+            addFont(io, std::round(kBaseFontPx * scale * static_cast<float>(kCompactFontScale)));
         io.Fonts->Build();
     }
     ImGuiStyle style;
@@ -141,6 +147,10 @@ bool uiApplyLook(float scale, float labelScale, bool light) {
 
 bool uiApplyScale(float scale) {
     return uiApplyLook(scale, gLabelScale, gLight);
+}
+
+ImFont* uiCompactFont() {
+    return gCompactFont ? gCompactFont : ImGui::GetFont();
 }
 
 ImFont* uiLabelFont() {

@@ -16,6 +16,9 @@ float uiCurrentScale();
 // The font of the scene's labels (block names, axis numbers, the caption): its own size.
 struct ImFont;
 ImFont* uiLabelFont();
+// The font of small docked windows (compactWindow in dock_layout.h): kCompactFontScale of the UI
+// font's size.
+ImFont* uiCompactFont();
 bool uiLightTheme();
 // A colour chosen for the dark theme (text, lines and marks over a dark background), as the
 // current theme draws it: itself in the dark theme; in the light one a dark tone of the same hue
