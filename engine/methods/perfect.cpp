@@ -65,7 +65,7 @@ namespace {
 
 constexpr int kWallEvent = CrushRule::kWall; // Event::b for an impact with the bounds
 constexpr int kRepeatsAtInstant = 8;         // meetings of one pair at one instant (collapse, trap)
-constexpr double kWindowsAbove = 16.0; // windows when the mean travel exceeds this many windows
+constexpr double kWindowsAbove = 2.0; // windows when the mean travel exceeds this many windows
 constexpr int kWindowsPerDoubling = 4; // a block's windows grow twice as long every this many
 constexpr size_t kWindowSample = 64;   // blocks whose travel decides on windows
 
