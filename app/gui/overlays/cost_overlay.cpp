@@ -4,6 +4,7 @@
 #include "app_frame.h"
 #include "overlay_window.h"
 #include "plot_widget.h"
+#include "ui_style.h"
 
 #include <algorithm>
 #include <map>
@@ -71,7 +72,7 @@ void drawCostOverlay(App& app) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             const Color c = methodGhostColor(method);
-            ImGui::TextColored(ImVec4(c.r, c.g, c.b, 1.0f), "%s", methodName(method));
+            ImGui::TextColored(uiThemed(ImVec4(c.r, c.g, c.b, 1.0f)), "%s", methodName(method));
             ImGui::TableNextColumn();
             ImGui::Text("%.3f ms/step", cost.msPerStep(method));
         }
@@ -82,7 +83,8 @@ void drawCostOverlay(App& app) {
     dimText("(a copy, 30 frames per method)");
     ImGui::Separator();
     if (cost.sweepRunning()) {
-        ImGui::TextColored(ImVec4(0.55f, 0.85f, 0.6f, 1.0f), "Sweep running in the background...");
+        ImGui::TextColored(uiThemed(ImVec4(0.55f, 0.85f, 0.6f, 1.0f)),
+                           "Sweep running in the background...");
     } else if (ImGui::Button("Run the tradeoff sweep (quick)")) {
         cost.startSweep(quickTradeoffSweep(app.scenesDir));
     }

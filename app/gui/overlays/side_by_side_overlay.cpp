@@ -3,6 +3,7 @@
 // collisions, largest overlap, energy, momentum, and how far it has drifted from perfect.
 #include "app_frame.h"
 #include "overlay_window.h"
+#include "ui_style.h"
 
 #include <cstdio>
 
@@ -49,7 +50,7 @@ void drawSideBySideOverlay(App& app) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             const Color c = methodGhostColor(method);
-            ImGui::TextColored(ImVec4(c.r, c.g, c.b, 1.0f), "%s%s", methodName(method),
+            ImGui::TextColored(uiThemed(ImVec4(c.r, c.g, c.b, 1.0f)), "%s%s", methodName(method),
                                live ? " (live)" : "");
             ImGui::TableNextColumn();
             ImGui::Text("%lld", static_cast<long long>(r.totals.collisions));

@@ -6,6 +6,7 @@
 #include "csv_export.h"
 #include "overlay_window.h"
 #include "text_format.h"
+#include "ui_style.h"
 
 #include <algorithm>
 #include <cmath>
@@ -55,35 +56,38 @@ void drawPicture(App& app, const VelocitySpacePath& path, ImVec2 lo, float side)
     };
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 hi(lo.x + side, lo.y + side);
-    dl->AddRectFilled(lo, hi, IM_COL32(10, 12, 18, 150), 3.0f);
+    dl->AddRectFilled(
+        lo, hi, uiLightTheme() ? IM_COL32(255, 255, 255, 235) : IM_COL32(10, 12, 18, 150), 3.0f);
     dl->PushClipRect(lo, hi, true);
     // Axes: a wall hit flips one coordinate, a reflection across the other axis.
-    dl->AddLine(ImVec2(lo.x, centre.y), ImVec2(hi.x, centre.y), kAxes, 1.0f);
-    dl->AddLine(ImVec2(centre.x, lo.y), ImVec2(centre.x, hi.y), kAxes, 1.0f);
+    dl->AddLine(ImVec2(lo.x, centre.y), ImVec2(hi.x, centre.y), uiThemed(kAxes), 1.0f);
+    dl->AddLine(ImVec2(centre.x, lo.y), ImVec2(centre.x, hi.y), uiThemed(kAxes), 1.0f);
     const float width = std::max(1.5f, font * 0.1f);
     // The block-block reflection line, through the origin along (sqrt(m1), sqrt(m2)).
     const Vec2 n = normalized(Vec2{std::sqrt(pair.m1), std::sqrt(pair.m2)});
-    dashedLine(dl, map(n * (-2.0 * extent)), map(n * (2.0 * extent)), kReflection, font * 0.4f,
-               width);
+    dashedLine(dl, map(n * (-2.0 * extent)), map(n * (2.0 * extent)), uiThemed(kReflection),
+               font * 0.4f, width);
     // The path: every state a dot (thinned to at most kPathSegments), the last kChords steps
     // as lines (thousands of chords would fill the disc; the dots show where they land).
     const auto& samples = path.samples();
     const std::size_t stride = std::max<std::size_t>(1, samples.size() / kPathSegments);
     for (std::size_t k = 0; k < samples.size(); k += stride)
         dl->AddCircleFilled(map(velocitySpacePoint(pair, samples[k].v1, samples[k].v2)),
-                            width * 0.8f, kPath, 6);
+                            width * 0.8f, uiThemed(kPath), 6);
     const std::size_t first = samples.size() > kChords ? samples.size() - kChords : 0;
     for (std::size_t k = first + 1; k < samples.size(); ++k) {
         dl->AddLine(map(velocitySpacePoint(pair, samples[k - 1].v1, samples[k - 1].v2)),
-                    map(velocitySpacePoint(pair, samples[k].v1, samples[k].v2)), kChord, 1.0f);
+                    map(velocitySpacePoint(pair, samples[k].v1, samples[k].v2)), uiThemed(kChord),
+                    1.0f);
     }
     // Kinetic energy: the circle through the state, radius sqrt(2·KE).
     const float r = static_cast<float>(length(now) * scale);
-    if (r > 1.0f) dl->AddCircle(centre, r, kCircle, 64, width);
+    if (r > 1.0f) dl->AddCircle(centre, r, uiThemed(kCircle), 64, width);
     // Momentum: the line sqrt(m1)·x + sqrt(m2)·y = p through the state, across n.
     const Vec2 t = perpendicular(n); // over the path, as the circle
-    dl->AddLine(map(now - t * (3.0 * extent)), map(now + t * (3.0 * extent)), kLine, width);
-    dl->AddCircleFilled(map(now), font * 0.3f, IM_COL32(255, 255, 255, 240));
+    dl->AddLine(map(now - t * (3.0 * extent)), map(now + t * (3.0 * extent)), uiThemed(kLine),
+                width);
+    dl->AddCircleFilled(map(now), font * 0.3f, uiThemed(IM_COL32(255, 255, 255, 240)));
     // Axis names, where there is room for them (the caption names the axes too).
     if (side < 9.0f * font) {
         dl->PopClipRect();
@@ -93,7 +97,7 @@ void drawPicture(App& app, const VelocitySpacePath& path, ImVec2 lo, float side)
     const std::string s2 = formulaSymbol(baseBlockName(blockDisplayName(app, pair.block2)));
     const std::string xName = "sqrt(m" + (s1.empty() ? "1" : s1) + ")·v" + (s1.empty() ? "1" : s1);
     const std::string yName = "sqrt(m" + (s2.empty() ? "2" : s2) + ")·v" + (s2.empty() ? "2" : s2);
-    const ImU32 text = IM_COL32(200, 206, 220, 255);
+    const ImU32 text = uiThemed(IM_COL32(200, 206, 220, 255));
     const ImVec2 xs = ImGui::CalcTextSize(xName.c_str());
     dl->AddText(ImVec2(hi.x - xs.x - 3.0f, centre.y + 2.0f), text, xName.c_str());
     const float yw = ImGui::CalcTextSize(yName.c_str()).x;
