@@ -117,7 +117,7 @@ void drawPoiOverlay(App& app) {
                           : side == 1 ? ImVec2(sc.x + hw + g, sc.y - ts.y * 0.5f)
                           : side == 2 ? ImVec2(sc.x - hw - g - ts.x, sc.y - ts.y * 0.5f)
                                       : ImVec2(sc.x - ts.x * 0.5f, sc.y + hh + g);
-        label(dl, at, color, text);
+        label(dl, placeSceneLabel(app, at, ts), color, text);
     };
     place(p.oldPosition, "old", kOld, 0);
     place(p.newPosition, "new", kNew, 1);

@@ -78,6 +78,9 @@ struct UiState {
     // The docked window whose title bar the left button went down on (one at a time): dragging
     // on from there pulls it out of the layout.
     std::string titlePressed;
+    // This frame, what the scene's labels took on screen (px): the blocks, their labels, the
+    // arrows' values; the overlays' labels (point of impact, centre of mass) avoid them.
+    std::vector<ScreenRect> takenOnScreen;
     std::string physicsFollowedScene; // the scene the "Physics" header last opened or closed for
 };
 

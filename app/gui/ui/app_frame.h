@@ -31,7 +31,9 @@ void drawDialogs(App& app);
 void drawLessonCaption(App& app);
 // Mouse in the scene, block labels, hover tooltip and the status badge.
 void handleSceneMouse(App& app);
-void drawSceneDecorations(const App& app);
+// Also records what it took on screen (the blocks, their labels, the arrows' values) in
+// app.ui.takenOnScreen, for the overlays' labels drawn after it (placeSceneLabel).
+void drawSceneDecorations(App& app);
 // The teaching overlays: the table in overlays.h, drawn by drawOverlays (overlay_window.h).
 // The colour of a method's ghosts and rows (methods side by side, the tradeoff chart).
 Color methodGhostColor(Method method);

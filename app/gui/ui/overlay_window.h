@@ -27,6 +27,11 @@ constexpr ImU32 kCom = IM_COL32(255, 235, 90, 255);
 bool beginOverlayWindow(App& app, OverlayId id);
 // Notes the current window (between Begin and End) in app.shownWindows, for --layout-json.
 void recordShownWindow(App& app, const char* name);
+// Where an overlay's label of `size` px wanted at `at` (its top-left) goes over the scene: there,
+// or moved up or down by lines until it overlaps nothing taken on screen this frame (the blocks,
+// their labels, the arrows' values: app.ui.takenOnScreen); the spot is then taken too
+// (scene_view.cpp).
+ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size);
 
 // The window of an overlay row (overlays.h: its title and placement), closed by its close button
 // through the row's flag. Ends the window when it goes out of scope; false while collapsed:

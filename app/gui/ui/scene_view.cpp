@@ -5,6 +5,7 @@
 // caption), a large collision count where the count is the lesson, the fling readout and the
 // hover tooltip.
 #include "app_frame.h"
+#include "overlay_window.h"
 
 #include "placement.h"
 #include "scene_geometry.h"
@@ -83,6 +84,11 @@ float freeSpot(const std::vector<ImVec4>& placed, float x, float above, float be
         }
     }
     return above;
+}
+
+ImVec4 corners(const ScreenRect& r) {
+    return ImVec4(static_cast<float>(r.x), static_cast<float>(r.y),
+                  static_cast<float>(r.x + r.width), static_cast<float>(r.y + r.height));
 }
 
 constexpr int kCrowdedScene = 20; // blocks
@@ -429,7 +435,15 @@ void handleSceneMouse(App& app) {
     if (inScene && io.MouseWheel != 0.0f) mouseWheel(app, mouse, io.MouseWheel);
 }
 
-void drawSceneDecorations(const App& app) {
+ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size) {
+    std::vector<ImVec4> placed;
+    for (const ScreenRect& r : app.ui.takenOnScreen) placed.push_back(corners(r));
+    const float y = freeSpot(placed, at.x, at.y, at.y, size, ImGui::GetFontSize());
+    app.ui.takenOnScreen.push_back({at.x, y, size.x, size.y});
+    return ImVec2(at.x, y);
+}
+
+void drawSceneDecorations(App& app) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     ImGui::PushFont(uiLabelFont()); // the scene's labels have a size of their own
     drawAxisNumbers(app, dl);
@@ -437,6 +451,9 @@ void drawSceneDecorations(const App& app) {
     std::vector<ImVec4> placed; // blocks and labels on screen
     drawLabels(app, dl, placed);
     drawArrowValues(app, dl, placed);
+    std::vector<ScreenRect>& taken = app.ui.takenOnScreen;
+    taken.clear();
+    for (const ImVec4& r : placed) taken.push_back({r.x, r.y, r.z - r.x, r.w - r.y});
     SceneView forces; // what the scene renderer draws the force arrows from
     forces.world = &app.world;
     forces.vectors = app.show.vectors;
