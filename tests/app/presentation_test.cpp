@@ -584,10 +584,33 @@ TEST(HistoryForTheTimeline, AnEditDuringReplayStartsANewFuture) {
 // Every overlay on at 1280x720 makes small windows: they switch to the compact font; at
 // 1920x1080 (UI scale 1.5) and with few windows they keep the UI font.
 TEST(CompactWindows, SmallDockedWindowsUseTheCompactFont) {
-    EXPECT_TRUE(compactWindow(387, 198, 16));   // the plots, all overlays on at 1280x720
-    EXPECT_TRUE(compactWindow(135, 181, 16));   // the momenta
-    EXPECT_FALSE(compactWindow(387, 720, 16));  // the inspector alone
-    EXPECT_FALSE(compactWindow(560, 470, 24));  // 1920x1080 at UI scale 1.5
+    EXPECT_TRUE(compactWindow(387, 198, 16));  // the plots, all overlays on at 1280x720
+    EXPECT_TRUE(compactWindow(135, 181, 16));  // the momenta
+    EXPECT_FALSE(compactWindow(387, 720, 16)); // the inspector alone
+    EXPECT_FALSE(compactWindow(560, 470, 24)); // 1920x1080 at UI scale 1.5
     EXPECT_TRUE(compactWindow(560, 300, 24));
     EXPECT_LT(kCompactFontScale, 1.0);
+}
+
+namespace {
+// One width unit per byte: a monospaced stand-in for the font.
+double bytes(const std::string& line) {
+    return static_cast<double>(line.size());
+}
+} // namespace
+
+// Wrapped at spaces only: a number's '.' or a pair's ',' never starts a line (ImGui's TextWrapped
+// put "58." and "152)" on two lines in the Momenta window); the text's newlines stay; a word
+// wider than the line is cut between characters, never inside a UTF-8 sequence.
+TEST(WrapAtSpaces, BreaksAtSpacesOnly) {
+    EXPECT_EQ(wrapAtSpaces("total p = (-2.6, 58.152) kg·m/s", 16, bytes),
+              "total p = (-2.6,\n58.152) kg·m/s");
+    EXPECT_EQ(wrapAtSpaces("0.8 s recorded, 4 keyframes, 0.0 MB", 30, bytes),
+              "0.8 s recorded, 4 keyframes,\n0.0 MB");
+    EXPECT_EQ(wrapAtSpaces("short", 30, bytes), "short");
+    EXPECT_EQ(wrapAtSpaces("", 30, bytes), "");
+    EXPECT_EQ(wrapAtSpaces("one\ntwo three", 5, bytes), "one\ntwo\nthree");
+    EXPECT_EQ(wrapAtSpaces("a /very/long/path.json", 8, bytes), "a\n/very/lo\nng/path.\njson");
+    const std::string cut = wrapAtSpaces("ééééé", 4, bytes); // 2 bytes each
+    EXPECT_EQ(cut, "éé\néé\né");
 }

@@ -88,7 +88,7 @@ void drawCostOverlay(App& app) {
     } else if (ImGui::Button("Run the tradeoff sweep (quick)")) {
         cost.startSweep(quickTradeoffSweep(app.scenesDir));
     }
-    if (!cost.error().empty()) ImGui::TextWrapped("Sweep failed: %s", cost.error().c_str());
+    if (!cost.error().empty()) textWrappedAtSpaces("Sweep failed: " + cost.error());
     if (cost.rows().empty()) {
         if (!cost.sweepRunning()) {
             dimText("Sweeps method x dt x substeps over scenes with known answers.");

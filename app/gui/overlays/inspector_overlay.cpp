@@ -65,7 +65,7 @@ void drawInspectorOverlay(App& app) {
         ImGui::EndCombo();
     }
     ImGui::Separator();
-    ImGui::TextWrapped("%s", f.title.c_str());
+    textWrappedAtSpaces(f.title);
     char toi[96];
     std::snprintf(toi, sizeof toi, "time of impact: t = %s of the frame (t = a/b)",
                   formatNumber(r.toi).c_str());
@@ -77,10 +77,10 @@ void drawInspectorOverlay(App& app) {
     // The relative-velocity test decides whether this is a collision at all.
     if (f.separating) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiThemed(ImVec4(1.0f, 0.55f, 0.35f, 1.0f)));
-        ImGui::TextWrapped("%s", f.relative.c_str());
+        textWrappedAtSpaces(f.relative);
         ImGui::PopStyleColor();
     } else {
-        ImGui::TextWrapped("%s", f.relative.c_str());
+        textWrappedAtSpaces(f.relative);
     }
     ImGui::Spacing();
     formulaLine(f.u, true);
@@ -95,7 +95,7 @@ void drawInspectorOverlay(App& app) {
     formulaLine(f.momentumAfter, false);
     if (!f.note.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiThemed(ImVec4(0.62f, 0.66f, 0.74f, 1.0f)));
-        ImGui::TextWrapped("%s", f.note.c_str());
+        textWrappedAtSpaces(f.note);
         ImGui::PopStyleColor();
     }
     if (overlay.compact()) pauseSwitch();

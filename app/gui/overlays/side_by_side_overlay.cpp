@@ -26,7 +26,7 @@ void drawSideBySideOverlay(App& app) {
     if (!overlay) return;
     const MethodsSideBySide& m = app.methods;
     if (!m.running) {
-        ImGui::TextWrapped("Starts from the current state when the simulation runs (P or N).");
+        textWrappedAtSpaces("Starts from the current state when the simulation runs (P or N).");
         return;
     }
     // Columns at the width of their contents (never cut): a narrow window scrolls sideways.

@@ -115,7 +115,7 @@ void drawVelocitySpaceOverlay(App& app) {
     const VelocitySpacePath& path = app.telemetry.velocitySpace;
     const VelocitySpacePair& pair = path.pair();
     if (!pair.valid()) {
-        ImGui::TextWrapped("%s", velocitySpacePair(app.world).why.c_str());
+        textWrappedAtSpaces(velocitySpacePair(app.world).why);
         return;
     }
     const ImVec2 avail = ImGui::GetContentRegionAvail();

@@ -115,3 +115,64 @@ std::string formulaSymbol(const std::string& name) {
         return base.substr(1);
     return base;
 }
+
+namespace {
+
+// One paragraph (no newline) into `out`, lines joined by '\n'.
+void wrapParagraph(const std::string& text, double width,
+                   const std::function<double(const std::string&)>& measure, std::string& out) {
+    std::string line;
+    auto flush = [&] {
+        out += line;
+        out += '\n';
+        line.clear();
+    };
+    std::size_t i = 0;
+    while (i <= text.size()) {
+        const std::size_t end = std::min(text.find(' ', i), text.size());
+        std::string word = text.substr(i, end - i);
+        i = end + 1;
+        if (!line.empty() && measure(line + " " + word) <= width) {
+            line += " " + word;
+            continue;
+        }
+        if (!line.empty()) flush();
+        // A word wider than the line: as many characters (whole UTF-8 sequences) as fit.
+        while (measure(word) > width && word.size() > 1) {
+            std::size_t cut = 1;
+            while (cut < word.size()) {
+                std::size_t next = cut + 1;
+                while (next < word.size() &&
+                       (static_cast<unsigned char>(word[next]) & 0xC0) == 0x80)
+                    ++next;
+                if (measure(word.substr(0, next)) > width) break;
+                cut = next;
+            }
+            while (cut < word.size() && (static_cast<unsigned char>(word[cut]) & 0xC0) == 0x80)
+                ++cut;
+            line = word.substr(0, cut);
+            word = word.substr(cut);
+            flush();
+        }
+        line = word;
+    }
+    out += line;
+}
+
+} // namespace
+
+std::string wrapAtSpaces(const std::string& text, double width,
+                         const std::function<double(const std::string&)>& measure) {
+    std::string out;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t newline = text.find('\n', start);
+        wrapParagraph(
+            text.substr(start, newline == std::string::npos ? std::string::npos : newline - start),
+            width, measure, out);
+        if (newline == std::string::npos) break;
+        out += '\n';
+        start = newline + 1;
+    }
+    return out;
+}

@@ -3,6 +3,7 @@
 // current mass ("m1 = 1 kg" becomes "m1 = 3 kg" when the mass is changed to 3). Pure functions.
 #pragma once
 
+#include <functional>
 #include <string>
 
 // Values this close to zero, relative to the scale of what they are compared with, are rounding
@@ -32,3 +33,10 @@ std::string nameWithMass(const std::string& name, double mass);
 // The suffix the lecture's formula gives a body's symbols (m1, v1): "1" for "m1", "A" for "A";
 // "" when the name is not a short symbol.
 std::string formulaSymbol(const std::string& name);
+
+// Text broken into lines of at most `width` (as `measure` gives a line's width) at spaces only,
+// so a number such as 58.152 or a formula's operand is never split (ImGui's TextWrapped also
+// breaks after '.' and ','). A word wider than a line is broken between characters; the text's
+// own newlines are kept.
+std::string wrapAtSpaces(const std::string& text, double width,
+                         const std::function<double(const std::string&)>& measure);

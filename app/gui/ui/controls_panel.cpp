@@ -81,7 +81,7 @@ void typedWarning(const App& app, const char* field) {
     const TypedWarning& w = app.ui.typedWarning;
     if (w.message.empty() || w.field != field) return;
     ImGui::PushStyleColor(ImGuiCol_Text, warningColor());
-    ImGui::TextWrapped("%s", w.message.c_str());
+    textWrappedAtSpaces(w.message);
     ImGui::PopStyleColor();
 }
 
@@ -116,7 +116,7 @@ void lessonSection(App& app) {
     LessonSession& s = app.lesson;
     if (!s.active()) return;
     if (!ImGui::CollapsingHeader("Lesson", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    ImGui::TextWrapped("%s", s.lesson->name.c_str());
+    textWrappedAtSpaces(s.lesson->name);
     const float w = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
     if (ImGui::Button("< Prev", ImVec2(w, 0))) applyAction(app, Action::LessonPrevious);
     tooltip("PageUp (or Left, with thrust off)");
@@ -483,18 +483,18 @@ void drawControlsPanel(App& app) {
             ImGui::CalcTextSize(app.scene.description.c_str(), nullptr, false, wrap).y;
         ImGui::BeginChild("##description", ImVec2(0.0f, std::min(lines, needed + 2.0f)));
         ImGui::PushStyleColor(ImGuiCol_Text, dimColor());
-        ImGui::TextWrapped("%s", app.scene.description.c_str());
+        textWrappedAtSpaces(app.scene.description);
         ImGui::PopStyleColor();
         ImGui::EndChild();
     }
     if (!app.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, errorColor());
-        ImGui::TextWrapped("%s", app.error.c_str());
+        textWrappedAtSpaces(app.error);
         ImGui::PopStyleColor();
         if (ImGui::SmallButton("dismiss")) app.error.clear();
     } else if (!app.note.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, noteColor());
-        ImGui::TextWrapped("%s", app.note.c_str());
+        textWrappedAtSpaces(app.note);
         ImGui::PopStyleColor();
     }
     lessonSection(app);

@@ -101,6 +101,6 @@ void dimText(const char* text) {
     const ImVec4 dim =
         uiLightTheme() ? ImVec4(0.32f, 0.35f, 0.42f, 1.0f) : ImVec4(0.62f, 0.66f, 0.74f, 1.0f);
     ImGui::PushStyleColor(ImGuiCol_Text, dim);
-    ImGui::TextWrapped("%s", text); // wrapped: a docked window may be narrow, nothing is cut
+    textWrappedAtSpaces(text); // wrapped: a docked window may be narrow, nothing is cut
     ImGui::PopStyleColor();
 }

@@ -1,6 +1,7 @@
 #include "ui_style.h"
 
 #include "dock_layout.h"
+#include "text_format.h"
 
 #include <imgui.h>
 
@@ -179,4 +180,12 @@ ImVec4 uiThemed(const ImVec4& c) {
 ImU32 uiThemed(ImU32 c) {
     if (!gLight) return c;
     return ImGui::ColorConvertFloat4ToU32(uiThemed(ImGui::ColorConvertU32ToFloat4(c)));
+}
+
+void textWrappedAtSpaces(const std::string& text) {
+    const float width = ImGui::GetContentRegionAvail().x;
+    const std::string lines = wrapAtSpaces(text, width, [](const std::string& line) {
+        return static_cast<double>(ImGui::CalcTextSize(line.c_str()).x);
+    });
+    ImGui::TextUnformatted(lines.c_str(), lines.c_str() + lines.size());
 }

@@ -2,6 +2,8 @@
 // ImGui's built-in font otherwise) and the UI scale. Call between frames, never inside one.
 #pragma once
 
+#include <string>
+
 // Creates the ImGui context and sets the theme. `iniPath` null: no ini file (offscreen runs).
 void uiCreateContext(const char* iniPath);
 void uiDestroyContext();
@@ -20,6 +22,8 @@ ImFont* uiLabelFont();
 // font's size.
 ImFont* uiCompactFont();
 bool uiLightTheme();
+// ImGui::TextWrapped, but broken at spaces only (wrapAtSpaces): "58.152" stays one piece.
+void textWrappedAtSpaces(const std::string& text);
 // A colour chosen for the dark theme (text, lines and marks over a dark background), as the
 // current theme draws it: itself in the dark theme; in the light one a dark tone of the same hue
 // (bright colours deepened, greys and white turned dark), alpha kept, so it reads on light.
