@@ -16,19 +16,6 @@
 
 namespace {
 
-ImVec4 errorColor() {
-    return uiThemed(ImVec4{1.0f, 0.45f, 0.42f, 1.0f});
-}
-ImVec4 noteColor() {
-    return uiThemed(ImVec4{0.55f, 0.85f, 0.60f, 1.0f});
-}
-ImVec4 dimColor() {
-    return uiThemed(ImVec4{0.62f, 0.66f, 0.74f, 1.0f});
-}
-ImVec4 warningColor() {
-    return uiThemed(ImVec4{1.0f, 0.76f, 0.28f, 1.0f});
-}
-
 void tooltip(const char* text) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
 }
@@ -80,7 +67,7 @@ bool acceptAcceleration(App& app, const char* field, Vec2 force, double mass) {
 void typedWarning(const App& app, const char* field) {
     const TypedWarning& w = app.ui.typedWarning;
     if (w.message.empty() || w.field != field) return;
-    ImGui::PushStyleColor(ImGuiCol_Text, warningColor());
+    ImGui::PushStyleColor(ImGuiCol_Text, uiWarningColor());
     textWrappedAtSpaces(w.message);
     ImGui::PopStyleColor();
 }
@@ -280,7 +267,7 @@ void physicsSection(App& app) {
             "water 1000 (slide \"Viscosity/drag: a feather falls slower than a stone\"; "
             "Ctrl+click to type)");
     typedWarning(app, "drag k");
-    ImGui::TextColored(dimColor(), "Mistakes (the Tips slides' bugs)");
+    ImGui::TextColored(uiDimColor(), "Mistakes (the Tips slides' bugs)");
     for (int m = 0; m < static_cast<int>(Mistake::Count); ++m) {
         const Mistake mistake = static_cast<Mistake>(m);
         bool on = s.has(mistake);
@@ -304,7 +291,7 @@ void physicsSection(App& app) {
     if (app.thrust.on &&
         !(app.selected >= 0 && app.selected < static_cast<int>(app.world.blocks.size()) &&
           app.world.blocks[static_cast<std::size_t>(app.selected)].isDynamic())) {
-        ImGui::TextColored(dimColor(), "Select a moving block to push it.");
+        ImGui::TextColored(uiDimColor(), "Select a moving block to push it.");
     }
 }
 
@@ -332,8 +319,8 @@ void selectedSection(App& app) {
     if (!ImGui::CollapsingHeader("Selected block")) return;
     const int i = app.selected;
     if (i < 0 || i >= static_cast<int>(app.world.blocks.size())) {
-        ImGui::TextColored(dimColor(), "Click a block to select it.");
-        ImGui::TextColored(dimColor(), "Double-click empty space to add one.");
+        ImGui::TextColored(uiDimColor(), "Click a block to select it.");
+        ImGui::TextColored(uiDimColor(), "Double-click empty space to add one.");
         return;
     }
     Block& b = app.world.blocks[static_cast<std::size_t>(i)];
@@ -358,7 +345,7 @@ void selectedSection(App& app) {
         typedWarning(app, "mass");
         blockForceField(app, b);
     } else {
-        ImGui::TextColored(dimColor(), "mass: infinite");
+        ImGui::TextColored(uiDimColor(), "mass: infinite");
     }
     float size[2] = {static_cast<float>(b.size.x), static_cast<float>(b.size.y)};
     if (ImGui::DragFloat2("size", size, 0.02f, 0.05f, 50.0f, "%.2f m")) {
@@ -378,7 +365,7 @@ void selectedSection(App& app) {
         }
         typedWarning(app, "velocity");
     }
-    ImGui::TextColored(dimColor(), "position (%.2f, %.2f) m", b.position.x, b.position.y);
+    ImGui::TextColored(uiDimColor(), "position (%.2f, %.2f) m", b.position.x, b.position.y);
     if (ImGui::Button("Delete block")) deleteSelected(app);
 }
 
@@ -482,18 +469,18 @@ void drawControlsPanel(App& app) {
         const float needed =
             ImGui::CalcTextSize(app.scene.description.c_str(), nullptr, false, wrap).y;
         ImGui::BeginChild("##description", ImVec2(0.0f, std::min(lines, needed + 2.0f)));
-        ImGui::PushStyleColor(ImGuiCol_Text, dimColor());
+        ImGui::PushStyleColor(ImGuiCol_Text, uiDimColor());
         textWrappedAtSpaces(app.scene.description);
         ImGui::PopStyleColor();
         ImGui::EndChild();
     }
     if (!app.error.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, errorColor());
+        ImGui::PushStyleColor(ImGuiCol_Text, uiErrorColor());
         textWrappedAtSpaces(app.error);
         ImGui::PopStyleColor();
         if (ImGui::SmallButton("dismiss")) app.error.clear();
     } else if (!app.note.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, noteColor());
+        ImGui::PushStyleColor(ImGuiCol_Text, uiNoteColor());
         textWrappedAtSpaces(app.note);
         ImGui::PopStyleColor();
     }

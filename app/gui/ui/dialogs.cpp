@@ -14,12 +14,6 @@ namespace {
 
 constexpr const char* kQuitTitle = "Quit?";
 constexpr const char* kSaveTitle = "Save the scene";
-ImVec4 warnColor() {
-    return uiThemed(ImVec4{1.0f, 0.72f, 0.35f, 1.0f});
-}
-ImVec4 errorColor() {
-    return uiThemed(ImVec4{1.0f, 0.45f, 0.42f, 1.0f});
-}
 
 bool gQuitAfterSave = false; // the Save dialog was opened from the quit dialog
 
@@ -72,8 +66,8 @@ void saveDialog(App& app) {
     std::error_code ec;
     const bool exists =
         !app.saveDialogPath.empty() && std::filesystem::exists(app.saveDialogPath, ec);
-    if (exists) ImGui::TextColored(warnColor(), "That file exists: Overwrite replaces it.");
-    if (!app.error.empty()) ImGui::TextColored(errorColor(), "%s", app.error.c_str());
+    if (exists) ImGui::TextColored(uiWarningColor(), "That file exists: Overwrite replaces it.");
+    if (!app.error.empty()) ImGui::TextColored(uiErrorColor(), "%s", app.error.c_str());
     // Enter saves only when nothing would be overwritten: overwriting takes the button.
     if (ImGui::Button(exists ? "Overwrite" : "Save") || (enter && !exists)) {
         if (saveCurrentScene(app, app.saveDialogPath)) {

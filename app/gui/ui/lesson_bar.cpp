@@ -12,20 +12,6 @@
 
 #include <string>
 
-namespace {
-
-ImVec4 questionColor() {
-    return uiThemed(ImVec4{1.0f, 0.82f, 0.40f, 1.0f});
-}
-ImVec4 answerColor() {
-    return uiThemed(ImVec4{0.55f, 0.85f, 0.60f, 1.0f});
-}
-ImVec4 dimColor() {
-    return uiThemed(ImVec4{0.62f, 0.66f, 0.74f, 1.0f});
-}
-
-} // namespace
-
 void drawLessonCaption(App& app) {
     const LessonSession& s = app.lesson;
     const LessonStep* step = s.step();
@@ -58,19 +44,19 @@ void drawLessonCaption(App& app) {
     if (app.presentMode)
         ImGui::Text("   %s", status.c_str());
     else
-        ImGui::TextColored(dimColor(), "   %s", status.c_str());
+        ImGui::TextColored(uiDimColor(), "   %s", status.c_str());
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextUnformatted(step->caption.c_str());
     if (!step->question.empty()) {
         if (s.revealed) {
-            ImGui::TextColored(answerColor(), "Answer: %s", step->answer.c_str());
+            ImGui::TextColored(uiNoteColor(), "Answer: %s", step->answer.c_str());
         } else {
-            ImGui::TextColored(questionColor(), "Question: %s", step->question.c_str());
-            ImGui::TextColored(dimColor(), "PageDown shows the answer");
+            ImGui::TextColored(uiQuestionColor(), "Question: %s", step->question.c_str());
+            ImGui::TextColored(uiDimColor(), "PageDown shows the answer");
         }
     }
     if (!s.digits.empty())
-        ImGui::TextColored(dimColor(), "Go to step %s (Enter)", s.digits.c_str());
+        ImGui::TextColored(uiDimColor(), "Go to step %s (Enter)", s.digits.c_str());
     ImGui::PopTextWrapPos();
     app.captionHeight = ImGui::GetWindowHeight();
     ImGui::End();

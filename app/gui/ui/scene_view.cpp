@@ -60,21 +60,27 @@ int hoveredBlock(const App& app) {
     return pickBlock(app.world, app.camera.screenToWorld(mouse), 0.0);
 }
 
-bool intersects(const ImVec4& a, const ImVec4& b) {
-    return a.x < b.z && b.x < a.z && a.y < b.w && b.y < a.w;
+// The rectangle from (x0, y0) to (x1, y1), px.
+ScreenRect spanning(double x0, double y0, double x1, double y1) {
+    return {x0, y0, x1 - x0, y1 - y0};
+}
+
+bool intersects(const ScreenRect& a, const ScreenRect& b) {
+    return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height &&
+           b.y < a.y + a.height;
 }
 
 // Moves a label (x, y = top-left, size) up or down in steps of a line until it overlaps none of
 // `placed` (labels already drawn and blocks), trying above first, then below; returns its top.
-float freeSpot(const std::vector<ImVec4>& placed, float x, float above, float below, ImVec2 size,
-               float line) {
+float freeSpot(const std::vector<ScreenRect>& placed, float x, float above, float below,
+               ImVec2 size, float line) {
     for (int k = 0; k < 6; ++k) {
         const float candidates[2] = {above - k * line, below + k * line};
         for (float y : candidates) {
             const float gap = line * 0.5f; // labels closer than this read as one
-            const ImVec4 r(x - gap, y, x + size.x + gap, y + size.y);
+            const ScreenRect r = spanning(x - gap, y, x + size.x + gap, y + size.y);
             bool clear = true;
-            for (const ImVec4& p : placed) {
+            for (const ScreenRect& p : placed) {
                 if (intersects(r, p)) {
                     clear = false;
                     break;
@@ -86,16 +92,11 @@ float freeSpot(const std::vector<ImVec4>& placed, float x, float above, float be
     return above;
 }
 
-ImVec4 corners(const ScreenRect& r) {
-    return ImVec4(static_cast<float>(r.x), static_cast<float>(r.y),
-                  static_cast<float>(r.x + r.width), static_cast<float>(r.y + r.height));
-}
-
 constexpr int kCrowdedScene = 20; // blocks
 
 // `placed`: the rectangles taken on screen, the blocks and each label (the arrows' values
 // avoid them).
-void drawLabels(const App& app, ImDrawList* dl, std::vector<ImVec4>& placed) {
+void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
     const int n = static_cast<int>(app.world.blocks.size());
     if (n > kMaxLabelledBlocks) return;
     const float lineHeight = ImGui::GetFontSize();
@@ -104,9 +105,8 @@ void drawLabels(const App& app, ImDrawList* dl, std::vector<ImVec4>& placed) {
     for (const Block& b : app.world.blocks) {
         const Vec2 lo = app.camera.worldToScreen(b.position - b.size * 0.5);
         const Vec2 hi = app.camera.worldToScreen(b.position + b.size * 0.5);
-        placed.emplace_back(
-            static_cast<float>(std::min(lo.x, hi.x)), static_cast<float>(std::min(lo.y, hi.y)),
-            static_cast<float>(std::max(lo.x, hi.x)), static_cast<float>(std::max(lo.y, hi.y)));
+        placed.push_back(spanning(std::min(lo.x, hi.x), std::min(lo.y, hi.y), std::max(lo.x, hi.x),
+                                  std::max(lo.y, hi.y)));
     }
     for (int i = 0; i < n; ++i) {
         const Block& b = app.world.blocks[static_cast<std::size_t>(i)];
@@ -149,7 +149,7 @@ void drawLabels(const App& app, ImDrawList* dl, std::vector<ImVec4>& placed) {
             const float above = static_cast<float>(c.y - hPx * 0.5) - lineHeight - 2.0f;
             const float below = static_cast<float>(c.y + hPx * 0.5) + 2.0f;
             const float top = freeSpot(placed, x, above, below, nameSize, lineHeight);
-            placed.emplace_back(x, top, x + nameSize.x, top + nameSize.y);
+            placed.push_back(spanning(x, top, x + nameSize.x, top + nameSize.y));
             shadowText(dl, ImVec2(x, top), beside, name.c_str(), packed(theme().textShadow));
         }
     }
@@ -292,7 +292,7 @@ void drawLargeCount(const App& app, ImDrawList* dl) {
 // Arrows too long to draw to scale (compressed and cut at the view's edge) carry their value; in
 // the centre-of-mass frame every arrow does (w1 = 4 m/s: the lecture's numbers), in a scene of
 // few blocks.
-void drawArrowValues(const App& app, ImDrawList* dl, std::vector<ImVec4>& placed) {
+void drawArrowValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
     if (!app.show.vectors) return;
     const bool relative = app.frame != ViewFrame::World;
     const Vec2 u = frameVelocity(app.world, app.frame);
@@ -323,13 +323,13 @@ void drawArrowValues(const App& app, ImDrawList* dl, std::vector<ImVec4>& placed
                                    static_cast<float>(vp.x + vp.width) - ts.x);
         float y = static_cast<float>(at.y);
         for (int k = 0; k < 6; ++k) {
-            const ImVec4 r(x - 4.0f, y, x + ts.x + 4.0f, y + ts.y);
+            const ScreenRect r = spanning(x - 4.0f, y, x + ts.x + 4.0f, y + ts.y);
             if (std::none_of(placed.begin(), placed.end(),
-                             [&r](const ImVec4& p) { return intersects(r, p); }))
+                             [&r](const ScreenRect& p) { return intersects(r, p); }))
                 break;
             y += ts.y;
         }
-        placed.emplace_back(x, y, x + ts.x, y + ts.y);
+        placed.push_back(spanning(x, y, x + ts.x, y + ts.y));
         shadowText(dl, ImVec2(x, y), packed(theme().velocity), text.c_str(),
                    packed(theme().textShadow));
         ++written;
@@ -436,9 +436,7 @@ void handleSceneMouse(App& app) {
 }
 
 ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size) {
-    std::vector<ImVec4> placed;
-    for (const ScreenRect& r : app.ui.takenOnScreen) placed.push_back(corners(r));
-    const float y = freeSpot(placed, at.x, at.y, at.y, size, ImGui::GetFontSize());
+    const float y = freeSpot(app.ui.takenOnScreen, at.x, at.y, at.y, size, ImGui::GetFontSize());
     app.ui.takenOnScreen.push_back({at.x, y, size.x, size.y});
     return ImVec2(at.x, y);
 }
@@ -448,12 +446,10 @@ void drawSceneDecorations(App& app) {
     ImGui::PushFont(uiLabelFont()); // the scene's labels have a size of their own
     drawAxisNumbers(app, dl);
     drawReferenceLine(app, dl);
-    std::vector<ImVec4> placed; // blocks and labels on screen
+    std::vector<ScreenRect>& placed = app.ui.takenOnScreen; // blocks and labels on screen
+    placed.clear();
     drawLabels(app, dl, placed);
     drawArrowValues(app, dl, placed);
-    std::vector<ScreenRect>& taken = app.ui.takenOnScreen;
-    taken.clear();
-    for (const ImVec4& r : placed) taken.push_back({r.x, r.y, r.z - r.x, r.w - r.y});
     SceneView forces; // what the scene renderer draws the force arrows from
     forces.world = &app.world;
     forces.vectors = app.show.vectors;

@@ -189,3 +189,19 @@ void textWrappedAtSpaces(const std::string& text) {
     });
     ImGui::TextUnformatted(lines.c_str(), lines.c_str() + lines.size());
 }
+
+ImVec4 uiErrorColor() {
+    return uiThemed(ImVec4{1.0f, 0.45f, 0.42f, 1.0f});
+}
+ImVec4 uiWarningColor() {
+    return uiThemed(ImVec4{1.0f, 0.76f, 0.28f, 1.0f});
+}
+ImVec4 uiNoteColor() {
+    return uiThemed(ImVec4{0.55f, 0.85f, 0.60f, 1.0f});
+}
+ImVec4 uiDimColor() {
+    return uiThemed(ImVec4{0.62f, 0.66f, 0.74f, 1.0f});
+}
+ImVec4 uiQuestionColor() {
+    return uiThemed(ImVec4{1.0f, 0.82f, 0.40f, 1.0f});
+}

@@ -31,3 +31,10 @@ using ImU32 = unsigned int;
 struct ImVec4;
 ImU32 uiThemed(ImU32 darkThemeColor);
 ImVec4 uiThemed(const ImVec4& darkThemeColor);
+// The panels' text colours, one per role (each uiThemed): a failed load or save, a refused value
+// or an existing file, a note or a lesson's answer, a hint, a lesson's question.
+ImVec4 uiErrorColor();
+ImVec4 uiWarningColor();
+ImVec4 uiNoteColor();
+ImVec4 uiDimColor();
+ImVec4 uiQuestionColor();
