@@ -16,19 +16,6 @@ bool refuse(std::ostream& err, const char* option, const std::string& value,
     return false;
 }
 
-// Parses "X,Y" (pixels, each within the coordinates' limits).
-bool pixelPair(const std::string& text, Vec2& v, std::ostream& err) {
-    const std::size_t comma = text.find(',');
-    if (comma == std::string::npos)
-        return refuse(err, "--px-origin", text, "must be X,Y in pixels, e.g. 40,40");
-    for (int k = 0; k < 2; ++k) {
-        const std::string part = k == 0 ? text.substr(0, comma) : text.substr(comma + 1);
-        if (std::string p = limits::textViolation(part, limits::kMagnitude, v[k]); !p.empty())
-            return refuse(err, "--px-origin", text, p);
-    }
-    return true;
-}
-
 } // namespace
 
 int compareCommand(const CompareRequest& r, std::ostream& out, std::ostream& err) {
@@ -57,12 +44,16 @@ int compareCommand(const CompareRequest& r, std::ostream& out, std::ostream& err
         method = m;
     }
     if (gxp) {
-        const limits::Range scale{1e-6, 1e9, "px/m"};
-        if (std::string p = limits::textViolation(*r.pxPerM, scale, units.pxPerM); !p.empty()) {
+        if (std::string p = parsePxPerM(*r.pxPerM, units.pxPerM); !p.empty()) {
             refuse(err, "--px-per-m", *r.pxPerM, p);
             return kExitBadInput;
         }
-        if (r.pxOrigin && !pixelPair(*r.pxOrigin, units.originPx, err)) return kExitBadInput;
+        if (r.pxOrigin) {
+            if (std::string p = parsePxOrigin(*r.pxOrigin, units.originPx); !p.empty()) {
+                refuse(err, "--px-origin", *r.pxOrigin, p);
+                return kExitBadInput;
+            }
+        }
     }
     double tolerance = 0.0;
     if (r.tolerance) {
@@ -86,7 +77,7 @@ int compareCommand(const CompareRequest& r, std::ostream& out, std::ostream& err
         return kExitBadInput;
     }
     const Trace& trace = *read.trace;
-    const Comparison c =
+    const TraceComparison c =
         compareTrace(scene, reference, trace, traceTolerance(scene, reference.dt, tolerance));
     const ReportContext context{r.scene, &scene, &trace};
     out << (r.json ? reportJson(c, context) : reportText(c, context));

@@ -43,9 +43,9 @@ bool fitsBetter(const VariantFit& a, const VariantFit& b) {
 
 } // namespace
 
-Comparison compareTrace(const Scene& scene, const WorldSettings& reference, const Trace& trace,
-                        const Tolerance& tolerance) {
-    Comparison c;
+TraceComparison compareTrace(const Scene& scene, const WorldSettings& reference, const Trace& trace,
+                             const Tolerance& tolerance) {
+    TraceComparison c;
     c.reference = reference;
     c.tolerance = tolerance;
     c.frames = static_cast<std::int64_t>(trace.rows.size());

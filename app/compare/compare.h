@@ -20,7 +20,7 @@ struct VariantFit {
     std::vector<Variant> sameAs; // variants that simulate bit for bit the same
 };
 
-struct Comparison {
+struct TraceComparison {
     WorldSettings reference; // the settings compared with
     Tolerance tolerance;
     std::int64_t frames = 0;            // rows of the trace
@@ -40,5 +40,5 @@ WorldSettings referenceSettings(const Scene& scene, std::optional<Method> method
 
 // Compares `trace` with `scene` under `reference`. Every variant is simulated only when the trace
 // differs from the reference.
-Comparison compareTrace(const Scene& scene, const WorldSettings& reference, const Trace& trace,
-                        const Tolerance& tolerance);
+TraceComparison compareTrace(const Scene& scene, const WorldSettings& reference, const Trace& trace,
+                             const Tolerance& tolerance);

@@ -10,8 +10,8 @@
 
 namespace {
 
-constexpr const char* kResolveSlide = "Tips – Collision Resolve";
-constexpr const char* kFormulaSlide = "Collisions on a Line – Full Formula";
+constexpr const char* kResolveSlide = "Tips - Collision Resolve";
+constexpr const char* kFormulaSlide = "Collisions on a Line - Full Formula";
 constexpr const char* kPoiSlide = "Point of Impact (POI) Calculation";
 // A time of impact this close to a frame's start or end (a fraction of the frame) lies on the
 // boundary: single-precision rounding decides which frame the collision falls in.
@@ -341,7 +341,8 @@ void judgePosition(PartingCollision& p, const Scene& scene, const Tolerance& tol
     const double v = poi.velocity[a], w = p.yoursVelocity[a];
     if (std::abs(v - w) * poi.dt > tol.position) {
         const double ts = (ys[a] - poi.oldPosition[a] - w * poi.dt) / ((v - w) * poi.dt);
-        if (ts >= -0.05 && ts <= 1.05) {
+        // Only a turn inside the frame, clearly apart from the reference's, says something.
+        if (ts > 0.01 && ts < 0.99 && std::abs(ts - poi.t) > 0.01) {
             add(p, "time-of-impact",
                 name + " is at " + at(ys) + ": going on after its impact, it turned at t = " +
                     formatNumber(ts) + " of the frame along " + A +

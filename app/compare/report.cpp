@@ -111,7 +111,7 @@ std::string differenceName(const Scene& scene, const Difference& d) {
     return nameOf(scene, d.block) + "'s " + kComponentNames[d.velocity][d.axis];
 }
 
-std::vector<std::string> diagnosisLines(const Comparison& c) {
+std::vector<std::string> diagnosisLines(const TraceComparison& c) {
     std::vector<std::string> lines;
     if (c.same()) {
         lines.push_back("Your trace is the reference's within the tolerance: your engine does what "
@@ -158,7 +158,7 @@ std::vector<std::string> diagnosisLines(const Comparison& c) {
     return lines;
 }
 
-std::string reportText(const Comparison& c, const ReportContext& ctx) {
+std::string reportText(const TraceComparison& c, const ReportContext& ctx) {
     const Scene& scene = *ctx.scene;
     const Trace& trace = *ctx.trace;
     const WorldSettings& s = c.reference;
@@ -253,7 +253,7 @@ std::string reportText(const Comparison& c, const ReportContext& ctx) {
     return out;
 }
 
-std::string reportJson(const Comparison& c, const ReportContext& ctx) {
+std::string reportJson(const TraceComparison& c, const ReportContext& ctx) {
     const Scene& scene = *ctx.scene;
     const Trace& trace = *ctx.trace;
     const WorldSettings& s = c.reference;

@@ -18,8 +18,8 @@ struct ReportContext {
 // "mover's y" / "m1 = 1 kg's vx": the quantity of a difference.
 std::string differenceName(const Scene& scene, const Difference& d);
 // The diagnosis in sentences, best explanation first (the app's inspector shows them).
-std::vector<std::string> diagnosisLines(const Comparison& c);
+std::vector<std::string> diagnosisLines(const TraceComparison& c);
 // The whole report, lines ending in "\n".
-std::string reportText(const Comparison& c, const ReportContext& context);
+std::string reportText(const TraceComparison& c, const ReportContext& context);
 // One JSON object (ASCII only).
-std::string reportJson(const Comparison& c, const ReportContext& context);
+std::string reportJson(const TraceComparison& c, const ReportContext& context);

@@ -191,6 +191,24 @@ bool parseTraceUnits(const std::string& name, TraceUnits& units) {
     return true;
 }
 
+std::string parsePxPerM(const std::string& text, double& pxPerM) {
+    static constexpr limits::Range kPxPerM{1e-6, 1e9, "px/m"};
+    return limits::textViolation(text, kPxPerM, pxPerM);
+}
+
+std::string parsePxOrigin(const std::string& text, Vec2& origin) {
+    const std::size_t comma = text.find(',');
+    if (comma == std::string::npos) return "must be X,Y in pixels, e.g. 40,30";
+    Vec2 v;
+    for (int k = 0; k < 2; ++k) {
+        const std::string part = k == 0 ? text.substr(0, comma) : text.substr(comma + 1);
+        if (std::string p = limits::textViolation(part, limits::kMagnitude, v[k]); !p.empty())
+            return p;
+    }
+    origin = v;
+    return "";
+}
+
 std::string traceBlockName(const Scene& scene, int index) {
     const std::string& name = scene.blocks[static_cast<std::size_t>(index)].name;
     return name.empty() ? "blocks[" + std::to_string(index) + "]" : name;
@@ -330,8 +348,9 @@ TraceResult readTrace(std::istream& in, const std::string& source, const Scene& 
                             ": expected " + inQuotes(traceBlockName(scene, i) + "_x") + ", " +
                             inQuotes(traceBlockName(scene, i) + "_y") + ", " +
                             inQuotes(traceBlockName(scene, i) + "_vx") + " and " +
-                            inQuotes(traceBlockName(scene, i) + "_vy") + " (the header's columns are separated by " +
-                            separatorName(separator) + ")");
+                            inQuotes(traceBlockName(scene, i) + "_vy") +
+                            " (the header's columns are separated by " + separatorName(separator) +
+                            ")");
         }
         std::array<std::size_t, 4> cols{};
         for (int k = 0; k < 4; ++k) {

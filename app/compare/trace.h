@@ -39,6 +39,10 @@ struct TraceUnitsSpec {
 
 // "si" | "gxp"; false (and `units` left alone) for anything else.
 bool parseTraceUnits(const std::string& name, TraceUnits& units);
+// The gxp flags' values, as sandbox-cli compare and the app's --compare read them: "" when good
+// (stored), otherwise what they must be. Pixels per metre from 1e-6 to 1e9; the origin "X,Y".
+std::string parsePxPerM(const std::string& text, double& pxPerM);
+std::string parsePxOrigin(const std::string& text, Vec2& origin);
 
 // One row: the state of each traced block after `frame` frames (frame 0: the start).
 struct TraceRow {

@@ -45,7 +45,7 @@ constexpr Meaning kMeanings[] = {
      nullptr},
     {ChangeKind::Resolve, static_cast<int>(Resolve::Momentum),
      "your engine uses the momentum formula u = (m1·v1 + m2·v2)/(m1 + m2), v' = u - C·(v - u)",
-     "Collisions on a Line – Full Formula"},
+     "Collisions on a Line - Full Formula"},
     {ChangeKind::Resolve, static_cast<int>(Resolve::Reflect),
      "your blocks each reverse their own velocity, v' = -C·v, as off a wall: without Newton, "
      "momentum is not kept when two moving blocks meet",

@@ -62,7 +62,7 @@ TEST(Compare, TheReferencesOwnTraceIsTheSame) {
         const Scene scene = loadScene(name);
         const WorldSettings ref = referenceSettings(scene, std::nullopt);
         const Trace trace = traceOf(scene, ref, 300);
-        const Comparison c = compareTrace(scene, ref, trace, traceTolerance(scene, ref.dt));
+        const TraceComparison c = compareTrace(scene, ref, trace, traceTolerance(scene, ref.dt));
         EXPECT_TRUE(c.same()) << name;
         EXPECT_EQ(c.match.maxPositionError, 0.0) << name; // bit for bit
         EXPECT_EQ(c.match.maxVelocityError, 0.0) << name;
@@ -78,7 +78,7 @@ TEST(Compare, SinglePrecisionRoundingIsTheSame) {
         for (Vec2& p : row.position) p = {static_cast<float>(p.x), static_cast<float>(p.y)};
         for (Vec2& v : row.velocity) v = {static_cast<float>(v.x), static_cast<float>(v.y)};
     });
-    const Comparison c = compareTrace(scene, ref, trace, traceTolerance(scene, ref.dt));
+    const TraceComparison c = compareTrace(scene, ref, trace, traceTolerance(scene, ref.dt));
     EXPECT_TRUE(c.same());
     EXPECT_GT(c.match.maxPositionError, 0.0);
     EXPECT_LT(c.match.maxPositionError, 1e-5); // half an ulp of a float near 12 m, at most
@@ -91,7 +91,7 @@ TEST(Compare, TheFirstDifferenceHasItsFrameBlockAndSize) {
     const Trace trace = traceOf(scene, ref, 100, [](TraceRow& row) {
         if (row.frame >= 20) row.position[1].y += 0.002;
     });
-    const Comparison c = compareTrace(scene, ref, trace, traceTolerance(scene, ref.dt));
+    const TraceComparison c = compareTrace(scene, ref, trace, traceTolerance(scene, ref.dt));
     ASSERT_FALSE(c.same());
     const Difference& d = c.match.first();
     EXPECT_EQ(d.frame, 20);
@@ -112,7 +112,7 @@ TEST(Compare, ARestingBlocksVelocityIsJudgedApartFromItsPosition) {
     const Trace trace = traceOf(scene, ref, 120, [&](TraceRow& row) {
         for (Vec2& v : row.velocity) v.y -= gdt;
     });
-    const Comparison c = compareTrace(scene, ref, trace, traceTolerance(scene, ref.dt));
+    const TraceComparison c = compareTrace(scene, ref, trace, traceTolerance(scene, ref.dt));
     EXPECT_TRUE(c.same());
     EXPECT_TRUE(c.match.resting.found());
     EXPECT_EQ(c.match.resting.frame, 1);
@@ -133,7 +133,7 @@ TEST(Compare, AVariantIsDiagnosedWithTheLecturesWords) {
     student.method = Method::TurnBased;
     student.set(Mistake::MoveBack, true);
     const Trace trace = traceOf(scene, student, 60);
-    const Comparison c = compareTrace(scene, ref, trace, traceTolerance(scene, ref.dt));
+    const TraceComparison c = compareTrace(scene, ref, trace, traceTolerance(scene, ref.dt));
     ASSERT_FALSE(c.same());
     ASSERT_FALSE(c.explaining.empty());
     EXPECT_EQ(variantName(c.explaining.front().variant.changes),
@@ -162,7 +162,7 @@ TEST(Compare, NothingExplainsAnInventedTrace) {
         row.position[0].y += 0.01 * static_cast<double>(row.frame);
         row.velocity[0].y = 0.6;
     });
-    const Comparison c = compareTrace(scene, ref, trace, traceTolerance(scene, ref.dt));
+    const TraceComparison c = compareTrace(scene, ref, trace, traceTolerance(scene, ref.dt));
     ASSERT_FALSE(c.same());
     EXPECT_TRUE(c.explaining.empty());
     const std::vector<std::string> lines = diagnosisLines(c);
