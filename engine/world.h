@@ -1,4 +1,4 @@
-// The world model of SPEC.md: axis-aligned blocks with mass, closed bounds, gravity, one
+// The world model of docs/physics.md: axis-aligned blocks with mass, closed bounds, gravity, one
 // bounciness, and the lecture's three simulation methods. Plain data in arrays addressed by index.
 #pragma once
 
