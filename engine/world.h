@@ -127,6 +127,17 @@ struct World {
 // steps with k·A·|v|·h/m > 2 would grow without bound). The one place forces are summed.
 Vec2 accelerationOf(const WorldSettings& settings, const Block& block, double h);
 
+// Each dynamic block's share of the totals below.
+inline Vec2 momentumOf(const Block& b) {
+    return b.mass * b.velocity;
+}
+inline double kineticEnergyOf(const Block& b) {
+    return 0.5 * b.mass * lengthSquared(b.velocity);
+}
+inline double potentialEnergyOf(const World& world, const Block& b) {
+    return -b.mass * dot(world.settings.gravity, b.position - world.bounds.min);
+}
+
 // Totals over the dynamic blocks (kinematic and static blocks have infinite mass: left out).
 Vec2 totalMomentum(const World& world);     // kg·m/s, Σ m·v
 double kineticEnergy(const World& world);   // J, Σ m·|v|²/2
