@@ -53,6 +53,7 @@ struct Block {
     double mass = 1.0; // kg; kInfiniteMass for static and kinematic blocks
     Vec2 force;        // N, a constant force on a dynamic block (a thruster): a = F/m
     BodyKind kind = BodyKind::Dynamic;
+    double friction = -1.0; // μ of this block's faces (>= 0), or < 0: the world's (resolve.h)
 
     bool isDynamic() const { return kind == BodyKind::Dynamic; }
     Vec2 halfSize() const { return size * 0.5; }
@@ -80,6 +81,7 @@ struct WorldSettings {
     Integrator integrator = Integrator::SemiImplicitEuler;
     std::uint8_t mistakes = 0; // bit (1 << Mistake) set: that mistake is made (all off: correct)
     double drag = 0.0;         // k in kg/m^3: quadratic drag force -k·A·|v|·v, A = w·h (m^2)
+    double friction = 0.0;     // μ >= 0: Coulomb friction at every contact (resolve.h, "Friction")
 
     bool has(Mistake m) const { return (mistakes >> static_cast<int>(m)) & 1u; }
     void set(Mistake m, bool on) {
