@@ -99,7 +99,7 @@ void frame(void* arg) {
 } // namespace
 
 // For the browser tests and the page: the app's state as JSON (scene, method, paused, frames,
-// error). The text lives until the next call.
+// error, the open trace's first difference). The text lives until the next call.
 extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
     static std::string text;
     if (!gWeb) return "{}";
@@ -122,7 +122,11 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
            ",\"simTime\":" + std::to_string(app.world.time) + ",\"error\":" + quoted(app.error) +
            ",\"plots\":" + (app.show.plots ? "true" : "false") +
            ",\"inspector\":" + (app.show.inspector ? "true" : "false") + ",\"lessonStep\":" +
-           (app.lesson.active() ? std::to_string(app.lesson.current + 1) : std::string("0")) + "}";
+           (app.lesson.active() ? std::to_string(app.lesson.current + 1) : std::string("0")) +
+           ",\"traceFirstDifference\":" + // null: no trace open; -1: the same as the reference
+           (app.studentTrace.open() ? std::to_string(app.studentTrace.firstDifference())
+                                    : std::string("null")) +
+           "}";
     return text.c_str();
 }
 
