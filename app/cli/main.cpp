@@ -5,8 +5,8 @@
 #include "input_limits.h"
 #include "printable.h"
 #include "settings_table.h"
+#include "vocabulary.h" // the overlay table (header-only): its names, for lesson files
 
-#include "overlays.h" // the overlay table (header-only): its names, for lesson files
 #include <CLI/CLI.hpp>
 
 #include <csignal>

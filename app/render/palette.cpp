@@ -32,6 +32,16 @@ constexpr std::array<Color, 10> kPalette{{
     {0.55f, 0.65f, 0.98f, 1.0f}, // periwinkle
 }};
 
+// One per Method, in the engine's order (a new method is a row here).
+constexpr Color kMethodColors[] = {
+    {0.45f, 0.95f, 0.55f, 1.0f}, // perfect
+    {1.0f, 0.55f, 0.25f, 1.0f},  // move-and-correct
+    {0.80f, 0.50f, 1.0f, 1.0f},  // turn-based
+};
+static_assert(sizeof kMethodColors / sizeof kMethodColors[0] ==
+                  static_cast<std::size_t>(Method::Count),
+              "one colour per method");
+
 } // namespace
 
 std::uint32_t Color::packed() const {
@@ -76,6 +86,11 @@ Color staticBlockColor() {
 }
 Color kinematicBlockColor() {
     return {0.62f, 0.58f, 0.48f, 1.0f};
+}
+
+Color methodColor(Method method) {
+    const auto i = static_cast<std::size_t>(method);
+    return i < static_cast<std::size_t>(Method::Count) ? kMethodColors[i] : Color{1.0f, 1.0f, 1.0f};
 }
 
 namespace {

@@ -1,6 +1,8 @@
 // Colours of the scene: the block palette, "#rrggbb" parsing, and the fixed scene colours.
 #pragma once
 
+#include "world.h" // Method
+
 #include <cstdint>
 #include <string>
 
@@ -25,6 +27,9 @@ Color blockColor(int index, const std::string& sceneColor);
 // The colour of a static or kinematic block without a scene colour.
 Color staticBlockColor();
 Color kinematicBlockColor();
+// The colour of a method (one per Method, in the engine's order): its ghosts over the scene and
+// its rows in the side-by-side and cost tables, its line in the tradeoff chart.
+Color methodColor(Method method);
 
 // The scene's colours for a theme: dark (the default, for a dark room or a screen) or light (for
 // a bright room, where a projector washes dark colours out).

@@ -1,6 +1,6 @@
 // Speed versus accuracy in the app: the current scene's cost per step under each method and the
 // tradeoff chart (error against cost, log-log, from the quick sweep) drawn with the plot widget.
-// What is measured, and the background sweep, are App's CostMeasurement (teaching/cost.h).
+// What is measured, and the background sweep, are App's CostMeasurement (session/cost.h).
 #include "app_frame.h"
 #include "overlay_window.h"
 #include "plot_widget.h"
@@ -14,7 +14,7 @@ namespace {
 
 ImU32 engineColor(const std::string& engine) {
     Method m;
-    if (parseMethod(engine.c_str(), m)) return methodGhostColor(m).packed();
+    if (parseMethod(engine.c_str(), m)) return methodColor(m).packed();
     if (engine == "chipmunk") return IM_COL32(120, 200, 230, 255);
     return IM_COL32(200, 200, 210, 255); // box2d
 }
@@ -71,7 +71,7 @@ void drawCostOverlay(App& app) {
             const Method method = static_cast<Method>(m);
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            const Color c = methodGhostColor(method);
+            const Color c = methodColor(method);
             ImGui::TextColored(uiThemed(ImVec4(c.r, c.g, c.b, 1.0f)), "%s", methodName(method));
             ImGui::TableNextColumn();
             ImGui::Text("%.3f ms/step", cost.msPerStep(method));

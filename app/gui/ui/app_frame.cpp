@@ -194,7 +194,7 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
         for (int m = 0; m < static_cast<int>(Method::Count); ++m) {
             const Method method = static_cast<Method>(m);
             if (method == app.world.settings.method) continue;
-            view.ghosts.push_back({&app.methods.run(method).world, methodGhostColor(method)});
+            view.ghosts.push_back({&app.methods.run(method).world, methodColor(method)});
         }
     }
     view.blockColors.reserve(app.world.blocks.size());

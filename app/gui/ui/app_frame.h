@@ -35,5 +35,3 @@ void handleSceneMouse(App& app);
 // app.ui.takenOnScreen, for the overlays' labels drawn after it (placeSceneLabel).
 void drawSceneDecorations(App& app);
 // The teaching overlays: the table in overlays.h, drawn by drawOverlays (overlay_window.h).
-// The colour of a method's ghosts and rows (methods side by side, the tradeoff chart).
-Color methodGhostColor(Method method);
