@@ -21,7 +21,8 @@ std::string field(const char* key, const std::string& valueText) {
     return "\"" + std::string(key) + "\": " + valueText;
 }
 
-// A block on one line, its keys in the table's order (settings_table.h).
+// A block on one line, its keys in the table's order (settings_table.h), that of
+// docs/scene-format.md.
 std::string blockText(const BlockDef& b) {
     using settings_table::BlockKind;
     std::vector<std::string> fields;
