@@ -13,7 +13,7 @@
 namespace {
 
 std::string bodyName(const App& app, int index) {
-    return index < 0 ? std::string(wallName(index)) : blockDisplayName(app, index);
+    return index < 0 ? std::string(wallName(index)) : app.sim.blockDisplayName(index);
 }
 
 void formulaLine(const std::string& text, bool strong) {
@@ -29,12 +29,14 @@ void drawInspectorOverlay(App& app) {
     OverlayWindow overlay(app, OverlayId::inspector);
     if (!overlay) return;
     // A small window shows the formula first, the switch under it.
-    auto pauseSwitch = [&] { ImGui::Checkbox("pause on each collision", &app.pauseOnCollision); };
+    auto pauseSwitch = [&] {
+        ImGui::Checkbox("pause on each collision", &app.sim.pauseOnCollision);
+    };
     if (!overlay.compact()) pauseSwitch();
-    const auto& recent = app.telemetry.recent; // up to the scrubbed time while replaying
+    const auto& recent = app.sim.telemetry.recent; // up to the scrubbed time while replaying
     if (recent.empty()) {
-        dimText(isReplaying(app) ? "No collision up to this point of the replay."
-                                 : "No collision yet. Run the scene, or step with N.");
+        dimText(app.sim.isReplaying() ? "No collision up to this point of the replay."
+                                      : "No collision yet. Run the scene, or step with N.");
         if (overlay.compact()) pauseSwitch();
         return;
     }
@@ -47,9 +49,9 @@ void drawInspectorOverlay(App& app) {
     // The list of the last collisions, newest first.
     char preview[160];
     std::snprintf(preview, sizeof preview, "%s t = %.3f s: %s / %s (%c)",
-                  picked != 0        ? ""
-                  : isReplaying(app) ? "last so far,"
-                                     : "newest,",
+                  picked != 0             ? ""
+                  : app.sim.isReplaying() ? "last so far,"
+                                          : "newest,",
                   r.time, bodyName(app, r.block).c_str(), bodyName(app, r.other).c_str(),
                   r.axis == 0 ? 'x' : 'y');
     ImGui::SetNextItemWidth(-1.0f);
@@ -99,7 +101,7 @@ void drawInspectorOverlay(App& app) {
         ImGui::PopStyleColor();
     }
     if (overlay.compact()) pauseSwitch();
-    if (app.verbose && f.title != app.ui.inspectorLoggedTitle) {
+    if (app.log.verbose && f.title != app.ui.inspectorLoggedTitle) {
         app.ui.inspectorLoggedTitle = f.title;
         std::printf("inspector %s\ninspector %s\ninspector %s\ninspector %s\n",
                     printable(f.title, kPrintablePath).c_str(), f.u.c_str(), f.v1After.c_str(),

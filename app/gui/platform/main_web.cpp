@@ -30,7 +30,7 @@ struct WebApp {
     SceneRenderer renderer;
     AppConfig config;
     std::string storedSettings; // what local storage holds, to write only on change
-    double pixelRatio = 1.0;    // the ratio app.uiScale includes (the user's scale times it)
+    double pixelRatio = 1.0;    // the ratio app.view.uiScale includes (the user's scale times it)
     long long frames = 0;
 };
 
@@ -41,13 +41,13 @@ WebApp* gWeb = nullptr;
 void followPixelRatio(WebApp& w) {
     const double ratio = w.canvas.devicePixelRatio;
     if (ratio == w.pixelRatio) return;
-    setUiScale(w.app, static_cast<float>(w.app.uiScale / w.pixelRatio * ratio));
+    setUiScale(w.app, static_cast<float>(w.app.view.uiScale / w.pixelRatio * ratio));
     w.pixelRatio = ratio;
 }
 
 void saveSettings(WebApp& w) {
-    w.config.lastScene = w.app.scenePath;
-    w.config.uiScale = static_cast<float>(w.app.uiScale / w.pixelRatio);
+    w.config.lastScene = w.app.sim.scenePath;
+    w.config.uiScale = static_cast<float>(w.app.view.uiScale / w.pixelRatio);
     w.config.windowWidth = w.canvas.width;
     w.config.windowHeight = w.canvas.height;
     const std::string text = formatAppConfig(w.config);
@@ -63,13 +63,13 @@ void saveSettings(WebApp& w) {
 // Requests the app made of its platform, answered by the page.
 void answerRequests(WebApp& w) {
     App& app = w.app;
-    if (!app.savedFile.empty()) pageDownload(app.savedFile);
-    app.savedFile.clear();
-    if (app.filePickerRequested) pageOpenFilePicker();
-    app.filePickerRequested = false;
-    if (app.fullscreenRequested) pageToggleFullscreen();
-    app.fullscreenRequested = false;
-    app.quitRequested = false; // Esc: closing the tab is the browser's
+    if (!app.ui.savedFile.empty()) pageDownload(app.ui.savedFile);
+    app.ui.savedFile.clear();
+    if (app.ui.filePickerRequested) pageOpenFilePicker();
+    app.ui.filePickerRequested = false;
+    if (app.ui.fullscreenRequested) pageToggleFullscreen();
+    app.ui.fullscreenRequested = false;
+    app.ui.quitRequested = false; // Esc: closing the tab is the browser's
 }
 
 void frame(void* arg) {
@@ -78,14 +78,14 @@ void frame(void* arg) {
     double realSeconds = 0.0;
     canvasNewFrame(w.canvas, &realSeconds);
     followPixelRatio(w);
-    if (app.uiScale != uiCurrentScale()) {
-        uiApplyScale(app.uiScale);
+    if (app.view.uiScale != uiCurrentScale()) {
+        uiApplyScale(app.view.uiScale);
         uiRendererFontsChanged();
         uiRendererNewFrame(); // uploads the new atlas before this frame uses it
     }
     for (const std::string& path : canvasTakeOpenedFiles(w.canvas)) loadScene(app, path);
     for (const TouchGesture& g : canvasTakeGestures(w.canvas))
-        touchPanZoom(app, g.from, g.to, g.spreadRatio);
+        touchPanZoom(app.view, g.from, g.to, g.spreadRatio);
     ImGui::NewFrame();
     appFrame(app, canvasTakeKeyPresses(w.canvas), realSeconds, true);
     ImGui::Render();
@@ -115,13 +115,14 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
         }
         return out + "\"";
     };
-    text = "{\"scene\":" + quoted(app.scenePath) +
-           ",\"method\":" + quoted(methodName(app.world.settings.method)) +
-           ",\"paused\":" + (app.paused ? "true" : "false") +
+    text = "{\"scene\":" + quoted(app.sim.scenePath) +
+           ",\"method\":" + quoted(methodName(app.sim.world().settings.method)) +
+           ",\"paused\":" + (app.sim.paused ? "true" : "false") +
            ",\"frames\":" + std::to_string(gWeb->frames) +
-           ",\"simTime\":" + std::to_string(app.world.time) + ",\"error\":" + quoted(app.error) +
-           ",\"plots\":" + (app.show.plots ? "true" : "false") +
-           ",\"inspector\":" + (app.show.inspector ? "true" : "false") + ",\"lessonStep\":" +
+           ",\"simTime\":" + std::to_string(app.sim.world().time) +
+           ",\"error\":" + quoted(app.ui.messages.error) +
+           ",\"plots\":" + (app.view.show.plots ? "true" : "false") +
+           ",\"inspector\":" + (app.view.show.inspector ? "true" : "false") + ",\"lessonStep\":" +
            (app.lesson.active() ? std::to_string(app.lesson.current + 1) : std::string("0")) + "}";
     return text.c_str();
 }
@@ -136,8 +137,8 @@ int main() {
     std::string error;
     setupApp(app, Options{}, w.config.lastScene, &error);
     applyUrlParams(app, params);
-    app.browserFiles = true;
-    app.savePath = "saved_scene.json";
+    app.ui.browserFiles = true;
+    app.ui.savePath = "saved_scene.json";
 
     uiCreateContext(nullptr);
     const std::string ini = storageGet(kImGuiIniKey);
@@ -147,10 +148,10 @@ int main() {
         return 1;
     }
     w.pixelRatio = w.canvas.devicePixelRatio;
-    setUiScale(app, static_cast<float>(w.config.uiScale * w.pixelRatio));
-    uiApplyScale(app.uiScale);
+    setUiScale(app.view, static_cast<float>(w.config.uiScale * w.pixelRatio));
+    uiApplyScale(app.view.uiScale);
     uiRendererFontsChanged();
-    if (!w.renderer.init(&error)) app.error = "Shader error: " + error;
+    if (!w.renderer.init(&error)) app.ui.messages.error = "Shader error: " + error;
     emscripten_set_main_loop_arg(frame, &w, 0, 1);
     return 0;
 }

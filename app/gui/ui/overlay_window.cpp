@@ -14,14 +14,14 @@ constexpr float kWindowAlpha = 0.97f;
 
 void recordShownWindow(App& app, const char* name) {
     const ImVec2 p = ImGui::GetWindowPos(), s = ImGui::GetWindowSize();
-    app.shownWindows.push_back({name, {p.x, p.y, s.x, s.y}});
+    app.view.shownWindows.push_back({name, {p.x, p.y, s.x, s.y}});
 }
 
 bool beginOverlayWindow(App& app, OverlayId id) {
     const OverlayInfo& info = overlayInfo(id);
     const char* title = info.title;
-    bool* open = &(app.show.*info.flag);
-    const ScreenRect* docked = app.layout.find(title);
+    bool* open = &(app.view.show.*info.flag);
+    const ScreenRect* docked = app.view.layout.find(title);
     ImGuiWindowFlags flags = ImGuiWindowFlags_NoSavedSettings;
     if (docked) {
         ImGui::SetNextWindowPos(
@@ -45,21 +45,22 @@ bool beginOverlayWindow(App& app, OverlayId id) {
         std::string& pressed = app.ui.titlePressed;
         if (ImGui::IsWindowHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && onTitle)
             pressed = title;
-        if (pressed == title && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 8.0f * app.uiScale)) {
-            setFloating(app, title, true);
+        if (pressed == title &&
+            ImGui::IsMouseDragging(ImGuiMouseButton_Left, 8.0f * app.view.uiScale)) {
+            setFloating(app.view, title, true);
             pressed.clear();
         }
         if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) pressed.clear();
     } else {
         // Floating: kept on screen, and a button to put it back.
         const ImVec2 display = io.DisplaySize;
-        const float keep = 40.0f * app.uiScale;
+        const float keep = 40.0f * app.view.uiScale;
         ImVec2 p = pos;
         p.x = std::clamp(p.x, keep - size.x, display.x - keep);
         p.y = std::clamp(p.y, 0.0f, display.y - ImGui::GetFrameHeight());
         if (p.x != pos.x || p.y != pos.y) ImGui::SetWindowPos(p);
         if (visible) {
-            if (ImGui::SmallButton("dock")) setFloating(app, title, false);
+            if (ImGui::SmallButton("dock")) setFloating(app.view, title, false);
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("Put the window back beside the scene");
         }
     }
@@ -67,12 +68,12 @@ bool beginOverlayWindow(App& app, OverlayId id) {
 }
 
 OverlayWindow::OverlayWindow(App& app, OverlayId id) {
-    if (app.presentMode) return; // present mode: the scene only
+    if (app.view.presentMode) return; // present mode: the scene only
     begun_ = true;
     open_ = beginOverlayWindow(app, id);
     // A small docked window (every overlay on at 1280x720) draws its contents in the compact
     // font, baked at its own size (a scaled font would be blurred).
-    const ScreenRect* docked = app.layout.find(overlayInfo(id).title);
+    const ScreenRect* docked = app.view.layout.find(overlayInfo(id).title);
     if (open_ && docked && compactWindow(docked->width, docked->height, ImGui::GetFontSize())) {
         ImGui::PushFont(uiCompactFont());
         font_ = true;
@@ -93,7 +94,7 @@ void drawOverlays(App& app) {
 #undef SANDBOX_OVERLAY_DRAW
     static_assert(sizeof kDraw / sizeof kDraw[0] == kOverlayCount, "one draw function a row");
     for (std::size_t i = 0; i < kOverlayCount; ++i) {
-        if (app.show.*kOverlays[i].flag) kDraw[i](app);
+        if (app.view.show.*kOverlays[i].flag) kDraw[i](app);
     }
 }
 
