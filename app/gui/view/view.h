@@ -16,17 +16,10 @@
 #include <string>
 #include <vector>
 
-// Velocity arrows are on by default for scenes with at most this many blocks (more is clutter).
-constexpr std::size_t kVectorsByDefaultUpTo = 50;
-// Pixels (at UI scale 1) between the world's bounds and the scene's rectangle when the camera
-// fits the world: room for the axis numbers and, at the top, the status badge or caption.
-constexpr double kFitMarginPx = 36.0;
 // The UI scale's range (View section, --ui-scale, the settings file) and the scene labels' size
 // relative to the UI font.
-constexpr float kMinUiScale = 0.75f;
-constexpr float kMaxUiScale = 3.0f;
-constexpr float kMinLabelScale = 0.75f;
-constexpr float kMaxLabelScale = 2.5f;
+constexpr float kMinUiScale = 0.75f, kMaxUiScale = 3.0f;
+constexpr float kMinLabelScale = 0.75f, kMaxLabelScale = 2.5f;
 
 struct View {
     Camera camera;
@@ -65,11 +58,16 @@ Layout computeAppLayout(const View& view, bool captionBar, double displayWidth,
 // The part of the window the scene is drawn into (computeAppLayout's scene).
 ScreenRect sceneViewport(const View& view, bool captionBar, double displayWidth,
                          double displayHeight);
+// Pixels (at UI scale 1) between the world's bounds and the scene's rectangle when the camera
+// fits the world: room for the axis numbers and, at the top, the status badge or caption.
+constexpr double kFitMarginPx = 36.0;
 // Lays out the frame (view.layout), gives the camera the scene's rectangle and refits `world`
 // while view.autoFit holds; in the centre of mass's frame the camera follows it.
 void updateCamera(View& view, const World& world, bool captionBar, double displayWidth,
                   double displayHeight);
 
+// Velocity arrows are on by default for scenes with at most this many blocks (more is clutter).
+constexpr std::size_t kVectorsByDefaultUpTo = 50;
 // A scene was loaded: fit it again, and its arrows on by default when it has few blocks (unless
 // --show chose the overlays).
 void showNewScene(View& view, const Scene& scene);
