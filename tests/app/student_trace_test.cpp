@@ -2,7 +2,7 @@
 // first difference and shows the ghost overlay, the timeline and the inspector; the student's
 // blocks at a frame; a bad file keeps what was open and says where; a new scene closes it; the
 // command line's --compare.
-#include "app_state.h"
+#include "app.h"
 #include "options.h"
 
 #include <gtest/gtest.h>

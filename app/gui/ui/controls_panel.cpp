@@ -170,8 +170,8 @@ void compareSection(App& app) {
             st.units.originPx = {origin[0], origin[1]};
         tooltip("The pixel of the world's top-left corner (your walls' margin)");
     }
-    if (app.browserFiles) {
-        if (ImGui::Button("Open a trace...")) app.filePickerRequested = true;
+    if (app.ui.browserFiles) {
+        if (ImGui::Button("Open a trace...")) app.ui.filePickerRequested = true;
         tooltip("The browser's file dialog; or drop a .csv file on the page");
     } else {
         ImGui::InputTextWithHint("##trace", "path/to/my_trace.csv", &app.ui.tracePath);
