@@ -44,7 +44,7 @@ Run::Run(World start) : world(std::move(start)) {
 
 void setScene(App& app, const Scene& scene, const std::string& path) {
     app.scene = scene;
-    if (!app.overlaysChosen) app.show.vectors = scene.blocks.size() <= kVectorsByDefaultUpTo;
+    if (!app.overlaysChosen) app.show.vectors = vectorsByDefault(scene);
     app.scenePath = path;
     app.selected = -1;
     app.autoFit = true;
@@ -186,7 +186,9 @@ EscapeEffect pressEscape(App& app) {
         app.fullscreenRequested = true;
         break;
     case EscapeEffect::Nothing:
-        app.note = "Esc closes windows and leaves present mode or fullscreen; Ctrl+Q quits.";
+        app.note = app.inBrowser ? "Esc closes windows and leaves present mode or full screen."
+                                 : "Esc closes windows and leaves present mode or fullscreen; "
+                                   "Ctrl+Q quits.";
         break;
     }
     return e;
@@ -392,6 +394,10 @@ bool pathExists(const std::string& path) {
 
 std::string suggestedSavePath(const App& app) {
     return suggestSavePath(app.scene.name, saveDirectory(app), pathExists);
+}
+
+std::string browserDownloadPath(const App& app) {
+    return std::string(kBrowserDownloads) + "/" + sceneFileStem(app.scene.name) + ".json";
 }
 
 bool isFloating(const App& app, const std::string& title) {

@@ -39,6 +39,9 @@ struct BlockLabel {
 
 // Velocity arrows are on by default for scenes with at most this many blocks (more is clutter).
 constexpr std::size_t kVectorsByDefaultUpTo = 50;
+inline bool vectorsByDefault(const Scene& scene) {
+    return scene.blocks.size() <= kVectorsByDefaultUpTo;
+}
 
 // What one run owns: the world from a starting state and everything derived from stepping it.
 // A load or reset starts a new one from the scene, a jump on the timeline from the recorded
@@ -155,13 +158,14 @@ struct App : Run {
     // Requests to the window backend.
     bool quitRequested = false;
     bool fullscreenRequested = false;
-    std::string savePath;  // the Save field's path
     std::string openPath;  // the Open field's path
     std::string savedFile; // the file the last Save wrote (the browser offers it as a download)
     // The browser build: Open also offers the browser's file picker (and drag and drop), Save
-    // downloads the file.
-    bool browserFiles = false;
+    // downloads the file (named after the scene), there is no Quit (a tab is closed by the
+    // browser) and the keys the browser keeps are its own (KeyBinding::inBrowser).
+    bool inBrowser = false;
     bool filePickerRequested = false;
+    bool copyLinkRequested = false; // "Copy link": the link for what is on screen (browser/link.h)
     // The shipped scenes (the picker) and where they are.
     std::string scenesDir;
     std::vector<SceneEntry> sceneFiles;
@@ -274,6 +278,10 @@ bool saveCurrentScene(App& app, const std::string& path);
 // The path the Save dialog offers: from the scene's name, in the scene's own directory unless
 // that is the shipped scenes' (then the working directory), never an existing file.
 std::string suggestedSavePath(const App& app);
+// Where Save writes in the browser build, which then offers the file as a download of that name:
+// kBrowserDownloads/STEM.json, STEM from the scene's name ("bouncing_squares.json").
+inline constexpr const char* kBrowserDownloads = "/downloads";
+std::string browserDownloadPath(const App& app);
 // Where Save offers to write (and the plots' CSV exports go): the scene's own directory unless
 // that is the shipped scenes' (then the working directory).
 std::string saveDirectory(const App& app);

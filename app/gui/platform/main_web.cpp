@@ -6,6 +6,7 @@
 #include "app_frame.h"
 #include "app_setup.h"
 #include "canvas_web.h"
+#include "link.h"
 #include "mouse_tool.h"
 #include "options.h"
 #include "renderer.h"
@@ -16,7 +17,9 @@
 #include <emscripten.h>
 #include <imgui.h>
 
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 namespace {
@@ -30,7 +33,12 @@ struct WebApp {
     SceneRenderer renderer;
     AppConfig config;
     std::string storedSettings; // what local storage holds, to write only on change
-    double pixelRatio = 1.0;    // the ratio app.uiScale includes (the user's scale times it)
+    bool unsavedShown = false;  // what the page was last told (it asks before unloading then)
+    // The link the address bar shows (link.h): its query and the scene it carries ("" for none),
+    // and when that scene was last made (s on the page's clock).
+    std::string linkQuery, linkScene;
+    double linkSceneAt = -1e9;
+    double pixelRatio = 1.0; // the ratio app.uiScale includes (the user's scale times it)
     long long frames = 0;
 };
 
@@ -46,7 +54,9 @@ void followPixelRatio(WebApp& w) {
 }
 
 void saveSettings(WebApp& w) {
-    w.config.lastScene = w.app.scenePath;
+    // Only a shipped scene is there next time (opened, saved and linked ones live in memory).
+    for (const SceneEntry& s : w.app.sceneFiles)
+        if (s.path == w.app.scenePath) w.config.lastScene = s.path;
     w.config.uiScale = static_cast<float>(w.app.uiScale / w.pixelRatio);
     w.config.windowWidth = w.canvas.width;
     w.config.windowHeight = w.canvas.height;
@@ -60,6 +70,27 @@ void saveSettings(WebApp& w) {
     }
 }
 
+// The address bar follows what is on screen (history replaced, never pushed). The scene it
+// carries is made again at most every kLinkRefreshSeconds while paused; while the simulation
+// runs the blocks move every frame, so the link keeps the scene as it last was when paused.
+constexpr double kLinkRefreshSeconds = 0.5;
+
+void followLink(WebApp& w, double now) {
+    const App& app = w.app;
+    std::string scene = w.linkScene;
+    if (!linkCarriesScene(app)) {
+        scene.clear();
+    } else if (scene.empty() || (app.paused && now - w.linkSceneAt >= kLinkRefreshSeconds)) {
+        scene = sceneToJson(currentScene(app));
+        w.linkSceneAt = now;
+    }
+    std::string query = linkQuery(app);
+    if (query == w.linkQuery && scene == w.linkScene) return;
+    w.linkQuery.swap(query);
+    w.linkScene.swap(scene);
+    pageSetLink(w.linkQuery, w.linkScene);
+}
+
 // Requests the app made of its platform, answered by the page.
 void answerRequests(WebApp& w) {
     App& app = w.app;
@@ -67,9 +98,16 @@ void answerRequests(WebApp& w) {
     app.savedFile.clear();
     if (app.filePickerRequested) pageOpenFilePicker();
     app.filePickerRequested = false;
+    if (app.copyLinkRequested) // the scene as it is now, running or not
+        pageCopyLink(linkQuery(app), linkCarriesScene(app) ? sceneToJson(currentScene(app)) : "");
+    app.copyLinkRequested = false;
     if (app.fullscreenRequested) pageToggleFullscreen();
     app.fullscreenRequested = false;
     app.quitRequested = false; // Esc: closing the tab is the browser's
+    if (unsavedEdits(app) != w.unsavedShown) {
+        w.unsavedShown = !w.unsavedShown;
+        pageSetUnsavedEdits(w.unsavedShown);
+    }
 }
 
 void frame(void* arg) {
@@ -78,6 +116,7 @@ void frame(void* arg) {
     double realSeconds = 0.0;
     canvasNewFrame(w.canvas, &realSeconds);
     followPixelRatio(w);
+    app.fullscreen = w.canvas.fullscreen;
     if (app.uiScale != uiCurrentScale()) {
         uiApplyScale(app.uiScale);
         uiRendererFontsChanged();
@@ -92,11 +131,24 @@ void frame(void* arg) {
     appRender(app, w.renderer, w.canvas.width, w.canvas.height);
     uiRendererRender(ImGui::GetDrawData());
     answerRequests(w);
+    followLink(w, emscripten_get_now() / 1000.0);
     saveSettings(w);
     if (w.frames++ == 0) pageFirstFrameShown();
 }
 
 } // namespace
+
+// Called by web/index.html when "Copy link" is done: the note, or the error (a link too long).
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_link_copied(int chars, int copied) {
+    if (!gWeb) return;
+    App& app = gWeb->app;
+    if (chars > static_cast<int>(kMaxLinkChars))
+        app.error = linkTooLongMessage(static_cast<std::size_t>(chars));
+    else if (copied)
+        app.note = "Link copied (" + std::to_string(chars) + " characters)";
+    else
+        app.error = "The browser did not let the page copy the link: it is in the address bar.";
+}
 
 // For the browser tests and the page: the app's state as JSON (scene, method, paused, frames,
 // error). The text lives until the next call.
@@ -104,6 +156,12 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
     static std::string text;
     if (!gWeb) return "{}";
     const App& app = gWeb->app;
+    auto exact = [](double v) { // every digit, so a test compares exactly (null: infinite)
+        if (!std::isfinite(v)) return std::string("null");
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.17g", v);
+        return std::string(buffer);
+    };
     auto quoted = [](const std::string& s) {
         std::string out = "\"";
         for (const char c : s) {
@@ -122,7 +180,29 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
            ",\"simTime\":" + std::to_string(app.world.time) + ",\"error\":" + quoted(app.error) +
            ",\"plots\":" + (app.show.plots ? "true" : "false") +
            ",\"inspector\":" + (app.show.inspector ? "true" : "false") + ",\"lessonStep\":" +
-           (app.lesson.active() ? std::to_string(app.lesson.current + 1) : std::string("0")) + "}";
+           (app.lesson.active() ? std::to_string(app.lesson.current + 1) : std::string("0")) +
+           ",\"pixelsPerMetre\":" + exact(app.camera.pixelsPerMetre()) +
+           ",\"unsaved\":" + (unsavedEdits(app) ? "true" : "false") +
+           ",\"note\":" + quoted(app.note) +
+           ",\"fullscreen\":" + (app.fullscreen ? "true" : "false");
+    // Each block: its state ([x, y, vx, vy, width, height, mass], every digit) and where it is
+    // drawn ([left, top, width, height] in CSS pixels).
+    const double ratio = gWeb->canvas.devicePixelRatio;
+    std::string blocks, onScreen;
+    for (const Block& b : app.world.blocks) {
+        blocks += std::string(blocks.empty() ? "" : ",") + "[" + exact(b.position.x) + "," +
+                  exact(b.position.y) + "," + exact(b.velocity.x) + "," + exact(b.velocity.y) +
+                  "," + exact(b.size.x) + "," + exact(b.size.y) + "," + exact(b.mass) + "]";
+        const Vec2 corner = app.camera.worldToScreen(b.position - b.size * 0.5);
+        const double ppm = app.camera.pixelsPerMetre();
+        onScreen += std::string(onScreen.empty() ? "" : ",") + "[" + exact(corner.x / ratio) + "," +
+                    exact((corner.y - b.size.y * ppm) / ratio) + "," +
+                    exact(b.size.x * ppm / ratio) + "," + exact(b.size.y * ppm / ratio) + "]";
+    }
+    const ScreenRect& scene = app.layout.scene;
+    text += ",\"blocks\":[" + blocks + "],\"blocksOnScreen\":[" + onScreen +
+            "],\"sceneOnScreen\":[" + exact(scene.x / ratio) + "," + exact(scene.y / ratio) + "," +
+            exact(scene.width / ratio) + "," + exact(scene.height / ratio) + "]}";
     return text.c_str();
 }
 
@@ -132,12 +212,16 @@ int main() {
     App& app = w.app;
     w.storedSettings = storageGet(kSettingsKey);
     w.config = parseAppConfig(w.storedSettings);
-    const UrlParams params = parseUrlParams(pageQueryString());
+    UrlParams params = parseUrlParams(pageQueryString());
+    params.linkScene = pageLinkScene();
     std::string error;
     setupApp(app, Options{}, w.config.lastScene, &error);
     applyUrlParams(app, params);
-    app.browserFiles = true;
-    app.savePath = "saved_scene.json";
+    const std::string linkError = pageLinkError();
+    if (!linkError.empty()) app.error += (app.error.empty() ? "" : "\n") + linkError;
+    app.inBrowser = true;
+    std::error_code ec;
+    std::filesystem::create_directories(kBrowserDownloads, ec); // Save writes there
 
     uiCreateContext(nullptr);
     const std::string ini = storageGet(kImGuiIniKey);

@@ -14,7 +14,7 @@ void handleKeys(App& app, const std::vector<KeyPress>& keys) {
     // Typing into a text field (a file name) must not trigger hotkeys; Esc still closes dialogs.
     const bool typing = ImGui::GetIO().WantTextInput;
     for (const KeyPress& k : keys) {
-        const Action action = actionForKey(k.key, k.ctrl, k.shift, app.thrust.on);
+        const Action action = actionForKey(k.key, k.ctrl, k.shift, app.thrust.on, app.inBrowser);
         if (typing && action != Action::Escape) continue;
         if (action == Action::LessonDigit)
             lessonTypeDigit(app, digitOfKey(k.key));
@@ -112,6 +112,12 @@ void applyAction(App& app, Action action) {
         if (app.quitDialogOpen) logEvent(app, "quit: unsaved edits, asking");
         break;
     case Action::Save:
+        if (app.inBrowser) { // the browser's download asks where, and never overwrites
+            const std::string path = browserDownloadPath(app);
+            if (saveCurrentScene(app, path))
+                app.note = "Downloaded " + path.substr(path.rfind('/') + 1);
+            break;
+        }
         app.saveDialogOpen = true;
         app.saveDialogPath = suggestedSavePath(app);
         break;
