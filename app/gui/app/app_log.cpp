@@ -1,6 +1,7 @@
 #include "app_log.h"
 
 #include "app_state.h"
+#include "settings_table.h"
 
 #include <cstdio>
 
@@ -21,16 +22,7 @@ LoggedState snapshotForLog(const App& app) {
     s.slowMotion = app.slowMotion;
     s.overlays = app.show;
     s.uiVisible = app.uiVisible;
-    s.method = methodName(app.world.settings.method);
-    s.bounciness = app.world.settings.bounciness;
-    s.gravityX = app.world.settings.gravity.x;
-    s.gravityY = app.world.settings.gravity.y;
-    s.dt = app.world.settings.dt;
-    s.substeps = app.world.settings.substeps;
-    s.resolve = resolveName(app.world.settings.resolve);
-    s.integrator = integratorName(app.world.settings.integrator);
-    s.mistakes = app.world.settings.mistakes;
-    s.drag = app.world.settings.drag;
+    s.settings = app.world.settings;
     s.thrust = app.thrust.on;
     const Vec2 pushing = thrustForce(app);
     s.thrustX = pushing.x;
@@ -58,17 +50,11 @@ std::vector<std::string> describeChanges(const LoggedState& a, const LoggedState
     }
     if (a.trailLength > 0 && b.trailLength == 0) out.push_back("trails cleared");
     if (a.uiVisible != b.uiVisible) out.push_back("ui: " + onOff(b.uiVisible));
-    if (a.method != b.method) out.push_back("method: " + b.method);
-    if (a.bounciness != b.bounciness) out.push_back("bounciness: " + number(b.bounciness));
-    if (a.gravityX != b.gravityX || a.gravityY != b.gravityY) {
-        out.push_back("gravity: " + number(b.gravityX) + "," + number(b.gravityY));
+    for (const settings_table::WorldKey* row : settings_table::shownOrder()) {
+        if (!settings_table::same(*row, a.settings, b.settings))
+            out.push_back(row->key + std::string(": ") +
+                          settings_table::logValue(*row, b.settings));
     }
-    if (a.dt != b.dt) out.push_back("dt: " + number(b.dt));
-    if (a.substeps != b.substeps) out.push_back("substeps: " + std::to_string(b.substeps));
-    if (a.resolve != b.resolve) out.push_back("resolve: " + b.resolve);
-    if (a.integrator != b.integrator) out.push_back("integrator: " + b.integrator);
-    if (a.mistakes != b.mistakes) out.push_back("mistakes: " + std::to_string(b.mistakes));
-    if (a.drag != b.drag) out.push_back("drag: " + number(b.drag));
     if (a.thrust != b.thrust) out.push_back("thrust: " + onOff(b.thrust));
     if (a.thrustX != b.thrustX || a.thrustY != b.thrustY) {
         out.push_back(b.thrustX == 0.0 && b.thrustY == 0.0

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "overlays.h"
+#include "world.h"
 
 #include <string>
 #include <vector>
@@ -16,14 +17,7 @@ struct LoggedState {
     bool slowMotion = false;
     Overlays overlays;
     bool uiVisible = true;
-    std::string method;
-    double bounciness = 0.0;
-    double gravityX = 0.0, gravityY = 0.0;
-    double dt = 0.0;
-    int substeps = 0;
-    std::string resolve, integrator;
-    unsigned mistakes = 0;
-    double drag = 0.0;
+    WorldSettings settings; // each scene key of settings_table.h: "method: turn-based"
     bool thrust = false;
     double thrustX = 0.0, thrustY = 0.0; // N, the held thrust this frame (zero: none)
     double timeScale = 0.0;

@@ -5,6 +5,7 @@
 #include "overlays.h"
 #include "placement.h"
 #include "save_naming.h"
+#include "settings_table.h"
 #include "text_format.h"
 
 #include <algorithm>
@@ -313,11 +314,12 @@ Vec2 appliedForce(const App& app, int index) {
 }
 
 bool usesPhysicsSection(const App& app) {
-    const WorldSettings& s = app.scene.settings;
-    const WorldSettings d = defaultWorldSettings();
-    if (app.thrust.on || s.resolve != d.resolve || s.integrator != d.integrator ||
-        s.mistakes != d.mistakes || s.drag != d.drag) {
-        return true;
+    if (app.thrust.on) return true;
+    const WorldSettings defaults = defaultWorldSettings();
+    for (const settings_table::WorldKey& row : settings_table::worldKeys()) {
+        if (row.panel.section == settings_table::Section::Physics &&
+            !settings_table::same(row, app.scene.settings, defaults))
+            return true;
     }
     for (const BlockDef& b : app.scene.blocks) {
         if (b.force != Vec2{}) return true;

@@ -183,7 +183,7 @@ struct App : Run {
     bool verbose = false;
     LoggedState logged;
     bool loggedValid = false;
-    bool layoutLogged = false; // --verbose prints one slider's place once (for the window test)
+    bool layoutLogged = false; // --verbose prints the Simulation sliders' places once (window test)
 };
 
 // Width of the controls panel in pixels for a UI scale and window width.
@@ -265,8 +265,8 @@ int thrustedBlock(const App& app);
 Vec2 thrustForce(const App& app);
 // The force on block `index` this frame (N): its own constant force plus the thrust on it.
 Vec2 appliedForce(const App& app, int index);
-// True when the scene uses what the Physics section sets (a resolve, integrator, mistake or drag
-// other than the default, a block's force) or the thrust is on: the section opens for it.
+// True when the scene uses what the Physics section sets (a setting of the table's Physics section
+// other than its default, a block's force) or the thrust is on: the section opens for it.
 bool usesPhysicsSection(const App& app);
 // perfect -> move-and-correct -> turn-based -> perfect.
 void cycleMethod(App& app);
