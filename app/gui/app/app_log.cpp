@@ -1,6 +1,5 @@
 #include "app_log.h"
 
-#include "app_state.h"
 #include "settings_table.h"
 
 #include <cstdio>
@@ -15,25 +14,26 @@ std::string number(double v) {
 
 } // namespace
 
-LoggedState snapshotForLog(const App& app) {
+LoggedState snapshotForLog(const SimulationSession& sim, const View& view,
+                           const LessonSession& lesson) {
+    const WorldSettings& settings = sim.world().settings;
     LoggedState s;
-    s.scene = app.scenePath;
-    s.paused = app.paused;
-    s.slowMotion = app.slowMotion;
-    s.overlays = app.show;
-    s.uiVisible = app.uiVisible;
-    s.settings = app.world.settings;
-    s.thrust = app.thrust.on;
-    const Vec2 pushing = thrustForce(app);
+    s.scene = sim.scenePath;
+    s.paused = sim.paused;
+    s.slowMotion = sim.slowMotion;
+    s.overlays = view.show;
+    s.uiVisible = view.uiVisible;
+    s.settings = settings;
+    s.thrust = sim.thrust.on;
+    const Vec2 pushing = sim.thrustForce();
     s.thrustX = pushing.x;
     s.thrustY = pushing.y;
-    s.timeScale = app.timeScale;
-    s.uiScale = app.uiScale;
-    s.blocks = static_cast<int>(app.world.blocks.size());
-    s.selected = app.selected;
-    s.trailLength = app.trails.length();
-    if (app.lesson.active())
-        s.lesson = lessonHeading(app.lesson) + (app.lesson.revealed ? " (answer)" : "");
+    s.timeScale = sim.timeScale;
+    s.uiScale = view.uiScale;
+    s.blocks = static_cast<int>(sim.world().blocks.size());
+    s.selected = sim.selected;
+    s.trailLength = sim.run.trails.length();
+    if (lesson.active()) s.lesson = lessonHeading(lesson) + (lesson.revealed ? " (answer)" : "");
     return s;
 }
 

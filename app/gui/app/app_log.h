@@ -3,13 +3,14 @@
 // a slider acted, and lets a lecturer keep a record of a session.
 #pragma once
 
+#include "lesson_session.h"
 #include "overlays.h"
+#include "simulation_session.h"
+#include "view.h"
 #include "world.h"
 
 #include <string>
 #include <vector>
-
-struct App;
 
 struct LoggedState {
     std::string scene;
@@ -28,6 +29,15 @@ struct LoggedState {
     std::string lesson; // "3 / 20 · title", with " (answer)" once revealed
 };
 
-LoggedState snapshotForLog(const App& app);
+// --verbose, and what it compares with.
+struct VerboseLog {
+    bool verbose = false; // print state changes to stdout
+    LoggedState last;     // the state at the last frame logged
+    bool lastValid = false;
+    bool layoutLogged = false; // the Simulation sliders' places printed once (window test)
+};
+
+LoggedState snapshotForLog(const SimulationSession& sim, const View& view,
+                           const LessonSession& lesson);
 // The lines describing what changed from `before` to `after` ("paused", "method: turn-based").
 std::vector<std::string> describeChanges(const LoggedState& before, const LoggedState& after);

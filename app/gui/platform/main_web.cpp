@@ -38,7 +38,7 @@ struct WebApp {
     // and when that scene was last made (s on the page's clock).
     std::string linkQuery, linkScene;
     double linkSceneAt = -1e9;
-    double pixelRatio = 1.0; // the ratio app.uiScale includes (the user's scale times it)
+    double pixelRatio = 1.0; // the ratio app.view.uiScale includes (the user's scale times it)
     long long frames = 0;
 };
 
@@ -49,15 +49,15 @@ WebApp* gWeb = nullptr;
 void followPixelRatio(WebApp& w) {
     const double ratio = w.canvas.devicePixelRatio;
     if (ratio == w.pixelRatio) return;
-    setUiScale(w.app, static_cast<float>(w.app.uiScale / w.pixelRatio * ratio));
+    setUiScale(w.app.view, static_cast<float>(w.app.view.uiScale / w.pixelRatio * ratio));
     w.pixelRatio = ratio;
 }
 
 void saveSettings(WebApp& w) {
     // Only a shipped scene is there next time (opened, saved and linked ones live in memory).
-    for (const SceneEntry& s : w.app.sceneFiles)
-        if (s.path == w.app.scenePath) w.config.lastScene = s.path;
-    w.config.uiScale = static_cast<float>(w.app.uiScale / w.pixelRatio);
+    for (const SceneEntry& s : w.app.shipped.scenes)
+        if (s.path == w.app.sim.scenePath) w.config.lastScene = s.path;
+    w.config.uiScale = static_cast<float>(w.app.view.uiScale / w.pixelRatio);
     w.config.windowWidth = w.canvas.width;
     w.config.windowHeight = w.canvas.height;
     const std::string text = formatAppConfig(w.config);
@@ -80,8 +80,8 @@ void followLink(WebApp& w, double now) {
     std::string scene = w.linkScene;
     if (!linkCarriesScene(app)) {
         scene.clear();
-    } else if (scene.empty() || (app.paused && now - w.linkSceneAt >= kLinkRefreshSeconds)) {
-        scene = sceneToJson(currentScene(app));
+    } else if (scene.empty() || (app.sim.paused && now - w.linkSceneAt >= kLinkRefreshSeconds)) {
+        scene = sceneToJson(app.sim.currentScene());
         w.linkSceneAt = now;
     }
     std::string query = linkQuery(app);
@@ -94,17 +94,18 @@ void followLink(WebApp& w, double now) {
 // Requests the app made of its platform, answered by the page.
 void answerRequests(WebApp& w) {
     App& app = w.app;
-    if (!app.savedFile.empty()) pageDownload(app.savedFile);
-    app.savedFile.clear();
-    if (app.filePickerRequested) pageOpenFilePicker();
-    app.filePickerRequested = false;
-    if (app.copyLinkRequested) // the scene as it is now, running or not
-        pageCopyLink(linkQuery(app), linkCarriesScene(app) ? sceneToJson(currentScene(app)) : "");
-    app.copyLinkRequested = false;
-    if (app.fullscreenRequested) pageToggleFullscreen();
-    app.fullscreenRequested = false;
-    app.quitRequested = false; // Esc: closing the tab is the browser's
-    if (unsavedEdits(app) != w.unsavedShown) {
+    if (!app.ui.savedFile.empty()) pageDownload(app.ui.savedFile);
+    app.ui.savedFile.clear();
+    if (app.ui.filePickerRequested) pageOpenFilePicker();
+    app.ui.filePickerRequested = false;
+    if (app.ui.copyLinkRequested) // the scene as it is now, running or not
+        pageCopyLink(linkQuery(app),
+                     linkCarriesScene(app) ? sceneToJson(app.sim.currentScene()) : "");
+    app.ui.copyLinkRequested = false;
+    if (app.ui.fullscreenRequested) pageToggleFullscreen();
+    app.ui.fullscreenRequested = false;
+    app.ui.quitRequested = false; // Esc: closing the tab is the browser's
+    if (app.sim.unsavedEdits() != w.unsavedShown) {
         w.unsavedShown = !w.unsavedShown;
         pageSetUnsavedEdits(w.unsavedShown);
     }
@@ -116,15 +117,15 @@ void frame(void* arg) {
     double realSeconds = 0.0;
     canvasNewFrame(w.canvas, &realSeconds);
     followPixelRatio(w);
-    app.fullscreen = w.canvas.fullscreen;
-    if (app.uiScale != uiCurrentScale()) {
-        uiApplyScale(app.uiScale);
+    app.view.fullscreen = w.canvas.fullscreen;
+    if (app.view.uiScale != uiCurrentScale()) {
+        uiApplyScale(app.view.uiScale);
         uiRendererFontsChanged();
         uiRendererNewFrame(); // uploads the new atlas before this frame uses it
     }
     for (const std::string& path : canvasTakeOpenedFiles(w.canvas)) openFile(app, path);
     for (const TouchGesture& g : canvasTakeGestures(w.canvas))
-        touchPanZoom(app, g.from, g.to, g.spreadRatio);
+        touchPanZoom(app.view, g.from, g.to, g.spreadRatio);
     ImGui::NewFrame();
     appFrame(app, canvasTakeKeyPresses(w.canvas), realSeconds, true);
     ImGui::Render();
@@ -143,11 +144,12 @@ extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_link_copied(int chars, int copi
     if (!gWeb) return;
     App& app = gWeb->app;
     if (chars > static_cast<int>(kMaxLinkChars))
-        app.error = linkTooLongMessage(static_cast<std::size_t>(chars));
+        app.ui.messages.error = linkTooLongMessage(static_cast<std::size_t>(chars));
     else if (copied)
-        app.note = "Link copied (" + std::to_string(chars) + " characters)";
+        app.ui.messages.note = "Link copied (" + std::to_string(chars) + " characters)";
     else
-        app.error = "The browser did not let the page copy the link: it is in the address bar.";
+        app.ui.messages.error =
+            "The browser did not let the page copy the link: it is in the address bar.";
 }
 
 // For the browser tests and the page: the app's state as JSON (scene, method, paused, frames,
@@ -173,18 +175,19 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
         }
         return out + "\"";
     };
-    text = "{\"scene\":" + quoted(app.scenePath) +
-           ",\"method\":" + quoted(methodName(app.world.settings.method)) +
-           ",\"paused\":" + (app.paused ? "true" : "false") +
+    text = "{\"scene\":" + quoted(app.sim.scenePath) +
+           ",\"method\":" + quoted(methodName(app.sim.world().settings.method)) +
+           ",\"paused\":" + (app.sim.paused ? "true" : "false") +
            ",\"frames\":" + std::to_string(gWeb->frames) +
-           ",\"simTime\":" + std::to_string(app.world.time) + ",\"error\":" + quoted(app.error) +
-           ",\"plots\":" + (app.show.plots ? "true" : "false") +
-           ",\"inspector\":" + (app.show.inspector ? "true" : "false") + ",\"lessonStep\":" +
+           ",\"simTime\":" + std::to_string(app.sim.world().time) +
+           ",\"error\":" + quoted(app.ui.messages.error) +
+           ",\"plots\":" + (app.view.show.plots ? "true" : "false") +
+           ",\"inspector\":" + (app.view.show.inspector ? "true" : "false") + ",\"lessonStep\":" +
            (app.lesson.active() ? std::to_string(app.lesson.current + 1) : std::string("0")) +
-           ",\"pixelsPerMetre\":" + exact(app.camera.pixelsPerMetre()) +
-           ",\"unsaved\":" + (unsavedEdits(app) ? "true" : "false") +
-           ",\"note\":" + quoted(app.note) +
-           ",\"fullscreen\":" + (app.fullscreen ? "true" : "false") +
+           ",\"pixelsPerMetre\":" + exact(app.view.camera.pixelsPerMetre()) +
+           ",\"unsaved\":" + (app.sim.unsavedEdits() ? "true" : "false") +
+           ",\"note\":" + quoted(app.ui.messages.note) +
+           ",\"fullscreen\":" + (app.view.fullscreen ? "true" : "false") +
            ",\"traceFirstDifference\":" + // null: no trace open; -1: the same as the reference
            (app.studentTrace.open() ? std::to_string(app.studentTrace.firstDifference())
                                     : std::string("null"));
@@ -192,17 +195,17 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
     // drawn ([left, top, width, height] in CSS pixels).
     const double ratio = gWeb->canvas.devicePixelRatio;
     std::string blocks, onScreen;
-    for (const Block& b : app.world.blocks) {
+    for (const Block& b : app.sim.world().blocks) {
         blocks += std::string(blocks.empty() ? "" : ",") + "[" + exact(b.position.x) + "," +
                   exact(b.position.y) + "," + exact(b.velocity.x) + "," + exact(b.velocity.y) +
                   "," + exact(b.size.x) + "," + exact(b.size.y) + "," + exact(b.mass) + "]";
-        const Vec2 corner = app.camera.worldToScreen(b.position - b.size * 0.5);
-        const double ppm = app.camera.pixelsPerMetre();
+        const Vec2 corner = app.view.camera.worldToScreen(b.position - b.size * 0.5);
+        const double ppm = app.view.camera.pixelsPerMetre();
         onScreen += std::string(onScreen.empty() ? "" : ",") + "[" + exact(corner.x / ratio) + "," +
                     exact((corner.y - b.size.y * ppm) / ratio) + "," +
                     exact(b.size.x * ppm / ratio) + "," + exact(b.size.y * ppm / ratio) + "]";
     }
-    const ScreenRect& scene = app.layout.scene;
+    const ScreenRect& scene = app.view.layout.scene;
     text += ",\"blocks\":[" + blocks + "],\"blocksOnScreen\":[" + onScreen +
             "],\"sceneOnScreen\":[" + exact(scene.x / ratio) + "," + exact(scene.y / ratio) + "," +
             exact(scene.width / ratio) + "," + exact(scene.height / ratio) + "]}";
@@ -221,8 +224,9 @@ int main() {
     setupApp(app, Options{}, w.config.lastScene, &error);
     applyUrlParams(app, params);
     const std::string linkError = pageLinkError();
-    if (!linkError.empty()) app.error += (app.error.empty() ? "" : "\n") + linkError;
-    app.inBrowser = true;
+    if (!linkError.empty())
+        app.ui.messages.error += (app.ui.messages.error.empty() ? "" : "\n") + linkError;
+    app.ui.inBrowser = true;
     std::error_code ec;
     std::filesystem::create_directories(kBrowserDownloads, ec); // Save writes there
 
@@ -234,10 +238,10 @@ int main() {
         return 1;
     }
     w.pixelRatio = w.canvas.devicePixelRatio;
-    setUiScale(app, static_cast<float>(w.config.uiScale * w.pixelRatio));
-    uiApplyScale(app.uiScale);
+    setUiScale(app.view, static_cast<float>(w.config.uiScale * w.pixelRatio));
+    uiApplyScale(app.view.uiScale);
     uiRendererFontsChanged();
-    if (!w.renderer.init(&error)) app.error = "Shader error: " + error;
+    if (!w.renderer.init(&error)) app.ui.messages.error = "Shader error: " + error;
     emscripten_set_main_loop_arg(frame, &w, 0, 1);
     return 0;
 }

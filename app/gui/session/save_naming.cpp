@@ -54,8 +54,17 @@ std::string suggestSavePath(const std::string& sceneName, const std::string& dir
     return first;
 }
 
+bool pathExists(const std::string& path) {
+    std::error_code ec;
+    return fs::exists(path, ec);
+}
+
 bool settingsDiffer(const WorldSettings& a, const WorldSettings& b) {
     return !settings_table::sameSceneSettings(a, b);
+}
+
+bool hasUnsavedEdits(bool blocksEdited, const WorldSettings& scene, const WorldSettings& now) {
+    return blocksEdited || settingsDiffer(scene, now);
 }
 
 std::string changedSettingsNote(const WorldSettings& original, const WorldSettings& now) {
