@@ -1,5 +1,5 @@
-// sandbox-cli: simulate or validate scene files without a window (SPEC.md, "Command-line
-// contract"). Exit codes: 0 ok, 1 bad input (scene file or option value), 2 bad usage.
+// sandbox-cli: simulate or validate scene files without a window (docs/cli.md).
+// Exit codes: 0 ok, 1 bad input (scene file or option value), 2 bad usage.
 #include "analysis_commands.h"
 #include "commands.h"
 #include "input_limits.h"

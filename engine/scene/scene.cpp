@@ -1,4 +1,4 @@
-// Scene files, format v1 (SPEC.md, "Scene file format v1"): parsing with validation that names
+// Scene files, format v1 (docs/scene-format.md): parsing with validation that names
 // the place of every error. Saving and the conversion to and from World are in scene_save.cpp.
 #include "scene.h"
 

@@ -1,4 +1,4 @@
-// The command line shared by `sandbox` and `sandbox-offscreen` (SPEC's public contract):
+// The command line shared by `sandbox` and `sandbox-offscreen` (docs/cli.md, public):
 //   sandbox [SCENE] [--screenshot FILE] [--frames N] [--size WxH] [--show LIST]
 //           [--record DIR] [--benchmark-frames N] [--ui-scale S] [--verbose] [--present]
 //           [--layout-json FILE] [--frame world|com] [--theme dark|light] [--timeline-frame N]
