@@ -225,6 +225,7 @@ void printJson(const Scene& scene, const World& world, const StepTotals& t, bool
     j["sim_time"] = world.time;
     j["steps"] = t.steps;
     j["collisions"] = t.collisions;
+    j["contacts"] = t.contacts;
     j["max_penetration"] = t.maxPenetration;
     j["momentum"] = vecJson(totalMomentum(world));
     j["kinetic_energy"] = kineticEnergy(world);
@@ -261,6 +262,7 @@ void printText(const Scene& scene, const World& world, const StepTotals& t, bool
         << "steps             " << t.steps << "  (" << world.time << " s simulated"
         << (interrupted ? "; interrupted by Ctrl+C" : "") << ")\n"
         << "collisions        " << t.collisions << "\n"
+        << "contacts          " << t.contacts << "  (resting, by the rest rule)\n"
         << "momentum          " << totalMomentum(world) << " kg m/s\n"
         << "kinetic energy    " << kineticEnergy(world) << " J\n"
         << "potential energy  " << potentialEnergy(world) << " J\n"
@@ -347,33 +349,79 @@ int validateCommand(const std::string& path, std::ostream& out, std::ostream& er
     return kExitOk;
 }
 
+namespace {
+
+std::string blockLabel(const LessonStep& step, std::size_t b) {
+    return step.scene.blocks[b].name.empty() ? "#" + std::to_string(b) : step.scene.blocks[b].name;
+}
+
+// One step as `lesson --json` lists it: where it pauses, what it counted, and the seconds of
+// motion the class sees from its setup (t = 0) to that moment at its time scale.
+nlohmann::ordered_json stepJson(std::size_t number, const LessonStep& step, const StepRun& run,
+                                const std::vector<std::string>& failures) {
+    nlohmann::ordered_json j;
+    j["step"] = number;
+    j["title"] = step.title;
+    j["method"] = methodName(run.world.settings.method);
+    j["reached"] = run.reached;
+    j["pause_time"] = run.world.time;
+    j["frame"] = run.progress.frames;
+    j["collisions"] = run.progress.collisions;
+    j["contacts"] = run.progress.contacts;
+    j["time_scale"] = step.timeScale;
+    j["motion_seconds"] = run.world.time / step.timeScale;
+    j["question"] = step.question;
+    nlohmann::ordered_json blocks = nlohmann::ordered_json::array();
+    for (std::size_t b = 0; b < run.world.blocks.size(); ++b) {
+        nlohmann::ordered_json block;
+        block["name"] = blockLabel(step, b);
+        block["position"] = vecJson(run.world.blocks[b].position);
+        block["velocity"] = vecJson(run.world.blocks[b].velocity);
+        blocks.push_back(std::move(block));
+    }
+    j["blocks"] = std::move(blocks);
+    j["failures"] = failures;
+    return j;
+}
+
+} // namespace
+
 int lessonCommand(const std::string& path, std::ostream& out, std::ostream& err,
-                  const LessonContext& lessons) {
+                  const LessonContext& lessons, bool json) {
     const LessonResult loaded = loadLessonFile(path, lessons);
     if (!loaded.lesson) {
         err << loaded.error.text() << "\n";
         return kExitBadInput;
     }
     const Lesson& lesson = *loaded.lesson;
-    out << lesson.name << ": " << lesson.steps.size() << " steps\n";
+    nlohmann::ordered_json steps = nlohmann::ordered_json::array();
+    if (!json) out << lesson.name << ": " << lesson.steps.size() << " steps\n";
     std::vector<std::string> failures;
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
         const LessonStep& step = lesson.steps[i];
         const StepRun run = runStepToPause(step);
-        out << i + 1 << ". " << step.title << ": " << (run.reached ? "paused" : "NOT PAUSED")
-            << " at t = " << run.world.time << " s (frame " << run.progress.frames << "), "
-            << run.progress.collisions << " collisions, " << methodName(run.world.settings.method)
-            << "\n";
-        for (std::size_t b = 0; b < run.world.blocks.size() && b < 12; ++b) {
-            const Block& block = run.world.blocks[b];
-            out << "     " << std::left << std::setw(14)
-                << (step.scene.blocks[b].name.empty() ? "#" + std::to_string(b)
-                                                      : step.scene.blocks[b].name)
-                << std::right << " position " << block.position << "  velocity " << block.velocity
-                << "\n";
-        }
         const std::vector<std::string> f = checkStep(step, run);
         failures.insert(failures.end(), f.begin(), f.end());
+        if (json) {
+            steps.push_back(stepJson(i + 1, step, run, f));
+            continue;
+        }
+        out << i + 1 << ". " << step.title << ": " << (run.reached ? "paused" : "NOT PAUSED")
+            << " at t = " << run.world.time << " s (frame " << run.progress.frames << "), "
+            << run.progress.collisions << " collisions, " << run.progress.contacts << " contacts, "
+            << methodName(run.world.settings.method) << "\n";
+        for (std::size_t b = 0; b < run.world.blocks.size() && b < 12; ++b) {
+            const Block& block = run.world.blocks[b];
+            out << "     " << std::left << std::setw(14) << blockLabel(step, b) << std::right
+                << " position " << block.position << "  velocity " << block.velocity << "\n";
+        }
+    }
+    if (json) {
+        nlohmann::ordered_json j;
+        j["name"] = lesson.name;
+        j["steps"] = std::move(steps);
+        // ASCII only: names are \u-escaped, so no byte of them can act on a terminal.
+        out << j.dump(-1, ' ', true, nlohmann::ordered_json::error_handler_t::replace) << "\n";
     }
     for (const std::string& f : failures) err << f << "\n";
     return failures.empty() ? kExitOk : kExitBadInput;

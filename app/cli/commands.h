@@ -50,6 +50,8 @@ int runCommand(const RunRequest& request, std::ostream& out, std::ostream& err);
 int validateCommand(const std::string& path, std::ostream& out, std::ostream& err,
                     const LessonContext& lessons = {});
 // Runs every step of a lesson to its pause point and prints, per step, where it paused and each
-// block's position and velocity there, then every failed expectation (exit 1 if any).
+// block's position and velocity there, then every failed expectation (exit 1 if any). With
+// `json`: one JSON object, each step's pause time, frame, collisions, contacts, time scale and
+// seconds of motion (pause time / time scale), its blocks there and its failures.
 int lessonCommand(const std::string& path, std::ostream& out, std::ostream& err,
-                  const LessonContext& lessons = {});
+                  const LessonContext& lessons = {}, bool json = false);

@@ -119,6 +119,10 @@ int main(int argc, char** argv) {
         "lesson", "Run every step of a lesson to its pause point: print where each paused and "
                   "the blocks there, then any failed expectation (exit 1).");
     lessonCmd->add_option("LESSON", lessonPath, "Lesson file (JSON)")->required();
+    bool lessonJson = false;
+    lessonCmd->add_flag("--json", lessonJson,
+                        "One JSON object: each step's pause time, frame, collisions, contacts, "
+                        "time scale, seconds of motion, blocks and failures");
 
     AnalysisRequest tradeoff;
     tradeoff.scenesDir = SANDBOX_SCENES_DIR;
@@ -164,7 +168,7 @@ int main(int argc, char** argv) {
         lessons.scenesDir = SANDBOX_SCENES_DIR;
         lessons.overlayNames = overlayNames();
         if (*validateCmd) return validateCommand(validatePath, std::cout, std::cerr, lessons);
-        if (*lessonCmd) return lessonCommand(lessonPath, std::cout, std::cerr, lessons);
+        if (*lessonCmd) return lessonCommand(lessonPath, std::cout, std::cerr, lessons, lessonJson);
         if (*tradeoffCmd) return tradeoffCommand(tradeoff, std::cout, std::cerr);
         if (*stabilityCmd) return stabilityCommand(stability, std::cout, std::cerr);
         auto given = [](CLI::Option* option, const std::string& value) {
