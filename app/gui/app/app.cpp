@@ -39,6 +39,7 @@ void setScene(App& app, const Scene& scene, const std::string& path) {
     app.sim.setScene(scene, path);
     showNewScene(app.view, scene);
     app.ui.typedWarning.clear();
+    closeTrace(app); // compared with another scene
     startedRun(app);
 }
 
@@ -57,6 +58,51 @@ bool loadScene(App& app, const std::string& path) {
 void resetScene(App& app) {
     app.sim.reset();
     startedRun(app);
+}
+
+bool openTrace(App& app, const std::string& path) {
+    if (const auto error = openStudentTrace(app.studentTrace, path, app.sim.scene,
+                                            app.sim.world().settings, app.studentTrace.units)) {
+        app.ui.messages.error = *error;
+        return false;
+    }
+    app.ui.messages.error.clear();
+    app.ui.tracePath = path;
+    // The reference runs from the scene's start, without the Tips' mistakes.
+    app.sim.world().settings = app.studentTrace.comparison->reference;
+    resetScene(app);
+    app.view.show.ghost = app.view.show.timeline = app.view.show.inspector = true;
+    goToFirstDifference(app);
+    app.ui.messages.note = "Your trace: " + studentTraceSummary(app.studentTrace) + ".";
+    return true;
+}
+
+bool compareTraceAgain(App& app) {
+    if (!app.studentTrace.open()) return false;
+    return openTrace(app, app.studentTrace.path);
+}
+
+bool goToFirstDifference(App& app) {
+    const std::int64_t frame = app.studentTrace.firstDifference();
+    if (frame < 0) return false;
+    const auto target = static_cast<std::uint64_t>(frame);
+    app.sim.paused = true;
+    if (!app.sim.history.empty() && target >= app.sim.history.firstFrame() &&
+        target <= app.sim.history.lastFrame())
+        return scrubTo(app, target);
+    if (app.sim.world().frame > target) resetScene(app);
+    while (app.sim.world().frame < target) stepSimulation(app);
+    return true;
+}
+
+void closeTrace(App& app) {
+    const TraceUnitsSpec units = app.studentTrace.units; // the section's choice stays
+    app.studentTrace = StudentTrace{};
+    app.studentTrace.units = units;
+}
+
+bool openFile(App& app, const std::string& path) {
+    return isTraceFile(path) ? openTrace(app, path) : loadScene(app, path);
 }
 
 void resetToFile(App& app) {

@@ -18,6 +18,7 @@
 #include "mouse_tool.h"
 #include "scene_library.h"
 #include "simulation_session.h"
+#include "student_trace.h"
 #include "view.h"
 
 #include <cstdint>
@@ -49,6 +50,7 @@ struct UiState {
     std::string saveDialogPath;
     std::string savePath;  // the Save field's path
     std::string openPath;  // the Open field's path
+    std::string tracePath; // the Compare section's path field
     std::string savedFile; // the file the last Save or export wrote (the browser downloads it)
     // The browser build: Open also offers the browser's file picker (and drag and drop), Save
     // downloads the file.
@@ -78,12 +80,29 @@ struct App {
     UiState ui;
     MouseTool mouse;
     ShippedFiles shipped;
+    // A student's trace opened on the scene (student_trace.h, docs/compare.md): the ghost
+    // overlay's outlines, the timeline's mark, the inspector's "your trace". A new scene closes it.
+    StudentTrace studentTrace;
     VerboseLog log;
 };
 
 // Loads `path` as the current scene (closing a lesson). On error, keeps the current scene, sets
 // the error message and returns false.
 bool loadScene(App& app, const std::string& path);
+// Opens `path` as a student's trace of the current scene (units: app.studentTrace.units) and
+// compares it with the reference (the current settings, the Tips' mistakes off): the run starts
+// again from the scene, goes to the first difference and pauses there, with the ghost overlay,
+// the timeline and the inspector shown. On error, keeps what was open, sets the error message
+// and returns false.
+bool openTrace(App& app, const std::string& path);
+// Compares the open trace again with the current settings (after the method was changed).
+bool compareTraceAgain(App& app);
+// Goes to the open trace's first difference (the timeline's frame, or the run started again and
+// stepped there) and pauses; false when there is none.
+bool goToFirstDifference(App& app);
+void closeTrace(App& app);
+// A dropped or picked file: a trace (.csv) or a scene.
+bool openFile(App& app, const std::string& path);
 // Uses an already parsed scene (tests, and the first scene when none can be loaded).
 void setScene(App& app, const Scene& scene, const std::string& path);
 // R (outside a lesson): SimulationSession::reset, seen from the run's start.

@@ -69,6 +69,12 @@ bool setupApp(App& app, const Options& options, const std::string& lastScene, st
     app.log.verbose = options.verbose;
     if (options.showGiven) applyShowSet(app.view, options.show);
     if (!openFirst(app, options, lastScene, error)) return false;
+    // --compare: the trace opened on that scene, at its first difference.
+    app.studentTrace.units = options.traceUnits;
+    if (!options.compareTrace.empty() && !openTrace(app, options.compareTrace)) {
+        if (error) *error = app.ui.messages.error;
+        return false;
+    }
     // --frame: the run has just started, so the camera follows from its start (the anchor the
     // run set stays; setViewFrame would anchor at the first frame drawn, after --frames N).
     if (options.frame) app.view.frame = *options.frame;

@@ -2,9 +2,11 @@
 //   sandbox [SCENE] [--screenshot FILE] [--frames N] [--size WxH] [--show LIST]
 //           [--record DIR] [--benchmark-frames N] [--ui-scale S] [--verbose] [--present]
 //           [--layout-json FILE] [--frame world|com] [--theme dark|light] [--timeline-frame N]
+//           [--compare TRACE.csv [--trace-units si|gxp --px-per-m N --px-origin X,Y]]
 #pragma once
 
 #include "overlays.h"
+#include "trace.h"
 #include "view_frame.h"
 
 #include <optional>
@@ -33,6 +35,10 @@ struct Options {
     std::optional<ViewFrame> frame; // --frame: start in this frame (a lesson's steps choose theirs)
     std::string theme;              // --theme dark|light; "": the saved setting (window) or dark
     long long timelineFrame = -1;   // offscreen: after --frames, back to this frame (the timeline)
+    // --compare FILE: a trace of the student's engine opened on the scene (docs/compare.md), in
+    // --trace-units (si, or gxp with --px-per-m and --px-origin).
+    std::string compareTrace;
+    TraceUnitsSpec traceUnits;
 };
 
 // Parses "WxH" (each 16..16384); false otherwise.

@@ -91,6 +91,7 @@ int runWindow(const Options& options, char** argv, int argc) {
                 std::printf("quit: unsaved edits, asking\n");
         }
         app.view.fullscreen = window.fullscreen;
+        for (const std::string& path : windowTakeDroppedFiles(window)) openFile(app, path);
         ImGui::NewFrame();
         appFrame(app, windowTakeKeyPresses(window), realSeconds, true);
         ImGui::Render();

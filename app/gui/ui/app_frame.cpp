@@ -207,6 +207,13 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
             scene.ghosts.push_back({&app.sim.run.methods.run(method).world, methodColor(method)});
         }
     }
+    // The ghost overlay: a student's blocks at this frame as outlines (docs/compare.md).
+    World yours;
+    if (app.view.show.ghost && app.studentTrace.open()) {
+        yours.blocks = app.sim.world().blocks;
+        if (app.studentTrace.ghostAt(static_cast<std::int64_t>(app.sim.world().frame), yours))
+            scene.ghosts.push_back({&yours, studentTraceColor()});
+    }
     scene.blockColors.reserve(app.sim.world().blocks.size());
     for (std::size_t i = 0; i < app.sim.world().blocks.size(); ++i) {
         scene.blockColors.push_back(app.sim.blockDisplayColor(static_cast<int>(i)));
