@@ -7,6 +7,7 @@
 #include "lesson_runner.h"
 #include "printable.h"
 #include "scene.h"
+#include "scene_json.h"
 #include "world.h"
 
 #include <nlohmann/json.hpp>
@@ -66,43 +67,11 @@ bool stopAtTime(double t, const WorldSettings& s, const char* what, const std::s
 // naming the option and the limit on a bad value.
 bool applyOptions(const RunRequest& r, std::optional<double> duration, WorldSettings& s,
                   StopRule& stop, std::ostream& err) {
-    if (r.method && !parseMethod(r.method->c_str(), s.method))
-        return refuse(err, "--method", *r.method,
-                      "must be perfect, move-and-correct or turn-based");
-    if (r.dt && !numberOption("--dt", *r.dt, limits::kDt, s.dt, err)) return false;
-    if (r.substeps) {
-        double k = 0.0;
-        if (!numberOption("--substeps", *r.substeps, limits::kSubsteps, k, err)) return false;
-        s.substeps = static_cast<int>(k);
-    }
-    if (r.bounciness &&
-        !numberOption("--bounciness", *r.bounciness, limits::kBounciness, s.bounciness, err))
-        return false;
-    if (r.gravity) {
-        const std::size_t comma = r.gravity->find(',');
-        if (comma == std::string::npos)
-            return refuse(err, "--gravity", *r.gravity, "must be GX,GY in m/s^2, e.g. 0,-9.81");
-        Vec2 g;
-        if (!numberOption("--gravity", r.gravity->substr(0, comma), limits::kGravity, g.x, err) ||
-            !numberOption("--gravity", r.gravity->substr(comma + 1), limits::kGravity, g.y, err))
-            return false;
-        s.gravity = g;
-    }
-    if (r.resolve && !parseResolve(r.resolve->c_str(), s.resolve))
-        return refuse(err, "--resolve", *r.resolve, "must be momentum or reflect");
-    if (r.integrator && !parseIntegrator(r.integrator->c_str(), s.integrator))
-        return refuse(err, "--integrator", *r.integrator,
-                      "must be semi-implicit-euler, explicit-euler or exact");
-    for (const std::string& name : r.mistakes) {
-        if (name == "none") { // the scene's mistakes off
-            s.mistakes = 0;
-            continue;
-        }
-        Mistake m{};
-        if (!parseMistake(name.c_str(), m))
-            return refuse(err, "--mistake", name,
-                          "must be discrete, move-back, first-found, no-approach-test or none");
-        s.set(m, true);
+    for (const SettingFlag& flag : r.settings) {
+        const settings_table::FlagProblem problem =
+            settings_table::readFlag(*flag.row, flag.text, s);
+        if (!problem.expected.empty())
+            return refuse(err, flag.row->cli.flag, problem.text, problem.expected);
     }
     if (r.steps) {
         double n = 0.0;
@@ -209,19 +178,8 @@ void printJson(const Scene& scene, const World& world, const StepTotals& t, bool
     nlohmann::ordered_json j;
     const WorldSettings& s = world.settings;
     j["scene"] = scene.name; // dump() below escapes every control character
-    j["method"] = methodName(s.method);
-    j["dt"] = s.dt;
-    j["substeps"] = s.substeps;
-    j["bounciness"] = s.bounciness;
-    j["gravity"] = vecJson(s.gravity);
-    j["resolve"] = resolveName(s.resolve);
-    j["integrator"] = integratorName(s.integrator);
-    nlohmann::ordered_json mistakes = nlohmann::ordered_json::array();
-    for (int m = 0; m < static_cast<int>(Mistake::Count); ++m)
-        if (s.has(static_cast<Mistake>(m)))
-            mistakes.push_back(mistakeName(static_cast<Mistake>(m)));
-    j["mistakes"] = std::move(mistakes);
-    j["drag"] = s.drag;
+    for (const settings_table::WorldKey* row : settings_table::cliOrder())
+        j[row->key] = settingJson(*row, s);
     j["sim_time"] = world.time;
     j["steps"] = t.steps;
     j["collisions"] = t.collisions;
