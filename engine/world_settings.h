@@ -79,7 +79,8 @@ template <typename E, E WorldSettings::*M, const char* (*Name)(E)> constexpr Mem
 } // namespace settings_table
 
 // Gravity, bounciness and the method are the lecture's ("Physics Engine Setup"); dt and substeps
-// the frame; resolve, integrator, mistakes and drag issue 16's lecture options.
+// the frame; resolve, integrator, mistakes and drag issue 16's lecture options; friction (issue
+// 25) the lecture's Application (0 runs no friction code at all: every result as without it).
 inline constexpr settings_table::WorldKey kWorldKeys[] = {
     {{&WorldSettings::gravity},
      "gravity",
@@ -148,7 +149,7 @@ inline constexpr settings_table::WorldKey kWorldKeys[] = {
      {"--mistake", "NAME",
       "Make one of the lecture's mistakes (repeatable, added to the scene's): discrete, "
       "move-back, first-found, no-approach-test; none clears the scene's"},
-     {settings_table::Section::Physics, 4, "Mistakes (the Tips slides' bugs)"}},
+     {settings_table::Section::Physics, 5, "Mistakes (the Tips slides' bugs)"}},
     {{&WorldSettings::drag},
      "drag",
      limits::kDrag,
@@ -158,11 +159,22 @@ inline constexpr settings_table::WorldKey kWorldKeys[] = {
       "to type)"},
      {},
      {settings_table::Section::Physics, 3, "drag k", 0.0f, 1000.0f, "%.3g kg/m³", true}},
+    {{&WorldSettings::friction},
+     "friction",
+     limits::kFriction,
+     // µ is U+00B5 (the micro sign): the panel's font has Latin-1, not Greek.
+     {"friction", "µ",
+      "Coulomb friction at every contact: along the face the relative velocity changes by at "
+      "most µ times the change across it, toward zero, never past it; a block sliding on the "
+      "floor stops after v0/(µ·g) s and v0²/(2·µ·g) m. A pair uses sqrt(µ1·µ2) (Box2D's rule; a "
+      "block's own \"friction\" overrides the world's). 0: none (slide \"Application: "
+      "Platformer\": moving platforms, friction, pushing objects)"},
+     {"--friction", "MU",
+      "Coulomb friction coefficient mu at every contact (0: none; a block's own \"friction\" "
+      "still overrides it)"},
+     {settings_table::Section::Physics, 4, "friction µ", 0.0f, 2.0f, "%.2f"}},
     // The engine's own: no scene key (world.h says what they do).
     {{&WorldSettings::restSpeed}, "rest_speed", {}, {}, {}, {}, false},
     {{&WorldSettings::eventCap}, "event_cap", {}, {}, {}, {}, false},
     {{&WorldSettings::measureOverlap}, "measure_overlap", {}, {}, {}, {}, false},
-    // Coulomb friction (docs/physics.md, "Friction"): engine-only until the app and scene files
-    // give it its words, flag and slider (issue 25); 0 runs no friction code at all.
-    {{&WorldSettings::friction}, "friction", limits::kFriction, {}, {}, {}, false},
 };

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 const char* wallName(int other) {
     switch (other) {
@@ -47,6 +48,59 @@ void relativeLine(CollisionFormula& f, char axis, const std::string& lowerName, 
     }
 }
 
+// The product of two numbers as formatNumber writes them ("0.5", "2.3"), exact in decimal
+// ("1.15"), so that "0.5·2.3 = 1.15" holds with the digits shown; "" when either is not a plain
+// decimal (scientific, inf) or the digits are too many.
+std::string exactProduct(const std::string& a, const std::string& b) {
+    unsigned long long mantissa = 1;
+    int decimals = 0;
+    for (const std::string& s : {a, b}) {
+        if (s.empty() || s.size() > 12) return "";
+        unsigned long long m = 0;
+        bool point = false;
+        for (char c : s) {
+            if (c == '.' && !point) {
+                point = true;
+            } else if (c >= '0' && c <= '9') {
+                m = m * 10 + static_cast<unsigned long long>(c - '0');
+                decimals += point ? 1 : 0;
+            } else {
+                return "";
+            }
+        }
+        if (m != 0 && mantissa > ~0ull / m) return "";
+        mantissa *= m;
+    }
+    std::string digits = std::to_string(mantissa);
+    if (decimals == 0) return digits;
+    if (static_cast<int>(digits.size()) <= decimals)
+        digits.insert(0, static_cast<std::size_t>(decimals + 1) - digits.size(), '0');
+    std::string out = digits.substr(0, digits.size() - static_cast<std::size_t>(decimals)) + "." +
+                      digits.substr(digits.size() - static_cast<std::size_t>(decimals));
+    while (out.back() == '0') out.pop_back();
+    if (out.back() == '.') out.pop_back();
+    return out;
+}
+
+// The friction line (CollisionFormula::friction) of a record with mu > 0.
+std::string frictionLine(const CollisionRecord& r) {
+    if (!(r.mu > 0.0)) return "";
+    const char tangent = r.axis == 0 ? 'y' : 'x';
+    const char* unit = r.perSecond ? " m/s²" : " m/s";
+    const std::string mu = formatNumber(r.mu), dvn = formatNumber(std::abs(r.dvn));
+    const std::string dvt = formatNumber(std::abs(r.dvt)), bound = exactProduct(mu, dvn);
+    const std::string product =
+        "mu·|dvn| = " + mu + "·" + dvn + (bound.empty() ? "" : " = " + bound);
+    std::string line = std::string("friction along ") + tangent + ": ";
+    if (r.perSecond) line = std::string("friction along ") + tangent + " (resting, per second): ";
+    // Kinetic: the whole bound was used (to rounding), or the digits shown cannot tell it apart.
+    const bool kinetic = std::abs(r.dvt) >= std::abs(r.mu * r.dvn) * (1.0 - kNoiseRelative) ||
+                         bound.empty() ||
+                         std::strtod(dvt.c_str(), nullptr) >= std::strtod(bound.c_str(), nullptr);
+    if (kinetic) return line + "|dvt| = " + product + unit + " (kinetic: still sliding)";
+    return line + "|dvt| = " + dvt + " < " + product + unit + " (stopped sliding)";
+}
+
 } // namespace
 
 CollisionFormula collisionFormula(const CollisionRecord& r, const std::string& name1,
@@ -80,6 +134,7 @@ CollisionFormula collisionFormula(const CollisionRecord& r, const std::string& n
                           " = " + formatNumber(r.m1 * r.v1After) + " kg·m/s";
         f.note = "A wall takes any impulse: the block's momentum is not conserved.";
         if (r.rest) f.note = "Rest rule: closing too slowly to bounce, resolved with C = 0.";
+        f.friction = frictionLine(r);
         return f;
     }
     f.given = m1 + " = " + formatNumber(r.m1) + ", " + m2 + " = " + formatNumber(r.m2) + ", " + v1 +
@@ -119,5 +174,6 @@ CollisionFormula collisionFormula(const CollisionRecord& r, const std::string& n
             "An infinite mass takes any impulse: momentum of the finite body is not conserved.";
     }
     if (r.rest) f.note = "Rest rule: closing too slowly to bounce, resolved with C = 0.";
+    f.friction = frictionLine(r);
     return f;
 }

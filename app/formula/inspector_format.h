@@ -25,6 +25,11 @@ struct CollisionFormula {
     std::string momentumBefore; // "p before = 1·6 + 2·0 = 6"
     std::string momentumAfter;  // "p after = 1·(-2) + 2·4 = 6"
     std::string note;           // why momentum is not conserved (a wall), or the rest rule
+    // Coulomb friction along the other axis (physics.md, "Friction"), "" without it:
+    // "friction along y: |dvt| = 0.4 < mu·|dvn| = 0.5·2.3 = 1.15 m/s (stopped sliding)" or
+    // "... |dvt| = mu·|dvn| = 0.5·2.3 = 1.15 m/s (kinetic: still sliding)". The product is that
+    // of the digits shown (exact), so the equation holds as printed.
+    std::string friction;
 };
 
 // The formula for `record`; `name1` and `name2` name the bodies (a wall's name for walls). The

@@ -15,7 +15,8 @@ struct BlockDef {
     double mass = 1.0;   // kg (dynamic only)
     Vec2 force;          // N, constant (dynamic only): a thruster, a = F/m
     BodyKind kind = BodyKind::Dynamic;
-    std::string color; // "#rrggbb", optional ("" when absent)
+    std::string color;      // "#rrggbb", optional ("" when absent)
+    double friction = -1.0; // μ of its faces (>= 0), optional (< 0 when absent: the world's)
 
     bool operator==(const BlockDef& o) const; // as a scene file holds it (scene_save.cpp)
 };

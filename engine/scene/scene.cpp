@@ -392,6 +392,9 @@ void readBlockField(const settings_table::BlockKey& row, const json& value, cons
             throw ValueError{path, "must be a positive number, \"static\" or \"kinematic\""};
         }
         return;
+    case BlockKind::Own:
+        b.*row.number = number(value, path, row.range);
+        return;
     case BlockKind::Force:
         b.*row.pair = vec2(value, path, row.range);
         if (b.kind != BodyKind::Dynamic && b.*row.pair != Vec2{})

@@ -39,6 +39,9 @@ std::string blockText(const BlockDef& b) {
         case BlockKind::Size:
             fields.push_back(field(row.key, numberList({(b.*row.pair).x, (b.*row.pair).y})));
             break;
+        case BlockKind::Own:
+            if (b.*row.number >= 0.0) fields.push_back(field(row.key, dumpValue(b.*row.number)));
+            break;
         case BlockKind::Mass: {
             const json mass = b.kind == BodyKind::Static      ? json("static")
                               : b.kind == BodyKind::Kinematic ? json("kinematic")
@@ -157,6 +160,7 @@ World makeWorld(const Scene& scene) {
         b.velocity = def.kind == BodyKind::Static ? Vec2{} : def.velocity;
         b.mass = def.kind == BodyKind::Dynamic ? def.mass : kInfiniteMass;
         b.force = def.kind == BodyKind::Dynamic ? def.force : Vec2{};
+        b.friction = def.friction;
         world.blocks.push_back(b);
     }
     return world;
@@ -180,6 +184,7 @@ Scene sceneFromWorld(const World& world, const Scene& original) {
         def.size = b.size;
         def.velocity = b.velocity;
         def.kind = b.kind;
+        def.friction = b.friction;
         if (b.kind == BodyKind::Dynamic) def.mass = b.mass, def.force = b.force;
         scene.blocks.push_back(def);
     }

@@ -116,6 +116,8 @@ enum class BlockKind : std::uint8_t {
     Mass,  // a number within `range`, "static" or "kinematic" (the block's kind)
     Force, // [fx, fy] within `range` on a dynamic block only, |F|/m within the gravity limit;
            // written only when not zero
+    Own,   // a number within `range` that overrides a world setting for this block; absent
+           // (< 0 in BlockDef) means the world's, and is not written
 };
 
 struct BlockKey {
@@ -128,6 +130,7 @@ struct BlockKey {
     const char* label;        // the panel's field ("" when the panel has none)
     const char* sliderFormat; // the panel's number format, unit included
     const char* tooltip;
+    double BlockDef::*number = nullptr; // Own
 };
 
 } // namespace settings_table

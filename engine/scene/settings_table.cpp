@@ -31,6 +31,8 @@ const BlockKey kBlock[] = {
      "A constant force on the block (N), a = F/m (Ctrl+click to type); its arrow is drawn with "
      "the arrows overlay"},
     {"color", BlockKind::Color, &BlockDef::color, nullptr, Range{0, 0, ""}, false, "", "", ""},
+    {"friction", BlockKind::Own, nullptr, nullptr, limits::kFriction, false, "", "", "",
+     &BlockDef::friction},
 };
 
 bool sameNumber(double a, double b) {
@@ -319,6 +321,8 @@ bool same(const BlockKey& row, const BlockDef& a, const BlockDef& b) {
     case BlockKind::Size:
     case BlockKind::Force:
         return a.*row.pair == b.*row.pair;
+    case BlockKind::Own:
+        return a.*row.number == b.*row.number;
     case BlockKind::Mass:
         // A static or kinematic block's mass is not part of the file ("static"/"kinematic").
         return a.kind == b.kind && (a.kind != BodyKind::Dynamic || a.mass == b.mass);

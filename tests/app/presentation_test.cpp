@@ -614,3 +614,27 @@ TEST(WrapAtSpaces, BreaksAtSpacesOnly) {
     const std::string cut = wrapAtSpaces("ééééé", 4, bytes); // 2 bytes each
     EXPECT_EQ(cut, "éé\néé\né");
 }
+
+// Issue 25: the inspector shows the friction rule that acted, |dvt| <= mu·|dvn|, with numbers
+// whose equation holds as printed (the product is that of the digits shown, exact in decimal).
+TEST(InspectorFormat, ShowsTheFrictionRuleWithDigitsThatHold) {
+    CollisionRecord r = wallHit();
+    EXPECT_EQ(collisionFormula(r, "m2 = 2 kg", "floor").friction, "") << "no friction: no line";
+    r.axis = 1;
+    r.mu = 0.5, r.dvn = 2.3, r.dvt = 0.5 * 2.3;
+    EXPECT_EQ(collisionFormula(r, "m2 = 2 kg", "floor").friction,
+              "friction along x: |dvt| = mu·|dvn| = 0.5·2.3 = 1.15 m/s (kinetic: still sliding)");
+    r.dvt = 0.4; // it stopped sliding: less than the bound
+    EXPECT_EQ(collisionFormula(r, "m2 = 2 kg", "floor").friction,
+              "friction along x: |dvt| = 0.4 < mu·|dvn| = 0.5·2.3 = 1.15 m/s (stopped sliding)");
+    // Digits that hold: mu 1/3 and |dvn| 3.0004 are shown as 0.333 and 3, so the bound is 0.999
+    // (not 1.0001, their true product); a |dvt| of 0.9996 shows as 1 > 0.999: it is called kinetic.
+    r.mu = 1.0 / 3.0, r.dvn = 3.0004, r.dvt = 0.9996;
+    EXPECT_EQ(collisionFormula(r, "m2 = 2 kg", "floor").friction,
+              "friction along x: |dvt| = mu·|dvn| = 0.333·3 = 0.999 m/s (kinetic: still sliding)");
+    // A resting contact with the exact integrator: rates (m/s²).
+    r.mu = 0.25, r.dvn = 9.81, r.dvt = 0.25 * 9.81, r.perSecond = true;
+    EXPECT_EQ(collisionFormula(r, "m2 = 2 kg", "floor").friction,
+              "friction along x (resting, per second): |dvt| = mu·|dvn| = 0.25·9.81 = 2.4525 m/s² "
+              "(kinetic: still sliding)");
+}

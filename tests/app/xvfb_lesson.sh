@@ -32,7 +32,7 @@ sleep 1; shot back1
 [ "$(differing step1 back1 $caption_region)" -eq 0 ] || fail "PageUp: not step 1's caption"
 echo "ok: PageUp goes back to step 1"
 
-# End goes to the last step. Typing 2 5 Enter jumps to step 25 (the platformer, no timings on
+# End goes to the last step. Typing 2 6 Enter jumps to step 26 (the platformer, no timings on
 # screen), which opens paused at its setup; PageDown plays it and it pauses by itself at t = 1.5 s;
 # R brings it back to its setup, PageDown plays it again and it pauses at the same state: the
 # same picture.
@@ -42,16 +42,16 @@ wait_pause() {
     for _ in $(seq 300); do [ "$(pauses)" -gt "$1" ] && return 0; sleep 0.1; done
     fail "$2"
 }
-xdotool key End; wait_for "lesson step 26 / "
+xdotool key End; wait_for "lesson step 27 / "
 echo "ok: End goes to the last step"
 n=$(pauses)
-xdotool key 2 5 Return; wait_for "lesson step 25 / "
-echo "ok: 2 5 Enter goes to step 25"
+xdotool key 2 6 Return; wait_for "lesson step 26 / "
+echo "ok: 2 6 Enter goes to step 26"
 xdotool key Next
-wait_pause "$n" "step 25 did not pause by itself"
+wait_pause "$n" "step 26 did not pause by itself"
 sleep 0.3; shot last_a
 n=$(pauses)
-xdotool key r; wait_for "lesson restart 25"
+xdotool key r; wait_for "lesson restart 26"
 sleep 0.3; shot restarted
 xdotool key Next
 wait_pause "$n" "the restarted step did not pause again"
@@ -60,10 +60,10 @@ sleep 0.3; shot last_b
 [ "$(differing last_a last_b $scene_region)" -eq 0 ] || fail "R: a different state at the pause"
 echo "ok: R restarts the step and it pauses in the same state"
 
-# Step 25 turns the thrust on (the player selected): held, Right is the player's thrust (the log
+# Step 26 turns the thrust on (the player selected): held, Right is the player's thrust (the log
 # says so) and does not step the lesson; released, it stops; PageDown still steps, to a step
 # without thrust.
-grep -q "^thrust: on" "$log" || fail "step 25 did not turn the thrust on"
+grep -q "^thrust: on" "$log" || fail "step 26 did not turn the thrust on"
 count() { grep -c -- "$1" "$log"; }
 # wait_more PATTERN N: until the log has more than N lines matching PATTERN.
 wait_more() {
@@ -76,9 +76,9 @@ xdotool keyup Right; wait_for "thrust released" 30
 sleep 0.3
 [ "$(count "^lesson step")" -eq "$steps" ] || fail "Right stepped the lesson with thrust on"
 echo "ok: with thrust on, Right is the player's thrust and does not step the lesson"
-n=$(count "lesson step 26 / ")
+n=$(count "lesson step 27 / ")
 off=$(count "^thrust: off")
-xdotool key Next; wait_more "lesson step 26 / " "$n"
+xdotool key Next; wait_more "lesson step 27 / " "$n"
 wait_more "^thrust: off" "$off"
 echo "ok: PageDown steps on; the next step turns the thrust off"
 

@@ -127,6 +127,33 @@ int main(int argc, char** argv) {
               std::string(integrator) + ": terminal speed");
     }
 
+    // --friction (issue 25): a block launched at 5 m/s on the floor stops v0²/(2·µ·g) m on, to
+    // 1e-9 with the perfect method and the exact integrator (the motion is a parabola up to the
+    // stop, an event; --json prints 17 significant digits), within one frame's travel (v0·dt)
+    // with semi-implicit Euler (friction acts once per substep). The flag overrides the scene's
+    // "friction" 0; the second block's own "friction" 0.125 mixes with the floor's 0.5 as
+    // sqrt(0.5·0.125) = 0.25 (Box2D's rule).
+    const std::string slide = tmp + "/lecture_friction.json";
+    writeFile(slide, R"({"name": "slide", "world": {"friction": 0, "bounds": [0, 0, 40, 12]},
+        "blocks": [{"name": "b", "position": [2, 0.5], "size": 1, "velocity": [5, 0]},
+                   {"name": "own", "position": [20, 0.5], "size": 1, "velocity": [5, 0],
+                    "friction": 0.125}]})");
+    for (const char* integrator : {"exact", "semi-implicit-euler"}) {
+        const nlohmann::json j =
+            run(cli, slide,
+                std::string("--time 3 --friction 0.5 --method perfect --integrator ") + integrator);
+        const double tolerance = std::string(integrator) == "exact" ? 1e-9 : 5.0 / 60.0;
+        const std::string what = std::string(integrator) + ": ";
+        for (int b : {0, 1}) {
+            const double mu = b == 0 ? 0.5 : 0.25, x0 = b == 0 ? 2.0 : 20.0;
+            const double stop = x0 + 25.0 / (2.0 * mu * 9.81);
+            check(std::abs(num(j["blocks"][b]["position"][0]) - stop) < tolerance,
+                  what + "stops at v0^2/(2 mu g), mu " + std::to_string(mu));
+            check(num(j["blocks"][b]["velocity"][0]) == 0.0, what + "at rest by 3 s");
+        }
+        check(num(j["friction"]) == 0.5, what + "--json says friction 0.5");
+    }
+
     // --mistake discrete: bullet_wall tunnels under turn-based and perfect; without, neither.
     const std::string trace = tmp + "/lecture_trace.csv";
     for (const char* method : {"perfect", "turn-based"}) {

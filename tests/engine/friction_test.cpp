@@ -172,6 +172,33 @@ TEST(Friction, ABlocksOwnFrictionMixesWithTheWallsAsTheGeometricMean) {
     EXPECT_NEAR(world.blocks[0].velocity.x, 5.0 - 0.4 * kG * world.time, kExact);
 }
 
+// The scene keys: the world's "friction" (a row of the settings table, which its own tests read
+// and write like every row) and a block's own, which survives a file and reaches the engine;
+// absent, the block has the world's (< 0); a bad value is refused at its JSON path.
+TEST(Friction, ABlocksOwnFrictionIsASceneKey) {
+    const std::string text = R"({"name": "t", "world": {"friction": 0.64},
+        "blocks": [{"position": [2, 0.5], "size": 1, "velocity": [5, 0], "friction": 0.25},
+                   {"position": [6, 0.5], "size": 1}]})";
+    const SceneResult r = parseScene(text, "t.json");
+    ASSERT_TRUE(r.scene) << r.error.text();
+    EXPECT_EQ(r.scene->settings.friction, 0.64);
+    EXPECT_EQ(r.scene->blocks[0].friction, 0.25);
+    EXPECT_LT(r.scene->blocks[1].friction, 0.0) << "absent: the world's";
+    const std::string saved = sceneToJson(*r.scene);
+    EXPECT_NE(saved.find("\"friction\": 0.25"), std::string::npos) << saved;
+    const SceneResult back = parseScene(saved, "t.json");
+    ASSERT_TRUE(back.scene) << back.error.text();
+    EXPECT_TRUE(*back.scene == *r.scene);
+    World world = makeWorld(*r.scene);
+    EXPECT_EQ(world.blocks[0].friction, 0.25);
+    EXPECT_EQ(sceneFromWorld(world, *r.scene).blocks[0].friction, 0.25);
+    const SceneResult bad = parseScene(
+        R"({"name": "t", "blocks": [{"position": [2, 0.5], "size": 1, "friction": -1}]})",
+        "t.json");
+    ASSERT_FALSE(bad.scene);
+    EXPECT_NE(bad.error.text().find("blocks[0].friction"), std::string::npos) << bad.error.text();
+}
+
 double totalEnergy(const World& world) {
     return kineticEnergy(world) + potentialEnergy(world);
 }

@@ -136,6 +136,7 @@ void drawInspectorOverlay(App& app) {
     ImGui::Spacing();
     formulaLine(f.momentumBefore, false);
     formulaLine(f.momentumAfter, false);
+    if (!f.friction.empty()) textWrappedAtSpaces(f.friction);
     if (!f.note.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiThemed(ImVec4(0.62f, 0.66f, 0.74f, 1.0f)));
         textWrappedAtSpaces(f.note);

@@ -204,7 +204,7 @@ bool SimulationSession::usesPhysicsSection() const {
             return true;
     }
     for (const BlockDef& b : scene.blocks) {
-        if (b.force != Vec2{}) return true;
+        if (b.force != Vec2{} || b.friction >= 0.0) return true;
     }
     return false;
 }
