@@ -237,7 +237,7 @@ TEST(Perfect, DynamicBouncesOffMovingKinematicBlock) {
     EXPECT_EQ(world.blocks[1].velocity.x, -2.0);
 }
 
-// A block sliding along the top of another (no friction in the model) must not collide with it
+// A block sliding along the top of another (friction 0, the default) must not collide with it
 // sideways. Here the upper block's bottom is 2 ulps (4.4e-16 m) below the lower block's top:
 // the rounding that points of impact leave in a settled pile (the perfect method produced such
 // pairs, e.g. blocks 10 and 29 of the seed-77 gas with gravity after 150 frames). Before commit

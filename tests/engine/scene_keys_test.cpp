@@ -73,7 +73,7 @@ TEST(SceneKeys, BadValuesNameTheirPlace) {
                           "mass": "static", "force": [1, 0]}]})")
                   .where,
               "t.json: blocks[0].force");
-    EXPECT_EQ(errorOf(sceneText(R"("friction": 1)")).message, "unknown key");
+    EXPECT_EQ(errorOf(sceneText(R"("air_friction": 1)")).message, "unknown key");
 }
 
 TEST(SceneKeys, SaveWritesTheNewKeysAndReadsThemBack) {

@@ -229,7 +229,7 @@ TEST(SceneBadFile, Fixtures) {
         {"wrong_type.json", ": blocks[1].position"},
         {"missing_name.json", ": (top level)"},
         {"missing_position.json", ": blocks[0]"},
-        {"unknown_key_block.json", ": blocks[1].friction"},
+        {"unknown_key_block.json", ": blocks[1].spin"},
         {"bounciness_out_of_range.json", ": world.bounciness"},
         {"overlap.json", ": blocks[2]"},
         {"out_of_bounds.json", ": blocks[1]"},
@@ -314,7 +314,7 @@ TEST(SceneBadFile, MissingRequiredKeys) {
 
 TEST(SceneBadFile, UnknownKeys) {
     expectError(R"({"name": "x", "blocks": [], "gravity": [0, 0]})", "t.json: gravity");
-    expectError(sceneText(R"("friction": 0.5)", ""), "t.json: world.friction");
+    expectError(sceneText(R"("air_friction": 0.5)", ""), "t.json: world.air_friction");
     expectError(blocksText(R"({"position": [1, 1], "size": 1}, {"position": [3, 1], "size": 1,
         "angle": 0})"),
                 "t.json: blocks[1].angle");
