@@ -431,7 +431,13 @@ Layout computeAppLayout(const App& app, double displayWidth, double displayHeigh
     // A lesson's caption bar over the top of the scene (and the column), presenting too.
     if (app.lesson.active()) in.topInset = std::min(app.captionHeight, displayHeight * 0.5);
     if (app.presentMode) return computeLayout(in); // the scene alone (under a lesson's caption)
-    in.panelWidth = app.uiVisible ? panelWidth(app.uiScale, displayWidth) : 0.0;
+    if (!app.uiVisible) {
+    } else if (sheetLayout(displayWidth, app.uiScale)) {
+        in.panelHeight = app.ui.sheetOpen ? displayHeight * kSheetOpenShare
+                                          : kSheetBarPx * static_cast<double>(app.uiScale);
+    } else {
+        in.panelWidth = panelWidth(app.uiScale, displayWidth);
+    }
     for (const OverlayInfo& row : kOverlays) {
         if (!row.title || !(app.show.*row.flag) || isFloating(app, row.title)) continue;
         in.windows.push_back({row.title, row.place.side, row.place.minExtent, row.place.weight,
@@ -444,12 +450,35 @@ ScreenRect sceneViewport(const App& app, double displayWidth, double displayHeig
     return computeAppLayout(app, displayWidth, displayHeight).scene;
 }
 
+namespace {
+
+// kMinBlockPx for the smallest dynamic block, at most the zoom at which the world fills the
+// scene; the centre stays the world's.
+void zoomForFingers(App& app, const Bounds& bounds) {
+    double smallest = 0.0;
+    for (const Block& b : app.world.blocks)
+        if (b.isDynamic()) {
+            const double side = std::min(b.size.x, b.size.y);
+            smallest = smallest > 0.0 ? std::min(smallest, side) : side;
+        }
+    const double w = bounds.max.x - bounds.min.x, h = bounds.max.y - bounds.min.y;
+    if (!(smallest > 0.0) || !(w > 0.0) || !(h > 0.0)) return;
+    const ScreenRect& view = app.layout.scene;
+    const double filling = std::max(view.width / w, view.height / h);
+    const double wanted = kMinBlockPx * static_cast<double>(app.uiScale) / smallest;
+    const double ppm = app.camera.pixelsPerMetre();
+    app.camera.setPixelsPerMetre(std::max(ppm, std::min(filling, wanted)));
+}
+
+} // namespace
+
 void updateCamera(App& app, double displayWidth, double displayHeight) {
     app.layout = computeAppLayout(app, displayWidth, displayHeight);
     app.camera.setViewport(app.layout.scene);
     if (app.autoFit) {
-        app.camera.fit(app.fitBounds ? *app.fitBounds : app.world.bounds,
-                       kFitMarginPx * static_cast<double>(app.uiScale));
+        const Bounds& bounds = app.fitBounds ? *app.fitBounds : app.world.bounds;
+        app.camera.fit(bounds, kFitMarginPx * static_cast<double>(app.uiScale));
+        if (app.layout.sheet) zoomForFingers(app, bounds);
     }
     app.camera.setCentre(app.camera.centre() +
                          followShift(app.frameCamera, app.world, app.frame, app.autoFit));

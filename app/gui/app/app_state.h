@@ -85,6 +85,9 @@ struct UiState {
     // arrows' values; the overlays' labels (point of impact, centre of mass) avoid them.
     std::vector<ScreenRect> takenOnScreen;
     std::string physicsFollowedScene; // the scene the "Physics" header last opened or closed for
+    bool sheetOpen = false;           // narrow screens: the panel's sheet is open (sheetLayout)
+    // Where the bounciness slider was last drawn (px; the window and browser tests press it).
+    ScreenRect bouncinessSlider;
 };
 
 // The app: the current Run (its base, so app.world is the run's world; restart and scrub assign
@@ -163,6 +166,7 @@ struct App : Run {
     // downloads the file (named after the scene), there is no Quit (a tab is closed by the
     // browser) and the keys the browser keeps are its own (KeyBinding::inBrowser).
     bool inBrowser = false;
+    bool touchUi = false; // sizes for fingers (a touch screen; ui_style.h's uiSetTouch)
     bool filePickerRequested = false;
     bool copyLinkRequested = false; // "Copy link": the link for what is on screen (browser/link.h)
     // The shipped scenes (the picker) and where they are.
@@ -182,6 +186,10 @@ struct App : Run {
 
 // Width of the controls panel in pixels for a UI scale and window width.
 double panelWidth(float uiScale, double displayWidth);
+// On a narrow screen (sheetLayout), the fit zooms in until the smallest dynamic block is at least
+// kMinBlockPx (at UI scale 1: big enough to see and to grab with a finger), but never beyond
+// filling the scene with the world (part of it is then out of view: a drag on empty space pans).
+constexpr double kMinBlockPx = 24.0;
 // Pixels (at UI scale 1) between the world's bounds and the scene's rectangle when the camera
 // fits the world: room for the axis numbers and, at the top, the status badge or caption.
 constexpr double kFitMarginPx = 36.0;

@@ -82,6 +82,7 @@ void scenePicker(App& app) {
     ImGui::SetNextItemWidth(-1.0f - copyWidth);
     // Taller than the default 8 rows: every shipped scene at once, in the lecture's order.
     if (ImGui::BeginCombo("##scene", preview, ImGuiComboFlags_HeightLargest)) {
+        uiBeginRows();
         for (const SceneEntry& e : app.sceneFiles) {
             const bool current = e.path == app.scenePath;
             if (ImGui::Selectable(e.title.c_str(), current)) loadScene(app, e.path);
@@ -97,6 +98,7 @@ void scenePicker(App& app) {
             const std::string label = "Lesson: " + e.title;
             if (ImGui::Selectable(label.c_str(), current)) openLesson(app, e.path);
         }
+        uiEndRows();
         ImGui::EndCombo();
     }
     tooltip("The shipped scenes in the lecture's order (app/scenes/lecture_order.txt), and "
@@ -124,6 +126,7 @@ void lessonSection(App& app) {
     ImGui::SameLine();
     if (ImGui::Button("Restart (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
     const float rows = std::min<float>(8.0f, static_cast<float>(s.lesson->steps.size()));
+    uiBeginRows();
     ImGui::BeginChild("##steps", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing()));
     for (std::size_t i = 0; i < s.lesson->steps.size(); ++i) {
         const std::string label =
@@ -133,7 +136,8 @@ void lessonSection(App& app) {
         if (current && ImGui::IsWindowAppearing()) ImGui::SetScrollHereY();
     }
     ImGui::EndChild();
-    if (ImGui::SmallButton("close lesson")) closeLesson(app);
+    uiEndRows();
+    if (uiSmallButton("close lesson")) closeLesson(app);
     tooltip("Leave the lesson; the current scene stays");
 }
 
@@ -155,15 +159,18 @@ void fileSection(App& app) {
 }
 
 void runSection(App& app) {
-    const float w = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
-    if (ImGui::Button(app.paused ? "Play  (P)" : "Pause (P)", ImVec2(w, 0))) {
-        applyAction(app, Action::TogglePause);
+    if (!app.layout.sheet) { // the sheet has them in its bar
+        const float w =
+            (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
+        if (ImGui::Button(app.paused ? "Play  (P)" : "Pause (P)", ImVec2(w, 0))) {
+            applyAction(app, Action::TogglePause);
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Step (N)", ImVec2(w, 0))) applyAction(app, Action::StepOnce);
+        ImGui::SameLine();
+        if (ImGui::Button("Reset (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
+        tooltip("Blocks and time back to the start; keeps the method, C, g, frame rate, substeps");
     }
-    ImGui::SameLine();
-    if (ImGui::Button("Step (N)", ImVec2(w, 0))) applyAction(app, Action::StepOnce);
-    ImGui::SameLine();
-    if (ImGui::Button("Reset (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
-    tooltip("Blocks and time back to the start; keeps the method, C, g, frame rate, substeps");
     ImGui::Checkbox("Slow motion (Space)", &app.slowMotion);
     tooltip("5 simulation frames per second, as in the lecture's demo");
     ImGui::SameLine();
@@ -171,15 +178,29 @@ void runSection(App& app) {
     tooltip("Shift+R: everything as the scene file has it, settings included");
 }
 
+// A combo over the engine's own list of names (methodName, resolveName, integratorName): no
+// second list.
+template <typename E> bool enumCombo(const char* label, E& value, const char* (*name)(E)) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, name(value))) {
+        uiBeginRows();
+        for (int i = 0; i < static_cast<int>(E::Count); ++i) {
+            const E e = static_cast<E>(i);
+            if (ImGui::Selectable(name(e), e == value) && e != value) {
+                value = e;
+                changed = true;
+            }
+        }
+        uiEndRows();
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
 void simulationSection(App& app) {
     if (!ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) return;
     WorldSettings& s = app.world.settings;
-    int method = static_cast<int>(s.method);
-    constexpr int kMethods = static_cast<int>(Method::Count);
-    const char* names[kMethods];
-    for (int k = 0; k < kMethods; ++k) names[k] = methodName(static_cast<Method>(k));
-    if (ImGui::Combo("method (S)", &method, names, kMethods))
-        s.method = static_cast<Method>(method);
+    enumCombo("method (S)", s.method, methodName);
     tooltip("perfect: events in time order, no overlap\nmove-and-correct: move, then push "
             "apart\nturn-based: one body at a time");
     float c = static_cast<float>(s.bounciness);
@@ -188,8 +209,11 @@ void simulationSection(App& app) {
         acceptTyped(app, "bounciness C", c, s.bounciness, limits::kBounciness, s.bounciness);
     }
     tooltip("Coefficient of restitution: 1 elastic, 0 perfectly inelastic");
+    const ImVec2 sliderMin = ImGui::GetItemRectMin(), sliderMax = ImGui::GetItemRectMax();
+    app.ui.bouncinessSlider = {sliderMin.x, sliderMin.y, sliderMax.x - sliderMin.x,
+                               sliderMax.y - sliderMin.y};
     if (app.verbose && !app.layoutLogged) {
-        const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+        const ImVec2 a = sliderMin, b = sliderMax;
         std::printf("widget bounciness %d %d %d %d\n", static_cast<int>(a.x), static_cast<int>(a.y),
                     static_cast<int>(sliderWidth), static_cast<int>(b.y - a.y));
         app.layoutLogged = true;
@@ -202,11 +226,11 @@ void simulationSection(App& app) {
     }
     tooltip("Gravity (x, y) in m/s² (Ctrl+click to type a value)");
     ImGui::SameLine();
-    if (ImGui::SmallButton("0")) s.gravity = Vec2{0.0, 0.0};
+    if (uiSmallButton("0")) s.gravity = Vec2{0.0, 0.0};
     if (ImGui::IsItemActivated()) app.ui.typedWarning.note("gravity", TypedValue{});
     tooltip("No gravity");
     ImGui::SameLine();
-    if (ImGui::SmallButton("9.81")) s.gravity = Vec2{0.0, -9.81};
+    if (uiSmallButton("9.81")) s.gravity = Vec2{0.0, -9.81};
     if (ImGui::IsItemActivated()) app.ui.typedWarning.note("gravity", TypedValue{});
     tooltip("Gravity 9.81 m/s² down");
     ImGui::SameLine();
@@ -233,22 +257,6 @@ void simulationSection(App& app) {
         acceptTyped(app, "time scale", scale, app.timeScale, limits::kTimeScale, app.timeScale);
     }
     typedWarning(app, "time scale");
-}
-
-// A combo over the engine's own list of names (resolveName, integratorName): no second list.
-template <typename E> bool enumCombo(const char* label, E& value, const char* (*name)(E)) {
-    bool changed = false;
-    if (ImGui::BeginCombo(label, name(value))) {
-        for (int i = 0; i < static_cast<int>(E::Count); ++i) {
-            const E e = static_cast<E>(i);
-            if (ImGui::Selectable(name(e), e == value) && e != value) {
-                value = e;
-                changed = true;
-            }
-        }
-        ImGui::EndCombo();
-    }
-    return changed;
 }
 
 // Issue 16's settings (each a scene key, kept by R, restored by Shift+R, saved by Ctrl+S) and the
@@ -422,7 +430,7 @@ void viewSection(App& app) {
         setViewFrame(app, com ? ViewFrame::CentreOfMass : ViewFrame::World);
     tooltip("The view moves with the centre of mass's velocity u and the arrows show w = v - u "
             "(the walls drift across the view: they move at -u in this frame)");
-    if (ImGui::SmallButton("clear trails (C)")) applyAction(app, Action::ClearTrails);
+    if (uiSmallButton("clear trails (C)")) applyAction(app, Action::ClearTrails);
     float scale = app.uiScale;
     if (ImGui::SliderFloat("UI scale", &scale, 0.75f, 3.0f, "%.2f")) {
         // Applied when released: rebuilding the font under the cursor would fight the slider.
@@ -459,19 +467,51 @@ void viewSection(App& app) {
 
 } // namespace
 
+// A narrow screen's sheet: its bar (open or close it, play, step, reset, help) always shows.
+void sheetBar(App& app) {
+    const float w =
+        (ImGui::GetContentRegionAvail().x - 4.0f * ImGui::GetStyle().ItemSpacing.x) / 5.0f;
+    if (ImGui::Button(app.ui.sheetOpen ? "Close" : "Controls", ImVec2(w * 1.3f, 0)))
+        app.ui.sheetOpen = !app.ui.sheetOpen;
+    ImGui::SameLine();
+    if (ImGui::Button(app.paused ? "Play" : "Pause", ImVec2(w, 0)))
+        applyAction(app, Action::TogglePause);
+    ImGui::SameLine();
+    if (ImGui::Button("Step", ImVec2(w, 0))) applyAction(app, Action::StepOnce);
+    ImGui::SameLine();
+    if (ImGui::Button("Reset", ImVec2(w, 0))) applyAction(app, Action::Reset);
+    ImGui::SameLine();
+    if (ImGui::Button("Help", ImVec2(-1.0f, 0))) app.helpOpen = !app.helpOpen;
+}
+
 void drawControlsPanel(App& app) {
     const ImGuiIO& io = ImGui::GetIO();
-    const float width = static_cast<float>(panelWidth(app.uiScale, io.DisplaySize.x));
-    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y), ImGuiCond_Always);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
+    float width = static_cast<float>(panelWidth(app.uiScale, io.DisplaySize.x));
+    ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                             ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                             ImGuiWindowFlags_NoBringToFrontOnFocus;
+    if (app.layout.sheet) { // along the bottom, the screen's width
+        const ScreenRect& r = app.layout.panel;
+        width = static_cast<float>(r.width);
+        ImGui::SetNextWindowPos(ImVec2(static_cast<float>(r.x), static_cast<float>(r.y)));
+        ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(r.height)));
+        flags |= ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar;
+    } else {
+        ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+        ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y), ImGuiCond_Always);
+    }
     if (!ImGui::Begin("Controls", nullptr, flags)) {
         ImGui::End();
         return;
     }
     recordShownWindow(app, "Controls");
+    if (app.layout.sheet) {
+        sheetBar(app);
+        if (!app.ui.sheetOpen) {
+            ImGui::End();
+            return;
+        }
+    }
     const WorldSettings before = app.world.settings;
     ImGui::PushItemWidth(width * 0.52f);
     scenePicker(app);
@@ -491,7 +531,7 @@ void drawControlsPanel(App& app) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiErrorColor());
         textWrappedAtSpaces(app.error);
         ImGui::PopStyleColor();
-        if (ImGui::SmallButton("dismiss")) app.error.clear();
+        if (uiSmallButton("dismiss")) app.error.clear();
     } else if (!app.note.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiNoteColor());
         textWrappedAtSpaces(app.note);

@@ -17,7 +17,7 @@ void drawLessonCaption(App& app) {
     const LessonStep* step = s.step();
     if (!step) return;
     const ImGuiIO& io = ImGui::GetIO();
-    const float left = app.uiVisible && !app.presentMode
+    const float left = app.uiVisible && !app.presentMode && !app.layout.sheet
                            ? static_cast<float>(panelWidth(app.uiScale, io.DisplaySize.x))
                            : 0.0f;
     ImGui::SetNextWindowPos(ImVec2(left, 0.0f), ImGuiCond_Always);

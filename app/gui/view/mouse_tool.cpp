@@ -16,13 +16,18 @@ bool validBlock(const App& app, int i) {
 
 } // namespace
 
+int blockAtScreen(const App& app, Vec2 screen) {
+    return pickBlock(app.world, app.camera.screenToWorld(screen),
+                     app.camera.pixelsToMetres(kPickTolerancePx));
+}
+
 void mousePress(App& app, MouseButton button, Vec2 screen, bool doubleClick) {
     MouseTool& m = app.mouse;
     const Vec2 world = app.camera.screenToWorld(screen);
     m.cursorWorld = world;
     m.pressWorld = world;
     m.lastScreen = screen;
-    const int hit = pickBlock(app.world, world, app.camera.pixelsToMetres(kPickTolerancePx));
+    const int hit = blockAtScreen(app, screen);
     switch (button) {
     case MouseButton::Left:
         if (hit < 0) {

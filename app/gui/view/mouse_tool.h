@@ -30,6 +30,8 @@ struct MouseTool {
 };
 
 void mousePress(App& app, MouseButton button, Vec2 screen, bool doubleClick);
+// The block a press at `screen` (px) would take (a few pixels' tolerance), or -1.
+int blockAtScreen(const App& app, Vec2 screen);
 void mouseMove(App& app, Vec2 screen);
 void mouseRelease(App& app, MouseButton button, Vec2 screen);
 // Wheel zoom about the cursor: `steps` notches (positive zooms in).
