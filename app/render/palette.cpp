@@ -88,6 +88,10 @@ Color kinematicBlockColor() {
     return {0.62f, 0.58f, 0.48f, 1.0f};
 }
 
+Color studentTraceColor() {
+    return {1.0f, 0.35f, 0.85f, 1.0f}; // magenta: none of the methods' green, orange, violet
+}
+
 Color methodColor(Method method) {
     const auto i = static_cast<std::size_t>(method);
     return i < static_cast<std::size_t>(Method::Count) ? kMethodColors[i] : Color{1.0f, 1.0f, 1.0f};

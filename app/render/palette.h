@@ -30,6 +30,9 @@ Color kinematicBlockColor();
 // The colour of a method (one per Method, in the engine's order): its ghosts over the scene and
 // its rows in the side-by-side and cost tables, its line in the tradeoff chart.
 Color methodColor(Method method);
+// The colour of a student's trace (docs/compare.md): their blocks' outlines over the scene (the
+// ghost overlay), apart from every method's.
+Color studentTraceColor();
 
 // The scene's colours for a theme: dark (the default, for a dark room or a screen) or light (for
 // a bright room, where a projector washes dark colours out).

@@ -1,10 +1,12 @@
-// The command line shared by `sandbox` and `sandbox-offscreen` (SPEC's public contract):
+// The command line shared by `sandbox` and `sandbox-offscreen` (docs/cli.md, public):
 //   sandbox [SCENE] [--screenshot FILE] [--frames N] [--size WxH] [--show LIST]
 //           [--record DIR] [--benchmark-frames N] [--ui-scale S] [--verbose] [--present]
 //           [--layout-json FILE] [--frame world|com] [--theme dark|light] [--timeline-frame N]
+//           [--compare TRACE.csv [--trace-units si|gxp --px-per-m N --px-origin X,Y]]
 #pragma once
 
 #include "overlays.h"
+#include "trace.h"
 #include "view_frame.h"
 
 #include <optional>
@@ -41,8 +43,12 @@ struct Options {
     int step = 0;            // --step N (1-based) of the lesson; 0: the first
     std::string recordSteps; // offscreen: one PNG per lesson step into this directory
     std::optional<ViewFrame> frame; // --frame: start in this frame (a lesson's steps choose theirs)
-    std::string theme;       // --theme dark|light; "": the saved setting (window) or dark
-    long long timelineFrame = -1; // offscreen: after --frames, back to this frame (the timeline)
+    std::string theme;              // --theme dark|light; "": the saved setting (window) or dark
+    long long timelineFrame = -1;   // offscreen: after --frames, back to this frame (the timeline)
+    // --compare FILE: a trace of the student's engine opened on the scene (docs/compare.md), in
+    // --trace-units (si, or gxp with --px-per-m and --px-origin).
+    std::string compareTrace;
+    TraceUnitsSpec traceUnits;
 };
 
 // Turns the overlay called `name` on or off; false for an unknown name.

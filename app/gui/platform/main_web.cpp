@@ -176,7 +176,7 @@ void frame(void* arg) {
         uiRendererFontsChanged();
         uiRendererNewFrame(); // uploads the new atlas before this frame uses it
     }
-    for (const std::string& path : canvasTakeOpenedFiles(w.canvas)) loadScene(app, path);
+    for (const std::string& path : canvasTakeOpenedFiles(w.canvas)) openFile(app, path);
     for (const TouchGesture& g : canvasTakeGestures(w.canvas))
         touchPanZoom(app, g.from, g.to, g.spreadRatio);
     app.touchUi = app.touchUi || w.canvas.touchScreen || w.touch.active();

@@ -9,6 +9,9 @@
 
 #include <imgui.h>
 
+#include <string>
+#include <vector>
+
 // Colours of the plotted quantities (shared by the plots and the arrows' legends).
 namespace overlay_colors {
 constexpr ImU32 kX = IM_COL32(90, 200, 255, 255);
@@ -32,6 +35,26 @@ void recordShownWindow(App& app, const char* name);
 // their labels, the arrows' values: app.ui.takenOnScreen); the spot is then taken too
 // (scene_view.cpp).
 ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size);
+
+// A box of the world (centre and size, m) that a caption over the scene must not cover.
+struct WorldBox {
+    Vec2 centre;
+    Vec2 size;
+};
+// One line of a caption over the scene, in its colour (the dark theme's; uiThemed deepens it).
+struct CaptionLine {
+    std::string text;
+    ImU32 color;
+};
+// Where a caption of `width` x `height` px goes over the scene (placeCaption): covering no
+// block (grown by its labels), none of `boxes` (grown by one and a half lines), nor the status
+// badge and the axis numbers.
+ImVec2 sceneCaptionPlace(const App& app, float width, float height,
+                         const std::vector<WorldBox>& boxes);
+// Lines of text on a plate over the scene, where sceneCaptionPlace finds room (the point of
+// impact's numbers, the student's trace).
+void drawSceneCaption(const App& app, const std::vector<CaptionLine>& lines,
+                      const std::vector<WorldBox>& boxes);
 
 // The window of an overlay row (overlays.h: its title and placement), closed by its close button
 // through the row's flag. Ends the window when it goes out of scope; false while collapsed:
