@@ -197,12 +197,12 @@ void compareSection(App& app) {
     }
     if (!st.open()) return;
     textWrappedAtSpaces(studentTraceSummary(st));
-    if (ImGui::SmallButton("first difference")) goToFirstDifference(app);
+    if (uiSmallButton("first difference")) goToFirstDifference(app);
     ImGui::SameLine();
-    if (ImGui::SmallButton("compare again")) compareTraceAgain(app);
+    if (uiSmallButton("compare again")) compareTraceAgain(app);
     tooltip("With the current settings (the method chosen above), from the start");
     ImGui::SameLine();
-    if (ImGui::SmallButton("close")) closeTrace(app);
+    if (uiSmallButton("close")) closeTrace(app);
 }
 
 void runSection(App& app) {
