@@ -3,6 +3,8 @@
 // $XDG_CONFIG_HOME/collision-sandbox/ (or ~/.config/collision-sandbox/).
 #pragma once
 
+#include "view.h" // the UI and label scales' ranges
+
 #include <string>
 
 struct AppConfig {
@@ -14,11 +16,6 @@ struct AppConfig {
     int windowWidth = 1280;
     int windowHeight = 720;
 };
-
-constexpr float kMinUiScale = 0.75f;
-constexpr float kMaxUiScale = 3.0f;
-constexpr float kMinLabelScale = 0.75f;
-constexpr float kMaxLabelScale = 2.5f;
 
 // Parses the file's text; unknown keys and bad values are ignored (a hand-edited file never
 // stops the app from starting). Values are clamped to sane ranges.

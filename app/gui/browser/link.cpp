@@ -1,6 +1,6 @@
 #include "link.h"
 
-#include "app_state.h"
+#include "app.h"
 #include "save_naming.h"
 
 #include <filesystem>
@@ -41,16 +41,17 @@ std::string showList(const Overlays& shown) {
 } // namespace
 
 bool linkCarriesScene(const App& app) {
-    if (shippedName(app.sceneFiles, app.scenePath).empty()) return true; // opened, saved
-    WorldSettings settings = app.world.settings;
-    settings.method = app.scene.settings.method; // the method has a parameter of its own
-    return app.blocksEdited || app.world.time > 0.0 || settingsDiffer(app.scene.settings, settings);
+    if (shippedName(app.shipped.scenes, app.sim.scenePath).empty()) return true; // opened, saved
+    WorldSettings settings = app.sim.world().settings;
+    settings.method = app.sim.scene.settings.method; // the method has a parameter of its own
+    return app.sim.blocksEdited || app.sim.world().time > 0.0 ||
+           settingsDiffer(app.sim.scene.settings, settings);
 }
 
 std::string linkQuery(const App& app) {
     std::string query;
     if (app.lesson.active()) {
-        const std::string lesson = shippedName(app.lessonFiles, app.lesson.lesson->path);
+        const std::string lesson = shippedName(app.shipped.lessons, app.lesson.lesson->path);
         if (!lesson.empty()) {
             add(query, "lesson", lesson);
             add(query, "step", std::to_string(app.lesson.current + 1)); // a step sets the rest
@@ -59,12 +60,14 @@ std::string linkQuery(const App& app) {
     }
     if (!linkCarriesScene(app)) {
         // Named even when it is the default: a bare link opens the last scene of the browser.
-        add(query, "scene", shippedName(app.sceneFiles, app.scenePath));
-        if (app.world.settings.method != app.scene.settings.method)
-            add(query, "method", methodName(app.world.settings.method));
+        add(query, "scene", shippedName(app.shipped.scenes, app.sim.scenePath));
+        if (app.sim.world().settings.method != app.sim.scene.settings.method)
+            add(query, "method", methodName(app.sim.world().settings.method));
     }
-    if (!sameOverlays(app.show, defaultOverlays(app.scene))) add(query, "show", showList(app.show));
-    if (app.frame == ViewFrame::CentreOfMass) add(query, "frame", viewFrameName(app.frame));
+    if (!sameOverlays(app.view.show, defaultOverlays(app.sim.scene)))
+        add(query, "show", showList(app.view.show));
+    if (app.view.frame == ViewFrame::CentreOfMass)
+        add(query, "frame", viewFrameName(app.view.frame));
     return query;
 }
 

@@ -21,7 +21,7 @@ constexpr ImU32 kGhost = IM_COL32(90, 235, 130, 255);
 constexpr ImU32 kCrooked = IM_COL32(255, 170, 50, 240);
 
 ImVec2 toScreen(const App& app, Vec2 p) {
-    const Vec2 s = app.camera.worldToScreen(p);
+    const Vec2 s = app.view.camera.worldToScreen(p);
     return ImVec2(static_cast<float>(s.x), static_cast<float>(s.y));
 }
 
@@ -36,7 +36,7 @@ void box(const App& app, ImDrawList* dl, Vec2 centre, Vec2 size, ImU32 darkColor
         dl->AddRect(lo, hi, color, 0.0f, 0, width);
         return;
     }
-    const float dash = 6.0f * app.uiScale;
+    const float dash = 6.0f * app.view.uiScale;
     const ImVec2 corners[5] = {lo, ImVec2(hi.x, lo.y), hi, ImVec2(lo.x, hi.y), lo};
     for (int e = 0; e < 4; ++e) {
         const ImVec2 p = corners[e], q = corners[e + 1];
@@ -58,10 +58,10 @@ void label(ImDrawList* dl, ImVec2 at, ImU32 color, const std::string& text) {
 } // namespace
 
 void drawPoiOverlay(App& app) {
-    const PoiView& p = app.poi;
+    const PoiView& p = app.sim.run.poi;
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
-    const float s = app.uiScale;
-    if (!p.valid || p.block < 0 || p.block >= static_cast<int>(app.world.blocks.size())) {
+    const float s = app.view.uiScale;
+    if (!p.valid || p.block < 0 || p.block >= static_cast<int>(app.sim.world().blocks.size())) {
         const char* text = "Point of impact: shown after the watched block's next collision";
         const ImVec2 size = ImGui::CalcTextSize(text);
         label(dl, sceneCaptionPlace(app, size.x, size.y, {}), kOld, text);
@@ -75,8 +75,8 @@ void drawPoiOverlay(App& app) {
     box(app, dl, p.crooked, p.size, kCrooked, w, false);
     box(app, dl, p.ghost, p.size, kGhost, w * 1.3f, false);
     // Each label on its own side of its box: old above, new right, POI left, moved back below.
-    const float hw = static_cast<float>(app.camera.metresToPixels(p.size.x * 0.5));
-    const float hh = static_cast<float>(app.camera.metresToPixels(p.size.y * 0.5));
+    const float hw = static_cast<float>(app.view.camera.metresToPixels(p.size.x * 0.5));
+    const float hh = static_cast<float>(app.view.camera.metresToPixels(p.size.y * 0.5));
     auto place = [&](Vec2 c, const char* text, ImU32 color, int side) {
         const ImVec2 sc = toScreen(app, c);
         const ImVec2 ts = ImGui::CalcTextSize(text);
@@ -94,9 +94,9 @@ void drawPoiOverlay(App& app) {
 
     // The caption: the numbers of t = a/b.
     const char axis = p.axis == 0 ? 'x' : 'y';
-    const std::string other = p.other < 0 ? wallName(p.other) : blockDisplayName(app, p.other);
+    const std::string other = p.other < 0 ? wallName(p.other) : app.sim.blockDisplayName(p.other);
     const std::string lines[4] = {
-        "Point of impact of " + blockDisplayName(app, p.block) + " with " + other +
+        "Point of impact of " + app.sim.blockDisplayName(p.block) + " with " + other +
             ", frame from t = " + formatNumber(p.frameStart) + " s",
         std::string("t = a/b = ") + formatNumber(p.a) + " m / " + formatNumber(p.b) +
             " m = " + formatNumber(p.t) + "   (along " + axis + ")",

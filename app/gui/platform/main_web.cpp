@@ -42,7 +42,7 @@ struct WebApp {
     // and when that scene was last made (s on the page's clock).
     std::string linkQuery, linkScene;
     double linkSceneAt = -1e9;
-    double pixelRatio = 1.0; // the ratio app.uiScale includes (the user's scale times it)
+    double pixelRatio = 1.0; // the ratio app.view.uiScale includes (the user's scale times it)
     TouchInput touch;
     ImGuiWindow* touchScrolls = nullptr; // what a swipe scrolls: the window under the finger
     bool typingShown = false;            // the page's field for the on-screen keyboard has focus
@@ -56,15 +56,15 @@ WebApp* gWeb = nullptr;
 void followPixelRatio(WebApp& w) {
     const double ratio = w.canvas.devicePixelRatio;
     if (ratio == w.pixelRatio) return;
-    setUiScale(w.app, static_cast<float>(w.app.uiScale / w.pixelRatio * ratio));
+    setUiScale(w.app.view, static_cast<float>(w.app.view.uiScale / w.pixelRatio * ratio));
     w.pixelRatio = ratio;
 }
 
 void saveSettings(WebApp& w) {
     // Only a shipped scene is there next time (opened, saved and linked ones live in memory).
-    for (const SceneEntry& s : w.app.sceneFiles)
-        if (s.path == w.app.scenePath) w.config.lastScene = s.path;
-    w.config.uiScale = static_cast<float>(w.app.uiScale / w.pixelRatio);
+    for (const SceneEntry& s : w.app.shipped.scenes)
+        if (s.path == w.app.sim.scenePath) w.config.lastScene = s.path;
+    w.config.uiScale = static_cast<float>(w.app.view.uiScale / w.pixelRatio);
     w.config.windowWidth = w.canvas.width;
     w.config.windowHeight = w.canvas.height;
     const std::string text = formatAppConfig(w.config);
@@ -87,8 +87,8 @@ void followLink(WebApp& w, double now) {
     std::string scene = w.linkScene;
     if (!linkCarriesScene(app)) {
         scene.clear();
-    } else if (scene.empty() || (app.paused && now - w.linkSceneAt >= kLinkRefreshSeconds)) {
-        scene = sceneToJson(currentScene(app));
+    } else if (scene.empty() || (app.sim.paused && now - w.linkSceneAt >= kLinkRefreshSeconds)) {
+        scene = sceneToJson(app.sim.currentScene());
         w.linkSceneAt = now;
     }
     std::string query = linkQuery(app);
@@ -116,7 +116,7 @@ void applyTouch(WebApp& w, double now) {
         f.ctrl || io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL];
     if (f.scrollY != 0.0 && w.touchScrolls)
         ImGui::SetScrollY(w.touchScrolls, w.touchScrolls->Scroll.y - static_cast<float>(f.scrollY));
-    if (f.pan.x != 0.0 || f.pan.y != 0.0) touchPanZoom(w.app, Vec2{}, f.pan, 1.0);
+    if (f.pan.x != 0.0 || f.pan.y != 0.0) touchPanZoom(w.app.view, Vec2{}, f.pan, 1.0);
 }
 
 // After ImGui's frame began with the pointer at a finger that just went down: is it on the UI
@@ -133,7 +133,8 @@ void resolveTouch(WebApp& w) {
     if (!w.touch.waitingForStart()) return;
     const ImGuiIO& io = ImGui::GetIO();
     const Vec2 at{io.MousePos.x, io.MousePos.y};
-    w.touch.resolveStart(io.WantCaptureMouse, blockAtScreen(w.app, at) >= 0);
+    w.touch.resolveStart(io.WantCaptureMouse,
+                         blockAtScreen(w.app.sim.world(), w.app.view, at) >= 0);
 }
 
 // Typing with the on-screen keyboard: while a field takes text after a tap, the page's own text
@@ -148,17 +149,18 @@ void followTyping(WebApp& w) {
 // Requests the app made of its platform, answered by the page.
 void answerRequests(WebApp& w) {
     App& app = w.app;
-    if (!app.savedFile.empty()) pageDownload(app.savedFile);
-    app.savedFile.clear();
-    if (app.filePickerRequested) pageOpenFilePicker();
-    app.filePickerRequested = false;
-    if (app.copyLinkRequested) // the scene as it is now, running or not
-        pageCopyLink(linkQuery(app), linkCarriesScene(app) ? sceneToJson(currentScene(app)) : "");
-    app.copyLinkRequested = false;
-    if (app.fullscreenRequested) pageToggleFullscreen();
-    app.fullscreenRequested = false;
-    app.quitRequested = false; // Esc: closing the tab is the browser's
-    if (unsavedEdits(app) != w.unsavedShown) {
+    if (!app.ui.savedFile.empty()) pageDownload(app.ui.savedFile);
+    app.ui.savedFile.clear();
+    if (app.ui.filePickerRequested) pageOpenFilePicker();
+    app.ui.filePickerRequested = false;
+    if (app.ui.copyLinkRequested) // the scene as it is now, running or not
+        pageCopyLink(linkQuery(app),
+                     linkCarriesScene(app) ? sceneToJson(app.sim.currentScene()) : "");
+    app.ui.copyLinkRequested = false;
+    if (app.ui.fullscreenRequested) pageToggleFullscreen();
+    app.ui.fullscreenRequested = false;
+    app.ui.quitRequested = false; // Esc: closing the tab is the browser's
+    if (app.sim.unsavedEdits() != w.unsavedShown) {
         w.unsavedShown = !w.unsavedShown;
         pageSetUnsavedEdits(w.unsavedShown);
     }
@@ -170,17 +172,17 @@ void frame(void* arg) {
     double realSeconds = 0.0;
     canvasNewFrame(w.canvas, &realSeconds);
     followPixelRatio(w);
-    app.fullscreen = w.canvas.fullscreen;
-    if (app.uiScale != uiCurrentScale()) {
-        uiApplyScale(app.uiScale);
+    app.view.fullscreen = w.canvas.fullscreen;
+    if (app.view.uiScale != uiCurrentScale()) {
+        uiApplyScale(app.view.uiScale);
         uiRendererFontsChanged();
         uiRendererNewFrame(); // uploads the new atlas before this frame uses it
     }
     for (const std::string& path : canvasTakeOpenedFiles(w.canvas)) openFile(app, path);
     for (const TouchGesture& g : canvasTakeGestures(w.canvas))
-        touchPanZoom(app, g.from, g.to, g.spreadRatio);
-    app.touchUi = app.touchUi || w.canvas.touchScreen || w.touch.active();
-    if (app.touchUi != uiTouch()) uiSetTouch(app.touchUi);
+        touchPanZoom(app.view, g.from, g.to, g.spreadRatio);
+    app.ui.touchUi = app.ui.touchUi || w.canvas.touchScreen || w.touch.active();
+    if (app.ui.touchUi != uiTouch()) uiSetTouch(app.ui.touchUi);
     applyTouch(w, emscripten_get_now() / 1000.0);
     ImGui::NewFrame();
     resolveTouch(w);
@@ -204,8 +206,8 @@ extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_typed(unsigned int codepoint) {
 
 // Called by web/index.html's first-visit hint: opens the first shipped lesson at its start.
 extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_open_lesson() {
-    if (!gWeb || gWeb->app.lessonFiles.empty()) return;
-    openLesson(gWeb->app, gWeb->app.lessonFiles.front().path);
+    if (!gWeb || gWeb->app.shipped.lessons.empty()) return;
+    openLesson(gWeb->app, gWeb->app.shipped.lessons.front().path);
 }
 
 // Called by web/index.html when "Copy link" is done: the note, or the error (a link too long).
@@ -213,11 +215,12 @@ extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_link_copied(int chars, int copi
     if (!gWeb) return;
     App& app = gWeb->app;
     if (chars > static_cast<int>(kMaxLinkChars))
-        app.error = linkTooLongMessage(static_cast<std::size_t>(chars));
+        app.ui.messages.error = linkTooLongMessage(static_cast<std::size_t>(chars));
     else if (copied)
-        app.note = "Link copied (" + std::to_string(chars) + " characters)";
+        app.ui.messages.note = "Link copied (" + std::to_string(chars) + " characters)";
     else
-        app.error = "The browser did not let the page copy the link: it is in the address bar.";
+        app.ui.messages.error =
+            "The browser did not let the page copy the link: it is in the address bar.";
 }
 
 // For the browser tests and the page: the app's state as JSON (scene, method, paused, frames,
@@ -243,28 +246,29 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
         }
         return out + "\"";
     };
-    text = "{\"scene\":" + quoted(app.scenePath) +
-           ",\"method\":" + quoted(methodName(app.world.settings.method)) +
-           ",\"paused\":" + (app.paused ? "true" : "false") +
+    text = "{\"scene\":" + quoted(app.sim.scenePath) +
+           ",\"method\":" + quoted(methodName(app.sim.world().settings.method)) +
+           ",\"paused\":" + (app.sim.paused ? "true" : "false") +
            ",\"frames\":" + std::to_string(gWeb->frames) +
-           ",\"simTime\":" + std::to_string(app.world.time) + ",\"error\":" + quoted(app.error) +
-           ",\"plots\":" + (app.show.plots ? "true" : "false") +
-           ",\"inspector\":" + (app.show.inspector ? "true" : "false") + ",\"lessonStep\":" +
+           ",\"simTime\":" + std::to_string(app.sim.world().time) +
+           ",\"error\":" + quoted(app.ui.messages.error) +
+           ",\"plots\":" + (app.view.show.plots ? "true" : "false") +
+           ",\"inspector\":" + (app.view.show.inspector ? "true" : "false") + ",\"lessonStep\":" +
            (app.lesson.active() ? std::to_string(app.lesson.current + 1) : std::string("0")) +
-           ",\"pixelsPerMetre\":" + exact(app.camera.pixelsPerMetre()) +
-           ",\"unsaved\":" + (unsavedEdits(app) ? "true" : "false") +
-           ",\"note\":" + quoted(app.note) +
-           ",\"fullscreen\":" + (app.fullscreen ? "true" : "false");
+           ",\"pixelsPerMetre\":" + exact(app.view.camera.pixelsPerMetre()) +
+           ",\"unsaved\":" + (app.sim.unsavedEdits() ? "true" : "false") +
+           ",\"note\":" + quoted(app.ui.messages.note) +
+           ",\"fullscreen\":" + (app.view.fullscreen ? "true" : "false");
     // Each block: its state ([x, y, vx, vy, width, height, mass], every digit) and where it is
     // drawn ([left, top, width, height] in CSS pixels).
     const double ratio = gWeb->canvas.devicePixelRatio;
     std::string blocks, onScreen;
-    for (const Block& b : app.world.blocks) {
+    for (const Block& b : app.sim.world().blocks) {
         blocks += std::string(blocks.empty() ? "" : ",") + "[" + exact(b.position.x) + "," +
                   exact(b.position.y) + "," + exact(b.velocity.x) + "," + exact(b.velocity.y) +
                   "," + exact(b.size.x) + "," + exact(b.size.y) + "," + exact(b.mass) + "]";
-        const Vec2 corner = app.camera.worldToScreen(b.position - b.size * 0.5);
-        const double ppm = app.camera.pixelsPerMetre();
+        const Vec2 corner = app.view.camera.worldToScreen(b.position - b.size * 0.5);
+        const double ppm = app.view.camera.pixelsPerMetre();
         onScreen += std::string(onScreen.empty() ? "" : ",") + "[" + exact(corner.x / ratio) + "," +
                     exact((corner.y - b.size.y * ppm) / ratio) + "," +
                     exact(b.size.x * ppm / ratio) + "," + exact(b.size.y * ppm / ratio) + "]";
@@ -275,15 +279,16 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
     };
     const ImGuiIO& io = ImGui::GetIO();
     text += ",\"blocks\":[" + blocks + "],\"blocksOnScreen\":[" + onScreen +
-            "],\"sceneOnScreen\":" + rect(app.layout.scene) +
-            ",\"panelOnScreen\":" + rect(app.layout.panel) +
-            ",\"sheet\":" + (app.layout.sheet ? "true" : "false") +
-            ",\"sheetOpen\":" + (app.ui.sheetOpen ? "true" : "false") +
-            ",\"touchUi\":" + (app.touchUi ? "true" : "false") +
+            "],\"sceneOnScreen\":" + rect(app.view.layout.scene) +
+            ",\"panelOnScreen\":" + rect(app.view.layout.panel) +
+            ",\"sheet\":" + (app.view.layout.sheet ? "true" : "false") +
+            ",\"sheetOpen\":" + (app.view.sheetOpen ? "true" : "false") +
+            ",\"touchUi\":" + (app.ui.touchUi ? "true" : "false") +
             ",\"frameHeight\":" + exact(ImGui::GetFrameHeight() / ratio) +
             ",\"bouncinessSlider\":" + rect(app.ui.bouncinessSlider) +
-            ",\"bounciness\":" + exact(app.world.settings.bounciness) + ",\"gravity\":[" +
-            exact(app.world.settings.gravity.x) + "," + exact(app.world.settings.gravity.y) + "]" +
+            ",\"bounciness\":" + exact(app.sim.world().settings.bounciness) + ",\"gravity\":[" +
+            exact(app.sim.world().settings.gravity.x) + "," +
+            exact(app.sim.world().settings.gravity.y) + "]" +
             ",\"pointerOnScreen\":" + (ImGui::IsMousePosValid(&io.MousePos) ? "true" : "false") +
             ",\"typing\":" + (io.WantTextInput ? "true" : "false") + "}";
     return text.c_str();
@@ -301,8 +306,9 @@ int main() {
     setupApp(app, Options{}, w.config.lastScene, &error);
     applyUrlParams(app, params);
     const std::string linkError = pageLinkError();
-    if (!linkError.empty()) app.error += (app.error.empty() ? "" : "\n") + linkError;
-    app.inBrowser = true;
+    if (!linkError.empty())
+        app.ui.messages.error += (app.ui.messages.error.empty() ? "" : "\n") + linkError;
+    app.ui.inBrowser = true;
     std::error_code ec;
     std::filesystem::create_directories(kBrowserDownloads, ec); // Save writes there
 
@@ -314,10 +320,10 @@ int main() {
         return 1;
     }
     w.pixelRatio = w.canvas.devicePixelRatio;
-    setUiScale(app, static_cast<float>(w.config.uiScale * w.pixelRatio));
-    uiApplyScale(app.uiScale);
+    setUiScale(app.view, static_cast<float>(w.config.uiScale * w.pixelRatio));
+    uiApplyScale(app.view.uiScale);
     uiRendererFontsChanged();
-    if (!w.renderer.init(&error)) app.error = "Shader error: " + error;
+    if (!w.renderer.init(&error)) app.ui.messages.error = "Shader error: " + error;
     emscripten_set_main_loop_arg(frame, &w, 0, 1);
     return 0;
 }

@@ -90,8 +90,9 @@ bool writeLayoutJson(const App& app, const std::string& path) {
         std::fprintf(stderr, "sandbox: cannot write %s\n", path.c_str());
         return false;
     }
-    const std::string json = layoutJson(
-        app.camera.viewport(), worldRectOnScreen(app.camera, app.world.bounds), app.shownWindows);
+    const std::string json = layoutJson(app.view.camera.viewport(),
+                                        worldRectOnScreen(app.view.camera, app.sim.world().bounds),
+                                        app.view.shownWindows);
     const bool ok = std::fputs(json.c_str(), f) >= 0;
     return std::fclose(f) == 0 && ok;
 }
@@ -109,12 +110,13 @@ int screenshot(App& app, Offscreen& off, const Options& o) {
     if (app.lesson.active()) lessonShowPausePoint(app); // the step as the window shows it there
     // --frames N simulates N frames, as if P had been pressed (the badge then shows no PAUSED).
     for (int i = 0; i < o.frames; ++i) stepSimulation(app);
-    if (o.frames > 0) app.paused = false;
+    if (o.frames > 0) app.sim.paused = false;
     if (o.timelineFrame >= 0) { // the timeline's slider, dragged back: paused there, replaying
         scrubTo(app, static_cast<std::uint64_t>(o.timelineFrame));
-        app.paused = true;
+        app.sim.paused = true;
     }
-    if (app.show.cost) app.cost.runSweepNow(quickTradeoffSweep(app.scenesDir)); // the chart
+    if (app.view.show.cost)
+        app.sim.cost.runSweepNow(quickTradeoffSweep(app.shipped.scenesDir)); // the chart
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off);
     const int code = writeScreenshot(off, o);
     if (code != 0) return code;
@@ -136,7 +138,7 @@ bool makeDirectory(const std::string& dir) {
 int record(App& app, Offscreen& off, const Options& o) {
     if (!makeDirectory(o.record)) return 1;
     for (int i = 0; i < kSettleFrames - 1; ++i) renderFrame(app, off);
-    app.paused = false; // a recording runs the scene
+    app.sim.paused = false; // a recording runs the scene
     char name[32];
     for (int i = 0; i < o.frames; ++i) {
         stepSimulation(app);
@@ -175,7 +177,7 @@ int recordSteps(App& app, Offscreen& off, const Options& o) {
     for (std::size_t i = 0; i < steps; ++i) {
         enterStep(app, i);
         lessonShowPausePoint(app);
-        if (app.show.cost) app.cost.runSweepNow(quickTradeoffSweep(app.scenesDir));
+        if (app.view.show.cost) app.sim.cost.runSweepNow(quickTradeoffSweep(app.shipped.scenesDir));
         for (int k = 0; k < kSettleFrames; ++k) renderFrame(app, off);
         std::snprintf(name, sizeof name, "/step_%02zu.png", i + 1);
         if (!writeFrame(off, o.recordSteps + name)) return 1;
@@ -198,7 +200,7 @@ int benchmark(App& app, Offscreen& off, const Options& o) {
     const double totalMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     const double perFrame = totalMs / o.benchmarkFrames;
     std::printf("benchmark: %d frames, %dx%d, %zu blocks, %s\n", o.benchmarkFrames,
-                off.context.width, off.context.height, app.world.blocks.size(),
+                off.context.width, off.context.height, app.sim.world().blocks.size(),
                 offscreenGlDescription().c_str());
     std::printf("  %.3f ms/frame (%.1f frames/s); simulation %.3f ms/frame, drawing %.3f "
                 "ms/frame\n",
@@ -222,11 +224,11 @@ int runOffscreen(const Options& options) {
         std::fprintf(stderr, "sandbox: %s\n", error.c_str());
         return 1;
     }
-    setUiScale(app, o.uiScale > 0.0f ? o.uiScale : 1.0f);
-    if (o.present) setPresentMode(app, true);
-    app.lightTheme = o.theme == "light";
+    setUiScale(app.view, o.uiScale > 0.0f ? o.uiScale : 1.0f);
+    if (o.present) setPresentMode(app.view, true);
+    app.view.lightTheme = o.theme == "light";
     uiCreateContext(nullptr);
-    uiApplyLook(app.uiScale, app.labelScale, app.lightTheme);
+    uiApplyLook(app.view.uiScale, app.view.labelScale, app.view.lightTheme);
     Offscreen off;
     if (!offscreenInit(off.context, o.width, o.height, &error)) {
         std::fprintf(stderr, "sandbox: %s\n", error.c_str());
@@ -238,7 +240,7 @@ int runOffscreen(const Options& options) {
         // Keep going: the panels still render and the picture shows what is missing; the exit
         // code says it failed.
         std::fprintf(stderr, "sandbox: shader error: %s\n", error.c_str());
-        app.error = "Shader error: " + error;
+        app.ui.messages.error = "Shader error: " + error;
     }
     int code = 0;
     if (o.benchmarkFrames > 0)

@@ -25,21 +25,22 @@ void drawHelpWindow(App& app) {
     ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f),
                                         ImVec2(io.DisplaySize.x * 0.9f, io.DisplaySize.y * 0.9f));
     ImGui::SetNextWindowBgAlpha(0.98f);
-    if (!ImGui::Begin("Help", &app.helpOpen,
+    if (!ImGui::Begin("Help", &app.ui.helpOpen,
                       ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
         ImGui::End();
         return;
     }
     recordShownWindow(app, "Help");
     ImGui::TextUnformatted(
-        app.inBrowser ? "Esc closes this window.  Tab: present mode.  Close the tab to quit."
-                      : "Esc closes this window.  Tab: present mode.  Ctrl+Q quits.");
+        app.ui.inBrowser ? "Esc closes this window.  Tab: present mode.  Close the tab to quit."
+                         : "Esc closes this window.  Tab: present mode.  Ctrl+Q quits.");
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
     if (ImGui::BeginTabBar("help")) {
         if (ImGui::BeginTabItem("Keys")) {
             if (ImGui::BeginTable("keys", 2, flags)) {
                 for (const KeyBinding& b : keyBindings()) {
-                    const char* what = app.inBrowser && b.inBrowser ? b.inBrowser : b.description;
+                    const char* what =
+                        app.ui.inBrowser && b.inBrowser ? b.inBrowser : b.description;
                     if (b.listed && *what) row(b.keyName, what);
                 }
                 ImGui::EndTable();
@@ -58,7 +59,7 @@ void drawHelpWindow(App& app) {
             }
             ImGui::EndTabItem();
         }
-        if (app.touchUi && ImGui::BeginTabItem("Touch")) { // browser/touch_input.h
+        if (app.ui.touchUi && ImGui::BeginTabItem("Touch")) { // browser/touch_input.h
             if (ImGui::BeginTable("touch", 2, flags)) {
                 row("Tap", "Select a block; on the panel, press a button (a number field opens "
                            "for typing: the on-screen keyboard)");

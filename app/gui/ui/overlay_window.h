@@ -1,11 +1,11 @@
 // What the overlays share: the draw functions the table in overlays.h names, drawn in its order,
-// and their window: docked where the frame's layout (app.layout) puts it, around the scene and
+// and their window: docked where the frame's layout (app.view.layout) puts it, around the scene and
 // never over the world, and opaque enough to read. Dragging a docked window by its title bar
 // pulls it out to float (movable, resizable); its "dock" button puts it back. In present mode no
 // window is drawn.
 #pragma once
 
-#include "app_state.h"
+#include "app.h"
 
 #include <imgui.h>
 
@@ -24,11 +24,11 @@ constexpr ImU32 kCom = IM_COL32(255, 235, 90, 255);
 } // namespace overlay_colors
 
 // Begins the window of row `id` (ImGui::End() must follow, as with Begin), with the row's title,
-// docked at its rectangle in app.layout, or floating when pulled out; its close button clears the
-// row's flag. The one placement function: every overlay window goes through it (through
+// docked at its rectangle in app.view.layout, or floating when pulled out; its close button clears
+// the row's flag. The one placement function: every overlay window goes through it (through
 // OverlayWindow).
 bool beginOverlayWindow(App& app, OverlayId id);
-// Notes the current window (between Begin and End) in app.shownWindows, for --layout-json.
+// Notes the current window (between Begin and End) in app.view.shownWindows, for --layout-json.
 void recordShownWindow(App& app, const char* name);
 // Where an overlay's label of `size` px wanted at `at` (its top-left) goes over the scene: there,
 // or moved up or down by lines until it overlaps nothing taken on screen this frame (the blocks,
