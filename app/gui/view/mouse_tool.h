@@ -9,6 +9,7 @@
 
 struct SimulationSession;
 struct View;
+struct World;
 
 enum class MouseButton { Left, Right, Middle };
 
