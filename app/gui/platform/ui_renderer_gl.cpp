@@ -170,6 +170,15 @@ bool scissorTo(const ImDrawCmd& cmd, const ImDrawData* data, int fbHeight) {
     return true;
 }
 
+// A command's own callback, or ImGui's request to set the render state again.
+void runCallback(const ImDrawList* list, const ImDrawCmd& cmd, const ImDrawData* data, int fbWidth,
+                 int fbHeight) {
+    if (cmd.UserCallback == ImDrawCallback_ResetRenderState)
+        setupRenderState(data, fbWidth, fbHeight);
+    else
+        cmd.UserCallback(list, &cmd);
+}
+
 } // namespace
 
 #if SANDBOX_GL_ES
@@ -201,10 +210,7 @@ void renderForWebGl(const ImDrawData* data, int fbWidth, int fbHeight) {
         const ImDrawList* list = data->CmdLists[n];
         for (const ImDrawCmd& cmd : list->CmdBuffer) {
             if (cmd.UserCallback) {
-                if (cmd.UserCallback == ImDrawCallback_ResetRenderState)
-                    setupRenderState(data, fbWidth, fbHeight);
-                else
-                    cmd.UserCallback(list, &cmd);
+                runCallback(list, cmd, data, fbWidth, fbHeight);
                 glUseProgram(gUi.textured.program);
                 attributesAt = texture = ~0u;
                 continue;
@@ -253,10 +259,7 @@ void uiRendererRender(const ImDrawData* data) {
                      list->IdxBuffer.Data, GL_STREAM_DRAW);
         for (const ImDrawCmd& cmd : list->CmdBuffer) {
             if (cmd.UserCallback) {
-                if (cmd.UserCallback == ImDrawCallback_ResetRenderState)
-                    setupRenderState(data, fbWidth, fbHeight);
-                else
-                    cmd.UserCallback(list, &cmd);
+                runCallback(list, cmd, data, fbWidth, fbHeight);
                 current = 0;
                 continue;
             }
