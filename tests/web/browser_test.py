@@ -548,11 +548,15 @@ def phone(base):
         check(share >= 0.6, f"the scene has {share:.0%} of the screen")
         smallest = min(min(b[2], b[3]) for b in s["blocksOnScreen"])
         check(smallest >= 24 - 1e-9, f"the smallest block is {smallest:.1f} CSS px")
+        # The hint: shown, inside the screen with its buttons (each inside it, 44 px high).
         hint = page.evaluate("(() => { const h = document.getElementById('hint'); "
-                             "const r = h.getBoundingClientRect(); return [!h.hidden, r.width, "
-                             "Math.min(...[...h.querySelectorAll('button')].map("
-                             "b => b.getBoundingClientRect().height))]; })()")
-        check(hint[0] and hint[1] <= 390 and hint[2] >= 44, f"the first visit's hint: {hint}")
+                             "const r = h.getBoundingClientRect(); "
+                             "const b = [...h.querySelectorAll('button')].map("
+                             "e => e.getBoundingClientRect()); return [!h.hidden, r.left, r.right, "
+                             "Math.min(...b.map(e => e.height)), Math.min(...b.map(e => e.left)), "
+                             "Math.max(...b.map(e => e.right))]; })()")
+        check(hint[0] and 0 <= hint[1] and hint[2] <= 390 and hint[3] >= 44 and
+              hint[1] <= hint[4] and hint[5] <= hint[2], f"the first visit's hint: {hint}")
         panel = s["panelOnScreen"]
         page.tap(panel[0] + 40, panel[1] + panel[3] / 2)  # "Controls", the bar's first button
         s = page.status()
