@@ -7,20 +7,6 @@
 
 #include <cstdio>
 
-Color methodGhostColor(Method method) {
-    switch (method) {
-    case Method::Perfect:
-        return {0.45f, 0.95f, 0.55f, 1.0f};
-    case Method::MoveAndCorrect:
-        return {1.0f, 0.55f, 0.25f, 1.0f};
-    case Method::TurnBased:
-        return {0.80f, 0.50f, 1.0f, 1.0f};
-    case Method::Count:
-        break;
-    }
-    return {1.0f, 1.0f, 1.0f, 1.0f};
-}
-
 void drawSideBySideOverlay(App& app) {
     OverlayWindow overlay(app, OverlayId::sideBySide);
     if (!overlay) return;
@@ -49,8 +35,7 @@ void drawSideBySideOverlay(App& app) {
             const bool live = method == app.world.settings.method;
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            const Color c = methodGhostColor(method);
-            ImGui::TextColored(uiThemed(ImVec4(c.r, c.g, c.b, 1.0f)), "%s%s", methodName(method),
+            ImGui::TextColored(uiMarkColorVec(methodMark(method)), "%s%s", methodName(method),
                                live ? " (live)" : "");
             ImGui::TableNextColumn();
             ImGui::Text("%lld", static_cast<long long>(r.totals.collisions));

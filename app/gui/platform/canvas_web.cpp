@@ -1,5 +1,6 @@
 #include "canvas_web.h"
 
+#include "app_frame.h"
 #include "input_map.h"
 #include "ui_renderer_gl.h"
 
@@ -139,6 +140,8 @@ void canvasNewFrame(CanvasWeb& c, double* realSeconds) {
     c.lastTime = now;
     uiRendererNewFrame();
     ImGui_ImplGlfw_NewFrame();
+    holdKeyTaps(c.keyPresses, c.heldTaps,
+                [&c](int key) { return glfwGetKey(c.window, key) == GLFW_PRESS; });
 }
 
 std::vector<KeyPress> canvasTakeKeyPresses(CanvasWeb& c) {

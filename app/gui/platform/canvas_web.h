@@ -26,6 +26,7 @@ struct CanvasWeb {
     double devicePixelRatio = 1.0;        // framebuffer pixels per CSS pixel
     double lastTime = 0.0;                // s
     std::vector<KeyPress> keyPresses;     // since the last canvasTakeKeyPresses()
+    std::vector<int> heldTaps;            // keys held down one frame for ImGui (holdKeyTaps)
     std::vector<std::string> openedFiles; // dropped or picked, in the browser's file system
     std::vector<TouchGesture> gestures;   // since the last canvasTakeGestures()
 };

@@ -5,6 +5,7 @@
 #include "app_config.h"
 #include "app_frame.h"
 #include "app_setup.h"
+#include "audio_out.h"
 #include "canvas_web.h"
 #include "mouse_tool.h"
 #include "options.h"
@@ -28,6 +29,7 @@ struct WebApp {
     App app;
     CanvasWeb canvas;
     SceneRenderer renderer;
+    AudioOut audio; // Web Audio, through emscripten's OpenAL
     AppConfig config;
     std::string storedSettings; // what local storage holds, to write only on change
     double pixelRatio = 1.0;    // the ratio app.uiScale includes (the user's scale times it)
@@ -50,6 +52,8 @@ void saveSettings(WebApp& w) {
     w.config.uiScale = static_cast<float>(w.app.uiScale / w.pixelRatio);
     w.config.windowWidth = w.canvas.width;
     w.config.windowHeight = w.canvas.height;
+    w.config.sound = w.app.sound.chosen ? (w.app.sound.on ? 1 : 0) : -1;
+    w.config.volume = w.app.sound.volume;
     const std::string text = formatAppConfig(w.config);
     if (text != w.storedSettings) storageSet(kSettingsKey, text);
     w.storedSettings = text;
@@ -91,6 +95,7 @@ void frame(void* arg) {
     ImGui::Render();
     appRender(app, w.renderer, w.canvas.width, w.canvas.height);
     uiRendererRender(ImGui::GetDrawData());
+    w.audio.play(app.sound);
     answerRequests(w);
     saveSettings(w);
     if (w.frames++ == 0) pageFirstFrameShown();
@@ -136,6 +141,9 @@ int main() {
     std::string error;
     setupApp(app, Options{}, w.config.lastScene, &error);
     applyUrlParams(app, params);
+    app.sound.chosen = w.config.sound >= 0;
+    app.sound.on = w.config.sound == 1;
+    app.sound.volume = w.config.volume;
     app.browserFiles = true;
     app.savePath = "saved_scene.json";
 

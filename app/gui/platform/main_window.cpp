@@ -4,6 +4,7 @@
 #include "app_config.h"
 #include "app_frame.h"
 #include "app_setup.h"
+#include "audio_out.h"
 #include "options.h"
 #include "renderer.h"
 #include "scene_library.h"
@@ -55,6 +56,9 @@ int runWindow(const Options& options, char** argv, int argc) {
     setUiScale(app, options.uiScale > 0.0f ? options.uiScale : config.uiScale);
     app.lightTheme = options.theme.empty() ? config.lightTheme : options.theme == "light";
     app.labelScale = config.labelScale;
+    app.sound.chosen = config.sound >= 0;
+    app.sound.on = config.sound == 1;
+    app.sound.volume = config.volume;
     app.firstLaunch = !config.existed;
     if (options.present) setPresentMode(app, true);
     const bool sizeGiven = options.width != 1280 || options.height != 720;
@@ -81,6 +85,7 @@ int runWindow(const Options& options, char** argv, int argc) {
         std::fprintf(stderr, "sandbox: shader error: %s\n", error.c_str());
         app.error = "Shader error: " + error;
     }
+    AudioOut audio;
     bool first = true;
     double realSeconds = 0.0;
     while (!app.quitRequested && windowNewFrame(window, &realSeconds)) {
@@ -98,6 +103,7 @@ int runWindow(const Options& options, char** argv, int argc) {
         appRender(app, renderer, fw, fh);
         uiRendererRender(ImGui::GetDrawData());
         windowPresent(window);
+        audio.play(app.sound);
         if (first && app.verbose) {
             std::printf("window ready %dx%d\n", fw, fh);
             std::fflush(stdout);
@@ -114,6 +120,8 @@ int runWindow(const Options& options, char** argv, int argc) {
     config.uiScale = app.uiScale;
     config.lightTheme = app.lightTheme;
     config.labelScale = app.labelScale;
+    config.sound = app.sound.chosen ? (app.sound.on ? 1 : 0) : -1;
+    config.volume = app.sound.volume;
     windowSize(window, &config.windowWidth, &config.windowHeight);
     if (!saveAppConfig(configDir, config) && !configDir.empty()) {
         std::fprintf(stderr, "sandbox: cannot save settings in %s\n", configDir.c_str());

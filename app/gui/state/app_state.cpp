@@ -177,6 +177,10 @@ void stepSimulation(App& app) {
     addStep(app.totals, app.stats);
     app.trails.record(app.world);
     app.telemetry.record(app.world, app.selected, app.lastLog);
+    if (soundOn(app.sound, app.lesson.active())) {
+        for (const Knock& k : app.sound.scheduler.admit(app.lastLog, app.world))
+            app.sound.queue.push_back(k);
+    }
     // The point of impact of the watched block's latest collision (kept until the next one).
     const int watched = app.telemetry.watched;
     bool collided = false, watchedHit = false;

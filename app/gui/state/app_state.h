@@ -6,6 +6,7 @@
 #include "app_log.h"
 #include "camera.h"
 #include "classroom.h"
+#include "collision_sound.h"
 #include "cost.h"
 #include "dock_layout.h"
 #include "fixed_step.h"
@@ -82,6 +83,9 @@ struct UiState {
     // arrows' values; the overlays' labels (point of impact, centre of mass) avoid them.
     std::vector<ScreenRect> takenOnScreen;
     std::string physicsFollowedScene; // the scene the "Physics" header last opened or closed for
+    // The window the keyboard focus goes to this frame (Tab: the panel, F6: the next window);
+    // "" when none. recordShownWindow moves ImGui's navigation there as the window is drawn.
+    std::string keyboardFocus;
 };
 
 // The app: the current Run (its base, so app.world is the run's world; restart and scrub assign
@@ -114,7 +118,7 @@ struct App : Run {
     bool uiVisible = true;
     bool helpOpen = false;
     float uiScale = 1.0f;
-    // Present mode (Tab): the scene and a one-line caption only; every panel and window hidden,
+    // Present mode (F5): the scene and a one-line caption only; every panel and window hidden,
     // and back as they were when it is left.
     bool presentMode = false;
     bool fullscreen = false;  // the window is full screen (the window backend keeps it true)
@@ -146,6 +150,7 @@ struct App : Run {
     CostMeasurement cost; // the cost overlay's measurement and tradeoff sweep
     UiState ui;
     ThrustControl thrust;
+    SoundControl sound; // the collisions' knocks (M; View section)
     bool pauseOnCollision = false;
     bool pausedByCollision = false; // the last pause came from pauseOnCollision
     // Messages for the panel: the last error (load or save) and the last note.

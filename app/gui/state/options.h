@@ -2,6 +2,7 @@
 //   sandbox [SCENE] [--screenshot FILE] [--frames N] [--size WxH] [--show LIST]
 //           [--record DIR] [--benchmark-frames N] [--ui-scale S] [--verbose] [--present]
 //           [--layout-json FILE] [--frame world|com] [--theme dark|light] [--timeline-frame N]
+//           [--audio-wav FILE]
 #pragma once
 
 #include "overlays.h"
@@ -41,8 +42,9 @@ struct Options {
     int step = 0;            // --step N (1-based) of the lesson; 0: the first
     std::string recordSteps; // offscreen: one PNG per lesson step into this directory
     std::optional<ViewFrame> frame; // --frame: start in this frame (a lesson's steps choose theirs)
-    std::string theme;       // --theme dark|light; "": the saved setting (window) or dark
-    long long timelineFrame = -1; // offscreen: after --frames, back to this frame (the timeline)
+    std::string theme;              // --theme dark|light; "": the saved setting (window) or dark
+    long long timelineFrame = -1;   // offscreen: after --frames, back to this frame (the timeline)
+    std::string audioWav;           // offscreen: the knocks of the frames simulated, as a WAV file
 };
 
 // Turns the overlay called `name` on or off; false for an unknown name.
@@ -66,5 +68,5 @@ ParsedOptions parseOptions(int argc, const char* const* argv);
 // True when the run renders offscreen rather than opening a window.
 inline bool wantsOffscreen(const Options& o) {
     return !o.screenshot.empty() || !o.record.empty() || o.benchmarkFrames > 0 ||
-           !o.recordSteps.empty();
+           !o.recordSteps.empty() || !o.audioWav.empty();
 }

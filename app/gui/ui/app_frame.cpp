@@ -10,12 +10,20 @@
 
 namespace {
 
+// True while ImGui's keyboard navigation shows its focus ring: the navigation keys are its.
+bool navigating() {
+    const ImGuiIO& io = ImGui::GetIO();
+    return io.NavActive && io.NavVisible;
+}
+
 void handleKeys(App& app, const std::vector<KeyPress>& keys) {
     // Typing into a text field (a file name) must not trigger hotkeys; Esc still closes dialogs.
     const bool typing = ImGui::GetIO().WantTextInput;
+    const bool keyboardNavigation = navigating();
     for (const KeyPress& k : keys) {
         const Action action = actionForKey(k.key, k.ctrl, k.shift, app.thrust.on);
         if (typing && action != Action::Escape) continue;
+        if (keyboardNavigation && !k.ctrl && navigationKey(k.key)) continue;
         if (action == Action::LessonDigit)
             lessonTypeDigit(app, digitOfKey(k.key));
         else
@@ -74,6 +82,19 @@ void applyAction(App& app, Action action) {
         setViewFrame(app,
                      app.frame == ViewFrame::World ? ViewFrame::CentreOfMass : ViewFrame::World);
         logEvent(app, app.frame == ViewFrame::World ? "frame: world" : "frame: com");
+        break;
+    case Action::KeyboardFocus:
+        app.ui.keyboardFocus = "Controls";
+        if (!app.uiVisible || app.presentMode) app.ui.keyboardFocus.clear();
+        break;
+    case Action::NextWindow:
+        app.ui.keyboardFocus = nextWindowForKeyboard(app);
+        break;
+    case Action::Navigate: // a row of the Help window: ImGui's navigation does it (no key)
+        break;
+    case Action::ToggleSound:
+        toggleSound(app.sound, app.lesson.active());
+        logEvent(app, soundOn(app.sound, app.lesson.active()) ? "sound: on" : "sound: off");
         break;
     case Action::FitView:
         app.autoFit = true;
@@ -144,13 +165,27 @@ void logStateChanges(App& app) {
     app.loggedValid = true;
 }
 
+void holdKeyTaps(const std::vector<KeyPress>& queued, std::vector<int>& held,
+                 const std::function<bool(int key)>& isDown) {
+    ImGuiIO& io = ImGui::GetIO();
+    const auto valid = [&io](int key) { return key >= 0 && key < IM_ARRAYSIZE(io.KeysDown); };
+    for (int key : held)
+        if (valid(key)) io.KeysDown[key] = isDown(key);
+    held.clear();
+    for (const KeyPress& k : queued) {
+        if (!valid(k.key) || io.KeysDown[k.key]) continue;
+        io.KeysDown[k.key] = true;
+        held.push_back(k.key);
+    }
+}
+
 void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, bool runClock) {
     const ImGuiIO& io = ImGui::GetIO();
-    app.shownWindows.clear();
     updateCamera(app, io.DisplaySize.x, io.DisplaySize.y);
-    handleKeys(app, keys);
+    handleKeys(app, keys); // F6 reads the windows the last frame drew
+    app.shownWindows.clear();
     // Thrust: the arrow keys held now (not while typing into a field).
-    const bool typing = io.WantTextInput;
+    const bool typing = io.WantTextInput || navigating();
     app.thrust.direction = app.thrust.on && !typing ? heldThrustDirection([&io](int key) {
         return key >= 0 && key < IM_ARRAYSIZE(io.KeysDown) && io.KeysDown[key];
     })
@@ -194,7 +229,8 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
         for (int m = 0; m < static_cast<int>(Method::Count); ++m) {
             const Method method = static_cast<Method>(m);
             if (method == app.world.settings.method) continue;
-            view.ghosts.push_back({&app.methods.run(method).world, methodGhostColor(method)});
+            view.ghosts.push_back(
+                {&app.methods.run(method).world, markColor(methodMark(method), app.lightTheme)});
         }
     }
     view.blockColors.reserve(app.world.blocks.size());

@@ -8,12 +8,19 @@
 
 class SceneRenderer;
 
+#include <functional>
 #include <vector>
 
 // Between ImGui::NewFrame() and ImGui::Render(): the key presses since the last frame, the mouse,
 // the simulation (when `runClock`: the window passes real time; the offscreen renderer steps
 // explicitly) and the UI.
 void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, bool runClock);
+// ImGui 1.86 reads the keys held at the start of a frame, so a tap between two frames (a quick
+// key press, a test's) is lost to its keyboard navigation. Before ImGui::NewFrame(): the keys of
+// `queued` (presses not yet taken) are held down for this frame; `held` remembers them, and the
+// next call lets them go (back to `isDown`, the key's real state).
+void holdKeyTaps(const std::vector<KeyPress>& queued, std::vector<int>& held,
+                 const std::function<bool(int key)>& isDown);
 // After ImGui::Render(): clears and draws the scene (the UI renderer draws ImGui's on top).
 void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
                int framebufferHeight);
@@ -35,5 +42,3 @@ void handleSceneMouse(App& app);
 // app.ui.takenOnScreen, for the overlays' labels drawn after it (placeSceneLabel).
 void drawSceneDecorations(App& app);
 // The teaching overlays: the table in overlays.h, drawn by drawOverlays (overlay_window.h).
-// The colour of a method's ghosts and rows (methods side by side, the tradeoff chart).
-Color methodGhostColor(Method method);

@@ -437,9 +437,17 @@ void viewSection(App& app) {
     ImGui::Checkbox("light theme (bright rooms)", &app.lightTheme);
     tooltip("Dark text on a light scene and panels: a projector in a lit room washes dark "
             "themes out");
+    bool sound = soundOn(app.sound, app.lesson.active());
+    if (ImGui::Checkbox("sound (M)", &sound)) applyAction(app, Action::ToggleSound);
+    tooltip("A knock at each collision: louder for a larger impulse, higher for a smaller block, "
+            "lower on a wall; at most 20 a second (a gas hums). Off by default outside lessons");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
+    ImGui::SliderFloat("volume", &app.sound.volume, 0.0f, 1.0f, "%.2f",
+                       ImGuiSliderFlags_AlwaysClamp);
     if (ImGui::Button("Fit view (F)")) applyAction(app, Action::FitView);
     ImGui::SameLine();
-    if (ImGui::Button("Present (Tab)")) applyAction(app, Action::TogglePresent);
+    if (ImGui::Button("Present (F5)")) applyAction(app, Action::TogglePresent);
     ImGui::SameLine();
     if (ImGui::Button("Help (F1)")) app.helpOpen = true;
 }
@@ -488,7 +496,8 @@ void drawControlsPanel(App& app) {
     ImGui::Separator();
     runSection(app);
     // Play, Step and Reset stay in view: the sections below scroll on their own.
-    ImGui::BeginChild("##sections", ImVec2(0.0f, 0.0f), false);
+    // Flattened: the arrow keys go on from Reset into the sections (no Space to enter them).
+    ImGui::BeginChild("##sections", ImVec2(0.0f, 0.0f), false, ImGuiWindowFlags_NavFlattened);
     ImGui::PushItemWidth(width * 0.52f);
     simulationSection(app);
     physicsSection(app);

@@ -31,7 +31,9 @@ void drawHelpWindow(App& app) {
         return;
     }
     recordShownWindow(app, "Help");
-    ImGui::TextUnformatted("Esc closes this window.  Tab: present mode.  Ctrl+Q quits.");
+    ImGui::TextUnformatted(
+        "Esc closes this window.  F5: present mode.  Tab: keyboard focus on the panel.  "
+        "Ctrl+Q quits.");
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
     if (ImGui::BeginTabBar("help")) {
         if (ImGui::BeginTabItem("Keys")) {

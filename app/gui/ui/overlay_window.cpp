@@ -2,6 +2,8 @@
 
 #include "ui_style.h"
 
+#include <imgui_internal.h>
+
 #include <algorithm>
 #include <string>
 
@@ -15,6 +17,30 @@ constexpr float kWindowAlpha = 0.97f;
 void recordShownWindow(App& app, const char* name) {
     const ImVec2 p = ImGui::GetWindowPos(), s = ImGui::GetWindowSize();
     app.shownWindows.push_back({name, {p.x, p.y, s.x, s.y}});
+    if (app.ui.keyboardFocus != name) return;
+    app.ui.keyboardFocus.clear();
+    // ImGui 1.86 has no public call for it: focus the window and let its navigation pick the
+    // first control, with the focus ring shown (as after an arrow key) and the mouse's hover off.
+    ImGuiWindow* window = ImGui::GetCurrentWindow();
+    ImGui::FocusWindow(window);
+    ImGui::NavInitWindow(window, true);
+    ImGuiContext& g = *ImGui::GetCurrentContext();
+    g.NavDisableHighlight = false;
+    g.NavDisableMouseHover = true;
+}
+
+std::string nextWindowForKeyboard(const App& app) {
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    const ImGuiWindow* focused = g.NavWindow ? g.NavWindow->RootWindow : nullptr;
+    const std::vector<DockedWindow>& shown = app.shownWindows;
+    if (shown.empty()) return "";
+    for (std::size_t i = 0; focused && i < shown.size(); ++i) {
+        const std::string& title = shown[i].name;
+        // ImGui names a window by its title, "title##id" included.
+        if (title == focused->Name || std::string(focused->Name).rfind(title + "##", 0) == 0)
+            return shown[(i + 1) % shown.size()].name;
+    }
+    return shown.front().name;
 }
 
 bool beginOverlayWindow(App& app, OverlayId id) {

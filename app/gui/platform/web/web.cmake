@@ -8,7 +8,7 @@ if(NOT EXISTS ${SANDBOX_WEB_FONT})
 endif()
 set(WEB_DIR ${CMAKE_CURRENT_SOURCE_DIR}/platform/web)
 
-add_executable(sandbox-web platform/main_web.cpp platform/canvas_web.cpp)
+add_executable(sandbox-web platform/main_web.cpp platform/canvas_web.cpp platform/audio_out.cpp)
 target_include_directories(sandbox-web PRIVATE platform)
 target_link_libraries(sandbox-web PRIVATE sandbox_ui sandbox_ui_renderer glfw)
 set_target_properties(sandbox-web PROPERTIES OUTPUT_NAME sandbox
@@ -18,6 +18,7 @@ get_filename_component(SHIPPED_LESSONS ${PROJECT_SOURCE_DIR}/lessons ABSOLUTE)
 file(GLOB SHIPPED_SCENE_FILES CONFIGURE_DEPENDS ${SHIPPED_SCENES}/*.json ${SHIPPED_LESSONS}/*.json)
 target_link_options(sandbox-web PRIVATE
   -sALLOW_MEMORY_GROWTH=1
+  -lopenal
   -sEXPORTED_RUNTIME_METHODS=ccall,FS
   "SHELL:--preload-file ${SHIPPED_SCENES}@/scenes"
   "SHELL:--preload-file ${SHIPPED_LESSONS}@/lessons"
