@@ -1,10 +1,6 @@
 #include "simulation.h"
 
-#include "collision.h"
-#include "peers.h"
-
 #include <algorithm>
-#include <chrono>
 
 namespace {
 
@@ -36,68 +32,4 @@ std::unique_ptr<Simulation> makeEngineSimulation(const Scene& scene, Method meth
     world.settings.substeps = substeps;
     world.settings.measureOverlap = false; // measured outside the timed step
     return std::make_unique<EngineSimulation>(std::move(world));
-}
-
-std::vector<std::string> peerNames() {
-    std::vector<std::string> names;
-#ifdef SANDBOX_HAVE_BOX2D
-    names.push_back("box2d");
-#endif
-#ifdef SANDBOX_HAVE_CHIPMUNK
-    names.push_back("chipmunk");
-#endif
-    return names;
-}
-
-std::unique_ptr<Simulation> makePeerSimulation(const std::string& peer, const Scene& scene,
-                                               double dt, int substeps) {
-#ifdef SANDBOX_HAVE_BOX2D
-    if (peer == "box2d") return makeBox2dSimulation(scene, dt, substeps);
-#endif
-#ifdef SANDBOX_HAVE_CHIPMUNK
-    if (peer == "chipmunk") return makeChipmunkSimulation(scene, dt, substeps);
-#endif
-    (void)peer, (void)scene, (void)dt, (void)substeps; // unused when no peer is built
-    return nullptr;
-}
-
-PeerSimulation::PeerSimulation(const Scene& scene, double dt, int substeps)
-    : bounds_(scene.bounds), dt_(dt), substeps_(substeps) {
-    for (const BlockDef& def : scene.blocks) {
-        Block b;
-        b.size = def.size;
-        b.kind = def.kind;
-        b.mass = def.kind == BodyKind::Dynamic ? def.mass : kInfiniteMass;
-        blocks_.push_back(b);
-    }
-}
-
-double PeerSimulation::step() {
-    const auto start = std::chrono::steady_clock::now();
-    for (int k = 0; k < substeps_; ++k) advance(dt_ / substeps_);
-    const auto end = std::chrono::steady_clock::now();
-    time_ += dt_;
-    refresh();
-    return std::chrono::duration<double, std::milli>(end - start).count();
-}
-
-void PeerSimulation::refresh() {
-    for (std::size_t i = 0; i < blocks_.size(); ++i) {
-        blocks_[i].position = position(i);
-        blocks_[i].velocity = velocity(i);
-    }
-}
-
-// Largest overlap (m) among the blocks and with the walls, pair by pair (peers are measured on
-// small scenes only).
-double PeerSimulation::penetration() {
-    double deepest = 0.0;
-    for (std::size_t i = 0; i < blocks_.size(); ++i) {
-        const Aabb a = aabbOf(blocks_[i]);
-        deepest = std::max(deepest, outsideDepth(a, bounds_));
-        for (std::size_t j = i + 1; j < blocks_.size(); ++j)
-            if (blocks_[i].isDynamic() || blocks_[j].isDynamic())
-                deepest = std::max(deepest, ::penetration(a, aabbOf(blocks_[j])));
-    }
-    return deepest;
 }

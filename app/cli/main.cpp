@@ -4,8 +4,8 @@
 #include "commands.h"
 #include "input_limits.h"
 #include "printable.h"
+#include "vocabulary.h" // the overlay table (header-only): its names, for lesson files
 
-#include "overlays.h" // the overlay table (header-only): its names, for lesson files
 #include <CLI/CLI.hpp>
 
 #include <csignal>

@@ -6,6 +6,7 @@
 #include "input_limits.h"
 #include "printable.h"
 #include "scene_json.h"
+#include "vocabulary.h"
 
 #include <nlohmann/json.hpp>
 
@@ -373,12 +374,15 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
     if (value.contains("camera"))
         step.camera = parseCamera(value["camera"], keyPath(path, "camera"));
     if (value.contains("frame")) {
-        // The app's view frames (view_frame.h): the world's, or the centre of mass's.
+        // The app's frames of reference (vocabulary.h): the world's, or the centre of mass's.
         const std::string p = keyPath(path, "frame");
-        const std::string frame = string(value["frame"], p);
-        if (frame != "world" && frame != "com")
-            throw ValueError{p, "unknown frame " + quoted(frame) + " (expected world or com)"};
-        step.centreOfMassFrame = frame == "com";
+        const std::string name = string(value["frame"], p);
+        const std::optional<ViewFrame> frame = parseViewFrame(name);
+        if (!frame)
+            throw ValueError{p, "unknown frame " + quoted(name) + " (expected " +
+                                    viewFrameName(ViewFrame::World) + " or " +
+                                    viewFrameName(ViewFrame::CentreOfMass) + ")"};
+        step.frame = *frame;
     }
     if (value.contains("pause_at"))
         step.pause = parsePause(value["pause_at"], keyPath(path, "pause_at"), step.scene);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "scene.h"
+#include "vocabulary.h"
 
 #include <optional>
 #include <string>
@@ -59,8 +60,8 @@ struct LessonStep {
     // N: the keyboard thrust on with this force (the arrow keys push the selected block, which
     // is dynamic); none: thrust off.
     std::optional<double> thrust;
-    std::optional<Bounds> camera;   // world rectangle to fit into the view; none: the bounds
-    bool centreOfMassFrame = false; // "frame": "com": seen moving with the centre of mass
+    std::optional<Bounds> camera;       // world rectangle to fit into the view; none: the bounds
+    ViewFrame frame = ViewFrame::World; // "frame": "com": seen moving with the centre of mass
     LessonPause pause;
     std::string question; // shown until the next press...
     std::string answer;   // ...which shows this and turns on `reveal`

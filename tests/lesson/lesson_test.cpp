@@ -3,9 +3,7 @@
 // lessons fail with their place.
 #include "lesson.h"
 #include "lesson_runner.h"
-#ifdef SANDBOX_OVERLAY_TABLE
-#include "options.h"
-#endif
+#include "vocabulary.h"
 
 #include <gtest/gtest.h>
 
@@ -22,12 +20,7 @@ namespace {
 LessonContext context() {
     LessonContext c;
     c.scenesDir = SANDBOX_SCENES_DIR;
-#ifdef SANDBOX_OVERLAY_TABLE
     c.overlayNames = overlayNames();
-#else
-    c.overlayNames = {"plots", "vectors",    "trails",   "inspector", "com",
-                      "poi",   "sidebyside", "timeline", "cost"};
-#endif
     return c;
 }
 

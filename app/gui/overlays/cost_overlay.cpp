@@ -1,6 +1,6 @@
 // Speed versus accuracy in the app: the current scene's cost per step under each method and the
 // tradeoff chart (error against cost, log-log, from the quick sweep) drawn with the plot widget.
-// What is measured, and the background sweep, are App's CostMeasurement (teaching/cost.h).
+// What is measured, and the background sweep, are App's CostMeasurement (session/cost.h).
 #include "app_frame.h"
 #include "overlay_window.h"
 #include "plot_widget.h"

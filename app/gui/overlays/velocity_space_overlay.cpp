@@ -1,4 +1,4 @@
-// The velocity-space window (teaching/velocity_space.h): for two dynamic blocks, their state as a
+// The velocity-space window (explain/velocity_space.h): for two dynamic blocks, their state as a
 // point at (sqrt(m1)·v1, sqrt(m2)·v2) with its path, the kinetic energy's circle, the momentum's
 // line and the block-block reflection line; the caption says why high_mass_ratio counts pi. A
 // button writes the path as CSV. Other scenes get the reason in the window.

@@ -164,9 +164,11 @@ void simulationSection(App& app) {
     if (!ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) return;
     WorldSettings& s = app.world.settings;
     int method = static_cast<int>(s.method);
-    const char* names[] = {methodName(Method::Perfect), methodName(Method::MoveAndCorrect),
-                           methodName(Method::TurnBased)};
-    if (ImGui::Combo("method (S)", &method, names, 3)) s.method = static_cast<Method>(method);
+    constexpr int kMethods = static_cast<int>(Method::Count);
+    const char* names[kMethods];
+    for (int k = 0; k < kMethods; ++k) names[k] = methodName(static_cast<Method>(k));
+    if (ImGui::Combo("method (S)", &method, names, kMethods))
+        s.method = static_cast<Method>(method);
     tooltip("perfect: events in time order, no overlap\nmove-and-correct: move, then push "
             "apart\nturn-based: one body at a time");
     float c = static_cast<float>(s.bounciness);

@@ -2,16 +2,6 @@
 
 #include "text_format.h"
 
-const char* viewFrameName(ViewFrame frame) {
-    return frame == ViewFrame::CentreOfMass ? "com" : "world";
-}
-
-std::optional<ViewFrame> parseViewFrame(const std::string& name) {
-    if (name == "world") return ViewFrame::World;
-    if (name == "com") return ViewFrame::CentreOfMass;
-    return std::nullopt;
-}
-
 CentreOfMass centreOfMass(const World& world) {
     CentreOfMass c;
     Vec2 mp, mv;

@@ -19,6 +19,8 @@ class CostMeasurement {
   public:
     using Sweep = std::function<std::vector<TradeoffRow>()>;
 
+    CostMeasurement() { msPerStep_.fill(-1.0); }
+
     // True when the last measurement was of `scenePath`.
     bool measured(const std::string& scenePath) const { return measuredScene_ == scenePath; }
     // Steps a copy of `world` `frames` frames under each method (the world itself is untouched)
@@ -45,7 +47,7 @@ class CostMeasurement {
     void take(const Sweep& sweep);
 
     std::string measuredScene_;
-    std::array<double, static_cast<std::size_t>(Method::Count)> msPerStep_{{-1.0, -1.0, -1.0}};
+    std::array<double, static_cast<std::size_t>(Method::Count)> msPerStep_; // negative: none
     std::future<std::vector<TradeoffRow>> job_;
     std::vector<TradeoffRow> rows_;
     std::string error_;

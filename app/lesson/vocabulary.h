@@ -1,32 +1,35 @@
+// The names that lesson files, the command lines and the app share, below all of them: the
+// overlay table (what --show, a lesson step's "overlays" and "reveal" and sandbox-cli's lesson
+// check name) and the frames of reference (--frame, a lesson step's "frame"). Header-only, so
+// sandbox-cli checks lesson files against the app's names without linking the app.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
 // The overlays, in one table: every part of the app that needs the list reads it. --show parses
 // its names, the Overlays section of the controls panel shows one checkbox per row (in this
 // order), --verbose logs "NAME: on/off", and the frame calls each shown row's draw function (in
 // this order; a window row inside its own window, placed by the one placement function).
 //
-// Adding an overlay: a row here, its file overlays/NAME_overlay.cpp defining the draw function,
-// and that file in app/gui/CMakeLists.txt.
+// Adding an overlay: a row here, its file app/gui/overlays/NAME_overlay.cpp defining the draw
+// function, and that file in app/gui/CMakeLists.txt (and a line in the README's overlay list).
 //
 // Columns of X(member, name, label, tooltip, on, title, place, draw):
 //   member   its flag in Overlays (app.show.member)
-//   name     its --show name
+//   name     its --show name (the only column read outside the app: overlayNames() below)
 //   label    the checkbox's label; tooltip the checkbox's tooltip
 //   on       shown by default (before a scene or --show chooses)
 //   title    the window's title, or nullptr for what is drawn over the scene only
 //   place    where the window docks: its side of the scene and its share (DockWish, in
-//            parentheses; sizes in px at UI scale 1): the layout (dock_layout.h) docks every
-//            shown window, the scene takes the rest
-//   draw     void draw(App&), defined in overlays/ (the ImGui layer; this header only names it);
-//            drawnByTheSceneRenderer when the scene renderer draws it (trails, arrows)
-// The draw function of a row with a title draws the window's contents (the window is open);
-// one without a title draws over the scene.
-#pragma once
-
-#include "dock_layout.h"
-
-#include <cstddef>
-#include <string>
-#include <vector>
-
+//            parentheses; sizes in px at UI scale 1): the layout (app/gui/view/dock_layout.h)
+//            docks every shown window, the scene takes the rest
+//   draw     void draw(App&), defined in app/gui/overlays/ (the ImGui layer; this header only
+//            names it); drawnByTheSceneRenderer when the scene renderer draws it (trails, arrows)
+// The columns other than `name` are expanded by the app only (app/gui/app/overlays.h), where
+// DockWish and the draw functions exist. The draw function of a row with a title draws the
+// window's contents (the window is open); one without a title draws over the scene.
 // clang-format off
 #define SANDBOX_OVERLAYS(X)                                                                        \
     X(trails, "trails", "trails (D)", "Trajectories fading with age; C clears them",               \
@@ -64,46 +67,30 @@
       drawCostOverlay)
 // clang-format on
 
-// Which overlays are shown: one flag per row.
-struct Overlays {
-#define SANDBOX_OVERLAY_FLAG(member, name, label, tooltip, on, title, place, draw) bool member = on;
-    SANDBOX_OVERLAYS(SANDBOX_OVERLAY_FLAG)
-#undef SANDBOX_OVERLAY_FLAG
-};
-
-// A row of the table, without its draw function (the ImGui layer holds those: ui/overlay_window.h).
-struct OverlayInfo {
-    bool Overlays::*flag;
-    const char* name;
-    const char* label;
-    const char* tooltip;
-    const char* title; // nullptr: drawn over the scene, no window
-    DockWish place;
-};
-
-// The rows' indices: OverlayId::plots, ...
-enum class OverlayId : std::size_t {
-#define SANDBOX_OVERLAY_ID(member, name, label, tooltip, on, title, place, draw) member,
-    SANDBOX_OVERLAYS(SANDBOX_OVERLAY_ID)
-#undef SANDBOX_OVERLAY_ID
-};
-
-inline constexpr OverlayInfo kOverlays[] = {
-#define SANDBOX_OVERLAY_INFO(member, name, label, tooltip, on, title, place, draw)                 \
-    {&Overlays::member, name, label, tooltip, title, place},
-    SANDBOX_OVERLAYS(SANDBOX_OVERLAY_INFO)
-#undef SANDBOX_OVERLAY_INFO
-};
-inline constexpr std::size_t kOverlayCount = sizeof kOverlays / sizeof kOverlays[0];
-
-inline const OverlayInfo& overlayInfo(OverlayId id) {
-    return kOverlays[static_cast<std::size_t>(id)];
-}
-
-// The overlay names, in the table's order (what --show and lesson files may name). Header-only,
-// so sandbox-cli checks lesson files against the table without linking the app.
+// The overlay names, in the table's order (what --show and lesson files may name).
 inline std::vector<std::string> overlayNames() {
     std::vector<std::string> names;
-    for (const OverlayInfo& o : kOverlays) names.emplace_back(o.name);
+#define SANDBOX_OVERLAY_NAME(member, name, label, tooltip, on, title, place, draw)                 \
+    names.emplace_back(name);
+    SANDBOX_OVERLAYS(SANDBOX_OVERLAY_NAME)
+#undef SANDBOX_OVERLAY_NAME
     return names;
+}
+
+// The frame of reference the scene is seen in (app/gui/view/view_frame.h): the world's, or the
+// centre of mass's.
+enum class ViewFrame {
+    World,        // the world's frame: what the engine simulates
+    CentreOfMass, // moving with the centre of mass of the dynamic blocks
+};
+
+// "world" or "com" (the --frame flag's, the URL's and the lesson key's names).
+inline const char* viewFrameName(ViewFrame frame) {
+    return frame == ViewFrame::CentreOfMass ? "com" : "world";
+}
+// The frame called `name`; none for an unknown name.
+inline std::optional<ViewFrame> parseViewFrame(const std::string& name) {
+    if (name == viewFrameName(ViewFrame::World)) return ViewFrame::World;
+    if (name == viewFrameName(ViewFrame::CentreOfMass)) return ViewFrame::CentreOfMass;
+    return std::nullopt;
 }

@@ -76,7 +76,7 @@ bool enterStep(App& app, std::size_t index) {
     app.show = shown;
     app.fitBounds = step.camera;
     app.autoFit = true;
-    setViewFrame(app, step.centreOfMassFrame ? ViewFrame::CentreOfMass : ViewFrame::World);
+    setViewFrame(app, step.frame);
     app.timeScale = step.timeScale;
     app.slowMotion = false;
     app.pauseOnCollision = false;

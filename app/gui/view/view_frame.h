@@ -5,20 +5,10 @@
 // the renderer and the com overlay read it.
 #pragma once
 
+#include "vocabulary.h" // ViewFrame and its names
 #include "world.h"
 
-#include <optional>
 #include <string>
-
-enum class ViewFrame {
-    World,        // the world's frame: what the engine simulates
-    CentreOfMass, // moving with the centre of mass of the dynamic blocks
-};
-
-// "world" or "com" (the --frame flag's and the lesson key's names).
-const char* viewFrameName(ViewFrame frame);
-// The frame called `name`; none for an unknown name.
-std::optional<ViewFrame> parseViewFrame(const std::string& name);
 
 // The centre of mass of the dynamic blocks (lecture, "Momentum"): total mass (kg), position
 // Σ m·x / Σ m (m) and velocity u = Σ m·v / Σ m (m/s). Not valid without a dynamic block.
