@@ -177,6 +177,7 @@ void stepSimulation(App& app) {
     addStep(app.totals, app.stats);
     app.trails.record(app.world);
     app.telemetry.record(app.world, app.selected, app.lastLog);
+    app.announcer.note(app.lastLog);
     if (soundOn(app.sound, app.lesson.active())) {
         for (const Knock& k : app.sound.scheduler.admit(app.lastLog, app.world))
             app.sound.queue.push_back(k);

@@ -18,6 +18,7 @@
 #include "scene.h"
 #include "scene_library.h"
 #include "side_by_side.h"
+#include "spoken_text.h"
 #include "telemetry.h"
 #include "timeline.h"
 #include "trails.h"
@@ -150,7 +151,8 @@ struct App : Run {
     CostMeasurement cost; // the cost overlay's measurement and tradeoff sweep
     UiState ui;
     ThrustControl thrust;
-    SoundControl sound; // the collisions' knocks (M; View section)
+    SoundControl sound;           // the collisions' knocks (M; View section)
+    CollisionAnnouncer announcer; // the collisions for a screen reader (the browser's page)
     bool pauseOnCollision = false;
     bool pausedByCollision = false; // the last pause came from pauseOnCollision
     // Messages for the panel: the last error (load or save) and the last note.
