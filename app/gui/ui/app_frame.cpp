@@ -168,7 +168,8 @@ void logStateChanges(App& app) {
 void holdKeyTaps(const std::vector<KeyPress>& queued, std::vector<int>& held,
                  const std::function<bool(int key)>& isDown) {
     ImGuiIO& io = ImGui::GetIO();
-    const auto valid = [&io](int key) { return key >= 0 && key < IM_ARRAYSIZE(io.KeysDown); };
+    constexpr int keyCount = IM_ARRAYSIZE(ImGuiIO::KeysDown);
+    const auto valid = [](int key) { return key >= 0 && key < keyCount; };
     for (int key : held)
         if (valid(key)) io.KeysDown[key] = isDown(key);
     held.clear();
