@@ -56,6 +56,8 @@ EM_JS(void, page_open_file_picker, (), { window.sandboxPage.openFilePicker(); })
 EM_JS(void, page_download, (const char* path), { window.sandboxPage.download(UTF8ToString(path)); });
 EM_JS(void, page_toggle_fullscreen, (), { window.sandboxPage.toggleFullscreen(); });
 EM_JS(void, page_first_frame_shown, (), { window.sandboxPage.firstFrameShown(); });
+EM_JS(void, page_show_state, (const char* json), { window.sandboxPage.showState(UTF8ToString(json)); });
+EM_JS(void, page_announce, (const char* text), { window.sandboxPage.announce(UTF8ToString(text)); });
 // clang-format on
 
 std::string takeString(char* text) {
@@ -188,4 +190,12 @@ void pageToggleFullscreen() {
 
 void pageFirstFrameShown() {
     page_first_frame_shown();
+}
+
+void pageShowState(const std::string& json) {
+    page_show_state(json.c_str());
+}
+
+void pageAnnounce(const std::string& text) {
+    page_announce(text.c_str());
 }

@@ -50,3 +50,7 @@ void pageOpenFilePicker();                  // the browser's file dialog
 void pageDownload(const std::string& path); // offers a file of the browser's FS
 void pageToggleFullscreen();
 void pageFirstFrameShown(); // hides the loading note
+// The screen reader's side of the page (page_controls.h): the DOM text and hidden controls from
+// pageStateJson(), and one sentence for the polite live region.
+void pageShowState(const std::string& json);
+void pageAnnounce(const std::string& text);

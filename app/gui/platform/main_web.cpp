@@ -9,6 +9,7 @@
 #include "canvas_web.h"
 #include "mouse_tool.h"
 #include "options.h"
+#include "page_controls.h"
 #include "renderer.h"
 #include "ui_renderer_gl.h"
 #include "ui_style.h"
@@ -16,6 +17,7 @@
 
 #include <emscripten.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <cstdio>
 #include <string>
@@ -34,6 +36,8 @@ struct WebApp {
     std::string storedSettings; // what local storage holds, to write only on change
     double pixelRatio = 1.0;    // the ratio app.uiScale includes (the user's scale times it)
     long long frames = 0;
+    double realTime = 0.0;  // s since the first frame (the live region's pace)
+    std::string shownState; // pageStateJson() as the page last got it
 };
 
 WebApp* gWeb = nullptr;
@@ -76,6 +80,18 @@ void answerRequests(WebApp& w) {
     app.quitRequested = false; // Esc: closing the tab is the browser's
 }
 
+// The page's text for a screen reader, kept in step with the canvas, and the collisions through
+// its live region (at most about one a second).
+void tellPage(WebApp& w, double realSeconds) {
+    w.realTime += realSeconds;
+    std::string state = pageStateJson(w.app);
+    if (state != w.shownState) pageShowState(state);
+    w.shownState = std::move(state);
+    const std::string said =
+        w.app.announcer.announce(w.realTime, [&](int i) { return blockDisplayName(w.app, i); });
+    if (!said.empty()) pageAnnounce(said);
+}
+
 void frame(void* arg) {
     WebApp& w = *static_cast<WebApp*>(arg);
     App& app = w.app;
@@ -97,8 +113,27 @@ void frame(void* arg) {
     uiRendererRender(ImGui::GetDrawData());
     w.audio.play(app.sound);
     answerRequests(w);
+    tellPage(w, realSeconds);
     saveSettings(w);
     if (w.frames++ == 0) pageFirstFrameShown();
+}
+
+// ImGui's keyboard focus for the browser tests: the focused control's id, whether the focus ring
+// shows, and its rectangle (framebuffer pixels).
+std::string navigationJson() {
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    ImRect r;
+    if (g.NavWindow) {
+        r = g.NavWindow->NavRectRel[0];
+        r.Translate(g.NavWindow->Pos);
+    }
+    const ImGuiIO& io = ImGui::GetIO();
+    char text[200];
+    std::snprintf(text, sizeof text, ",\"navId\":%u,\"navVisible\":%s,\"navRect\":[%d,%d,%d,%d]",
+                  static_cast<unsigned>(g.NavId), io.NavActive && io.NavVisible ? "true" : "false",
+                  static_cast<int>(r.Min.x), static_cast<int>(r.Min.y), static_cast<int>(r.Max.x),
+                  static_cast<int>(r.Max.y));
+    return text;
 }
 
 } // namespace
@@ -127,8 +162,22 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
            ",\"simTime\":" + std::to_string(app.world.time) + ",\"error\":" + quoted(app.error) +
            ",\"plots\":" + (app.show.plots ? "true" : "false") +
            ",\"inspector\":" + (app.show.inspector ? "true" : "false") + ",\"lessonStep\":" +
-           (app.lesson.active() ? std::to_string(app.lesson.current + 1) : std::string("0")) + "}";
+           (app.lesson.active() ? std::to_string(app.lesson.current + 1) : std::string("0")) +
+           ",\"bounciness\":" + std::to_string(app.world.settings.bounciness) + navigationJson() +
+           "}";
     return text.c_str();
+}
+
+// The page's own form controls (page_controls.h): a control set to `value`. Returns "" or why
+// the value was refused (the page shows it beside the control).
+extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_control(const char* control,
+                                                                const char* value) {
+    static std::string error;
+    if (!gWeb) return "";
+    const PageControlOutcome out = applyPageControl(gWeb->app, control, value);
+    applyAction(gWeb->app, out.action);
+    error = out.error;
+    return error.c_str();
 }
 
 int main() {
