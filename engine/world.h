@@ -1,4 +1,4 @@
-// The world model of SPEC.md: axis-aligned blocks with mass, closed bounds, gravity, one
+// The world model of docs/physics.md: axis-aligned blocks with mass, closed bounds, gravity, one
 // bounciness, and the lecture's three simulation methods. Plain data in arrays addressed by index.
 #pragma once
 
@@ -126,6 +126,17 @@ struct World {
 // at |v|/h (a drag can stop a block within a step, never reverse it: without the cap explicit
 // steps with k·A·|v|·h/m > 2 would grow without bound). The one place forces are summed.
 Vec2 accelerationOf(const WorldSettings& settings, const Block& block, double h);
+
+// Each dynamic block's share of the totals below.
+inline Vec2 momentumOf(const Block& b) {
+    return b.mass * b.velocity;
+}
+inline double kineticEnergyOf(const Block& b) {
+    return 0.5 * b.mass * lengthSquared(b.velocity);
+}
+inline double potentialEnergyOf(const World& world, const Block& b) {
+    return -b.mass * dot(world.settings.gravity, b.position - world.bounds.min);
+}
 
 // Totals over the dynamic blocks (kinematic and static blocks have infinite mass: left out).
 Vec2 totalMomentum(const World& world);     // kg·m/s, Σ m·v

@@ -1,4 +1,4 @@
-// sandbox-cli run and validate (SPEC.md, "Command-line contract").
+// sandbox-cli run and validate (docs/cli.md).
 #include "commands.h"
 
 #include "csv.h"

@@ -1,7 +1,8 @@
-// sandbox-cli: simulate or validate scene files without a window (SPEC.md, "Command-line
-// contract"). Exit codes: 0 ok, 1 bad input (scene file or option value), 2 bad usage.
+// sandbox-cli: simulate or validate scene files without a window (docs/cli.md).
+// Exit codes: 0 ok, 1 bad input (scene file or option value), 2 bad usage.
 #include "analysis_commands.h"
 #include "commands.h"
+#include "compare_command.h"
 #include "input_limits.h"
 #include "printable.h"
 #include "vocabulary.h" // the overlay table (header-only): its names, for lesson files
@@ -148,6 +149,37 @@ int main(int argc, char** argv) {
         ->type_name("DIR")
         ->capture_default_str();
 
+    CompareRequest compare;
+    CLI::App* compareCmd = app.add_subcommand(
+        "compare", "Check your own engine: compare a trace your engine printed (CSV: t, then "
+                   "NAME_x, NAME_y, NAME_vx, NAME_vy per block) with the reference; print the "
+                   "first difference, the reference's collision before it and a diagnosis. "
+                   "Exit 0 the same, 3 different, 1 bad input, 2 bad usage (docs/compare.md).");
+    compareCmd->add_option("SCENE", compare.scene, "Scene file (JSON, format v1)")->required();
+    compareCmd->add_option("TRACE", compare.trace, "Your engine's trace (CSV)")->required();
+    std::string compareMethod, units, pxPerM, pxOrigin, tolerance;
+    CLI::Option* compareMethodOpt = compareCmd->add_option(
+        "--method", compareMethod,
+        "The reference's method: perfect, move-and-correct or turn-based (default: the scene's)");
+    CLI::Option* unitsOpt = compareCmd->add_option(
+        "--units", units,
+        "si (m, m/s, y up; the default) or gxp (pixels, y down, velocities in pixels per frame)");
+    CLI::Option* pxPerMOpt =
+        compareCmd->add_option("--px-per-m", pxPerM, "gxp: pixels per metre (required with gxp)");
+    CLI::Option* pxOriginOpt = compareCmd->add_option(
+        "--px-origin", pxOrigin,
+        "gxp: the pixel X,Y of the world's top-left corner (default 0,0)");
+    CLI::Option* toleranceOpt = compareCmd->add_option(
+        "--tolerance", tolerance,
+        "Positions within M metres are the same (default: a thousandth of the smallest block); "
+        "velocities within M per frame");
+    compareCmd->add_flag("--json", compare.json, "Print one JSON object");
+    compareMethodOpt->type_name("M");
+    unitsOpt->type_name("si|gxp");
+    pxPerMOpt->type_name("N");
+    pxOriginOpt->type_name("X,Y");
+    toleranceOpt->type_name("M");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -170,6 +202,14 @@ int main(int argc, char** argv) {
         auto given = [](CLI::Option* option, const std::string& value) {
             return option->count() > 0 ? std::optional<std::string>(value) : std::nullopt;
         };
+        if (*compareCmd) {
+            compare.method = given(compareMethodOpt, compareMethod);
+            compare.units = given(unitsOpt, units);
+            compare.pxPerM = given(pxPerMOpt, pxPerM);
+            compare.pxOrigin = given(pxOriginOpt, pxOrigin);
+            compare.tolerance = given(toleranceOpt, tolerance);
+            return compareCommand(compare, std::cout, std::cerr);
+        }
         run.method = given(methodOpt, method);
         run.dt = given(dtOpt, dt);
         run.substeps = given(substepsOpt, substeps);

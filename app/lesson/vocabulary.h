@@ -48,6 +48,9 @@
       drawComOverlay)                                                                              \
     X(poi, "poi", "impact point", "Point of impact t = a/b of the watched block's last collision", \
       false, nullptr, (DockWish{}), drawPoiOverlay)                                                \
+    /* A student's trace (docs/compare.md): their blocks as outlines over the reference's. */     \
+    X(ghost, "ghost", "your trace", "Your engine's blocks (a trace opened in the Compare section) " \
+      "as outlines over the reference's", false, nullptr, (DockWish{}), drawGhostOverlay)         \
     /* A wide table: the bottom strip. */                                                          \
     X(sideBySide, "sidebyside", "3 methods", "The three methods at once: outlines and statistics", \
       false, "Methods side by side", (DockWish{DockSide::Bottom, 420.0, 2.0, 185.0}),              \

@@ -86,6 +86,11 @@ Color kinematicBlockColor() {
     return {0.62f, 0.58f, 0.48f, 1.0f};
 }
 
+// Not yet one of the marks (markGroups): compare's colour, kept as it came.
+Color studentTraceColor() {
+    return {1.0f, 0.35f, 0.85f, 1.0f}; // magenta: none of the methods' green, orange, violet
+}
+
 double linearChannel(float c) {
     const double v = static_cast<double>(c);
     return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);

@@ -39,6 +39,9 @@ Color blockColor(int index, const std::string& sceneColor);
 // The colour of a static or kinematic block without a scene colour.
 Color staticBlockColor();
 Color kinematicBlockColor();
+// The colour of a student's trace (docs/compare.md): their blocks' outlines over the scene (the
+// ghost overlay), apart from every method's.
+Color studentTraceColor();
 
 // The scene's colours for a theme: dark (the default, for a dark room or a screen) or light (for
 // a bright room, where a projector washes dark colours out).

@@ -20,7 +20,7 @@
 // span.
 //
 // Pairs of two static blocks are never reported: they never move, so they are never resolved
-// (SPEC lets them overlap). A tag flag marks static entries; with many static blocks, build()
+// (scene files let them overlap). A tag flag marks static entries; with many static blocks, build()
 // also links each slot of the sorted array to the next slot of a moving block, so a static
 // entry is paired with the moving ones only, in the same order as before (20,000 overlapping
 // static blocks in one cell cost 20,000 pair tests, not 200 million).

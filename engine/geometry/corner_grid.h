@@ -9,7 +9,7 @@
 // What it answers is exactly what the BroadPhase answers for the same registered boxes: the
 // blocks j whose box meets the query box (meets(), touching and the tolerance count), and every
 // pair of boxes that meet, tested as meets(box of the lower index, box of the higher), except
-// pairs of two static blocks (never resolved: SPEC lets them overlap). Only the order of the
+// pairs of two static blocks (never resolved: scene files let them overlap). Only the order of the
 // answers differs.
 #pragma once
 

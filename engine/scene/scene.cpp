@@ -1,4 +1,4 @@
-// Scene files, format v1 (SPEC.md, "Scene file format v1"): parsing with validation that names
+// Scene files, format v1 (docs/scene-format.md): parsing with validation that names
 // the place of every error. Saving and the conversion to and from World are in scene_save.cpp.
 #include "scene.h"
 
@@ -522,7 +522,7 @@ SceneResult parseScene(const std::string& text, const std::string& sourceName) {
     }
 }
 
-std::optional<SceneError> readJsonFile(const std::string& path, std::string& text) {
+std::optional<SceneError> regularFileError(const std::string& path) {
     // Only regular files: a directory cannot be read and a FIFO could block forever. A path that
     // cannot be followed says why (a symlink loop, a directory without permission).
     std::error_code ec;
@@ -530,6 +530,11 @@ std::optional<SceneError> readJsonFile(const std::string& path, std::string& tex
     if (status.type() == std::filesystem::file_type::not_found) return placed(path, "no such file");
     if (ec) return placed(path, "cannot open the file: " + ec.message());
     if (!std::filesystem::is_regular_file(status)) return placed(path, "not a regular file");
+    return std::nullopt;
+}
+
+std::optional<SceneError> readJsonFile(const std::string& path, std::string& text) {
+    if (auto error = regularFileError(path)) return error;
     std::ifstream in(path, std::ios::binary);
     if (!in) return placed(path, "cannot open the file");
     in.seekg(0, std::ios::end);

@@ -1,4 +1,4 @@
-// Scene files, format v1 (SPEC.md): load with validation, save, and build a World from a scene.
+// Scene files, format v1 (docs/scene-format.md): load with validation, save, and build a World from a scene.
 #pragma once
 
 #include "world.h"

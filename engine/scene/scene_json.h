@@ -54,6 +54,9 @@ Vec2 vec2(const nlohmann::json& value, const std::string& path);
 
 } // namespace scene_json
 
+// Why `path` cannot be read as a regular file (missing, a directory, a FIFO that could block
+// forever), or nothing: the check of every file the sandbox reads (scenes, lessons, traces).
+std::optional<SceneError> regularFileError(const std::string& path);
 // Reads a regular file of at most the scene format's size limit into `text`.
 std::optional<SceneError> readJsonFile(const std::string& path, std::string& text);
 // Parses JSON text with the scene loader's checks (size, emptiness, nesting depth, NUL bytes,

@@ -19,7 +19,7 @@ std::string field(const char* key, const std::string& valueText) {
     return "\"" + std::string(key) + "\": " + valueText;
 }
 
-// A block on one line, keys in the order of SPEC.md.
+// A block on one line, keys in the order of docs/scene-format.md.
 std::string blockText(const BlockDef& b) {
     std::vector<std::string> fields;
     if (!b.name.empty()) fields.push_back(field("name", dumpValue(b.name)));

@@ -1,4 +1,4 @@
-// The benchmark gas (SPEC, acceptance numbers): squares of 0.5 m on a 1 m grid, speeds up to
+// The benchmark gas (docs/physics.md, what the engine is held to): squares of 0.5 m on a 1 m grid, speeds up to
 // 3 m/s in random directions, no gravity, C = 1, dt = 1/60, in a square box just large enough.
 #pragma once
 

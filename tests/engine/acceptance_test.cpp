@@ -1,4 +1,4 @@
-// SPEC's accuracy acceptance number for the perfect method: in a gravity-free scene with C = 1,
+// The accuracy acceptance number for the perfect method: in a gravity-free scene with C = 1,
 // momentum and kinetic energy are conserved to a relative 1e-12 over 100,000 collisions, and
 // nothing ever overlaps. Walls change momentum, so the test accounts for every wall impulse from
 // the collision log: p(now) = p(start) + Σ m·(v' − v) over the wall collisions.

@@ -72,7 +72,7 @@ TEST_P(PerfectTouchingPi, SmallBlockTouchingTheWallCountsPiAndKeepsEnergy) {
     // 314 for 1e4, 3141 for 1e6: exact integers.
     EXPECT_EQ(touching.collisions, galperinCount(ratio));
     EXPECT_EQ(touching.capHits, 0);
-    // 1e-9 relative (SPEC): each of the ~3141 resolves rounds at 1e-16.
+    // 1e-9 relative (docs/physics.md): each of the ~3141 resolves rounds at 1e-16.
     EXPECT_NEAR(touching.kineticEnergy, e0, 1e-9 * e0);
     // The limit of a vanishing gap: the same count as with the block 1e-7 m off the wall.
     const Outcome gap = run(piScene(0.2500001, ratio), 1200);

@@ -128,7 +128,7 @@ TEST_P(CornerHit, ResolvesBothVelocityComponents) {
 
 // Documents the move-and-correct corner behaviour: it resolves one axis only (the overlap is
 // equal on both axes and it picks the axis of least penetration), so B goes straight up and A
-// keeps moving right. (SPEC: "can resolve in the wrong direction".)
+// keeps moving right. (docs/physics.md: a deep overlap can be pushed out the wrong side.)
 TEST(MoveAndCorrect, CornerHitResolvesOnlyOneAxis) {
     World world = makeWorld(Method::MoveAndCorrect, {0.0, 0.0}, 1.0);
     addBlock(world, {5.0, 5.0}, {1.0, 1.0}, {7.0, 7.0}, 1.0);

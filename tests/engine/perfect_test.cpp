@@ -129,7 +129,7 @@ TEST(PerfectGravity, NoOverlapWithGravityAndBounciness) {
     }
 }
 
-// A gas falling under gravity settles into a pile on the floor. SPEC: resting stacks must run
+// A gas falling under gravity settles into a pile on the floor. A resting stack must run
 // at full speed, so a settling pile must not need 20,000 events in one frame. Two causes found:
 // (1) fixed in fe6c5d5: blocks resting on each other overlap by ~1e-16 m (rounding), which made
 // sliding pairs "collide" sideways at time 0 and rest clusters alternate by 1 ulp forever

@@ -577,7 +577,7 @@ TEST_P(Jams, JammedKinematicReversalIsRepredicted) {
 // A 20 x 20 jam of 0.1 m blocks (touching, random velocities up to 20 m/s, masses 1 to 1000 kg) in
 // a box with a little room around it. Move-and-correct and turn-based advance. The perfect method
 // meets an event storm at the first instant (corner contacts of the lattice couple every row and
-// column) and, as SPEC allows, ends each frame at the event cap with time held back: bounded work
+// column) and, as the event cap allows, ends each frame at the event cap with time held back: bounded work
 // per frame, no overlap, and every such frame says so in eventCapHits (checked by soak()). Known
 // limitation: it does not get past that instant (the shipped 36-block jammed_box.json does).
 TEST_P(Jams, JammedBoxOf400BlocksAdvances) {

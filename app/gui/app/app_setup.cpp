@@ -63,6 +63,12 @@ bool setupApp(App& app, const Options& options, const std::string& lastScene, st
     app.verbose = options.verbose;
     if (options.showGiven) applyShowSet(app, options.show);
     if (!openFirst(app, options, lastScene, error)) return false;
+    // --compare: the trace opened on that scene, at its first difference.
+    app.studentTrace.units = options.traceUnits;
+    if (!options.compareTrace.empty() && !openTrace(app, options.compareTrace)) {
+        if (error) *error = app.error;
+        return false;
+    }
     // --frame: the run has just started, so the camera follows from its start (the anchor the
     // run set stays; setViewFrame would anchor at the first frame drawn, after --frames N).
     if (options.frame) app.frame = *options.frame;

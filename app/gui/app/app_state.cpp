@@ -51,6 +51,7 @@ void setScene(App& app, const Scene& scene, const std::string& path) {
     app.paused = true;
     app.blocksEdited = false;
     app.ui.typedWarning.clear();
+    closeTrace(app); // compared with another scene
     restartRun(app);
 }
 
@@ -83,6 +84,51 @@ void resetScene(App& app) {
     const WorldSettings chosen = app.world.settings;
     restartRun(app);
     app.world.settings = chosen;
+}
+
+bool openTrace(App& app, const std::string& path) {
+    if (const auto error = openStudentTrace(app.studentTrace, path, app.scene, app.world.settings,
+                                            app.studentTrace.units)) {
+        app.error = *error;
+        return false;
+    }
+    app.error.clear();
+    app.tracePath = path;
+    // The reference runs from the scene's start, without the Tips' mistakes.
+    app.world.settings = app.studentTrace.comparison->reference;
+    resetScene(app);
+    app.show.ghost = app.show.timeline = app.show.inspector = true;
+    goToFirstDifference(app);
+    app.note = "Your trace: " + studentTraceSummary(app.studentTrace) + ".";
+    return true;
+}
+
+bool compareTraceAgain(App& app) {
+    if (!app.studentTrace.open()) return false;
+    return openTrace(app, app.studentTrace.path);
+}
+
+bool goToFirstDifference(App& app) {
+    const std::int64_t frame = app.studentTrace.firstDifference();
+    if (frame < 0) return false;
+    const auto target = static_cast<std::uint64_t>(frame);
+    app.paused = true;
+    if (!app.history.empty() && target >= app.history.firstFrame() &&
+        target <= app.history.lastFrame())
+        return scrubTo(app, target);
+    if (app.world.frame > target) resetScene(app);
+    while (app.world.frame < target) stepSimulation(app);
+    return true;
+}
+
+void closeTrace(App& app) {
+    const TraceUnitsSpec units = app.studentTrace.units; // the section's choice stays
+    app.studentTrace = StudentTrace{};
+    app.studentTrace.units = units;
+}
+
+bool openFile(App& app, const std::string& path) {
+    return isTraceFile(path) ? openTrace(app, path) : loadScene(app, path);
 }
 
 void resetToFile(App& app) {

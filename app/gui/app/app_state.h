@@ -19,6 +19,7 @@
 #include "scene_library.h"
 #include "side_by_side.h"
 #include "spoken_text.h"
+#include "student_trace.h"
 #include "telemetry.h"
 #include "timeline.h"
 #include "trails.h"
@@ -171,6 +172,11 @@ struct App : Run {
     // The shipped scenes (the picker) and where they are.
     std::string scenesDir;
     std::vector<SceneEntry> sceneFiles;
+    // A student's trace opened on the scene (student_trace.h, docs/compare.md): the ghost
+    // overlay's outlines, the timeline's mark, the inspector's "your trace"; the Compare
+    // section's path field. A new scene closes it.
+    StudentTrace studentTrace;
+    std::string tracePath;
     // The open lesson (lesson_session.h), the shipped lessons (the picker) and where they are.
     LessonSession lesson;
     std::string lessonsDir;
@@ -206,6 +212,20 @@ bool setBlockSize(App& app, int index, Vec2 size);
 // Loads `path` as the current scene (closing a lesson). On error, keeps the current scene, sets
 // app.error and returns false.
 bool loadScene(App& app, const std::string& path);
+// Opens `path` as a student's trace of the current scene (units: app.studentTrace.units) and
+// compares it with the reference (the current settings, the Tips' mistakes off): the run starts
+// again from the scene, goes to the first difference and pauses there, with the ghost overlay,
+// the timeline and the inspector shown. On error, keeps what was open, sets app.error and
+// returns false.
+bool openTrace(App& app, const std::string& path);
+// Compares the open trace again with the current settings (after the method was changed).
+bool compareTraceAgain(App& app);
+// Goes to the open trace's first difference (the timeline's frame, or the run started again and
+// stepped there) and pauses; false when there is none.
+bool goToFirstDifference(App& app);
+void closeTrace(App& app);
+// A dropped or picked file: a trace (.csv) or a scene.
+bool openFile(App& app, const std::string& path);
 // Uses an already parsed scene (tests, and the first scene when none can be loaded).
 void setScene(App& app, const Scene& scene, const std::string& path);
 // R: the blocks and time back to the scene as loaded; the chosen method, bounciness, gravity,

@@ -136,6 +136,17 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
                    "Offscreen: write what would be heard of the frames simulated (--frames N, or "
                    "--record's) to this WAV file (mono, 16 bit, 44.1 kHz; sound on at full "
                    "volume); alone, nothing is rendered");
+    std::string traceUnits, pxPerM, pxOrigin;
+    app.add_option("--compare", o.compareTrace,
+                   "Open a trace your engine printed (CSV: t, then NAME_x, NAME_y, NAME_vx, "
+                   "NAME_vy per block; docs/compare.md) on the scene: its blocks as outlines, the "
+                   "timeline at the first difference, the inspector's diagnosis");
+    app.add_option("--trace-units", traceUnits,
+                   "The trace's units: si (m, m/s, y up; the default) or gxp (pixels, y down, "
+                   "velocities in pixels per frame; needs --px-per-m)")
+        ->check(CLI::IsMember({"si", "gxp"}));
+    app.add_option("--px-per-m", pxPerM, "gxp: pixels per metre");
+    app.add_option("--px-origin", pxOrigin, "gxp: the pixel X,Y of the world's top-left corner");
     app.set_version_flag("--version", "sandbox 0.1");
     try {
         app.parse(argc, argv);
@@ -163,6 +174,20 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
                                                                std::to_string(o.frames) +
                                                                "): the frames recorded");
         }
+        if (!traceUnits.empty()) parseTraceUnits(traceUnits, o.traceUnits.units);
+        const bool gxp = o.traceUnits.units == TraceUnits::Gxp;
+        if (gxp && pxPerM.empty())
+            throw CLI::ValidationError("--trace-units gxp", "needs --px-per-m N");
+        if (!gxp && (!pxPerM.empty() || !pxOrigin.empty()))
+            throw CLI::ValidationError("--px-per-m and --px-origin", "are for --trace-units gxp");
+        if (!pxPerM.empty())
+            if (std::string p = parsePxPerM(pxPerM, o.traceUnits.pxPerM); !p.empty())
+                throw CLI::ValidationError("--px-per-m", p);
+        if (!pxOrigin.empty())
+            if (std::string p = parsePxOrigin(pxOrigin, o.traceUnits.originPx); !p.empty())
+                throw CLI::ValidationError("--px-origin", p);
+        if (!traceUnits.empty() && o.compareTrace.empty())
+            throw CLI::ValidationError("--trace-units", "needs --compare TRACE.csv");
         if (!o.record.empty() && o.frames <= 0) {
             throw CLI::ValidationError("--record", "needs --frames N (N > 0)");
         }

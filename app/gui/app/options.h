@@ -1,11 +1,13 @@
-// The command line shared by `sandbox` and `sandbox-offscreen` (SPEC's public contract):
+// The command line shared by `sandbox` and `sandbox-offscreen` (docs/cli.md, public):
 //   sandbox [SCENE] [--screenshot FILE] [--frames N] [--size WxH] [--show LIST]
 //           [--record DIR] [--benchmark-frames N] [--ui-scale S] [--verbose] [--present]
 //           [--layout-json FILE] [--frame world|com] [--theme dark|light] [--timeline-frame N]
 //           [--audio-wav FILE]
+//           [--compare TRACE.csv [--trace-units si|gxp --px-per-m N --px-origin X,Y]]
 #pragma once
 
 #include "overlays.h"
+#include "trace.h"
 #include "view_frame.h"
 
 #include <optional>
@@ -45,6 +47,10 @@ struct Options {
     std::string theme;              // --theme dark|light; "": the saved setting (window) or dark
     long long timelineFrame = -1;   // offscreen: after --frames, back to this frame (the timeline)
     std::string audioWav;           // offscreen: the knocks of the frames simulated, as a WAV file
+    // --compare FILE: a trace of the student's engine opened on the scene (docs/compare.md), in
+    // --trace-units (si, or gxp with --px-per-m and --px-origin).
+    std::string compareTrace;
+    TraceUnitsSpec traceUnits;
 };
 
 // Turns the overlay called `name` on or off; false for an unknown name.

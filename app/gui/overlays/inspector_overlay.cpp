@@ -5,6 +5,7 @@
 #include "inspector_format.h"
 #include "overlay_window.h"
 #include "printable.h"
+#include "report.h"
 #include "ui_style.h"
 
 #include <cstdio>
@@ -23,11 +24,51 @@ void formulaLine(const std::string& text, bool strong) {
         ImGui::TextUnformatted(text.c_str());
 }
 
+// A student's trace (docs/compare.md): the reference's collision where the two part, the
+// student's velocities beside it, and the diagnosis; above the collisions of the run.
+void studentTraceSection(App& app) {
+    const StudentTrace& st = app.studentTrace;
+    if (!st.open()) return;
+    const TraceComparison& c = *st.comparison;
+    ImGui::PushStyleColor(ImGuiCol_Text,
+                          uiThemed(ImGui::ColorConvertU32ToFloat4(studentTraceColor().packed())));
+    textWrappedAtSpaces("Your trace: " + studentTraceSummary(st));
+    ImGui::PopStyleColor();
+    if (!c.same()) {
+        const PartingCollision& p = c.parting;
+        if (p.found) {
+            const CollisionRecord& r = p.record;
+            const CollisionFormula f =
+                collisionFormula(r, bodyName(app, r.block), bodyName(app, r.other));
+            dimText(p.inPartingFrame ? "The reference's collision in that frame:"
+                                     : "The reference's collision nearest to it:");
+            textWrappedAtSpaces(f.title);
+            formulaLine(f.u, true);
+            formulaLine(f.v1After, true);
+            formulaLine(f.v2After, true);
+            if (p.yoursKnown && p.inPartingFrame) {
+                const Vec2 y = p.yoursVelocity, ref = p.referenceVelocity;
+                ImGui::PushStyleColor(ImGuiCol_Text, uiThemed(ImGui::ColorConvertU32ToFloat4(
+                                                         studentTraceColor().packed())));
+                textWrappedAtSpaces(blockDisplayName(app, p.block) + " after it: yours v = (" +
+                                    formatNumber(y.x) + ", " + formatNumber(y.y) +
+                                    ") m/s, the reference's (" + formatNumber(ref.x) + ", " +
+                                    formatNumber(ref.y) + ") m/s");
+                ImGui::PopStyleColor();
+            }
+        }
+        for (const std::string& line : diagnosisLines(c)) textWrappedAtSpaces(line);
+        if (ImGui::SmallButton("go to the first difference")) goToFirstDifference(app);
+    }
+    ImGui::Separator();
+}
+
 } // namespace
 
 void drawInspectorOverlay(App& app) {
     OverlayWindow overlay(app, OverlayId::inspector);
     if (!overlay) return;
+    studentTraceSection(app);
     // A small window shows the formula first, the switch under it.
     auto pauseSwitch = [&] { ImGui::Checkbox("pause on each collision", &app.pauseOnCollision); };
     if (!overlay.compact()) pauseSwitch();

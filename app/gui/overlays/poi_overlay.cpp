@@ -44,37 +44,6 @@ void box(const App& app, ImDrawList* dl, Vec2 centre, Vec2 size, Mark mark, floa
     }
 }
 
-// A box of the world on screen, grown by `grow` px on every side (room for its labels).
-ScreenRect screenBox(const App& app, Vec2 centre, Vec2 size, double grow) {
-    const Vec2 a = app.camera.worldToScreen(centre - size * 0.5);
-    const Vec2 b = app.camera.worldToScreen(centre + size * 0.5);
-    const double x = std::min(a.x, b.x) - grow, y = std::min(a.y, b.y) - grow;
-    return {x, y, std::abs(b.x - a.x) + 2.0 * grow, std::abs(b.y - a.y) + 2.0 * grow};
-}
-
-// Where the caption goes: in the scene, over none of the blocks and their labels, nor the boxes
-// of the point of impact (placeCaption).
-ImVec2 captionPlace(const App& app, float width, float height) {
-    const double font = ImGui::GetFontSize(), s = app.uiScale;
-    const ScreenRect& vp = app.camera.viewport();
-    // The status badge along the top of the scene (method, t, PAUSED, the start hint).
-    std::vector<ScreenRect> avoid = {{vp.x, vp.y, vp.width, font + 24.0 * s}};
-    // The axis numbers under the world and left of it.
-    const ScreenRect w = worldRectOnScreen(app.camera, app.world.bounds);
-    avoid.push_back({w.x - font, w.y + w.height, w.width + 4.0 * font, 1.6 * font});
-    avoid.push_back({w.x - 4.0 * font, w.y - font, 4.0 * font, w.height + 2.0 * font});
-    for (const Block& b : app.world.blocks)
-        avoid.push_back(screenBox(app, b.position, b.size, font));
-    const PoiView& p = app.poi;
-    if (p.valid) {
-        for (Vec2 c : {p.oldPosition, p.newPosition, p.ghost, p.crooked})
-            avoid.push_back(screenBox(app, c, p.size, font * 1.5));
-    }
-    const ScreenRect r = placeCaption(
-        width, height, vp, worldRectOnScreen(app.camera, app.world.bounds), avoid, 10.0 * s);
-    return ImVec2(static_cast<float>(r.x), static_cast<float>(r.y));
-}
-
 void label(ImDrawList* dl, ImVec2 at, Mark mark, const std::string& text) {
     if (!uiLightTheme())
         dl->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 230), text.c_str());
@@ -86,12 +55,11 @@ void label(ImDrawList* dl, ImVec2 at, Mark mark, const std::string& text) {
 void drawPoiOverlay(App& app) {
     const PoiView& p = app.poi;
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
-    const float font = ImGui::GetFontSize();
     const float s = app.uiScale;
     if (!p.valid || p.block < 0 || p.block >= static_cast<int>(app.world.blocks.size())) {
         const char* text = "Point of impact: shown after the watched block's next collision";
         const ImVec2 size = ImGui::CalcTextSize(text);
-        label(dl, captionPlace(app, size.x, size.y), Mark::PoiOld, text);
+        label(dl, sceneCaptionPlace(app, size.x, size.y, {}), Mark::PoiOld, text);
         return;
     }
     const float w = 2.0f * s;
@@ -134,14 +102,9 @@ void drawPoiOverlay(App& app) {
     };
     const ImU32 colors[4] = {uiThemed(IM_COL32(230, 234, 242, 255)), uiMarkColor(Mark::PoiContact),
                              uiMarkColor(Mark::PoiContact), uiMarkColor(Mark::PoiMovedBack)};
-    float width = 0.0f;
-    for (const std::string& l : lines) width = std::max(width, ImGui::CalcTextSize(l.c_str()).x);
-    // The plate is 6 px (x UI scale) wider than the text on each side, 4 px taller.
-    const ImVec2 plate = captionPlace(app, width + 12.0f * s, 4.0f * font + 8.0f * s);
-    const ImVec2 at(plate.x + 6.0f * s, plate.y + 4.0f * s);
-    dl->AddRectFilled(
-        ImVec2(at.x - 6 * s, at.y - 4 * s), ImVec2(at.x + width + 6 * s, at.y + 4 * font + 4 * s),
-        uiLightTheme() ? IM_COL32(250, 250, 252, 230) : IM_COL32(16, 18, 26, 215), 4.0f);
-    for (int i = 0; i < 4; ++i)
-        dl->AddText(ImVec2(at.x, at.y + i * font), colors[i], lines[i].c_str());
+    std::vector<CaptionLine> caption;
+    for (int i = 0; i < 4; ++i) caption.push_back({lines[i], colors[i], true});
+    std::vector<WorldBox> boxes;
+    for (Vec2 c : {p.oldPosition, p.newPosition, p.ghost, p.crooked}) boxes.push_back({c, p.size});
+    drawSceneCaption(app, caption, boxes);
 }

@@ -3,8 +3,31 @@
 // frame replays from there (the same states, bit for bit, unless something is changed).
 #include "app_frame.h"
 #include "overlay_window.h"
+#include "ui_style.h"
 
 #include <cstdio>
+
+namespace {
+
+// A student's trace (docs/compare.md): its first difference marked on the slider just drawn (a
+// tick in the trace's colour), and a button that goes there.
+void markFirstDifference(App& app, std::uint64_t first, std::uint64_t last) {
+    const std::int64_t at = app.studentTrace.firstDifference();
+    if (at < 0) return;
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    const auto frame = static_cast<std::uint64_t>(at);
+    if (frame >= first && frame <= last && last > first) {
+        const float x = lo.x + (hi.x - lo.x) * static_cast<float>(frame - first) /
+                                   static_cast<float>(last - first);
+        ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(x - 1.5f, lo.y), ImVec2(x + 1.5f, hi.y),
+                                                  uiThemed(studentTraceColor().packed()));
+    }
+    char text[96];
+    std::snprintf(text, sizeof text, "first difference: frame %lld", static_cast<long long>(at));
+    if (ImGui::SmallButton(text)) goToFirstDifference(app);
+}
+
+} // namespace
 
 void drawTimelineOverlay(App& app) {
     OverlayWindow overlay(app, OverlayId::timeline);
@@ -38,6 +61,7 @@ void drawTimelineOverlay(App& app) {
                          ImGuiSliderFlags_AlwaysClamp)) {
         go(frame);
     }
+    markFirstDifference(app, first, last);
     char info[160];
     std::snprintf(
         info, sizeof info, "%.1f s recorded, %zu keyframes, %.1f MB%s", h.recordedSeconds(),

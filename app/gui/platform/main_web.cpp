@@ -103,7 +103,7 @@ void frame(void* arg) {
         uiRendererFontsChanged();
         uiRendererNewFrame(); // uploads the new atlas before this frame uses it
     }
-    for (const std::string& path : canvasTakeOpenedFiles(w.canvas)) loadScene(app, path);
+    for (const std::string& path : canvasTakeOpenedFiles(w.canvas)) openFile(app, path);
     for (const TouchGesture& g : canvasTakeGestures(w.canvas))
         touchPanZoom(app, g.from, g.to, g.spreadRatio);
     ImGui::NewFrame();

@@ -95,6 +95,7 @@ int runWindow(const Options& options, char** argv, int argc) {
             if (app.quitDialogOpen && app.verbose) std::printf("quit: unsaved edits, asking\n");
         }
         app.fullscreen = window.fullscreen;
+        for (const std::string& path : windowTakeDroppedFiles(window)) openFile(app, path);
         ImGui::NewFrame();
         appFrame(app, windowTakeKeyPresses(window), realSeconds, true);
         ImGui::Render();

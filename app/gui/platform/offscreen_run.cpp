@@ -124,8 +124,8 @@ bool runProgram(const std::vector<std::string>& args) {
     return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
-// The layout of the last frame (SPEC's --layout-json): the scene's rectangle, the world's bounds
-// as drawn, and every window drawn, in image pixels.
+// The layout of the last frame (--layout-json, docs/cli.md): the scene's rectangle, the world's
+// bounds as drawn, and every window drawn, in image pixels.
 bool writeLayoutJson(const App& app, const std::string& path) {
     std::FILE* f = std::fopen(path.c_str(), "w");
     if (!f) {

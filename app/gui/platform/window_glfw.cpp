@@ -37,6 +37,12 @@ void onGlfwError(int code, const char* description) {
     gLastGlfwError = "GLFW error " + std::to_string(code) + ": " + (description ? description : "");
 }
 
+// Files dropped on the window (a scene, or a trace of the student's engine).
+void onDrop(GLFWwindow* window, int count, const char** paths) {
+    auto* w = static_cast<WindowGlfw*>(glfwGetWindowUserPointer(window));
+    for (int i = 0; w && i < count; ++i) w->droppedFiles.emplace_back(paths[i]);
+}
+
 // Installed before ImGui's GLFW backend, which chains to it.
 void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     auto* w = static_cast<WindowGlfw*>(glfwGetWindowUserPointer(window));
@@ -66,6 +72,7 @@ bool windowInit(WindowGlfw& w, int width, int height, const char* title, std::st
     glfwSwapInterval(1);
     glfwSetWindowUserPointer(w.window, &w);
     glfwSetKeyCallback(w.window, onKey);
+    glfwSetDropCallback(w.window, onDrop);
     std::string uiError;
     if (!ImGui_ImplGlfw_InitForOpenGL(w.window, true) || !uiRendererInit(&uiError)) {
         if (error)
@@ -147,4 +154,10 @@ std::vector<KeyPress> windowTakeKeyPresses(WindowGlfw& w) {
     std::vector<KeyPress> keys;
     keys.swap(w.keyPresses);
     return keys;
+}
+
+std::vector<std::string> windowTakeDroppedFiles(WindowGlfw& w) {
+    std::vector<std::string> files;
+    files.swap(w.droppedFiles);
+    return files;
 }

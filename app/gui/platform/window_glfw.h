@@ -15,9 +15,10 @@ struct WindowGlfw {
     bool fullscreen = false;
     int windowedX = 0, windowedY = 0, windowedWidth = 1280, windowedHeight = 720;
     double lastTime = 0.0;
-    std::vector<KeyPress> keyPresses; // since the last windowTakeKeyPresses()
-    std::vector<int> heldTaps;        // keys held down one frame for ImGui (holdKeyTaps)
-    bool closeRequested = false;      // the close button was pressed (the app decides)
+    std::vector<KeyPress> keyPresses;      // since the last windowTakeKeyPresses()
+    std::vector<int> heldTaps;             // keys held down one frame for ImGui (holdKeyTaps)
+    std::vector<std::string> droppedFiles; // since the last windowTakeDroppedFiles()
+    bool closeRequested = false;           // the close button was pressed (the app decides)
 };
 
 // Opens the window (ImGui context already created). False with a message on failure.
@@ -34,3 +35,5 @@ void windowSize(const WindowGlfw& w, int* width, int* height);
 void windowRequestClose(WindowGlfw& w);
 // The key presses (not repeats) since the last call, in order.
 std::vector<KeyPress> windowTakeKeyPresses(WindowGlfw& w);
+// The files dropped on the window since the last call (a scene, or a trace: openFile).
+std::vector<std::string> windowTakeDroppedFiles(WindowGlfw& w);

@@ -234,6 +234,13 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
                 {&app.methods.run(method).world, markColor(methodMark(method), app.lightTheme)});
         }
     }
+    // The ghost overlay: a student's blocks at this frame as outlines (docs/compare.md).
+    World yours;
+    if (app.show.ghost && app.studentTrace.open()) {
+        yours.blocks = app.world.blocks;
+        if (app.studentTrace.ghostAt(static_cast<std::int64_t>(app.world.frame), yours))
+            view.ghosts.push_back({&yours, studentTraceColor()});
+    }
     view.blockColors.reserve(app.world.blocks.size());
     for (std::size_t i = 0; i < app.world.blocks.size(); ++i) {
         view.blockColors.push_back(blockDisplayColor(app, static_cast<int>(i)));

@@ -131,7 +131,8 @@ void fileSection(App& app) {
     if (!ImGui::CollapsingHeader("Open and save")) return;
     if (app.browserFiles) {
         if (ImGui::Button("Open a scene file...")) app.filePickerRequested = true;
-        tooltip("The browser's file dialog; or drop a .json file on the page");
+        tooltip("The browser's file dialog; or drop a .json file on the page (a .csv is a trace "
+                "of your engine: the Compare section)");
         if (ImGui::Button("Save (download)")) saveCurrentScene(app, app.savePath);
         tooltip("Downloads the current state as a scene file (format v1); Ctrl+S");
         return;
@@ -141,6 +142,52 @@ void fileSection(App& app) {
     if (ImGui::Button("Open") && !app.openPath.empty()) loadScene(app, app.openPath);
     if (ImGui::Button("Save as... (Ctrl+S)")) applyAction(app, Action::Save);
     tooltip("Save the current state as a scene file (format v1): asks for a name");
+}
+
+// Check your own engine (docs/compare.md): a trace the student's engine printed, opened on the
+// current scene and compared with it; the units it is in.
+void compareSection(App& app) {
+    if (!ImGui::CollapsingHeader("Compare your engine's trace")) return;
+    StudentTrace& st = app.studentTrace;
+    bool gxp = st.units.units == TraceUnits::Gxp;
+    if (ImGui::RadioButton("SI (m, m/s, y up)", !gxp)) st.units.units = TraceUnits::Si;
+    ImGui::SameLine();
+    if (ImGui::RadioButton("gxp (pixels)", gxp)) {
+        st.units.units = TraceUnits::Gxp;
+        if (!(st.units.pxPerM > 0.0)) st.units.pxPerM = 50.0;
+    }
+    tooltip("gxp: pixels with y down, velocities in pixels per frame at the scene's frame rate");
+    gxp = st.units.units == TraceUnits::Gxp;
+    if (gxp) {
+        double pxPerM = st.units.pxPerM;
+        if (ImGui::InputDouble("px per m", &pxPerM, 0.0, 0.0, "%g") && pxPerM >= 1e-6 &&
+            pxPerM <= 1e9)
+            st.units.pxPerM = pxPerM;
+        double origin[2] = {st.units.originPx.x, st.units.originPx.y};
+        if (ImGui::InputScalarN("origin px", ImGuiDataType_Double, origin, 2, nullptr, nullptr,
+                                "%g") &&
+            std::abs(origin[0]) <= 1e9 && std::abs(origin[1]) <= 1e9)
+            st.units.originPx = {origin[0], origin[1]};
+        tooltip("The pixel of the world's top-left corner (your walls' margin)");
+    }
+    if (app.browserFiles) {
+        if (ImGui::Button("Open a trace...")) app.filePickerRequested = true;
+        tooltip("The browser's file dialog; or drop a .csv file on the page");
+    } else {
+        ImGui::InputTextWithHint("##trace", "path/to/my_trace.csv", &app.tracePath);
+        ImGui::SameLine();
+        if (ImGui::Button("Open##trace") && !app.tracePath.empty()) openTrace(app, app.tracePath);
+        tooltip("A CSV with t, then NAME_x, NAME_y, NAME_vx, NAME_vy per block; or drop it on "
+                "the window");
+    }
+    if (!st.open()) return;
+    textWrappedAtSpaces(studentTraceSummary(st));
+    if (ImGui::SmallButton("first difference")) goToFirstDifference(app);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("compare again")) compareTraceAgain(app);
+    tooltip("With the current settings (the method chosen above), from the start");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("close")) closeTrace(app);
 }
 
 void runSection(App& app) {
@@ -508,6 +555,7 @@ void drawControlsPanel(App& app) {
     statisticsSection(app);
     viewSection(app);
     fileSection(app);
+    compareSection(app);
     ImGui::PopItemWidth();
     ImGui::EndChild();
     ImGui::PopItemWidth();

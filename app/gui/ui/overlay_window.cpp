@@ -5,6 +5,7 @@
 #include <imgui_internal.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace {
@@ -12,7 +13,54 @@ namespace {
 // Background alpha: opaque enough that nothing of the scene shows through the text.
 constexpr float kWindowAlpha = 0.97f;
 
+// A box of the world on screen, grown by `grow` px on every side (room for its labels).
+ScreenRect screenBox(const App& app, Vec2 centre, Vec2 size, double grow) {
+    const Vec2 a = app.camera.worldToScreen(centre - size * 0.5);
+    const Vec2 b = app.camera.worldToScreen(centre + size * 0.5);
+    const double x = std::min(a.x, b.x) - grow, y = std::min(a.y, b.y) - grow;
+    return {x, y, std::abs(b.x - a.x) + 2.0 * grow, std::abs(b.y - a.y) + 2.0 * grow};
+}
+
 } // namespace
+
+ImVec2 sceneCaptionPlace(const App& app, float width, float height,
+                         const std::vector<WorldBox>& boxes) {
+    const double font = ImGui::GetFontSize(), s = app.uiScale;
+    const ScreenRect& vp = app.camera.viewport();
+    // The status badge along the top of the scene (method, t, PAUSED, the start hint).
+    std::vector<ScreenRect> avoid = {{vp.x, vp.y, vp.width, font + 24.0 * s}};
+    // The axis numbers under the world and left of it.
+    const ScreenRect w = worldRectOnScreen(app.camera, app.world.bounds);
+    avoid.push_back({w.x - font, w.y + w.height, w.width + 4.0 * font, 1.6 * font});
+    avoid.push_back({w.x - 4.0 * font, w.y - font, 4.0 * font, w.height + 2.0 * font});
+    for (const Block& b : app.world.blocks)
+        avoid.push_back(screenBox(app, b.position, b.size, font));
+    for (const WorldBox& b : boxes) avoid.push_back(screenBox(app, b.centre, b.size, font * 1.5));
+    const ScreenRect r = placeCaption(
+        width, height, vp, worldRectOnScreen(app.camera, app.world.bounds), avoid, 10.0 * s);
+    return ImVec2(static_cast<float>(r.x), static_cast<float>(r.y));
+}
+
+void drawSceneCaption(const App& app, const std::vector<CaptionLine>& lines,
+                      const std::vector<WorldBox>& boxes) {
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    const float font = ImGui::GetFontSize();
+    const float s = app.uiScale;
+    float width = 0.0f;
+    for (const CaptionLine& l : lines)
+        width = std::max(width, ImGui::CalcTextSize(l.text.c_str()).x);
+    const float n = static_cast<float>(lines.size());
+    // The plate is 6 px (x UI scale) wider than the text on each side, 4 px taller.
+    const ImVec2 plate = sceneCaptionPlace(app, width + 12.0f * s, n * font + 8.0f * s, boxes);
+    const ImVec2 at(plate.x + 6.0f * s, plate.y + 4.0f * s);
+    dl->AddRectFilled(
+        ImVec2(at.x - 6 * s, at.y - 4 * s), ImVec2(at.x + width + 6 * s, at.y + n * font + 4 * s),
+        uiLightTheme() ? IM_COL32(250, 250, 252, 230) : IM_COL32(16, 18, 26, 215), 4.0f);
+    for (std::size_t i = 0; i < lines.size(); ++i)
+        dl->AddText(ImVec2(at.x, at.y + static_cast<float>(i) * font),
+                    lines[i].themed ? lines[i].color : uiThemed(lines[i].color),
+                    lines[i].text.c_str());
+}
 
 void recordShownWindow(App& app, const char* name) {
     const ImVec2 p = ImGui::GetWindowPos(), s = ImGui::GetWindowSize();

@@ -9,6 +9,9 @@
 
 #include <imgui.h>
 
+#include <string>
+#include <vector>
+
 // Begins the window of row `id` (ImGui::End() must follow, as with Begin), with the row's title,
 // docked at its rectangle in app.layout, or floating when pulled out; its close button clears the
 // row's flag. The one placement function: every overlay window goes through it (through
@@ -26,6 +29,28 @@ std::string nextWindowForKeyboard(const App& app);
 // their labels, the arrows' values: app.ui.takenOnScreen); the spot is then taken too
 // (scene_view.cpp).
 ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size);
+
+// A box of the world (centre and size, m) that a caption over the scene must not cover.
+struct WorldBox {
+    Vec2 centre;
+    Vec2 size;
+};
+// One line of a caption over the scene, in its colour (the dark theme's; uiThemed deepens it;
+// or, `themed`, already the theme's: a mark's, uiMarkColor).
+struct CaptionLine {
+    std::string text;
+    ImU32 color;
+    bool themed = false;
+};
+// Where a caption of `width` x `height` px goes over the scene (placeCaption): covering no
+// block (grown by its labels), none of `boxes` (grown by one and a half lines), nor the status
+// badge and the axis numbers.
+ImVec2 sceneCaptionPlace(const App& app, float width, float height,
+                         const std::vector<WorldBox>& boxes);
+// Lines of text on a plate over the scene, where sceneCaptionPlace finds room (the point of
+// impact's numbers, the student's trace).
+void drawSceneCaption(const App& app, const std::vector<CaptionLine>& lines,
+                      const std::vector<WorldBox>& boxes);
 
 // The window of an overlay row (overlays.h: its title and placement), closed by its close button
 // through the row's flag. Ends the window when it goes out of scope; false while collapsed:

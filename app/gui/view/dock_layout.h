@@ -89,7 +89,7 @@ ScreenRect placeCaption(double width, double height, const ScreenRect& scene,
 // The world's bounds on screen through `camera` (top-left corner and size, y down).
 ScreenRect worldRectOnScreen(const Camera& camera, const Bounds& bounds);
 
-// The --layout-json document (SPEC): rectangles as [x, y, w, h] in image pixels,
+// The --layout-json document (docs/cli.md): rectangles as [x, y, w, h] in image pixels,
 //   {"scene": [...], "world": [...], "windows": [{"name": "Plots", "rect": [...]}, ...]}
 std::string layoutJson(const ScreenRect& scene, const ScreenRect& world,
                        const std::vector<DockedWindow>& windows);

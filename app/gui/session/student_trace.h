@@ -1,0 +1,41 @@
+// A student's trace opened on the current scene (issue 29; docs/compare.md): read, compared with
+// the reference (app/compare), and what the app shows of it: the student's blocks at a frame
+// (the ghost overlay's outlines), the first difference (the timeline's mark), the parting
+// collision and the diagnosis (the inspector). Plain logic, no ImGui.
+#pragma once
+
+#include "compare.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+struct StudentTrace {
+    std::string path;           // the file opened
+    TraceUnitsSpec units;       // as the Compare section chose them
+    std::optional<Trace> trace; // none: no trace open
+    std::optional<TraceComparison> comparison;
+    Scene scene; // the scene the trace was compared with
+
+    bool open() const { return trace && comparison; }
+    // The frame of the first difference; -1 when the trace is the reference's.
+    std::int64_t firstDifference() const;
+    // The trace's row for `frame`, or null (the trace has no such frame).
+    const TraceRow* rowAt(std::int64_t frame) const;
+    // `world` with the traced blocks where the trace has them at `frame` (the renderer draws it
+    // as outlines); false when the trace has no row for that frame.
+    bool ghostAt(std::int64_t frame, World& world) const;
+};
+
+// Reads `path` as a trace of `scene` under `settings` (the reference: the Tips' mistakes off)
+// in `units`, and compares. On a bad file the trace stays as it was and the error (with its
+// place) is returned.
+std::optional<std::string> openStudentTrace(StudentTrace& st, const std::string& path,
+                                            const Scene& scene, const WorldSettings& settings,
+                                            const TraceUnitsSpec& units);
+// One line for the panel: "different from frame 5 (t = 0.5 s): mover's x off by 1.25 m", or
+// "the same as the reference over 100 frames".
+std::string studentTraceSummary(const StudentTrace& st);
+// True for a file the app opens as a trace rather than a scene (.csv, any case).
+bool isTraceFile(const std::string& path);
