@@ -5,9 +5,9 @@
 #pragma once
 
 #include "broad_phase.h"
+#include "collision.h"
 #include "corner_grid.h"
 #include "crush.h"
-#include "resolve.h"
 
 #include <cstdint>
 #include <unordered_map>
@@ -56,7 +56,6 @@ struct PerfectScratch {
     std::vector<double> windowStart, windowEnd; // s: per block, its current window [start, end)
     std::vector<std::uint32_t> windowBatch;     // per block: the batch that registered it
     std::vector<int> windowCount;               // per block: windows since its last change
-    std::vector<int> syncLog;                   // blocks brought to the current time (Resolver)
     std::uint64_t horizonsPassed = 0; // windows after a block's first, all substeps (for tests)
 };
 
@@ -75,7 +74,13 @@ struct TurnBasedScratch {
     std::unordered_map<std::uint64_t, int> meetingMap;   // the same past a few listed pairs
     std::vector<std::pair<int, int>> pending;            // (block, axis) whose velocity changed
     std::vector<std::uint8_t> isPending;                 // 2 per block: in `pending` now
-    std::vector<Resolver::VelocityChange> undo;          // at the current instant
+    // One change of velocity: enough to undo it.
+    struct VelocityChange {
+        int block;
+        int axis;
+        double before; // m/s
+    };
+    std::vector<VelocityChange> undo; // at the current instant
 };
 
 struct StepScratch {

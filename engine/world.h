@@ -116,8 +116,10 @@ struct World {
     std::uint64_t frame = 0; // frames stepped
     ScratchCache scratch;    // the methods' buffers (a cache: no result depends on it)
 
-    // Advances one frame of settings.dt: gravity, then the chosen method, per substep; then the
-    // statistics. When `log` is given, every resolved collision is appended to it.
+    // Advances one frame of settings.dt in settings.substeps substeps, each the chosen method with
+    // the forces applied as the integrator says (semi-implicit Euler before the method, explicit
+    // Euler after it, the exact integrator within it: see World::step); then the statistics. When
+    // `log` is given, every resolved collision is appended to it.
     StepStats step(std::vector<CollisionRecord>* log = nullptr);
 };
 

@@ -1,8 +1,7 @@
 #include "lesson_session.h"
 
-#include "app_state.h"
 #include "lesson_runner.h"
-#include "options.h"
+#include "overlays.h"
 
 #ifndef SANDBOX_LESSONS_DIR
 #define SANDBOX_LESSONS_DIR ""
@@ -13,18 +12,16 @@ namespace {
 constexpr std::size_t kMaxDigits = 6;
 
 // Runs the frames up to the pause point (a question's last frame) and pauses there.
-void runToPausePoint(App& app) {
-    LessonSession& s = app.lesson;
-    s.stopped = true;
-    while (s.stopFrame && app.world.frame < s.pauseFrame) stepSimulation(app);
-    app.paused = true;
+void runToPausePoint(const LessonSession& s, SimulationSession& sim, const View& view) {
+    sim.stopAtFrame.reset(); // reached here, not again by playing on
+    while (s.stopFrame && sim.world().frame < s.pauseFrame) sim.step(view.show.sideBySide);
+    sim.paused = true;
 }
 
-void reveal(App& app) {
-    LessonSession& s = app.lesson;
-    runToPausePoint(app);
+void reveal(LessonSession& s, SimulationSession& sim, View& view) {
+    runToPausePoint(s, sim, view);
     s.revealed = true;
-    for (const std::string& name : s.step()->reveal) setOverlay(app.show, name, true);
+    for (const std::string& name : s.step()->reveal) setOverlay(view.show, name, true);
 }
 
 } // namespace
@@ -33,148 +30,114 @@ std::string builtInLessonsDirectory() {
     return SANDBOX_LESSONS_DIR;
 }
 
-LessonContext appLessonContext(const App& app) {
+LessonContext appLessonContext(const std::string& scenesDir) {
     LessonContext c;
-    c.scenesDir = app.scenesDir;
+    c.scenesDir = scenesDir;
     c.overlayNames = overlayNames();
     return c;
 }
 
-bool openLesson(App& app, const std::string& path, std::size_t first) {
-    LessonResult r = loadLessonFile(path, appLessonContext(app));
+bool openLesson(LessonSession& s, SimulationSession& sim, View& view, Messages& messages,
+                const std::string& path, const std::string& scenesDir, std::size_t first) {
+    LessonResult r = loadLessonFile(path, appLessonContext(scenesDir));
     if (!r.lesson) {
-        app.error = r.error.text();
+        messages.error = r.error.text();
         return false;
     }
     std::string error;
     if (!stepIndex(*r.lesson, static_cast<long long>(first) + 1, &error)) {
-        app.error = error;
+        messages.error = error;
         return false;
     }
-    app.lesson = LessonSession{};
-    app.lesson.lesson = std::move(*r.lesson);
-    return enterStep(app, first);
+    s = LessonSession{};
+    s.lesson = std::move(*r.lesson);
+    return enterStep(s, sim, view, messages, first);
 }
 
-void closeLesson(App& app) {
-    app.lesson = LessonSession{};
-    app.fitBounds.reset();
-    setViewFrame(app, ViewFrame::World); // a step's frame ends with the lesson
+void closeLesson(LessonSession& s, SimulationSession& sim, View& view) {
+    s = LessonSession{};
+    sim.stopAtFrame.reset();
+    sim.pauseAtSceneEnd = true; // the scene's own end again
+    view.fitBounds.reset();
+    setViewFrame(view, ViewFrame::World); // a step's frame ends with the lesson
 }
 
-bool enterStep(App& app, std::size_t index) {
-    LessonSession& s = app.lesson;
+bool enterStep(LessonSession& s, SimulationSession& sim, View& view, Messages& messages,
+               std::size_t index) {
     if (!s.lesson || index >= s.lesson->steps.size()) return false;
     const LessonStep& step = s.lesson->steps[index];
     s.current = index;
     s.revealed = false;
-    s.stopped = false;
     s.digits.clear();
-    setScene(app, step.scene, step.sceneSource);
+    // The world the step states, seen as it says.
+    sim.setScene(step.scene, step.sceneSource);
     Overlays shown = ShowSet::noOverlays();
     for (const std::string& name : step.overlays) setOverlay(shown, name, true);
-    app.show = shown;
-    app.fitBounds = step.camera;
-    app.autoFit = true;
-    setViewFrame(app, step.frame);
-    app.timeScale = step.timeScale;
-    app.slowMotion = false;
-    app.pauseOnCollision = false;
-    app.selected = step.selected;
-    app.thrust.on = step.thrust.has_value(); // the step states it, like its overlays
-    if (step.thrust) app.thrust.force = *step.thrust;
-    resetScene(app); // again, with the selection: the plots and the point of impact follow it
+    view.show = shown;
+    view.fitBounds = step.camera;
+    view.autoFit = true;
+    setViewFrame(view, step.frame);
+    sim.timeScale = step.timeScale;
+    sim.slowMotion = false;
+    sim.pauseOnCollision = false;
+    sim.selected = step.selected;
+    sim.thrust.on = step.thrust.has_value(); // the step states it, like its overlays
+    if (step.thrust) sim.thrust.force = *step.thrust;
+    sim.reset(); // again, with the selection: the plots and the point of impact follow it
+    followNewRun(view, sim.world());
+    // Where it stops: the runner's pause point (a frame earlier while a question waits).
     const StepRun run = runStepToPause(step);
     s.pauseFrame = static_cast<std::uint64_t>(run.progress.frames);
     s.stopFrame.reset();
     if (step.pause.kind != LessonPause::Kind::None && run.reached) {
         s.stopFrame = s.asking() && s.pauseFrame > 0 ? s.pauseFrame - 1 : s.pauseFrame;
     }
-    app.paused = s.stopFrame && *s.stopFrame == 0;
-    s.stopped = app.paused;
-    app.error.clear();
-    app.note.clear();
+    sim.pauseAtSceneEnd = false; // the step stops where it says
+    sim.paused = s.stopFrame && *s.stopFrame == 0;
+    sim.stopAtFrame = sim.paused ? std::nullopt : s.stopFrame;
+    messages.clear();
     return true;
 }
 
-bool applyLessonAction(App& app, Action action) {
-    LessonSession& s = app.lesson;
-    switch (action) {
-    case Action::Reset:
-        return s.active() && enterStep(app, s.current);
-    case Action::LessonNext:
-        lessonNext(app);
-        return true;
-    case Action::LessonPrevious:
-        lessonPrevious(app);
-        return true;
-    case Action::LessonFirst:
-        if (s.active()) enterStep(app, 0);
-        return true;
-    case Action::LessonLast:
-        if (s.active()) enterStep(app, s.lesson->steps.size() - 1);
-        return true;
-    case Action::LessonJump:
-        lessonJump(app);
-        return true;
-    default:
-        return false;
-    }
-}
-
-void lessonNext(App& app) {
-    LessonSession& s = app.lesson;
+void lessonNext(LessonSession& s, SimulationSession& sim, View& view, Messages& messages) {
     if (!s.active()) return;
     if (s.asking()) {
-        reveal(app);
+        reveal(s, sim, view);
         return;
     }
-    if (s.current + 1 < s.lesson->steps.size()) enterStep(app, s.current + 1);
+    if (s.current + 1 < s.lesson->steps.size()) enterStep(s, sim, view, messages, s.current + 1);
 }
 
-void lessonPrevious(App& app) {
-    LessonSession& s = app.lesson;
-    if (s.active() && s.current > 0) enterStep(app, s.current - 1);
-}
-
-void lessonTypeDigit(App& app, int digit) {
-    LessonSession& s = app.lesson;
-    if (!s.active() || digit < 0 || digit > 9 || s.digits.size() >= kMaxDigits) return;
-    s.digits += static_cast<char>('0' + digit);
-}
-
-bool lessonJump(App& app) {
-    LessonSession& s = app.lesson;
+bool lessonJump(LessonSession& s, SimulationSession& sim, View& view, Messages& messages) {
     if (!s.active() || s.digits.empty()) return false;
     const long long number = std::stoll(s.digits);
     s.digits.clear();
     std::string error;
     const auto index = stepIndex(*s.lesson, number, &error);
     if (!index) {
-        app.error = error;
+        messages.error = error;
         return false;
     }
-    return enterStep(app, *index);
+    return enterStep(s, sim, view, messages, *index);
 }
 
-void lessonShowPausePoint(App& app) {
-    LessonSession& s = app.lesson;
+void lessonPrevious(LessonSession& s, SimulationSession& sim, View& view, Messages& messages) {
+    if (s.active() && s.current > 0) enterStep(s, sim, view, messages, s.current - 1);
+}
+
+void lessonTypeDigit(LessonSession& s, int digit) {
+    if (!s.active() || digit < 0 || digit > 9 || s.digits.size() >= kMaxDigits) return;
+    s.digits += static_cast<char>('0' + digit);
+}
+
+void lessonShowPausePoint(LessonSession& s, SimulationSession& sim, View& view) {
     const LessonStep* step = s.step();
     if (!step) return;
     if (!step->question.empty() && !s.revealed) {
-        reveal(app);
+        reveal(s, sim, view);
         return;
     }
-    runToPausePoint(app);
-}
-
-void lessonAfterFrame(App& app) {
-    LessonSession& s = app.lesson;
-    if (!s.active() || s.stopped || !s.stopFrame) return;
-    if (app.world.frame >= *s.stopFrame) {
-        app.paused = true;
-        s.stopped = true;
-    }
+    runToPausePoint(s, sim, view);
 }
 
 std::string lessonHeading(const LessonSession& session) {

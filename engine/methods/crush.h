@@ -4,7 +4,7 @@
 // each bounce off a body moving at w gives it v' = w - C·(v - w) (lecture, "Collisions on a
 // Line – Full Formula"), so every round trip adds about (1 + C)·|w| to its speed. After
 // kSqueezeBounces such alternating bounces in one substep the block is crushed: its contacts are
-// resolved by the rest rule (Resolver::setForceRest), which reverses the platforms that press,
+// resolved by the rest rule (RestRule::Always), which reverses the platforms that press,
 // as a platform reverses on a wall.
 #pragma once
 

@@ -1,5 +1,8 @@
 // The lecture's three simulation methods, one file each. Each advances every block over one
-// substep of ctx.h seconds (gravity has already been applied) and resolves the collisions it finds.
+// substep of ctx.h seconds and resolves the collisions it finds. The forces (gravity, a block's
+// own, drag) are the integrator's (World::step): semi-implicit Euler has changed the velocities
+// already, the exact integrator hands the methods each block's acceleration (ctx.acceleration,
+// the paths are parabolas), and explicit Euler changes the velocities after the method.
 #pragma once
 
 #include "resolve.h"

@@ -20,28 +20,8 @@ Impact SubstepContext::impactWithOptions(int i, const Aabb& a, Vec2 va, int j, c
     return overlaps(aabbOf(endA, sizeA), aabbOf(endB, sizeB)) ? hit : Impact{};
 }
 
-Resolver::Resolver(SubstepContext& context, const BlockFinder* finder)
-    : ctx_(context), finder_(finder) {}
-
-void Resolver::setNow(double now, std::vector<double>* localTime) {
-    now_ = now;
-    localTime_ = localTime;
-}
-
-void Resolver::sync(int i) {
-    if (!localTime_) return;
-    double& clock = (*localTime_)[i];
-    if (syncLog_ && clock != now_) syncLog_->push_back(i);
-    Block& b = ctx_.world.blocks[i];
-    if (ctx_.acceleration) { // along its parabola: the velocity changes too
-        const double t = now_ - clock;
-        b.position = ctx_.positionAfter(i, b.position, b.velocity, t);
-        b.velocity = ctx_.velocityAfter(i, b.velocity, t);
-    } else {
-        b.position += b.velocity * (now_ - clock);
-    }
-    clock = now_;
-}
+Resolver::Resolver(SubstepContext& context, const BlockFinder* finder, ResolveHooks* hooks)
+    : ctx_(context), finder_(finder), hooks_(hooks) {}
 
 // The rest rule: closing speeds below restSpeed + 2·|g|·h are what gravity alone adds to a
 // resting contact within one substep (g·h), with a margin; they are resolved perfectly inelastic.
@@ -79,7 +59,7 @@ void Resolver::setAcceleration(int i, int axis, double a) {
 void Resolver::setVelocity(int i, int axis, double v) {
     Vec2& velocity = ctx_.world.blocks[i].velocity;
     if (velocity[axis] == v) return;
-    if (undo_) undo_->push_back({i, axis, velocity[axis]});
+    if (hooks_) hooks_->velocityChanging(i, axis, velocity[axis]);
     velocity[axis] = v;
     changed_.push_back(i);
 }
@@ -107,7 +87,8 @@ void Resolver::record(int a, int b, int axis, double m1, double v1, double m2, d
     ctx_.log->push_back(r);
 }
 
-Resolution Resolver::resolvePair(int a, int b, int axis) {
+Resolution Resolver::resolvePair(int a, int b, int axis, RestRule rest) {
+    forceRest_ = rest == RestRule::Always;
     sync(a);
     sync(b);
     std::vector<Block>& blocks = ctx_.world.blocks;
@@ -146,7 +127,8 @@ Resolution Resolver::resolvePair(int a, int b, int axis) {
     return Resolution::Bounce;
 }
 
-Resolution Resolver::resolveWall(int a, int axis) {
+Resolution Resolver::resolveWall(int a, int axis, RestRule rest) {
+    forceRest_ = rest == RestRule::Always;
     sync(a);
     const Block& A = ctx_.world.blocks[a];
     const double v = A.velocity[axis];

@@ -91,26 +91,42 @@ class BlockFinder {
 // kinematic reversing), or the rest rule's perfectly inelastic merge.
 enum class Resolution { None, Bounce, Rest };
 
+// When a contact is resolved by the rest rule: when it closes slowly (WorldSettings::restSpeed),
+// or always, whatever its speed (the perfect and turn-based methods' rules for what never ends:
+// inelastic collapse, a trap between infinite masses, a crush; perfect.cpp, turn_based.cpp).
+enum class RestRule { WhenSlow, Always };
+
+// What a method adds to resolving, called back by the Resolver as it works (each hook does
+// nothing unless the method overrides it).
+class ResolveHooks {
+  public:
+    // Block i is about to be read at the resolver's time `now` (s since the substep start): the
+    // perfect method moves its blocks lazily, each valid at its own clock, and brings it there.
+    virtual void bringToNow(int /*i*/, double /*now*/) {}
+    // Block i's velocity along `axis` is about to change from `before` (m/s): turn-based keeps
+    // these to undo a sequence of collisions that would not end.
+    virtual void velocityChanging(int /*i*/, int /*axis*/, double /*before*/) {}
+
+  protected:
+    ~ResolveHooks() = default;
+};
+
 // Resolves contacts between touching blocks. Every change of velocity is reported in
-// changed() so event-driven code can re-predict. Positions are read through sync(), which the
-// perfect method uses to bring a lazily moved block to the current time.
+// changed() so event-driven code can re-predict.
 class Resolver {
   public:
-    // `finder`: where the rest rule finds neighbours (null: ctx.broadPhase).
-    explicit Resolver(SubstepContext& context, const BlockFinder* finder = nullptr);
+    // `finder`: where the rest rule finds neighbours (null: ctx.broadPhase). `hooks`: the
+    // method's (null: none).
+    explicit Resolver(SubstepContext& context, const BlockFinder* finder = nullptr,
+                      ResolveHooks* hooks = nullptr);
 
-    // The time (s since the substep start) at which contacts are being resolved, and, for the
-    // perfect method, each block's own clock (its position is valid at that time).
-    void setNow(double now, std::vector<double>* localTime = nullptr);
+    // The time (s since the substep start) at which contacts are being resolved.
+    void setNow(double now) { now_ = now; }
 
     // Blocks a and b touch along `axis` (0 = x, 1 = y); resolves if they approach.
-    Resolution resolvePair(int a, int b, int axis);
+    Resolution resolvePair(int a, int b, int axis, RestRule rest = RestRule::WhenSlow);
     // Block a touches the wall on `axis` that it moves toward.
-    Resolution resolveWall(int a, int axis);
-
-    // Resolve the next contacts perfectly inelastic whatever their speed (the perfect method's
-    // rule for a pair that collides again at the same instant).
-    void setForceRest(bool force) { forceRest_ = force; }
+    Resolution resolveWall(int a, int axis, RestRule rest = RestRule::WhenSlow);
 
     // Whether block i (dynamic) is caught along `axis` between infinite masses: the blocks that
     // touch it along the axis, and those that touch them, reach a wall, a static or a kinematic
@@ -119,21 +135,6 @@ class Resolver {
 
     const std::vector<int>& changed() const { return changed_; }
     void clearChanged() { changed_.clear(); }
-
-    // One change of velocity: enough to undo it.
-    struct VelocityChange {
-        int block;
-        int axis;
-        double before; // m/s
-    };
-    // When given, every change of velocity is also appended to `undo` (turn-based undoes a
-    // sequence of collisions that would not end: see turn_based.cpp).
-    void setUndoLog(std::vector<VelocityChange>* undo) { undo_ = undo; }
-    // Brings block i to the current time (a no-op unless lazy clocks were given).
-    void sync(int i);
-    // When given, every block that sync() brings to the current time is also appended to `log`
-    // (the perfect method keeps the motion it had before, for impacts it finds later: perfect.cpp).
-    void setSyncLog(std::vector<int>* log) { syncLog_ = log; }
 
   private:
     double restThreshold(int axis) const;
@@ -145,15 +146,16 @@ class Resolver {
                 double C, double v1After, double v2After, bool rest);
     void setVelocity(int i, int axis, double v);
     void findNear(const Aabb& box);
+    void sync(int i) {
+        if (hooks_) hooks_->bringToNow(i, now_);
+    }
 
     SubstepContext& ctx_;
     const BlockFinder* finder_;
+    ResolveHooks* hooks_;
     double now_ = 0.0;
-    std::vector<double>* localTime_ = nullptr;
-    bool forceRest_ = false;
+    bool forceRest_ = false; // the contact being resolved: RestRule::Always
     std::vector<int> changed_;
-    std::vector<VelocityChange>* undo_ = nullptr;
-    std::vector<int>* syncLog_ = nullptr;
     // Scratch for the rest rule's cluster search.
     std::vector<int> members_;
     std::vector<int> queue_;

@@ -19,7 +19,7 @@
 //    C = 1 a sequence is finite (a light block between a heavy one and a wall: about
 //    pi·sqrt(M/m) collisions, Galperin 2003) unless it is jammed between infinite masses (a row
 //    filling the box), so only a pair that meets more than kElasticRepeats times.
-//  - crush (crush.h, the perfect method's rule): a block bouncing between two infinite masses
+//  - crush (crush.h, shared with the perfect method): a block bouncing between two infinite masses
 //    that close in on it (a platform pushing it into a wall). The rest rule then reverses the
 //    platforms that press, as on a wall.
 //  - more contacts at one instant than the event cap (WorldSettings::eventCap).
@@ -106,10 +106,10 @@ void findFirstImpact(SubstepContext& ctx, int i, double remaining, const Aabb& p
 
 // Resolves the contacts of one instant of a block's turn: its impacts, then every contact that a
 // changed velocity now closes (see the top of the file).
-class Contacts {
+class Contacts final : ResolveHooks {
   public:
     Contacts(SubstepContext& ctx, TurnBasedScratch& s)
-        : ctx_(ctx), blocks_(ctx.world.blocks), resolver_(ctx), s_(s) {
+        : ctx_(ctx), blocks_(ctx.world.blocks), resolver_(ctx, nullptr, this), s_(s) {
         s_.isPending.resize(2 * blocks_.size(), 0); // all 0: settle() leaves none set
         allowed_ = ctx.world.settings.bounciness < 1.0 ? kInelasticRepeats : kElasticRepeats;
     }
@@ -137,14 +137,14 @@ class Contacts {
             s_.meetingMap.clear();
         s_.crush.reset(blocks_.size());
         s_.undo.clear();
-        resolver_.setUndoLog(&s_.undo);
+        keepUndo_ = true;
         const int collisionsBefore = ctx_.stats.collisions;
         const size_t logBefore = ctx_.log ? ctx_.log->size() : 0;
         merge_ = endless_ = false;
         resolutions_ = 0;
         resolveImpacts(i, first, bounced, rested);
         settle();
-        resolver_.setUndoLog(nullptr);
+        keepUndo_ = false;
         if (!endless_) return;
         // A sequence that would not end: undo it (the blocks are where they were, only their
         // velocities changed) and merge the impacts' bodies by the rest rule instead.
@@ -160,6 +160,11 @@ class Contacts {
     }
 
   private:
+    // While a sequence may still be undone, every change of velocity is kept (ResolveHooks).
+    void velocityChanging(int i, int axis, double before) override {
+        if (keepUndo_) s_.undo.push_back({i, axis, before});
+    }
+
     void resolveImpacts(int i, const FirstImpact& first, bool& bounced, bool& rested) {
         bounced = rested = false;
         auto note = [&](Resolution r) {
@@ -176,10 +181,8 @@ class Contacts {
     // Block a against block b (b >= 0) or the wall it moves toward (b = CrushRule::kWall),
     // along `axis`; the two touch there and approach.
     Resolution resolve(int a, int b, int axis) {
-        if (!sequence_) {
-            resolver_.setForceRest(false);
+        if (!sequence_)
             return b < 0 ? resolver_.resolveWall(a, axis) : resolver_.resolvePair(a, b, axis);
-        }
         if (endless_ || resolutions_ >= ctx_.world.settings.eventCap) {
             endless_ = !merge_; // the event cap bounds the work whatever happens
             return Resolution::None;
@@ -190,9 +193,9 @@ class Contacts {
             return Resolution::None;
         }
         const size_t changedBefore = resolver_.changed().size();
-        resolver_.setForceRest(merge_);
+        const RestRule rest = merge_ ? RestRule::Always : RestRule::WhenSlow;
         const Resolution r =
-            b < 0 ? resolver_.resolveWall(a, axis) : resolver_.resolvePair(a, b, axis);
+            b < 0 ? resolver_.resolveWall(a, axis, rest) : resolver_.resolvePair(a, b, axis, rest);
         // The blocks sent on at new velocities: their other contacts along the axis come next.
         const std::vector<int>& changed = resolver_.changed();
         for (size_t k = changedBefore; k < changed.size(); ++k) {
@@ -261,6 +264,7 @@ class Contacts {
     int mover_ = -1;        // the block that moved to this instant's impact, if any
     bool merge_ = false;    // merging: every contact by the rest rule
     bool endless_ = false;  // the sequence would not end: to be undone
+    bool keepUndo_ = false; // keeping the changes of velocity in s_.undo
     int resolutions_ = 0;   // contacts resolved at this instant
 };
 

@@ -1,6 +1,7 @@
 // Scene files, format v1 (docs/scene-format.md): load with validation, save, and build a World from a scene.
 #pragma once
 
+#include "scene_error.h"
 #include "world.h"
 
 #include <optional>
@@ -32,14 +33,6 @@ struct Scene {
     std::vector<BlockDef> blocks;
 
     bool operator==(const Scene& o) const;
-};
-
-// A load error: `where` names the place ("scene.json:3:14" for syntax, "scene.json: blocks[3].mass"
-// for a bad value) and `message` says what is wrong.
-struct SceneError {
-    std::string where;
-    std::string message;
-    std::string text() const { return where + ": " + message; }
 };
 
 struct SceneResult {

@@ -4,7 +4,8 @@
 #pragma once
 
 #include "input_limits.h"
-#include "scene.h"
+#include "scene_error.h"
+#include "vec2.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,7 +1,7 @@
 // App state without GL: load, reset, save, the fixed-step clock, settings and options.
+#include "app.h"
 #include "app_config.h"
 #include "app_log.h"
-#include "app_state.h"
 #include "fixed_step.h"
 #include "options.h"
 #include "scene_library.h"
@@ -79,14 +79,14 @@ TEST(FixedStepClock, CapsTicksPerFrameAndDropsTheBacklog) {
 TEST(AppState, AdvanceRunsFramesUnlessPaused) {
     App app;
     setScene(app, twoBlocks(), "two.json");
-    EXPECT_TRUE(app.paused); // scenes open paused at t = 0
+    EXPECT_TRUE(app.sim.paused); // scenes open paused at t = 0
     EXPECT_EQ(advanceSimulation(app, 0.05), 0);
-    app.paused = false;
+    app.sim.paused = false;
     EXPECT_EQ(advanceSimulation(app, 0.05), 3);
-    EXPECT_EQ(app.world.frame, 3u);
-    app.paused = true;
+    EXPECT_EQ(app.sim.world().frame, 3u);
+    app.sim.paused = true;
     EXPECT_EQ(advanceSimulation(app, 0.5), 0);
-    EXPECT_EQ(app.world.frame, 3u);
+    EXPECT_EQ(app.sim.world().frame, 3u);
 }
 
 // A scene with a "duration" pauses once when a frame reaches it (within half a frame: 180 frames
@@ -96,15 +96,19 @@ TEST(AppState, PausesOnceAtTheScenesDuration) {
     Scene scene = twoBlocks();
     scene.duration = 0.5; // 30 frames
     setScene(app, scene, "two.json");
-    app.paused = false;
-    for (int i = 0; i < 40 && !app.paused; ++i) stepSimulation(app);
-    EXPECT_TRUE(app.paused);
-    EXPECT_EQ(app.world.frame, 30u);
-    EXPECT_NE(app.note.find("P plays on"), std::string::npos) << app.note;
-    app.paused = false;
+    app.sim.paused = false;
+    for (int i = 0; i < 40 && !app.sim.paused; ++i) stepSimulation(app);
+    EXPECT_TRUE(app.sim.paused);
+    EXPECT_EQ(app.sim.world().frame, 30u);
+    // The session's notice, which the frame shows as the panel's note.
+    EXPECT_NE(app.sim.notice.find("P plays on"), std::string::npos) << app.sim.notice;
+    takeNotice(app);
+    EXPECT_NE(app.ui.messages.note.find("P plays on"), std::string::npos) << app.ui.messages.note;
+    EXPECT_TRUE(app.sim.notice.empty());
+    app.sim.paused = false;
     for (int i = 0; i < 30; ++i) stepSimulation(app);
-    EXPECT_FALSE(app.paused);
-    EXPECT_EQ(app.world.frame, 60u);
+    EXPECT_FALSE(app.sim.paused);
+    EXPECT_EQ(app.sim.world().frame, 60u);
     // Edges: a frame ending less than half a frame before the duration reaches it; one ending more
     // than half a frame before does not.
     const double dt = 1.0 / 60.0;
@@ -116,50 +120,50 @@ TEST(AppState, PausesOnceAtTheScenesDuration) {
 TEST(AppState, ResetPutsTheBlocksBackAndKeepsTheChosenSettings) {
     App app;
     setScene(app, twoBlocks(), "two.json");
-    app.world.settings.method = Method::TurnBased; // S
-    app.world.settings.bounciness = 0.5;           // C
-    app.world.settings.gravity = Vec2{0, -9.81};   // g
-    app.world.settings.dt = 1.0 / 120.0;           // frame rate
-    app.world.settings.substeps = 4;
+    app.sim.world().settings.method = Method::TurnBased; // S
+    app.sim.world().settings.bounciness = 0.5;           // C
+    app.sim.world().settings.gravity = Vec2{0, -9.81};   // g
+    app.sim.world().settings.dt = 1.0 / 120.0;           // frame rate
+    app.sim.world().settings.substeps = 4;
     for (int i = 0; i < 10; ++i) stepSimulation(app);
-    app.world.blocks[1].mass = 7.0; // an edit of a block: R undoes it
-    app.selected = 1;
+    app.sim.world().blocks[1].mass = 7.0; // an edit of a block: R undoes it
+    app.sim.selected = 1;
     resetScene(app); // R
-    EXPECT_EQ(app.world.frame, 0u);
-    EXPECT_EQ(app.world.time, 0.0);
-    EXPECT_EQ(app.world.blocks[0].position, (Vec2{4, 6}));
-    EXPECT_EQ(app.world.blocks[1].mass, 2.0);
-    EXPECT_EQ(app.world.settings.method, Method::TurnBased);
-    EXPECT_EQ(app.world.settings.bounciness, 0.5);
-    EXPECT_EQ(app.world.settings.gravity, (Vec2{0, -9.81}));
-    EXPECT_EQ(app.world.settings.dt, 1.0 / 120.0);
-    EXPECT_EQ(app.world.settings.substeps, 4);
-    EXPECT_EQ(app.trails.length(), 0);
-    EXPECT_EQ(app.selected, 1);
+    EXPECT_EQ(app.sim.world().frame, 0u);
+    EXPECT_EQ(app.sim.world().time, 0.0);
+    EXPECT_EQ(app.sim.world().blocks[0].position, (Vec2{4, 6}));
+    EXPECT_EQ(app.sim.world().blocks[1].mass, 2.0);
+    EXPECT_EQ(app.sim.world().settings.method, Method::TurnBased);
+    EXPECT_EQ(app.sim.world().settings.bounciness, 0.5);
+    EXPECT_EQ(app.sim.world().settings.gravity, (Vec2{0, -9.81}));
+    EXPECT_EQ(app.sim.world().settings.dt, 1.0 / 120.0);
+    EXPECT_EQ(app.sim.world().settings.substeps, 4);
+    EXPECT_EQ(app.sim.run.trails.length(), 0);
+    EXPECT_EQ(app.sim.selected, 1);
     resetToFile(app); // Shift+R
-    EXPECT_EQ(app.world.settings.method, Method::Perfect);
-    EXPECT_EQ(app.world.settings.bounciness, 1.0);
-    EXPECT_EQ(app.world.settings.gravity, (Vec2{0, 0}));
-    EXPECT_EQ(app.world.settings.dt, 1.0 / 60.0);
-    EXPECT_EQ(app.world.settings.substeps, 1);
+    EXPECT_EQ(app.sim.world().settings.method, Method::Perfect);
+    EXPECT_EQ(app.sim.world().settings.bounciness, 1.0);
+    EXPECT_EQ(app.sim.world().settings.gravity, (Vec2{0, 0}));
+    EXPECT_EQ(app.sim.world().settings.dt, 1.0 / 60.0);
+    EXPECT_EQ(app.sim.world().settings.substeps, 1);
 }
 
 TEST(AppState, EditsAreUnsavedUntilSaved) {
     const fs::path dir = tempDir("unsaved");
     App app;
     setScene(app, twoBlocks(), "two.json");
-    EXPECT_FALSE(unsavedEdits(app));
+    EXPECT_FALSE(app.sim.unsavedEdits());
     for (int i = 0; i < 5; ++i) stepSimulation(app); // running is not an edit
-    EXPECT_FALSE(unsavedEdits(app));
-    cycleMethod(app); // a setting
-    EXPECT_TRUE(unsavedEdits(app));
-    cycleMethod(app);
-    cycleMethod(app);
-    EXPECT_FALSE(unsavedEdits(app)); // back to the scene's method
-    ASSERT_TRUE(setBlockSize(app, 0, {0.5, 0.5}));
-    EXPECT_TRUE(unsavedEdits(app));
-    ASSERT_TRUE(saveCurrentScene(app, (dir / "s.json").string())) << app.error;
-    EXPECT_FALSE(unsavedEdits(app));
+    EXPECT_FALSE(app.sim.unsavedEdits());
+    app.sim.cycleMethod(); // a setting
+    EXPECT_TRUE(app.sim.unsavedEdits());
+    app.sim.cycleMethod();
+    app.sim.cycleMethod();
+    EXPECT_FALSE(app.sim.unsavedEdits()); // back to the scene's method
+    ASSERT_TRUE(app.sim.setBlockSize(0, {0.5, 0.5}));
+    EXPECT_TRUE(app.sim.unsavedEdits());
+    ASSERT_TRUE(saveCurrentScene(app, (dir / "s.json").string())) << app.ui.messages.error;
+    EXPECT_FALSE(app.sim.unsavedEdits());
     fs::remove_all(dir);
 }
 
@@ -168,14 +172,14 @@ TEST(AppState, AnEditDuringReplaySaysANewFutureStarts) {
     setScene(app, twoBlocks(), "two.json");
     for (int i = 0; i < 30; ++i) stepSimulation(app);
     ASSERT_TRUE(scrubTo(app, 10));
-    ASSERT_TRUE(isReplaying(app));
-    app.world.blocks[1].position.y = 9.0; // dragged
-    noteEdit(app, true);
-    EXPECT_NE(app.note.find("new future"), std::string::npos) << app.note;
-    EXPECT_FALSE(isReplaying(app));
-    EXPECT_EQ(app.history.lastFrame(), 10u);
-    ASSERT_TRUE(scrubTo(app, app.history.lastFrame())); // >| keeps the edit
-    EXPECT_EQ(app.world.blocks[1].position.y, 9.0);
+    ASSERT_TRUE(app.sim.isReplaying());
+    app.sim.world().blocks[1].position.y = 9.0; // dragged
+    app.sim.noteEdit(true);
+    EXPECT_NE(app.sim.notice.find("new future"), std::string::npos) << app.sim.notice;
+    EXPECT_FALSE(app.sim.isReplaying());
+    EXPECT_EQ(app.sim.history.lastFrame(), 10u);
+    ASSERT_TRUE(scrubTo(app, app.sim.history.lastFrame())); // >| keeps the edit
+    EXPECT_EQ(app.sim.world().blocks[1].position.y, 9.0);
 }
 
 // Issue 15: scrubbed back on the timeline, the inspector lists the last collisions up to the
@@ -187,18 +191,18 @@ TEST(AppState, TheInspectorFollowsTheScrubbedTime) {
     std::vector<std::size_t> countAfterFrame{0}; // collisions up to frame f
     for (int i = 0; i < 900; ++i) {
         stepSimulation(app);
-        for (const CollisionRecord& r : app.lastLog) {
+        for (const CollisionRecord& r : app.sim.run.lastLog) {
             if (!r.rest) all.push_back(r);
         }
         countAfterFrame.push_back(all.size());
     }
     ASSERT_GE(all.size(), 4u); // A hits B, B the right wall, ...
-    const std::uint64_t newest = app.world.frame;
+    const std::uint64_t newest = app.sim.world().frame;
     auto expectUpTo = [&](std::uint64_t frame) {
         ASSERT_TRUE(scrubTo(app, frame));
         const std::size_t n = countAfterFrame[frame];
         const std::size_t first = n > kRecentCollisions ? n - kRecentCollisions : 0;
-        const auto& recent = app.telemetry.recent;
+        const auto& recent = app.sim.telemetry.recent;
         ASSERT_EQ(recent.size(), n - first) << "frame " << frame;
         for (std::size_t k = first; k < n; ++k) {
             const CollisionRecord &want = all[k], &got = recent[k - first];
@@ -206,19 +210,19 @@ TEST(AppState, TheInspectorFollowsTheScrubbedTime) {
             EXPECT_EQ(got.block, want.block);
             EXPECT_EQ(got.other, want.other);
             EXPECT_EQ(got.v1After, want.v1After);
-            EXPECT_LE(got.time, app.world.time + 1e-12);
+            EXPECT_LE(got.time, app.sim.world().time + 1e-12);
         }
     };
     // Just before the first collision's frame, just after it, between later ones, the newest.
     std::uint64_t firstHit = 0;
     while (countAfterFrame[firstHit] == 0) ++firstHit;
     expectUpTo(firstHit - 1);
-    EXPECT_TRUE(app.telemetry.recent.empty());
+    EXPECT_TRUE(app.sim.telemetry.recent.empty());
     expectUpTo(firstHit);
     expectUpTo(newest / 2);
     expectUpTo(newest - 1);
     expectUpTo(newest);
-    EXPECT_EQ(app.telemetry.recent.size(), std::min(all.size(), kRecentCollisions));
+    EXPECT_EQ(app.sim.telemetry.recent.size(), std::min(all.size(), kRecentCollisions));
 }
 
 TEST(HistoryForTheInspector, TheWalkBackStopsAtItsBudget) {
@@ -228,7 +232,7 @@ TEST(HistoryForTheInspector, TheWalkBackStopsAtItsBudget) {
     std::size_t count = 0;
     for (int i = 0; i < 900; ++i) {
         stepSimulation(app);
-        for (const CollisionRecord& r : app.lastLog) count += r.rest ? 0 : 1;
+        for (const CollisionRecord& r : app.sim.run.lastLog) count += r.rest ? 0 : 1;
         countAfterFrame.push_back(count);
     }
     // A budget of one block-step: only the frames since the last keyframe (every 12 frames, no
@@ -236,7 +240,7 @@ TEST(HistoryForTheInspector, TheWalkBackStopsAtItsBudget) {
     for (std::uint64_t f = 1; f <= 900; ++f) {
         const std::uint64_t keyframe = f / 12 * 12 == f ? f - 12 : f / 12 * 12;
         const std::size_t want = countAfterFrame[f] - countAfterFrame[keyframe];
-        EXPECT_EQ(app.history.collisionsUpTo(f, 24, 1).size(), std::min<std::size_t>(want, 24))
+        EXPECT_EQ(app.sim.history.collisionsUpTo(f, 24, 1).size(), std::min<std::size_t>(want, 24))
             << "frame " << f;
     }
 }
@@ -244,12 +248,12 @@ TEST(HistoryForTheInspector, TheWalkBackStopsAtItsBudget) {
 TEST(AppState, CycleMethodVisitsAllThree) {
     App app;
     setScene(app, twoBlocks(), "two.json");
-    cycleMethod(app);
-    EXPECT_EQ(app.world.settings.method, Method::MoveAndCorrect);
-    cycleMethod(app);
-    EXPECT_EQ(app.world.settings.method, Method::TurnBased);
-    cycleMethod(app);
-    EXPECT_EQ(app.world.settings.method, Method::Perfect);
+    app.sim.cycleMethod();
+    EXPECT_EQ(app.sim.world().settings.method, Method::MoveAndCorrect);
+    app.sim.cycleMethod();
+    EXPECT_EQ(app.sim.world().settings.method, Method::TurnBased);
+    app.sim.cycleMethod();
+    EXPECT_EQ(app.sim.world().settings.method, Method::Perfect);
 }
 
 TEST(AppState, ABadSceneFileKeepsTheCurrentSceneAndShowsTheError) {
@@ -260,11 +264,11 @@ TEST(AppState, ABadSceneFileKeepsTheCurrentSceneAndShowsTheError) {
     App app;
     setScene(app, twoBlocks(), "two.json");
     EXPECT_FALSE(loadScene(app, bad.string()));
-    EXPECT_EQ(app.scene.name, "two");
-    EXPECT_EQ(app.world.blocks.size(), 2u);
-    EXPECT_NE(app.error.find("bad.json"), std::string::npos) << app.error;
+    EXPECT_EQ(app.sim.scene.name, "two");
+    EXPECT_EQ(app.sim.world().blocks.size(), 2u);
+    EXPECT_NE(app.ui.messages.error.find("bad.json"), std::string::npos) << app.ui.messages.error;
     EXPECT_FALSE(loadScene(app, (dir / "missing.json").string()));
-    EXPECT_EQ(app.scene.name, "two");
+    EXPECT_EQ(app.sim.scene.name, "two");
     fs::remove_all(dir);
 }
 
@@ -273,10 +277,10 @@ TEST(AppState, SaveWritesAV1SceneThatLoadsBackAsTheCurrentState) {
     App app;
     setScene(app, twoBlocks(), "two.json");
     for (int i = 0; i < 20; ++i) stepSimulation(app);
-    app.world.settings.bounciness = 0.5;
-    app.world.settings.method = Method::TurnBased;
+    app.sim.world().settings.bounciness = 0.5;
+    app.sim.world().settings.method = Method::TurnBased;
     const std::string path = (dir / "saved.json").string();
-    ASSERT_TRUE(saveCurrentScene(app, path)) << app.error;
+    ASSERT_TRUE(saveCurrentScene(app, path)) << app.ui.messages.error;
 
     const SceneResult loaded = loadSceneFile(path);
     ASSERT_TRUE(loaded.scene) << loaded.error.text();
@@ -284,8 +288,8 @@ TEST(AppState, SaveWritesAV1SceneThatLoadsBackAsTheCurrentState) {
     ASSERT_EQ(s.blocks.size(), 2u);
     EXPECT_EQ(s.blocks[0].name, "A");
     EXPECT_EQ(s.blocks[0].color, "#d04040");
-    EXPECT_TRUE(approxEqual(s.blocks[0].position, app.world.blocks[0].position, 1e-9));
-    EXPECT_TRUE(approxEqual(s.blocks[1].velocity, app.world.blocks[1].velocity, 1e-9));
+    EXPECT_TRUE(approxEqual(s.blocks[0].position, app.sim.world().blocks[0].position, 1e-9));
+    EXPECT_TRUE(approxEqual(s.blocks[1].velocity, app.sim.world().blocks[1].velocity, 1e-9));
     EXPECT_EQ(s.blocks[1].mass, 2.0);
     EXPECT_EQ(s.settings.bounciness, 0.5);
     EXPECT_EQ(s.settings.method, Method::TurnBased);
@@ -296,11 +300,11 @@ TEST(AppState, SaveKeepsNamesInStepAfterAddAndDelete) {
     const fs::path dir = tempDir("save2");
     App app;
     setScene(app, twoBlocks(), "two.json");
-    app.selected = 0;
+    app.sim.selected = 0;
     deleteSelected(app);
-    ASSERT_GE(addBlockAt(app, {16, 3}), 0);
+    ASSERT_GE(app.sim.addBlockAt({16, 3}), 0);
     const std::string path = (dir / "saved.json").string();
-    ASSERT_TRUE(saveCurrentScene(app, path)) << app.error;
+    ASSERT_TRUE(saveCurrentScene(app, path)) << app.ui.messages.error;
     const SceneResult loaded = loadSceneFile(path);
     ASSERT_TRUE(loaded.scene) << loaded.error.text();
     ASSERT_EQ(loaded.scene->blocks.size(), 2u);
@@ -313,10 +317,10 @@ TEST(AppState, SaveRecordsTheCurrentMassSettingsAndAnAbsolutePath) {
     const fs::path dir = tempDir("save3");
     App app;
     ASSERT_TRUE(loadScene(app, resolveScenePath("lecture_example_1", SANDBOX_SCENES_DIR)));
-    EXPECT_TRUE(fs::path(app.scenePath).is_absolute());
-    app.world.blocks[0].mass = 3.0;
-    EXPECT_EQ(blockDisplayName(app, 0), "m1 = 3 kg"); // the label follows the mass
-    app.world.settings.gravity = Vec2{0, -9.81};
+    EXPECT_TRUE(fs::path(app.sim.scenePath).is_absolute());
+    app.sim.world().blocks[0].mass = 3.0;
+    EXPECT_EQ(app.sim.blockDisplayName(0), "m1 = 3 kg"); // the label follows the mass
+    app.sim.world().settings.gravity = Vec2{0, -9.81};
     // The offered name comes from the scene's name, outside the shipped scenes, never taken.
     const std::string offered = suggestedSavePath(app);
     EXPECT_EQ(fs::path(offered).stem().string().rfind("lecture_example_1", 0), 0u) << offered;
@@ -324,10 +328,10 @@ TEST(AppState, SaveRecordsTheCurrentMassSettingsAndAnAbsolutePath) {
     EXPECT_NE(fs::path(offered).parent_path(), fs::path(SANDBOX_SCENES_DIR));
     const fs::path cwd = fs::current_path();
     fs::current_path(dir);
-    ASSERT_TRUE(saveCurrentScene(app, "mine")) << app.error; // relative, no extension
+    ASSERT_TRUE(saveCurrentScene(app, "mine")) << app.ui.messages.error; // relative, no extension
     fs::current_path(cwd);
     const std::string saved = (dir / "mine.json").string();
-    EXPECT_EQ(app.scenePath, saved);
+    EXPECT_EQ(app.sim.scenePath, saved);
     const SceneResult loaded = loadSceneFile(saved);
     ASSERT_TRUE(loaded.scene) << loaded.error.text();
     EXPECT_EQ(loaded.scene->blocks[0].name, "m1 = 3 kg");
@@ -338,7 +342,7 @@ TEST(AppState, SaveRecordsTheCurrentMassSettingsAndAnAbsolutePath) {
               std::string::npos)
         << loaded.scene->description;
     // Offered again: the file exists now, so another name.
-    app.scenePath = saved;
+    app.sim.scenePath = saved;
     const std::string next = suggestedSavePath(app);
     EXPECT_EQ(fs::path(next).parent_path(), dir);
     EXPECT_NE(next, saved);
@@ -349,32 +353,32 @@ TEST(AppState, SaveToABadPathFailsWithAMessage) {
     App app;
     setScene(app, twoBlocks(), "two.json");
     EXPECT_FALSE(saveCurrentScene(app, "/nonexistent-dir/x/y.json"));
-    EXPECT_FALSE(app.error.empty());
+    EXPECT_FALSE(app.ui.messages.error.empty());
     EXPECT_FALSE(saveCurrentScene(app, ""));
 }
 
 TEST(AppState, BlockKindAndSizeEdits) {
     App app;
     setScene(app, twoBlocks(), "two.json");
-    setBlockKind(app, 0, BodyKind::Static);
-    EXPECT_EQ(app.world.blocks[0].velocity, Vec2{});
-    EXPECT_EQ(app.world.blocks[0].mass, kInfiniteMass);
-    setBlockKind(app, 0, BodyKind::Dynamic);
-    EXPECT_EQ(app.world.blocks[0].mass, 1.0);
-    EXPECT_TRUE(setBlockSize(app, 0, {2, 2}));
-    EXPECT_FALSE(setBlockSize(app, 0, {30, 1})); // out of bounds
-    EXPECT_FALSE(setBlockSize(app, 0, {17, 1})); // would overlap B
-    EXPECT_FALSE(setBlockSize(app, 0, {-1, 1}));
-    EXPECT_EQ(app.world.blocks[0].size, (Vec2{2, 2}));
+    app.sim.setBlockKind(0, BodyKind::Static);
+    EXPECT_EQ(app.sim.world().blocks[0].velocity, Vec2{});
+    EXPECT_EQ(app.sim.world().blocks[0].mass, kInfiniteMass);
+    app.sim.setBlockKind(0, BodyKind::Dynamic);
+    EXPECT_EQ(app.sim.world().blocks[0].mass, 1.0);
+    EXPECT_TRUE(app.sim.setBlockSize(0, {2, 2}));
+    EXPECT_FALSE(app.sim.setBlockSize(0, {30, 1})); // out of bounds
+    EXPECT_FALSE(app.sim.setBlockSize(0, {17, 1})); // would overlap B
+    EXPECT_FALSE(app.sim.setBlockSize(0, {-1, 1}));
+    EXPECT_EQ(app.sim.world().blocks[0].size, (Vec2{2, 2}));
 }
 
 TEST(AppState, ViewportLeavesRoomForThePanel) {
     App app;
-    const ScreenRect withUi = sceneViewport(app, 1280, 720);
+    const ScreenRect withUi = sceneViewport(app.view, app.lesson.active(), 1280, 720);
     EXPECT_GT(withUi.x, 0.0);
     EXPECT_DOUBLE_EQ(withUi.x + withUi.width, 1280.0);
-    app.uiVisible = false;
-    const ScreenRect full = sceneViewport(app, 1280, 720);
+    app.view.uiVisible = false;
+    const ScreenRect full = sceneViewport(app.view, app.lesson.active(), 1280, 720);
     EXPECT_DOUBLE_EQ(full.x, 0.0);
     EXPECT_DOUBLE_EQ(full.width, 1280.0);
 }
@@ -384,13 +388,13 @@ TEST(AppState, ShowListSetsTheOverlays) {
     ShowSet show;
     std::string error;
     ASSERT_TRUE(parseShowList("trails,plots", show, &error));
-    applyShowSet(app, show);
-    EXPECT_TRUE(app.show.trails);
-    EXPECT_FALSE(app.show.vectors);
-    EXPECT_TRUE(app.uiVisible);
+    applyShowSet(app.view, show);
+    EXPECT_TRUE(app.view.show.trails);
+    EXPECT_FALSE(app.view.show.vectors);
+    EXPECT_TRUE(app.view.uiVisible);
     ASSERT_TRUE(parseShowList("none", show, &error));
-    applyShowSet(app, show);
-    EXPECT_FALSE(app.uiVisible);
+    applyShowSet(app.view, show);
+    EXPECT_FALSE(app.view.uiVisible);
 }
 
 // The overlay table (overlays.h) is what --show, the checkboxes and the log read: every row's
@@ -429,23 +433,23 @@ TEST(AppLog, LogsEveryOverlayByItsShowName) {
     App app;
     setScene(app, twoBlocks(), "two.json");
     for (const OverlayInfo& row : kOverlays) {
-        const LoggedState before = snapshotForLog(app);
-        app.show.*row.flag = !(app.show.*row.flag);
-        const auto lines = describeChanges(before, snapshotForLog(app));
+        const LoggedState before = snapshotForLog(app.sim, app.view, app.lesson);
+        app.view.show.*row.flag = !(app.view.show.*row.flag);
+        const auto lines = describeChanges(before, snapshotForLog(app.sim, app.view, app.lesson));
         ASSERT_EQ(lines.size(), 1u) << row.name;
-        EXPECT_EQ(lines[0], std::string(row.name) + (app.show.*row.flag ? ": on" : ": off"));
+        EXPECT_EQ(lines[0], std::string(row.name) + (app.view.show.*row.flag ? ": on" : ": off"));
     }
 }
 
 TEST(AppLog, DescribesWhatChanged) {
     App app;
     setScene(app, twoBlocks(), "two.json");
-    app.paused = false;
-    const LoggedState before = snapshotForLog(app);
-    app.paused = true;
-    cycleMethod(app);
-    app.world.settings.bounciness = 0.25;
-    const auto lines = describeChanges(before, snapshotForLog(app));
+    app.sim.paused = false;
+    const LoggedState before = snapshotForLog(app.sim, app.view, app.lesson);
+    app.sim.paused = true;
+    app.sim.cycleMethod();
+    app.sim.world().settings.bounciness = 0.25;
+    const auto lines = describeChanges(before, snapshotForLog(app.sim, app.view, app.lesson));
     ASSERT_EQ(lines.size(), 3u);
     EXPECT_EQ(lines[0], "paused");
     EXPECT_EQ(lines[1], "method: move-and-correct");
@@ -499,14 +503,14 @@ TEST(AppFrame, FramesShownAreCountedAndSmoothed) {
     // The window's pace for Statistics: the first frame sets the average, later ones move it by
     // 1/30 of the difference; offscreen runs never call this (the readout stays hidden at 0).
     App app;
-    EXPECT_EQ(app.frameMsSmoothed, 0.0);
-    noteFrameShown(app, 0.020);
-    EXPECT_DOUBLE_EQ(app.frameMsSmoothed, 20.0);
-    noteFrameShown(app, 0.050);
-    EXPECT_DOUBLE_EQ(app.frameMsSmoothed, 21.0);
-    noteFrameShown(app, 0.0); // no time passed: not a frame
-    EXPECT_EQ(app.framesShown, 2);
-    EXPECT_DOUBLE_EQ(app.secondsShown, 0.070);
+    EXPECT_EQ(app.ui.frameMsSmoothed, 0.0);
+    noteFrameShown(app.ui, 0.020);
+    EXPECT_DOUBLE_EQ(app.ui.frameMsSmoothed, 20.0);
+    noteFrameShown(app.ui, 0.050);
+    EXPECT_DOUBLE_EQ(app.ui.frameMsSmoothed, 21.0);
+    noteFrameShown(app.ui, 0.0); // no time passed: not a frame
+    EXPECT_EQ(app.ui.framesShown, 2);
+    EXPECT_DOUBLE_EQ(app.ui.secondsShown, 0.070);
 }
 
 TEST(AppConfig, RoundTripsAndIgnoresNonsense) {
@@ -630,18 +634,18 @@ TEST(AppState, HighMassRatioStopsAtItsDurationWith3141) {
     ASSERT_TRUE(loaded.scene) << loaded.error.text();
     ASSERT_TRUE(loaded.scene->duration);
     setScene(app, *loaded.scene, "high_mass_ratio.json");
-    app.paused = false;
+    app.sim.paused = false;
     int frames = 0;
-    while (!app.paused && frames < 3000) {
+    while (!app.sim.paused && frames < 3000) {
         advanceSimulation(app, 1.0 / 60.0);
         ++frames;
     }
-    ASSERT_TRUE(app.paused);
-    EXPECT_EQ(app.world.frame, 1200u); // 20 s at 60 frames/s
-    EXPECT_EQ(app.totals.collisions, 3141u);
+    ASSERT_TRUE(app.sim.paused);
+    EXPECT_EQ(app.sim.world().frame, 1200u); // 20 s at 60 frames/s
+    EXPECT_EQ(app.sim.run.totals.collisions, 3141u);
     // Played on, the giant comes back from the far wall: the count goes on (why it ends at 20 s).
     for (int i = 0; i < 900; ++i) stepSimulation(app);
-    EXPECT_GT(app.totals.collisions, 3141u);
+    EXPECT_GT(app.sim.run.totals.collisions, 3141u);
 }
 
 // --theme starts with the light theme (issue 15: bright rooms); --timeline-frame shows the replay

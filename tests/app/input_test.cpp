@@ -1,5 +1,5 @@
 // The key map and the mouse: what each key and drag does to the app (no GL).
-#include "app_state.h"
+#include "app.h"
 #include "input_map.h"
 #include "mouse_tool.h"
 #include "placement.h"
@@ -77,112 +77,112 @@ App makeApp() {
     scene.blocks = {a, b, floor};
     App app;
     setScene(app, scene, "test.json");
-    app.camera.setViewport({0, 0, 1000, 600});
-    app.camera.setCentre({10, 6});
-    app.camera.setPixelsPerMetre(50);
-    app.autoFit = false;
+    app.view.camera.setViewport({0, 0, 1000, 600});
+    app.view.camera.setCentre({10, 6});
+    app.view.camera.setPixelsPerMetre(50);
+    app.view.autoFit = false;
     return app;
 }
 
 Vec2 screenOf(const App& app, Vec2 world) {
-    return app.camera.worldToScreen(world);
+    return app.view.camera.worldToScreen(world);
 }
 
 TEST(Mouse, ClickSelectsAndClickOnEmptySpaceDeselects) {
     App app = makeApp();
-    mousePress(app, MouseButton::Left, screenOf(app, {12.5, 5.5}), false);
-    mouseRelease(app, MouseButton::Left, screenOf(app, {12.5, 5.5}));
-    EXPECT_EQ(app.selected, 1);
-    mousePress(app, MouseButton::Left, screenOf(app, {8, 9}), false);
-    mouseRelease(app, MouseButton::Left, screenOf(app, {8, 9}));
-    EXPECT_EQ(app.selected, -1);
+    mousePress(app.mouse, app.sim, app.view, MouseButton::Left, screenOf(app, {12.5, 5.5}), false);
+    mouseRelease(app.mouse, app.sim, app.view, MouseButton::Left, screenOf(app, {12.5, 5.5}));
+    EXPECT_EQ(app.sim.selected, 1);
+    mousePress(app.mouse, app.sim, app.view, MouseButton::Left, screenOf(app, {8, 9}), false);
+    mouseRelease(app.mouse, app.sim, app.view, MouseButton::Left, screenOf(app, {8, 9}));
+    EXPECT_EQ(app.sim.selected, -1);
 }
 
 TEST(Mouse, DragMovesTheBlockAndHoldsTheSimulation) {
     App app = makeApp();
-    mousePress(app, MouseButton::Left, screenOf(app, {5.5, 5.5}), false);
+    mousePress(app.mouse, app.sim, app.view, MouseButton::Left, screenOf(app, {5.5, 5.5}), false);
     EXPECT_TRUE(app.mouse.holdsSimulation());
-    mouseMove(app, screenOf(app, {8.5, 8.5}));
+    mouseMove(app.mouse, app.sim, app.view, screenOf(app, {8.5, 8.5}));
     // The grab point stays under the cursor.
-    EXPECT_TRUE(approxEqual(app.world.blocks[0].position, Vec2{8, 8}, 1e-9));
-    const double t = app.world.time;
+    EXPECT_TRUE(approxEqual(app.sim.world().blocks[0].position, Vec2{8, 8}, 1e-9));
+    const double t = app.sim.world().time;
     EXPECT_EQ(advanceSimulation(app, 0.5), 0);
-    EXPECT_EQ(app.world.time, t);
-    mouseRelease(app, MouseButton::Left, screenOf(app, {8.5, 8.5}));
+    EXPECT_EQ(app.sim.world().time, t);
+    mouseRelease(app.mouse, app.sim, app.view, MouseButton::Left, screenOf(app, {8.5, 8.5}));
     EXPECT_FALSE(app.mouse.holdsSimulation());
-    EXPECT_TRUE(approxEqual(app.world.blocks[0].position, Vec2{8, 8}, 1e-9));
+    EXPECT_TRUE(approxEqual(app.sim.world().blocks[0].position, Vec2{8, 8}, 1e-9));
 }
 
 TEST(Mouse, ADropOntoAnotherBlockLandsBesideItNeverOnTop) {
     App app = makeApp();
-    mousePress(app, MouseButton::Left, screenOf(app, {5, 5}), false);
-    mouseMove(app, screenOf(app, {11.6, 5.2}));
-    mouseRelease(app, MouseButton::Left, screenOf(app, {11.6, 5.2}));
-    const Block& a = app.world.blocks[0];
-    EXPECT_FALSE(overlapsAnyBlock(app.world, 0, a.position, a.size));
+    mousePress(app.mouse, app.sim, app.view, MouseButton::Left, screenOf(app, {5, 5}), false);
+    mouseMove(app.mouse, app.sim, app.view, screenOf(app, {11.6, 5.2}));
+    mouseRelease(app.mouse, app.sim, app.view, MouseButton::Left, screenOf(app, {11.6, 5.2}));
+    const Block& a = app.sim.world().blocks[0];
+    EXPECT_FALSE(overlapsAnyBlock(app.sim.world(), 0, a.position, a.size));
     EXPECT_NEAR(a.position.x, 10.0, 1e-5); // left of B, touching
 }
 
 TEST(Mouse, RightDragFlingsWithTheDragVector) {
     App app = makeApp();
-    mousePress(app, MouseButton::Right, screenOf(app, {12, 5}), false);
-    mouseMove(app, screenOf(app, {14, 6}));
+    mousePress(app.mouse, app.sim, app.view, MouseButton::Right, screenOf(app, {12, 5}), false);
+    mouseMove(app.mouse, app.sim, app.view, screenOf(app, {14, 6}));
     EXPECT_TRUE(approxEqual(app.mouse.flingVelocity(), Vec2{2 * kFlingGain, kFlingGain}, 1e-9));
-    mouseRelease(app, MouseButton::Right, screenOf(app, {14, 6}));
-    EXPECT_TRUE(approxEqual(app.world.blocks[1].velocity, Vec2{4, 2}, 1e-9));
-    EXPECT_EQ(app.world.blocks[1].position, (Vec2{12, 5})); // flinging does not move it
+    mouseRelease(app.mouse, app.sim, app.view, MouseButton::Right, screenOf(app, {14, 6}));
+    EXPECT_TRUE(approxEqual(app.sim.world().blocks[1].velocity, Vec2{4, 2}, 1e-9));
+    EXPECT_EQ(app.sim.world().blocks[1].position, (Vec2{12, 5})); // flinging does not move it
 }
 
 TEST(Mouse, StaticBlocksCannotBeFlung) {
     App app = makeApp();
-    mousePress(app, MouseButton::Right, screenOf(app, {3, 0.5}), false);
-    mouseRelease(app, MouseButton::Right, screenOf(app, {6, 3}));
-    EXPECT_EQ(app.world.blocks[2].velocity, Vec2{});
+    mousePress(app.mouse, app.sim, app.view, MouseButton::Right, screenOf(app, {3, 0.5}), false);
+    mouseRelease(app.mouse, app.sim, app.view, MouseButton::Right, screenOf(app, {6, 3}));
+    EXPECT_EQ(app.sim.world().blocks[2].velocity, Vec2{});
 }
 
 TEST(Mouse, DoubleClickOnEmptySpaceAddsABlockThatOverlapsNothing) {
     App app = makeApp();
-    mousePress(app, MouseButton::Left, screenOf(app, {8, 9}), true);
-    ASSERT_EQ(app.world.blocks.size(), 4u);
-    EXPECT_EQ(app.selected, 3);
-    EXPECT_EQ(app.labels.size(), 4u);
+    mousePress(app.mouse, app.sim, app.view, MouseButton::Left, screenOf(app, {8, 9}), true);
+    ASSERT_EQ(app.sim.world().blocks.size(), 4u);
+    EXPECT_EQ(app.sim.selected, 3);
+    EXPECT_EQ(app.sim.labels.size(), 4u);
     // Next to a block: placed beside it.
-    mousePress(app, MouseButton::Left, screenOf(app, {8.3, 8.2}), true);
-    ASSERT_EQ(app.world.blocks.size(), 5u);
-    const Block& b = app.world.blocks[4];
-    EXPECT_FALSE(overlapsAnyBlock(app.world, 4, b.position, b.size));
+    mousePress(app.mouse, app.sim, app.view, MouseButton::Left, screenOf(app, {8.3, 8.2}), true);
+    ASSERT_EQ(app.sim.world().blocks.size(), 5u);
+    const Block& b = app.sim.world().blocks[4];
+    EXPECT_FALSE(overlapsAnyBlock(app.sim.world(), 4, b.position, b.size));
 }
 
 TEST(Mouse, DoubleClickOnABlockOnlySelectsIt) {
     App app = makeApp();
-    mousePress(app, MouseButton::Left, screenOf(app, {5, 5}), true);
-    EXPECT_EQ(app.world.blocks.size(), 3u);
-    EXPECT_EQ(app.selected, 0);
+    mousePress(app.mouse, app.sim, app.view, MouseButton::Left, screenOf(app, {5, 5}), true);
+    EXPECT_EQ(app.sim.world().blocks.size(), 3u);
+    EXPECT_EQ(app.sim.selected, 0);
 }
 
 TEST(Mouse, WheelZoomsAboutTheCursorAndMiddleDragPans) {
     App app = makeApp();
     const Vec2 cursor = screenOf(app, {4, 3});
-    mouseWheel(app, cursor, 2.0);
-    EXPECT_GT(app.camera.pixelsPerMetre(), 50.0);
-    EXPECT_TRUE(approxEqual(app.camera.screenToWorld(cursor), Vec2{4, 3}, 1e-9));
-    const Vec2 centre = app.camera.centre();
-    mousePress(app, MouseButton::Middle, {500, 300}, false);
-    mouseMove(app, {600, 300});
-    mouseRelease(app, MouseButton::Middle, {600, 300});
-    EXPECT_LT(app.camera.centre().x, centre.x);
-    EXPECT_FALSE(app.autoFit);
+    mouseWheel(app.view, cursor, 2.0);
+    EXPECT_GT(app.view.camera.pixelsPerMetre(), 50.0);
+    EXPECT_TRUE(approxEqual(app.view.camera.screenToWorld(cursor), Vec2{4, 3}, 1e-9));
+    const Vec2 centre = app.view.camera.centre();
+    mousePress(app.mouse, app.sim, app.view, MouseButton::Middle, {500, 300}, false);
+    mouseMove(app.mouse, app.sim, app.view, {600, 300});
+    mouseRelease(app.mouse, app.sim, app.view, MouseButton::Middle, {600, 300});
+    EXPECT_LT(app.view.camera.centre().x, centre.x);
+    EXPECT_FALSE(app.view.autoFit);
 }
 
 TEST(Mouse, DeleteRemovesTheSelectedBlockAndItsLabel) {
     App app = makeApp();
-    app.selected = 0;
+    app.sim.selected = 0;
     deleteSelected(app);
-    ASSERT_EQ(app.world.blocks.size(), 2u);
-    EXPECT_EQ(app.labels[0].name, "B");
-    EXPECT_EQ(app.selected, -1);
+    ASSERT_EQ(app.sim.world().blocks.size(), 2u);
+    EXPECT_EQ(app.sim.labels[0].name, "B");
+    EXPECT_EQ(app.sim.selected, -1);
     deleteSelected(app); // nothing selected: nothing happens
-    EXPECT_EQ(app.world.blocks.size(), 2u);
+    EXPECT_EQ(app.sim.world().blocks.size(), 2u);
 }
 
 } // namespace

@@ -1,6 +1,6 @@
 // The lesson in the app: entering a step gives exactly the state the headless runner checks, the
 // keys walk through the steps and their questions, R restarts, a bad lesson keeps the current one.
-#include "app_state.h"
+#include "app.h"
 #include "input_map.h"
 #include "inspector_format.h"
 #include "lesson_runner.h"
@@ -17,14 +17,14 @@ const std::string kBadLessons = std::string(SANDBOX_TEST_DATA_DIR) + "/bad_lesso
 
 App lessonApp() {
     App app;
-    app.scenesDir = SANDBOX_SCENES_DIR;
-    EXPECT_TRUE(openLesson(app, kLecture3)) << app.error;
+    app.shipped.scenesDir = SANDBOX_SCENES_DIR;
+    EXPECT_TRUE(openLesson(app, kLecture3)) << app.ui.messages.error;
     return app;
 }
 
 // Plays frame by frame as the window does, until the step pauses itself (or a bound).
 void playUntilPaused(App& app) {
-    for (int i = 0; i < 100000 && !app.paused; ++i) stepSimulation(app);
+    for (int i = 0; i < 100000 && !app.sim.paused; ++i) stepSimulation(app);
 }
 
 } // namespace
@@ -34,12 +34,12 @@ TEST(LessonSession, EveryStepShowsWhatTheRunnerChecks) {
     const Lesson& lesson = *app.lesson.lesson;
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
         ASSERT_TRUE(enterStep(app, i));
-        EXPECT_EQ(stateHash(app.world), stateHash(stepStartWorld(lesson.steps[i])));
-        EXPECT_EQ(app.world.frame, 0u);
+        EXPECT_EQ(stateHash(app.sim.world()), stateHash(stepStartWorld(lesson.steps[i])));
+        EXPECT_EQ(app.sim.world().frame, 0u);
         lessonShowPausePoint(app);
         const StepRun run = runStepToPause(lesson.steps[i]);
-        EXPECT_EQ(stateHash(app.world), stateHash(run.world)) << lesson.steps[i].title;
-        EXPECT_TRUE(app.paused);
+        EXPECT_EQ(stateHash(app.sim.world()), stateHash(run.world)) << lesson.steps[i].title;
+        EXPECT_TRUE(app.sim.paused);
     }
 }
 
@@ -54,22 +54,22 @@ TEST(LessonSession, PlayingPausesAtThePausePointOrJustBeforeAQuestion) {
         const StepRun run = runStepToPause(step);
         const std::uint64_t frames = static_cast<std::uint64_t>(run.progress.frames);
         if (step.question.empty() || frames == 0) {
-            EXPECT_EQ(app.world.frame, frames) << step.title;
-            EXPECT_EQ(stateHash(app.world), stateHash(run.world)) << step.title;
+            EXPECT_EQ(app.sim.world().frame, frames) << step.title;
+            EXPECT_EQ(stateHash(app.sim.world()), stateHash(run.world)) << step.title;
         } else {
-            EXPECT_EQ(app.world.frame + 1, frames) << step.title; // the moment before
+            EXPECT_EQ(app.sim.world().frame + 1, frames) << step.title; // the moment before
             EXPECT_TRUE(app.lesson.asking());
             applyLessonAction(app, Action::LessonNext); // the answer: one more frame
             EXPECT_FALSE(app.lesson.asking());
-            EXPECT_EQ(app.world.frame, frames) << step.title;
-            EXPECT_EQ(stateHash(app.world), stateHash(run.world)) << step.title;
+            EXPECT_EQ(app.sim.world().frame, frames) << step.title;
+            EXPECT_EQ(stateHash(app.sim.world()), stateHash(run.world)) << step.title;
             EXPECT_EQ(app.lesson.current, i); // still this step
             EXPECT_NE(lessonCaption(app.lesson).find("Answer: " + step.answer), std::string::npos);
         }
         // Playing on does not stop again.
-        app.paused = false;
+        app.sim.paused = false;
         stepSimulation(app);
-        EXPECT_FALSE(app.paused);
+        EXPECT_FALSE(app.sim.paused);
     }
 }
 
@@ -102,49 +102,49 @@ TEST(LessonSession, KeysWalkThroughTheSteps) {
     applyLessonAction(app, Action::LessonFirst);
     EXPECT_EQ(app.lesson.current, 0u);
 
-    lessonTypeDigit(app, 1);
-    lessonTypeDigit(app, 2);
+    lessonTypeDigit(app.lesson, 1);
+    lessonTypeDigit(app.lesson, 2);
     EXPECT_NE(lessonCaption(app.lesson).find("Go to step 12"), std::string::npos);
-    EXPECT_TRUE(lessonJump(app));
+    applyLessonAction(app, Action::LessonJump);
     EXPECT_EQ(app.lesson.current, 11u);
-    lessonTypeDigit(app, 9);
-    lessonTypeDigit(app, 9);
-    EXPECT_FALSE(lessonJump(app)); // no step 99: an error, and the step stays
+    lessonTypeDigit(app.lesson, 9);
+    lessonTypeDigit(app.lesson, 9);
+    applyLessonAction(app, Action::LessonJump); // no step 99: an error, and the step stays
     EXPECT_EQ(app.lesson.current, 11u);
-    EXPECT_NE(app.error.find("no step 99"), std::string::npos) << app.error;
+    EXPECT_NE(app.ui.messages.error.find("no step 99"), std::string::npos) << app.ui.messages.error;
 }
 
 TEST(LessonSession, LeavingAndComingBackGivesTheSameState) {
     App app = lessonApp();
     enterStep(app, 3);
-    const std::uint64_t start = stateHash(app.world);
-    const Overlays shown = app.show;
+    const std::uint64_t start = stateHash(app.sim.world());
+    const Overlays shown = app.view.show;
     playUntilPaused(app);
     applyLessonAction(app, Action::LessonNext); // the answer (step 4 asks)
     applyLessonAction(app, Action::LessonNext); // step 5
     EXPECT_EQ(app.lesson.current, 4u);
     applyLessonAction(app, Action::LessonPrevious);
     EXPECT_EQ(app.lesson.current, 3u);
-    EXPECT_EQ(stateHash(app.world), start);
-    EXPECT_EQ(app.world.time, 0.0);
-    EXPECT_EQ(app.show.poi, shown.poi);
-    EXPECT_EQ(app.show.inspector, shown.inspector); // the reveal's overlays are off again
+    EXPECT_EQ(stateHash(app.sim.world()), start);
+    EXPECT_EQ(app.sim.world().time, 0.0);
+    EXPECT_EQ(app.view.show.poi, shown.poi);
+    EXPECT_EQ(app.view.show.inspector, shown.inspector); // the reveal's overlays are off again
     EXPECT_TRUE(app.lesson.asking());
 }
 
 TEST(LessonSession, RRestartsTheStepExactly) {
     App app = lessonApp();
     enterStep(app, 6);
-    const std::uint64_t start = stateHash(app.world);
-    const int selected = app.selected;
+    const std::uint64_t start = stateHash(app.sim.world());
+    const int selected = app.sim.selected;
     for (int i = 0; i < 20; ++i) stepSimulation(app);
-    app.world.settings.bounciness = 0.3; // the lecturer played with a slider
+    app.sim.world().settings.bounciness = 0.3; // the lecturer played with a slider
     applyLessonAction(app, Action::Reset);
     EXPECT_EQ(app.lesson.current, 6u);
-    EXPECT_EQ(stateHash(app.world), start);
-    EXPECT_EQ(app.world.settings.bounciness, app.lesson.step()->scene.settings.bounciness);
-    EXPECT_EQ(app.selected, selected);
-    EXPECT_FALSE(app.paused);
+    EXPECT_EQ(stateHash(app.sim.world()), start);
+    EXPECT_EQ(app.sim.world().settings.bounciness, app.lesson.step()->scene.settings.bounciness);
+    EXPECT_EQ(app.sim.selected, selected);
+    EXPECT_FALSE(app.sim.paused);
 }
 
 TEST(LessonSession, StepSettingsAreApplied) {
@@ -152,30 +152,31 @@ TEST(LessonSession, StepSettingsAreApplied) {
     for (std::size_t i = 0; i < app.lesson.lesson->steps.size(); ++i) {
         enterStep(app, i);
         const LessonStep& step = *app.lesson.step();
-        EXPECT_EQ(app.selected, step.selected);
-        EXPECT_EQ(app.world.settings.method, step.scene.settings.method);
-        EXPECT_EQ(app.timeScale, step.timeScale);
-        EXPECT_EQ(app.show.vectors, std::find(step.overlays.begin(), step.overlays.end(),
-                                              "vectors") != step.overlays.end());
-        EXPECT_EQ(app.fitBounds.has_value(), step.camera.has_value());
+        EXPECT_EQ(app.sim.selected, step.selected);
+        EXPECT_EQ(app.sim.world().settings.method, step.scene.settings.method);
+        EXPECT_EQ(app.sim.timeScale, step.timeScale);
+        EXPECT_EQ(app.view.show.vectors, std::find(step.overlays.begin(), step.overlays.end(),
+                                                   "vectors") != step.overlays.end());
+        EXPECT_EQ(app.view.fitBounds.has_value(), step.camera.has_value());
     }
 }
 
 TEST(LessonSession, AMalformedLessonKeepsTheCurrentOne) {
     App app = lessonApp();
     enterStep(app, 4);
-    const std::uint64_t hash = stateHash(app.world);
+    const std::uint64_t hash = stateHash(app.sim.world());
     for (const char* bad : {"unknown_overlay.json", "scene_fails.json", "bad_expectation.json",
                             "syntax.json", "no_such_lesson.json"}) {
         EXPECT_FALSE(openLesson(app, kBadLessons + "/" + bad));
-        EXPECT_NE(app.error.find(bad), std::string::npos) << app.error;
+        EXPECT_NE(app.ui.messages.error.find(bad), std::string::npos) << app.ui.messages.error;
         ASSERT_TRUE(app.lesson.active());
         EXPECT_EQ(app.lesson.lesson->path, kLecture3);
         EXPECT_EQ(app.lesson.current, 4u);
-        EXPECT_EQ(stateHash(app.world), hash);
+        EXPECT_EQ(stateHash(app.sim.world()), hash);
     }
     EXPECT_FALSE(openLesson(app, kLecture3, 99)); // a bad step index
-    EXPECT_NE(app.error.find("no step 100"), std::string::npos) << app.error;
+    EXPECT_NE(app.ui.messages.error.find("no step 100"), std::string::npos)
+        << app.ui.messages.error;
     EXPECT_EQ(app.lesson.current, 4u);
 }
 
@@ -183,9 +184,9 @@ TEST(LessonSession, LoadingASceneLeavesTheLesson) {
     App app = lessonApp();
     ASSERT_TRUE(loadScene(app, std::string(SANDBOX_SCENES_DIR) + "/single_bounce.json"));
     EXPECT_FALSE(app.lesson.active());
-    EXPECT_FALSE(app.fitBounds.has_value());
+    EXPECT_FALSE(app.view.fitBounds.has_value());
     applyLessonAction(app, Action::LessonNext); // nothing happens without a lesson
-    EXPECT_EQ(app.scene.name, "Single bounce");
+    EXPECT_EQ(app.sim.scene.name, "Single bounce");
 }
 
 // Issue 18: in present mode a lesson keeps one caption bar ("n / N · title", the caption, and
@@ -193,10 +194,10 @@ TEST(LessonSession, LoadingASceneLeavesTheLesson) {
 // and no window.
 TEST(LessonSession, PresentModeKeepsTheOneCaptionBar) {
     App app = lessonApp();
-    app.captionHeight = 120.0; // what the bar measured last frame
-    app.show.plots = true;
-    setPresentMode(app, true);
-    const Layout layout = computeAppLayout(app, 1920, 1080);
+    app.view.captionHeight = 120.0; // what the bar measured last frame
+    app.view.show.plots = true;
+    setPresentMode(app.view, true);
+    const Layout layout = computeAppLayout(app.view, app.lesson.active(), 1920, 1080);
     EXPECT_TRUE(layout.windows.empty());
     EXPECT_EQ(layout.panel.width, 0.0);
     EXPECT_GE(layout.scene.y, 120.0); // the world is fitted below the bar
@@ -210,14 +211,14 @@ TEST(LessonSession, PresentModeKeepsTheOneCaptionBar) {
 // relative-velocity test refuses, and the inspector says so as the Tips slide does.
 TEST(LessonSession, TheNotACollisionStepShowsTheRelativeVelocityTest) {
     App app = lessonApp();
-    ASSERT_TRUE(enterStep(app, 23)) << app.error;
+    ASSERT_TRUE(enterStep(app, 23)) << app.ui.messages.error;
     ASSERT_EQ(app.lesson.step()->title, "Tips: BAD, a collision that is not a collision");
     lessonShowPausePoint(app);
-    ASSERT_FALSE(app.telemetry.recent.empty());
-    const CollisionRecord& r = app.telemetry.recent.back();
+    ASSERT_FALSE(app.sim.telemetry.recent.empty());
+    const CollisionRecord& r = app.sim.telemetry.recent.back();
     EXPECT_TRUE(r.firstBelow); // red is behind (left of) blue
     const CollisionFormula f =
-        collisionFormula(r, blockDisplayName(app, r.block), blockDisplayName(app, r.other));
+        collisionFormula(r, app.sim.blockDisplayName(r.block), app.sim.blockDisplayName(r.other));
     EXPECT_TRUE(f.separating);
     EXPECT_EQ(f.relative.rfind("rel. vel. along x = v1 - v2 = 3 - 4 = -1 < 0: separating", 0), 0u)
         << f.relative;

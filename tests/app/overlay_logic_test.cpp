@@ -1,7 +1,7 @@
 // The teaching overlays' logic without GL: the inspector's formula strings for the lecture's
 // first worked example, the timeline's scrub-and-replay (bit-exact, checked with stateHash), the
 // plot widget's ticks and time window, the point of impact and the methods side by side.
-#include "app_state.h"
+#include "app.h"
 #include "cost.h"
 #include "inspector_format.h"
 #include "plot_logic.h"
@@ -24,14 +24,14 @@ namespace {
 App lectureExample() {
     App app;
     EXPECT_TRUE(loadScene(app, resolveScenePath("lecture_example_1", SANDBOX_SCENES_DIR)))
-        << app.error;
+        << app.ui.messages.error;
     return app;
 }
 
 // The first block-block collision recorded by the app's telemetry within `frames` frames.
 const CollisionRecord* firstBlockCollision(App& app, int frames) {
     for (int i = 0; i < frames; ++i) stepSimulation(app);
-    for (const CollisionRecord& r : app.telemetry.recent) {
+    for (const CollisionRecord& r : app.sim.telemetry.recent) {
         if (r.other >= 0) return &r;
     }
     return nullptr;
@@ -55,8 +55,8 @@ TEST(InspectorFormat, LectureExampleOneFillsTheFormula) {
     ASSERT_NE(r, nullptr) << "no collision between the blocks in 45 frames";
     EXPECT_NEAR(r->time, 0.625, 1e-9);
     EXPECT_EQ(r->axis, 0);
-    const CollisionFormula f =
-        collisionFormula(*r, blockDisplayName(app, r->block), blockDisplayName(app, r->other));
+    const CollisionFormula f = collisionFormula(*r, app.sim.blockDisplayName(r->block),
+                                                app.sim.blockDisplayName(r->other));
     EXPECT_EQ(f.title, "m1 = 1 kg  hits  m2 = 2 kg  along x at t = 0.625 s");
     EXPECT_EQ(f.given, "m1 = 1, m2 = 2, v1 = 6, v2 = 0, C = 1");
     EXPECT_EQ(f.u, "u = (1·6 + 2·0)/(1 + 2) = 2");
@@ -91,54 +91,54 @@ TEST(InspectorFormat, WallCollisionUsesTheWallsVelocity) {
 
 TEST(Inspector, PauseOnCollisionStopsAtTheCollisionFrame) {
     App app = lectureExample();
-    app.paused = false; // P
-    app.pauseOnCollision = true;
+    app.sim.paused = false; // P
+    app.sim.pauseOnCollision = true;
     int frames = 0;
-    while (!app.paused && frames < 100) {
+    while (!app.sim.paused && frames < 100) {
         stepSimulation(app);
         ++frames;
     }
-    EXPECT_TRUE(app.paused);
+    EXPECT_TRUE(app.sim.paused);
     EXPECT_EQ(frames, 38); // the collision at t = 0.625 s falls in frame 38 (0.617 .. 0.633 s)
-    ASSERT_FALSE(app.lastLog.empty());
-    EXPECT_NEAR(app.lastLog.front().time, 0.625, 1e-9);
+    ASSERT_FALSE(app.sim.run.lastLog.empty());
+    EXPECT_NEAR(app.sim.run.lastLog.front().time, 0.625, 1e-9);
 }
 
 // A busy scene (gravity, bounciness < 1, many blocks) so that the replay has work to do.
 App busyScene() {
     App app;
     EXPECT_TRUE(loadScene(app, resolveScenePath("bouncing_squares", SANDBOX_SCENES_DIR)))
-        << app.error;
-    app.world.settings.bounciness = 0.8;
+        << app.ui.messages.error;
+    app.sim.world().settings.bounciness = 0.8;
     return app;
 }
 
 TEST(Timeline, ScrubAndReplayEqualsTheOriginalRun) {
     for (const Method method : {Method::Perfect, Method::MoveAndCorrect, Method::TurnBased}) {
         App app = busyScene();
-        app.world.settings.method = method;
+        app.sim.world().settings.method = method;
         std::vector<std::uint64_t> original;
-        original.push_back(stateHash(app.world));
+        original.push_back(stateHash(app.sim.world()));
         for (int i = 0; i < 300; ++i) {
             stepSimulation(app);
-            original.push_back(stateHash(app.world));
+            original.push_back(stateHash(app.sim.world()));
         }
         // Every recorded frame rebuilds bit for bit.
         for (std::uint64_t f = 0; f <= 300; f += 7) {
             World w;
-            ASSERT_TRUE(app.history.stateAt(f, w)) << f;
+            ASSERT_TRUE(app.sim.history.stateAt(f, w)) << f;
             EXPECT_EQ(stateHash(w), original[f]) << methodName(method) << " frame " << f;
         }
         // Scrub back to frame 123 and step forward again: the same states as the first time.
         ASSERT_TRUE(scrubTo(app, 123));
-        EXPECT_TRUE(isReplaying(app));
-        EXPECT_EQ(stateHash(app.world), original[123]);
+        EXPECT_TRUE(app.sim.isReplaying());
+        EXPECT_EQ(stateHash(app.sim.world()), original[123]);
         for (int f = 124; f <= 300; ++f) {
             stepSimulation(app);
-            ASSERT_EQ(stateHash(app.world), original[static_cast<std::size_t>(f)])
+            ASSERT_EQ(stateHash(app.sim.world()), original[static_cast<std::size_t>(f)])
                 << methodName(method) << " replayed frame " << f;
         }
-        EXPECT_FALSE(isReplaying(app));
+        EXPECT_FALSE(app.sim.isReplaying());
     }
 }
 
@@ -147,55 +147,55 @@ TEST(Timeline, ScrubAndReplayEqualsTheOriginalRun) {
 // recording (timeline, plots) stays across a jump.
 TEST(Run, ResetAndScrubStartAFreshRun) {
     App app = lectureExample();
-    app.show.sideBySide = true;
+    app.view.show.sideBySide = true;
     for (int i = 0; i < 60; ++i) stepSimulation(app);
-    ASSERT_GT(app.totals.collisions, 0);
-    ASSERT_EQ(app.totals.steps, 60);
-    ASSERT_TRUE(app.methods.running);
-    ASSERT_TRUE(app.poi.valid);
-    ASSERT_GT(app.trails.length(), 0);
+    ASSERT_GT(app.sim.run.totals.collisions, 0);
+    ASSERT_EQ(app.sim.run.totals.steps, 60);
+    ASSERT_TRUE(app.sim.run.methods.running);
+    ASSERT_TRUE(app.sim.run.poi.valid);
+    ASSERT_GT(app.sim.run.trails.length(), 0);
     const std::uint64_t frame20 = [&] {
         World w;
-        EXPECT_TRUE(app.history.stateAt(20, w));
+        EXPECT_TRUE(app.sim.history.stateAt(20, w));
         return stateHash(w);
     }();
 
     ASSERT_TRUE(scrubTo(app, 20));
-    EXPECT_EQ(stateHash(app.world), frame20);
-    EXPECT_EQ(app.totals.steps, 0);
-    EXPECT_EQ(app.totals.collisions, 0);
-    EXPECT_FALSE(app.methods.running);
-    EXPECT_FALSE(app.poi.valid);
-    EXPECT_EQ(app.trails.length(), 0);
-    EXPECT_TRUE(app.lastLog.empty());
-    EXPECT_EQ(app.stats.kineticEnergy, kineticEnergy(app.world));
-    EXPECT_FALSE(app.history.empty()); // the recording stays
-    EXPECT_EQ(app.history.lastFrame(), 60u);
+    EXPECT_EQ(stateHash(app.sim.world()), frame20);
+    EXPECT_EQ(app.sim.run.totals.steps, 0);
+    EXPECT_EQ(app.sim.run.totals.collisions, 0);
+    EXPECT_FALSE(app.sim.run.methods.running);
+    EXPECT_FALSE(app.sim.run.poi.valid);
+    EXPECT_EQ(app.sim.run.trails.length(), 0);
+    EXPECT_TRUE(app.sim.run.lastLog.empty());
+    EXPECT_EQ(app.sim.run.stats.kineticEnergy, kineticEnergy(app.sim.world()));
+    EXPECT_FALSE(app.sim.history.empty()); // the recording stays
+    EXPECT_EQ(app.sim.history.lastFrame(), 60u);
 
     for (int i = 0; i < 5; ++i) stepSimulation(app);
-    EXPECT_EQ(app.totals.steps, 5);
+    EXPECT_EQ(app.sim.run.totals.steps, 5);
     resetScene(app);
-    EXPECT_EQ(app.world.frame, 0u);
-    EXPECT_EQ(app.totals.steps, 0);
-    EXPECT_TRUE(app.history.empty());
-    EXPECT_EQ(stateHash(app.world), stateHash(makeWorld(app.scene)));
+    EXPECT_EQ(app.sim.world().frame, 0u);
+    EXPECT_EQ(app.sim.run.totals.steps, 0);
+    EXPECT_TRUE(app.sim.history.empty());
+    EXPECT_EQ(stateHash(app.sim.world()), stateHash(makeWorld(app.sim.scene)));
 }
 
 TEST(Timeline, EditsBetweenStepsAreKeyframedSoReplayStaysExact) {
     App app = busyScene();
-    std::vector<std::uint64_t> original{stateHash(app.world)};
+    std::vector<std::uint64_t> original{stateHash(app.sim.world())};
     for (int i = 1; i <= 100; ++i) {
         stepSimulation(app);
         // Edits while paused at frame i: the timeline keeps the edited state as frame i.
-        if (i == 40) app.world.settings.bounciness = 0.3;           // a slider
-        if (i == 55) app.world.blocks[0].velocity = Vec2{3.0, 7.0}; // a fling
-        if (i == 70) app.world.blocks[1].mass = 5.0;                // the mass slider
-        original.push_back(stateHash(app.world));
+        if (i == 40) app.sim.world().settings.bounciness = 0.3;           // a slider
+        if (i == 55) app.sim.world().blocks[0].velocity = Vec2{3.0, 7.0}; // a fling
+        if (i == 70) app.sim.world().blocks[1].mass = 5.0;                // the mass slider
+        original.push_back(stateHash(app.sim.world()));
     }
     stepSimulation(app);
     for (std::uint64_t f = 0; f <= 100; ++f) {
         World w;
-        ASSERT_TRUE(app.history.stateAt(f, w));
+        ASSERT_TRUE(app.sim.history.stateAt(f, w));
         EXPECT_EQ(stateHash(w), original[f]) << "frame " << f;
     }
 }
@@ -360,25 +360,26 @@ TEST(PointOfImpact, AForcedBlockMovesWithItsFrameVelocity) {
 TEST(PointOfImpact, LectureExampleRecordsThePoiOfTheCollision) {
     App app = lectureExample();
     for (int i = 0; i < 45; ++i) stepSimulation(app);
-    ASSERT_TRUE(app.poi.valid);
-    EXPECT_EQ(app.poi.block, 0);
-    EXPECT_EQ(app.poi.other, 1);
-    EXPECT_NEAR(app.poi.frameStart + app.poi.t * app.poi.dt, 0.625, 1e-9);
-    EXPECT_NEAR(app.poi.ghost.x, 7.75, 1e-9); // its right face at 8.25 meets m2's left face
+    ASSERT_TRUE(app.sim.run.poi.valid);
+    EXPECT_EQ(app.sim.run.poi.block, 0);
+    EXPECT_EQ(app.sim.run.poi.other, 1);
+    EXPECT_NEAR(app.sim.run.poi.frameStart + app.sim.run.poi.t * app.sim.run.poi.dt, 0.625, 1e-9);
+    EXPECT_NEAR(app.sim.run.poi.ghost.x, 7.75, 1e-9); // its right face at 8.25 meets m2's left face
 }
 
 TEST(SideBySide, ThreeMethodsFromOneStart) {
     App app = busyScene();
-    app.show.sideBySide = true;
+    app.view.show.sideBySide = true;
     for (int i = 0; i < 60; ++i) stepSimulation(app);
-    ASSERT_TRUE(app.methods.running);
+    ASSERT_TRUE(app.sim.run.methods.running);
     // The perfect run is the live run when the live method is perfect.
-    EXPECT_EQ(stateHash(app.methods.run(Method::Perfect).world), stateHash(app.world));
-    EXPECT_DOUBLE_EQ(app.methods.divergence(Method::Perfect), 0.0);
-    EXPECT_EQ(app.methods.run(Method::TurnBased).world.settings.method, Method::TurnBased);
-    app.show.sideBySide = false;
+    EXPECT_EQ(stateHash(app.sim.run.methods.run(Method::Perfect).world),
+              stateHash(app.sim.world()));
+    EXPECT_DOUBLE_EQ(app.sim.run.methods.divergence(Method::Perfect), 0.0);
+    EXPECT_EQ(app.sim.run.methods.run(Method::TurnBased).world.settings.method, Method::TurnBased);
+    app.view.show.sideBySide = false;
     stepSimulation(app);
-    EXPECT_FALSE(app.methods.running);
+    EXPECT_FALSE(app.sim.run.methods.running);
 }
 
 // The cost overlay's measurement: a copy of the world is stepped under each method, the world
@@ -386,18 +387,18 @@ TEST(SideBySide, ThreeMethodsFromOneStart) {
 // asserted: no test reads a clock.)
 TEST(CostMeasurement, MeasuresACopyUnderEachMethod) {
     App app = lectureExample();
-    const std::uint64_t before = stateHash(app.world);
+    const std::uint64_t before = stateHash(app.sim.world());
     CostMeasurement cost;
-    EXPECT_FALSE(cost.measured(app.scenePath));
+    EXPECT_FALSE(cost.measured(app.sim.scenePath));
     EXPECT_LT(cost.msPerStep(Method::Perfect), 0.0); // none yet
-    cost.measure(app.world, app.scenePath, 3);
-    EXPECT_TRUE(cost.measured(app.scenePath));
+    cost.measure(app.sim.world(), app.sim.scenePath, 3);
+    EXPECT_TRUE(cost.measured(app.sim.scenePath));
     EXPECT_FALSE(cost.measured("other.json"));
     for (const Method m : {Method::Perfect, Method::MoveAndCorrect, Method::TurnBased}) {
         EXPECT_GE(cost.msPerStep(m), 0.0) << methodName(m);
     }
-    EXPECT_EQ(stateHash(app.world), before);
-    EXPECT_EQ(app.world.frame, 0u);
+    EXPECT_EQ(stateHash(app.sim.world()), before);
+    EXPECT_EQ(app.sim.world().frame, 0u);
 }
 
 TradeoffRow row(const char* engine, const char* scene, double cost, double error) {

@@ -1,8 +1,8 @@
 // The Physics section's logic (no GL): the keyboard thrust (key routing with thrust on and off,
 // the force only while held, a = F/m on one frame), issue 16's settings under R, Shift+R, save
 // and the timeline, and a lesson step that turns the thrust on.
+#include "app.h"
 #include "app_log.h"
-#include "app_state.h"
 #include "input_map.h"
 #include "lesson_session.h"
 #include "save_naming.h"
@@ -46,7 +46,7 @@ Scene twoShips() {
 App shipsApp() {
     App app;
     setScene(app, twoShips(), "ships.json");
-    app.paused = false;
+    app.sim.paused = false;
     return app;
 }
 
@@ -113,87 +113,87 @@ TEST(ThrustKeys, HeldArrowsGiveAUnitDirection) {
 // adds a·dt to the velocity: exact up to the rounding of F/m·dt (one ulp of the result).
 TEST(Thrust, TheSameForceAcceleratesTheHeavyBlockSlowlyAndTheLightOneFast) {
     App app = shipsApp();
-    const double dt = app.world.settings.dt;
-    app.thrust.on = true;
-    app.thrust.force = 2.0;
-    app.thrust.direction = {1.0, 0.0};
-    app.selected = 0; // big, 4 kg
+    const double dt = app.sim.world().settings.dt;
+    app.sim.thrust.on = true;
+    app.sim.thrust.force = 2.0;
+    app.sim.thrust.direction = {1.0, 0.0};
+    app.sim.selected = 0; // big, 4 kg
     stepSimulation(app);
-    EXPECT_NEAR(app.world.blocks[0].velocity.x, 2.0 / 4.0 * dt, 1e-17); // 0.5 m/s^2
-    EXPECT_EQ(app.world.blocks[0].velocity.y, 0.0);
-    EXPECT_EQ(app.world.blocks[1].velocity, Vec2{}); // not selected: not pushed
-    EXPECT_EQ(app.world.blocks[0].force, Vec2{});    // the thrust is never the block's own
-    app.selected = 1;                                // small, 1 kg
-    const Vec2 bigBefore = app.world.blocks[0].velocity;
+    EXPECT_NEAR(app.sim.world().blocks[0].velocity.x, 2.0 / 4.0 * dt, 1e-17); // 0.5 m/s^2
+    EXPECT_EQ(app.sim.world().blocks[0].velocity.y, 0.0);
+    EXPECT_EQ(app.sim.world().blocks[1].velocity, Vec2{}); // not selected: not pushed
+    EXPECT_EQ(app.sim.world().blocks[0].force, Vec2{});    // the thrust is never the block's own
+    app.sim.selected = 1;                                  // small, 1 kg
+    const Vec2 bigBefore = app.sim.world().blocks[0].velocity;
     stepSimulation(app);
-    EXPECT_NEAR(app.world.blocks[1].velocity.x, 2.0 / 1.0 * dt, 1e-16); // 2 m/s^2: four times
-    EXPECT_EQ(app.world.blocks[0].velocity, bigBefore); // released: no force, the speed stays
+    EXPECT_NEAR(app.sim.world().blocks[1].velocity.x, 2.0 / 1.0 * dt, 1e-16); // 2 m/s^2: four times
+    EXPECT_EQ(app.sim.world().blocks[0].velocity, bigBefore); // released: no force, the speed stays
 }
 
 TEST(Thrust, OnlyWhileHeldOnlyWhenOnAndOnlyOnADynamicBlock) {
     App app = shipsApp();
-    app.thrust.force = 5.0;
-    app.selected = 1;
-    app.thrust.direction = {0.0, 1.0}; // held, but thrust is off
-    EXPECT_EQ(thrustedBlock(app), -1);
+    app.sim.thrust.force = 5.0;
+    app.sim.selected = 1;
+    app.sim.thrust.direction = {0.0, 1.0}; // held, but thrust is off
+    EXPECT_EQ(app.sim.thrustedBlock(), -1);
     stepSimulation(app);
-    EXPECT_EQ(app.world.blocks[1].velocity, Vec2{});
-    app.thrust.on = true;
-    app.thrust.direction = {}; // on, nothing held
-    EXPECT_EQ(thrustedBlock(app), -1);
+    EXPECT_EQ(app.sim.world().blocks[1].velocity, Vec2{});
+    app.sim.thrust.on = true;
+    app.sim.thrust.direction = {}; // on, nothing held
+    EXPECT_EQ(app.sim.thrustedBlock(), -1);
     stepSimulation(app);
-    EXPECT_EQ(app.world.blocks[1].velocity, Vec2{});
-    app.selected = 2; // the static post
-    app.thrust.direction = {1.0, 0.0};
-    EXPECT_EQ(thrustedBlock(app), -1);
-    EXPECT_EQ(thrustForce(app), Vec2{});
-    app.selected = -1;
-    EXPECT_EQ(thrustedBlock(app), -1);
-    app.selected = 1;
-    EXPECT_EQ(thrustedBlock(app), 1);
-    EXPECT_EQ(thrustForce(app), (Vec2{5.0, 0.0}));
-    EXPECT_EQ(appliedForce(app, 1), (Vec2{5.0, 0.0})); // what the force arrow shows
-    EXPECT_EQ(appliedForce(app, 0), Vec2{});
+    EXPECT_EQ(app.sim.world().blocks[1].velocity, Vec2{});
+    app.sim.selected = 2; // the static post
+    app.sim.thrust.direction = {1.0, 0.0};
+    EXPECT_EQ(app.sim.thrustedBlock(), -1);
+    EXPECT_EQ(app.sim.thrustForce(), Vec2{});
+    app.sim.selected = -1;
+    EXPECT_EQ(app.sim.thrustedBlock(), -1);
+    app.sim.selected = 1;
+    EXPECT_EQ(app.sim.thrustedBlock(), 1);
+    EXPECT_EQ(app.sim.thrustForce(), (Vec2{5.0, 0.0}));
+    EXPECT_EQ(app.sim.appliedForce(1), (Vec2{5.0, 0.0})); // what the force arrow shows
+    EXPECT_EQ(app.sim.appliedForce(0), Vec2{});
 }
 
 TEST(Thrust, IsAddedToTheBlocksOwnForceWhileHeld) {
     App app = shipsApp();
-    app.world.blocks[0].force = {4.0, 0.0}; // its own thruster, 4 N
-    app.selected = 0;
-    app.thrust.on = true;
-    app.thrust.force = 8.0;
-    app.thrust.direction = {1.0, 0.0};
-    EXPECT_EQ(appliedForce(app, 0), (Vec2{12.0, 0.0}));
-    const double dt = app.world.settings.dt;
+    app.sim.world().blocks[0].force = {4.0, 0.0}; // its own thruster, 4 N
+    app.sim.selected = 0;
+    app.sim.thrust.on = true;
+    app.sim.thrust.force = 8.0;
+    app.sim.thrust.direction = {1.0, 0.0};
+    EXPECT_EQ(app.sim.appliedForce(0), (Vec2{12.0, 0.0}));
+    const double dt = app.sim.world().settings.dt;
     stepSimulation(app);
-    EXPECT_NEAR(app.world.blocks[0].velocity.x, 12.0 / 4.0 * dt, 1e-16);
-    EXPECT_EQ(app.world.blocks[0].force, (Vec2{4.0, 0.0})); // its own force is back
-    app.thrust.direction = {};
-    const double v1 = app.world.blocks[0].velocity.x;
+    EXPECT_NEAR(app.sim.world().blocks[0].velocity.x, 12.0 / 4.0 * dt, 1e-16);
+    EXPECT_EQ(app.sim.world().blocks[0].force, (Vec2{4.0, 0.0})); // its own force is back
+    app.sim.thrust.direction = {};
+    const double v1 = app.sim.world().blocks[0].velocity.x;
     stepSimulation(app);
-    EXPECT_NEAR(app.world.blocks[0].velocity.x - v1, 4.0 / 4.0 * dt, 1e-16); // its own only
+    EXPECT_NEAR(app.sim.world().blocks[0].velocity.x - v1, 4.0 / 4.0 * dt, 1e-16); // its own only
 }
 
 // The timeline rebuilds frames by stepping keyframes: the thrust frames (an input the world does
 // not hold) and a drag or force changed between frames must come back bit for bit.
 TEST(Thrust, TheTimelineReplaysThrustAndEditedSettingsBitForBit) {
     App app = shipsApp();
-    app.selected = 1;
-    app.thrust.on = true;
-    app.thrust.force = 3.0;
-    std::vector<std::uint64_t> hashes{stateHash(app.world)};
+    app.sim.selected = 1;
+    app.sim.thrust.on = true;
+    app.sim.thrust.force = 3.0;
+    std::vector<std::uint64_t> hashes{stateHash(app.sim.world())};
     for (int f = 0; f < 30; ++f) {
-        app.thrust.direction = (f % 10) < 4 ? Vec2{1.0, 0.0} : Vec2{}; // held 4 of each 10
-        if (f == 13) app.world.settings.drag = 2.0; // edits without noteEdit (as a key does)
-        if (f == 17) app.world.settings.resolve = Resolve::Reflect;
-        if (f == 21) app.world.blocks[0].force = {0.0, 1.0};
-        if (f == 25) app.world.settings.integrator = Integrator::Exact;
+        app.sim.thrust.direction = (f % 10) < 4 ? Vec2{1.0, 0.0} : Vec2{}; // held 4 of each 10
+        if (f == 13) app.sim.world().settings.drag = 2.0; // edits without noteEdit (as a key does)
+        if (f == 17) app.sim.world().settings.resolve = Resolve::Reflect;
+        if (f == 21) app.sim.world().blocks[0].force = {0.0, 1.0};
+        if (f == 25) app.sim.world().settings.integrator = Integrator::Exact;
         stepSimulation(app);
-        hashes.push_back(stateHash(app.world));
+        hashes.push_back(stateHash(app.sim.world()));
     }
     for (std::uint64_t f = 0; f < hashes.size(); ++f) {
         World w;
-        ASSERT_TRUE(app.history.stateAt(f, w)) << f;
+        ASSERT_TRUE(app.sim.history.stateAt(f, w)) << f;
         EXPECT_EQ(stateHash(w), hashes[f]) << "frame " << f;
         for (const Block& b : w.blocks) EXPECT_NE(b.force, (Vec2{3.0, 0.0})) << f; // no thrust
     }
@@ -204,31 +204,31 @@ TEST(PhysicsSettings, RKeepsThemAndShiftRRestoresTheFiles) {
     scene.settings.drag = 0.5;
     App app;
     setScene(app, scene, "ships.json");
-    WorldSettings& s = app.world.settings;
+    WorldSettings& s = app.sim.world().settings;
     s.resolve = Resolve::Reflect;
     s.integrator = Integrator::ExplicitEuler;
     s.set(Mistake::Discrete, true);
     s.set(Mistake::NoApproachTest, true);
     s.drag = 3.0;
-    app.thrust.on = true;
-    app.thrust.force = 7.0;
-    app.world.blocks[1].force = {1.0, 2.0}; // a block's force is the block's: R puts it back
-    resetScene(app);                        // R
-    EXPECT_EQ(app.world.settings.resolve, Resolve::Reflect);
-    EXPECT_EQ(app.world.settings.integrator, Integrator::ExplicitEuler);
-    EXPECT_TRUE(app.world.settings.has(Mistake::Discrete));
-    EXPECT_TRUE(app.world.settings.has(Mistake::NoApproachTest));
-    EXPECT_FALSE(app.world.settings.has(Mistake::MoveBack));
-    EXPECT_EQ(app.world.settings.drag, 3.0);
-    EXPECT_EQ(app.world.blocks[1].force, Vec2{});
-    EXPECT_TRUE(app.thrust.on);
+    app.sim.thrust.on = true;
+    app.sim.thrust.force = 7.0;
+    app.sim.world().blocks[1].force = {1.0, 2.0}; // a block's force is the block's: R puts it back
+    resetScene(app);                              // R
+    EXPECT_EQ(app.sim.world().settings.resolve, Resolve::Reflect);
+    EXPECT_EQ(app.sim.world().settings.integrator, Integrator::ExplicitEuler);
+    EXPECT_TRUE(app.sim.world().settings.has(Mistake::Discrete));
+    EXPECT_TRUE(app.sim.world().settings.has(Mistake::NoApproachTest));
+    EXPECT_FALSE(app.sim.world().settings.has(Mistake::MoveBack));
+    EXPECT_EQ(app.sim.world().settings.drag, 3.0);
+    EXPECT_EQ(app.sim.world().blocks[1].force, Vec2{});
+    EXPECT_TRUE(app.sim.thrust.on);
     resetToFile(app); // Shift+R
-    EXPECT_EQ(app.world.settings.resolve, Resolve::Momentum);
-    EXPECT_EQ(app.world.settings.integrator, Integrator::SemiImplicitEuler);
-    EXPECT_EQ(app.world.settings.mistakes, 0);
-    EXPECT_EQ(app.world.settings.drag, 0.5);
-    EXPECT_TRUE(app.thrust.on); // the app's, not the file's
-    EXPECT_EQ(app.thrust.force, 7.0);
+    EXPECT_EQ(app.sim.world().settings.resolve, Resolve::Momentum);
+    EXPECT_EQ(app.sim.world().settings.integrator, Integrator::SemiImplicitEuler);
+    EXPECT_EQ(app.sim.world().settings.mistakes, 0);
+    EXPECT_EQ(app.sim.world().settings.drag, 0.5);
+    EXPECT_TRUE(app.sim.thrust.on); // the app's, not the file's
+    EXPECT_EQ(app.sim.thrust.force, 7.0);
 }
 
 TEST(PhysicsSettings, ChangesAreUnsavedAndTheSavedNoteNamesThem) {
@@ -256,9 +256,9 @@ TEST(PhysicsSettings, ChangesAreUnsavedAndTheSavedNoteNamesThem) {
               "and move-back, drag 1.2 kg/m³.");
     App app;
     setScene(app, twoShips(), "ships.json");
-    EXPECT_FALSE(unsavedEdits(app));
-    app.world.settings.drag = 2.0;
-    EXPECT_TRUE(unsavedEdits(app)); // quitting asks
+    EXPECT_FALSE(app.sim.unsavedEdits());
+    app.sim.world().settings.drag = 2.0;
+    EXPECT_TRUE(app.sim.unsavedEdits()); // quitting asks
 }
 
 TEST(PhysicsSettings, CtrlSSavesThemAndTheBlocksForceButNeverTheHeldThrust) {
@@ -266,22 +266,22 @@ TEST(PhysicsSettings, CtrlSSavesThemAndTheBlocksForceButNeverTheHeldThrust) {
     const fs::path file = fs::temp_directory_path() /
                           ("sandbox_physics_save_" + std::to_string(::getpid()) + ".json");
     App app = shipsApp();
-    app.world.settings.resolve = Resolve::Reflect;
-    app.world.settings.integrator = Integrator::Exact;
-    app.world.settings.set(Mistake::MoveBack, true);
-    app.world.settings.drag = 0.25;
-    app.world.blocks[0].force = {1.5, -0.5};
-    app.selected = 1;
-    app.thrust.on = true;
-    app.thrust.direction = {0.0, 1.0};
+    app.sim.world().settings.resolve = Resolve::Reflect;
+    app.sim.world().settings.integrator = Integrator::Exact;
+    app.sim.world().settings.set(Mistake::MoveBack, true);
+    app.sim.world().settings.drag = 0.25;
+    app.sim.world().blocks[0].force = {1.5, -0.5};
+    app.sim.selected = 1;
+    app.sim.thrust.on = true;
+    app.sim.thrust.direction = {0.0, 1.0};
     stepSimulation(app); // a frame with the thrust held
-    ASSERT_TRUE(saveCurrentScene(app, file.string())) << app.error;
+    ASSERT_TRUE(saveCurrentScene(app, file.string())) << app.ui.messages.error;
     const SceneResult back = loadSceneFile(file.string());
     fs::remove(file);
     ASSERT_TRUE(back.scene) << back.error.text();
     EXPECT_EQ(back.scene->settings.resolve, Resolve::Reflect);
     EXPECT_EQ(back.scene->settings.integrator, Integrator::Exact);
-    EXPECT_EQ(back.scene->settings.mistakes, app.world.settings.mistakes);
+    EXPECT_EQ(back.scene->settings.mistakes, app.sim.world().settings.mistakes);
     EXPECT_EQ(back.scene->settings.drag, 0.25);
     EXPECT_EQ(back.scene->blocks[0].force, (Vec2{1.5, -0.5}));
     EXPECT_EQ(back.scene->blocks[1].force, Vec2{});   // the thrust was held, not set
@@ -290,26 +290,28 @@ TEST(PhysicsSettings, CtrlSSavesThemAndTheBlocksForceButNeverTheHeldThrust) {
 
 TEST(PhysicsSettings, TheLessonsPlatformerTurnsThrustOnAndTheArrowsDoNotStep) {
     App app;
-    app.scenesDir = SANDBOX_SCENES_DIR;
-    ASSERT_TRUE(openLesson(app, std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json")) << app.error;
+    app.shipped.scenesDir = SANDBOX_SCENES_DIR;
+    ASSERT_TRUE(openLesson(app, std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json"))
+        << app.ui.messages.error;
     const std::vector<LessonStep>& steps = app.lesson.lesson->steps;
     std::size_t platformer = steps.size();
     for (std::size_t i = 0; i < steps.size(); ++i)
         if (steps[i].title.find("platformer") != std::string::npos) platformer = i;
     ASSERT_LT(platformer + 1, steps.size());
     ASSERT_TRUE(enterStep(app, platformer));
-    EXPECT_TRUE(app.thrust.on);
-    EXPECT_EQ(app.thrust.force, 20.0);
-    ASSERT_GE(app.selected, 0);
-    EXPECT_EQ(app.labels[static_cast<std::size_t>(app.selected)].name, "player");
-    EXPECT_EQ(std::filesystem::path(app.scenePath).filename(), "platformer.json");
+    EXPECT_TRUE(app.sim.thrust.on);
+    EXPECT_EQ(app.sim.thrust.force, 20.0);
+    ASSERT_GE(app.sim.selected, 0);
+    EXPECT_EQ(app.sim.labels[static_cast<std::size_t>(app.sim.selected)].name, "player");
+    EXPECT_EQ(std::filesystem::path(app.sim.scenePath).filename(), "platformer.json");
     // Right pushes the player instead of stepping the lesson; PageDown steps.
-    const Action right = actionForKey(keys::kRight, false, false, app.thrust.on);
+    const Action right = actionForKey(keys::kRight, false, false, app.sim.thrust.on);
     EXPECT_FALSE(applyLessonAction(app, right));
     EXPECT_EQ(app.lesson.current, platformer);
-    EXPECT_TRUE(applyLessonAction(app, actionForKey(keys::kPageDown, false, false, app.thrust.on)));
+    EXPECT_TRUE(
+        applyLessonAction(app, actionForKey(keys::kPageDown, false, false, app.sim.thrust.on)));
     EXPECT_EQ(app.lesson.current, platformer + 1);
-    EXPECT_FALSE(app.thrust.on); // the next step does not use it
+    EXPECT_FALSE(app.sim.thrust.on); // the next step does not use it
 }
 
 // What the scene renderer draws for forces: a block's own force with the arrows overlay, the
@@ -351,18 +353,18 @@ TEST(ForceArrows, OwnForceWithTheArrowsAndTheHeldThrustAlways) {
 // --verbose logs the Physics settings and the held thrust (the window test reads these lines).
 TEST(PhysicsLog, SettingsAndTheHeldThrust) {
     App app = shipsApp();
-    const LoggedState before = snapshotForLog(app);
-    app.world.settings.resolve = Resolve::Reflect;
-    app.world.settings.drag = 1.5;
-    app.thrust.on = true;
-    app.thrust.force = 20.0;
-    app.selected = 1;
-    app.thrust.direction = {-1.0, 0.0};
-    const LoggedState held = snapshotForLog(app);
+    const LoggedState before = snapshotForLog(app.sim, app.view, app.lesson);
+    app.sim.world().settings.resolve = Resolve::Reflect;
+    app.sim.world().settings.drag = 1.5;
+    app.sim.thrust.on = true;
+    app.sim.thrust.force = 20.0;
+    app.sim.selected = 1;
+    app.sim.thrust.direction = {-1.0, 0.0};
+    const LoggedState held = snapshotForLog(app.sim, app.view, app.lesson);
     const std::vector<std::string> lines = describeChanges(before, held);
     for (const char* line : {"resolve: reflect", "drag: 1.5", "thrust: on", "thrust held: -20,0 N"})
         EXPECT_NE(std::find(lines.begin(), lines.end(), line), lines.end()) << line;
-    app.thrust.direction = {};
-    EXPECT_EQ(describeChanges(held, snapshotForLog(app)),
+    app.sim.thrust.direction = {};
+    EXPECT_EQ(describeChanges(held, snapshotForLog(app.sim, app.view, app.lesson)),
               std::vector<std::string>{"thrust released"});
 }

@@ -1,6 +1,6 @@
 // Classroom presentation logic without GL: the docked layout (no window over the world, none off
 // screen), numbers as students read them, block names with the current mass, save naming.
-#include "app_state.h"
+#include "app.h"
 #include "classroom.h"
 #include "dock_layout.h"
 #include "inspector_format.h"

@@ -3,7 +3,7 @@
 // differences; semantic checks look for a block's colour where the engine says the block is and
 // for the controls panel. A failing comparison leaves NAME.png (actual) and NAME.diff.png in
 // the build directory's screenshot-output/.
-#include "app_state.h"
+#include "app.h"
 #include "image_compare.h"
 #include "palette.h"
 #include "scene.h"
@@ -126,9 +126,9 @@ INSTANTIATE_TEST_SUITE_P(Shipped, ScreenshotGolden, ::testing::ValuesIn(loadCase
 App simulate(const std::string& sceneName, int frames, int width, int height, bool ui) {
     App app;
     const std::string path = resolveScenePath(sceneName, SANDBOX_SCENES_DIR);
-    EXPECT_TRUE(loadScene(app, path)) << app.error;
+    EXPECT_TRUE(loadScene(app, path)) << app.ui.messages.error;
     for (int i = 0; i < frames; ++i) stepSimulation(app);
-    app.uiVisible = ui;
+    app.view.uiVisible = ui;
     updateCamera(app, width, height);
     return app;
 }
@@ -136,14 +136,14 @@ App simulate(const std::string& sceneName, int frames, int width, int height, bo
 // The share of sample points inside block `i` (its inner half, on a 7 x 7 grid) whose colour is
 // within `tolerance` of the block's colour.
 double colourMatch(const Image& image, const App& app, int i, int tolerance) {
-    const Block& b = app.world.blocks[static_cast<std::size_t>(i)];
-    const Color want = blockDisplayColor(app, i);
+    const Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
+    const Color want = app.sim.blockDisplayColor(i);
     int hits = 0, samples = 0;
     for (int sy = 0; sy < 7; ++sy) {
         for (int sx = 0; sx < 7; ++sx) {
             const Vec2 p = b.position + Vec2{(sx / 6.0 - 0.5) * 0.5 * b.size.x,
                                              (sy / 6.0 - 0.5) * 0.5 * b.size.y};
-            const Vec2 s = app.camera.worldToScreen(p);
+            const Vec2 s = app.view.camera.worldToScreen(p);
             const int x = static_cast<int>(s.x), y = static_cast<int>(s.y);
             if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;
             ++samples;
@@ -164,12 +164,12 @@ void expectBlocksWhereTheEngineSays(const std::string& scene, int frames) {
     ASSERT_FALSE(image.empty());
     const App app = simulate(scene, frames, image.width, image.height, false);
     int checked = 0;
-    for (int i = 0; i < static_cast<int>(app.world.blocks.size()); ++i) {
-        const Block& b = app.world.blocks[static_cast<std::size_t>(i)];
-        if (!b.isDynamic() || app.camera.metresToPixels(std::min(b.size.x, b.size.y)) < 12)
+    for (int i = 0; i < static_cast<int>(app.sim.world().blocks.size()); ++i) {
+        const Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
+        if (!b.isDynamic() || app.view.camera.metresToPixels(std::min(b.size.x, b.size.y)) < 12)
             continue;
         EXPECT_GE(colourMatch(image, app, i, 40), 0.6)
-            << scene << ": block " << blockDisplayName(app, i) << " at (" << b.position.x << ", "
+            << scene << ": block " << app.sim.blockDisplayName(i) << " at (" << b.position.x << ", "
             << b.position.y << ") not drawn there; see " << png;
         ++checked;
     }
@@ -194,7 +194,7 @@ TEST(ScreenshotSemantic, ControlsPanelIsPresentAndHiddenByShowNone) {
     const Image withUi = render("lecture_example_1", outputDir() / "semantic_panel.png");
     ASSERT_FALSE(withUi.empty());
     const App app = simulate("lecture_example_1", 0, withUi.width, withUi.height, true);
-    const int right = static_cast<int>(app.camera.viewport().x) - 20;
+    const int right = static_cast<int>(app.view.camera.viewport().x) - 20;
     EXPECT_TRUE(titleBarAt(withUi, right, 8)) << "no panel title bar at (" << right << ", 8)";
     EXPECT_TRUE(titleBarAt(withUi, right / 2, 4));
     const Image noUi = render("lecture_example_1 --show none", outputDir() / "semantic_noui.png");

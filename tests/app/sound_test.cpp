@@ -1,6 +1,6 @@
 // The collisions' knocks as logic (collision_sound.h): loudness logarithmic in the impulse, pitch
 // by the lighter block's size, walls lower, the rate limit, the waveform and its mixing.
-#include "app_state.h"
+#include "app.h"
 #include "collision_sound.h"
 #include "input_map.h"
 
@@ -153,15 +153,15 @@ TEST(Sound, OffByDefaultOutsideLessonsAndMTogglesAndRemembers) {
     // The app queues knocks only while sound is on: lecture_example_1's one collision at
     // t = 0.625 s, in the 38th frame of 1/60 s.
     App app;
-    ASSERT_TRUE(loadScene(app, SANDBOX_SCENES_DIR "/lecture_example_1.json")) << app.error;
+    ASSERT_TRUE(loadScene(app, SANDBOX_SCENES_DIR "/lecture_example_1.json")) << app.ui.messages.error;
     for (int i = 0; i < 40; ++i) stepSimulation(app);
-    EXPECT_GE(app.totals.collisions, 1);
-    EXPECT_TRUE(app.sound.queue.empty());
-    toggleSound(app.sound, app.lesson.active());
+    EXPECT_GE(app.sim.run.totals.collisions, 1);
+    EXPECT_TRUE(app.sim.sound.queue.empty());
+    toggleSound(app.sim.sound, app.lesson.active());
     resetScene(app);
     for (int i = 0; i < 40; ++i) stepSimulation(app);
-    ASSERT_EQ(app.sound.queue.size(), 1u);
-    EXPECT_NEAR(app.sound.queue[0].time, 0.625, 1e-12); // the frames sum 1/60 s: rounding
+    ASSERT_EQ(app.sim.sound.queue.size(), 1u);
+    EXPECT_NEAR(app.sim.sound.queue[0].time, 0.625, 1e-12); // the frames sum 1/60 s: rounding
 }
 
 } // namespace

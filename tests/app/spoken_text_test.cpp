@@ -1,6 +1,6 @@
 // What a screen reader is told: the collision in the inspector's words, the live region's pace,
 // and the screen's texts as sentences.
-#include "app_state.h"
+#include "app.h"
 #include "spoken_text.h"
 
 #include <gtest/gtest.h>
@@ -10,16 +10,16 @@ namespace {
 // lecture_example_1 up to its one collision (t = 0.625 s, the 38th frame).
 App playedThroughTheCollision() {
     App app;
-    EXPECT_TRUE(loadScene(app, SANDBOX_SCENES_DIR "/lecture_example_1.json")) << app.error;
-    for (int i = 0; i < 40 && app.totals.collisions == 0; ++i) stepSimulation(app);
+    EXPECT_TRUE(loadScene(app, SANDBOX_SCENES_DIR "/lecture_example_1.json")) << app.ui.messages.error;
+    for (int i = 0; i < 40 && app.sim.run.totals.collisions == 0; ++i) stepSimulation(app);
     return app;
 }
 
 TEST(SpokenText, ACollisionInTheInspectorsWords) {
     App app = playedThroughTheCollision();
-    ASSERT_EQ(app.lastLog.size(), 1u);
-    const CollisionRecord& r = app.lastLog[0];
-    EXPECT_EQ(collisionSentence(r, blockDisplayName(app, r.block), blockDisplayName(app, r.other)),
+    ASSERT_EQ(app.sim.run.lastLog.size(), 1u);
+    const CollisionRecord& r = app.sim.run.lastLog[0];
+    EXPECT_EQ(collisionSentence(r, app.sim.blockDisplayName(r.block), app.sim.blockDisplayName(r.other)),
               "m1 hits m2 along x at t = 0.625 s: v1' = -2 m/s, v2' = 4 m/s");
     CollisionRecord wall = r;
     wall.other = kWallLeft;
@@ -29,13 +29,13 @@ TEST(SpokenText, ACollisionInTheInspectorsWords) {
 
 TEST(SpokenText, AtMostOneAnnouncementASecondAndABusySceneSummedUp) {
     App app = playedThroughTheCollision();
-    const auto name = [&app](int i) { return blockDisplayName(app, i); };
+    const auto name = [&app](int i) { return app.sim.blockDisplayName(i); };
     // The app noted its collision as it stepped.
-    EXPECT_EQ(app.announcer.announce(10.0, name),
+    EXPECT_EQ(app.sim.announcer.announce(10.0, name),
               "m1 hits m2 along x at t = 0.625 s: v1' = -2 m/s, v2' = 4 m/s");
-    EXPECT_EQ(app.announcer.announce(10.5, name), ""); // nothing new
+    EXPECT_EQ(app.sim.announcer.announce(10.5, name), ""); // nothing new
     CollisionAnnouncer a;
-    CollisionRecord r = app.lastLog[0];
+    CollisionRecord r = app.sim.run.lastLog[0];
     a.note({r});
     EXPECT_NE(a.announce(0.0, name), "");
     r.time += 0.1;
@@ -59,14 +59,14 @@ TEST(SpokenText, AtMostOneAnnouncementASecondAndABusySceneSummedUp) {
 
 TEST(SpokenText, TheScreenAsSentences) {
     App app;
-    ASSERT_TRUE(loadScene(app, SANDBOX_SCENES_DIR "/lecture_example_1.json")) << app.error;
+    ASSERT_TRUE(loadScene(app, SANDBOX_SCENES_DIR "/lecture_example_1.json")) << app.ui.messages.error;
     SpokenScreen s = spokenScreen(app);
     EXPECT_EQ(s.scene, "Lecture example 1");
-    EXPECT_EQ(s.description, app.scene.description);
+    EXPECT_EQ(s.description, app.sim.scene.description);
     EXPECT_EQ(s.status, "perfect method, t = 0 s, paused, 0 collisions");
     EXPECT_EQ(s.lesson, "");
     app = playedThroughTheCollision();
-    app.paused = false;
+    app.sim.paused = false;
     EXPECT_EQ(spokenScreen(app).status, "perfect method, t = 0.633 s, running, 1 collision");
 }
 

@@ -2,7 +2,7 @@
 // first difference and shows the ghost overlay, the timeline and the inspector; the student's
 // blocks at a frame; a bad file keeps what was open and says where; a new scene closes it; the
 // command line's --compare.
-#include "app_state.h"
+#include "app.h"
 #include "options.h"
 
 #include <gtest/gtest.h>
@@ -41,7 +41,7 @@ std::string writeTurnBasedTrace(const std::string& name, int frames) {
 
 App appOn(const std::string& scene) {
     App app;
-    EXPECT_TRUE(loadScene(app, kScenes + "/" + scene + ".json")) << app.error;
+    EXPECT_TRUE(loadScene(app, kScenes + "/" + scene + ".json")) << app.ui.messages.error;
     return app;
 }
 
@@ -50,41 +50,41 @@ App appOn(const std::string& scene) {
 TEST(StudentTrace, OpensAtTheFirstDifferenceWithTheGhostTimelineAndInspector) {
     const std::string trace = writeTurnBasedTrace("open", 40);
     App app = appOn("point_of_impact"); // the perfect method: the turn-based trace parts at 5
-    ASSERT_TRUE(openTrace(app, trace)) << app.error;
+    ASSERT_TRUE(openTrace(app, trace)) << app.ui.messages.error;
     ASSERT_TRUE(app.studentTrace.open());
     EXPECT_EQ(app.studentTrace.firstDifference(), 5);
-    EXPECT_EQ(app.world.frame, 5u);
-    EXPECT_TRUE(app.paused);
-    EXPECT_TRUE(app.show.ghost);
-    EXPECT_TRUE(app.show.timeline);
-    EXPECT_TRUE(app.show.inspector);
-    EXPECT_NE(app.note.find("different from frame 5"), std::string::npos) << app.note;
+    EXPECT_EQ(app.sim.world().frame, 5u);
+    EXPECT_TRUE(app.sim.paused);
+    EXPECT_TRUE(app.view.show.ghost);
+    EXPECT_TRUE(app.view.show.timeline);
+    EXPECT_TRUE(app.view.show.inspector);
+    EXPECT_NE(app.ui.messages.note.find("different from frame 5"), std::string::npos) << app.ui.messages.note;
     // The diagnosis: the turn-based method.
     ASSERT_FALSE(app.studentTrace.comparison->explaining.empty());
     EXPECT_EQ(variantName(app.studentTrace.comparison->explaining.front().variant.changes),
               "method turn-based");
     // The student's mover at frame 5 stopped at the point of impact (8.75, 3.75); the
     // reference's went on to (10, 5).
-    World ghost = app.world;
+    World ghost = app.sim.world();
     ASSERT_TRUE(app.studentTrace.ghostAt(5, ghost));
     EXPECT_NEAR(ghost.blocks[0].position.x, 8.75, 1e-12); // as printed, 17 digits
     EXPECT_NEAR(ghost.blocks[0].position.y, 3.75, 1e-12);
-    EXPECT_NEAR(app.world.blocks[0].position.x, 10.0, 1e-12);
+    EXPECT_NEAR(app.sim.world().blocks[0].position.x, 10.0, 1e-12);
     EXPECT_FALSE(app.studentTrace.ghostAt(41, ghost)); // beyond the trace
     // Stepping on, then back to the first difference (the timeline has it).
     for (int i = 0; i < 10; ++i) stepSimulation(app);
-    EXPECT_EQ(app.world.frame, 15u);
+    EXPECT_EQ(app.sim.world().frame, 15u);
     ASSERT_TRUE(goToFirstDifference(app));
-    EXPECT_EQ(app.world.frame, 5u);
+    EXPECT_EQ(app.sim.world().frame, 5u);
     std::remove(trace.c_str());
 }
 
 TEST(StudentTrace, TheReferenceIsTheChosenMethodWithoutTheTipsMistakes) {
     const std::string trace = writeTurnBasedTrace("same", 40);
     App app = appOn("mistake_move_back"); // turn-based with move-back
-    ASSERT_TRUE(openTrace(app, trace)) << app.error;
+    ASSERT_TRUE(openTrace(app, trace)) << app.ui.messages.error;
     EXPECT_TRUE(app.studentTrace.comparison->same()); // against turn-based without the mistake
-    EXPECT_EQ(app.world.settings.mistakes, 0);
+    EXPECT_EQ(app.sim.world().settings.mistakes, 0);
     EXPECT_EQ(app.studentTrace.firstDifference(), -1);
     EXPECT_FALSE(goToFirstDifference(app));
     std::remove(trace.c_str());
@@ -98,8 +98,8 @@ TEST(StudentTrace, ABadFileKeepsWhatWasOpenAndSaysWhere) {
         fs::temp_directory_path() / ("sandbox_bad_trace_" + std::to_string(::getpid()) + ".csv");
     std::ofstream(bad) << "t,mover_x,mover_y,mover_vx,mover_vy\n0.1,4.4,abc,14,-14\n";
     EXPECT_FALSE(openTrace(app, bad.string()));
-    EXPECT_NE(app.error.find(":2:9: column 'mover_y': 'abc' is not a number"), std::string::npos)
-        << app.error;
+    EXPECT_NE(app.ui.messages.error.find(":2:9: column 'mover_y': 'abc' is not a number"), std::string::npos)
+        << app.ui.messages.error;
     EXPECT_TRUE(app.studentTrace.open()); // the one before stays
     EXPECT_EQ(app.studentTrace.path, trace);
     // A dropped .csv is a trace, anything else a scene; a new scene closes the trace.

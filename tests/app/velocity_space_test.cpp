@@ -2,7 +2,7 @@
 // without GL: collisions are the reflections the geometry says (checked against the engine's
 // own collisions), the pi count follows from the angle between the reflection lines, and a CSV
 // written reads back to the same numbers bit for bit.
-#include "app_state.h"
+#include "app.h"
 #include "csv_export.h"
 #include "scene_library.h"
 #include "velocity_space.h"
@@ -23,7 +23,8 @@ namespace {
 
 App sceneApp(const char* name) {
     App app;
-    EXPECT_TRUE(loadScene(app, resolveScenePath(name, SANDBOX_SCENES_DIR))) << app.error;
+    EXPECT_TRUE(loadScene(app, resolveScenePath(name, SANDBOX_SCENES_DIR)))
+        << app.ui.messages.error;
     return app;
 }
 
@@ -74,7 +75,7 @@ CsvTable parseCsv(const std::string& text) {
 
 TEST(VelocitySpace, LectureExampleOneCollisionIsTheReflection) {
     App app = sceneApp("lecture_example_1");
-    const VelocitySpacePair& pair = app.telemetry.velocitySpace.pair();
+    const VelocitySpacePair& pair = app.sim.telemetry.velocitySpace.pair();
     ASSERT_TRUE(pair.valid());
     EXPECT_EQ(pair.m1, 1.0);
     EXPECT_EQ(pair.m2, 2.0);
@@ -94,7 +95,7 @@ TEST(VelocitySpace, LectureExampleOneCollisionIsTheReflection) {
     // The path the app records: the start, then the engine's collision, on the same circle
     // and line (C = 1).
     for (int i = 0; i < 60; ++i) stepSimulation(app);
-    const auto& samples = app.telemetry.velocitySpace.samples();
+    const auto& samples = app.sim.telemetry.velocitySpace.samples();
     ASSERT_EQ(samples.size(), 2u);
     EXPECT_EQ(samples[0].t, 0.0);
     EXPECT_NEAR(samples[1].t, 0.625, 1e-12); // the time of impact, not the frame's end
@@ -104,7 +105,7 @@ TEST(VelocitySpace, LectureExampleOneCollisionIsTheReflection) {
 
 TEST(VelocitySpace, HighMassRatioCountsPiFromTheAngle) {
     App app = sceneApp("high_mass_ratio");
-    const VelocitySpacePair& pair = app.telemetry.velocitySpace.pair();
+    const VelocitySpacePair& pair = app.sim.telemetry.velocitySpace.pair();
     ASSERT_TRUE(pair.valid());
     // theta = atan(sqrt(1 / 1e6)); ceil(pi / theta) - 1 = 3141.
     EXPECT_NEAR(reflectionAngle(pair), std::atan(1e-3), 1e-15);
@@ -120,8 +121,8 @@ TEST(VelocitySpace, HighMassRatioCountsPiFromTheAngle) {
     // The engine's 3141 collisions, each one a sample of the path, every one a reflection of
     // the one before: across (sqrt(m1), sqrt(m2)) or the small block's wall flipping x.
     for (int i = 0; i < 960; ++i) stepSimulation(app);
-    ASSERT_EQ(app.totals.collisions, 3141);
-    const auto& s = app.telemetry.velocitySpace.samples();
+    ASSERT_EQ(app.sim.run.totals.collisions, 3141);
+    const auto& s = app.sim.telemetry.velocitySpace.samples();
     ASSERT_EQ(s.size(), 3142u);
     int walls = 0, blocks = 0;
     for (std::size_t k = 1; k < s.size(); ++k) {
@@ -143,18 +144,18 @@ TEST(VelocitySpace, HighMassRatioCountsPiFromTheAngle) {
 
 TEST(VelocitySpace, OtherScenesSayWhy) {
     App app = sceneApp("newtons_cradle");
-    EXPECT_FALSE(app.telemetry.velocitySpace.pair().valid());
-    EXPECT_NE(velocitySpacePair(app.world).why.find("exactly two dynamic blocks"),
+    EXPECT_FALSE(app.sim.telemetry.velocitySpace.pair().valid());
+    EXPECT_NE(velocitySpacePair(app.sim.world()).why.find("exactly two dynamic blocks"),
               std::string::npos);
-    EXPECT_TRUE(app.telemetry.velocitySpace.samples().empty());
+    EXPECT_TRUE(app.sim.telemetry.velocitySpace.samples().empty());
     // Deleting down to two blocks starts a path.
-    while (app.world.blocks.size() > 2) {
-        app.selected = 0;
+    while (app.sim.world().blocks.size() > 2) {
+        app.sim.selected = 0;
         deleteSelected(app);
     }
     stepSimulation(app);
-    EXPECT_TRUE(app.telemetry.velocitySpace.pair().valid());
-    EXPECT_FALSE(app.telemetry.velocitySpace.samples().empty());
+    EXPECT_TRUE(app.sim.telemetry.velocitySpace.pair().valid());
+    EXPECT_FALSE(app.sim.telemetry.velocitySpace.samples().empty());
 }
 
 TEST(CsvExport, WritesWhatReadsBackExactly) {
@@ -183,16 +184,16 @@ TEST(CsvExport, PlotsExportNextToSavesWithoutOverwriting) {
     const fs::path scene = dir / "example.json";
     fs::copy_file(resolveScenePath("lecture_example_1", SANDBOX_SCENES_DIR), scene);
     App app;
-    ASSERT_TRUE(loadScene(app, scene.string())) << app.error;
+    ASSERT_TRUE(loadScene(app, scene.string())) << app.ui.messages.error;
     for (int i = 0; i < 60; ++i) stepSimulation(app);
 
     const std::string first =
-        exportCsv(app, "momentum", timeSeriesTable(app.telemetry.momentum, {"px", "py"}));
+        exportCsv(app, "momentum", timeSeriesTable(app.sim.telemetry.momentum, {"px", "py"}));
     EXPECT_EQ(first, (dir / "lecture_example_1_momentum.csv").string());
-    EXPECT_EQ(app.savedFile, first); // the browser downloads it
-    EXPECT_NE(app.note.find(first), std::string::npos);
+    EXPECT_EQ(app.ui.savedFile, first); // the browser downloads it
+    EXPECT_NE(app.ui.messages.note.find(first), std::string::npos);
     const std::string second =
-        exportCsv(app, "momentum", timeSeriesTable(app.telemetry.momentum, {"px", "py"}));
+        exportCsv(app, "momentum", timeSeriesTable(app.sim.telemetry.momentum, {"px", "py"}));
     EXPECT_EQ(second, (dir / "lecture_example_1_momentum-2.csv").string()); // never overwritten
 
     std::ifstream in(first);
@@ -202,13 +203,13 @@ TEST(CsvExport, PlotsExportNextToSavesWithoutOverwriting) {
     EXPECT_EQ(back.columns, (std::vector<std::string>{"t (s)", "px", "py"}));
     ASSERT_EQ(back.rows.size(), 61u); // the start and 60 frames
     for (std::size_t i = 0; i < back.rows.size(); ++i) {
-        EXPECT_EQ(back.rows[i][0], app.telemetry.momentum.time(i));
+        EXPECT_EQ(back.rows[i][0], app.sim.telemetry.momentum.time(i));
         EXPECT_NEAR(back.rows[i][1], 6.0, 1e-12); // momentum kept, to rounding
         EXPECT_EQ(back.rows[i][2], 0.0);
     }
 
-    const std::string path = exportCsv(app, "velocity space",
-                                       velocitySpaceTable(app.telemetry.velocitySpace, "m1", "m2"));
+    const std::string path = exportCsv(
+        app, "velocity space", velocitySpaceTable(app.sim.telemetry.velocitySpace, "m1", "m2"));
     EXPECT_EQ(path, (dir / "lecture_example_1_velocity_space.csv").string());
     std::ifstream vin(path);
     std::stringstream vtext;
@@ -221,8 +222,9 @@ TEST(CsvExport, PlotsExportNextToSavesWithoutOverwriting) {
     EXPECT_EQ(vs.rows[1][4], std::sqrt(2.0) * 4.0);
 
     // An unwritable place is an error in the panel, and nothing else changes.
-    app.scenePath = (dir / "missing" / "x.json").string();
-    EXPECT_EQ(exportCsv(app, "energy", timeSeriesTable(app.telemetry.energy, {"k", "p", "t"})), "");
-    EXPECT_NE(app.error.find("Export failed"), std::string::npos);
+    app.sim.scenePath = (dir / "missing" / "x.json").string();
+    EXPECT_EQ(exportCsv(app, "energy", timeSeriesTable(app.sim.telemetry.energy, {"k", "p", "t"})),
+              "");
+    EXPECT_NE(app.ui.messages.error.find("Export failed"), std::string::npos);
     fs::remove_all(dir);
 }

@@ -1,7 +1,7 @@
 // What the browser build adds to the app's logic (no browser needed): a link's URL parameters,
 // the two-finger gesture, and wide lines drawn as quads where WebGL 2 has 1 px lines only.
+#include "app.h"
 #include "app_setup.h"
-#include "app_state.h"
 #include "mouse_tool.h"
 #include "shape_batch.h"
 #include "url_params.h"
@@ -69,17 +69,17 @@ TEST(UrlParams, ControlBytesAreNotEchoed) {
 TEST(UrlParams, AppliedToTheApp) {
     App app = setUpApp();
     applyUrlParams(app, parseUrlParams("?scene=newtons_cradle&method=turn-based&show=plots"));
-    EXPECT_EQ(app.error, "");
-    EXPECT_NE(app.scenePath.find("newtons_cradle.json"), std::string::npos);
-    EXPECT_EQ(app.world.settings.method, Method::TurnBased);
-    EXPECT_TRUE(app.show.plots);
+    EXPECT_EQ(app.ui.messages.error, "");
+    EXPECT_NE(app.sim.scenePath.find("newtons_cradle.json"), std::string::npos);
+    EXPECT_EQ(app.sim.world().settings.method, Method::TurnBased);
+    EXPECT_TRUE(app.view.show.plots);
 }
 
 TEST(UrlParams, TheCentreOfMassFrame) {
     App app = setUpApp();
     applyUrlParams(app, parseUrlParams("?scene=lecture_example_1&frame=com"));
-    EXPECT_EQ(app.error, "");
-    EXPECT_EQ(app.frame, ViewFrame::CentreOfMass);
+    EXPECT_EQ(app.ui.messages.error, "");
+    EXPECT_EQ(app.view.frame, ViewFrame::CentreOfMass);
     const UrlParams bad = parseUrlParams("?frame=moving");
     EXPECT_FALSE(bad.frame.has_value());
     ASSERT_EQ(bad.errors.size(), 1u);
@@ -88,14 +88,15 @@ TEST(UrlParams, TheCentreOfMassFrame) {
 
 TEST(UrlParams, AnUnknownSceneKeepsTheCurrentOneAndSaysWhy) {
     App app = setUpApp();
-    const std::string before = app.scenePath;
-    const std::size_t blocks = app.world.blocks.size();
+    const std::string before = app.sim.scenePath;
+    const std::size_t blocks = app.sim.world().blocks.size();
     applyUrlParams(app, parseUrlParams("?scene=no_such_scene&method=perfect"));
-    EXPECT_EQ(app.scenePath, before);
-    EXPECT_EQ(app.world.blocks.size(), blocks);
-    EXPECT_NE(app.error.find("URL parameter scene: no scene 'no_such_scene' is shipped"),
-              std::string::npos)
-        << app.error;
+    EXPECT_EQ(app.sim.scenePath, before);
+    EXPECT_EQ(app.sim.world().blocks.size(), blocks);
+    EXPECT_NE(
+        app.ui.messages.error.find("URL parameter scene: no scene 'no_such_scene' is shipped"),
+        std::string::npos)
+        << app.ui.messages.error;
 }
 
 TEST(UrlParams, ALessonAtAStep) {
@@ -105,7 +106,7 @@ TEST(UrlParams, ALessonAtAStep) {
     EXPECT_EQ(p.step, 5);
     App app = setUpApp();
     applyUrlParams(app, p);
-    EXPECT_EQ(app.error, "");
+    EXPECT_EQ(app.ui.messages.error, "");
     ASSERT_TRUE(app.lesson.active());
     EXPECT_EQ(app.lesson.current, 4u);
 }
@@ -119,31 +120,32 @@ TEST(UrlParams, BadLessonParameters) {
     EXPECT_EQ(parseUrlParams("?lesson=lecture3&step=-2").errors.size(), 1u);
     EXPECT_EQ(parseUrlParams("?lesson=lecture3&step=99999999999").errors.size(), 1u);
     App app = setUpApp();
-    const std::string before = app.scenePath;
+    const std::string before = app.sim.scenePath;
     applyUrlParams(app, parseUrlParams("?lesson=lecture3&step=999"));
-    EXPECT_FALSE(app.error.empty()); // no step 999: the current scene stays
-    EXPECT_EQ(app.scenePath, before);
+    EXPECT_FALSE(app.ui.messages.error.empty()); // no step 999: the current scene stays
+    EXPECT_EQ(app.sim.scenePath, before);
     applyUrlParams(app, parseUrlParams("?lesson=no_such_lesson"));
-    EXPECT_NE(app.error.find("no lesson 'no_such_lesson' is shipped"), std::string::npos);
+    EXPECT_NE(app.ui.messages.error.find("no lesson 'no_such_lesson' is shipped"),
+              std::string::npos);
     EXPECT_FALSE(app.lesson.active());
 }
 
 TEST(TouchGesture, PansByTheMidpointAndZoomsAboutIt) {
     App app = setUpApp();
-    app.camera.setViewport({0, 0, 800, 600});
-    app.camera.setPixelsPerMetre(50.0);
-    app.camera.setCentre({10.0, 6.0});
-    const Vec2 grabbed = app.camera.screenToWorld({300, 200});
-    touchPanZoom(app, {300, 200}, {340, 260}, 2.0);
-    EXPECT_FALSE(app.autoFit);
-    EXPECT_DOUBLE_EQ(app.camera.pixelsPerMetre(), 100.0);
+    app.view.camera.setViewport({0, 0, 800, 600});
+    app.view.camera.setPixelsPerMetre(50.0);
+    app.view.camera.setCentre({10.0, 6.0});
+    const Vec2 grabbed = app.view.camera.screenToWorld({300, 200});
+    touchPanZoom(app.view, {300, 200}, {340, 260}, 2.0);
+    EXPECT_FALSE(app.view.autoFit);
+    EXPECT_DOUBLE_EQ(app.view.camera.pixelsPerMetre(), 100.0);
     // The world point under the fingers stays under them (exact up to rounding: 1e-9 m).
-    const Vec2 now = app.camera.screenToWorld({340, 260});
+    const Vec2 now = app.view.camera.screenToWorld({340, 260});
     EXPECT_NEAR(now.x, grabbed.x, 1e-9);
     EXPECT_NEAR(now.y, grabbed.y, 1e-9);
-    const double ppm = app.camera.pixelsPerMetre();
-    touchPanZoom(app, {0, 0}, {0, 0}, std::nan(""));
-    EXPECT_EQ(app.camera.pixelsPerMetre(), ppm);
+    const double ppm = app.view.camera.pixelsPerMetre();
+    touchPanZoom(app.view, {0, 0}, {0, 0}, std::nan(""));
+    EXPECT_EQ(app.view.camera.pixelsPerMetre(), ppm);
 }
 
 TEST(WideLineQuads, AsOpenGLRasterisesAWideLine) {

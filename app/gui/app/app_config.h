@@ -3,6 +3,8 @@
 // $XDG_CONFIG_HOME/collision-sandbox/ (or ~/.config/collision-sandbox/).
 #pragma once
 
+#include "view.h" // the UI and label scales' ranges
+
 #include <string>
 
 struct AppConfig {
@@ -16,11 +18,6 @@ struct AppConfig {
     int sound = -1;      // the knocks (M): -1 not chosen (on in lessons only), 0 off, 1 on
     float volume = 0.8f; // of the knocks, 0..1
 };
-
-constexpr float kMinUiScale = 0.75f;
-constexpr float kMaxUiScale = 3.0f;
-constexpr float kMinLabelScale = 0.75f;
-constexpr float kMaxLabelScale = 2.5f;
 
 // Parses the file's text; unknown keys and bad values are ignored (a hand-edited file never
 // stops the app from starting). Values are clamped to sane ranges.

@@ -1,7 +1,5 @@
 #include "app_log.h"
 
-#include "app_state.h"
-
 #include <cstdio>
 
 namespace {
@@ -14,34 +12,35 @@ std::string number(double v) {
 
 } // namespace
 
-LoggedState snapshotForLog(const App& app) {
+LoggedState snapshotForLog(const SimulationSession& sim, const View& view,
+                           const LessonSession& lesson) {
+    const WorldSettings& settings = sim.world().settings;
     LoggedState s;
-    s.scene = app.scenePath;
-    s.paused = app.paused;
-    s.slowMotion = app.slowMotion;
-    s.overlays = app.show;
-    s.uiVisible = app.uiVisible;
-    s.method = methodName(app.world.settings.method);
-    s.bounciness = app.world.settings.bounciness;
-    s.gravityX = app.world.settings.gravity.x;
-    s.gravityY = app.world.settings.gravity.y;
-    s.dt = app.world.settings.dt;
-    s.substeps = app.world.settings.substeps;
-    s.resolve = resolveName(app.world.settings.resolve);
-    s.integrator = integratorName(app.world.settings.integrator);
-    s.mistakes = app.world.settings.mistakes;
-    s.drag = app.world.settings.drag;
-    s.thrust = app.thrust.on;
-    const Vec2 pushing = thrustForce(app);
+    s.scene = sim.scenePath;
+    s.paused = sim.paused;
+    s.slowMotion = sim.slowMotion;
+    s.overlays = view.show;
+    s.uiVisible = view.uiVisible;
+    s.method = methodName(settings.method);
+    s.bounciness = settings.bounciness;
+    s.gravityX = settings.gravity.x;
+    s.gravityY = settings.gravity.y;
+    s.dt = settings.dt;
+    s.substeps = settings.substeps;
+    s.resolve = resolveName(settings.resolve);
+    s.integrator = integratorName(settings.integrator);
+    s.mistakes = settings.mistakes;
+    s.drag = settings.drag;
+    s.thrust = sim.thrust.on;
+    const Vec2 pushing = sim.thrustForce();
     s.thrustX = pushing.x;
     s.thrustY = pushing.y;
-    s.timeScale = app.timeScale;
-    s.uiScale = app.uiScale;
-    s.blocks = static_cast<int>(app.world.blocks.size());
-    s.selected = app.selected;
-    s.trailLength = app.trails.length();
-    if (app.lesson.active())
-        s.lesson = lessonHeading(app.lesson) + (app.lesson.revealed ? " (answer)" : "");
+    s.timeScale = sim.timeScale;
+    s.uiScale = view.uiScale;
+    s.blocks = static_cast<int>(sim.world().blocks.size());
+    s.selected = sim.selected;
+    s.trailLength = sim.run.trails.length();
+    if (lesson.active()) s.lesson = lessonHeading(lesson) + (lesson.revealed ? " (answer)" : "");
     return s;
 }
 

@@ -3,12 +3,13 @@
 // a slider acted, and lets a lecturer keep a record of a session.
 #pragma once
 
+#include "lesson_session.h"
 #include "overlays.h"
+#include "simulation_session.h"
+#include "view.h"
 
 #include <string>
 #include <vector>
-
-struct App;
 
 struct LoggedState {
     std::string scene;
@@ -34,6 +35,15 @@ struct LoggedState {
     std::string lesson; // "3 / 20 · title", with " (answer)" once revealed
 };
 
-LoggedState snapshotForLog(const App& app);
+// --verbose, and what it compares with.
+struct VerboseLog {
+    bool verbose = false; // print state changes to stdout
+    LoggedState last;     // the state at the last frame logged
+    bool lastValid = false;
+    bool layoutLogged = false; // one slider's place printed once (for the window test)
+};
+
+LoggedState snapshotForLog(const SimulationSession& sim, const View& view,
+                           const LessonSession& lesson);
 // The lines describing what changed from `before` to `after` ("paused", "method: turn-based").
 std::vector<std::string> describeChanges(const LoggedState& before, const LoggedState& after);

@@ -15,15 +15,16 @@ bool openFirst(App& app, const Options& options, const std::string& lastScene, s
     // A lesson: --lesson NAME, or a lesson file given as the scene.
     std::string lesson;
     if (!options.lesson.empty()) {
-        lesson = resolveScenePath(options.lesson, app.lessonsDir); // NAME, NAME.json or a path
+        lesson =
+            resolveScenePath(options.lesson, app.shipped.lessonsDir); // NAME, NAME.json or a path
     } else if (!options.scene.empty()) {
-        const std::string path = resolveScenePath(options.scene, app.scenesDir);
+        const std::string path = resolveScenePath(options.scene, app.shipped.scenesDir);
         if (isLessonFile(path)) lesson = path;
     }
     if (!lesson.empty()) {
         const std::size_t first = options.step > 0 ? static_cast<std::size_t>(options.step - 1) : 0;
         if (!openLesson(app, lesson, first)) {
-            if (error) *error = app.error;
+            if (error) *error = app.ui.messages.error;
             return false;
         }
         return true;
@@ -34,43 +35,44 @@ bool openFirst(App& app, const Options& options, const std::string& lastScene, s
     }
 
     if (!options.scene.empty()) {
-        const std::string path = resolveScenePath(options.scene, app.scenesDir);
+        const std::string path = resolveScenePath(options.scene, app.shipped.scenesDir);
         if (!loadScene(app, path)) {
-            if (error) *error = app.error;
+            if (error) *error = app.ui.messages.error;
             return false;
         }
         return true;
     }
     if (!lastScene.empty() && loadScene(app, lastScene)) return true;
-    const std::string fallback = resolveScenePath(kDefaultSceneFile, app.scenesDir);
+    const std::string fallback = resolveScenePath(kDefaultSceneFile, app.shipped.scenesDir);
     if (loadScene(app, fallback)) return true;
     // Nothing loads: an empty world, with the reason on screen.
     Scene empty;
     empty.name = "(no scene)";
-    const std::string why = app.error;
+    const std::string why = app.ui.messages.error;
     setScene(app, empty, "");
-    app.error = why.empty() ? "No scene found" : why;
+    app.ui.messages.error = why.empty() ? "No scene found" : why;
     return true;
 }
 
 } // namespace
 
 bool setupApp(App& app, const Options& options, const std::string& lastScene, std::string* error) {
-    app.scenesDir = findScenesDirectory(executableDirectory(), builtInScenesDirectory());
-    app.sceneFiles = listScenes(app.scenesDir);
-    app.lessonsDir = findDataDirectory(executableDirectory(), builtInLessonsDirectory(), "lessons");
-    app.lessonFiles = listScenes(app.lessonsDir);
-    app.verbose = options.verbose;
-    if (options.showGiven) applyShowSet(app, options.show);
+    app.shipped.scenesDir = findScenesDirectory(executableDirectory(), builtInScenesDirectory());
+    app.shipped.scenes = listScenes(app.shipped.scenesDir);
+    app.shipped.lessonsDir =
+        findDataDirectory(executableDirectory(), builtInLessonsDirectory(), "lessons");
+    app.shipped.lessons = listScenes(app.shipped.lessonsDir);
+    app.log.verbose = options.verbose;
+    if (options.showGiven) applyShowSet(app.view, options.show);
     if (!openFirst(app, options, lastScene, error)) return false;
     // --compare: the trace opened on that scene, at its first difference.
     app.studentTrace.units = options.traceUnits;
     if (!options.compareTrace.empty() && !openTrace(app, options.compareTrace)) {
-        if (error) *error = app.error;
+        if (error) *error = app.ui.messages.error;
         return false;
     }
     // --frame: the run has just started, so the camera follows from its start (the anchor the
     // run set stays; setViewFrame would anchor at the first frame drawn, after --frames N).
-    if (options.frame) app.frame = *options.frame;
+    if (options.frame) app.view.frame = *options.frame;
     return true;
 }

@@ -15,10 +15,6 @@ EscapeEffect escapeEffect(bool dialogOpen, bool helpOpen, bool presentMode, bool
     return EscapeEffect::Nothing;
 }
 
-bool hasUnsavedEdits(bool blocksEdited, const WorldSettings& scene, const WorldSettings& now) {
-    return blocksEdited || settingsDiffer(scene, now);
-}
-
 std::string firstSentence(const std::string& text) {
     const std::size_t end = text.find(". ");
     return end == std::string::npos ? text : text.substr(0, end + 1);

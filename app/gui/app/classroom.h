@@ -15,10 +15,6 @@
 enum class EscapeEffect { CloseDialog, CloseHelp, LeavePresent, LeaveFullscreen, Nothing };
 EscapeEffect escapeEffect(bool dialogOpen, bool helpOpen, bool presentMode, bool fullscreen);
 
-// Quitting asks first when the user has edited the blocks, or the settings differ from the
-// scene's, since the last load or save.
-bool hasUnsavedEdits(bool blocksEdited, const WorldSettings& scene, const WorldSettings& now);
-
 // The first sentence of a description (up to and including its first ". "), or all of it.
 std::string firstSentence(const std::string& text);
 // Present mode's one line: what the scene is, the method and the time, e.g.

@@ -14,18 +14,6 @@
 #include <string>
 #include <vector>
 
-// A --show LIST: which overlays (names from the table in overlays.h), and "none" (no panels
-// and no overlays).
-struct ShowSet {
-    bool none = false;
-    Overlays overlays = noOverlays();
-    static Overlays noOverlays() {
-        Overlays o;
-        for (const OverlayInfo& i : kOverlays) o.*i.flag = false;
-        return o;
-    }
-};
-
 struct Options {
     std::string scene;      // file path or shipped scene name; "" for the default scene
     std::string screenshot; // PNG to write (offscreen)
@@ -53,12 +41,6 @@ struct Options {
     TraceUnitsSpec traceUnits;
 };
 
-// Turns the overlay called `name` on or off; false for an unknown name.
-bool setOverlay(Overlays& overlays, const std::string& name, bool on);
-// Parses a comma-separated --show list; false with a message for an unknown name.
-// "none, trails, vectors, ...": the names --show accepts.
-std::string showNames();
-bool parseShowList(const std::string& text, ShowSet& out, std::string* error);
 // Parses "WxH" (each 16..16384); false otherwise.
 bool parseSize(const std::string& text, int& width, int& height);
 

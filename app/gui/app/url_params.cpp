@@ -1,6 +1,6 @@
 #include "url_params.h"
 
-#include "app_state.h"
+#include "app.h"
 #include "lesson_session.h"
 #include "printable.h"
 #include "scene_library.h"
@@ -127,26 +127,26 @@ void applyUrlParams(App& app, const UrlParams& params) {
     auto add = [&errors](const std::string& e) { errors += (errors.empty() ? "" : "\n") + e; };
     for (const std::string& e : params.errors) add(e);
     if (!params.lesson.empty()) {
-        const std::string path = app.lessonsDir + "/" + params.lesson + ".json";
+        const std::string path = app.shipped.lessonsDir + "/" + params.lesson + ".json";
         bool shipped = false;
-        for (const SceneEntry& s : app.lessonFiles) shipped = shipped || s.path == path;
+        for (const SceneEntry& s : app.shipped.lessons) shipped = shipped || s.path == path;
         const std::size_t first = params.step > 0 ? static_cast<std::size_t>(params.step - 1) : 0;
         if (!shipped)
             add("URL parameter lesson: no lesson " + echo(params.lesson) + " is shipped");
         else if (!openLesson(app, path, first))
-            add(app.error);
+            add(app.ui.messages.error);
     }
     if (!params.scene.empty()) {
-        const std::string path = app.scenesDir + "/" + params.scene + ".json";
+        const std::string path = app.shipped.scenesDir + "/" + params.scene + ".json";
         bool shipped = false;
-        for (const SceneEntry& s : app.sceneFiles) shipped = shipped || s.path == path;
+        for (const SceneEntry& s : app.shipped.scenes) shipped = shipped || s.path == path;
         if (!shipped)
             add("URL parameter scene: no scene " + echo(params.scene) + " is shipped");
         else if (!loadScene(app, path))
-            add(app.error);
+            add(app.ui.messages.error);
     }
-    if (params.methodGiven) app.world.settings.method = params.method;
-    if (params.showGiven) applyShowSet(app, params.show);
-    if (params.frame) setViewFrame(app, *params.frame);
-    app.error = errors;
+    if (params.methodGiven) app.sim.world().settings.method = params.method;
+    if (params.showGiven) applyShowSet(app.view, params.show);
+    if (params.frame) setViewFrame(app.view, *params.frame);
+    app.ui.messages.error = errors;
 }

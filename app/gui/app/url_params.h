@@ -34,6 +34,6 @@ struct UrlParams {
 UrlParams parseUrlParams(const std::string& query);
 
 // Applies the parameters to a set-up app: opens the lesson at its step or the scene (a bad one
-// keeps the current scene), then the method and the overlays. Every error goes to app.error, one
-// per line.
+// keeps the current scene), then the method and the overlays. Every error goes to
+// app.ui.messages.error, one per line.
 void applyUrlParams(App& app, const UrlParams& params);

@@ -1,10 +1,6 @@
 #include "csv_export.h"
 
-#include "app_state.h"
-#include "save_naming.h"
-
 #include <algorithm>
-#include <fstream>
 
 CsvTable timeSeriesTable(const TimeSeries& series, const std::vector<std::string>& channels) {
     CsvTable table;
@@ -31,23 +27,4 @@ CsvTable velocitySpaceTable(const VelocitySpacePath& path, const std::string& na
         table.rows.push_back({s.t, s.v1, s.v2, p.x, p.y});
     }
     return table;
-}
-
-std::string suggestedExportPath(const App& app, const std::string& plot) {
-    return suggestSavePath(app.scene.name + " " + plot, saveDirectory(app), pathExists, ".csv");
-}
-
-std::string exportCsv(App& app, const std::string& plot, const CsvTable& table) {
-    const std::string path = suggestedExportPath(app, plot);
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    if (out) writeCsv(out, table);
-    out.close();
-    if (!out) {
-        app.error = "Export failed: cannot write " + path;
-        return "";
-    }
-    app.error.clear();
-    app.note = "Wrote " + std::to_string(table.rows.size()) + " rows to " + path;
-    app.savedFile = path;
-    return path;
 }

@@ -1,6 +1,6 @@
 #include "spoken_text.h"
 
-#include "app_state.h"
+#include "app.h"
 #include "inspector_format.h"
 #include "text_format.h"
 
@@ -22,8 +22,8 @@ std::string oneLine(std::string text) {
 
 SpokenScreen spokenScreen(const App& app) {
     SpokenScreen s;
-    s.scene = app.scene.name;
-    s.description = app.scene.description;
+    s.scene = app.sim.scene.name;
+    s.description = app.sim.scene.description;
     if (const LessonStep* step = app.lesson.step()) {
         s.lesson = "Lesson: " + app.lesson.lesson->name + ", step " +
                    std::to_string(app.lesson.current + 1) + " of " +
@@ -34,10 +34,10 @@ SpokenScreen spokenScreen(const App& app) {
             if (app.lesson.revealed) s.answer = oneLine(step->answer);
         }
     }
-    const long long n = app.totals.collisions;
-    s.status = std::string(methodName(app.world.settings.method)) +
-               " method, t = " + formatNumber(app.world.time) + " s, " +
-               (app.paused ? "paused" : "running") + ", " + std::to_string(n) +
+    const long long n = app.sim.run.totals.collisions;
+    s.status = std::string(methodName(app.sim.world().settings.method)) +
+               " method, t = " + formatNumber(app.sim.world().time) + " s, " +
+               (app.sim.paused ? "paused" : "running") + ", " + std::to_string(n) +
                (n == 1 ? " collision" : " collisions");
     return s;
 }

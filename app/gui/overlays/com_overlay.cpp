@@ -19,7 +19,7 @@ constexpr std::size_t kDiagramArrowsWithHeads = 40;
 constexpr std::size_t kDiagramSegments = 200;
 
 ImVec2 toScreen(const App& app, Vec2 p) {
-    const Vec2 s = app.camera.worldToScreen(p);
+    const Vec2 s = app.view.camera.worldToScreen(p);
     return ImVec2(static_cast<float>(s.x), static_cast<float>(s.y));
 }
 
@@ -38,8 +38,8 @@ void arrow(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 color, float width, float h
 void drawMomentaDiagram(App& app) {
     OverlayWindow overlay(app, OverlayId::com);
     if (!overlay) return;
-    const World& w = app.world;
-    const Vec2 u = frameVelocity(w, app.frame);
+    const World& w = app.sim.world();
+    const Vec2 u = frameVelocity(w, app.view.frame);
     // Tip to tail, in file order; the extent fixes the scale.
     std::vector<Vec2> tips{Vec2{}};
     std::vector<int> owner;
@@ -55,7 +55,7 @@ void drawMomentaDiagram(App& app) {
     for (std::size_t k = 1; k < tips.size(); ++k) sum += length(tips[k] - tips[k - 1]);
     const std::string text = "total p = (" + formatNumber(total.x, sum) + ", " +
                              formatNumber(total.y, sum) + ") kg·m/s" +
-                             (app.frame == ViewFrame::World ? "" : " (centre-of-mass frame)");
+                             (app.view.frame == ViewFrame::World ? "" : " (centre-of-mass frame)");
     dimText(text.c_str());
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     ImGui::InvisibleButton("##momenta", ImVec2(std::max(avail.x, 40.0f), std::max(avail.y, 40.0f)));
@@ -87,7 +87,7 @@ void drawMomentaDiagram(App& app) {
               : std::max<std::size_t>(1, (owner.size() + kDiagramSegments - 1) / kDiagramSegments);
     for (std::size_t k = 0; k < owner.size(); k += group) {
         const std::size_t next = std::min(k + group, owner.size());
-        const ImU32 c = blockDisplayColor(app, owner[k]).withAlpha(0.95f).packed();
+        const ImU32 c = app.sim.blockDisplayColor(owner[k]).withAlpha(0.95f).packed();
         if (heads)
             arrow(dl, map(tips[k]), map(tips[next]), c, width, head);
         else
@@ -114,19 +114,20 @@ void drawMomentaDiagram(App& app) {
 } // namespace
 
 void drawComOverlay(App& app) {
-    const CentreOfMass c = centreOfMass(app.world);
+    const CentreOfMass c = centreOfMass(app.sim.world());
     if (c.valid) {
         ImDrawList* dl = ImGui::GetBackgroundDrawList();
         const ImVec2 p = toScreen(app, c.position);
-        const float r = 9.0f * app.uiScale;
+        const float r = 9.0f * app.view.uiScale;
         const ImU32 col = uiMarkColor(Mark::CentreOfMass);
         // In its own frame the centre of mass stands still: no arrow.
         const Vec2 tip =
-            c.position + (c.velocity - frameVelocity(app.world, app.frame)) * kVelocityArrowScale;
-        arrow(dl, p, toScreen(app, tip), col, 3.0f * app.uiScale, 13.0f * app.uiScale);
+            c.position +
+            (c.velocity - frameVelocity(app.sim.world(), app.view.frame)) * kVelocityArrowScale;
+        arrow(dl, p, toScreen(app, tip), col, 3.0f * app.view.uiScale, 13.0f * app.view.uiScale);
         dl->AddCircleFilled(
             p, r, uiLightTheme() ? IM_COL32(255, 255, 255, 220) : IM_COL32(20, 20, 20, 220));
-        dl->AddCircle(p, r, col, 20, 2.5f * app.uiScale);
+        dl->AddCircle(p, r, col, 20, 2.5f * app.view.uiScale);
         dl->AddLine(ImVec2(p.x - r, p.y), ImVec2(p.x + r, p.y), col, 2.0f);
         dl->AddLine(ImVec2(p.x, p.y - r), ImVec2(p.x, p.y + r), col, 2.0f);
         char text[96];

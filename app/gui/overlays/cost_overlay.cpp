@@ -62,10 +62,10 @@ void tradeoffChart(CostMeasurement& cost) {
 void drawCostOverlay(App& app) {
     OverlayWindow overlay(app, OverlayId::cost);
     if (!overlay) return;
-    CostMeasurement& cost = app.cost;
+    CostMeasurement& cost = app.sim.cost;
     cost.pollSweep();
-    if (!cost.measured(app.scenePath)) cost.measure(app.world, app.scenePath);
-    ImGui::Text("Cost per step of this scene (%zu blocks):", app.world.blocks.size());
+    if (!cost.measured(app.sim.scenePath)) cost.measure(app.sim.world(), app.sim.scenePath);
+    ImGui::Text("Cost per step of this scene (%zu blocks):", app.sim.world().blocks.size());
     if (ImGui::BeginTable("cost", 2, ImGuiTableFlags_SizingStretchProp)) {
         for (int m = 0; m < static_cast<int>(Method::Count); ++m) {
             const Method method = static_cast<Method>(m);
@@ -77,7 +77,7 @@ void drawCostOverlay(App& app) {
         }
         ImGui::EndTable();
     }
-    if (ImGui::SmallButton("Measure again")) cost.measure(app.world, app.scenePath);
+    if (ImGui::SmallButton("Measure again")) cost.measure(app.sim.world(), app.sim.scenePath);
     ImGui::SameLine();
     dimText("(a copy, 30 frames per method)");
     ImGui::Separator();
@@ -85,7 +85,7 @@ void drawCostOverlay(App& app) {
         ImGui::TextColored(uiThemed(ImVec4(0.55f, 0.85f, 0.6f, 1.0f)),
                            "Sweep running in the background...");
     } else if (ImGui::Button("Run the tradeoff sweep (quick)")) {
-        cost.startSweep(quickTradeoffSweep(app.scenesDir));
+        cost.startSweep(quickTradeoffSweep(app.shipped.scenesDir));
     }
     if (!cost.error().empty()) textWrappedAtSpaces("Sweep failed: " + cost.error());
     if (cost.rows().empty()) {

@@ -16,7 +16,7 @@
 namespace {
 
 ImVec2 toScreen(const App& app, Vec2 p) {
-    const Vec2 s = app.camera.worldToScreen(p);
+    const Vec2 s = app.view.camera.worldToScreen(p);
     return ImVec2(static_cast<float>(s.x), static_cast<float>(s.y));
 }
 
@@ -31,10 +31,10 @@ void drawGhostOverlay(App& app) {
     const StudentTrace& st = app.studentTrace;
     if (!st.open()) return;
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
-    const float s = app.uiScale;
+    const float s = app.view.uiScale;
     const ImU32 color = studentTraceColor().packed();
     const TraceComparison& c = *st.comparison;
-    const auto frame = static_cast<std::int64_t>(app.world.frame);
+    const auto frame = static_cast<std::int64_t>(app.sim.world().frame);
     const TraceRow* row = st.rowAt(frame);
     std::vector<WorldBox> boxes;
     std::string now;
@@ -43,8 +43,8 @@ void drawGhostOverlay(App& app) {
         double worst = 0.0;
         for (std::size_t b = 0; b < st.trace->blocks.size(); ++b) {
             const auto index = static_cast<std::size_t>(st.trace->blocks[b]);
-            if (index >= app.world.blocks.size()) continue;
-            const Block& ref = app.world.blocks[index];
+            if (index >= app.sim.world().blocks.size()) continue;
+            const Block& ref = app.sim.world().blocks[index];
             const Vec2 yours = row->position[b];
             boxes.push_back({yours, ref.size});
             const double d = apart(yours, ref.position);

@@ -14,7 +14,7 @@
 namespace {
 
 std::string bodyName(const App& app, int index) {
-    return index < 0 ? std::string(wallName(index)) : blockDisplayName(app, index);
+    return index < 0 ? std::string(wallName(index)) : app.sim.blockDisplayName(index);
 }
 
 void formulaLine(const std::string& text, bool strong) {
@@ -50,7 +50,7 @@ void studentTraceSection(App& app) {
                 const Vec2 y = p.yoursVelocity, ref = p.referenceVelocity;
                 ImGui::PushStyleColor(ImGuiCol_Text, uiThemed(ImGui::ColorConvertU32ToFloat4(
                                                          studentTraceColor().packed())));
-                textWrappedAtSpaces(blockDisplayName(app, p.block) + " after it: yours v = (" +
+                textWrappedAtSpaces(app.sim.blockDisplayName(p.block) + " after it: yours v = (" +
                                     formatNumber(y.x) + ", " + formatNumber(y.y) +
                                     ") m/s, the reference's (" + formatNumber(ref.x) + ", " +
                                     formatNumber(ref.y) + ") m/s");
@@ -70,12 +70,14 @@ void drawInspectorOverlay(App& app) {
     if (!overlay) return;
     studentTraceSection(app);
     // A small window shows the formula first, the switch under it.
-    auto pauseSwitch = [&] { ImGui::Checkbox("pause on each collision", &app.pauseOnCollision); };
+    auto pauseSwitch = [&] {
+        ImGui::Checkbox("pause on each collision", &app.sim.pauseOnCollision);
+    };
     if (!overlay.compact()) pauseSwitch();
-    const auto& recent = app.telemetry.recent; // up to the scrubbed time while replaying
+    const auto& recent = app.sim.telemetry.recent; // up to the scrubbed time while replaying
     if (recent.empty()) {
-        dimText(isReplaying(app) ? "No collision up to this point of the replay."
-                                 : "No collision yet. Run the scene, or step with N.");
+        dimText(app.sim.isReplaying() ? "No collision up to this point of the replay."
+                                      : "No collision yet. Run the scene, or step with N.");
         if (overlay.compact()) pauseSwitch();
         return;
     }
@@ -88,9 +90,9 @@ void drawInspectorOverlay(App& app) {
     // The list of the last collisions, newest first.
     char preview[160];
     std::snprintf(preview, sizeof preview, "%s t = %.3f s: %s / %s (%c)",
-                  picked != 0        ? ""
-                  : isReplaying(app) ? "last so far,"
-                                     : "newest,",
+                  picked != 0             ? ""
+                  : app.sim.isReplaying() ? "last so far,"
+                                          : "newest,",
                   r.time, bodyName(app, r.block).c_str(), bodyName(app, r.other).c_str(),
                   r.axis == 0 ? 'x' : 'y');
     ImGui::SetNextItemWidth(-1.0f);
@@ -140,7 +142,7 @@ void drawInspectorOverlay(App& app) {
         ImGui::PopStyleColor();
     }
     if (overlay.compact()) pauseSwitch();
-    if (app.verbose && f.title != app.ui.inspectorLoggedTitle) {
+    if (app.log.verbose && f.title != app.ui.inspectorLoggedTitle) {
         app.ui.inspectorLoggedTitle = f.title;
         std::printf("inspector %s\ninspector %s\ninspector %s\ninspector %s\n",
                     printable(f.title, kPrintablePath).c_str(), f.u.c_str(), f.v1After.c_str(),

@@ -95,8 +95,8 @@ const std::vector<PlotRow>& plotRows() {
 }
 
 std::string watchedName(const App& app) {
-    const int watched = app.telemetry.watched;
-    return watched >= 0 ? blockDisplayName(app, watched) : std::string("(no block)");
+    const int watched = app.sim.telemetry.watched;
+    return watched >= 0 ? app.sim.blockDisplayName(watched) : std::string("(no block)");
 }
 
 // One button per plot: its whole recorded series (the last 60 s) as CSV (csv_export.h).
@@ -106,10 +106,10 @@ void exportButtons(App& app) {
         ImGui::SameLine();
         if (!ImGui::SmallButton(row.name)) continue;
         const std::string prefix =
-            row.ofWatchedBlock && app.telemetry.watched >= 0 ? watchedName(app) + " " : "";
+            row.ofWatchedBlock && app.sim.telemetry.watched >= 0 ? watchedName(app) + " " : "";
         std::vector<std::string> columns;
         for (const PlotChannel& c : row.channels) columns.push_back(prefix + c.column);
-        exportCsv(app, row.name, timeSeriesTable(app.telemetry.*row.series, columns));
+        exportCsv(app, row.name, timeSeriesTable(app.sim.telemetry.*row.series, columns));
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Each writes its plot's series as a CSV file");
 }
@@ -119,11 +119,11 @@ void exportButtons(App& app) {
 void drawPlotsOverlay(App& app) {
     OverlayWindow overlay(app, OverlayId::plots);
     if (!overlay) return;
-    const Telemetry& tm = app.telemetry;
+    const Telemetry& tm = app.sim.telemetry;
     // While the timeline replays, the plots show the recorded run around the scrubbed time, with
     // a "now" line there; live, the last seconds up to now.
-    const double now = app.world.time;
-    const bool replaying = isReplaying(app);
+    const double now = app.sim.world().time;
+    const bool replaying = app.sim.isReplaying();
     const double newest =
         tm.energy.size() > 0 ? std::max(now, tm.energy.time(tm.energy.size() - 1)) : now;
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);

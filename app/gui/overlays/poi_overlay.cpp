@@ -16,7 +16,7 @@
 namespace {
 
 ImVec2 toScreen(const App& app, Vec2 p) {
-    const Vec2 s = app.camera.worldToScreen(p);
+    const Vec2 s = app.view.camera.worldToScreen(p);
     return ImVec2(static_cast<float>(s.x), static_cast<float>(s.y));
 }
 
@@ -31,7 +31,7 @@ void box(const App& app, ImDrawList* dl, Vec2 centre, Vec2 size, Mark mark, floa
         dl->AddRect(lo, hi, color, 0.0f, 0, width);
         return;
     }
-    const float dash = 6.0f * app.uiScale;
+    const float dash = 6.0f * app.view.uiScale;
     const ImVec2 corners[5] = {lo, ImVec2(hi.x, lo.y), hi, ImVec2(lo.x, hi.y), lo};
     for (int e = 0; e < 4; ++e) {
         const ImVec2 p = corners[e], q = corners[e + 1];
@@ -53,10 +53,10 @@ void label(ImDrawList* dl, ImVec2 at, Mark mark, const std::string& text) {
 } // namespace
 
 void drawPoiOverlay(App& app) {
-    const PoiView& p = app.poi;
+    const PoiView& p = app.sim.run.poi;
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
-    const float s = app.uiScale;
-    if (!p.valid || p.block < 0 || p.block >= static_cast<int>(app.world.blocks.size())) {
+    const float s = app.view.uiScale;
+    if (!p.valid || p.block < 0 || p.block >= static_cast<int>(app.sim.world().blocks.size())) {
         const char* text = "Point of impact: shown after the watched block's next collision";
         const ImVec2 size = ImGui::CalcTextSize(text);
         label(dl, sceneCaptionPlace(app, size.x, size.y, {}), Mark::PoiOld, text);
@@ -71,8 +71,8 @@ void drawPoiOverlay(App& app) {
     box(app, dl, p.crooked, p.size, Mark::PoiMovedBack, w, false);
     box(app, dl, p.ghost, p.size, Mark::PoiContact, w * 1.3f, false);
     // Each label on its own side of its box: old above, new right, POI left, moved back below.
-    const float hw = static_cast<float>(app.camera.metresToPixels(p.size.x * 0.5));
-    const float hh = static_cast<float>(app.camera.metresToPixels(p.size.y * 0.5));
+    const float hw = static_cast<float>(app.view.camera.metresToPixels(p.size.x * 0.5));
+    const float hh = static_cast<float>(app.view.camera.metresToPixels(p.size.y * 0.5));
     auto place = [&](Vec2 c, const char* text, Mark mark, int side) {
         const ImVec2 sc = toScreen(app, c);
         const ImVec2 ts = ImGui::CalcTextSize(text);
@@ -90,9 +90,9 @@ void drawPoiOverlay(App& app) {
 
     // The caption: the numbers of t = a/b.
     const char axis = p.axis == 0 ? 'x' : 'y';
-    const std::string other = p.other < 0 ? wallName(p.other) : blockDisplayName(app, p.other);
+    const std::string other = p.other < 0 ? wallName(p.other) : app.sim.blockDisplayName(p.other);
     const std::string lines[4] = {
-        "Point of impact of " + blockDisplayName(app, p.block) + " with " + other +
+        "Point of impact of " + app.sim.blockDisplayName(p.block) + " with " + other +
             ", frame from t = " + formatNumber(p.frameStart) + " s",
         std::string("t = a/b = ") + formatNumber(p.a) + " m / " + formatNumber(p.b) +
             " m = " + formatNumber(p.t) + "   (along " + axis + ")",

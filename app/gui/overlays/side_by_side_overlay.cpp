@@ -10,7 +10,7 @@
 void drawSideBySideOverlay(App& app) {
     OverlayWindow overlay(app, OverlayId::sideBySide);
     if (!overlay) return;
-    const MethodsSideBySide& m = app.methods;
+    const MethodsSideBySide& m = app.sim.run.methods;
     if (!m.running) {
         textWrappedAtSpaces("Starts from the current state when the simulation runs (P or N).");
         return;
@@ -32,7 +32,7 @@ void drawSideBySideOverlay(App& app) {
         for (int k = 0; k < static_cast<int>(Method::Count); ++k) {
             const Method method = static_cast<Method>(k);
             const MethodRun& r = m.run(method);
-            const bool live = method == app.world.settings.method;
+            const bool live = method == app.sim.world().settings.method;
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::TextColored(uiMarkColorVec(methodMark(method)), "%s%s", methodName(method),

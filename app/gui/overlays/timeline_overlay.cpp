@@ -32,17 +32,17 @@ void markFirstDifference(App& app, std::uint64_t first, std::uint64_t last) {
 void drawTimelineOverlay(App& app) {
     OverlayWindow overlay(app, OverlayId::timeline);
     if (!overlay) return;
-    const WorldHistory& h = app.history;
+    const WorldHistory& h = app.sim.history;
     if (h.empty()) {
         dimText("Nothing recorded yet: run or step the scene.");
         return;
     }
     const auto first = h.firstFrame(), last = h.lastFrame();
-    int frame = static_cast<int>(app.world.frame);
+    int frame = static_cast<int>(app.sim.world().frame);
     auto go = [&](long long f) {
         if (f < static_cast<long long>(first)) f = static_cast<long long>(first);
         if (f > static_cast<long long>(last)) f = static_cast<long long>(last);
-        app.paused = true;
+        app.sim.paused = true;
         scrubTo(app, static_cast<std::uint64_t>(f));
     };
     if (ImGui::Button("|<")) go(static_cast<long long>(first));
@@ -53,10 +53,10 @@ void drawTimelineOverlay(App& app) {
     ImGui::SameLine();
     if (ImGui::Button(">|")) go(static_cast<long long>(last));
     ImGui::SameLine();
-    dimText(isReplaying(app) ? "REPLAY" : "live");
+    dimText(app.sim.isReplaying() ? "REPLAY" : "live");
     ImGui::SetNextItemWidth(-1.0f); // the slider on its own line: it must show frame and time
     char label[64];
-    std::snprintf(label, sizeof label, "frame %%d   t = %.2f s", app.world.time);
+    std::snprintf(label, sizeof label, "frame %%d   t = %.2f s", app.sim.world().time);
     if (ImGui::SliderInt("##frame", &frame, static_cast<int>(first), static_cast<int>(last), label,
                          ImGuiSliderFlags_AlwaysClamp)) {
         go(frame);
@@ -66,7 +66,8 @@ void drawTimelineOverlay(App& app) {
     std::snprintf(
         info, sizeof info, "%.1f s recorded, %zu keyframes, %.1f MB%s", h.recordedSeconds(),
         h.keyframeCount(), static_cast<double>(h.bytes()) / (1024.0 * 1024.0),
-        isReplaying(app) ? ". Play or step to go on from here; an edit starts a new future." : "");
+        app.sim.isReplaying() ? ". Play or step to go on from here; an edit starts a new future."
+                              : "");
     ImGui::PushTextWrapPos(0.0f);
     dimText(info);
     ImGui::PopTextWrapPos();

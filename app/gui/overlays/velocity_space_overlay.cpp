@@ -32,7 +32,7 @@ void dashedLine(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 color, float dash, flo
 // The picture in the square [lo, lo + side].
 void drawPicture(App& app, const VelocitySpacePath& path, ImVec2 lo, float side) {
     const VelocitySpacePair& pair = path.pair();
-    const World& w = app.world;
+    const World& w = app.sim.world();
     const double v1 = w.blocks[static_cast<std::size_t>(pair.block1)].velocity.x;
     const double v2 = w.blocks[static_cast<std::size_t>(pair.block2)].velocity.x;
     const Vec2 now = velocitySpacePoint(pair, v1, v2);
@@ -87,8 +87,8 @@ void drawPicture(App& app, const VelocitySpacePath& path, ImVec2 lo, float side)
         dl->PopClipRect();
         return;
     }
-    const std::string s1 = formulaSymbol(baseBlockName(blockDisplayName(app, pair.block1)));
-    const std::string s2 = formulaSymbol(baseBlockName(blockDisplayName(app, pair.block2)));
+    const std::string s1 = formulaSymbol(baseBlockName(app.sim.blockDisplayName(pair.block1)));
+    const std::string s2 = formulaSymbol(baseBlockName(app.sim.blockDisplayName(pair.block2)));
     const std::string xName = "sqrt(m" + (s1.empty() ? "1" : s1) + ")·v" + (s1.empty() ? "1" : s1);
     const std::string yName = "sqrt(m" + (s2.empty() ? "2" : s2) + ")·v" + (s2.empty() ? "2" : s2);
     const ImU32 text = uiThemed(IM_COL32(200, 206, 220, 255));
@@ -106,10 +106,10 @@ void drawPicture(App& app, const VelocitySpacePath& path, ImVec2 lo, float side)
 void drawVelocitySpaceOverlay(App& app) {
     OverlayWindow overlay(app, OverlayId::velocitySpace);
     if (!overlay) return;
-    const VelocitySpacePath& path = app.telemetry.velocitySpace;
+    const VelocitySpacePath& path = app.sim.telemetry.velocitySpace;
     const VelocitySpacePair& pair = path.pair();
     if (!pair.valid()) {
-        textWrappedAtSpaces(velocitySpacePair(app.world).why);
+        textWrappedAtSpaces(velocitySpacePair(app.sim.world()).why);
         return;
     }
     const ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -126,8 +126,8 @@ void drawVelocitySpaceOverlay(App& app) {
     ImGui::BeginChild("##velocityspace-caption", ImVec2(0.0f, 0.0f), false);
     if (ImGui::SmallButton("CSV")) {
         exportCsv(app, "velocity space",
-                  velocitySpaceTable(path, blockDisplayName(app, pair.block1),
-                                     blockDisplayName(app, pair.block2)));
+                  velocitySpaceTable(path, app.sim.blockDisplayName(pair.block1),
+                                     app.sim.blockDisplayName(pair.block2)));
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Write the path (t, v1, v2 and the coordinates) as a CSV file");

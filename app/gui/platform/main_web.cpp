@@ -34,7 +34,7 @@ struct WebApp {
     AudioOut audio; // Web Audio, through emscripten's OpenAL
     AppConfig config;
     std::string storedSettings; // what local storage holds, to write only on change
-    double pixelRatio = 1.0;    // the ratio app.uiScale includes (the user's scale times it)
+    double pixelRatio = 1.0;    // the ratio app.view.uiScale includes (the user's scale times it)
     long long frames = 0;
     double realTime = 0.0;  // s since the first frame (the live region's pace)
     std::string shownState; // pageStateJson() as the page last got it
@@ -47,17 +47,17 @@ WebApp* gWeb = nullptr;
 void followPixelRatio(WebApp& w) {
     const double ratio = w.canvas.devicePixelRatio;
     if (ratio == w.pixelRatio) return;
-    setUiScale(w.app, static_cast<float>(w.app.uiScale / w.pixelRatio * ratio));
+    setUiScale(w.app, static_cast<float>(w.app.view.uiScale / w.pixelRatio * ratio));
     w.pixelRatio = ratio;
 }
 
 void saveSettings(WebApp& w) {
-    w.config.lastScene = w.app.scenePath;
-    w.config.uiScale = static_cast<float>(w.app.uiScale / w.pixelRatio);
+    w.config.lastScene = w.app.sim.scenePath;
+    w.config.uiScale = static_cast<float>(w.app.view.uiScale / w.pixelRatio);
     w.config.windowWidth = w.canvas.width;
     w.config.windowHeight = w.canvas.height;
-    w.config.sound = w.app.sound.chosen ? (w.app.sound.on ? 1 : 0) : -1;
-    w.config.volume = w.app.sound.volume;
+    w.config.sound = w.app.sim.sound.chosen ? (w.app.sim.sound.on ? 1 : 0) : -1;
+    w.config.volume = w.app.sim.sound.volume;
     const std::string text = formatAppConfig(w.config);
     if (text != w.storedSettings) storageSet(kSettingsKey, text);
     w.storedSettings = text;
@@ -71,13 +71,13 @@ void saveSettings(WebApp& w) {
 // Requests the app made of its platform, answered by the page.
 void answerRequests(WebApp& w) {
     App& app = w.app;
-    if (!app.savedFile.empty()) pageDownload(app.savedFile);
-    app.savedFile.clear();
-    if (app.filePickerRequested) pageOpenFilePicker();
-    app.filePickerRequested = false;
-    if (app.fullscreenRequested) pageToggleFullscreen();
-    app.fullscreenRequested = false;
-    app.quitRequested = false; // Esc: closing the tab is the browser's
+    if (!app.ui.savedFile.empty()) pageDownload(app.ui.savedFile);
+    app.ui.savedFile.clear();
+    if (app.ui.filePickerRequested) pageOpenFilePicker();
+    app.ui.filePickerRequested = false;
+    if (app.ui.fullscreenRequested) pageToggleFullscreen();
+    app.ui.fullscreenRequested = false;
+    app.ui.quitRequested = false; // Esc: closing the tab is the browser's
 }
 
 // The page's text for a screen reader, kept in step with the canvas, and the collisions through
@@ -88,7 +88,7 @@ void tellPage(WebApp& w, double realSeconds) {
     if (state != w.shownState) pageShowState(state);
     w.shownState = std::move(state);
     const std::string said =
-        w.app.announcer.announce(w.realTime, [&](int i) { return blockDisplayName(w.app, i); });
+        w.app.sim.announcer.announce(w.realTime, [&](int i) { return w.app.sim.blockDisplayName(i); });
     if (!said.empty()) pageAnnounce(said);
 }
 
@@ -98,20 +98,20 @@ void frame(void* arg) {
     double realSeconds = 0.0;
     canvasNewFrame(w.canvas, &realSeconds);
     followPixelRatio(w);
-    if (app.uiScale != uiCurrentScale()) {
-        uiApplyScale(app.uiScale);
+    if (app.view.uiScale != uiCurrentScale()) {
+        uiApplyScale(app.view.uiScale);
         uiRendererFontsChanged();
         uiRendererNewFrame(); // uploads the new atlas before this frame uses it
     }
     for (const std::string& path : canvasTakeOpenedFiles(w.canvas)) openFile(app, path);
     for (const TouchGesture& g : canvasTakeGestures(w.canvas))
-        touchPanZoom(app, g.from, g.to, g.spreadRatio);
+        touchPanZoom(app.view, g.from, g.to, g.spreadRatio);
     ImGui::NewFrame();
     appFrame(app, canvasTakeKeyPresses(w.canvas), realSeconds, true);
     ImGui::Render();
     appRender(app, w.renderer, w.canvas.width, w.canvas.height);
     uiRendererRender(ImGui::GetDrawData());
-    w.audio.play(app.sound);
+    w.audio.play(app.sim.sound);
     answerRequests(w);
     tellPage(w, realSeconds);
     saveSettings(w);
@@ -155,16 +155,17 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
         }
         return out + "\"";
     };
-    text = "{\"scene\":" + quoted(app.scenePath) +
-           ",\"method\":" + quoted(methodName(app.world.settings.method)) +
-           ",\"paused\":" + (app.paused ? "true" : "false") +
+    text = "{\"scene\":" + quoted(app.sim.scenePath) +
+           ",\"method\":" + quoted(methodName(app.sim.world().settings.method)) +
+           ",\"paused\":" + (app.sim.paused ? "true" : "false") +
            ",\"frames\":" + std::to_string(gWeb->frames) +
-           ",\"simTime\":" + std::to_string(app.world.time) + ",\"error\":" + quoted(app.error) +
-           ",\"plots\":" + (app.show.plots ? "true" : "false") +
-           ",\"inspector\":" + (app.show.inspector ? "true" : "false") + ",\"lessonStep\":" +
+           ",\"simTime\":" + std::to_string(app.sim.world().time) +
+           ",\"error\":" + quoted(app.ui.messages.error) +
+           ",\"plots\":" + (app.view.show.plots ? "true" : "false") +
+           ",\"inspector\":" + (app.view.show.inspector ? "true" : "false") + ",\"lessonStep\":" +
            (app.lesson.active() ? std::to_string(app.lesson.current + 1) : std::string("0")) +
-           ",\"bounciness\":" + std::to_string(app.world.settings.bounciness) + navigationJson() +
-           "}";
+           ",\"bounciness\":" + std::to_string(app.sim.world().settings.bounciness) +
+           navigationJson() + "}";
     return text.c_str();
 }
 
@@ -190,11 +191,11 @@ int main() {
     std::string error;
     setupApp(app, Options{}, w.config.lastScene, &error);
     applyUrlParams(app, params);
-    app.sound.chosen = w.config.sound >= 0;
-    app.sound.on = w.config.sound == 1;
-    app.sound.volume = w.config.volume;
-    app.browserFiles = true;
-    app.savePath = "saved_scene.json";
+    app.sim.sound.chosen = w.config.sound >= 0;
+    app.sim.sound.on = w.config.sound == 1;
+    app.sim.sound.volume = w.config.volume;
+    app.ui.browserFiles = true;
+    app.ui.savePath = "saved_scene.json";
 
     uiCreateContext(nullptr);
     const std::string ini = storageGet(kImGuiIniKey);
@@ -204,10 +205,10 @@ int main() {
         return 1;
     }
     w.pixelRatio = w.canvas.devicePixelRatio;
-    setUiScale(app, static_cast<float>(w.config.uiScale * w.pixelRatio));
-    uiApplyScale(app.uiScale);
+    setUiScale(app.view, static_cast<float>(w.config.uiScale * w.pixelRatio));
+    uiApplyScale(app.view.uiScale);
     uiRendererFontsChanged();
-    if (!w.renderer.init(&error)) app.error = "Shader error: " + error;
+    if (!w.renderer.init(&error)) app.ui.messages.error = "Shader error: " + error;
     emscripten_set_main_loop_arg(frame, &w, 0, 1);
     return 0;
 }

@@ -53,14 +53,14 @@ int runWindow(const Options& options, char** argv, int argc) {
         std::fprintf(stderr, "sandbox: %s\n", error.c_str());
         return 1;
     }
-    setUiScale(app, options.uiScale > 0.0f ? options.uiScale : config.uiScale);
-    app.lightTheme = options.theme.empty() ? config.lightTheme : options.theme == "light";
-    app.labelScale = config.labelScale;
-    app.sound.chosen = config.sound >= 0;
-    app.sound.on = config.sound == 1;
-    app.sound.volume = config.volume;
-    app.firstLaunch = !config.existed;
-    if (options.present) setPresentMode(app, true);
+    setUiScale(app.view, options.uiScale > 0.0f ? options.uiScale : config.uiScale);
+    app.view.lightTheme = options.theme.empty() ? config.lightTheme : options.theme == "light";
+    app.view.labelScale = config.labelScale;
+    app.sim.sound.chosen = config.sound >= 0;
+    app.sim.sound.on = config.sound == 1;
+    app.sim.sound.volume = config.volume;
+    app.ui.firstLaunch = !config.existed;
+    if (options.present) setPresentMode(app.view, true);
     const bool sizeGiven = options.width != 1280 || options.height != 720;
     const int width = sizeGiven ? options.width : config.windowWidth;
     const int height = sizeGiven ? options.height : config.windowHeight;
@@ -72,7 +72,7 @@ int runWindow(const Options& options, char** argv, int argc) {
         if (!ec) iniPath = configDir + "/imgui.ini";
     }
     uiCreateContext(iniPath.empty() ? nullptr : iniPath.c_str());
-    uiApplyLook(app.uiScale, app.labelScale, app.lightTheme);
+    uiApplyLook(app.view.uiScale, app.view.labelScale, app.view.lightTheme);
     WindowGlfw window;
     if (!windowInit(window, width, height, "Collision sandbox", &error)) {
         uiDestroyContext();
@@ -83,18 +83,19 @@ int runWindow(const Options& options, char** argv, int argc) {
     SceneRenderer renderer;
     if (!renderer.init(&error)) {
         std::fprintf(stderr, "sandbox: shader error: %s\n", error.c_str());
-        app.error = "Shader error: " + error;
+        app.ui.messages.error = "Shader error: " + error;
     }
     AudioOut audio;
     bool first = true;
     double realSeconds = 0.0;
-    while (!app.quitRequested && windowNewFrame(window, &realSeconds)) {
+    while (!app.ui.quitRequested && windowNewFrame(window, &realSeconds)) {
         if (window.closeRequested) { // the close button: asks when there are unsaved edits
             window.closeRequested = false;
             requestQuit(app);
-            if (app.quitDialogOpen && app.verbose) std::printf("quit: unsaved edits, asking\n");
+            if (app.ui.quitDialogOpen && app.log.verbose)
+                std::printf("quit: unsaved edits, asking\n");
         }
-        app.fullscreen = window.fullscreen;
+        app.view.fullscreen = window.fullscreen;
         for (const std::string& path : windowTakeDroppedFiles(window)) openFile(app, path);
         ImGui::NewFrame();
         appFrame(app, windowTakeKeyPresses(window), realSeconds, true);
@@ -104,25 +105,26 @@ int runWindow(const Options& options, char** argv, int argc) {
         appRender(app, renderer, fw, fh);
         uiRendererRender(ImGui::GetDrawData());
         windowPresent(window);
-        audio.play(app.sound);
-        if (first && app.verbose) {
+        audio.play(app.sim.sound);
+        if (first && app.log.verbose) {
             std::printf("window ready %dx%d\n", fw, fh);
             std::fflush(stdout);
         }
         first = false;
-        if (app.fullscreenRequested) {
+        if (app.ui.fullscreenRequested) {
             windowSetFullscreen(window, !window.fullscreen);
-            app.fullscreenRequested = false;
+            app.ui.fullscreenRequested = false;
         }
         // Fonts and theme, only what changed; new fonts go to the UI renderer.
-        if (uiApplyLook(app.uiScale, app.labelScale, app.lightTheme)) uiRendererFontsChanged();
+        if (uiApplyLook(app.view.uiScale, app.view.labelScale, app.view.lightTheme))
+            uiRendererFontsChanged();
     }
-    config.lastScene = app.scenePath;
-    config.uiScale = app.uiScale;
-    config.lightTheme = app.lightTheme;
-    config.labelScale = app.labelScale;
-    config.sound = app.sound.chosen ? (app.sound.on ? 1 : 0) : -1;
-    config.volume = app.sound.volume;
+    config.lastScene = app.sim.scenePath;
+    config.uiScale = app.view.uiScale;
+    config.lightTheme = app.view.lightTheme;
+    config.labelScale = app.view.labelScale;
+    config.sound = app.sim.sound.chosen ? (app.sim.sound.on ? 1 : 0) : -1;
+    config.volume = app.sim.sound.volume;
     windowSize(window, &config.windowWidth, &config.windowHeight);
     if (!saveAppConfig(configDir, config) && !configDir.empty()) {
         std::fprintf(stderr, "sandbox: cannot save settings in %s\n", configDir.c_str());
@@ -130,11 +132,11 @@ int runWindow(const Options& options, char** argv, int argc) {
     renderer.shutdown();
     windowShutdown(window);
     uiDestroyContext();
-    if (app.verbose) {
-        if (app.framesShown > 0 && app.secondsShown > 0.0) {
-            std::printf("shown %lld frames, %.2f ms/frame (%.1f frames/s)\n", app.framesShown,
-                        app.secondsShown * 1000.0 / static_cast<double>(app.framesShown),
-                        static_cast<double>(app.framesShown) / app.secondsShown);
+    if (app.log.verbose) {
+        if (app.ui.framesShown > 0 && app.ui.secondsShown > 0.0) {
+            std::printf("shown %lld frames, %.2f ms/frame (%.1f frames/s)\n", app.ui.framesShown,
+                        app.ui.secondsShown * 1000.0 / static_cast<double>(app.ui.framesShown),
+                        static_cast<double>(app.ui.framesShown) / app.ui.secondsShown);
         }
         std::printf("quit\n");
     }

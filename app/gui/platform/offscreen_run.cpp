@@ -46,12 +46,12 @@ AudioTrack startTrack(App& app, const Options& o, int frames) {
     AudioTrack track;
     track.wanted = !o.audioWav.empty();
     if (!track.wanted) return track;
-    app.sound.chosen = true; // what would be heard with sound on, at full volume
-    app.sound.on = true;
-    app.sound.volume = 1.0f;
-    app.sound.queue.clear();
-    track.start = app.world.time;
-    const double seconds = frames * app.world.settings.dt + kKnockSeconds; // the last knock ends
+    app.sim.sound.chosen = true; // what would be heard with sound on, at full volume
+    app.sim.sound.on = true;
+    app.sim.sound.volume = 1.0f;
+    app.sim.sound.queue.clear();
+    track.start = app.sim.world().time;
+    const double seconds = frames * app.sim.world().settings.dt + kKnockSeconds; // the last knock ends
     track.samples.assign(static_cast<std::size_t>(std::ceil(seconds * kSampleRate)), 0.0f);
     return track;
 }
@@ -59,8 +59,8 @@ AudioTrack startTrack(App& app, const Options& o, int frames) {
 // One simulation frame, its knocks mixed into the track.
 void simulateFrame(App& app, AudioTrack& track) {
     stepSimulation(app);
-    for (const Knock& k : app.sound.queue) mixKnock(track.samples, track.start, k, 1.0f);
-    app.sound.queue.clear();
+    for (const Knock& k : app.sim.sound.queue) mixKnock(track.samples, track.start, k, 1.0f);
+    app.sim.sound.queue.clear();
 }
 
 int writeTrack(const AudioTrack& track, const Options& o) {
@@ -132,8 +132,9 @@ bool writeLayoutJson(const App& app, const std::string& path) {
         std::fprintf(stderr, "sandbox: cannot write %s\n", path.c_str());
         return false;
     }
-    const std::string json = layoutJson(
-        app.camera.viewport(), worldRectOnScreen(app.camera, app.world.bounds), app.shownWindows);
+    const std::string json = layoutJson(app.view.camera.viewport(),
+                                        worldRectOnScreen(app.view.camera, app.sim.world().bounds),
+                                        app.view.shownWindows);
     const bool ok = std::fputs(json.c_str(), f) >= 0;
     return std::fclose(f) == 0 && ok;
 }
@@ -153,12 +154,13 @@ int screenshot(App& app, Offscreen& off, const Options& o) {
     AudioTrack track = startTrack(app, o, o.frames);
     for (int i = 0; i < o.frames; ++i) simulateFrame(app, track);
     if (writeTrack(track, o) != 0) return 1;
-    if (o.frames > 0) app.paused = false;
+    if (o.frames > 0) app.sim.paused = false;
     if (o.timelineFrame >= 0) { // the timeline's slider, dragged back: paused there, replaying
         scrubTo(app, static_cast<std::uint64_t>(o.timelineFrame));
-        app.paused = true;
+        app.sim.paused = true;
     }
-    if (app.show.cost) app.cost.runSweepNow(quickTradeoffSweep(app.scenesDir)); // the chart
+    if (app.view.show.cost)
+        app.sim.cost.runSweepNow(quickTradeoffSweep(app.shipped.scenesDir)); // the chart
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off);
     const int code = writeScreenshot(off, o);
     if (code != 0) return code;
@@ -180,7 +182,7 @@ bool makeDirectory(const std::string& dir) {
 int record(App& app, Offscreen& off, const Options& o) {
     if (!makeDirectory(o.record)) return 1;
     for (int i = 0; i < kSettleFrames - 1; ++i) renderFrame(app, off);
-    app.paused = false; // a recording runs the scene
+    app.sim.paused = false; // a recording runs the scene
     char name[32];
     AudioTrack track = startTrack(app, o, o.frames);
     for (int i = 0; i < o.frames; ++i) {
@@ -221,7 +223,7 @@ int recordSteps(App& app, Offscreen& off, const Options& o) {
     for (std::size_t i = 0; i < steps; ++i) {
         enterStep(app, i);
         lessonShowPausePoint(app);
-        if (app.show.cost) app.cost.runSweepNow(quickTradeoffSweep(app.scenesDir));
+        if (app.view.show.cost) app.sim.cost.runSweepNow(quickTradeoffSweep(app.shipped.scenesDir));
         for (int k = 0; k < kSettleFrames; ++k) renderFrame(app, off);
         std::snprintf(name, sizeof name, "/step_%02zu.png", i + 1);
         if (!writeFrame(off, o.recordSteps + name)) return 1;
@@ -244,7 +246,7 @@ int benchmark(App& app, Offscreen& off, const Options& o) {
     const double totalMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     const double perFrame = totalMs / o.benchmarkFrames;
     std::printf("benchmark: %d frames, %dx%d, %zu blocks, %s\n", o.benchmarkFrames,
-                off.context.width, off.context.height, app.world.blocks.size(),
+                off.context.width, off.context.height, app.sim.world().blocks.size(),
                 offscreenGlDescription().c_str());
     std::printf("  %.3f ms/frame (%.1f frames/s); simulation %.3f ms/frame, drawing %.3f "
                 "ms/frame\n",
@@ -275,11 +277,11 @@ int runOffscreen(const Options& options) {
         for (int i = 0; i < o.frames; ++i) simulateFrame(app, track);
         return writeTrack(track, o);
     }
-    setUiScale(app, o.uiScale > 0.0f ? o.uiScale : 1.0f);
-    if (o.present) setPresentMode(app, true);
-    app.lightTheme = o.theme == "light";
+    setUiScale(app.view, o.uiScale > 0.0f ? o.uiScale : 1.0f);
+    if (o.present) setPresentMode(app.view, true);
+    app.view.lightTheme = o.theme == "light";
     uiCreateContext(nullptr);
-    uiApplyLook(app.uiScale, app.labelScale, app.lightTheme);
+    uiApplyLook(app.view.uiScale, app.view.labelScale, app.view.lightTheme);
     Offscreen off;
     if (!offscreenInit(off.context, o.width, o.height, &error)) {
         std::fprintf(stderr, "sandbox: %s\n", error.c_str());
@@ -291,7 +293,7 @@ int runOffscreen(const Options& options) {
         // Keep going: the panels still render and the picture shows what is missing; the exit
         // code says it failed.
         std::fprintf(stderr, "sandbox: shader error: %s\n", error.c_str());
-        app.error = "Shader error: " + error;
+        app.ui.messages.error = "Shader error: " + error;
     }
     int code = 0;
     if (o.benchmarkFrames > 0)

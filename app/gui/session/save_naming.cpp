@@ -53,10 +53,19 @@ std::string suggestSavePath(const std::string& sceneName, const std::string& dir
     return first;
 }
 
+bool pathExists(const std::string& path) {
+    std::error_code ec;
+    return fs::exists(path, ec);
+}
+
 bool settingsDiffer(const WorldSettings& a, const WorldSettings& b) {
     return a.gravity != b.gravity || a.bounciness != b.bounciness || a.method != b.method ||
            a.dt != b.dt || a.substeps != b.substeps || a.resolve != b.resolve ||
            a.integrator != b.integrator || a.mistakes != b.mistakes || a.drag != b.drag;
+}
+
+bool hasUnsavedEdits(bool blocksEdited, const WorldSettings& scene, const WorldSettings& now) {
+    return blocksEdited || settingsDiffer(scene, now);
 }
 
 std::string changedSettingsNote(const WorldSettings& original, const WorldSettings& now) {

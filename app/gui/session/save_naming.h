@@ -21,6 +21,8 @@ std::string absoluteScenePath(const std::string& path, const std::string& cwd);
 std::string suggestSavePath(const std::string& sceneName, const std::string& dir,
                             const std::function<bool(const std::string&)>& exists,
                             const std::string& extension = ".json");
+// True when `path` names something on disk (an error reads as false): suggestSavePath's `exists`.
+bool pathExists(const std::string& path);
 // "" when `now` has the settings `original` has (gravity, bounciness, method, frame rate,
 // substeps, resolve, integrator, mistakes, drag); else one sentence naming what changed, e.g.
 // "Saved with changed settings: gravity (0, -9.81) m/s², method turn-based."
@@ -31,3 +33,6 @@ std::string savedDescription(const std::string& description, const WorldSettings
                              const WorldSettings& now);
 // True when the two settings differ in what changedSettingsNote() names.
 bool settingsDiffer(const WorldSettings& a, const WorldSettings& b);
+// Quitting asks first when the user has edited the blocks, or the settings differ from the
+// scene's, since the last load or save.
+bool hasUnsavedEdits(bool blocksEdited, const WorldSettings& scene, const WorldSettings& now);

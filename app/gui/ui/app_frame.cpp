@@ -21,18 +21,18 @@ void handleKeys(App& app, const std::vector<KeyPress>& keys) {
     const bool typing = ImGui::GetIO().WantTextInput;
     const bool keyboardNavigation = navigating();
     for (const KeyPress& k : keys) {
-        const Action action = actionForKey(k.key, k.ctrl, k.shift, app.thrust.on);
+        const Action action = actionForKey(k.key, k.ctrl, k.shift, app.sim.thrust.on);
         if (typing && action != Action::Escape) continue;
         if (keyboardNavigation && !k.ctrl && navigationKey(k.key)) continue;
         if (action == Action::LessonDigit)
-            lessonTypeDigit(app, digitOfKey(k.key));
+            lessonTypeDigit(app.lesson, digitOfKey(k.key));
         else
             applyAction(app, action);
     }
 }
 
 void logEvent(const App& app, const char* text) {
-    if (!app.verbose) return;
+    if (!app.log.verbose) return;
     std::printf("%s\n", printable(text, kPrintablePath).c_str()); // names come from files
     std::fflush(stdout);
 }
@@ -56,36 +56,36 @@ void applyAction(App& app, Action action) {
         logEvent(app, "reset to file");
         break;
     case Action::TogglePause:
-        app.paused = !app.paused;
+        app.sim.paused = !app.sim.paused;
         break;
     case Action::ToggleSlowMotion:
-        app.slowMotion = !app.slowMotion;
+        app.sim.slowMotion = !app.sim.slowMotion;
         break;
     case Action::ToggleTrails:
-        app.show.trails = !app.show.trails;
+        app.view.show.trails = !app.view.show.trails;
         break;
     case Action::ClearTrails:
-        app.trails.clear();
+        app.sim.run.trails.clear();
         break;
     case Action::CycleMethod:
-        cycleMethod(app);
+        app.sim.cycleMethod();
         break;
     case Action::StepOnce:
-        app.paused = true;
+        app.sim.paused = true;
         stepSimulation(app);
         logEvent(app, "step");
         break;
     case Action::ToggleVectors:
-        app.show.vectors = !app.show.vectors;
+        app.view.show.vectors = !app.view.show.vectors;
         break;
     case Action::ToggleFrame:
-        setViewFrame(app,
-                     app.frame == ViewFrame::World ? ViewFrame::CentreOfMass : ViewFrame::World);
-        logEvent(app, app.frame == ViewFrame::World ? "frame: world" : "frame: com");
+        setViewFrame(app.view, app.view.frame == ViewFrame::World ? ViewFrame::CentreOfMass
+                                                                  : ViewFrame::World);
+        logEvent(app, app.view.frame == ViewFrame::World ? "frame: world" : "frame: com");
         break;
     case Action::KeyboardFocus:
         app.ui.keyboardFocus = "Controls";
-        if (!app.uiVisible || app.presentMode) app.ui.keyboardFocus.clear();
+        if (!app.view.uiVisible || app.view.presentMode) app.ui.keyboardFocus.clear();
         break;
     case Action::NextWindow:
         app.ui.keyboardFocus = nextWindowForKeyboard(app);
@@ -93,28 +93,28 @@ void applyAction(App& app, Action action) {
     case Action::Navigate: // a row of the Help window: ImGui's navigation does it (no key)
         break;
     case Action::ToggleSound:
-        toggleSound(app.sound, app.lesson.active());
-        logEvent(app, soundOn(app.sound, app.lesson.active()) ? "sound: on" : "sound: off");
+        toggleSound(app.sim.sound, app.lesson.active());
+        logEvent(app, soundOn(app.sim.sound, app.lesson.active()) ? "sound: on" : "sound: off");
         break;
     case Action::FitView:
-        app.autoFit = true;
-        app.frameCamera.anchored = false; // the whole world now, followed from here
+        app.view.autoFit = true;
+        app.view.frameCamera.anchored = false; // the whole world now, followed from here
         break;
     case Action::TogglePresent:
-        setPresentMode(app, !app.presentMode);
-        logEvent(app, app.presentMode ? "present mode: on" : "present mode: off");
+        setPresentMode(app.view, !app.view.presentMode);
+        logEvent(app, app.view.presentMode ? "present mode: on" : "present mode: off");
         break;
     case Action::ToggleFullscreen:
-        app.fullscreenRequested = true;
+        app.ui.fullscreenRequested = true;
         break;
     case Action::ToggleHelp:
-        app.helpOpen = !app.helpOpen;
+        app.ui.helpOpen = !app.ui.helpOpen;
         break;
     case Action::UiScaleUp:
-        setUiScale(app, app.uiScale + 0.25f);
+        setUiScale(app.view, app.view.uiScale + 0.25f);
         break;
     case Action::UiScaleDown:
-        setUiScale(app, app.uiScale - 0.25f);
+        setUiScale(app.view, app.view.uiScale - 0.25f);
         break;
     case Action::DeleteSelected:
         deleteSelected(app);
@@ -130,11 +130,11 @@ void applyAction(App& app, Action action) {
     }
     case Action::Quit:
         requestQuit(app);
-        if (app.quitDialogOpen) logEvent(app, "quit: unsaved edits, asking");
+        if (app.ui.quitDialogOpen) logEvent(app, "quit: unsaved edits, asking");
         break;
     case Action::Save:
-        app.saveDialogOpen = true;
-        app.saveDialogPath = suggestedSavePath(app);
+        app.ui.saveDialogOpen = true;
+        app.ui.saveDialogPath = suggestedSavePath(app);
         break;
     case Action::LessonNext:
     case Action::LessonPrevious:
@@ -154,15 +154,15 @@ void applyAction(App& app, Action action) {
 }
 
 void logStateChanges(App& app) {
-    const LoggedState now = snapshotForLog(app);
-    if (app.verbose && app.loggedValid) {
-        for (const std::string& line : describeChanges(app.logged, now)) {
+    const LoggedState now = snapshotForLog(app.sim, app.view, app.lesson);
+    if (app.log.verbose && app.log.lastValid) {
+        for (const std::string& line : describeChanges(app.log.last, now)) {
             std::printf("%s\n", printable(line, kPrintablePath).c_str());
         }
         std::fflush(stdout);
     }
-    app.logged = now;
-    app.loggedValid = true;
+    app.log.last = now;
+    app.log.lastValid = true;
 }
 
 void holdKeyTaps(const std::vector<KeyPress>& queued, std::vector<int>& held,
@@ -182,29 +182,35 @@ void holdKeyTaps(const std::vector<KeyPress>& queued, std::vector<int>& held,
 
 void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, bool runClock) {
     const ImGuiIO& io = ImGui::GetIO();
-    updateCamera(app, io.DisplaySize.x, io.DisplaySize.y);
-    handleKeys(app, keys); // F6 reads the windows the last frame drew
-    app.shownWindows.clear();
-    // Thrust: the arrow keys held now (not while typing into a field).
+    const auto layOut = [&app, &io] { updateCamera(app, io.DisplaySize.x, io.DisplaySize.y); };
+    layOut();
+    // Input: the keys pressed (F6 reads the windows the last frame drew), the thrust's arrow keys
+    // held (not while typing into a field or moving the keyboard's focus ring), the mouse in the
+    // scene.
+    handleKeys(app, keys);
+    app.view.shownWindows.clear();
     const bool typing = io.WantTextInput || navigating();
-    app.thrust.direction = app.thrust.on && !typing ? heldThrustDirection([&io](int key) {
+    app.sim.thrust.direction = app.sim.thrust.on && !typing ? heldThrustDirection([&io](int key) {
         return key >= 0 && key < IM_ARRAYSIZE(io.KeysDown) && io.KeysDown[key];
     })
-                                                    : Vec2{};
+                                                            : Vec2{};
     handleSceneMouse(app);
-    updateCamera(app, io.DisplaySize.x, io.DisplaySize.y); // the UI toggle may have changed it
+    layOut(); // the UI toggle may have changed it
+    // The simulation: the frames due in this much real time.
     if (runClock) {
-        noteFrameShown(app, realSeconds);
+        noteFrameShown(app.ui, realSeconds);
         advanceSimulation(app, realSeconds);
         // The centre-of-mass frame follows the world as drawn this frame.
-        if (app.frame != ViewFrame::World) updateCamera(app, io.DisplaySize.x, io.DisplaySize.y);
+        if (app.view.frame != ViewFrame::World) layOut();
     }
+    takeNotice(app);
+    // The UI: the scene's labels, the overlays, the lesson's caption, the panels, the dialogs.
     drawSceneDecorations(app);
     drawOverlays(app);
     if (app.lesson.active()) drawLessonCaption(app); // a lesson's one caption, presenting too
-    if (!app.presentMode) {
-        if (app.uiVisible) drawControlsPanel(app);
-        if (app.helpOpen) drawHelpWindow(app);
+    if (!app.view.presentMode) {
+        if (app.view.uiVisible) drawControlsPanel(app);
+        if (app.ui.helpOpen) drawHelpWindow(app);
     }
     drawDialogs(app);
     logStateChanges(app);
@@ -214,43 +220,43 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
                int framebufferHeight) {
     const ImGuiIO& io = ImGui::GetIO();
     glViewport(0, 0, framebufferWidth, framebufferHeight);
-    SceneView view;
-    view.world = &app.world;
-    view.camera = &app.camera;
-    view.displayWidth = io.DisplaySize.x;
-    view.displayHeight = io.DisplaySize.y;
-    view.selected = app.selected;
-    view.theme = &sceneTheme(app.lightTheme);
-    view.vectors = app.show.vectors;
-    view.frameVelocity = frameVelocity(app.world, app.frame);
-    view.thrustBlock = thrustedBlock(app);
-    view.thrust = thrustForce(app);
-    view.trails = app.show.trails ? &app.trails : nullptr;
-    if (app.show.sideBySide && app.methods.running) {
+    SceneView scene;
+    scene.world = &app.sim.world();
+    scene.camera = &app.view.camera;
+    scene.displayWidth = io.DisplaySize.x;
+    scene.displayHeight = io.DisplaySize.y;
+    scene.selected = app.sim.selected;
+    scene.theme = &sceneTheme(app.view.lightTheme);
+    scene.vectors = app.view.show.vectors;
+    scene.frameVelocity = frameVelocity(app.sim.world(), app.view.frame);
+    scene.thrustBlock = app.sim.thrustedBlock();
+    scene.thrust = app.sim.thrustForce();
+    scene.trails = app.view.show.trails ? &app.sim.run.trails : nullptr;
+    if (app.view.show.sideBySide && app.sim.run.methods.running) {
         for (int m = 0; m < static_cast<int>(Method::Count); ++m) {
             const Method method = static_cast<Method>(m);
-            if (method == app.world.settings.method) continue;
-            view.ghosts.push_back(
-                {&app.methods.run(method).world, markColor(methodMark(method), app.lightTheme)});
+            if (method == app.sim.world().settings.method) continue;
+            scene.ghosts.push_back({&app.sim.run.methods.run(method).world,
+                                    markColor(methodMark(method), app.view.lightTheme)});
         }
     }
     // The ghost overlay: a student's blocks at this frame as outlines (docs/compare.md).
     World yours;
-    if (app.show.ghost && app.studentTrace.open()) {
-        yours.blocks = app.world.blocks;
-        if (app.studentTrace.ghostAt(static_cast<std::int64_t>(app.world.frame), yours))
-            view.ghosts.push_back({&yours, studentTraceColor()});
+    if (app.view.show.ghost && app.studentTrace.open()) {
+        yours.blocks = app.sim.world().blocks;
+        if (app.studentTrace.ghostAt(static_cast<std::int64_t>(app.sim.world().frame), yours))
+            scene.ghosts.push_back({&yours, studentTraceColor()});
     }
-    view.blockColors.reserve(app.world.blocks.size());
-    for (std::size_t i = 0; i < app.world.blocks.size(); ++i) {
-        view.blockColors.push_back(blockDisplayColor(app, static_cast<int>(i)));
+    scene.blockColors.reserve(app.sim.world().blocks.size());
+    for (std::size_t i = 0; i < app.sim.world().blocks.size(); ++i) {
+        scene.blockColors.push_back(app.sim.blockDisplayColor(static_cast<int>(i)));
     }
     const MouseTool& m = app.mouse;
     if (m.mode == MouseTool::Mode::Flinging && m.block >= 0 &&
-        m.block < static_cast<int>(app.world.blocks.size())) {
-        view.flingActive = true;
-        view.flingFrom = app.world.blocks[static_cast<std::size_t>(m.block)].position;
-        view.flingTo = view.flingFrom + (m.cursorWorld - m.pressWorld);
+        m.block < static_cast<int>(app.sim.world().blocks.size())) {
+        scene.flingActive = true;
+        scene.flingFrom = app.sim.world().blocks[static_cast<std::size_t>(m.block)].position;
+        scene.flingTo = scene.flingFrom + (m.cursorWorld - m.pressWorld);
     }
-    renderer.draw(view);
+    renderer.draw(scene);
 }

@@ -3,13 +3,13 @@
 // own the loop and draw ImGui's draw data on top with the platform's UI renderer.
 #pragma once
 
-#include "app_state.h"
+#include "app.h"
 #include "input_map.h"
-
-class SceneRenderer;
 
 #include <functional>
 #include <vector>
+
+class SceneRenderer;
 
 // Between ImGui::NewFrame() and ImGui::Render(): the key presses since the last frame, the mouse,
 // the simulation (when `runClock`: the window passes real time; the offscreen renderer steps
@@ -36,9 +36,10 @@ void drawHelpWindow(App& app);
 void drawDialogs(App& app);
 // The lesson's caption bar over the top of the scene ("n / N · title", caption, question).
 void drawLessonCaption(App& app);
-// Mouse in the scene, block labels, hover tooltip and the status badge.
+// The mouse in the scene (mouse_tool.h): select, drag, fling, pan, zoom.
 void handleSceneMouse(App& app);
-// Also records what it took on screen (the blocks, their labels, the arrows' values) in
-// app.ui.takenOnScreen, for the overlays' labels drawn after it (placeSceneLabel).
+// Over the scene: the axis numbers, the block labels, the arrows' values, the status badge and
+// the hover tooltip. Records what they took on screen (the blocks, their labels, the arrows'
+// values) in app.ui.takenOnScreen, for the overlays' labels drawn after it (placeSceneLabel).
+// The overlays themselves (the table in vocabulary.h) are drawOverlays' (overlay_window.h).
 void drawSceneDecorations(App& app);
-// The teaching overlays: the table in overlays.h, drawn by drawOverlays (overlay_window.h).

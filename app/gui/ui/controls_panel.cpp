@@ -73,21 +73,21 @@ void typedWarning(const App& app, const char* field) {
 }
 
 void scenePicker(App& app) {
-    const char* preview = app.scene.name.empty() ? "(no scene)" : app.scene.name.c_str();
+    const char* preview = app.sim.scene.name.empty() ? "(no scene)" : app.sim.scene.name.c_str();
     ImGui::SetNextItemWidth(-1.0f);
     // Taller than the default 8 rows: every shipped scene at once, in the lecture's order.
     if (ImGui::BeginCombo("##scene", preview, ImGuiComboFlags_HeightLargest)) {
-        for (const SceneEntry& e : app.sceneFiles) {
-            const bool current = e.path == app.scenePath;
+        for (const SceneEntry& e : app.shipped.scenes) {
+            const bool current = e.path == app.sim.scenePath;
             if (ImGui::Selectable(e.title.c_str(), current)) loadScene(app, e.path);
             if (current) ImGui::SetItemDefaultFocus();
         }
-        if (app.sceneFiles.empty()) ImGui::TextDisabled("no scenes found");
-        if (!app.lessonFiles.empty()) {
+        if (app.shipped.scenes.empty()) ImGui::TextDisabled("no scenes found");
+        if (!app.shipped.lessons.empty()) {
             ImGui::Separator();
             ImGui::TextDisabled("Lessons");
         }
-        for (const SceneEntry& e : app.lessonFiles) {
+        for (const SceneEntry& e : app.shipped.lessons) {
             const bool current = app.lesson.active() && app.lesson.lesson->path == e.path;
             const std::string label = "Lesson: " + e.title;
             if (ImGui::Selectable(label.c_str(), current)) openLesson(app, e.path);
@@ -129,17 +129,17 @@ void lessonSection(App& app) {
 
 void fileSection(App& app) {
     if (!ImGui::CollapsingHeader("Open and save")) return;
-    if (app.browserFiles) {
-        if (ImGui::Button("Open a scene file...")) app.filePickerRequested = true;
+    if (app.ui.browserFiles) {
+        if (ImGui::Button("Open a scene file...")) app.ui.filePickerRequested = true;
         tooltip("The browser's file dialog; or drop a .json file on the page (a .csv is a trace "
                 "of your engine: the Compare section)");
-        if (ImGui::Button("Save (download)")) saveCurrentScene(app, app.savePath);
+        if (ImGui::Button("Save (download)")) saveCurrentScene(app, app.ui.savePath);
         tooltip("Downloads the current state as a scene file (format v1); Ctrl+S");
         return;
     }
-    ImGui::InputTextWithHint("##open", "path/to/scene.json", &app.openPath);
+    ImGui::InputTextWithHint("##open", "path/to/scene.json", &app.ui.openPath);
     ImGui::SameLine();
-    if (ImGui::Button("Open") && !app.openPath.empty()) loadScene(app, app.openPath);
+    if (ImGui::Button("Open") && !app.ui.openPath.empty()) loadScene(app, app.ui.openPath);
     if (ImGui::Button("Save as... (Ctrl+S)")) applyAction(app, Action::Save);
     tooltip("Save the current state as a scene file (format v1): asks for a name");
 }
@@ -174,9 +174,9 @@ void compareSection(App& app) {
         if (ImGui::Button("Open a trace...")) app.filePickerRequested = true;
         tooltip("The browser's file dialog; or drop a .csv file on the page");
     } else {
-        ImGui::InputTextWithHint("##trace", "path/to/my_trace.csv", &app.tracePath);
+        ImGui::InputTextWithHint("##trace", "path/to/my_trace.csv", &app.ui.tracePath);
         ImGui::SameLine();
-        if (ImGui::Button("Open##trace") && !app.tracePath.empty()) openTrace(app, app.tracePath);
+        if (ImGui::Button("Open##trace") && !app.ui.tracePath.empty()) openTrace(app, app.ui.tracePath);
         tooltip("A CSV with t, then NAME_x, NAME_y, NAME_vx, NAME_vy per block; or drop it on "
                 "the window");
     }
@@ -192,7 +192,7 @@ void compareSection(App& app) {
 
 void runSection(App& app) {
     const float w = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
-    if (ImGui::Button(app.paused ? "Play  (P)" : "Pause (P)", ImVec2(w, 0))) {
+    if (ImGui::Button(app.sim.paused ? "Play  (P)" : "Pause (P)", ImVec2(w, 0))) {
         applyAction(app, Action::TogglePause);
     }
     ImGui::SameLine();
@@ -200,7 +200,7 @@ void runSection(App& app) {
     ImGui::SameLine();
     if (ImGui::Button("Reset (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
     tooltip("Blocks and time back to the start; keeps the method, C, g, frame rate, substeps");
-    ImGui::Checkbox("Slow motion (Space)", &app.slowMotion);
+    ImGui::Checkbox("Slow motion (Space)", &app.sim.slowMotion);
     tooltip("5 simulation frames per second, as in the lecture's demo");
     ImGui::SameLine();
     if (ImGui::Button("Reset to file")) applyAction(app, Action::ResetToFile);
@@ -209,7 +209,7 @@ void runSection(App& app) {
 
 void simulationSection(App& app) {
     if (!ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    WorldSettings& s = app.world.settings;
+    WorldSettings& s = app.sim.world().settings;
     int method = static_cast<int>(s.method);
     constexpr int kMethods = static_cast<int>(Method::Count);
     const char* names[kMethods];
@@ -224,11 +224,11 @@ void simulationSection(App& app) {
         acceptTyped(app, "bounciness C", c, s.bounciness, limits::kBounciness, s.bounciness);
     }
     tooltip("Coefficient of restitution: 1 elastic, 0 perfectly inelastic");
-    if (app.verbose && !app.layoutLogged) {
+    if (app.log.verbose && !app.log.layoutLogged) {
         const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
         std::printf("widget bounciness %d %d %d %d\n", static_cast<int>(a.x), static_cast<int>(a.y),
                     static_cast<int>(sliderWidth), static_cast<int>(b.y - a.y));
-        app.layoutLogged = true;
+        app.log.layoutLogged = true;
     }
     typedWarning(app, "bounciness C");
     float g[2] = {static_cast<float>(s.gravity.x), static_cast<float>(s.gravity.y)};
@@ -263,10 +263,11 @@ void simulationSection(App& app) {
         }
     }
     typedWarning(app, "substeps");
-    float scale = static_cast<float>(app.timeScale);
+    float scale = static_cast<float>(app.sim.timeScale);
     if (ImGui::SliderFloat("time scale", &scale, 0.05f, 4.0f, "%.2fx",
                            ImGuiSliderFlags_Logarithmic)) {
-        acceptTyped(app, "time scale", scale, app.timeScale, limits::kTimeScale, app.timeScale);
+        acceptTyped(app, "time scale", scale, app.sim.timeScale, limits::kTimeScale,
+                    app.sim.timeScale);
     }
     typedWarning(app, "time scale");
 }
@@ -291,13 +292,13 @@ template <typename E> bool enumCombo(const char* label, E& value, const char* (*
 // keyboard thrust (the app's own: kept by both resets, set by a lesson step).
 void physicsSection(App& app) {
     // Opens for a scene that uses it (thruster, feather and stone, the mistakes), else closed.
-    const std::string scene = app.scenePath + "\n" + app.scene.name;
+    const std::string scene = app.sim.scenePath + "\n" + app.sim.scene.name;
     if (scene != app.ui.physicsFollowedScene) {
-        ImGui::SetNextItemOpen(usesPhysicsSection(app), ImGuiCond_Always);
+        ImGui::SetNextItemOpen(app.sim.usesPhysicsSection(), ImGuiCond_Always);
         app.ui.physicsFollowedScene = scene;
     }
     if (!ImGui::CollapsingHeader("Physics")) return;
-    WorldSettings& s = app.world.settings;
+    WorldSettings& s = app.sim.world().settings;
     enumCombo("resolve", s.resolve, resolveName);
     tooltip("momentum: with Newton, the lecture's formula u = (m1·v1 + m2·v2)/(m1 + m2), "
             "v' = u - C·(v - u)\nreflect: without Newton, each body reverses its own component "
@@ -324,22 +325,23 @@ void physicsSection(App& app) {
         tooltip((std::string("Slide: \"") + mistakeSlide(mistake) + "\"").c_str());
     }
     ImGui::Separator();
-    ImGui::Checkbox("Thrust (arrow keys)", &app.thrust.on);
+    ImGui::Checkbox("Thrust (arrow keys)", &app.sim.thrust.on);
     tooltip("Hold the arrow keys to push the selected block with the thrust force (added to its "
             "own force while held). The arrows then do not step a lesson: PageDown / PageUp do "
             "(slide \"Spaceship thruster: big ship: slow acceleration; small ship: fast\")");
-    float thrust = static_cast<float>(app.thrust.force);
+    float thrust = static_cast<float>(app.sim.thrust.force);
     if (ImGui::SliderFloat("thrust force", &thrust, 0.1f, 1000.0f, "%.3g N",
                            ImGuiSliderFlags_Logarithmic)) {
-        acceptTyped(app, "thrust force", thrust, app.thrust.force, limits::kThrust,
-                    app.thrust.force);
+        acceptTyped(app, "thrust force", thrust, app.sim.thrust.force, limits::kThrust,
+                    app.sim.thrust.force);
     }
     tooltip("F in N: the same force gives a heavy block a small acceleration a = F/m, a light one "
             "a large one (Ctrl+click to type)");
     typedWarning(app, "thrust force");
-    if (app.thrust.on &&
-        !(app.selected >= 0 && app.selected < static_cast<int>(app.world.blocks.size()) &&
-          app.world.blocks[static_cast<std::size_t>(app.selected)].isDynamic())) {
+    if (app.sim.thrust.on &&
+        !(app.sim.selected >= 0 &&
+          app.sim.selected < static_cast<int>(app.sim.world().blocks.size()) &&
+          app.sim.world().blocks[static_cast<std::size_t>(app.sim.selected)].isDynamic())) {
         ImGui::TextColored(uiDimColor(), "Select a moving block to push it.");
     }
 }
@@ -352,7 +354,7 @@ void blockForceField(App& app, Block& b) {
         acceptTyped2(app, "force", f, b.force, limits::kForce, force) &&
         acceptAcceleration(app, "force", force, b.mass)) {
         b.force = force;
-        noteEdit(app, true);
+        app.sim.noteEdit(true);
     }
     tooltip("A constant force on the block (N), a = F/m (Ctrl+click to type); its arrow is drawn "
             "with the arrows overlay");
@@ -361,26 +363,26 @@ void blockForceField(App& app, Block& b) {
 
 void selectedSection(App& app) {
     // Opens when a block gets selected, closes when the selection goes; the user may still fold it.
-    if (app.selected != app.ui.panelFollowedSelection) {
-        ImGui::SetNextItemOpen(app.selected >= 0, ImGuiCond_Always);
-        app.ui.panelFollowedSelection = app.selected;
+    if (app.sim.selected != app.ui.panelFollowedSelection) {
+        ImGui::SetNextItemOpen(app.sim.selected >= 0, ImGuiCond_Always);
+        app.ui.panelFollowedSelection = app.sim.selected;
     }
     if (!ImGui::CollapsingHeader("Selected block")) return;
-    const int i = app.selected;
-    if (i < 0 || i >= static_cast<int>(app.world.blocks.size())) {
+    const int i = app.sim.selected;
+    if (i < 0 || i >= static_cast<int>(app.sim.world().blocks.size())) {
         ImGui::TextColored(uiDimColor(), "Click a block to select it.");
         ImGui::TextColored(uiDimColor(), "Double-click empty space to add one.");
         return;
     }
-    Block& b = app.world.blocks[static_cast<std::size_t>(i)];
-    ImGui::Text("%s", blockDisplayName(app, i).c_str());
+    Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
+    ImGui::Text("%s", app.sim.blockDisplayName(i).c_str());
     int kind = static_cast<int>(b.kind);
     bool changed = ImGui::RadioButton("dynamic", &kind, 0);
     ImGui::SameLine();
     changed |= ImGui::RadioButton("static", &kind, 1);
     ImGui::SameLine();
     changed |= ImGui::RadioButton("kinematic", &kind, 2);
-    if (changed) setBlockKind(app, i, static_cast<BodyKind>(kind));
+    if (changed) app.sim.setBlockKind(i, static_cast<BodyKind>(kind));
     if (b.isDynamic()) {
         float mass = static_cast<float>(b.mass);
         double newMass = b.mass;
@@ -389,7 +391,7 @@ void selectedSection(App& app) {
             acceptTyped(app, "mass", mass, b.mass, limits::kMass, newMass) &&
             acceptAcceleration(app, "mass", b.force, newMass)) {
             b.mass = newMass;
-            noteEdit(app, true);
+            app.sim.noteEdit(true);
         }
         typedWarning(app, "mass");
         blockForceField(app, b);
@@ -400,7 +402,7 @@ void selectedSection(App& app) {
     if (ImGui::DragFloat2("size", size, 0.02f, 0.05f, 50.0f, "%.2f m")) {
         Vec2 wanted = b.size;
         if (acceptTyped2(app, "size", size, b.size, limits::kSize, wanted) &&
-            !setBlockSize(app, i, wanted)) {
+            !app.sim.setBlockSize(i, wanted)) {
             app.ui.typedWarning.note(
                 "size", {false, 0.0, "size: that size would overlap another block or a wall"});
         }
@@ -410,7 +412,7 @@ void selectedSection(App& app) {
         float v[2] = {static_cast<float>(b.velocity.x), static_cast<float>(b.velocity.y)};
         if (ImGui::DragFloat2("velocity", v, 0.05f, -1000.0f, 1000.0f, "%.2f m/s") &&
             acceptTyped2(app, "velocity", v, b.velocity, limits::kSpeed, b.velocity)) {
-            noteEdit(app, true);
+            app.sim.noteEdit(true);
         }
         typedWarning(app, "velocity");
     }
@@ -418,30 +420,29 @@ void selectedSection(App& app) {
     if (ImGui::Button("Delete block")) deleteSelected(app);
 }
 
-void statisticsSection(App& app) {
+void statisticsSection(const Run& run, const UiState& ui) {
     if (!ImGui::CollapsingHeader("Statistics")) return;
-    const StepStats& s = app.stats;
+    const StepStats& s = run.stats;
     if (!ImGui::BeginTable("stats", 2, ImGuiTableFlags_SizingStretchProp)) return;
     statRow("collisions / frame", "%.0f", s.collisions);
     statRow("events / frame", "%.0f", s.events);
     statRow("largest overlap", "%.4f m", s.maxPenetration);
-    statRow("event-cap hits", "%.0f", static_cast<double>(app.totals.eventCapHits));
+    statRow("event-cap hits", "%.0f", static_cast<double>(run.totals.eventCapHits));
     statRow("step time", "%.3f ms", s.stepMs);
-    statRow("collisions (total)", "%.0f", static_cast<double>(app.totals.collisions));
+    statRow("collisions (total)", "%.0f", static_cast<double>(run.totals.collisions));
     statRow("momentum x", "%.3f kg·m/s", s.momentum.x);
     statRow("momentum y", "%.3f kg·m/s", s.momentum.y);
     statRow("kinetic energy", "%.3f J", s.kineticEnergy);
     statRow("total energy", "%.3f J", s.kineticEnergy + s.potentialEnergy);
-    if (app.frameMsSmoothed > 0.0) {
-        statRow("display frame", "%.1f ms", app.frameMsSmoothed);
-        statRow("frames / second", "%.0f", 1000.0 / app.frameMsSmoothed);
+    if (ui.frameMsSmoothed > 0.0) {
+        statRow("display frame", "%.1f ms", ui.frameMsSmoothed);
+        statRow("frames / second", "%.0f", 1000.0 / ui.frameMsSmoothed);
     }
     ImGui::EndTable();
 }
 
-void overlaysSection(App& app) {
+void overlaysSection(Overlays& o) {
     if (!ImGui::CollapsingHeader("Overlays", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    Overlays& o = app.show;
     if (!ImGui::BeginTable("overlays", 2, ImGuiTableFlags_SizingStretchSame)) return;
     for (const OverlayInfo& info : kOverlays) {
         ImGui::TableNextColumn();
@@ -453,59 +454,59 @@ void overlaysSection(App& app) {
 
 void viewSection(App& app) {
     if (!ImGui::CollapsingHeader("View")) return;
-    bool com = app.frame == ViewFrame::CentreOfMass;
+    bool com = app.view.frame == ViewFrame::CentreOfMass;
     if (ImGui::Checkbox("centre-of-mass frame (U)", &com))
-        setViewFrame(app, com ? ViewFrame::CentreOfMass : ViewFrame::World);
+        setViewFrame(app.view, com ? ViewFrame::CentreOfMass : ViewFrame::World);
     tooltip("The view moves with the centre of mass's velocity u and the arrows show w = v - u "
             "(the walls drift across the view: they move at -u in this frame)");
     if (ImGui::SmallButton("clear trails (C)")) applyAction(app, Action::ClearTrails);
-    float scale = app.uiScale;
+    float scale = app.view.uiScale;
     if (ImGui::SliderFloat("UI scale", &scale, 0.75f, 3.0f, "%.2f")) {
         // Applied when released: rebuilding the font under the cursor would fight the slider.
-        app.note = "UI scale applies on release";
+        app.ui.messages.note = "UI scale applies on release";
     }
     constexpr limits::Range kUiScaleRange{kMinUiScale, kMaxUiScale, ""};
-    double applied = app.uiScale;
+    double applied = app.view.uiScale;
     if (ImGui::IsItemDeactivatedAfterEdit() &&
-        acceptTyped(app, "UI scale", scale, app.uiScale, kUiScaleRange, applied)) {
-        setUiScale(app, static_cast<float>(applied));
+        acceptTyped(app, "UI scale", scale, app.view.uiScale, kUiScaleRange, applied)) {
+        setUiScale(app.view, static_cast<float>(applied));
     }
     typedWarning(app, "UI scale");
-    float labels = app.labelScale;
+    float labels = app.view.labelScale;
     if (ImGui::SliderFloat("scene labels", &labels, kMinLabelScale, kMaxLabelScale, "%.2fx")) {
-        app.note = "Label size applies on release";
+        app.ui.messages.note = "Label size applies on release";
     }
     tooltip("Size of the block names and numbers in the scene, apart from the UI scale");
     constexpr limits::Range kLabelRange{kMinLabelScale, kMaxLabelScale, ""};
-    double labelScale = app.labelScale;
+    double labelScale = app.view.labelScale;
     if (ImGui::IsItemDeactivatedAfterEdit() &&
-        acceptTyped(app, "scene labels", labels, app.labelScale, kLabelRange, labelScale)) {
-        app.labelScale = static_cast<float>(labelScale);
+        acceptTyped(app, "scene labels", labels, app.view.labelScale, kLabelRange, labelScale)) {
+        app.view.labelScale = static_cast<float>(labelScale);
     }
     typedWarning(app, "scene labels");
-    ImGui::Checkbox("light theme (bright rooms)", &app.lightTheme);
+    ImGui::Checkbox("light theme (bright rooms)", &app.view.lightTheme);
     tooltip("Dark text on a light scene and panels: a projector in a lit room washes dark "
             "themes out");
-    bool sound = soundOn(app.sound, app.lesson.active());
+    bool sound = soundOn(app.sim.sound, app.lesson.active());
     if (ImGui::Checkbox("sound (M)", &sound)) applyAction(app, Action::ToggleSound);
     tooltip("A knock at each collision: louder for a larger impulse, higher for a smaller block, "
             "lower on a wall; at most 20 a second (a gas hums). Off by default outside lessons");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
-    ImGui::SliderFloat("volume", &app.sound.volume, 0.0f, 1.0f, "%.2f",
+    ImGui::SliderFloat("volume", &app.sim.sound.volume, 0.0f, 1.0f, "%.2f",
                        ImGuiSliderFlags_AlwaysClamp);
     if (ImGui::Button("Fit view (F)")) applyAction(app, Action::FitView);
     ImGui::SameLine();
     if (ImGui::Button("Present (F5)")) applyAction(app, Action::TogglePresent);
     ImGui::SameLine();
-    if (ImGui::Button("Help (F1)")) app.helpOpen = true;
+    if (ImGui::Button("Help (F1)")) app.ui.helpOpen = true;
 }
 
 } // namespace
 
 void drawControlsPanel(App& app) {
     const ImGuiIO& io = ImGui::GetIO();
-    const float width = static_cast<float>(panelWidth(app.uiScale, io.DisplaySize.x));
+    const float width = static_cast<float>(panelWidth(app.view.uiScale, io.DisplaySize.x));
     ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y), ImGuiCond_Always);
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
@@ -516,29 +517,29 @@ void drawControlsPanel(App& app) {
         return;
     }
     recordShownWindow(app, "Controls");
-    const WorldSettings before = app.world.settings;
+    const WorldSettings before = app.sim.world().settings;
     ImGui::PushItemWidth(width * 0.52f);
     scenePicker(app);
-    if (!app.scene.description.empty()) {
+    if (!app.sim.scene.description.empty()) {
         // At most three lines; the rest scrolls (the panel itself must not, at 720p).
         const float lines = ImGui::GetTextLineHeightWithSpacing() * 3.0f;
         const float wrap = ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ScrollbarSize;
         const float needed =
-            ImGui::CalcTextSize(app.scene.description.c_str(), nullptr, false, wrap).y;
+            ImGui::CalcTextSize(app.sim.scene.description.c_str(), nullptr, false, wrap).y;
         ImGui::BeginChild("##description", ImVec2(0.0f, std::min(lines, needed + 2.0f)));
         ImGui::PushStyleColor(ImGuiCol_Text, uiDimColor());
-        textWrappedAtSpaces(app.scene.description);
+        textWrappedAtSpaces(app.sim.scene.description);
         ImGui::PopStyleColor();
         ImGui::EndChild();
     }
-    if (!app.error.empty()) {
+    if (!app.ui.messages.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiErrorColor());
-        textWrappedAtSpaces(app.error);
+        textWrappedAtSpaces(app.ui.messages.error);
         ImGui::PopStyleColor();
-        if (ImGui::SmallButton("dismiss")) app.error.clear();
-    } else if (!app.note.empty()) {
+        if (ImGui::SmallButton("dismiss")) app.ui.messages.error.clear();
+    } else if (!app.ui.messages.note.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiNoteColor());
-        textWrappedAtSpaces(app.note);
+        textWrappedAtSpaces(app.ui.messages.note);
         ImGui::PopStyleColor();
     }
     lessonSection(app);
@@ -550,9 +551,9 @@ void drawControlsPanel(App& app) {
     ImGui::PushItemWidth(width * 0.52f);
     simulationSection(app);
     physicsSection(app);
-    overlaysSection(app);
+    overlaysSection(app.view.show);
     selectedSection(app);
-    statisticsSection(app);
+    statisticsSection(app.sim.run, app.ui);
     viewSection(app);
     fileSection(app);
     compareSection(app);
@@ -560,5 +561,5 @@ void drawControlsPanel(App& app) {
     ImGui::EndChild();
     ImGui::PopItemWidth();
     ImGui::End();
-    if (settingsDiffer(before, app.world.settings)) noteEdit(app, false);
+    if (settingsDiffer(before, app.sim.world().settings)) app.sim.noteEdit(false);
 }

@@ -24,32 +24,32 @@ void centreNext() {
 }
 
 void quitDialog(App& app) {
-    if (!app.quitDialogOpen && !ImGui::IsPopupOpen(kQuitTitle)) return;
-    if (app.quitDialogOpen && !ImGui::IsPopupOpen(kQuitTitle)) ImGui::OpenPopup(kQuitTitle);
+    if (!app.ui.quitDialogOpen && !ImGui::IsPopupOpen(kQuitTitle)) return;
+    if (app.ui.quitDialogOpen && !ImGui::IsPopupOpen(kQuitTitle)) ImGui::OpenPopup(kQuitTitle);
     centreNext();
     if (!ImGui::BeginPopupModal(kQuitTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
     recordShownWindow(app, kQuitTitle);
     ImGui::TextUnformatted("This scene has edits that are not saved.");
     if (ImGui::Button("Save first...")) {
-        app.quitDialogOpen = false;
-        app.saveDialogOpen = true;
-        app.saveDialogPath = suggestedSavePath(app);
+        app.ui.quitDialogOpen = false;
+        app.ui.saveDialogOpen = true;
+        app.ui.saveDialogPath = suggestedSavePath(app);
         gQuitAfterSave = true;
     }
     ImGui::SameLine();
-    if (ImGui::Button("Quit without saving")) app.quitRequested = true;
+    if (ImGui::Button("Quit without saving")) app.ui.quitRequested = true;
     ImGui::SameLine();
-    if (ImGui::Button("Cancel (Esc)")) app.quitDialogOpen = false;
-    if (!app.quitDialogOpen) ImGui::CloseCurrentPopup();
+    if (ImGui::Button("Cancel (Esc)")) app.ui.quitDialogOpen = false;
+    if (!app.ui.quitDialogOpen) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
 }
 
 void saveDialog(App& app) {
-    if (!app.saveDialogOpen && !ImGui::IsPopupOpen(kSaveTitle)) return;
+    if (!app.ui.saveDialogOpen && !ImGui::IsPopupOpen(kSaveTitle)) return;
     static bool focus = false;
-    if (app.saveDialogOpen && !ImGui::IsPopupOpen(kSaveTitle)) {
+    if (app.ui.saveDialogOpen && !ImGui::IsPopupOpen(kSaveTitle)) {
         ImGui::OpenPopup(kSaveTitle);
-        app.error.clear();
+        app.ui.messages.error.clear();
         focus = true;
     }
     centreNext();
@@ -62,22 +62,23 @@ void saveDialog(App& app) {
         focus = false;
     }
     const bool enter =
-        ImGui::InputText("##path", &app.saveDialogPath, ImGuiInputTextFlags_EnterReturnsTrue);
+        ImGui::InputText("##path", &app.ui.saveDialogPath, ImGuiInputTextFlags_EnterReturnsTrue);
     std::error_code ec;
     const bool exists =
-        !app.saveDialogPath.empty() && std::filesystem::exists(app.saveDialogPath, ec);
+        !app.ui.saveDialogPath.empty() && std::filesystem::exists(app.ui.saveDialogPath, ec);
     if (exists) ImGui::TextColored(uiWarningColor(), "That file exists: Overwrite replaces it.");
-    if (!app.error.empty()) ImGui::TextColored(uiErrorColor(), "%s", app.error.c_str());
+    if (!app.ui.messages.error.empty())
+        ImGui::TextColored(uiErrorColor(), "%s", app.ui.messages.error.c_str());
     // Enter saves only when nothing would be overwritten: overwriting takes the button.
     if (ImGui::Button(exists ? "Overwrite" : "Save") || (enter && !exists)) {
-        if (saveCurrentScene(app, app.saveDialogPath)) {
-            app.saveDialogOpen = false;
-            if (gQuitAfterSave) app.quitRequested = true;
+        if (saveCurrentScene(app, app.ui.saveDialogPath)) {
+            app.ui.saveDialogOpen = false;
+            if (gQuitAfterSave) app.ui.quitRequested = true;
         }
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel (Esc)")) app.saveDialogOpen = false;
-    if (!app.saveDialogOpen) {
+    if (ImGui::Button("Cancel (Esc)")) app.ui.saveDialogOpen = false;
+    if (!app.ui.saveDialogOpen) {
         gQuitAfterSave = false;
         ImGui::CloseCurrentPopup();
     }

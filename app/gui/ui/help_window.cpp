@@ -25,7 +25,7 @@ void drawHelpWindow(App& app) {
     ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f),
                                         ImVec2(io.DisplaySize.x * 0.9f, io.DisplaySize.y * 0.9f));
     ImGui::SetNextWindowBgAlpha(0.98f);
-    if (!ImGui::Begin("Help", &app.helpOpen,
+    if (!ImGui::Begin("Help", &app.ui.helpOpen,
                       ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
         ImGui::End();
         return;

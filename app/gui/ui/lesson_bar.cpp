@@ -2,8 +2,8 @@
 // present mode the method and t: lessonBarStatus) beside it, the caption under it, then the
 // question (or, after the next press, its answer). The one caption of a lesson, presenting or
 // not (present mode's one-line caption is for scenes). Opaque, so nothing shows through; its
-// height is kept in app.captionHeight and the scene's viewport starts below it. In present mode
-// it is the scene's caption, not a window: --layout-json lists no window there.
+// height is kept in app.view.captionHeight and the scene's viewport starts below it. In present
+// mode it is the scene's caption, not a window: --layout-json lists no window there.
 #include "app_frame.h"
 #include "overlay_window.h"
 #include "ui_style.h"
@@ -17,8 +17,8 @@ void drawLessonCaption(App& app) {
     const LessonStep* step = s.step();
     if (!step) return;
     const ImGuiIO& io = ImGui::GetIO();
-    const float left = app.uiVisible && !app.presentMode
-                           ? static_cast<float>(panelWidth(app.uiScale, io.DisplaySize.x))
+    const float left = app.view.uiVisible && !app.view.presentMode
+                           ? static_cast<float>(panelWidth(app.view.uiScale, io.DisplaySize.x))
                            : 0.0f;
     ImGui::SetNextWindowPos(ImVec2(left, 0.0f), ImGuiCond_Always);
     const float width = io.DisplaySize.x - left; // fixed width, the height follows the text
@@ -33,15 +33,15 @@ void drawLessonCaption(App& app) {
         ImGui::End();
         return;
     }
-    if (!app.presentMode) recordShownWindow(app, "Lesson caption");
+    if (!app.view.presentMode) recordShownWindow(app, "Lesson caption");
     const std::string heading = lessonHeading(s);
     ImGui::SetWindowFontScale(1.25f);
     ImGui::TextUnformatted(heading.c_str());
     ImGui::SetWindowFontScale(1.0f);
     ImGui::SameLine();
-    const std::string status =
-        lessonBarStatus(app.presentMode, app.world.settings.method, app.world.time);
-    if (app.presentMode)
+    const std::string status = lessonBarStatus(
+        app.view.presentMode, app.sim.world().settings.method, app.sim.world().time);
+    if (app.view.presentMode)
         ImGui::Text("   %s", status.c_str());
     else
         ImGui::TextColored(uiDimColor(), "   %s", status.c_str());
@@ -58,6 +58,6 @@ void drawLessonCaption(App& app) {
     if (!s.digits.empty())
         ImGui::TextColored(uiDimColor(), "Go to step %s (Enter)", s.digits.c_str());
     ImGui::PopTextWrapPos();
-    app.captionHeight = ImGui::GetWindowHeight();
+    app.view.captionHeight = ImGui::GetWindowHeight();
     ImGui::End();
 }

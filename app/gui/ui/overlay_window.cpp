@@ -15,8 +15,8 @@ constexpr float kWindowAlpha = 0.97f;
 
 // A box of the world on screen, grown by `grow` px on every side (room for its labels).
 ScreenRect screenBox(const App& app, Vec2 centre, Vec2 size, double grow) {
-    const Vec2 a = app.camera.worldToScreen(centre - size * 0.5);
-    const Vec2 b = app.camera.worldToScreen(centre + size * 0.5);
+    const Vec2 a = app.view.camera.worldToScreen(centre - size * 0.5);
+    const Vec2 b = app.view.camera.worldToScreen(centre + size * 0.5);
     const double x = std::min(a.x, b.x) - grow, y = std::min(a.y, b.y) - grow;
     return {x, y, std::abs(b.x - a.x) + 2.0 * grow, std::abs(b.y - a.y) + 2.0 * grow};
 }
@@ -25,19 +25,19 @@ ScreenRect screenBox(const App& app, Vec2 centre, Vec2 size, double grow) {
 
 ImVec2 sceneCaptionPlace(const App& app, float width, float height,
                          const std::vector<WorldBox>& boxes) {
-    const double font = ImGui::GetFontSize(), s = app.uiScale;
-    const ScreenRect& vp = app.camera.viewport();
+    const double font = ImGui::GetFontSize(), s = app.view.uiScale;
+    const ScreenRect& vp = app.view.camera.viewport();
     // The status badge along the top of the scene (method, t, PAUSED, the start hint).
     std::vector<ScreenRect> avoid = {{vp.x, vp.y, vp.width, font + 24.0 * s}};
     // The axis numbers under the world and left of it.
-    const ScreenRect w = worldRectOnScreen(app.camera, app.world.bounds);
+    const ScreenRect w = worldRectOnScreen(app.view.camera, app.sim.world().bounds);
     avoid.push_back({w.x - font, w.y + w.height, w.width + 4.0 * font, 1.6 * font});
     avoid.push_back({w.x - 4.0 * font, w.y - font, 4.0 * font, w.height + 2.0 * font});
-    for (const Block& b : app.world.blocks)
+    for (const Block& b : app.sim.world().blocks)
         avoid.push_back(screenBox(app, b.position, b.size, font));
     for (const WorldBox& b : boxes) avoid.push_back(screenBox(app, b.centre, b.size, font * 1.5));
     const ScreenRect r = placeCaption(
-        width, height, vp, worldRectOnScreen(app.camera, app.world.bounds), avoid, 10.0 * s);
+        width, height, vp, worldRectOnScreen(app.view.camera, app.sim.world().bounds), avoid, 10.0 * s);
     return ImVec2(static_cast<float>(r.x), static_cast<float>(r.y));
 }
 
@@ -45,7 +45,7 @@ void drawSceneCaption(const App& app, const std::vector<CaptionLine>& lines,
                       const std::vector<WorldBox>& boxes) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     const float font = ImGui::GetFontSize();
-    const float s = app.uiScale;
+    const float s = app.view.uiScale;
     float width = 0.0f;
     for (const CaptionLine& l : lines)
         width = std::max(width, ImGui::CalcTextSize(l.text.c_str()).x);
@@ -64,7 +64,7 @@ void drawSceneCaption(const App& app, const std::vector<CaptionLine>& lines,
 
 void recordShownWindow(App& app, const char* name) {
     const ImVec2 p = ImGui::GetWindowPos(), s = ImGui::GetWindowSize();
-    app.shownWindows.push_back({name, {p.x, p.y, s.x, s.y}});
+    app.view.shownWindows.push_back({name, {p.x, p.y, s.x, s.y}});
     if (app.ui.keyboardFocus != name) return;
     app.ui.keyboardFocus.clear();
     // ImGui 1.86 has no public call for it: focus the window and let its navigation pick the
@@ -80,7 +80,7 @@ void recordShownWindow(App& app, const char* name) {
 std::string nextWindowForKeyboard(const App& app) {
     const ImGuiContext& g = *ImGui::GetCurrentContext();
     const ImGuiWindow* focused = g.NavWindow ? g.NavWindow->RootWindow : nullptr;
-    const std::vector<DockedWindow>& shown = app.shownWindows;
+    const std::vector<DockedWindow>& shown = app.view.shownWindows;
     if (shown.empty()) return "";
     for (std::size_t i = 0; focused && i < shown.size(); ++i) {
         const std::string& title = shown[i].name;
@@ -94,8 +94,8 @@ std::string nextWindowForKeyboard(const App& app) {
 bool beginOverlayWindow(App& app, OverlayId id) {
     const OverlayInfo& info = overlayInfo(id);
     const char* title = info.title;
-    bool* open = &(app.show.*info.flag);
-    const ScreenRect* docked = app.layout.find(title);
+    bool* open = &(app.view.show.*info.flag);
+    const ScreenRect* docked = app.view.layout.find(title);
     ImGuiWindowFlags flags = ImGuiWindowFlags_NoSavedSettings;
     if (docked) {
         ImGui::SetNextWindowPos(
@@ -119,21 +119,22 @@ bool beginOverlayWindow(App& app, OverlayId id) {
         std::string& pressed = app.ui.titlePressed;
         if (ImGui::IsWindowHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && onTitle)
             pressed = title;
-        if (pressed == title && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 8.0f * app.uiScale)) {
-            setFloating(app, title, true);
+        if (pressed == title &&
+            ImGui::IsMouseDragging(ImGuiMouseButton_Left, 8.0f * app.view.uiScale)) {
+            setFloating(app.view, title, true);
             pressed.clear();
         }
         if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) pressed.clear();
     } else {
         // Floating: kept on screen, and a button to put it back.
         const ImVec2 display = io.DisplaySize;
-        const float keep = 40.0f * app.uiScale;
+        const float keep = 40.0f * app.view.uiScale;
         ImVec2 p = pos;
         p.x = std::clamp(p.x, keep - size.x, display.x - keep);
         p.y = std::clamp(p.y, 0.0f, display.y - ImGui::GetFrameHeight());
         if (p.x != pos.x || p.y != pos.y) ImGui::SetWindowPos(p);
         if (visible) {
-            if (ImGui::SmallButton("dock")) setFloating(app, title, false);
+            if (ImGui::SmallButton("dock")) setFloating(app.view, title, false);
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("Put the window back beside the scene");
         }
     }
@@ -141,12 +142,12 @@ bool beginOverlayWindow(App& app, OverlayId id) {
 }
 
 OverlayWindow::OverlayWindow(App& app, OverlayId id) {
-    if (app.presentMode) return; // present mode: the scene only
+    if (app.view.presentMode) return; // present mode: the scene only
     begun_ = true;
     open_ = beginOverlayWindow(app, id);
     // A small docked window (every overlay on at 1280x720) draws its contents in the compact
     // font, baked at its own size (a scaled font would be blurred).
-    const ScreenRect* docked = app.layout.find(overlayInfo(id).title);
+    const ScreenRect* docked = app.view.layout.find(overlayInfo(id).title);
     if (open_ && docked && compactWindow(docked->width, docked->height, ImGui::GetFontSize())) {
         ImGui::PushFont(uiCompactFont());
         font_ = true;
@@ -167,7 +168,7 @@ void drawOverlays(App& app) {
 #undef SANDBOX_OVERLAY_DRAW
     static_assert(sizeof kDraw / sizeof kDraw[0] == kOverlayCount, "one draw function a row");
     for (std::size_t i = 0; i < kOverlayCount; ++i) {
-        if (app.show.*kOverlays[i].flag) kDraw[i](app);
+        if (app.view.show.*kOverlays[i].flag) kDraw[i](app);
     }
 }
 

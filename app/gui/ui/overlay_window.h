@@ -1,11 +1,11 @@
 // What the overlays share: the draw functions the table in overlays.h names, drawn in its order,
-// and their window: docked where the frame's layout (app.layout) puts it, around the scene and
+// and their window: docked where the frame's layout (app.view.layout) puts it, around the scene and
 // never over the world, and opaque enough to read. Dragging a docked window by its title bar
 // pulls it out to float (movable, resizable); its "dock" button puts it back. In present mode no
 // window is drawn.
 #pragma once
 
-#include "app_state.h"
+#include "app.h"
 
 #include <imgui.h>
 
@@ -13,13 +13,13 @@
 #include <vector>
 
 // Begins the window of row `id` (ImGui::End() must follow, as with Begin), with the row's title,
-// docked at its rectangle in app.layout, or floating when pulled out; its close button clears the
-// row's flag. The one placement function: every overlay window goes through it (through
+// docked at its rectangle in app.view.layout, or floating when pulled out; its close button clears
+// the row's flag. The one placement function: every overlay window goes through it (through
 // OverlayWindow).
 bool beginOverlayWindow(App& app, OverlayId id);
-// Notes the current window (between Begin and End) in app.shownWindows, for --layout-json; when
-// the keyboard focus was asked for it (app.ui.keyboardFocus), moves ImGui's navigation there,
-// its focus ring on the window's first control.
+// Notes the current window (between Begin and End) in app.view.shownWindows, for --layout-json;
+// when the keyboard focus was asked for it (app.ui.keyboardFocus), moves ImGui's navigation
+// there, its focus ring on the window's first control.
 void recordShownWindow(App& app, const char* name);
 // F6: the window after the one with the keyboard focus in this frame's drawing order (the panel,
 // the overlay windows, Help), or the first; "" when none is shown.

@@ -56,8 +56,8 @@ const char* kindText(BodyKind kind) {
 int hoveredBlock(const App& app) {
     const ImGuiIO& io = ImGui::GetIO();
     const Vec2 mouse{io.MousePos.x, io.MousePos.y};
-    if (io.WantCaptureMouse || !app.camera.viewport().contains(mouse)) return -1;
-    return pickBlock(app.world, app.camera.screenToWorld(mouse), 0.0);
+    if (io.WantCaptureMouse || !app.view.camera.viewport().contains(mouse)) return -1;
+    return pickBlock(app.sim.world(), app.view.camera.screenToWorld(mouse), 0.0);
 }
 
 // The rectangle from (x0, y0) to (x1, y1), px.
@@ -97,35 +97,35 @@ constexpr int kCrowdedScene = 20; // blocks
 // `placed`: the rectangles taken on screen, the blocks and each label (the arrows' values
 // avoid them).
 void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
-    const int n = static_cast<int>(app.world.blocks.size());
+    const int n = static_cast<int>(app.sim.world().blocks.size());
     if (n > kMaxLabelledBlocks) return;
     const float lineHeight = ImGui::GetFontSize();
     // Rectangles already taken on screen: the blocks themselves, then each label placed.
     placed.reserve(static_cast<std::size_t>(2 * n));
-    for (const Block& b : app.world.blocks) {
-        const Vec2 lo = app.camera.worldToScreen(b.position - b.size * 0.5);
-        const Vec2 hi = app.camera.worldToScreen(b.position + b.size * 0.5);
+    for (const Block& b : app.sim.world().blocks) {
+        const Vec2 lo = app.view.camera.worldToScreen(b.position - b.size * 0.5);
+        const Vec2 hi = app.view.camera.worldToScreen(b.position + b.size * 0.5);
         placed.push_back(spanning(std::min(lo.x, hi.x), std::min(lo.y, hi.y), std::max(lo.x, hi.x),
                                   std::max(lo.y, hi.y)));
     }
     for (int i = 0; i < n; ++i) {
-        const Block& b = app.world.blocks[static_cast<std::size_t>(i)];
-        const bool named = i < static_cast<int>(app.labels.size()) &&
-                           !app.labels[static_cast<std::size_t>(i)].name.empty();
+        const Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
+        const bool named = i < static_cast<int>(app.sim.labels.size()) &&
+                           !app.sim.labels[static_cast<std::size_t>(i)].name.empty();
         if (!named && n > kCrowdedScene) continue;
-        const std::string name = blockDisplayName(app, i);
+        const std::string name = app.sim.blockDisplayName(i);
         char second[48] = "";
         if (b.isDynamic()) {
             // A name that states the mass ("m1 = 1 kg") needs no second line saying it again.
-            if (!nameStatesMass(app.labels[static_cast<std::size_t>(i)].name)) {
+            if (!nameStatesMass(app.sim.labels[static_cast<std::size_t>(i)].name)) {
                 std::snprintf(second, sizeof second, "%s kg", formatNumber(b.mass).c_str());
             }
         } else {
             std::snprintf(second, sizeof second, "%s", kindText(b.kind));
         }
-        const Vec2 c = app.camera.worldToScreen(b.position);
-        const double wPx = app.camera.metresToPixels(b.size.x);
-        const double hPx = app.camera.metresToPixels(b.size.y);
+        const Vec2 c = app.view.camera.worldToScreen(b.position);
+        const double wPx = app.view.camera.metresToPixels(b.size.x);
+        const double hPx = app.view.camera.metresToPixels(b.size.y);
         const ImVec2 nameSize = ImGui::CalcTextSize(name.c_str());
         const ImVec2 secondSize = ImGui::CalcTextSize(second);
         const bool twoLines = second[0] && hPx > 2.6 * lineHeight && secondSize.x < wPx - 6.0;
@@ -142,7 +142,7 @@ void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed)
                            ImVec2(static_cast<float>(c.x) - secondSize.x * 0.5f, top + lineHeight),
                            IM_COL32(255, 255, 255, 190), second);
             }
-        } else if (n <= kCrowdedScene || i == app.selected) {
+        } else if (n <= kCrowdedScene || i == app.sim.selected) {
             // Beside the block; in a crowded scene only for the selected one (a hundred names
             // pushed around each other are noise).
             const float x = static_cast<float>(c.x) - nameSize.x * 0.5f;
@@ -156,8 +156,8 @@ void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed)
 }
 
 void drawAxisNumbers(const App& app, ImDrawList* dl) {
-    const Camera& cam = app.camera;
-    const Bounds& bounds = app.world.bounds;
+    const Camera& cam = app.view.camera;
+    const Bounds& bounds = app.sim.world().bounds;
     const double step = gridSpacing(cam.pixelsPerMetre(), 12.0) * 5.0;
     const ImU32 color = packed(theme().axis);
     const float gap = 14.0f;
@@ -211,43 +211,46 @@ std::string fitted(const std::string& text, float width) {
 }
 
 void drawBadge(const App& app, ImDrawList* dl) {
-    const ScreenRect& vp = app.camera.viewport();
-    const float pad = 8.0f * app.uiScale;
+    const ScreenRect& vp = app.view.camera.viewport();
+    const float pad = 8.0f * app.view.uiScale;
     ImVec2 at(static_cast<float>(vp.x) + pad * 1.5f, static_cast<float>(vp.y) + pad);
     const ImU32 plateBg = uiLightTheme() ? IM_COL32(235, 236, 240, 230) : IM_COL32(20, 22, 30, 200);
     const ImU32 plateFg = uiLightTheme() ? IM_COL32(20, 22, 30, 255) : IM_COL32(225, 230, 240, 255);
-    if (app.presentMode && app.lesson.active()) {
+    if (app.view.presentMode && app.lesson.active()) {
         // A lesson's caption bar says it all (lesson_bar.cpp): nothing more over the scene.
-    } else if (app.presentMode) {
+    } else if (app.view.presentMode) {
         // The caption: what the scene is, the method and the time, on one line.
         const float room = static_cast<float>(vp.width) - pad * 4.0f;
-        std::string caption = presentCaption(app.scene.name, app.scene.description,
-                                             app.world.settings.method, app.world.time);
+        std::string caption = presentCaption(app.sim.scene.name, app.sim.scene.description,
+                                             app.sim.world().settings.method, app.sim.world().time);
         if (ImGui::CalcTextSize(caption.c_str()).x > room) {
-            const std::string tail =
-                presentCaption("", "", app.world.settings.method, app.world.time, false);
+            const std::string tail = presentCaption("", "", app.sim.world().settings.method,
+                                                    app.sim.world().time, false);
             const float tailWidth = ImGui::CalcTextSize(tail.c_str()).x;
-            std::string what = app.scene.name;
-            if (!app.scene.description.empty()) what += ": " + firstSentence(app.scene.description);
+            std::string what = app.sim.scene.name;
+            if (!app.sim.scene.description.empty())
+                what += ": " + firstSentence(app.sim.scene.description);
             caption = fitted(what, room - tailWidth) + tail;
         }
         at.x += plate(dl, at, caption.c_str(), plateBg, plateFg, pad);
     } else {
         char text[160];
         std::snprintf(text, sizeof text, "%s   t = %.2f s   %llu collision%s",
-                      methodName(app.world.settings.method), app.world.time,
-                      static_cast<unsigned long long>(app.totals.collisions),
-                      app.totals.collisions == 1 ? "" : "s");
+                      methodName(app.sim.world().settings.method), app.sim.world().time,
+                      static_cast<unsigned long long>(app.sim.run.totals.collisions),
+                      app.sim.run.totals.collisions == 1 ? "" : "s");
         at.x += plate(dl, at, text, plateBg, plateFg, pad);
     }
-    const char* state = app.paused ? "PAUSED" : app.slowMotion ? "SLOW MOTION  5 fps" : nullptr;
-    if (state && !app.presentMode) {
-        const ImU32 bg = app.paused ? IM_COL32(220, 150, 40, 235) : IM_COL32(60, 130, 220, 235);
+    const char* state = app.sim.paused       ? "PAUSED"
+                        : app.sim.slowMotion ? "SLOW MOTION  5 fps"
+                                             : nullptr;
+    if (state && !app.view.presentMode) {
+        const ImU32 bg = app.sim.paused ? IM_COL32(220, 150, 40, 235) : IM_COL32(60, 130, 220, 235);
         at.x += plate(dl, at, state, bg, IM_COL32(15, 15, 20, 255), pad);
     }
     // The frame of reference, when it is not the world's (the walls drift: that is why).
-    if (app.frame == ViewFrame::CentreOfMass && !app.presentMode) {
-        const Vec2 u = frameVelocity(app.world, app.frame);
+    if (app.view.frame == ViewFrame::CentreOfMass && !app.view.presentMode) {
+        const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
         const std::string text =
             "centre-of-mass frame, u = " +
             (isRoundingNoise(u.y, length(u))
@@ -257,7 +260,7 @@ void drawBadge(const App& app, ImDrawList* dl) {
                       pad);
     }
     // Paused at t = 0: how to start (the first time the app runs, with the first keys).
-    const std::string hint = startHint(app.paused, app.world.time, app.firstLaunch);
+    const std::string hint = startHint(app.sim.paused, app.sim.world().time, app.ui.firstLaunch);
     if (!hint.empty()) {
         plate(dl, at, hint.c_str(), IM_COL32(60, 150, 90, 235), IM_COL32(10, 16, 12, 255), pad);
     }
@@ -267,21 +270,21 @@ void drawBadge(const App& app, ImDrawList* dl) {
 // few blocks, no gravity and many collisions (high_mass_ratio's 3141).
 void drawLargeCount(const App& app, ImDrawList* dl) {
     std::size_t dynamic = 0;
-    for (const Block& b : app.world.blocks) dynamic += b.isDynamic();
+    for (const Block& b : app.sim.world().blocks) dynamic += b.isDynamic();
     // (No gravity: under gravity a resting block counts a contact every frame.)
-    if (dynamic == 0 || dynamic > 3 || app.totals.collisions < 100 ||
-        app.world.settings.gravity != Vec2{}) {
+    if (dynamic == 0 || dynamic > 3 || app.sim.run.totals.collisions < 100 ||
+        app.sim.world().settings.gravity != Vec2{}) {
         return;
     }
     char text[48];
     std::snprintf(text, sizeof text, "%llu",
-                  static_cast<unsigned long long>(app.totals.collisions));
+                  static_cast<unsigned long long>(app.sim.run.totals.collisions));
     ImFont* font = ImGui::GetFont();
     const float size = ImGui::GetFontSize() * 3.0f;
     const ImVec2 ts = font->CalcTextSizeA(size, 1e9f, 0.0f, text);
-    const ScreenRect world = worldRectOnScreen(app.camera, app.world.bounds);
-    const ImVec2 at(static_cast<float>(world.x + world.width) - ts.x - 12.0f * app.uiScale,
-                    static_cast<float>(world.y) + 8.0f * app.uiScale);
+    const ScreenRect world = worldRectOnScreen(app.view.camera, app.sim.world().bounds);
+    const ImVec2 at(static_cast<float>(world.x + world.width) - ts.x - 12.0f * app.view.uiScale,
+                    static_cast<float>(world.y) + 8.0f * app.view.uiScale);
     const ImU32 color = uiLightTheme() ? IM_COL32(30, 40, 60, 230) : IM_COL32(240, 240, 250, 230);
     dl->AddText(font, size, at, color, text);
     const char* unit = "collisions";
@@ -293,30 +296,30 @@ void drawLargeCount(const App& app, ImDrawList* dl) {
 // the centre-of-mass frame every arrow does (w1 = 4 m/s: the lecture's numbers), in a scene of
 // few blocks.
 void drawArrowValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
-    if (!app.show.vectors) return;
-    const bool relative = app.frame != ViewFrame::World;
-    const Vec2 u = frameVelocity(app.world, app.frame);
+    if (!app.view.show.vectors) return;
+    const bool relative = app.view.frame != ViewFrame::World;
+    const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
     const bool labelAll =
-        relative && app.world.blocks.size() <= static_cast<std::size_t>(kCrowdedScene);
+        relative && app.sim.world().blocks.size() <= static_cast<std::size_t>(kCrowdedScene);
     int written = 0;
-    for (std::size_t i = 0; i < app.world.blocks.size(); ++i) {
-        const Block& b = app.world.blocks[i];
+    for (std::size_t i = 0; i < app.sim.world().blocks.size(); ++i) {
+        const Block& b = app.sim.world().blocks[i];
         if (b.kind == BodyKind::Static || written >= kMaxArrowValueLabels) continue;
         const Vec2 w = b.velocity - u;
-        const ArrowOnScreen a = arrowOnScreen(app.camera, b.position, w * kVelocityArrowScale);
+        const ArrowOnScreen a = arrowOnScreen(app.view.camera, b.position, w * kVelocityArrowScale);
         if (a.toScale && !labelAll) continue;
         const std::string text =
-            relative
-                ? frameVelocityLabel(i < app.labels.size() ? app.labels[i].name : "", w, app.frame)
-                : formatNumber(length(w)) + " m/s";
+            relative ? frameVelocityLabel(i < app.sim.labels.size() ? app.sim.labels[i].name : "",
+                                          w, app.view.frame)
+                     : formatNumber(length(w)) + " m/s";
         const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
-        const ScreenRect& vp = app.camera.viewport();
+        const ScreenRect& vp = app.view.camera.viewport();
         // Over the arrow's head; every arrow's value (labelAll): under its block (the name is
         // over it), moved down a line at a time until it overlaps no value written before.
-        Vec2 at = app.camera.worldToScreen(a.tip);
+        Vec2 at = app.view.camera.worldToScreen(a.tip);
         at.y -= ts.y + 6.0;
         if (labelAll) {
-            at = app.camera.worldToScreen(b.position - Vec2{0.0, b.size.y * 0.5});
+            at = app.view.camera.worldToScreen(b.position - Vec2{0.0, b.size.y * 0.5});
             at.y += 3.0;
         }
         const float x = std::clamp(static_cast<float>(at.x) - ts.x * 0.5f, static_cast<float>(vp.x),
@@ -340,11 +343,12 @@ void drawArrowValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>& pl
 // head: the arrow's length is to scale only up to the knee.
 void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl) {
     int written = 0;
-    for (std::size_t i = 0; i < app.world.blocks.size() && written < kMaxArrowValueLabels; ++i) {
+    for (std::size_t i = 0; i < app.sim.world().blocks.size() && written < kMaxArrowValueLabels;
+         ++i) {
         const Vec2 f = shownForce(view, i);
         if (f == Vec2{}) continue;
-        const Block& b = app.world.blocks[i];
-        const ArrowOnScreen a = arrowOnScreen(app.camera, b.position, f * kForceArrowScale);
+        const Block& b = app.sim.world().blocks[i];
+        const ArrowOnScreen a = arrowOnScreen(app.view.camera, b.position, f * kForceArrowScale);
         char text[80];
         if (f.x == 0.0 || f.y == 0.0) {
             std::snprintf(text, sizeof text, "F = %s N", formatNumber(length(f)).c_str());
@@ -352,9 +356,9 @@ void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl) {
             std::snprintf(text, sizeof text, "F = (%s, %s) N", formatNumber(f.x).c_str(),
                           formatNumber(f.y).c_str());
         }
-        const Vec2 tip = app.camera.worldToScreen(a.tip);
+        const Vec2 tip = app.view.camera.worldToScreen(a.tip);
         const ImVec2 ts = ImGui::CalcTextSize(text);
-        const ScreenRect& vp = app.camera.viewport();
+        const ScreenRect& vp = app.view.camera.viewport();
         // Past the head, along the arrow: beside it for a mostly sideways force, above or
         // below it for a mostly vertical one (kept in the view).
         const float gap = 6.0f, tx = static_cast<float>(tip.x), ty = static_cast<float>(tip.y);
@@ -364,7 +368,7 @@ void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl) {
             y = ty - ts.y * 0.5f;
         }
         x = std::clamp(x, static_cast<float>(vp.x), static_cast<float>(vp.x + vp.width) - ts.x);
-        shadowText(dl, ImVec2(x, y), sceneTheme(app.lightTheme).force.packed(), text,
+        shadowText(dl, ImVec2(x, y), sceneTheme(app.view.lightTheme).force.packed(), text,
                    packed(theme().textShadow));
         ++written;
     }
@@ -372,16 +376,16 @@ void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl) {
 
 // A resting stack's expected top as a dashed line: a method that lets it sink shows the gap.
 void drawReferenceLine(const App& app, ImDrawList* dl) {
-    const std::optional<double> top = restingStackTop(app.scene);
+    const std::optional<double> top = restingStackTop(app.sim.scene);
     if (!top) return;
-    const Bounds& bounds = app.world.bounds;
-    const Vec2 a = app.camera.worldToScreen({bounds.min.x, *top});
-    const Vec2 b = app.camera.worldToScreen({bounds.max.x, *top});
+    const Bounds& bounds = app.sim.world().bounds;
+    const Vec2 a = app.view.camera.worldToScreen({bounds.min.x, *top});
+    const Vec2 b = app.view.camera.worldToScreen({bounds.max.x, *top});
     const ImU32 color = uiLightTheme() ? IM_COL32(200, 60, 40, 220) : IM_COL32(255, 120, 90, 220);
-    const float dash = 10.0f * app.uiScale, y = static_cast<float>(a.y);
+    const float dash = 10.0f * app.view.uiScale, y = static_cast<float>(a.y);
     for (float x = static_cast<float>(a.x); x < static_cast<float>(b.x); x += 2.0f * dash) {
         dl->AddLine(ImVec2(x, y), ImVec2(std::min(x + dash, static_cast<float>(b.x)), y), color,
-                    2.0f * app.uiScale);
+                    2.0f * app.view.uiScale);
     }
     char text[64];
     std::snprintf(text, sizeof text, "top of the stack at the start: %s m",
@@ -403,9 +407,9 @@ void drawHoverTooltip(const App& app) {
     if (app.mouse.mode != MouseTool::Mode::Idle) return;
     const int i = hoveredBlock(app);
     if (i < 0) return;
-    const Block& b = app.world.blocks[static_cast<std::size_t>(i)];
+    const Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
     ImGui::BeginTooltip();
-    ImGui::Text("%s (%s)", blockDisplayName(app, i).c_str(), kindText(b.kind));
+    ImGui::Text("%s (%s)", app.sim.blockDisplayName(i).c_str(), kindText(b.kind));
     if (b.isDynamic()) ImGui::Text("m = %.3g kg", b.mass);
     ImGui::Text("p = (%.2f, %.2f) m", b.position.x, b.position.y);
     ImGui::Text("v = (%.2f, %.2f) m/s", b.velocity.x, b.velocity.y);
@@ -421,18 +425,20 @@ void handleSceneMouse(App& app) {
     const ImGuiIO& io = ImGui::GetIO();
     if (!ImGui::IsMousePosValid()) return;
     const Vec2 mouse{io.MousePos.x, io.MousePos.y};
-    const bool inScene = !io.WantCaptureMouse && app.camera.viewport().contains(mouse);
+    const bool inScene = !io.WantCaptureMouse && app.view.camera.viewport().contains(mouse);
     if (app.mouse.mode != MouseTool::Mode::Idle && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
-        mouseMove(app, mouse);
+        mouseMove(app.mouse, app.sim, app.view, mouse);
     }
     const MouseButton buttons[3] = {MouseButton::Left, MouseButton::Right, MouseButton::Middle};
     for (int b = 0; b < 3; ++b) {
         if (inScene && ImGui::IsMouseClicked(b)) {
-            mousePress(app, buttons[b], mouse, ImGui::IsMouseDoubleClicked(b));
+            mousePress(app.mouse, app.sim, app.view, buttons[b], mouse,
+                       ImGui::IsMouseDoubleClicked(b));
         }
-        if (ImGui::IsMouseReleased(b)) mouseRelease(app, buttons[b], mouse);
+        if (ImGui::IsMouseReleased(b))
+            mouseRelease(app.mouse, app.sim, app.view, buttons[b], mouse);
     }
-    if (inScene && io.MouseWheel != 0.0f) mouseWheel(app, mouse, io.MouseWheel);
+    if (inScene && io.MouseWheel != 0.0f) mouseWheel(app.view, mouse, io.MouseWheel);
 }
 
 ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size) {
@@ -451,10 +457,10 @@ void drawSceneDecorations(App& app) {
     drawLabels(app, dl, placed);
     drawArrowValues(app, dl, placed);
     SceneView forces; // what the scene renderer draws the force arrows from
-    forces.world = &app.world;
-    forces.vectors = app.show.vectors;
-    forces.thrustBlock = thrustedBlock(app);
-    forces.thrust = thrustForce(app);
+    forces.world = &app.sim.world();
+    forces.vectors = app.view.show.vectors;
+    forces.thrustBlock = app.sim.thrustedBlock();
+    forces.thrust = app.sim.thrustForce();
     drawForceValues(app, forces, dl);
     drawLargeCount(app, dl);
     drawBadge(app, dl);

@@ -1,12 +1,14 @@
 // What the mouse does in the scene: click selects, left-drag moves a block (the simulation pauses;
 // the drop never overlaps), right-drag flings (velocity from the drag vector), middle-drag pans,
-// double-click on empty space adds a block. Pure logic on App and screen positions (no ImGui), so
-// it is tested without GL; scene_view.cpp feeds it ImGui's mouse state.
+// double-click on empty space adds a block. Pure logic on the simulation session, the view and
+// screen positions (no ImGui), so it is tested without GL; scene_view.cpp feeds it ImGui's mouse
+// state.
 #pragma once
 
 #include "vec2.h"
 
-struct App;
+struct SimulationSession;
+struct View;
 
 enum class MouseButton { Left, Right, Middle };
 
@@ -29,11 +31,15 @@ struct MouseTool {
     Vec2 flingVelocity() const { return (cursorWorld - pressWorld) * kFlingGain; }
 };
 
-void mousePress(App& app, MouseButton button, Vec2 screen, bool doubleClick);
-void mouseMove(App& app, Vec2 screen);
-void mouseRelease(App& app, MouseButton button, Vec2 screen);
+// The mouse's buttons over the scene: picks, drags and flings blocks of `sim` seen through
+// `view`'s camera, pans the camera.
+void mousePress(MouseTool& m, SimulationSession& sim, const View& view, MouseButton button,
+                Vec2 screen, bool doubleClick);
+void mouseMove(MouseTool& m, SimulationSession& sim, View& view, Vec2 screen);
+void mouseRelease(MouseTool& m, SimulationSession& sim, View& view, MouseButton button,
+                  Vec2 screen);
 // Wheel zoom about the cursor: `steps` notches (positive zooms in).
-void mouseWheel(App& app, Vec2 screen, double steps);
+void mouseWheel(View& view, Vec2 screen, double steps);
 // A two-finger touch gesture: pans by the move of the fingers' midpoint (`from` to `to`, screen
 // pixels) and zooms about its new place by the change of their distance (`spreadRatio`).
-void touchPanZoom(App& app, Vec2 from, Vec2 to, double spreadRatio);
+void touchPanZoom(View& view, Vec2 from, Vec2 to, double spreadRatio);

@@ -45,3 +45,21 @@ inline constexpr std::size_t kOverlayCount = sizeof kOverlays / sizeof kOverlays
 inline const OverlayInfo& overlayInfo(OverlayId id) {
     return kOverlays[static_cast<std::size_t>(id)];
 }
+
+// A --show LIST: which overlays (names from the table), and "none" (no panels and no overlays).
+struct ShowSet {
+    bool none = false;
+    Overlays overlays = noOverlays();
+    static Overlays noOverlays() {
+        Overlays o;
+        for (const OverlayInfo& i : kOverlays) o.*i.flag = false;
+        return o;
+    }
+};
+
+// Turns the overlay called `name` on or off; false for an unknown name.
+bool setOverlay(Overlays& overlays, const std::string& name, bool on);
+// "none, trails, vectors, ...": the names --show accepts.
+std::string showNames();
+// Parses a comma-separated --show list; false with a message for an unknown name.
+bool parseShowList(const std::string& text, ShowSet& out, std::string* error);

@@ -1,0 +1,181 @@
+// The simulation session: the scene as loaded and the run stepped from it, the fixed-step clock,
+// the timeline, what the plots and the inspector record, the cost measurement, and the edits of
+// blocks. It knows nothing of the view, the lesson or the panels: the frame loop and the lesson
+// session drive it (step, advance, reset, stopAtFrame) and read what it did (FrameOutcome,
+// notice). Plain logic: no GL, no ImGui; tested in tests/app.
+#pragma once
+
+#include "collision_sound.h"
+#include "cost.h"
+#include "fixed_step.h"
+#include "palette.h"
+#include "poi.h"
+#include "scene.h"
+#include "side_by_side.h"
+#include "spoken_text.h"
+#include "telemetry.h"
+#include "timeline.h"
+#include "trails.h"
+#include "world.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+// What each block is called and how it is coloured; parallel to world.blocks (the engine's Block
+// has no name), kept in step when blocks are added or removed.
+struct BlockLabel {
+    std::string name;
+    std::string color; // "#rrggbb" or "" for the palette
+};
+
+// What one run owns: the world from a starting state and everything derived from stepping it.
+// A load or reset starts a new one from the scene, a jump on the timeline from the recorded
+// state (so its totals count from there: a replay does not count collisions twice).
+struct Run {
+    World world;
+    StepStats stats;   // the last step's (momentum and energies of the start before any step)
+    StepTotals totals; // since the run started
+    Trails trails;
+    PoiView poi;                          // point of impact of the watched block's last hit
+    std::vector<CollisionRecord> lastLog; // collisions resolved in the last frame
+    std::vector<Block> previousBlocks;    // the blocks at the start of the last frame
+    MethodsSideBySide methods;            // the three methods from the same start
+    Run() = default;
+    explicit Run(World start);
+};
+
+// Thrust from the keyboard (the Physics section; lecture, "Spaceship thruster: normal engine, big
+// ship: slow acceleration; small ship: fast acceleration"): with `on` and a dynamic block
+// selected, the held arrow keys push that block with `force` newtons along `direction`, added to
+// its own constant force for the frames they are held; released, no force. The thrust is never
+// part of the world's state (not saved, not kept by the block). Kept by R and Shift+R (it is not
+// in the scene file), set by a lesson step.
+struct ThrustControl {
+    bool on = false;
+    double force = 10.0; // N (limits::kThrust)
+    Vec2 direction;      // the held arrow keys' unit vector this frame; zero: none held
+};
+
+// What one frame of stepping did (the frame loop and the lesson session read it).
+struct FrameOutcome {
+    bool collided = false;    // a collision was resolved (rest-rule contacts not counted)
+    bool reachedStop = false; // the frame reached stopAtFrame: the session paused there
+    bool reachedEnd = false;  // the frame reached the scene's "duration": paused there
+};
+
+struct SimulationSession {
+    // The scene as loaded (reset goes back to it) and where it came from.
+    std::string scenePath;
+    Scene scene;
+    // The current run (a load or reset starts a new one; so does a jump on the timeline).
+    Run run;
+    std::vector<BlockLabel> labels;
+    int selected = -1;
+    // Run control. Scenes open paused at t = 0 (a collision at 0.625 s is over before anyone
+    // looks); the scene view says "P to play".
+    bool paused = true;
+    bool slowMotion = false;
+    double timeScale = 1.0;
+    FixedStepClock clock;
+    bool pauseOnCollision = false;
+    bool pausedByCollision = false; // the last pause came from pauseOnCollision
+    // Stepping pauses once, at the end of this frame (a lesson step's stop; reaching it clears
+    // it). None: no such stop.
+    std::optional<std::uint64_t> stopAtFrame;
+    // Stepping pauses once where the scene's "duration" ends (the scene has made its point); a
+    // lesson turns this off, its steps stopping where they say.
+    bool pauseAtSceneEnd = true;
+    ThrustControl thrust;
+    // What the plots and the inspector read, and the timeline: recorded across runs started by a
+    // jump on the timeline (the recording is cut at the jump when stepping resumes).
+    Telemetry telemetry;
+    WorldHistory history;
+    CostMeasurement cost; // the cost overlay's measurement and tradeoff sweep
+    // Each frame's collisions heard and told: the knocks (collision_sound.h; queued while the
+    // sound is on, which by default it is in a lesson: `inLesson`, as the app last said) and the
+    // screen reader's announcer (spoken_text.h, the browser's page).
+    SoundControl sound;
+    bool inLesson = false;
+    CollisionAnnouncer announcer;
+    // Edits of blocks (drag, fling, add, delete, the panel's fields) since the last load or save;
+    // quitting asks when there are any, or when the settings differ from the scene's.
+    bool blocksEdited = false;
+    // What the session has to tell the user (an edit during a replay, the scene's end, no room
+    // for a block): the app shows it as its note and clears it here.
+    std::string notice;
+
+    World& world() { return run.world; }
+    const World& world() const { return run.world; }
+
+    // Uses an already parsed scene: a new run, paused at t = 0, nothing selected, nothing edited.
+    void setScene(const Scene& scene, const std::string& path);
+    // R: the blocks and time back to the scene as loaded; the chosen method, bounciness, gravity,
+    // frame rate and substeps stay (comparing methods is S then R). Trails cleared.
+    void reset();
+    // Shift+R, "reset to file": everything back to the scene as loaded, settings included.
+    void resetToFile();
+    // The user changed the world (`blocks`: a block; otherwise a setting) between steps. While
+    // the timeline replays, this starts a new future from here, and the notice says so.
+    void noteEdit(bool blocks);
+    // True when quitting would lose edits (see blocksEdited).
+    bool unsavedEdits() const;
+
+    // One simulation frame of settings.dt; updates stats, totals, trails and what is recorded,
+    // and pauses where it should (a collision with pauseOnCollision, stopAtFrame, the scene's
+    // end). `sideBySide`: the three methods run alongside (the overlay shows them).
+    FrameOutcome step(bool sideBySide);
+    // Advances the fixed-step clock by `realSeconds` and runs the due frames (none while
+    // paused). Returns the number of frames run.
+    int advance(double realSeconds, bool sideBySide);
+    // Goes back (or forward) to frame `frame` of the timeline; false when it is not recorded.
+    // Stepping from there replays, bit for bit, unless something is changed first. The
+    // inspector's collisions become the last ones up to that frame (rebuilt from the history).
+    bool scrubTo(std::uint64_t frame);
+    // True while the world shows a frame earlier than the newest recorded one.
+    bool isReplaying() const;
+
+    // The block the keyboard thrust pushes this frame: the selected block when thrust is on, it
+    // is dynamic and an arrow key is held; -1 otherwise.
+    int thrustedBlock() const;
+    // The thrust's force on it (N): direction · force; zero when thrustedBlock() is -1.
+    Vec2 thrustForce() const;
+    // The force on block `index` this frame (N): its own constant force plus the thrust on it.
+    Vec2 appliedForce(int index) const;
+    // True when the scene uses what the Physics section sets (a resolve, integrator, mistake or
+    // drag other than the default, a block's force) or the thrust is on: the section opens.
+    bool usesPhysicsSection() const;
+    // perfect -> move-and-correct -> turn-based -> perfect.
+    void cycleMethod();
+
+    // Changes the kind of block `index` (dynamic blocks get mass 1 kg when they had none).
+    void setBlockKind(int index, BodyKind kind);
+    // Resizes block `index` when the new size fits without overlap; false (nothing changed) if
+    // not.
+    bool setBlockSize(int index, Vec2 size);
+    // Adds a 1 m dynamic block near `at` without overlap and selects it; returns its index or -1
+    // (no room: the notice says so).
+    int addBlockAt(Vec2 at);
+    // Removes the selected block (if any).
+    void deleteSelected();
+
+    // The current state as a format v1 scene (names and colours kept).
+    Scene currentScene() const;
+    // Saves currentScene() to `path` (absolute), which then is the current scene's file (what
+    // the settings remember; reset to file goes back to it). False with `error` on failure.
+    bool save(const std::string& path, std::string* error);
+
+    // Name shown for block `index` ("#3" when it has none).
+    std::string blockDisplayName(int index) const;
+    // The colour block `index` is drawn in: its scene colour, else a palette colour (dynamic) or
+    // the colour of static or kinematic blocks.
+    Color blockDisplayColor(int index) const;
+
+  private:
+    void restartRun(); // a new run from the scene
+};
+
+// True when the frame from frameStart to frameEnd (s) reaches the scene's "duration" (the app
+// pauses there once; P plays on).
+bool reachesSceneEnd(const Scene& scene, double frameStart, double frameEnd, double dt);

@@ -1,0 +1,83 @@
+#include "view.h"
+
+#include <algorithm>
+
+double panelWidth(float uiScale, double displayWidth) {
+    return std::min(350.0 * static_cast<double>(uiScale), displayWidth * 0.45);
+}
+
+Layout computeAppLayout(const View& view, bool captionBar, double displayWidth,
+                        double displayHeight) {
+    LayoutInput in;
+    in.displayWidth = displayWidth;
+    in.displayHeight = displayHeight;
+    in.uiScale = view.uiScale;
+    // A lesson's caption bar over the top of the scene (and the column), presenting too.
+    if (captionBar) in.topInset = std::min(view.captionHeight, displayHeight * 0.5);
+    if (view.presentMode) return computeLayout(in); // the scene alone (under a lesson's caption)
+    in.panelWidth = view.uiVisible ? panelWidth(view.uiScale, displayWidth) : 0.0;
+    for (const OverlayInfo& row : kOverlays) {
+        if (!row.title || !(view.show.*row.flag) || isFloating(view, row.title)) continue;
+        in.windows.push_back({row.title, row.place.side, row.place.minExtent, row.place.weight,
+                              row.place.crossExtent});
+    }
+    return computeLayout(in);
+}
+
+ScreenRect sceneViewport(const View& view, bool captionBar, double displayWidth,
+                         double displayHeight) {
+    return computeAppLayout(view, captionBar, displayWidth, displayHeight).scene;
+}
+
+void updateCamera(View& view, const World& world, bool captionBar, double displayWidth,
+                  double displayHeight) {
+    view.layout = computeAppLayout(view, captionBar, displayWidth, displayHeight);
+    view.camera.setViewport(view.layout.scene);
+    if (view.autoFit) {
+        view.camera.fit(view.fitBounds ? *view.fitBounds : world.bounds,
+                        kFitMarginPx * static_cast<double>(view.uiScale));
+    }
+    view.camera.setCentre(view.camera.centre() +
+                          followShift(view.frameCamera, world, view.frame, view.autoFit));
+}
+
+void showNewScene(View& view, const Scene& scene) {
+    if (!view.overlaysChosen) view.show.vectors = scene.blocks.size() <= kVectorsByDefaultUpTo;
+    view.autoFit = true;
+}
+
+void followNewRun(View& view, const World& world) {
+    anchorFrameCamera(view.frameCamera, world);
+}
+
+void setViewFrame(View& view, ViewFrame frame) {
+    view.frame = frame;
+    view.frameCamera.anchored = false;
+}
+
+void setPresentMode(View& view, bool on) {
+    view.presentMode = on;
+    view.autoFit = true; // the scene's rectangle changes: fit the world into it again
+}
+
+void setUiScale(View& view, float scale) {
+    if (!(scale == scale)) return;
+    view.uiScale = std::clamp(scale, kMinUiScale, kMaxUiScale);
+}
+
+void applyShowSet(View& view, const ShowSet& show) {
+    view.overlaysChosen = true;
+    view.uiVisible = !show.none;
+    view.show = show.overlays;
+}
+
+bool isFloating(const View& view, const std::string& title) {
+    return std::find(view.floatingWindows.begin(), view.floatingWindows.end(), title) !=
+           view.floatingWindows.end();
+}
+
+void setFloating(View& view, const std::string& title, bool floating) {
+    auto& f = view.floatingWindows;
+    f.erase(std::remove(f.begin(), f.end(), title), f.end());
+    if (floating) f.push_back(title);
+}

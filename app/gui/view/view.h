@@ -1,0 +1,87 @@
+// The view: how the scene is seen and what is shown with it. The camera and what it fits (the
+// world's bounds or a lesson step's rectangle), the frame of reference, the overlays shown, the
+// UI's scale, theme and present mode, and this frame's layout of the panel, the overlay windows
+// and the scene. Plain logic: no GL, no ImGui; the UI binds its widgets to it every frame.
+#pragma once
+
+#include "camera.h"
+#include "dock_layout.h"
+#include "overlays.h"
+#include "scene.h"
+#include "view_frame.h"
+#include "world.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+// The UI scale's range (View section, --ui-scale, the settings file) and the scene labels' size
+// relative to the UI font.
+constexpr float kMinUiScale = 0.75f, kMaxUiScale = 3.0f;
+constexpr float kMinLabelScale = 0.75f, kMaxLabelScale = 2.5f;
+
+struct View {
+    Camera camera;
+    bool autoFit = true; // refit the camera when the viewport changes, until the user zooms/pans
+    std::optional<Bounds> fitBounds; // what fitting shows (a lesson step's camera); none: bounds
+    // The frame of reference (view_frame.h): in the centre of mass's the camera moves with u and
+    // the arrows show w = v - u (View section, U, --frame com, a lesson step's "frame").
+    ViewFrame frame = ViewFrame::World;
+    FrameCamera frameCamera;
+    Overlays show;
+    bool overlaysChosen = false; // --show given: scenes no longer pick the default overlays
+    bool uiVisible = true;
+    float uiScale = 1.0f;
+    float labelScale = 1.0f; // size of the scene's labels relative to the UI font; persisted
+    bool lightTheme = false; // View section; persisted
+    // Present mode (Tab): the scene and a one-line caption only; every panel and window hidden,
+    // and back as they were when it is left.
+    bool presentMode = false;
+    bool fullscreen = false; // the window is full screen (the window backend keeps it true)
+    // This frame's layout: the panel, the docked overlay windows and the scene's rectangle.
+    Layout layout;
+    // Overlay windows pulled out of the layout to float (by title); put back with "Dock".
+    std::vector<std::string> floatingWindows;
+    // Every window drawn this frame with its rectangle (for --layout-json), in drawing order.
+    std::vector<DockedWindow> shownWindows;
+    double captionHeight = 0.0; // px a lesson's caption bar takes at the top of the scene
+};
+
+// Width of the controls panel in pixels for a UI scale and window width.
+double panelWidth(float uiScale, double displayWidth);
+// This frame's layout: the panel (unless hidden), the shown overlay windows that are not floating
+// docked around the scene (none in present mode), and the scene's rectangle; `captionBar`: a
+// lesson's caption bar (captionHeight) takes the top of the scene.
+Layout computeAppLayout(const View& view, bool captionBar, double displayWidth,
+                        double displayHeight);
+// The part of the window the scene is drawn into (computeAppLayout's scene).
+ScreenRect sceneViewport(const View& view, bool captionBar, double displayWidth,
+                         double displayHeight);
+// Pixels (at UI scale 1) between the world's bounds and the scene's rectangle when the camera
+// fits the world: room for the axis numbers and, at the top, the status badge or caption.
+constexpr double kFitMarginPx = 36.0;
+// Lays out the frame (view.layout), gives the camera the scene's rectangle and refits `world`
+// while view.autoFit holds; in the centre of mass's frame the camera follows it.
+void updateCamera(View& view, const World& world, bool captionBar, double displayWidth,
+                  double displayHeight);
+
+// Velocity arrows are on by default for scenes with at most this many blocks (more is clutter).
+constexpr std::size_t kVectorsByDefaultUpTo = 50;
+// A scene was loaded: fit it again, and its arrows on by default when it has few blocks (unless
+// --show chose the overlays).
+void showNewScene(View& view, const Scene& scene);
+// A run started from its first state (a load, R, a lesson step): the centre of mass's frame
+// follows from there, however many frames are stepped before the next draw.
+void followNewRun(View& view, const World& world);
+// Sees the scene in `frame` from now on (the camera follows the centre of mass from where it is).
+void setViewFrame(View& view, ViewFrame frame);
+// Present mode on or off: every panel and window hidden, and back as they were.
+void setPresentMode(View& view, bool on);
+// Clamps the UI scale into its range.
+void setUiScale(View& view, float scale);
+// Sets the overlays from a --show list.
+void applyShowSet(View& view, const ShowSet& show);
+// Is `title` an overlay window pulled out of the layout to float?
+bool isFloating(const View& view, const std::string& title);
+void setFloating(View& view, const std::string& title, bool floating);
