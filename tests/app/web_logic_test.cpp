@@ -2,6 +2,9 @@
 // the two-finger gesture, and wide lines drawn as quads where WebGL 2 has 1 px lines only.
 #include "app.h"
 #include "app_setup.h"
+#include "browser_input.h"
+#include "input_map.h"
+#include "link.h"
 #include "mouse_tool.h"
 #include "shape_batch.h"
 #include "url_params.h"
@@ -9,6 +12,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 namespace {
@@ -51,10 +56,49 @@ TEST(UrlParams, EachBadParameterIsNamedAndTheGoodOnesStillCount) {
     EXPECT_NE(p.errors[1].find("URL parameter scene: '../etc/passwd' is not a scene name"),
               std::string::npos);
     EXPECT_NE(p.errors[2].find("URL parameter show"), std::string::npos);
-    EXPECT_NE(p.errors[3].find("unknown URL parameter 'zoom'"), std::string::npos);
-    EXPECT_NE(p.errors[4].find("URL parameter scene: given twice"), std::string::npos);
+    EXPECT_NE(p.errors[3].find("URL parameter scene: given twice"), std::string::npos);
+    EXPECT_EQ(p.errors[4], "unknown URL parameter 'zoom' ignored (known: scene, lesson, step, "
+                           "method, show, frame)");
     EXPECT_FALSE(p.methodGiven);
     EXPECT_TRUE(p.scene.empty());
+}
+
+TEST(UrlParams, TrackersAreIgnoredWithoutAWord) {
+    const UrlParams p = parseUrlParams("?utm_source=x&fbclid=y&scene=newtons_cradle&gclid=z&"
+                                       "utm_campaign=spring&msclkid=1&_ga=2");
+    EXPECT_TRUE(p.errors.empty()) << p.errors.front();
+    EXPECT_EQ(p.scene, "newtons_cradle");
+    EXPECT_TRUE(isTrackerParam("utm_anything"));
+    EXPECT_FALSE(isTrackerParam("utm")); // only the utm_ family
+    EXPECT_FALSE(isTrackerParam("scene"));
+}
+
+TEST(UrlParams, ThousandsOfUnknownParametersTakeOneShortLine) {
+    std::string query = "?scene=newtons_cradle";
+    for (int i = 0; i < 5000; ++i) query += "&p" + std::to_string(i) + "=1";
+    const UrlParams p = parseUrlParams(query);
+    ASSERT_EQ(p.errors.size(), 1u);
+    EXPECT_EQ(p.errors[0], "5000 unknown URL parameters ignored: 'p0', 'p1', 'p2', ... (known: "
+                           "scene, lesson, step, method, show, frame)");
+    EXPECT_EQ(p.scene, "newtons_cradle"); // the known one still counts
+}
+
+TEST(UrlParams, ThousandsOfBadValuesTakeAFewLines) {
+    std::string query;
+    for (int i = 0; i < 5000; ++i) query += "&method=x" + std::to_string(i);
+    const UrlParams p = parseUrlParams(query);
+    ASSERT_EQ(p.errors.size(), kMaxUrlErrors + 1);
+    EXPECT_NE(p.errors[0].find("unknown method 'x0'"), std::string::npos);
+    EXPECT_EQ(p.errors.back(), "... and 4995 more problems in the URL");
+}
+
+TEST(UrlParams, TheReadmeListsEveryParameter) {
+    std::ifstream in(SANDBOX_README);
+    const std::string readme((std::istreambuf_iterator<char>(in)),
+                             std::istreambuf_iterator<char>());
+    ASSERT_FALSE(readme.empty()) << SANDBOX_README;
+    for (const UrlParamInfo& p : kUrlParams)
+        EXPECT_NE(readme.find("| `" + std::string(p.name) + "`"), std::string::npos) << p.name;
 }
 
 TEST(UrlParams, ControlBytesAreNotEchoed) {
@@ -128,6 +172,82 @@ TEST(UrlParams, BadLessonParameters) {
     EXPECT_NE(app.ui.messages.error.find("no lesson 'no_such_lesson' is shipped"),
               std::string::npos);
     EXPECT_FALSE(app.lesson.active());
+}
+
+TEST(Link, NamesTheShippedSceneAndWhatDiffersFromOpeningIt) {
+    App app = setUpApp();
+    EXPECT_EQ(linkQuery(app), "scene=bouncing_squares"); // named: a bare link opens the last one
+    EXPECT_FALSE(linkCarriesScene(app));
+    cycleMethod(app);
+    app.view.show.plots = true;
+    setViewFrame(app, ViewFrame::CentreOfMass);
+    EXPECT_EQ(linkQuery(app),
+              "scene=bouncing_squares&method=move-and-correct&show=vectors,plots&frame=com");
+    app.view.show.vectors = false;
+    app.view.show.plots = false;
+    EXPECT_EQ(linkQuery(app), "scene=bouncing_squares&method=move-and-correct&show=&frame=com");
+}
+
+TEST(Link, OpeningTheQueryGivesTheSameQuery) {
+    App app = setUpApp();
+    applyUrlParams(app, parseUrlParams("?scene=newtons_cradle&method=turn-based&show=plots"));
+    setViewFrame(app, ViewFrame::CentreOfMass);
+    const std::string query = linkQuery(app);
+    App opened = setUpApp();
+    applyUrlParams(opened, parseUrlParams(query));
+    EXPECT_EQ(opened.error, "");
+    EXPECT_EQ(linkQuery(opened), query);
+    applyUrlParams(opened, parseUrlParams("show="));
+    EXPECT_EQ(opened.error, "");
+    EXPECT_FALSE(opened.show.vectors); // an empty list: no overlay at all
+}
+
+TEST(Link, AnEditedSceneTravelsInsideTheLink) {
+    App app = setUpApp();
+    app.sim.world().blocks[0].velocity = {1.25, -3.5};
+    noteEdit(app, true);
+    EXPECT_TRUE(linkCarriesScene(app));
+    EXPECT_EQ(linkQuery(app), ""); // the scene, its method and settings are in the fragment
+    App moved = setUpApp();
+    stepSimulation(moved); // run on: the blocks are no longer the file's
+    EXPECT_TRUE(linkCarriesScene(moved));
+    App settings = setUpApp();
+    settings.world.settings.bounciness = 0.5;
+    EXPECT_TRUE(linkCarriesScene(settings));
+}
+
+TEST(Link, ALessonStepIsItsLink) {
+    App app = setUpApp();
+    applyUrlParams(app, parseUrlParams("?lesson=lecture3&step=5"));
+    EXPECT_EQ(linkQuery(app), "lesson=lecture3&step=5");
+}
+
+TEST(WheelNotches, OneNotchIsOneStepTheDesktopsWay) {
+    // Chromium: about 100 px per notch, positive down; the desktop's GLFW: 1 per notch, up.
+    EXPECT_EQ(wheelNotches(0.0, -100.0, 0).y, 1.0);
+    EXPECT_EQ(wheelNotches(0.0, 100.0, 0).y, -1.0);
+    EXPECT_EQ(wheelNotches(0.0, 3.0, 1).y, -1.0);   // Firefox: 3 lines
+    EXPECT_EQ(wheelNotches(0.0, -1.0, 2).y, 1.0);   // a page
+    EXPECT_EQ(wheelNotches(100.0, 0.0, 0).x, -1.0); // right: GLFW's negative x
+    // A touchpad's small deltas are fractions of a notch: smooth.
+    EXPECT_DOUBLE_EQ(wheelNotches(0.0, -4.0, 0).y, 0.04);
+    // Nonsense stays bounded.
+    EXPECT_EQ(wheelNotches(0.0, -1e9, 0).y, kMaxWheelNotches);
+    EXPECT_EQ(wheelNotches(std::nan(""), INFINITY, 0).x, 0.0);
+    EXPECT_EQ(wheelNotches(std::nan(""), INFINITY, 0).y, 0.0);
+}
+
+TEST(BrowserKeys, TheBrowsersOwnKeysAreNotBoundThere) {
+    EXPECT_EQ(actionForKey(keys::kQ, true, false, false, true), Action::None); // close the tab
+    EXPECT_EQ(actionForKey(keys::kQ, true, false, false, false), Action::Quit);
+    EXPECT_EQ(actionForKey(keys::kEqual, true, false, false, true), Action::None); // page zoom
+    EXPECT_EQ(actionForKey(keys::kS, true, false, false, true), Action::Save);
+    EXPECT_EQ(actionForKey(keys::kP, false, false, false, true), Action::TogglePause);
+}
+
+TEST(BrowserSave, TheDownloadIsNamedAfterTheScene) {
+    App app = setUpApp();
+    EXPECT_EQ(browserDownloadPath(app), std::string(kBrowserDownloads) + "/bouncing_squares.json");
 }
 
 TEST(TouchGesture, PansByTheMidpointAndZoomsAboutIt) {

@@ -11,6 +11,19 @@ DevTools protocol (python3-websocket). One check per run:
   url-bad       bad URL parameters show their errors in the panel and keep the default scene
   open-file     a picked or dropped file opens; a bad one shows its error (with its place) and
                 keeps the current scene
+  wheel         one wheel notch up over the scene zooms in by one step (x1.15, as the desktop's
+                wheel), one down zooms out by one, 3 lines (Firefox) are one notch; a notch over
+                the panel scrolls it and leaves the zoom alone
+  fullscreen    at device pixel ratio 1 and 2, entering and leaving full screen (the page becomes
+                exactly screen-sized) leaves the canvas's size = its CSS size x the ratio, and no
+                uncaught error
+  trackers      ?utm_source=x&fbclid=y shows no error
+  link          the address bar follows an edit (a block dragged, the method changed) with the
+                scene in its fragment; opening that link in a new browser restores exactly those
+                blocks and that method; a damaged fragment is an error naming it, and a scene too
+                large for a link says so
+  unsaved       no question before leaving at first; after an edit (a block dragged) the page
+                asks (beforeunload); Ctrl+S downloads the scene named after it
   axe           axe-core (npm, injected into the page) finds no violation at the first frame
                 and with a lesson open
   live-region   lecture_example_1 played (with the page's own Play button) through its
@@ -95,6 +108,7 @@ class Page:
         self.ws = websocket.create_connection(page["webSocketDebuggerUrl"], timeout=HANG_GUARD_S)
         self.next_id = 0
         self.errors = []
+        self.dialogs = []  # the types of the dialogs the page opened (accepted)
         self.call("Runtime.enable")
         self.call("Log.enable")
         self.call("Page.enable")
@@ -122,6 +136,11 @@ class Page:
 
     def note_event(self, message):
         method, params = message.get("method"), message.get("params", {})
+        if method == "Page.javascriptDialogOpening":  # "leave with unsaved edits?": yes
+            self.dialogs.append(params.get("type"))
+            self.next_id += 1
+            self.ws.send(json.dumps({"id": self.next_id, "method": "Page.handleJavaScriptDialog",
+                                     "params": {"accept": True}}))
         if method == "Runtime.consoleAPICalled" and params.get("type") in ("error", "assert"):
             text = " ".join(str(a.get("value", a.get("description", ""))) for a in params["args"])
             self.errors.append(f"console.error: {text}")
@@ -173,10 +192,43 @@ class Page:
         data = self.call("Page.captureScreenshot", format="png")["data"]
         return base64.b64decode(data)
 
-    def key(self, key, code, key_code):
+    def key(self, key, code, key_code, ctrl=False):
+        # Emscripten's GLFW knows Ctrl from the Control key's own press, as a keyboard sends it.
+        control = dict(key="Control", code="ControlLeft", windowsVirtualKeyCode=17,
+                       nativeVirtualKeyCode=17)
+        if ctrl:
+            self.call("Input.dispatchKeyEvent", type="rawKeyDown", modifiers=2, **control)
         for kind in ("keyDown", "keyUp"):
             self.call("Input.dispatchKeyEvent", type=kind, key=key, code=code,
-                      windowsVirtualKeyCode=key_code, nativeVirtualKeyCode=key_code)
+                      modifiers=2 if ctrl else 0, windowsVirtualKeyCode=key_code,
+                      nativeVirtualKeyCode=key_code)
+        if ctrl:
+            self.call("Input.dispatchKeyEvent", type="keyUp", **control)
+
+    def mouse(self, kind, x, y, buttons=0, **extra):
+        """A mouse event at (x, y) CSS pixels: mouseMoved, mousePressed, mouseReleased or
+        mouseWheel (deltaX, deltaY)."""
+        button = "left" if kind in ("mousePressed", "mouseReleased") else "none"
+        self.call("Input.dispatchMouseEvent", type=kind, x=x, y=y, button=button,
+                  buttons=buttons, clickCount=1 if button == "left" else 0, **extra)
+
+    def drag(self, x0, y0, x1, y1, steps=5):
+        self.mouse("mouseMoved", x0, y0)
+        self.wait_frames(1)
+        self.mouse("mousePressed", x0, y0, buttons=1)
+        self.wait_frames(1)
+        for i in range(1, steps + 1):
+            self.mouse("mouseMoved", x0 + (x1 - x0) * i / steps, y0 + (y1 - y0) * i / steps,
+                       buttons=1)
+            self.wait_frames(1)
+        self.mouse("mouseReleased", x1, y1)
+        self.wait_frames(2)
+
+    def canvas_size(self):
+        """The canvas's backing store, its CSS size times the ratio (rounded), and the ratio."""
+        return self.evaluate("(() => { const r = canvas.getBoundingClientRect(); "
+                             "const d = devicePixelRatio; return [canvas.width, canvas.height, "
+                             "Math.round(r.width * d), Math.round(r.height * d), d]; })()")
 
 
 def image(png):
@@ -283,6 +335,148 @@ def open_file(page, base):
     check(s["scene"] == "/opened/cradle.json", f"the picked file did not open: {s}")
     check(s["error"] == "", f"error after a good file: {s}")
     print("a bad file shows its error and keeps the scene; a good one opens")
+
+
+def wheel(page, base):
+    page.open(base)
+    page.wait_frames(2)
+    scene = page.status()["sceneOnScreen"]
+    x, y = scene[0] + scene[2] / 2, scene[1] + scene[3] / 2
+    page.mouse("mouseMoved", x, y)
+    page.wait_frames(2)
+
+    def zoom_after(send):
+        before = page.status()["pixelsPerMetre"]
+        send()
+        page.wait_frames(3)
+        return page.status()["pixelsPerMetre"] / before
+
+    # One notch as Chromium reports it: deltaY -100 is the wheel turned up, away from the user.
+    up = zoom_after(lambda: page.mouse("mouseWheel", x, y, deltaX=0, deltaY=-100))
+    check(abs(up - 1.15) < 1e-9, f"one notch up zoomed by x{up} (one step in: x1.15)")
+    down = zoom_after(lambda: page.mouse("mouseWheel", x, y, deltaX=0, deltaY=100))
+    check(abs(down - 1 / 1.15) < 1e-9, f"one notch down zoomed by x{down} (one step out)")
+    lines = zoom_after(lambda: page.evaluate(
+        f"canvas.dispatchEvent(new WheelEvent('wheel', {{deltaY: 3, deltaMode: 1, clientX: {x}, "
+        f"clientY: {y}, bubbles: true, cancelable: true}}))"))
+    check(abs(lines - 1 / 1.15) < 1e-9, f"3 lines down zoomed by x{lines} (one step out)")
+    # Over the panel (its lower part, below Play and Reset), a notch scrolls the panel.
+    page.evaluate("document.querySelector('canvas').focus()")
+    px, py = 150, 600
+    page.mouse("mouseMoved", px, py)
+    page.wait_frames(2)
+    shot_before = image(page.screenshot()).crop((0, 200, 340, 720))
+    panel = zoom_after(lambda: page.mouse("mouseWheel", px, py, deltaX=0, deltaY=100))
+    shot_after = image(page.screenshot()).crop((0, 200, 340, 720))
+    check(panel == 1.0, f"a notch over the panel zoomed the scene (x{panel})")
+    check(shot_before != shot_after, "a notch over the panel did not scroll it")
+    print(f"wheel: up x{up:.6f}, down x{down:.6f}, 3 lines x{lines:.6f}, over the panel the "
+          "panel scrolled and the zoom stayed")
+
+
+def fullscreen(base, ratio):
+    """Full screen at `ratio`: a 1024x768 screen, a 1024x700 page that becomes 1024x768."""
+    page = Page(1024, 700, ratio)
+    try:
+        def metrics(height):
+            page.call("Emulation.setDeviceMetricsOverride", width=1024, height=height,
+                      deviceScaleFactor=ratio, mobile=False, screenWidth=1024, screenHeight=768)
+
+        def sized(what):
+            page.wait_frames(3)
+            w, h, want_w, want_h, d = page.canvas_size()
+            check((w, h) == (want_w, want_h) and d == ratio,
+                  f"{what} at ratio {ratio}: canvas {w}x{h}, CSS size x ratio {want_w}x{want_h}")
+            return f"{w}x{h}"
+
+        metrics(700)
+        page.open(base)
+        windowed = sized("windowed")
+        page.key("F11", "F11", 122)  # the app's key: it asks the page for full screen
+        page.wait(lambda: page.evaluate("!!document.fullscreenElement"), "full screen")
+        metrics(768)  # what the browser does: the page becomes the screen
+        full = sized("full screen")
+        check(page.status()["fullscreen"], "the app does not know it is full screen")
+        page.key("Escape", "Escape", 27)  # the app leaves full screen
+        page.wait(lambda: not page.evaluate("!!document.fullscreenElement"), "leaving full screen")
+        metrics(700)
+        back = sized("after full screen")
+        page.wait_frames(2)
+        check(not page.errors, "the console has errors:\n" + "\n".join(page.errors))
+        print(f"ratio {ratio}: canvas {windowed}, full screen {full}, after {back}")
+    finally:
+        page.close()
+
+
+def trackers(page, base):
+    page.open(base + "?utm_source=x&fbclid=y")
+    s = page.status()
+    check(s["error"] == "", f"the panel shows an error: {s['error']}")
+    check(s["scene"].endswith("/bouncing_squares.json"), f"default scene? {s}")
+    print("?utm_source=x&fbclid=y: no error")
+
+
+def unsaved(page, base):
+    page.open(base)
+    asks = ("(() => { const e = new Event('beforeunload', {cancelable: true}); "
+            "window.dispatchEvent(e); return e.defaultPrevented; })()")
+    check(not page.evaluate(asks), "the page asks before leaving with nothing edited")
+    block = page.status()["blocksOnScreen"][0]
+    x, y = block[0] + block[2] / 2, block[1] + block[3] / 2
+    page.drag(x, y, x + 60, y + 30)
+    s = page.status()
+    check(s["unsaved"], f"dragging a block is not an unsaved edit: {s['note']}")
+    check(page.evaluate(asks), "after an edit the page does not ask before leaving")
+    # Ctrl+S downloads the scene, named after it.
+    page.evaluate("window.downloadNames = []; HTMLAnchorElement.prototype.click = function () "
+                  "{ window.downloadNames.push(this.download); };")
+    page.key("s", "KeyS", 83, ctrl=True)
+    page.wait_frames(3)
+    names = page.evaluate("window.downloadNames")
+    check(names == ["bouncing_squares.json"], f"Ctrl+S downloaded {names}")
+    check(not page.status()["unsaved"], "still unsaved after the download")
+    check(not page.evaluate(asks), "the page still asks after the download")
+    print(f"beforeunload asks after a drag, not before; Ctrl+S downloaded {names[0]}")
+
+
+def link(page, base):
+    page.open(base)
+    block = page.status()["blocksOnScreen"][0]
+    x, y = block[0] + block[2] / 2, block[1] + block[3] / 2
+    page.key("s", "KeyS", 83)  # the next method: move-and-correct
+    page.wait(lambda: "method=move-and-correct" in page.evaluate("location.search"),
+              "the address bar to follow the method")
+    page.drag(x, y, x + 80, y - 40)  # now the link carries the scene, the method inside it
+    page.wait(lambda: "#scene=" in page.evaluate("location.href") and
+              "method=" not in page.evaluate("location.search"), "the address bar to follow")
+    edited = page.status()
+    check(edited["method"] == "move-and-correct", f"S did not change the method: {edited}")
+    url = page.evaluate("location.href")
+    check(len(url) <= 32000, f"the link is {len(url)} characters")
+    other = Page(1280, 720)
+    try:
+        other.open(url)
+        opened = other.status()
+        check(opened["error"] == "", f"the link opened with an error: {opened['error']}")
+        check(opened["blocks"] == edited["blocks"],
+              f"the blocks differ:\n{opened['blocks']}\n{edited['blocks']}")
+        check(opened["method"] == edited["method"], f"the method differs: {opened['method']}")
+        check(not opened["unsaved"], "a linked scene opens as unsaved")
+        other.wait_frames(2)
+        check(not other.errors, "the console has errors:\n" + "\n".join(other.errors))
+    finally:
+        other.close()
+    print(f"a {len(url)}-character link restored {len(edited['blocks'])} blocks exactly and the "
+          "method")
+    # A damaged fragment: an error that names it; the default scene stays.
+    page.open(base + "?scene=newtons_cradle#scene=AAAA-not-deflate")
+    s = page.status()
+    check("#scene=" in s["error"], f"a damaged link's error does not name the fragment: {s}")
+    # A scene too large for a link (40,000 random numbers do not compress below 32,000
+    # characters): "Copy link" says so. (gas_500 in motion still fits: 24,000 characters.)
+    page.evaluate("sandboxPage.copyLink('', Array.from({length: 40000}, Math.random).join())")
+    page.wait(lambda: "too large for a link" in page.status()["error"], "the message")
+    print("a damaged fragment is named; a scene too large for a link says so")
 
 
 def axe_violations(page):
@@ -435,12 +629,18 @@ def main():
     threading.Thread(target=server.serve_forever, daemon=True).start()
     base = f"http://127.0.0.1:{server.server_address[1]}/index.html"
     checks = {"first-frame": first_frame, "pause": pause, "url-scene": url_scene,
-              "url-lesson": url_lesson, "url-bad": url_bad, "open-file": open_file, "axe": axe,
-              "live-region": live_region, "hidden-control": hidden_control, "keyboard": keyboard,
-              "sound": sound}
+              "url-lesson": url_lesson, "url-bad": url_bad, "open-file": open_file,
+              "wheel": wheel, "trackers": trackers, "unsaved": unsaved, "link": link,
+              "axe": axe, "live-region": live_region, "hidden-control": hidden_control,
+              "keyboard": keyboard, "sound": sound}
     try:
         if what == "shots":
             shots(base, sys.argv[3])
+            return 0
+        if what == "fullscreen":
+            for ratio in (1, 2):
+                fullscreen(base, ratio)
+            print("passed")
             return 0
         page = Page(1280, 720)
         try:

@@ -182,8 +182,10 @@ EscapeEffect pressEscape(App& app) {
         ui.fullscreenRequested = true;
         break;
     case EscapeEffect::Nothing:
-        ui.messages.note =
-            "Esc closes windows and leaves present mode or fullscreen; Ctrl+Q quits.";
+        ui.messages.note = ui.inBrowser
+                               ? "Esc closes windows and leaves present mode or full screen."
+                               : "Esc closes windows and leaves present mode or fullscreen; "
+                                 "Ctrl+Q quits.";
         break;
     }
     return e;
@@ -224,6 +226,10 @@ std::string saveDirectory(const App& app) {
 
 std::string suggestedSavePath(const App& app) {
     return suggestSavePath(app.sim.scene.name, saveDirectory(app), pathExists);
+}
+
+std::string browserDownloadPath(const App& app) {
+    return std::string(kBrowserDownloads) + "/" + sceneFileStem(app.sim.scene.name) + ".json";
 }
 
 std::string exportCsv(App& app, const std::string& plot, const CsvTable& table) {

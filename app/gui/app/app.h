@@ -51,14 +51,15 @@ struct UiState {
     bool quitDialogOpen = false;
     bool saveDialogOpen = false;
     std::string saveDialogPath;
-    std::string savePath;  // the Save field's path
     std::string openPath;  // the Open field's path
     std::string tracePath; // the Compare section's path field
     std::string savedFile; // the file the last Save or export wrote (the browser downloads it)
     // The browser build: Open also offers the browser's file picker (and drag and drop), Save
-    // downloads the file.
-    bool browserFiles = false;
+    // downloads the file (named after the scene), there is no Quit (a tab is closed by the
+    // browser) and the keys the browser keeps are its own (KeyBinding::inBrowser).
+    bool inBrowser = false;
     bool filePickerRequested = false;
+    bool copyLinkRequested = false; // "Copy link": the link for what is on screen (browser/link.h)
     // Requests to the window backend.
     bool quitRequested = false;
     bool fullscreenRequested = false;
@@ -144,6 +145,10 @@ std::string saveDirectory(const App& app);
 // The path the Save dialog offers: from the scene's name, in saveDirectory(), never an existing
 // file.
 std::string suggestedSavePath(const App& app);
+// Where Save writes in the browser build, which then offers the file as a download of that name:
+// kBrowserDownloads/STEM.json, STEM from the scene's name ("bouncing_squares.json").
+inline constexpr const char* kBrowserDownloads = "/downloads";
+std::string browserDownloadPath(const App& app);
 
 // Writes a plot's table (csv_export.h) in saveDirectory(), named after the scene and the plot
 // (lecture_example_1-momentum.csv, then -2, ...: never an existing file); the note

@@ -35,15 +35,21 @@ const std::vector<KeyBinding>& keyBindings() {
          "Keyboard: the focus ring on the next window (the panel, each overlay window, Help)"},
         {keys::kF11, false, Action::ToggleFullscreen, "F11", "Fullscreen"},
         {keys::kF1, false, Action::ToggleHelp, "F1", "This help"},
-        {keys::kEqual, true, Action::UiScaleUp, "Ctrl+=", "Larger UI (projector)"},
-        {keys::kKeypadAdd, true, Action::UiScaleUp, "Ctrl+Keypad +", "Larger UI"},
-        {keys::kMinus, true, Action::UiScaleDown, "Ctrl+-", "Smaller UI"},
-        {keys::kKeypadSubtract, true, Action::UiScaleDown, "Ctrl+Keypad -", "Smaller UI"},
-        {keys::kS, true, Action::Save, "Ctrl+S", "Save the current state as a scene"},
+        {keys::kEqual, true, Action::UiScaleUp, "Ctrl+=", "Larger UI (projector)", true, false,
+         KeyWhen::Always, "The browser's zoom: a larger UI (projector)"},
+        {keys::kKeypadAdd, true, Action::UiScaleUp, "Ctrl+Keypad +", "Larger UI", true, false,
+         KeyWhen::Always, "The browser's zoom: a larger UI"},
+        {keys::kMinus, true, Action::UiScaleDown, "Ctrl+-", "Smaller UI", true, false,
+         KeyWhen::Always, "The browser's zoom: a smaller UI"},
+        {keys::kKeypadSubtract, true, Action::UiScaleDown, "Ctrl+Keypad -", "Smaller UI", true,
+         false, KeyWhen::Always, "The browser's zoom: a smaller UI"},
+        {keys::kS, true, Action::Save, "Ctrl+S",
+         "Save the current state as a scene (the browser downloads it)"},
         {keys::kDelete, false, Action::DeleteSelected, "Delete", "Remove the selected block"},
         {keys::kEscape, false, Action::Escape, "Esc",
          "Close Help or a dialog; leave present mode or fullscreen"},
-        {keys::kQ, true, Action::Quit, "Ctrl+Q", "Quit (asks when there are unsaved edits)"},
+        {keys::kQ, true, Action::Quit, "Ctrl+Q", "Quit (asks when there are unsaved edits)", true,
+         false, KeyWhen::Always, ""}, // a tab is closed by the browser (which asks, on edits)
         {keys::kPageDown, false, Action::LessonNext, "PageDown",
          "Lesson: answer, then the next step"},
         {keys::kRight, false, Action::LessonNext, "Right",
@@ -95,12 +101,13 @@ int digitOfKey(int key) {
     return -1;
 }
 
-Action actionForKey(int key, bool ctrl, bool shift, bool thrust) {
+Action actionForKey(int key, bool ctrl, bool shift, bool thrust, bool browser) {
     for (const KeyBinding& b : keyBindings()) {
         if (b.when == (thrust ? KeyWhen::ThrustOff : KeyWhen::ThrustOn)) continue;
-        if (b.key == key && b.ctrl == ctrl && b.shift == shift) return b.action;
+        if (b.key != key || b.ctrl != ctrl || b.shift != shift) continue;
+        return browser && b.inBrowser ? Action::None : b.action; // the browser keeps it
     }
-    if (shift) return actionForKey(key, ctrl, false, thrust);
+    if (shift) return actionForKey(key, ctrl, false, thrust, browser);
     return Action::None;
 }
 

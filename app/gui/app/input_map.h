@@ -108,6 +108,9 @@ struct KeyBinding {
     bool listed = true;      // in the Help window (one row stands for the ten digit keys)
     bool shift = false;
     KeyWhen when = KeyWhen::Always;
+    // In the browser build: nullptr, the same; otherwise the key is the browser's own (not bound)
+    // and this is what Help says of it ("": not listed).
+    const char* inBrowser = nullptr;
 };
 
 // Every binding, in the order the Help window lists them.
@@ -118,8 +121,9 @@ const std::vector<KeyBinding>& keyBindings();
 bool navigationKey(int key);
 // The action for `key` pressed with (or without) Ctrl and Shift, with thrust on or off;
 // Action::None when unbound. A key bound without Shift also answers with Shift held when it has
-// no Shift binding of its own.
-Action actionForKey(int key, bool ctrl, bool shift = false, bool thrust = false);
+// no Shift binding of its own. In the browser (`browser`), keys the browser keeps answer None.
+Action actionForKey(int key, bool ctrl, bool shift = false, bool thrust = false,
+                    bool browser = false);
 // The unit vector a thrust action pushes along ((1, 0) for ThrustRight); zero for other actions.
 Vec2 thrustDirectionOf(Action action);
 // The direction the held thrust keys push (their bindings in the table, `isDown` asked for each

@@ -1,6 +1,7 @@
 #include "canvas_web.h"
 
 #include "app_frame.h"
+#include "browser_input.h"
 #include "input_map.h"
 #include "ui_renderer_gl.h"
 
@@ -32,10 +33,26 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
 
 // JavaScript, not C++: kept as written.
 // clang-format off
-// The page's size in CSS pixels and its device pixel ratio.
-EM_JS(double, page_width, (), { return window.innerWidth; });
-EM_JS(double, page_height, (), { return window.innerHeight; });
-EM_JS(double, page_pixel_ratio, (), { return window.devicePixelRatio || 1; });
+// The canvas's size in CSS pixels and the device pixel ratio, as the page last measured them
+// (web/index.html: on resize, full screen and a change of ratio).
+EM_JS(void, page_canvas_size, (double* out), {
+    const s = window.sandboxPage.canvasSize;
+    HEAPF64[out >> 3] = s.width;
+    HEAPF64[(out >> 3) + 1] = s.height;
+    HEAPF64[(out >> 3) + 2] = s.ratio;
+    HEAPF64[(out >> 3) + 3] = s.fullscreen ? 1 : 0;
+});
+// The canvas's backing store, and what emscripten's GLFW reports as the window's and the
+// framebuffer's size (both framebuffer pixels here). Not glfwSetWindowSize: it asks for full
+// screen when the size equals the screen's, which a page may not do outside a user gesture.
+EM_JS(void, canvas_set_backing_size, (int width, int height), {
+    Module.canvas.width = width;
+    Module.canvas.height = height;
+    if (GLFW.active) {
+        GLFW.active.width = width;
+        GLFW.active.height = height;
+    }
+});
 
 EM_JS(char*, page_query_string, (), { return allocateUTF8(window.location.search || ""); });
 EM_JS(char*, storage_get, (const char* key), {
@@ -58,6 +75,15 @@ EM_JS(void, page_toggle_fullscreen, (), { window.sandboxPage.toggleFullscreen();
 EM_JS(void, page_first_frame_shown, (), { window.sandboxPage.firstFrameShown(); });
 EM_JS(void, page_show_state, (const char* json), { window.sandboxPage.showState(UTF8ToString(json)); });
 EM_JS(void, page_announce, (const char* text), { window.sandboxPage.announce(UTF8ToString(text)); });
+EM_JS(void, page_set_unsaved_edits, (int unsaved), { window.sandboxPage.setUnsavedEdits(!!unsaved); });
+EM_JS(void, page_set_link, (const char* query, const char* scene), {
+    window.sandboxPage.setLink(UTF8ToString(query), UTF8ToString(scene));
+});
+EM_JS(void, page_copy_link, (const char* query, const char* scene), {
+    window.sandboxPage.copyLink(UTF8ToString(query), UTF8ToString(scene));
+});
+EM_JS(char*, page_link_scene, (), { return allocateUTF8(window.sandboxPage.linkScene || ""); });
+EM_JS(char*, page_link_error, (), { return allocateUTF8(window.sandboxPage.linkError || ""); });
 // clang-format on
 
 std::string takeString(char* text) {
@@ -67,18 +93,20 @@ std::string takeString(char* text) {
     return s;
 }
 
-// The canvas follows the page: CSS size of the window, backing store of that times the ratio.
+// The canvas follows its CSS size (the page's stylesheet: the whole viewport, in or out of full
+// screen): its backing store is that size times the device pixel ratio, at any ratio.
 void followPage(CanvasWeb& c) {
-    const double ratio = page_pixel_ratio();
-    const double cssWidth = page_width(), cssHeight = page_height();
-    const int width = std::max(1, static_cast<int>(std::lround(cssWidth * ratio)));
-    const int height = std::max(1, static_cast<int>(std::lround(cssHeight * ratio)));
+    double css[4] = {0.0, 0.0, 1.0, 0.0};
+    page_canvas_size(css);
+    c.fullscreen = css[3] != 0.0;
+    const double ratio = css[2] > 0.0 && std::isfinite(css[2]) ? css[2] : 1.0;
+    const int width = std::max(1, static_cast<int>(std::lround(css[0] * ratio)));
+    const int height = std::max(1, static_cast<int>(std::lround(css[1] * ratio)));
     if (width == c.width && height == c.height && ratio == c.devicePixelRatio) return;
     c.width = width;
     c.height = height;
     c.devicePixelRatio = ratio;
-    glfwSetWindowSize(c.window, width, height);
-    emscripten_set_element_css_size("#canvas", cssWidth, cssHeight);
+    canvas_set_backing_size(width, height);
 }
 
 } // namespace
@@ -86,6 +114,15 @@ void followPage(CanvasWeb& c) {
 // Called by web/index.html: a file the user picked, already written into the browser's FS.
 extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_file_opened(const char* path) {
     if (gCanvas && path) gCanvas->openedFiles.emplace_back(path);
+}
+
+// Called by web/index.html for a wheel event over the canvas (which it keeps from emscripten's
+// GLFW: that passes the raw deltas, about 100 per notch and the wrong way round).
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_wheel(double deltaX, double deltaY,
+                                                       int deltaMode) {
+    if (!gCanvas) return;
+    const Vec2 n = wheelNotches(deltaX, deltaY, deltaMode);
+    if (n.x != 0.0 || n.y != 0.0) ImGui_ImplGlfw_ScrollCallback(gCanvas->window, n.x, n.y);
 }
 
 // Called by web/index.html for a two-finger move: midpoints and spread in CSS pixels.
@@ -198,4 +235,24 @@ void pageShowState(const std::string& json) {
 
 void pageAnnounce(const std::string& text) {
     page_announce(text.c_str());
+}
+
+void pageSetUnsavedEdits(bool unsaved) {
+    page_set_unsaved_edits(unsaved ? 1 : 0);
+}
+
+void pageSetLink(const std::string& query, const std::string& sceneJson) {
+    page_set_link(query.c_str(), sceneJson.c_str());
+}
+
+void pageCopyLink(const std::string& query, const std::string& sceneJson) {
+    page_copy_link(query.c_str(), sceneJson.c_str());
+}
+
+std::string pageLinkScene() {
+    return takeString(page_link_scene());
+}
+
+std::string pageLinkError() {
+    return takeString(page_link_error());
 }

@@ -24,6 +24,7 @@ struct CanvasWeb {
     GLFWwindow* window = nullptr;
     int width = 0, height = 0;            // the canvas, framebuffer pixels (CSS pixels x ratio)
     double devicePixelRatio = 1.0;        // framebuffer pixels per CSS pixel
+    bool fullscreen = false;              // the page is full screen
     double lastTime = 0.0;                // s
     std::vector<KeyPress> keyPresses;     // since the last canvasTakeKeyPresses()
     std::vector<int> heldTaps;            // keys held down one frame for ImGui (holdKeyTaps)
@@ -54,3 +55,14 @@ void pageFirstFrameShown(); // hides the loading note
 // pageStateJson(), and one sentence for the polite live region.
 void pageShowState(const std::string& json);
 void pageAnnounce(const std::string& text);
+// With unsaved edits, the browser asks before the tab is closed or reloaded (beforeunload).
+void pageSetUnsavedEdits(bool unsaved);
+// The address bar shows this link (link.h: the query, and the scene it carries or ""); the page
+// compresses the scene and replaces the history entry (at most every few hundred ms).
+void pageSetLink(const std::string& query, const std::string& sceneJson);
+// The same link onto the clipboard; the page answers with sandbox_web_link_copied().
+void pageCopyLink(const std::string& query, const std::string& sceneJson);
+// The scene the opened link carried (#scene=...), decoded by the page into a file before the app
+// started: its path, or "". pageLinkError(): why it could not be decoded, or "".
+std::string pageLinkScene();
+std::string pageLinkError();

@@ -7,6 +7,7 @@
 #include "app_setup.h"
 #include "audio_out.h"
 #include "canvas_web.h"
+#include "link.h"
 #include "mouse_tool.h"
 #include "options.h"
 #include "page_controls.h"
@@ -19,7 +20,9 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 namespace {
@@ -34,7 +37,12 @@ struct WebApp {
     AudioOut audio; // Web Audio, through emscripten's OpenAL
     AppConfig config;
     std::string storedSettings; // what local storage holds, to write only on change
-    double pixelRatio = 1.0;    // the ratio app.view.uiScale includes (the user's scale times it)
+    bool unsavedShown = false;  // what the page was last told (it asks before unloading then)
+    // The link the address bar shows (link.h): its query and the scene it carries ("" for none),
+    // and when that scene was last made (s on the page's clock).
+    std::string linkQuery, linkScene;
+    double linkSceneAt = -1e9;
+    double pixelRatio = 1.0; // the ratio app.view.uiScale includes (the user's scale times it)
     long long frames = 0;
     double realTime = 0.0;  // s since the first frame (the live region's pace)
     std::string shownState; // pageStateJson() as the page last got it
@@ -47,12 +55,14 @@ WebApp* gWeb = nullptr;
 void followPixelRatio(WebApp& w) {
     const double ratio = w.canvas.devicePixelRatio;
     if (ratio == w.pixelRatio) return;
-    setUiScale(w.app, static_cast<float>(w.app.view.uiScale / w.pixelRatio * ratio));
+    setUiScale(w.app.view, static_cast<float>(w.app.view.uiScale / w.pixelRatio * ratio));
     w.pixelRatio = ratio;
 }
 
 void saveSettings(WebApp& w) {
-    w.config.lastScene = w.app.sim.scenePath;
+    // Only a shipped scene is there next time (opened, saved and linked ones live in memory).
+    for (const SceneEntry& s : w.app.shipped.scenes)
+        if (s.path == w.app.sim.scenePath) w.config.lastScene = s.path;
     w.config.uiScale = static_cast<float>(w.app.view.uiScale / w.pixelRatio);
     w.config.windowWidth = w.canvas.width;
     w.config.windowHeight = w.canvas.height;
@@ -68,6 +78,27 @@ void saveSettings(WebApp& w) {
     }
 }
 
+// The address bar follows what is on screen (history replaced, never pushed). The scene it
+// carries is made again at most every kLinkRefreshSeconds while paused; while the simulation
+// runs the blocks move every frame, so the link keeps the scene as it last was when paused.
+constexpr double kLinkRefreshSeconds = 0.5;
+
+void followLink(WebApp& w, double now) {
+    const App& app = w.app;
+    std::string scene = w.linkScene;
+    if (!linkCarriesScene(app)) {
+        scene.clear();
+    } else if (scene.empty() || (app.sim.paused && now - w.linkSceneAt >= kLinkRefreshSeconds)) {
+        scene = sceneToJson(app.sim.currentScene());
+        w.linkSceneAt = now;
+    }
+    std::string query = linkQuery(app);
+    if (query == w.linkQuery && scene == w.linkScene) return;
+    w.linkQuery.swap(query);
+    w.linkScene.swap(scene);
+    pageSetLink(w.linkQuery, w.linkScene);
+}
+
 // Requests the app made of its platform, answered by the page.
 void answerRequests(WebApp& w) {
     App& app = w.app;
@@ -75,9 +106,17 @@ void answerRequests(WebApp& w) {
     app.ui.savedFile.clear();
     if (app.ui.filePickerRequested) pageOpenFilePicker();
     app.ui.filePickerRequested = false;
+    if (app.ui.copyLinkRequested) // the scene as it is now, running or not
+        pageCopyLink(linkQuery(app),
+                     linkCarriesScene(app) ? sceneToJson(app.sim.currentScene()) : "");
+    app.ui.copyLinkRequested = false;
     if (app.ui.fullscreenRequested) pageToggleFullscreen();
     app.ui.fullscreenRequested = false;
     app.ui.quitRequested = false; // Esc: closing the tab is the browser's
+    if (app.sim.unsavedEdits() != w.unsavedShown) {
+        w.unsavedShown = !w.unsavedShown;
+        pageSetUnsavedEdits(w.unsavedShown);
+    }
 }
 
 // The page's text for a screen reader, kept in step with the canvas, and the collisions through
@@ -98,6 +137,7 @@ void frame(void* arg) {
     double realSeconds = 0.0;
     canvasNewFrame(w.canvas, &realSeconds);
     followPixelRatio(w);
+    app.view.fullscreen = w.canvas.fullscreen;
     if (app.view.uiScale != uiCurrentScale()) {
         uiApplyScale(app.view.uiScale);
         uiRendererFontsChanged();
@@ -114,6 +154,7 @@ void frame(void* arg) {
     w.audio.play(app.sim.sound);
     answerRequests(w);
     tellPage(w, realSeconds);
+    followLink(w, emscripten_get_now() / 1000.0);
     saveSettings(w);
     if (w.frames++ == 0) pageFirstFrameShown();
 }
@@ -138,12 +179,31 @@ std::string navigationJson() {
 
 } // namespace
 
+// Called by web/index.html when "Copy link" is done: the note, or the error (a link too long).
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_link_copied(int chars, int copied) {
+    if (!gWeb) return;
+    App& app = gWeb->app;
+    if (chars > static_cast<int>(kMaxLinkChars))
+        app.ui.messages.error = linkTooLongMessage(static_cast<std::size_t>(chars));
+    else if (copied)
+        app.ui.messages.note = "Link copied (" + std::to_string(chars) + " characters)";
+    else
+        app.ui.messages.error =
+            "The browser did not let the page copy the link: it is in the address bar.";
+}
+
 // For the browser tests and the page: the app's state as JSON (scene, method, paused, frames,
 // error). The text lives until the next call.
 extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
     static std::string text;
     if (!gWeb) return "{}";
     const App& app = gWeb->app;
+    auto exact = [](double v) { // every digit, so a test compares exactly (null: infinite)
+        if (!std::isfinite(v)) return std::string("null");
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.17g", v);
+        return std::string(buffer);
+    };
     auto quoted = [](const std::string& s) {
         std::string out = "\"";
         for (const char c : s) {
@@ -164,8 +224,30 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
            ",\"plots\":" + (app.view.show.plots ? "true" : "false") +
            ",\"inspector\":" + (app.view.show.inspector ? "true" : "false") + ",\"lessonStep\":" +
            (app.lesson.active() ? std::to_string(app.lesson.current + 1) : std::string("0")) +
-           ",\"bounciness\":" + std::to_string(app.sim.world().settings.bounciness) +
-           navigationJson() + "}";
+           ",\"pixelsPerMetre\":" + exact(app.view.camera.pixelsPerMetre()) +
+           ",\"unsaved\":" + (app.sim.unsavedEdits() ? "true" : "false") +
+           ",\"note\":" + quoted(app.ui.messages.note) +
+           ",\"fullscreen\":" + (app.view.fullscreen ? "true" : "false");
+    // Each block: its state ([x, y, vx, vy, width, height, mass], every digit) and where it is
+    // drawn ([left, top, width, height] in CSS pixels).
+    const double ratio = gWeb->canvas.devicePixelRatio;
+    std::string blocks, onScreen;
+    for (const Block& b : app.sim.world().blocks) {
+        blocks += std::string(blocks.empty() ? "" : ",") + "[" + exact(b.position.x) + "," +
+                  exact(b.position.y) + "," + exact(b.velocity.x) + "," + exact(b.velocity.y) +
+                  "," + exact(b.size.x) + "," + exact(b.size.y) + "," + exact(b.mass) + "]";
+        const Vec2 corner = app.view.camera.worldToScreen(b.position - b.size * 0.5);
+        const double ppm = app.view.camera.pixelsPerMetre();
+        onScreen += std::string(onScreen.empty() ? "" : ",") + "[" + exact(corner.x / ratio) + "," +
+                    exact((corner.y - b.size.y * ppm) / ratio) + "," +
+                    exact(b.size.x * ppm / ratio) + "," + exact(b.size.y * ppm / ratio) + "]";
+    }
+    const ScreenRect& scene = app.view.layout.scene;
+    text += ",\"blocks\":[" + blocks + "],\"blocksOnScreen\":[" + onScreen +
+            "],\"sceneOnScreen\":[" + exact(scene.x / ratio) + "," + exact(scene.y / ratio) + "," +
+            exact(scene.width / ratio) + "," + exact(scene.height / ratio) +
+            "],\"bounciness\":" + std::to_string(app.sim.world().settings.bounciness) +
+            navigationJson() + "}";
     return text.c_str();
 }
 
@@ -187,15 +269,20 @@ int main() {
     App& app = w.app;
     w.storedSettings = storageGet(kSettingsKey);
     w.config = parseAppConfig(w.storedSettings);
-    const UrlParams params = parseUrlParams(pageQueryString());
+    UrlParams params = parseUrlParams(pageQueryString());
+    params.linkScene = pageLinkScene();
     std::string error;
     setupApp(app, Options{}, w.config.lastScene, &error);
     applyUrlParams(app, params);
     app.sim.sound.chosen = w.config.sound >= 0;
     app.sim.sound.on = w.config.sound == 1;
     app.sim.sound.volume = w.config.volume;
-    app.ui.browserFiles = true;
-    app.ui.savePath = "saved_scene.json";
+    const std::string linkError = pageLinkError();
+    if (!linkError.empty())
+        app.ui.messages.error += (app.ui.messages.error.empty() ? "" : "\n") + linkError;
+    app.ui.inBrowser = true;
+    std::error_code ec;
+    std::filesystem::create_directories(kBrowserDownloads, ec); // Save writes there
 
     uiCreateContext(nullptr);
     const std::string ini = storageGet(kImGuiIniKey);

@@ -21,7 +21,8 @@ void handleKeys(App& app, const std::vector<KeyPress>& keys) {
     const bool typing = ImGui::GetIO().WantTextInput;
     const bool keyboardNavigation = navigating();
     for (const KeyPress& k : keys) {
-        const Action action = actionForKey(k.key, k.ctrl, k.shift, app.sim.thrust.on);
+        const Action action =
+            actionForKey(k.key, k.ctrl, k.shift, app.sim.thrust.on, app.ui.inBrowser);
         if (typing && action != Action::Escape) continue;
         if (keyboardNavigation && !k.ctrl && navigationKey(k.key)) continue;
         if (action == Action::LessonDigit)
@@ -133,6 +134,12 @@ void applyAction(App& app, Action action) {
         if (app.ui.quitDialogOpen) logEvent(app, "quit: unsaved edits, asking");
         break;
     case Action::Save:
+        if (app.ui.inBrowser) { // the browser's download asks where, and never overwrites
+            const std::string path = browserDownloadPath(app);
+            if (saveCurrentScene(app, path))
+                app.ui.messages.note = "Downloaded " + path.substr(path.rfind('/') + 1);
+            break;
+        }
         app.ui.saveDialogOpen = true;
         app.ui.saveDialogPath = suggestedSavePath(app);
         break;

@@ -74,7 +74,12 @@ void typedWarning(const App& app, const char* field) {
 
 void scenePicker(App& app) {
     const char* preview = app.sim.scene.name.empty() ? "(no scene)" : app.sim.scene.name.c_str();
-    ImGui::SetNextItemWidth(-1.0f);
+    const char* copyLink = "Copy link";
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float copyWidth = app.ui.inBrowser ? ImGui::CalcTextSize(copyLink).x +
+                                                   2.0f * style.FramePadding.x + style.ItemSpacing.x
+                                             : 0.0f;
+    ImGui::SetNextItemWidth(-1.0f - copyWidth);
     // Taller than the default 8 rows: every shipped scene at once, in the lecture's order.
     if (ImGui::BeginCombo("##scene", preview, ImGuiComboFlags_HeightLargest)) {
         for (const SceneEntry& e : app.shipped.scenes) {
@@ -96,6 +101,11 @@ void scenePicker(App& app) {
     }
     tooltip("The shipped scenes in the lecture's order (app/scenes/lecture_order.txt), and "
             "lessons (lessons/)");
+    if (!app.ui.inBrowser) return;
+    ImGui::SameLine();
+    if (ImGui::Button(copyLink)) app.ui.copyLinkRequested = true;
+    tooltip("A link for what is on screen: the scene (edited, it travels inside the link), the "
+            "method, the overlays, the frame, the lesson's step. The address bar follows too.");
 }
 
 // The open lesson's steps: click one to go there.
@@ -129,12 +139,13 @@ void lessonSection(App& app) {
 
 void fileSection(App& app) {
     if (!ImGui::CollapsingHeader("Open and save")) return;
-    if (app.ui.browserFiles) {
+    if (app.ui.inBrowser) {
         if (ImGui::Button("Open a scene file...")) app.ui.filePickerRequested = true;
         tooltip("The browser's file dialog; or drop a .json file on the page (a .csv is a trace "
                 "of your engine: the Compare section)");
-        if (ImGui::Button("Save (download)")) saveCurrentScene(app, app.ui.savePath);
-        tooltip("Downloads the current state as a scene file (format v1); Ctrl+S");
+        if (ImGui::Button("Save (download)")) applyAction(app, Action::Save);
+        tooltip("Downloads the current state as a scene file (format v1) named after the scene; "
+                "Ctrl+S");
         return;
     }
     ImGui::InputTextWithHint("##open", "path/to/scene.json", &app.ui.openPath);
@@ -170,13 +181,14 @@ void compareSection(App& app) {
             st.units.originPx = {origin[0], origin[1]};
         tooltip("The pixel of the world's top-left corner (your walls' margin)");
     }
-    if (app.browserFiles) {
-        if (ImGui::Button("Open a trace...")) app.filePickerRequested = true;
+    if (app.ui.inBrowser) {
+        if (ImGui::Button("Open a trace...")) app.ui.filePickerRequested = true;
         tooltip("The browser's file dialog; or drop a .csv file on the page");
     } else {
         ImGui::InputTextWithHint("##trace", "path/to/my_trace.csv", &app.ui.tracePath);
         ImGui::SameLine();
-        if (ImGui::Button("Open##trace") && !app.ui.tracePath.empty()) openTrace(app, app.ui.tracePath);
+        if (ImGui::Button("Open##trace") && !app.ui.tracePath.empty())
+            openTrace(app, app.ui.tracePath);
         tooltip("A CSV with t, then NAME_x, NAME_y, NAME_vx, NAME_vy per block; or drop it on "
                 "the window");
     }

@@ -32,14 +32,18 @@ void drawHelpWindow(App& app) {
     }
     recordShownWindow(app, "Help");
     ImGui::TextUnformatted(
-        "Esc closes this window.  F5: present mode.  Tab: keyboard focus on the panel.  "
-        "Ctrl+Q quits.");
+        app.ui.inBrowser ? "Esc closes this window.  F5: present mode.  Tab: keyboard focus on the "
+                           "panel.  Close the tab to quit."
+                         : "Esc closes this window.  F5: present mode.  Tab: keyboard focus on the "
+                           "panel.  Ctrl+Q quits.");
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
     if (ImGui::BeginTabBar("help")) {
         if (ImGui::BeginTabItem("Keys")) {
             if (ImGui::BeginTable("keys", 2, flags)) {
                 for (const KeyBinding& b : keyBindings()) {
-                    if (b.listed) row(b.keyName, b.description);
+                    const char* what =
+                        app.ui.inBrowser && b.inBrowser ? b.inBrowser : b.description;
+                    if (b.listed && *what) row(b.keyName, what);
                 }
                 ImGui::EndTable();
             }

@@ -42,7 +42,7 @@ void updateCamera(View& view, const World& world, bool captionBar, double displa
 }
 
 void showNewScene(View& view, const Scene& scene) {
-    if (!view.overlaysChosen) view.show.vectors = scene.blocks.size() <= kVectorsByDefaultUpTo;
+    if (!view.overlaysChosen) view.show.vectors = vectorsByDefault(scene);
     view.autoFit = true;
 }
 

@@ -68,6 +68,9 @@ void updateCamera(View& view, const World& world, bool captionBar, double displa
 
 // Velocity arrows are on by default for scenes with at most this many blocks (more is clutter).
 constexpr std::size_t kVectorsByDefaultUpTo = 50;
+inline bool vectorsByDefault(const Scene& scene) {
+    return scene.blocks.size() <= kVectorsByDefaultUpTo;
+}
 // A scene was loaded: fit it again, and its arrows on by default when it has few blocks (unless
 // --show chose the overlays).
 void showNewScene(View& view, const Scene& scene);

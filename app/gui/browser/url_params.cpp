@@ -5,7 +5,9 @@
 #include "printable.h"
 #include "scene_library.h"
 
+#include <algorithm>
 #include <cctype>
+#include <iterator>
 #include <set>
 
 namespace {
@@ -50,11 +52,46 @@ bool isSceneName(const std::string& name) {
     return true;
 }
 
+// The known parameters' names, for the message about unknown ones.
+std::string knownNames() {
+    std::string names;
+    for (const UrlParamInfo& info : kUrlParams)
+        names += (names.empty() ? "" : ", ") + std::string(info.name);
+    return names;
+}
+
+// "unknown URL parameter 'zoom' ignored (known: ...)", or for many "3 unknown URL parameters
+// ignored: 'a', 'b', 'c' (known: ...)", naming at most a few.
+std::string unknownLine(const std::vector<std::string>& unknown) {
+    constexpr std::size_t kNamed = 3;
+    std::string named;
+    for (std::size_t i = 0; i < unknown.size() && i < kNamed; ++i)
+        named += (i ? ", " : "") + echo(unknown[i]);
+    if (unknown.size() > kNamed) named += ", ...";
+    const std::string known = " (known: " + knownNames() + ")";
+    if (unknown.size() == 1) return "unknown URL parameter " + named + " ignored" + known;
+    return std::to_string(unknown.size()) + " unknown URL parameters ignored: " + named + known;
+}
+
 } // namespace
+
+bool isTrackerParam(std::string_view name) {
+    // Campaign tags (utm_*) and the click identifiers of ad and social networks and mailers.
+    static constexpr std::string_view kTrackers[] = {
+        "fbclid",  "gclid",    "gclsrc", "dclid",   "gbraid",    "wbraid",      "msclkid",
+        "yclid",   "twclid",   "ttclid", "igshid",  "mc_cid",    "mc_eid",      "_ga",
+        "_gl",     "_hsenc",   "_hsmi",  "mkt_tok", "li_fat_id", "oly_anon_id", "oly_enc_id",
+        "vero_id", "wickedid", "s_cid",  "ref_src"};
+    if (name.substr(0, 4) == "utm_") return true;
+    for (const std::string_view t : kTrackers)
+        if (name == t) return true;
+    return false;
+}
 
 UrlParams parseUrlParams(const std::string& query) {
     UrlParams p;
     std::set<std::string> seen;
+    std::vector<std::string> unknown;
     std::size_t start = !query.empty() && query[0] == '?' ? 1 : 0;
     while (start <= query.size()) {
         std::size_t end = query.find('&', start);
@@ -66,6 +103,13 @@ UrlParams parseUrlParams(const std::string& query) {
         const std::string key = percentDecode(pair.substr(0, eq));
         const std::string value = eq == std::string::npos ? "" : percentDecode(pair.substr(eq + 1));
         const std::string where = "URL parameter " + printable(key);
+        if (isTrackerParam(key)) continue;
+        const bool known = std::any_of(std::begin(kUrlParams), std::end(kUrlParams),
+                                       [&key](const UrlParamInfo& i) { return key == i.name; });
+        if (!known) {
+            unknown.push_back(key);
+            continue;
+        }
         if (!seen.insert(key).second) {
             p.errors.push_back(where + ": given twice (the first one counts)");
             continue;
@@ -82,6 +126,9 @@ UrlParams parseUrlParams(const std::string& query) {
             else
                 p.errors.push_back(where + ": unknown method " + echo(value) +
                                    " (perfect, move-and-correct, turn-based)");
+        } else if (key == "show" && value.empty()) { // a link's way to say: no overlay
+            p.show = ShowSet{};
+            p.showGiven = true;
         } else if (key == "show") {
             std::string error;
             ShowSet show;
@@ -110,15 +157,19 @@ UrlParams parseUrlParams(const std::string& query) {
             else
                 p.errors.push_back(where + ": " + echo(value) +
                                    " is not a step number (1, 2, ...)");
-        } else {
-            p.errors.push_back("unknown URL parameter " + echo(key) +
-                               " (scene, method, show, frame, lesson, step)");
         }
     }
     if (p.step > 0 && p.lesson.empty()) {
         p.errors.push_back("URL parameter step: needs a lesson (lesson=NAME)");
         p.step = 0;
     }
+    // A link with thousands of bad parameters still leaves the panel its controls: a few lines.
+    if (p.errors.size() > kMaxUrlErrors) {
+        const std::size_t more = p.errors.size() - kMaxUrlErrors;
+        p.errors.resize(kMaxUrlErrors);
+        p.errors.push_back("... and " + std::to_string(more) + " more problems in the URL");
+    }
+    if (!unknown.empty()) p.errors.push_back(unknownLine(unknown));
     return p;
 }
 
@@ -136,7 +187,10 @@ void applyUrlParams(App& app, const UrlParams& params) {
         else if (!openLesson(app, path, first))
             add(app.ui.messages.error);
     }
-    if (!params.scene.empty()) {
+    if (!params.linkScene.empty() && params.lesson.empty()) {
+        if (!loadScene(app, params.linkScene))
+            add("the link's scene (#scene=...): " + app.ui.messages.error);
+    } else if (!params.scene.empty()) {
         const std::string path = app.shipped.scenesDir + "/" + params.scene + ".json";
         bool shipped = false;
         for (const SceneEntry& s : app.shipped.scenes) shipped = shipped || s.path == path;

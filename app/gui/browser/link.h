@@ -1,0 +1,27 @@
+// A link for what is on screen (the browser build's address bar and its "Copy link"):
+//   ?scene=newtons_cradle&method=turn-based&show=plots,inspector&frame=com
+//   ?lesson=lecture3&step=5
+//   ?show=plots#scene=<the scene itself, compressed>
+// The query names a shipped scene or lesson and what differs from opening it plainly (the
+// parameters of url_params.h). When the scene on screen is not a shipped one as it starts (its
+// blocks or settings were edited, it came from a file, or it has run on), the link carries the
+// scene itself in its fragment: the page compresses sceneToJson(currentScene(app)) (deflate-raw,
+// base64url) into #scene=..., and opening the link restores exactly those blocks and settings
+// (at t = 0). Pure logic: the web main asks it every frame and tells the page what changed.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+struct App;
+
+// The query for the app's state, without the '?' ("" for the default scene as it opens).
+std::string linkQuery(const App& app);
+// True when the link must carry the scene itself (see above).
+bool linkCarriesScene(const App& app);
+// The fragment's key for the carried scene, and the longest link browsers take in their address
+// bar (Chromium shows about 32,000 characters; longer links are refused by some services).
+inline constexpr const char* kLinkSceneKey = "scene";
+inline constexpr std::size_t kMaxLinkChars = 32000;
+// The message when a link with the scene would be longer than kMaxLinkChars.
+std::string linkTooLongMessage(std::size_t chars);
