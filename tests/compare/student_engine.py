@@ -4,8 +4,16 @@ engine"): Assignment 3's axis-aligned blocks as the course's C# code would have 
 precision, turn-based (each block moves until its first collision, the others held still), the
 point of impact t = a/b, and the lecture's formula on the collision's axis. One mistake can be
 built in:
-  --mistake move-back   move the whole frame, then back out along the collision axis only
-  --mistake wrong-axis  the formula applied to the other coordinate of the velocities
+  --mistake move-back       move the whole frame, then back out along the collision axis only
+  --mistake put-back        put back where the frame started, not at the point of impact
+  --mistake not-corrected   move the whole frame and leave the blocks overlapping
+  --mistake wrong-axis      the formula applied to the other coordinate of the velocities
+  --mistake both-axes       the formula applied to both coordinates
+  --mistake reflect         each block reverses its own velocity, v' = -C v (without Newton)
+  --mistake formula-sign    v' = u + C (v - u)
+  --mistake masses-swapped  u = (m2 v1 + m1 v2) / (m1 + m2)
+  --mistake bounciness      C = 1 whatever the scene says
+  --mistake explicit-euler  move with the velocity from before gravity was added
 It prints what the student would print from Step(): one row per frame, in SI units or, with
 --units gxp, in pixels with y down and velocities in pixels per frame; --european writes
 semicolons and decimal commas as a spreadsheet in Europe does.
@@ -52,6 +60,8 @@ class Body:
 
 
 INF = float("inf")
+MISTAKES = ["none", "move-back", "put-back", "not-corrected", "wrong-axis", "both-axes", "reflect",
+            "formula-sign", "masses-swapped", "bounciness", "explicit-euler"]
 
 
 def entry_exit(lo_a, hi_a, lo_b, hi_b, v, frame):
@@ -96,11 +106,10 @@ def impact_with_walls(a, bounds, frame):
 
 
 def step(bodies, bounds, gravity, c, frame, mistake):
-    for a in bodies:
-        if a.static:
-            continue
-        a.vx = f32(a.vx + f32(gravity[0] * frame))
-        a.vy = f32(a.vy + f32(gravity[1] * frame))
+    if mistake == "bounciness":
+        c = 1.0
+    if mistake != "explicit-euler":
+        accelerate(bodies, gravity, frame)
     for a in bodies:
         if a.static:
             continue
@@ -117,30 +126,51 @@ def step(bodies, bounds, gravity, c, frame, mistake):
             continue
         t, axis = first
         poi = (f32(a.x + f32(t * f32(a.vx * frame))), f32(a.y + f32(t * f32(a.vy * frame))))
+        whole = (f32(a.x + f32(a.vx * frame)), f32(a.y + f32(a.vy * frame)))
         if mistake == "move-back":  # the whole frame, then back along the collision axis only
-            a.x, a.y = f32(a.x + f32(a.vx * frame)), f32(a.y + f32(a.vy * frame))
-            if axis == 0:
-                a.x = poi[0]
-            else:
-                a.y = poi[1]
-        else:
+            a.x, a.y = (poi[0], whole[1]) if axis == 0 else (whole[0], poi[1])
+        elif mistake == "not-corrected":
+            a.x, a.y = whole
+        elif mistake != "put-back":  # put-back: left where the frame started
             a.x, a.y = poi
         # The formula on one coordinate: u = (m1 v1 + m2 v2)/(m1 + m2), v' = u - C (v - u), only
         # when the relative velocity closes.
-        resolve_axis = 1 - axis if mistake == "wrong-axis" else axis
-        v1 = a.vel(resolve_axis)
-        v2 = 0.0 if other is None else other.vel(resolve_axis)
         side = 1.0 if (other is None and a.vel(axis) > 0) or (
             other is not None and other.pos(axis) > a.pos(axis)) else -1.0
         if f32((a.vel(axis) - (0.0 if other is None else other.vel(axis))) * side) <= 0:
             continue  # separating: not a collision
-        if other is None or other.static:
-            u = 0.0 if other is None else other.vel(resolve_axis)
-            a.set_vel(resolve_axis, f32(u - f32(c * f32(v1 - u))))
-        else:
-            u = f32(f32(f32(a.m * v1) + f32(other.m * v2)) / f32(a.m + other.m))
-            a.set_vel(resolve_axis, f32(u - f32(c * f32(v1 - u))))
-            other.set_vel(resolve_axis, f32(u - f32(c * f32(v2 - u))))
+        axes = {"wrong-axis": [1 - axis], "both-axes": [0, 1]}.get(mistake, [axis])
+        for resolve_axis in axes:
+            resolve(a, other, resolve_axis, c, mistake)
+    if mistake == "explicit-euler":
+        accelerate(bodies, gravity, frame)
+
+
+def accelerate(bodies, gravity, frame):
+    for a in bodies:
+        if not a.static:
+            a.vx = f32(a.vx + f32(gravity[0] * frame))
+            a.vy = f32(a.vy + f32(gravity[1] * frame))
+
+
+def resolve(a, other, axis, c, mistake):
+    """The lecture's formula along one axis, or the mistake built in."""
+    v1 = a.vel(axis)
+    v2 = 0.0 if other is None else other.vel(axis)
+    if mistake == "reflect":
+        a.set_vel(axis, f32(-c * v1))
+        if other is not None and not other.static:
+            other.set_vel(axis, f32(-c * v2))
+        return
+    sign = 1.0 if mistake == "formula-sign" else -1.0
+    if other is None or other.static:
+        u = v2
+        a.set_vel(axis, f32(u + sign * f32(c * f32(v1 - u))))
+        return
+    m1, m2 = (other.m, a.m) if mistake == "masses-swapped" else (a.m, other.m)
+    u = f32(f32(f32(m1 * v1) + f32(m2 * v2)) / f32(m1 + m2))
+    a.set_vel(axis, f32(u + sign * f32(c * f32(v1 - u))))
+    other.set_vel(axis, f32(u + sign * f32(c * f32(v2 - u))))
 
 
 def main():
@@ -148,7 +178,7 @@ def main():
     p.add_argument("scene")
     p.add_argument("frames", type=int)
     p.add_argument("out")
-    p.add_argument("--mistake", default="none", choices=["none", "move-back", "wrong-axis"])
+    p.add_argument("--mistake", default="none", choices=MISTAKES)
     p.add_argument("--units", default="si", choices=["si", "gxp"])
     p.add_argument("--px-per-m", type=float, default=1.0)
     p.add_argument("--px-origin", default="0,0")

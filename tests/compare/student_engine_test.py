@@ -16,10 +16,16 @@ failures = []
 GXP = ["--units", "gxp", "--px-per-m", "50", "--px-origin", "40,30"]
 
 
+def scene_file(scene):
+    """A shipped scene, or one this test wrote into WORK_DIR."""
+    written = os.path.join(work, scene + ".json")
+    return written if os.path.exists(written) else os.path.join(scenes, scene + ".json")
+
+
 def student(scene, frames, mistake, gxp=True):
     out = os.path.join(work, "student_%s_%s_%d.csv" % (scene, mistake, frames))
     args = [sys.executable, os.path.join(here, "student_engine.py"),
-            os.path.join(scenes, scene + ".json"), str(frames), out, "--mistake", mistake]
+            scene_file(scene), str(frames), out, "--mistake", mistake]
     if gxp:
         args += GXP + ["--european"]
     subprocess.run(args, check=True)
@@ -27,7 +33,7 @@ def student(scene, frames, mistake, gxp=True):
 
 
 def compare(scene, trace, *options, gxp=True):
-    args = [cli, "compare", os.path.join(scenes, scene + ".json"), trace, "--json"]
+    args = [cli, "compare", scene_file(scene), trace, "--json"]
     args += list(options) + (GXP if gxp else [])
     run = subprocess.run(args, capture_output=True, text=True, timeout=120)
     try:
@@ -53,7 +59,8 @@ def variant(report):
 
 
 # The student's correct engine is the reference's turn-based method, to float rounding: the same.
-for scene, frames in (("point_of_impact", 200), ("lecture_example_1", 300)):
+for scene, frames in (("point_of_impact", 200), ("lecture_example_1", 300),
+                      ("single_bounce", 200)):
     code, r = compare(scene, student(scene, frames, "none"), "--method", "turn-based")
     check(code == 0 and r.get("result") == "same", scene + ": the correct engine is the same", r)
     check(0 < r.get("max_position_error", 1) < 1e-4,
@@ -88,6 +95,36 @@ for scene in ("point_of_impact", "mistake_move_back"):
 code, r = compare("point_of_impact", student("point_of_impact", 300, "none"),
                   "--method", "turn-based")
 check(code == 3 and finding_ids(r) == ["corner"], "point_of_impact: the corner at frame 263", r)
+
+# Every other mistake built in, one at a time, named at the collision where the two part; where a
+# switch of the sandbox models it, that variant reproduces the whole trace too. The lecture's
+# example with C = 0.8 (written here), so the formula's sign, the masses in u and the bounciness
+# each give another velocity (with C = 1, u + C·(v - u) is v: the sign would look unresolved).
+example = json.load(open(os.path.join(scenes, "lecture_example_1.json")))
+example["world"]["bounciness"] = 0.8
+with open(os.path.join(work, "lecture_example_1_c08.json"), "w") as f:
+    json.dump(example, f)
+PLANTED = (  # (scene, frames, mistake, the finding, the variant that reproduces it or None)
+    ("lecture_example_1_c08", 300, "reflect", "without-newton", "resolve reflect"),
+    ("lecture_example_1_c08", 300, "formula-sign", "formula-sign", None),
+    ("lecture_example_1_c08", 300, "masses-swapped", "masses-swapped", None),
+    ("lecture_example_1_c08", 300, "bounciness", "bounciness", None),
+    ("point_of_impact", 200, "both-axes", "both-axes", None),
+    ("point_of_impact", 200, "put-back", "put-back", None),
+    ("point_of_impact", 200, "not-corrected", "not-corrected", None),
+    ("single_bounce", 200, "explicit-euler", "explicit-euler", "integrator explicit-euler"),
+)
+code, r = compare("lecture_example_1_c08", student("lecture_example_1_c08", 300, "none"),
+                  "--method", "turn-based")
+check(code == 0, "lecture_example_1 with C = 0.8: the correct engine is the same", r)
+for scene, frames, mistake, finding, expected in PLANTED:
+    code, r = compare(scene, student(scene, frames, mistake), "--method", "turn-based")
+    what = "%s, %s built in" % (scene, mistake)
+    check(code == 3, what + ": different", r)
+    check(finding_ids(r) == [finding], what + ": named " + finding, r)
+    check(variant(r) == expected, what + ": the variant is %s" % expected, r)
+    text = " ".join(r.get("diagnosis", {}).get("text", []))
+    check("(slide '" in text, what + ": the diagnosis names its slide", r)
 
 # In SI units, plain CSV, the same results.
 code, r = compare("point_of_impact", student("point_of_impact", 200, "move-back", gxp=False),

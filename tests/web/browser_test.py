@@ -10,7 +10,7 @@ DevTools protocol (python3-websocket). One check per run:
   url-lesson    ?lesson=lecture3&step=5 opens the lesson at step 5
   url-bad       bad URL parameters show their errors in the panel and keep the default scene
   open-file     a picked or dropped file opens; a bad one shows its error (with its place) and
-                keeps the current scene
+                keeps the current scene; a student's trace (.csv) opens at its first difference
   wheel         one wheel notch up over the scene zooms in by one step (x1.15, as the desktop's
                 wheel), one down zooms out by one, 3 lines (Firefox) are one notch; a notch over
                 the panel scrolls it and leaves the zoom alone
@@ -335,6 +335,22 @@ def open_file(page, base):
     check(s["scene"] == "/opened/cradle.json", f"the picked file did not open: {s}")
     check(s["error"] == "", f"error after a good file: {s}")
     print("a bad file shows its error and keeps the scene; a good one opens")
+
+    # A student's trace (a .csv, docs/compare.md) opens on the current scene: point_of_impact's
+    # mover as the reference moves it for four frames, then left unresolved in the fifth.
+    s = pick("point_of_impact.json", "FS.readFile('/scenes/point_of_impact.json')")
+    check(s["error"] == "" and s["traceFirstDifference"] is None, f"no scene or a trace: {s}")
+    rows = ["t,mover_x,mover_y,mover_vx,mover_vy"]
+    for k in range(1, 6):  # dt 0.1 s, velocity (14, -14) m/s from (3, 9.5)
+        rows.append(f"{k / 10:g},{3 + 1.4 * k:g},{9.5 - 1.4 * k:g},14,-14")
+    s = pick("my_trace.csv", json.dumps("\n".join(rows) + "\n"))
+    check(s["error"] == "", f"error after a good trace: {s}")
+    check(s["traceFirstDifference"] == 5, f"the first difference is not frame 5: {s}")
+    check(s["paused"] and s["simTime"] > 0.45, f"the run did not stop at the difference: {s}")
+    s = pick("bad_trace.csv", json.dumps("t,mover_x,mover_y,mover_vx,mover_vy\n0.1,abc,8.1,14,-14\n"))
+    check("bad_trace.csv:2:5" in s["error"] and "mover_x" in s["error"], f"no place: {s}")
+    check(s["traceFirstDifference"] == 5, f"a bad trace replaced the open one: {s}")
+    print("a trace opens on the scene at its first difference; a bad one shows its place")
 
 
 def wheel(page, base):

@@ -193,7 +193,7 @@ extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_link_copied(int chars, int copi
 }
 
 // For the browser tests and the page: the app's state as JSON (scene, method, paused, frames,
-// error). The text lives until the next call.
+// error, the open trace's first difference). The text lives until the next call.
 extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
     static std::string text;
     if (!gWeb) return "{}";
@@ -227,7 +227,10 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
            ",\"pixelsPerMetre\":" + exact(app.view.camera.pixelsPerMetre()) +
            ",\"unsaved\":" + (app.sim.unsavedEdits() ? "true" : "false") +
            ",\"note\":" + quoted(app.ui.messages.note) +
-           ",\"fullscreen\":" + (app.view.fullscreen ? "true" : "false");
+           ",\"fullscreen\":" + (app.view.fullscreen ? "true" : "false") +
+           ",\"traceFirstDifference\":" + // null: no trace open; -1: the same as the reference
+           (app.studentTrace.open() ? std::to_string(app.studentTrace.firstDifference())
+                                    : std::string("null"));
     // Each block: its state ([x, y, vx, vy, width, height, mass], every digit) and where it is
     // drawn ([left, top, width, height] in CSS pixels).
     const double ratio = gWeb->canvas.devicePixelRatio;
