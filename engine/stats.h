@@ -9,7 +9,9 @@
 enum Wall : int { kWallLeft = -1, kWallRight = -2, kWallBottom = -3, kWallTop = -4 };
 
 struct StepStats {
-    int collisions = 0;           // resolved collisions this frame, walls included
+    int collisions = 0;           // resolved collisions this frame, walls included; resting
+                                  // contacts of the rest rule not (they are `contacts`)
+    int contacts = 0;             // resting contacts resolved by the rest rule this frame
     int events = 0;               // perfect method: event instants processed this frame
     double maxPenetration = 0.0;  // m, largest overlap seen (end of frame, or met by the method)
     Vec2 momentum;                // kg·m/s, total over dynamic blocks
@@ -25,7 +27,8 @@ struct StepStats {
 // the stability matrix).
 struct StepTotals {
     std::int64_t steps = 0;
-    std::int64_t collisions = 0;   // walls included
+    std::int64_t collisions = 0;   // walls included, resting contacts not
+    std::int64_t contacts = 0;     // resting contacts resolved by the rest rule
     std::int64_t events = 0;       // perfect method: event instants
     std::int64_t eventCapHits = 0; // substeps whose event cap ended them early
     double maxPenetration = 0.0;   // m, largest overlap of any step
@@ -36,6 +39,7 @@ struct StepTotals {
 inline void addStep(StepTotals& totals, const StepStats& step) {
     ++totals.steps;
     totals.collisions += step.collisions;
+    totals.contacts += step.contacts;
     totals.events += step.events;
     totals.eventCapHits += step.eventCapHits;
     if (step.maxPenetration > totals.maxPenetration) totals.maxPenetration = step.maxPenetration;

@@ -4,40 +4,12 @@
 
 #include "stats.h"
 #include "vec2.h"
+#include "world_settings.h"
 
 #include <cstdint>
 #include <limits>
 #include <memory>
 #include <vector>
-
-// The lecture's three simulation methods (lecture, "Physics Engine Setup").
-enum class Method : std::uint8_t { Perfect, MoveAndCorrect, TurnBased, Count };
-
-// "perfect", "move-and-correct", "turn-based": the names used in scene files and on the CLI.
-const char* methodName(Method method);
-// Parses a method name; returns false (and leaves `method` alone) for an unknown name.
-bool parseMethod(const char* name, Method& method);
-
-// How a collision changes the velocities (lecture, "Demo: bouncing squares; with/without
-// Newton"): the momentum formula, or each body reversing its own component as off a wall.
-enum class Resolve : std::uint8_t { Momentum, Reflect, Count };
-// How a step advances velocities and positions (lecture, "Integration", "It is just an
-// approximation of the true movement! (Piecewise linear instead of parabola)").
-enum class Integrator : std::uint8_t { SemiImplicitEuler, ExplicitEuler, Exact, Count };
-// The Tips slides' mistakes, each off by default; WorldSettings::mistakes holds a set of them.
-enum class Mistake : std::uint8_t { Discrete, MoveBack, FirstFound, NoApproachTest, Count };
-
-// The names used in scene files and on the CLI: "momentum" | "reflect"; "semi-implicit-euler" |
-// "explicit-euler" | "exact"; "discrete" | "move-back" | "first-found" | "no-approach-test".
-// The parsers return false (and leave the value alone) for an unknown name.
-const char* resolveName(Resolve resolve);
-bool parseResolve(const char* name, Resolve& resolve);
-const char* integratorName(Integrator integrator);
-bool parseIntegrator(const char* name, Integrator& integrator);
-const char* mistakeName(Mistake mistake);
-bool parseMistake(const char* name, Mistake& mistake);
-// The lecture slide each mistake illustrates (for docs, the panel and the stability matrix).
-const char* mistakeSlide(Mistake mistake);
 
 // Dynamic blocks have a finite mass and feel gravity. Static blocks never move. Kinematic blocks
 // move at their own constant velocity, ignore gravity, and reverse the velocity component on
@@ -63,32 +35,6 @@ struct Bounds {
     Vec2 min{0.0, 0.0};   // m, lower-left corner
     Vec2 max{20.0, 12.0}; // m, upper-right corner
 };
-
-struct WorldSettings {
-    Vec2 gravity{0.0, -9.81};        // m/s^2
-    double bounciness = 1.0;         // C in [0, 1], coefficient of restitution (dimensionless)
-    double dt = 1.0 / 60.0;          // s per frame
-    int substeps = 1;                // steps per frame, each of dt / substeps seconds
-    Method method = Method::Perfect; // simulation method
-    // m/s: a contact closing slower than restSpeed + 2·|g|·h (h the substep length) is resolved
-    // as perfectly inelastic, together with everything resting on it (the rest rule, so resting
-    // stacks neither jitter nor make unbounded numbers of events).
-    double restSpeed = 1e-6;
-    int eventCap = 20000;       // perfect method: collision events per substep at most
-    bool measureOverlap = true; // compute StepStats::maxPenetration (costs one broad phase)
-    Resolve resolve = Resolve::Momentum; // the lecture's formula, or "without Newton"
-    Integrator integrator = Integrator::SemiImplicitEuler;
-    std::uint8_t mistakes = 0; // bit (1 << Mistake) set: that mistake is made (all off: correct)
-    double drag = 0.0;         // k in kg/m^3: quadratic drag force -k·A·|v|·v, A = w·h (m^2)
-
-    bool has(Mistake m) const { return (mistakes >> static_cast<int>(m)) & 1u; }
-    void set(Mistake m, bool on) {
-        const auto bit = static_cast<std::uint8_t>(1u << static_cast<int>(m));
-        mistakes = static_cast<std::uint8_t>(on ? mistakes | bit : mistakes & ~bit);
-    }
-};
-
-WorldSettings defaultWorldSettings();
 
 struct StepScratch;
 

@@ -7,6 +7,7 @@
 #include "lesson_runner.h"
 #include "printable.h"
 #include "scene.h"
+#include "scene_json.h"
 #include "world.h"
 
 #include <nlohmann/json.hpp>
@@ -66,43 +67,11 @@ bool stopAtTime(double t, const WorldSettings& s, const char* what, const std::s
 // naming the option and the limit on a bad value.
 bool applyOptions(const RunRequest& r, std::optional<double> duration, WorldSettings& s,
                   StopRule& stop, std::ostream& err) {
-    if (r.method && !parseMethod(r.method->c_str(), s.method))
-        return refuse(err, "--method", *r.method,
-                      "must be perfect, move-and-correct or turn-based");
-    if (r.dt && !numberOption("--dt", *r.dt, limits::kDt, s.dt, err)) return false;
-    if (r.substeps) {
-        double k = 0.0;
-        if (!numberOption("--substeps", *r.substeps, limits::kSubsteps, k, err)) return false;
-        s.substeps = static_cast<int>(k);
-    }
-    if (r.bounciness &&
-        !numberOption("--bounciness", *r.bounciness, limits::kBounciness, s.bounciness, err))
-        return false;
-    if (r.gravity) {
-        const std::size_t comma = r.gravity->find(',');
-        if (comma == std::string::npos)
-            return refuse(err, "--gravity", *r.gravity, "must be GX,GY in m/s^2, e.g. 0,-9.81");
-        Vec2 g;
-        if (!numberOption("--gravity", r.gravity->substr(0, comma), limits::kGravity, g.x, err) ||
-            !numberOption("--gravity", r.gravity->substr(comma + 1), limits::kGravity, g.y, err))
-            return false;
-        s.gravity = g;
-    }
-    if (r.resolve && !parseResolve(r.resolve->c_str(), s.resolve))
-        return refuse(err, "--resolve", *r.resolve, "must be momentum or reflect");
-    if (r.integrator && !parseIntegrator(r.integrator->c_str(), s.integrator))
-        return refuse(err, "--integrator", *r.integrator,
-                      "must be semi-implicit-euler, explicit-euler or exact");
-    for (const std::string& name : r.mistakes) {
-        if (name == "none") { // the scene's mistakes off
-            s.mistakes = 0;
-            continue;
-        }
-        Mistake m{};
-        if (!parseMistake(name.c_str(), m))
-            return refuse(err, "--mistake", name,
-                          "must be discrete, move-back, first-found, no-approach-test or none");
-        s.set(m, true);
+    for (const SettingFlag& flag : r.settings) {
+        const settings_table::FlagProblem problem =
+            settings_table::readFlag(*flag.row, flag.text, s);
+        if (!problem.expected.empty())
+            return refuse(err, flag.row->cli.flag, problem.text, problem.expected);
     }
     if (r.steps) {
         double n = 0.0;
@@ -209,22 +178,12 @@ void printJson(const Scene& scene, const World& world, const StepTotals& t, bool
     nlohmann::ordered_json j;
     const WorldSettings& s = world.settings;
     j["scene"] = scene.name; // dump() below escapes every control character
-    j["method"] = methodName(s.method);
-    j["dt"] = s.dt;
-    j["substeps"] = s.substeps;
-    j["bounciness"] = s.bounciness;
-    j["gravity"] = vecJson(s.gravity);
-    j["resolve"] = resolveName(s.resolve);
-    j["integrator"] = integratorName(s.integrator);
-    nlohmann::ordered_json mistakes = nlohmann::ordered_json::array();
-    for (int m = 0; m < static_cast<int>(Mistake::Count); ++m)
-        if (s.has(static_cast<Mistake>(m)))
-            mistakes.push_back(mistakeName(static_cast<Mistake>(m)));
-    j["mistakes"] = std::move(mistakes);
-    j["drag"] = s.drag;
+    for (const settings_table::WorldKey* row : settings_table::cliOrder())
+        j[row->key] = settingJson(*row, s);
     j["sim_time"] = world.time;
     j["steps"] = t.steps;
     j["collisions"] = t.collisions;
+    j["contacts"] = t.contacts;
     j["max_penetration"] = t.maxPenetration;
     j["momentum"] = vecJson(totalMomentum(world));
     j["kinetic_energy"] = kineticEnergy(world);
@@ -261,6 +220,7 @@ void printText(const Scene& scene, const World& world, const StepTotals& t, bool
         << "steps             " << t.steps << "  (" << world.time << " s simulated"
         << (interrupted ? "; interrupted by Ctrl+C" : "") << ")\n"
         << "collisions        " << t.collisions << "\n"
+        << "contacts          " << t.contacts << "  (resting, by the rest rule)\n"
         << "momentum          " << totalMomentum(world) << " kg m/s\n"
         << "kinetic energy    " << kineticEnergy(world) << " J\n"
         << "potential energy  " << potentialEnergy(world) << " J\n"
@@ -347,33 +307,79 @@ int validateCommand(const std::string& path, std::ostream& out, std::ostream& er
     return kExitOk;
 }
 
+namespace {
+
+std::string blockLabel(const LessonStep& step, std::size_t b) {
+    return step.scene.blocks[b].name.empty() ? "#" + std::to_string(b) : step.scene.blocks[b].name;
+}
+
+// One step as `lesson --json` lists it: where it pauses, what it counted, and the seconds of
+// motion the class sees from its setup (t = 0) to that moment at its time scale.
+nlohmann::ordered_json stepJson(std::size_t number, const LessonStep& step, const StepRun& run,
+                                const std::vector<std::string>& failures) {
+    nlohmann::ordered_json j;
+    j["step"] = number;
+    j["title"] = step.title;
+    j["method"] = methodName(run.world.settings.method);
+    j["reached"] = run.reached;
+    j["pause_time"] = run.world.time;
+    j["frame"] = run.progress.frames;
+    j["collisions"] = run.progress.collisions;
+    j["contacts"] = run.progress.contacts;
+    j["time_scale"] = step.timeScale;
+    j["motion_seconds"] = run.world.time / step.timeScale;
+    j["question"] = step.question;
+    nlohmann::ordered_json blocks = nlohmann::ordered_json::array();
+    for (std::size_t b = 0; b < run.world.blocks.size(); ++b) {
+        nlohmann::ordered_json block;
+        block["name"] = blockLabel(step, b);
+        block["position"] = vecJson(run.world.blocks[b].position);
+        block["velocity"] = vecJson(run.world.blocks[b].velocity);
+        blocks.push_back(std::move(block));
+    }
+    j["blocks"] = std::move(blocks);
+    j["failures"] = failures;
+    return j;
+}
+
+} // namespace
+
 int lessonCommand(const std::string& path, std::ostream& out, std::ostream& err,
-                  const LessonContext& lessons) {
+                  const LessonContext& lessons, bool json) {
     const LessonResult loaded = loadLessonFile(path, lessons);
     if (!loaded.lesson) {
         err << loaded.error.text() << "\n";
         return kExitBadInput;
     }
     const Lesson& lesson = *loaded.lesson;
-    out << lesson.name << ": " << lesson.steps.size() << " steps\n";
+    nlohmann::ordered_json steps = nlohmann::ordered_json::array();
+    if (!json) out << lesson.name << ": " << lesson.steps.size() << " steps\n";
     std::vector<std::string> failures;
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
         const LessonStep& step = lesson.steps[i];
         const StepRun run = runStepToPause(step);
-        out << i + 1 << ". " << step.title << ": " << (run.reached ? "paused" : "NOT PAUSED")
-            << " at t = " << run.world.time << " s (frame " << run.progress.frames << "), "
-            << run.progress.collisions << " collisions, " << methodName(run.world.settings.method)
-            << "\n";
-        for (std::size_t b = 0; b < run.world.blocks.size() && b < 12; ++b) {
-            const Block& block = run.world.blocks[b];
-            out << "     " << std::left << std::setw(14)
-                << (step.scene.blocks[b].name.empty() ? "#" + std::to_string(b)
-                                                      : step.scene.blocks[b].name)
-                << std::right << " position " << block.position << "  velocity " << block.velocity
-                << "\n";
-        }
         const std::vector<std::string> f = checkStep(step, run);
         failures.insert(failures.end(), f.begin(), f.end());
+        if (json) {
+            steps.push_back(stepJson(i + 1, step, run, f));
+            continue;
+        }
+        out << i + 1 << ". " << step.title << ": " << (run.reached ? "paused" : "NOT PAUSED")
+            << " at t = " << run.world.time << " s (frame " << run.progress.frames << "), "
+            << run.progress.collisions << " collisions, " << run.progress.contacts << " contacts, "
+            << methodName(run.world.settings.method) << "\n";
+        for (std::size_t b = 0; b < run.world.blocks.size() && b < 12; ++b) {
+            const Block& block = run.world.blocks[b];
+            out << "     " << std::left << std::setw(14) << blockLabel(step, b) << std::right
+                << " position " << block.position << "  velocity " << block.velocity << "\n";
+        }
+    }
+    if (json) {
+        nlohmann::ordered_json j;
+        j["name"] = lesson.name;
+        j["steps"] = std::move(steps);
+        // ASCII only: names are \u-escaped, so no byte of them can act on a terminal.
+        out << j.dump(-1, ' ', true, nlohmann::ordered_json::error_handler_t::replace) << "\n";
     }
     for (const std::string& f : failures) err << f << "\n";
     return failures.empty() ? kExitOk : kExitBadInput;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "lesson.h"
+#include "settings_table.h"
 
 #include <csignal>
 #include <cstdint>
@@ -18,22 +19,23 @@ enum ExitCode : int { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2, kExitInter
 // rewritten in place (stderr is a terminal), or one line per report (--progress).
 enum class ProgressLines { Off, Terminal, Lines };
 
+// A world setting's flag and the text it was given.
+struct SettingFlag {
+    const settings_table::WorldKey* row;
+    std::string text;
+};
+
 // `run`, as typed on the command line: option values stay text until runCommand checks them, so
 // a bad value is reported as bad input (exit 1), not as bad usage.
 struct RunRequest {
-    std::string scene;                     // path of the scene file
-    std::optional<std::string> method;     // "perfect" | "move-and-correct" | "turn-based"
-    std::optional<std::string> dt;         // s per frame, in (0, 1]
-    std::optional<std::string> substeps;   // 1..1000
-    std::optional<std::string> bounciness; // C in [0, 1]
-    std::optional<std::string> gravity;    // "GX,GY" in m/s^2
-    std::optional<std::string> steps;      // frames to simulate, >= 0
-    std::optional<std::string> time;       // s of simulated time to reach, >= 0
-    std::optional<std::string> resolve;    // "momentum" | "reflect"
-    std::optional<std::string> integrator; // "semi-implicit-euler" | "explicit-euler" | "exact"
-    std::vector<std::string> mistakes;     // added to the scene's: "discrete", "move-back", ...
-    std::optional<std::string> trace;      // CSV file: a header and one row per frame
-    bool json = false;                     // print one JSON object instead of a summary
+    std::string scene; // path of the scene file
+    // The world settings' flags as given (--method, --dt, --gravity, ...; settings_table.h), in
+    // sandbox-cli's order (settings_table::cliOrder); a repeatable flag (--mistake) once per use.
+    std::vector<SettingFlag> settings;
+    std::optional<std::string> steps; // frames to simulate, >= 0
+    std::optional<std::string> time;  // s of simulated time to reach, >= 0
+    std::optional<std::string> trace; // CSV file: a header and one row per frame
+    bool json = false;                // print one JSON object instead of a summary
     ProgressLines progress = ProgressLines::Off;
     // Set (by a SIGINT handler) to stop the run after the current frame; the summary of the
     // frames done is printed and runCommand returns kExitInterrupted. Null: never stops early.
@@ -50,6 +52,8 @@ int runCommand(const RunRequest& request, std::ostream& out, std::ostream& err);
 int validateCommand(const std::string& path, std::ostream& out, std::ostream& err,
                     const LessonContext& lessons = {});
 // Runs every step of a lesson to its pause point and prints, per step, where it paused and each
-// block's position and velocity there, then every failed expectation (exit 1 if any).
+// block's position and velocity there, then every failed expectation (exit 1 if any). With
+// `json`: one JSON object, each step's pause time, frame, collisions, contacts, time scale and
+// seconds of motion (pause time / time scale), its blocks there and its failures.
 int lessonCommand(const std::string& path, std::ostream& out, std::ostream& err,
-                  const LessonContext& lessons = {});
+                  const LessonContext& lessons = {}, bool json = false);

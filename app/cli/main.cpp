@@ -5,6 +5,7 @@
 #include "compare_command.h"
 #include "input_limits.h"
 #include "printable.h"
+#include "settings_table.h"
 #include "vocabulary.h" // the overlay table (header-only): its names, for lesson files
 
 #include <CLI/CLI.hpp>
@@ -44,25 +45,31 @@ int main(int argc, char** argv) {
     RunRequest run;
     CLI::App* runCmd = app.add_subcommand("run", "Simulate a scene and print a summary.");
     runCmd->add_option("SCENE", run.scene, "Scene file (JSON, format v1)")->required();
-    std::string method, dt, substeps, bounciness, gravity, steps, time;
-    CLI::Option* methodOpt =
-        runCmd->add_option("--method", method,
-                           "Simulation method: perfect, move-and-correct or turn-based "
-                           "(default: the scene's)");
-    // The ranges in the help are those of input_limits.h, which the values are checked against.
+    // One flag per world setting that has one (settings_table.h), in sandbox-cli's order: the
+    // placed ones (--method, --dt, ...) before --steps, the others after --progress.
+    struct SettingText {
+        const settings_table::WorldKey* row;
+        std::string one;               // a flag given once
+        std::vector<std::string> many; // a repeatable flag (a set of names: --mistake)
+        CLI::Option* option;
+    };
+    std::vector<SettingText> settingFlags;
+    for (const settings_table::WorldKey* row : settings_table::cliOrder())
+        if (*row->cli.flag) settingFlags.push_back({row, {}, {}, nullptr});
+    // The vector is not resized from here on: CLI11 keeps the addresses of `one` and `many`.
+    auto addSettingFlags = [&](bool placed) {
+        for (SettingText& flag : settingFlags) {
+            if ((flag.row->cli.place > 0) != placed) continue;
+            const std::string help = settings_table::flagHelp(*flag.row);
+            flag.option = flag.row->kind == settings_table::Kind::NameSet
+                              ? runCmd->add_option(flag.row->cli.flag, flag.many, help)
+                              : runCmd->add_option(flag.row->cli.flag, flag.one, help);
+            flag.option->type_name(flag.row->cli.value);
+        }
+    };
+    addSettingFlags(true);
+    std::string steps, time;
     using limits::describe;
-    CLI::Option* dtOpt = runCmd->add_option(
-        "--dt", dt, "Seconds per frame, " + describe(limits::kDt) + " (default: the scene's)");
-    CLI::Option* substepsOpt = runCmd->add_option(
-        "--substeps", substeps,
-        "Substeps per frame, " + describe(limits::kSubsteps) + " (default: the scene's)");
-    CLI::Option* bouncinessOpt = runCmd->add_option(
-        "--bounciness", bounciness,
-        "Bounciness C, " + describe(limits::kBounciness) + " (default: the scene's)");
-    CLI::Option* gravityOpt =
-        runCmd->add_option("--gravity", gravity,
-                           "Gravity GX,GY, e.g. 0,-9.81, each " + describe(limits::kGravity) +
-                               " (default: the scene's)");
     CLI::Option* stepsOpt = runCmd->add_option("--steps", steps,
                                                "Frames to simulate, " + describe(limits::kFrames) +
                                                    " (the frame budget; default: the scene's "
@@ -76,19 +83,8 @@ int main(int argc, char** argv) {
     runCmd->add_flag("--progress", progressLines,
                      "Report progress on stderr once a second, one line each (on a terminal a "
                      "line rewritten in place is the default)");
-    std::string resolve, integrator, trace;
-    CLI::Option* resolveOpt = runCmd->add_option(
-        "--resolve", resolve,
-        "Collision resolve: momentum (the lecture's formula) or reflect (without Newton: each "
-        "body reverses its own velocity, v' = -C*v) (default: the scene's)");
-    CLI::Option* integratorOpt = runCmd->add_option(
-        "--integrator", integrator,
-        "Integrator: semi-implicit-euler, explicit-euler or exact (constant acceleration "
-        "integrated exactly) (default: the scene's)");
-    CLI::Option* mistakeOpt = runCmd->add_option(
-        "--mistake", run.mistakes,
-        "Make one of the lecture's mistakes (repeatable, added to the scene's): discrete, "
-        "move-back, first-found, no-approach-test; none clears the scene's");
+    addSettingFlags(false);
+    std::string trace;
     CLI::Option* traceOpt = runCmd->add_option(
         "--trace", trace,
         "Write a CSV file: a header and one row per frame (t, each block's x, y, vx, vy, total "
@@ -96,16 +92,8 @@ int main(int argc, char** argv) {
     runCmd->add_flag("--json", run.json,
                      "Print one JSON object: sim_time, steps, collisions, max_penetration, "
                      "momentum, kinetic_energy, potential_energy, event_cap_hits, wall_ms, blocks");
-    methodOpt->type_name("M");
-    dtOpt->type_name("S");
-    substepsOpt->type_name("K");
-    bouncinessOpt->type_name("C");
-    gravityOpt->type_name("GX,GY");
     stepsOpt->type_name("N");
     timeOpt->type_name("T");
-    resolveOpt->type_name("R");
-    integratorOpt->type_name("I");
-    mistakeOpt->type_name("NAME");
     traceOpt->type_name("FILE.csv");
 
     std::string validatePath;
@@ -120,6 +108,10 @@ int main(int argc, char** argv) {
         "lesson", "Run every step of a lesson to its pause point: print where each paused and "
                   "the blocks there, then any failed expectation (exit 1).");
     lessonCmd->add_option("LESSON", lessonPath, "Lesson file (JSON)")->required();
+    bool lessonJson = false;
+    lessonCmd->add_flag("--json", lessonJson,
+                        "One JSON object: each step's pause time, frame, collisions, contacts, "
+                        "time scale, seconds of motion, blocks and failures");
 
     AnalysisRequest tradeoff;
     tradeoff.scenesDir = SANDBOX_SCENES_DIR;
@@ -196,7 +188,7 @@ int main(int argc, char** argv) {
         lessons.scenesDir = SANDBOX_SCENES_DIR;
         lessons.overlayNames = overlayNames();
         if (*validateCmd) return validateCommand(validatePath, std::cout, std::cerr, lessons);
-        if (*lessonCmd) return lessonCommand(lessonPath, std::cout, std::cerr, lessons);
+        if (*lessonCmd) return lessonCommand(lessonPath, std::cout, std::cerr, lessons, lessonJson);
         if (*tradeoffCmd) return tradeoffCommand(tradeoff, std::cout, std::cerr);
         if (*stabilityCmd) return stabilityCommand(stability, std::cout, std::cerr);
         auto given = [](CLI::Option* option, const std::string& value) {
@@ -210,11 +202,13 @@ int main(int argc, char** argv) {
             compare.tolerance = given(toleranceOpt, tolerance);
             return compareCommand(compare, std::cout, std::cerr);
         }
-        run.method = given(methodOpt, method);
-        run.dt = given(dtOpt, dt);
-        run.substeps = given(substepsOpt, substeps);
-        run.bounciness = given(bouncinessOpt, bounciness);
-        run.gravity = given(gravityOpt, gravity);
+        for (const SettingText& flag : settingFlags) {
+            if (flag.row->kind == settings_table::Kind::NameSet) {
+                for (const std::string& text : flag.many) run.settings.push_back({flag.row, text});
+            } else if (flag.option->count() > 0) {
+                run.settings.push_back({flag.row, flag.one});
+            }
+        }
         run.steps = given(stepsOpt, steps);
         run.time = given(timeOpt, time);
         run.progress = progressLines ? ProgressLines::Lines
@@ -222,8 +216,6 @@ int main(int argc, char** argv) {
                                      : ProgressLines::Off;
         run.interrupted = &interrupted;
         stopOnInterrupt();
-        run.resolve = given(resolveOpt, resolve);
-        run.integrator = given(integratorOpt, integrator);
         run.trace = given(traceOpt, trace);
         return runCommand(run, std::cout, std::cerr);
     } catch (const std::exception& e) { // e.g. out of memory on a huge scene

@@ -29,7 +29,10 @@ bool countFrame(const LessonPause& pause, const World& world, const StepStats& s
     progress.maxPenetration = std::max(progress.maxPenetration, stats.maxPenetration);
     bool blockHit = false;
     for (const CollisionRecord& r : log) {
-        if (r.rest) continue;
+        if (r.rest) {
+            ++progress.contacts;
+            continue;
+        }
         ++progress.collisions;
         if (r.block == pause.block || r.other == pause.block) blockHit = true;
     }

@@ -13,6 +13,7 @@
 struct StepProgress {
     int frames = 0;
     int collisions = 0;         // resolved collisions, walls included, rest-rule contacts not
+    int contacts = 0;           // resting contacts resolved by the rest rule (counted apart)
     double maxPenetration = 0.; // m
     bool blockCollided = false; // LessonPause::BlockCollision's block has collided
 };

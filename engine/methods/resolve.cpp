@@ -71,7 +71,9 @@ void Resolver::reverseKinematic(int i, int axis) {
 
 void Resolver::record(int a, int b, int axis, double m1, double v1, double m2, double v2, double u,
                       double C, double v1After, double v2After, bool rest) {
-    ++ctx_.stats.collisions;
+    // One count of collisions: a resting contact (the rest rule) is counted apart, so a settled
+    // pile's collision count stands still.
+    ++(rest ? ctx_.stats.contacts : ctx_.stats.collisions);
     if (!ctx_.log) return;
     CollisionRecord r;
     r.time = ctx_.startTime + now_;

@@ -139,6 +139,7 @@ class Contacts final : ResolveHooks {
         s_.undo.clear();
         keepUndo_ = true;
         const int collisionsBefore = ctx_.stats.collisions;
+        const int contactsBefore = ctx_.stats.contacts;
         const size_t logBefore = ctx_.log ? ctx_.log->size() : 0;
         merge_ = endless_ = false;
         resolutions_ = 0;
@@ -151,6 +152,7 @@ class Contacts final : ResolveHooks {
         for (auto c = s_.undo.rbegin(); c != s_.undo.rend(); ++c)
             blocks_[c->block].velocity[c->axis] = c->before;
         ctx_.stats.collisions = collisionsBefore;
+        ctx_.stats.contacts = contactsBefore;
         if (ctx_.log) ctx_.log->resize(logBefore);
         merge_ = true;
         endless_ = false;

@@ -6,6 +6,7 @@
 #include "overlap_check.h"
 #include "printable.h"
 #include "scene_json.h"
+#include "settings_table.h"
 
 #include <nlohmann/json.hpp>
 
@@ -200,6 +201,10 @@ std::string keyPath(const std::string& path, const std::string& key) {
 
 void checkKeys(const json& object, const std::string& path,
                std::initializer_list<const char*> known) {
+    checkKeys(object, path, std::vector<const char*>(known));
+}
+
+void checkKeys(const json& object, const std::string& path, const std::vector<const char*>& known) {
     for (const auto& item : object.items()) {
         const bool ok =
             std::any_of(known.begin(), known.end(), [&](const char* k) { return item.key() == k; });
@@ -270,12 +275,61 @@ bool isColor(const std::string& s) {
            });
 }
 
+// A world setting's value (settings_table.h), by its kind; errors name `path`.
+void readSetting(const settings_table::WorldKey& row, const json& value, const std::string& path,
+                 WorldSettings& s) {
+    using settings_table::Kind;
+    switch (row.kind) {
+    case Kind::Number:
+        s.*row.number = number(value, path, row.range);
+        return;
+    case Kind::Whole:
+        s.*row.whole = static_cast<int>(number(value, path, row.range));
+        return;
+    case Kind::Pair:
+        s.*row.pair = vec2(value, path, row.range);
+        return;
+    case Kind::Flag:
+        if (!value.is_boolean()) throw ValueError{path, "must be true or false"};
+        s.*row.flag = value.get<bool>();
+        return;
+    case Kind::Choice: {
+        const std::string name = string(value, path);
+        for (int i = 0; i < row.names.count; ++i) {
+            if (name != row.names.name(i)) continue;
+            row.setChoice(s, i);
+            return;
+        }
+        throw ValueError{path, "must be " + settings_table::joinedNames(row.names, true) +
+                                   ", not \"" + printable(name) + "\""};
+    }
+    case Kind::NameSet: {
+        if (!value.is_array()) throw ValueError{path, "must be an array of names"};
+        std::uint8_t& bits = s.*row.bits;
+        for (std::size_t k = 0; k < value.size(); ++k) {
+            const std::string at = indexPath(path, k);
+            const std::string name = string(value[k], at);
+            int found = -1;
+            for (int i = 0; i < row.names.count && found < 0; ++i)
+                if (name == row.names.name(i)) found = i;
+            if (found < 0)
+                throw ValueError{at, "must be " + settings_table::joinedNames(row.names, true) +
+                                         ", not " + dumpValue(name)};
+            const auto bit = static_cast<std::uint8_t>(1u << found);
+            if (bits & bit) throw ValueError{at, dumpValue(name) + " is listed twice"};
+            bits = static_cast<std::uint8_t>(bits | bit);
+        }
+        return;
+    }
+    }
+}
+
 void parseWorld(const json& world, Scene& scene) {
     requireObject(world, "world");
-    checkKeys(world, "world",
-              {"bounds", "gravity", "bounciness", "method", "dt", "substeps", "resolve",
-               "integrator", "mistakes", "drag"});
-    WorldSettings& s = scene.settings;
+    std::vector<const char*> known{"bounds"};
+    for (const settings_table::WorldKey& row : settings_table::worldKeys())
+        if (row.inScene) known.push_back(row.key);
+    checkKeys(world, "world", known);
     if (world.contains("bounds")) {
         const std::vector<double> b =
             numbers(world["bounds"], "world.bounds", 4, limits::kCoordinate);
@@ -289,102 +343,79 @@ void parseWorld(const json& world, Scene& scene) {
         scene.bounds.min = {b[0], b[1]};
         scene.bounds.max = {b[2], b[3]};
     }
-    if (world.contains("gravity"))
-        s.gravity = vec2(world["gravity"], "world.gravity", limits::kGravity);
-    if (world.contains("bounciness"))
-        s.bounciness = number(world["bounciness"], "world.bounciness", limits::kBounciness);
-    if (world.contains("method")) {
-        const std::string name = string(world["method"], "world.method");
-        if (!parseMethod(name.c_str(), s.method))
-            throw ValueError{"world.method", "must be \"perfect\", \"move-and-correct\" or "
-                                             "\"turn-based\", not \"" +
-                                                 printable(name) + "\""};
+    for (const settings_table::WorldKey& row : settings_table::worldKeys()) {
+        if (row.inScene && world.contains(row.key))
+            readSetting(row, world[row.key], keyPath("world", row.key), scene.settings);
     }
-    if (world.contains("dt")) s.dt = number(world["dt"], "world.dt", limits::kDt);
-    if (world.contains("substeps"))
-        s.substeps =
-            static_cast<int>(number(world["substeps"], "world.substeps", limits::kSubsteps));
-    if (world.contains("resolve")) {
-        const std::string name = string(world["resolve"], "world.resolve");
-        if (!parseResolve(name.c_str(), s.resolve))
-            throw ValueError{"world.resolve",
-                             "must be \"momentum\" or \"reflect\", not " + dumpValue(name)};
-    }
-    if (world.contains("integrator")) {
-        const std::string name = string(world["integrator"], "world.integrator");
-        if (!parseIntegrator(name.c_str(), s.integrator))
-            throw ValueError{"world.integrator", "must be \"semi-implicit-euler\", "
-                                                 "\"explicit-euler\" or \"exact\", not " +
-                                                     dumpValue(name)};
-    }
-    if (world.contains("mistakes")) {
-        const json& list = world["mistakes"];
-        if (!list.is_array()) throw ValueError{"world.mistakes", "must be an array of names"};
-        for (std::size_t i = 0; i < list.size(); ++i) {
-            const std::string path = indexPath("world.mistakes", i);
-            const std::string name = string(list[i], path);
-            Mistake m{};
-            if (!parseMistake(name.c_str(), m))
-                throw ValueError{path, "must be \"discrete\", \"move-back\", \"first-found\" or "
-                                       "\"no-approach-test\", not " +
-                                           dumpValue(name)};
-            if (s.has(m)) throw ValueError{path, dumpValue(name) + " is listed twice"};
-            s.set(m, true);
+}
+
+// A block's field (settings_table.h), by its kind; `b` holds the fields read before it (a size
+// is checked against the position, a force against the mass).
+void readBlockField(const settings_table::BlockKey& row, const json& value, const std::string& path,
+                    BlockDef& b) {
+    using settings_table::BlockKind;
+    switch (row.kind) {
+    case BlockKind::Text:
+        b.*row.text = string(value, path);
+        return;
+    case BlockKind::Color:
+        b.*row.text = string(value, path);
+        if (!isColor(b.*row.text)) throw ValueError{path, "must look like #rrggbb"};
+        return;
+    case BlockKind::Pair:
+        b.*row.pair = vec2(value, path, row.range);
+        return;
+    case BlockKind::Size:
+        if (value.is_number()) {
+            const double side = number(value, path);
+            b.*row.pair = {side, side};
+            checkLength(side, std::max(std::abs(b.position.x), std::abs(b.position.y)), path,
+                        row.range);
+        } else if (value.is_array()) {
+            b.*row.pair = vec2(value, path, row.range);
+            for (int axis = 0; axis < 2; ++axis)
+                checkLength((b.*row.pair)[axis], std::abs(b.position[axis]), indexPath(path, axis),
+                            row.range);
+        } else {
+            throw ValueError{path, "must be a number (a square) or [width, height]"};
         }
+        return;
+    case BlockKind::Mass:
+        // Without "mass" a block is dynamic with 1 kg (BlockDef's default).
+        if (value == "static") {
+            b.kind = BodyKind::Static;
+        } else if (value == "kinematic") {
+            b.kind = BodyKind::Kinematic;
+        } else if (value.is_number()) {
+            b.mass = number(value, path, row.range);
+        } else {
+            throw ValueError{path, "must be a positive number, \"static\" or \"kinematic\""};
+        }
+        return;
+    case BlockKind::Force:
+        b.*row.pair = vec2(value, path, row.range);
+        if (b.kind != BodyKind::Dynamic && b.*row.pair != Vec2{})
+            throw ValueError{path, "only a dynamic block (one with a mass) feels a force"};
+        // Its acceleration, like gravity, at most 1e9 m/s^2 (F/m of a light block can be huge).
+        if (std::string problem = limits::accelerationViolation(length(b.*row.pair), b.mass);
+            !problem.empty())
+            throw ValueError{path, problem};
+        return;
     }
-    if (world.contains("drag")) s.drag = number(world["drag"], "world.drag", limits::kDrag);
 }
 
 BlockDef parseBlock(const json& value, const std::string& path) {
     requireObject(value, path);
-    checkKeys(value, path, {"name", "position", "size", "velocity", "mass", "color", "force"});
+    std::vector<const char*> known;
+    for (const settings_table::BlockKey& row : settings_table::blockKeys())
+        known.push_back(row.key);
+    checkKeys(value, path, known);
     BlockDef b;
-    if (value.contains("name")) b.name = string(value["name"], keyPath(path, "name"));
-    if (!value.contains("position")) throw ValueError{path, "missing \"position\""};
-    b.position = vec2(value["position"], keyPath(path, "position"), limits::kCoordinate);
-    if (!value.contains("size")) throw ValueError{path, "missing \"size\""};
-    const json& size = value["size"];
-    const std::string sizePath = keyPath(path, "size");
-    if (size.is_number()) {
-        const double side = number(size, sizePath);
-        b.size = {side, side};
-        checkLength(side, std::max(std::abs(b.position.x), std::abs(b.position.y)), sizePath);
-    } else if (size.is_array()) {
-        b.size = vec2(size, sizePath, limits::kSize);
-        for (int axis = 0; axis < 2; ++axis)
-            checkLength(b.size[axis], std::abs(b.position[axis]), indexPath(sizePath, axis));
-    } else {
-        throw ValueError{sizePath, "must be a number (a square) or [width, height]"};
-    }
-    if (value.contains("velocity"))
-        b.velocity = vec2(value["velocity"], keyPath(path, "velocity"), limits::kSpeed);
-    // Without "mass" a block is dynamic with 1 kg (BlockDef's default).
-    if (value.contains("mass")) {
-        const json& mass = value["mass"];
-        const std::string massPath = keyPath(path, "mass");
-        if (mass == "static") {
-            b.kind = BodyKind::Static;
-        } else if (mass == "kinematic") {
-            b.kind = BodyKind::Kinematic;
-        } else if (mass.is_number()) {
-            b.mass = number(mass, massPath, limits::kMass);
-        } else {
-            throw ValueError{massPath, "must be a positive number, \"static\" or \"kinematic\""};
-        }
-    }
-    if (value.contains("force")) {
-        const std::string forcePath = keyPath(path, "force");
-        b.force = vec2(value["force"], forcePath, limits::kForce);
-        if (b.kind != BodyKind::Dynamic && b.force != Vec2{})
-            throw ValueError{forcePath, "only a dynamic block (one with a mass) feels a force"};
-        // Its acceleration, like gravity, at most 1e9 m/s^2 (F/m of a light block can be huge).
-        if (std::string problem = limits::accelerationViolation(length(b.force), b.mass);
-            !problem.empty())
-            throw ValueError{forcePath, problem};
-    }
-    if (value.contains("color")) {
-        b.color = string(value["color"], keyPath(path, "color"));
-        if (!isColor(b.color)) throw ValueError{keyPath(path, "color"), "must look like #rrggbb"};
+    for (const settings_table::BlockKey& row : settings_table::blockKeys()) {
+        if (value.contains(row.key))
+            readBlockField(row, value[row.key], keyPath(path, row.key), b);
+        else if (row.required)
+            throw ValueError{path, "missing \"" + std::string(row.key) + "\""};
     }
     return b;
 }

@@ -41,6 +41,8 @@ std::string keyPath(const std::string& path, const std::string& key); // "world"
 // Throws for a key of `object` not in `known`.
 void checkKeys(const nlohmann::json& object, const std::string& path,
                std::initializer_list<const char*> known);
+void checkKeys(const nlohmann::json& object, const std::string& path,
+               const std::vector<const char*>& known);
 const nlohmann::json& requireObject(const nlohmann::json& value, const std::string& path);
 double number(const nlohmann::json& value, const std::string& path); // finite
 // A finite number within `range` (input_limits.h); the message names the limit.
@@ -54,6 +56,12 @@ Vec2 vec2(const nlohmann::json& value, const std::string& path, const limits::Ra
 Vec2 vec2(const nlohmann::json& value, const std::string& path);
 
 } // namespace scene_json
+
+namespace settings_table {
+struct WorldKey;
+}
+// A world setting's value as JSON (a scene file's "world" and sandbox-cli run --json).
+nlohmann::json settingJson(const settings_table::WorldKey& row, const WorldSettings& s);
 
 // Why `path` cannot be read as a regular file (missing, a directory, a FIFO that could block
 // forever), or nothing: the check of every file the sandbox reads (scenes, lessons, traces).

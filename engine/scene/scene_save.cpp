@@ -3,7 +3,9 @@
 #include "scene.h"
 
 #include "scene_json.h"
+#include "settings_table.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -19,19 +21,33 @@ std::string field(const char* key, const std::string& valueText) {
     return "\"" + std::string(key) + "\": " + valueText;
 }
 
-// A block on one line, keys in the order of docs/scene-format.md.
+// A block on one line, its keys in the table's order (settings_table.h), that of
+// docs/scene-format.md.
 std::string blockText(const BlockDef& b) {
+    using settings_table::BlockKind;
     std::vector<std::string> fields;
-    if (!b.name.empty()) fields.push_back(field("name", dumpValue(b.name)));
-    fields.push_back(field("position", numberList({b.position.x, b.position.y})));
-    fields.push_back(field("size", numberList({b.size.x, b.size.y})));
-    fields.push_back(field("velocity", numberList({b.velocity.x, b.velocity.y})));
-    const json mass = b.kind == BodyKind::Static      ? json("static")
-                      : b.kind == BodyKind::Kinematic ? json("kinematic")
-                                                      : json(b.mass);
-    fields.push_back(field("mass", dumpValue(mass)));
-    if (b.force != Vec2{}) fields.push_back(field("force", numberList({b.force.x, b.force.y})));
-    if (!b.color.empty()) fields.push_back(field("color", dumpValue(b.color)));
+    for (const settings_table::BlockKey& row : settings_table::blockKeys()) {
+        switch (row.kind) {
+        case BlockKind::Text:
+        case BlockKind::Color:
+            if (!(b.*row.text).empty()) fields.push_back(field(row.key, dumpValue(b.*row.text)));
+            break;
+        case BlockKind::Force:
+            if (b.*row.pair == Vec2{}) break;
+            [[fallthrough]];
+        case BlockKind::Pair:
+        case BlockKind::Size:
+            fields.push_back(field(row.key, numberList({(b.*row.pair).x, (b.*row.pair).y})));
+            break;
+        case BlockKind::Mass: {
+            const json mass = b.kind == BodyKind::Static      ? json("static")
+                              : b.kind == BodyKind::Kinematic ? json("kinematic")
+                                                              : json(b.mass);
+            fields.push_back(field(row.key, dumpValue(mass)));
+            break;
+        }
+        }
+    }
     std::string out = "{";
     for (std::size_t i = 0; i < fields.size(); ++i) out += (i ? ", " : "") + fields[i];
     return out + "}";
@@ -39,23 +55,42 @@ std::string blockText(const BlockDef& b) {
 
 } // namespace
 
+nlohmann::json settingJson(const settings_table::WorldKey& row, const WorldSettings& s) {
+    using settings_table::Kind;
+    switch (row.kind) {
+    case Kind::Number:
+        return s.*row.number;
+    case Kind::Whole:
+        return s.*row.whole;
+    case Kind::Pair:
+        return json::array({(s.*row.pair).x, (s.*row.pair).y});
+    case Kind::Choice:
+        return row.names.name(row.getChoice(s));
+    case Kind::Flag:
+        return s.*row.flag;
+    case Kind::NameSet: {
+        json names = json::array();
+        for (int i = 0; i < row.names.count; ++i)
+            if ((s.*row.bits >> i) & 1u) names.push_back(row.names.name(i));
+        return names;
+    }
+    }
+    return nullptr;
+}
+
 bool BlockDef::operator==(const BlockDef& o) const {
-    // A static or kinematic block's mass is not part of the file ("static"/"kinematic").
-    const bool sameMass = kind != BodyKind::Dynamic || mass == o.mass;
-    return name == o.name && position == o.position && size == o.size && velocity == o.velocity &&
-           kind == o.kind && sameMass && force == o.force && color == o.color;
+    const auto keys = settings_table::blockKeys();
+    return std::all_of(keys.begin(), keys.end(), [&](const settings_table::BlockKey& row) {
+        return settings_table::same(row, *this, o);
+    });
 }
 
 bool Scene::operator==(const Scene& o) const {
     // Compares what a scene file holds; engine-only settings (restSpeed, eventCap,
     // measureOverlap) are not part of format v1.
-    const WorldSettings& a = settings;
-    const WorldSettings& b = o.settings;
     return name == o.name && description == o.description && duration == o.duration &&
-           bounds.min == o.bounds.min && bounds.max == o.bounds.max && a.gravity == b.gravity &&
-           a.bounciness == b.bounciness && a.dt == b.dt && a.substeps == b.substeps &&
-           a.method == b.method && a.resolve == b.resolve && a.integrator == b.integrator &&
-           a.mistakes == b.mistakes && a.drag == b.drag && blocks == o.blocks;
+           bounds.min == o.bounds.min && bounds.max == o.bounds.max &&
+           settings_table::sameSceneSettings(settings, o.settings) && blocks == o.blocks;
 }
 
 std::string sceneToJson(const Scene& scene) {
@@ -67,21 +102,16 @@ std::string sceneToJson(const Scene& scene) {
     if (scene.duration) out += "  " + field("duration", dumpValue(*scene.duration)) + ",\n";
     out += "  \"world\": {\n";
     const Bounds& b = scene.bounds;
-    out += "    " + field("bounds", numberList({b.min.x, b.min.y, b.max.x, b.max.y})) + ",\n";
-    out += "    " + field("gravity", numberList({s.gravity.x, s.gravity.y})) + ",\n";
-    out += "    " + field("bounciness", dumpValue(s.bounciness)) + ",\n";
-    out += "    " + field("method", dumpValue(methodName(s.method))) + ",\n";
-    out += "    " + field("dt", dumpValue(s.dt)) + ",\n";
-    out += "    " + field("substeps", dumpValue(s.substeps)) + ",\n";
-    out += "    " + field("resolve", dumpValue(resolveName(s.resolve))) + ",\n";
-    out += "    " + field("integrator", dumpValue(integratorName(s.integrator))) + ",\n";
-    json mistakes = json::array();
-    for (int m = 0; m < static_cast<int>(Mistake::Count); ++m)
-        if (s.has(static_cast<Mistake>(m)))
-            mistakes.push_back(mistakeName(static_cast<Mistake>(m)));
-    out += "    " + field("mistakes", dumpValue(mistakes)) + ",\n";
-    out += "    " + field("drag", dumpValue(s.drag)) + "\n";
-    out += "  },\n";
+    out += "    " + field("bounds", numberList({b.min.x, b.min.y, b.max.x, b.max.y}));
+    for (const settings_table::WorldKey& row : settings_table::worldKeys()) {
+        if (!row.inScene) continue;
+        // A pair as [x, y] with a space, as the bounds; everything else as its JSON value.
+        const std::string value = row.kind == settings_table::Kind::Pair
+                                      ? numberList({(s.*row.pair).x, (s.*row.pair).y})
+                                      : dumpValue(settingJson(row, s));
+        out += ",\n    " + field(row.key, value);
+    }
+    out += "\n  },\n";
     out += "  \"blocks\": [";
     for (std::size_t i = 0; i < scene.blocks.size(); ++i)
         out += (i ? ",\n    " : "\n    ") + blockText(scene.blocks[i]);

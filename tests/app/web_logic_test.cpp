@@ -178,9 +178,9 @@ TEST(Link, NamesTheShippedSceneAndWhatDiffersFromOpeningIt) {
     App app = setUpApp();
     EXPECT_EQ(linkQuery(app), "scene=bouncing_squares"); // named: a bare link opens the last one
     EXPECT_FALSE(linkCarriesScene(app));
-    cycleMethod(app);
+    app.sim.cycleMethod();
     app.view.show.plots = true;
-    setViewFrame(app, ViewFrame::CentreOfMass);
+    setViewFrame(app.view, ViewFrame::CentreOfMass);
     EXPECT_EQ(linkQuery(app),
               "scene=bouncing_squares&method=move-and-correct&show=vectors,plots&frame=com");
     app.view.show.vectors = false;
@@ -191,28 +191,28 @@ TEST(Link, NamesTheShippedSceneAndWhatDiffersFromOpeningIt) {
 TEST(Link, OpeningTheQueryGivesTheSameQuery) {
     App app = setUpApp();
     applyUrlParams(app, parseUrlParams("?scene=newtons_cradle&method=turn-based&show=plots"));
-    setViewFrame(app, ViewFrame::CentreOfMass);
+    setViewFrame(app.view, ViewFrame::CentreOfMass);
     const std::string query = linkQuery(app);
     App opened = setUpApp();
     applyUrlParams(opened, parseUrlParams(query));
-    EXPECT_EQ(opened.error, "");
+    EXPECT_EQ(opened.ui.messages.error, "");
     EXPECT_EQ(linkQuery(opened), query);
     applyUrlParams(opened, parseUrlParams("show="));
-    EXPECT_EQ(opened.error, "");
-    EXPECT_FALSE(opened.show.vectors); // an empty list: no overlay at all
+    EXPECT_EQ(opened.ui.messages.error, "");
+    EXPECT_FALSE(opened.view.show.vectors); // an empty list: no overlay at all
 }
 
 TEST(Link, AnEditedSceneTravelsInsideTheLink) {
     App app = setUpApp();
     app.sim.world().blocks[0].velocity = {1.25, -3.5};
-    noteEdit(app, true);
+    app.sim.noteEdit(true);
     EXPECT_TRUE(linkCarriesScene(app));
     EXPECT_EQ(linkQuery(app), ""); // the scene, its method and settings are in the fragment
     App moved = setUpApp();
     stepSimulation(moved); // run on: the blocks are no longer the file's
     EXPECT_TRUE(linkCarriesScene(moved));
     App settings = setUpApp();
-    settings.world.settings.bounciness = 0.5;
+    settings.sim.world().settings.bounciness = 0.5;
     EXPECT_TRUE(linkCarriesScene(settings));
 }
 

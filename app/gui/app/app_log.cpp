@@ -1,5 +1,7 @@
 #include "app_log.h"
 
+#include "settings_table.h"
+
 #include <cstdio>
 
 namespace {
@@ -21,16 +23,7 @@ LoggedState snapshotForLog(const SimulationSession& sim, const View& view,
     s.slowMotion = sim.slowMotion;
     s.overlays = view.show;
     s.uiVisible = view.uiVisible;
-    s.method = methodName(settings.method);
-    s.bounciness = settings.bounciness;
-    s.gravityX = settings.gravity.x;
-    s.gravityY = settings.gravity.y;
-    s.dt = settings.dt;
-    s.substeps = settings.substeps;
-    s.resolve = resolveName(settings.resolve);
-    s.integrator = integratorName(settings.integrator);
-    s.mistakes = settings.mistakes;
-    s.drag = settings.drag;
+    s.settings = settings;
     s.thrust = sim.thrust.on;
     const Vec2 pushing = sim.thrustForce();
     s.thrustX = pushing.x;
@@ -57,17 +50,11 @@ std::vector<std::string> describeChanges(const LoggedState& a, const LoggedState
     }
     if (a.trailLength > 0 && b.trailLength == 0) out.push_back("trails cleared");
     if (a.uiVisible != b.uiVisible) out.push_back("ui: " + onOff(b.uiVisible));
-    if (a.method != b.method) out.push_back("method: " + b.method);
-    if (a.bounciness != b.bounciness) out.push_back("bounciness: " + number(b.bounciness));
-    if (a.gravityX != b.gravityX || a.gravityY != b.gravityY) {
-        out.push_back("gravity: " + number(b.gravityX) + "," + number(b.gravityY));
+    for (const settings_table::WorldKey* row : settings_table::shownOrder()) {
+        if (!settings_table::same(*row, a.settings, b.settings))
+            out.push_back(row->key + std::string(": ") +
+                          settings_table::logValue(*row, b.settings));
     }
-    if (a.dt != b.dt) out.push_back("dt: " + number(b.dt));
-    if (a.substeps != b.substeps) out.push_back("substeps: " + std::to_string(b.substeps));
-    if (a.resolve != b.resolve) out.push_back("resolve: " + b.resolve);
-    if (a.integrator != b.integrator) out.push_back("integrator: " + b.integrator);
-    if (a.mistakes != b.mistakes) out.push_back("mistakes: " + std::to_string(b.mistakes));
-    if (a.drag != b.drag) out.push_back("drag: " + number(b.drag));
     if (a.thrust != b.thrust) out.push_back("thrust: " + onOff(b.thrust));
     if (a.thrustX != b.thrustX || a.thrustY != b.thrustY) {
         out.push_back(b.thrustX == 0.0 && b.thrustY == 0.0

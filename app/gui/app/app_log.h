@@ -7,6 +7,7 @@
 #include "overlays.h"
 #include "simulation_session.h"
 #include "view.h"
+#include "world.h"
 
 #include <string>
 #include <vector>
@@ -17,14 +18,7 @@ struct LoggedState {
     bool slowMotion = false;
     Overlays overlays;
     bool uiVisible = true;
-    std::string method;
-    double bounciness = 0.0;
-    double gravityX = 0.0, gravityY = 0.0;
-    double dt = 0.0;
-    int substeps = 0;
-    std::string resolve, integrator;
-    unsigned mistakes = 0;
-    double drag = 0.0;
+    WorldSettings settings; // each scene key of settings_table.h: "method: turn-based"
     bool thrust = false;
     double thrustX = 0.0, thrustY = 0.0; // N, the held thrust this frame (zero: none)
     double timeScale = 0.0;
@@ -40,7 +34,7 @@ struct VerboseLog {
     bool verbose = false; // print state changes to stdout
     LoggedState last;     // the state at the last frame logged
     bool lastValid = false;
-    bool layoutLogged = false; // one slider's place printed once (for the window test)
+    bool layoutLogged = false; // the Simulation sliders' places printed once (window test)
 };
 
 LoggedState snapshotForLog(const SimulationSession& sim, const View& view,

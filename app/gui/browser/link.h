@@ -5,7 +5,7 @@
 // The query names a shipped scene or lesson and what differs from opening it plainly (the
 // parameters of url_params.h). When the scene on screen is not a shipped one as it starts (its
 // blocks or settings were edited, it came from a file, or it has run on), the link carries the
-// scene itself in its fragment: the page compresses sceneToJson(currentScene(app)) (deflate-raw,
+// scene itself in its fragment: the page compresses sceneToJson(app.sim.currentScene()) (deflate-raw,
 // base64url) into #scene=..., and opening the link restores exactly those blocks and settings
 // (at t = 0). Pure logic: the web main asks it every frame and tells the page what changed.
 #pragma once

@@ -1,5 +1,6 @@
 #include "save_naming.h"
 
+#include "settings_table.h"
 #include "text_format.h"
 
 #include <cctype>
@@ -59,9 +60,7 @@ bool pathExists(const std::string& path) {
 }
 
 bool settingsDiffer(const WorldSettings& a, const WorldSettings& b) {
-    return a.gravity != b.gravity || a.bounciness != b.bounciness || a.method != b.method ||
-           a.dt != b.dt || a.substeps != b.substeps || a.resolve != b.resolve ||
-           a.integrator != b.integrator || a.mistakes != b.mistakes || a.drag != b.drag;
+    return !settings_table::sameSceneSettings(a, b);
 }
 
 bool hasUnsavedEdits(bool blocksEdited, const WorldSettings& scene, const WorldSettings& now) {
@@ -70,29 +69,16 @@ bool hasUnsavedEdits(bool blocksEdited, const WorldSettings& scene, const WorldS
 
 std::string changedSettingsNote(const WorldSettings& original, const WorldSettings& now) {
     std::string parts;
-    auto add = [&parts](const std::string& s) { parts += (parts.empty() ? " " : ", ") + s; };
-    if (now.gravity != original.gravity) {
-        add(now.gravity == Vec2{} ? std::string("no gravity")
-                                  : "gravity (" + formatNumber(now.gravity.x) + ", " +
-                                        formatNumber(now.gravity.y) + ") m/s²");
+    for (const settings_table::WorldKey& row : settings_table::worldKeys()) {
+        if (!row.inScene || settings_table::same(row, original, now)) continue;
+        // "gravity (0, -9.81) m/s²", "frame rate 30 Hz", "method turn-based"; "no gravity".
+        const std::string said = settings_table::isNone(row, now)
+                                     ? "no " + std::string(row.shown.name)
+                                     : row.shown.name + std::string(" ") +
+                                           settings_table::shownValue(
+                                               row, now, [](double v) { return formatNumber(v); });
+        parts += (parts.empty() ? " " : ", ") + said;
     }
-    if (now.bounciness != original.bounciness) add("bounciness " + formatNumber(now.bounciness));
-    if (now.method != original.method) add(std::string("method ") + methodName(now.method));
-    if (now.dt != original.dt) add("frame rate " + formatNumber(1.0 / now.dt) + " Hz");
-    if (now.substeps != original.substeps) add("substeps " + std::to_string(now.substeps));
-    if (now.resolve != original.resolve) add(std::string("resolve ") + resolveName(now.resolve));
-    if (now.integrator != original.integrator)
-        add(std::string("integrator ") + integratorName(now.integrator));
-    if (now.mistakes != original.mistakes) {
-        std::string names;
-        for (int m = 0; m < static_cast<int>(Mistake::Count); ++m) {
-            if (!now.has(static_cast<Mistake>(m))) continue;
-            names +=
-                (names.empty() ? "" : " and ") + std::string(mistakeName(static_cast<Mistake>(m)));
-        }
-        add(names.empty() ? std::string("no mistakes") : "mistakes " + names);
-    }
-    if (now.drag != original.drag) add("drag " + formatNumber(now.drag) + " kg/m³");
     if (parts.empty()) return "";
     return std::string(kNoteStart) + parts + ".";
 }

@@ -23,8 +23,8 @@ std::string suggestSavePath(const std::string& sceneName, const std::string& dir
                             const std::string& extension = ".json");
 // True when `path` names something on disk (an error reads as false): suggestSavePath's `exists`.
 bool pathExists(const std::string& path);
-// "" when `now` has the settings `original` has (gravity, bounciness, method, frame rate,
-// substeps, resolve, integrator, mistakes, drag); else one sentence naming what changed, e.g.
+// "" when `now` has the settings `original` has (every scene key of settings_table.h); else one
+// sentence naming what changed, in the table's order, e.g.
 // "Saved with changed settings: gravity (0, -9.81) m/s², method turn-based."
 std::string changedSettingsNote(const WorldSettings& original, const WorldSettings& now);
 // The description to save: the original text and, when the settings changed, the note after it

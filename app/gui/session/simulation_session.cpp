@@ -2,6 +2,7 @@
 
 #include "placement.h"
 #include "save_naming.h"
+#include "settings_table.h"
 #include "text_format.h"
 
 #include <cmath>
@@ -199,11 +200,12 @@ Vec2 SimulationSession::appliedForce(int index) const {
 }
 
 bool SimulationSession::usesPhysicsSection() const {
-    const WorldSettings& s = scene.settings;
-    const WorldSettings d = defaultWorldSettings();
-    if (thrust.on || s.resolve != d.resolve || s.integrator != d.integrator ||
-        s.mistakes != d.mistakes || s.drag != d.drag) {
-        return true;
+    if (thrust.on) return true;
+    const WorldSettings defaults = defaultWorldSettings();
+    for (const settings_table::WorldKey& row : settings_table::worldKeys()) {
+        if (row.panel.section == settings_table::Section::Physics &&
+            !settings_table::same(row, scene.settings, defaults))
+            return true;
     }
     for (const BlockDef& b : scene.blocks) {
         if (b.force != Vec2{}) return true;

@@ -143,8 +143,8 @@ struct SimulationSession {
     Vec2 thrustForce() const;
     // The force on block `index` this frame (N): its own constant force plus the thrust on it.
     Vec2 appliedForce(int index) const;
-    // True when the scene uses what the Physics section sets (a resolve, integrator, mistake or
-    // drag other than the default, a block's force) or the thrust is on: the section opens.
+    // True when the scene uses what the Physics section sets (a setting of the table's Physics
+    // section other than its default, a block's force) or the thrust is on: the section opens.
     bool usesPhysicsSection() const;
     // perfect -> move-and-correct -> turn-based -> perfect.
     void cycleMethod();

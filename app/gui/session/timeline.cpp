@@ -1,5 +1,7 @@
 #include "timeline.h"
 
+#include "settings_table.h"
+
 #include <algorithm>
 
 namespace {
@@ -10,14 +12,6 @@ bool sameBits(double a, double b) {
 
 bool sameVec(Vec2 a, Vec2 b) {
     return sameBits(a.x, b.x) && sameBits(a.y, b.y);
-}
-
-bool sameSettings(const WorldSettings& a, const WorldSettings& b) {
-    return sameVec(a.gravity, b.gravity) && sameBits(a.bounciness, b.bounciness) &&
-           sameBits(a.dt, b.dt) && a.substeps == b.substeps && a.method == b.method &&
-           sameBits(a.restSpeed, b.restSpeed) && a.eventCap == b.eventCap &&
-           a.measureOverlap == b.measureOverlap && a.resolve == b.resolve &&
-           a.integrator == b.integrator && a.mistakes == b.mistakes && sameBits(a.drag, b.drag);
 }
 
 } // namespace
@@ -32,7 +26,7 @@ void WorldHistory::clear() {
 
 bool WorldHistory::sameAsLast(const World& w) const {
     if (!haveLast_ || w.frame != last_.frame || !sameBits(w.time, last_.time)) return false;
-    if (!sameSettings(w.settings, last_.settings)) return false;
+    if (!settings_table::sameAllSettings(w.settings, last_.settings)) return false;
     if (!sameVec(w.bounds.min, last_.bounds.min) || !sameVec(w.bounds.max, last_.bounds.max)) {
         return false;
     }

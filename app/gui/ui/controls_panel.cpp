@@ -4,6 +4,7 @@
 #include "app_frame.h"
 #include "overlay_window.h"
 #include "save_naming.h"
+#include "settings_table.h"
 #include "ui_style.h"
 
 #include <imgui.h>
@@ -11,13 +12,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
 namespace {
 
 void tooltip(const char* text) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+    if (*text && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
 }
 
 void statRow(const char* name, const char* fmt, double value) {
@@ -219,62 +221,123 @@ void runSection(App& app) {
     tooltip("Shift+R: everything as the scene file has it, settings included");
 }
 
-void simulationSection(App& app) {
-    if (!ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    WorldSettings& s = app.sim.world().settings;
-    int method = static_cast<int>(s.method);
-    constexpr int kMethods = static_cast<int>(Method::Count);
-    const char* names[kMethods];
-    for (int k = 0; k < kMethods; ++k) names[k] = methodName(static_cast<Method>(k));
-    if (ImGui::Combo("method (S)", &method, names, kMethods))
-        s.method = static_cast<Method>(method);
-    tooltip("perfect: events in time order, no overlap\nmove-and-correct: move, then push "
-            "apart\nturn-based: one body at a time");
-    float c = static_cast<float>(s.bounciness);
-    const float sliderWidth = ImGui::CalcItemWidth();
-    if (ImGui::SliderFloat("bounciness C", &c, 0.0f, 1.0f, "%.2f")) {
-        acceptTyped(app, "bounciness C", c, s.bounciness, limits::kBounciness, s.bounciness);
+// ---- The world's settings: one widget per row of the table (settings_table.h), by its kind ----
+
+using settings_table::WorldKey;
+
+void choiceCombo(const WorldKey& row, WorldSettings& s) {
+    const int current = row.getChoice(s);
+    if (ImGui::BeginCombo(row.panel.label, row.names.name(current))) {
+        for (int i = 0; i < row.names.count; ++i) {
+            if (ImGui::Selectable(row.names.name(i), i == current) && i != current)
+                row.setChoice(s, i);
+        }
+        ImGui::EndCombo();
     }
-    tooltip("Coefficient of restitution: 1 elastic, 0 perfectly inelastic");
+}
+
+// A slider; a typed value (Ctrl+click) within the row's range is taken. A rate (dt) is shown
+// and typed as 1/value.
+void numberSlider(App& app, const WorldKey& row, WorldSettings& s) {
+    double& value = s.*row.number;
+    const double shown = row.shown.asRate ? 1.0 / value : value;
+    float typed = static_cast<float>(shown);
+    const float width = ImGui::CalcItemWidth();
+    if (ImGui::SliderFloat(row.panel.label, &typed, row.panel.min, row.panel.max, row.panel.format,
+                           row.panel.logarithmic ? ImGuiSliderFlags_Logarithmic : 0)) {
+        double taken = shown;
+        if (acceptTyped(app, row.panel.label, typed, shown,
+                        row.shown.asRate ? row.shown.rateRange : row.range, taken))
+            value = row.shown.asRate ? 1.0 / taken : taken;
+    }
+    // --verbose: where each slider is, once (the window test drags "bounciness").
     if (app.log.verbose && !app.log.layoutLogged) {
         const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-        std::printf("widget bounciness %d %d %d %d\n", static_cast<int>(a.x), static_cast<int>(a.y),
-                    static_cast<int>(sliderWidth), static_cast<int>(b.y - a.y));
-        app.log.layoutLogged = true;
+        std::printf("widget %s %d %d %d %d\n", row.key, static_cast<int>(a.x),
+                    static_cast<int>(a.y), static_cast<int>(width), static_cast<int>(b.y - a.y));
     }
-    typedWarning(app, "bounciness C");
-    float g[2] = {static_cast<float>(s.gravity.x), static_cast<float>(s.gravity.y)};
-    if (ImGui::SliderFloat2("##gravity", g, -20.0f, 20.0f, "%.2f")) {
+}
+
+void wholeSlider(App& app, const WorldKey& row, WorldSettings& s) {
+    int typed = s.*row.whole;
+    if (ImGui::SliderInt(row.panel.label, &typed, static_cast<int>(row.panel.min),
+                         static_cast<int>(row.panel.max), row.panel.format)) {
+        double k = s.*row.whole;
+        if (acceptTyped(app, row.panel.label, typed, k, row.range, k))
+            s.*row.whole = static_cast<int>(k);
+    }
+}
+
+// Two sliders (x, y) with no label, then "0" and the preset (the default) and the symbol.
+void pairSlider(App& app, const WorldKey& row, WorldSettings& s) {
+    Vec2& value = s.*row.pair;
+    float typed[2] = {static_cast<float>(value.x), static_cast<float>(value.y)};
+    if (ImGui::SliderFloat2(("##" + std::string(row.key)).c_str(), typed, row.panel.min,
+                            row.panel.max, row.panel.format)) {
         // Ctrl+click types a value beyond the slider: any within the limits is taken.
-        acceptTyped2(app, "gravity", g, s.gravity, limits::kGravity, s.gravity);
+        acceptTyped2(app, row.panel.label, typed, value, row.range, value);
     }
-    tooltip("Gravity (x, y) in m/s² (Ctrl+click to type a value)");
+    tooltip(row.shown.tooltip);
     ImGui::SameLine();
-    if (ImGui::SmallButton("0")) s.gravity = Vec2{0.0, 0.0};
-    if (ImGui::IsItemActivated()) app.ui.typedWarning.note("gravity", TypedValue{});
-    tooltip("No gravity");
+    if (ImGui::SmallButton("0")) value = Vec2{};
+    if (ImGui::IsItemActivated()) app.ui.typedWarning.note(row.panel.label, TypedValue{});
+    tooltip(("No " + std::string(row.shown.name)).c_str());
     ImGui::SameLine();
-    if (ImGui::SmallButton("9.81")) s.gravity = Vec2{0.0, -9.81};
-    if (ImGui::IsItemActivated()) app.ui.typedWarning.note("gravity", TypedValue{});
-    tooltip("Gravity 9.81 m/s² down");
+    if (ImGui::SmallButton(row.panel.presetLabel)) value = defaultWorldSettings().*row.pair;
+    if (ImGui::IsItemActivated()) app.ui.typedWarning.note(row.panel.label, TypedValue{});
+    tooltip(row.panel.presetTooltip);
     ImGui::SameLine();
-    ImGui::TextUnformatted("g");
-    typedWarning(app, "gravity");
-    float hz = static_cast<float>(1.0 / s.dt);
-    if (ImGui::SliderFloat("frame rate", &hz, 5.0f, 240.0f, "%.0f Hz")) {
-        double rate = 1.0 / s.dt;
-        if (acceptTyped(app, "frame rate", hz, rate, limits::kFrameRate, rate)) s.dt = 1.0 / rate;
+    ImGui::TextUnformatted(row.shown.symbol);
+}
+
+void nameChecks(const WorldKey& row, WorldSettings& s) {
+    ImGui::TextColored(uiDimColor(), "%s", row.panel.label);
+    for (int i = 0; i < row.names.count; ++i) {
+        const auto bit = static_cast<std::uint8_t>(1u << i);
+        bool on = (s.*row.bits & bit) != 0;
+        if (ImGui::Checkbox(row.names.name(i), &on))
+            s.*row.bits = static_cast<std::uint8_t>(on ? s.*row.bits | bit : s.*row.bits & ~bit);
+        if (row.names.note) tooltip((std::string("Slide: \"") + row.names.note(i) + "\"").c_str());
     }
-    tooltip("Simulation frames per simulated second: dt = 1 / rate");
-    typedWarning(app, "frame rate");
-    int substeps = s.substeps;
-    if (ImGui::SliderInt("substeps", &substeps, 1, 32, "%d")) {
-        double k = s.substeps;
-        if (acceptTyped(app, "substeps", substeps, k, limits::kSubsteps, k)) {
-            s.substeps = static_cast<int>(k);
-        }
+}
+
+void settingWidget(App& app, const WorldKey& row) {
+    WorldSettings& s = app.sim.world().settings;
+    using settings_table::Kind;
+    switch (row.kind) {
+    case Kind::Choice:
+        choiceCombo(row, s);
+        break;
+    case Kind::Number:
+        numberSlider(app, row, s);
+        break;
+    case Kind::Whole:
+        wholeSlider(app, row, s);
+        break;
+    case Kind::Pair:
+        pairSlider(app, row, s);
+        break;
+    case Kind::NameSet:
+        nameChecks(row, s);
+        break;
+    case Kind::Flag:
+        ImGui::Checkbox(row.panel.label, &(s.*row.flag));
+        break;
     }
-    typedWarning(app, "substeps");
+    if (row.kind != Kind::Pair && *row.shown.tooltip) tooltip(row.shown.tooltip);
+    typedWarning(app, row.panel.label);
+}
+
+// The rows of one section of the panel, in its order.
+void settingWidgets(App& app, settings_table::Section section) {
+    for (const WorldKey* row : settings_table::shownOrder())
+        if (row->panel.section == section) settingWidget(app, *row);
+}
+
+void simulationSection(App& app) {
+    if (!ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    settingWidgets(app, settings_table::Section::Simulation);
+    if (app.log.verbose) app.log.layoutLogged = true;
     float scale = static_cast<float>(app.sim.timeScale);
     if (ImGui::SliderFloat("time scale", &scale, 0.05f, 4.0f, "%.2fx",
                            ImGuiSliderFlags_Logarithmic)) {
@@ -282,22 +345,6 @@ void simulationSection(App& app) {
                     app.sim.timeScale);
     }
     typedWarning(app, "time scale");
-}
-
-// A combo over the engine's own list of names (resolveName, integratorName): no second list.
-template <typename E> bool enumCombo(const char* label, E& value, const char* (*name)(E)) {
-    bool changed = false;
-    if (ImGui::BeginCombo(label, name(value))) {
-        for (int i = 0; i < static_cast<int>(E::Count); ++i) {
-            const E e = static_cast<E>(i);
-            if (ImGui::Selectable(name(e), e == value) && e != value) {
-                value = e;
-                changed = true;
-            }
-        }
-        ImGui::EndCombo();
-    }
-    return changed;
 }
 
 // Issue 16's settings (each a scene key, kept by R, restored by Shift+R, saved by Ctrl+S) and the
@@ -310,32 +357,7 @@ void physicsSection(App& app) {
         app.ui.physicsFollowedScene = scene;
     }
     if (!ImGui::CollapsingHeader("Physics")) return;
-    WorldSettings& s = app.sim.world().settings;
-    enumCombo("resolve", s.resolve, resolveName);
-    tooltip("momentum: with Newton, the lecture's formula u = (m1·v1 + m2·v2)/(m1 + m2), "
-            "v' = u - C·(v - u)\nreflect: without Newton, each body reverses its own component "
-            "as off a wall, v' = -C·v (momentum is not kept)\n(slide \"Demo: bouncing squares; "
-            "with/without Newton\")");
-    enumCombo("integrator", s.integrator, integratorName);
-    tooltip("semi-implicit-euler: v += a·h, then x += v·h (the lecture's)\nexplicit-euler: x "
-            "moves with the old v\nexact: x += v·h + a·h²/2, the parabola (slide \"It is just an "
-            "approximation of the true movement!\")");
-    float drag = static_cast<float>(s.drag);
-    if (ImGui::SliderFloat("drag k", &drag, 0.0f, 1000.0f, "%.3g kg/m³",
-                           ImGuiSliderFlags_Logarithmic)) {
-        acceptTyped(app, "drag k", drag, s.drag, limits::kDrag, s.drag);
-    }
-    tooltip("Quadratic drag: force -k·A·|v|·v, A = w·h; terminal speed sqrt(m·g/(k·A)). Air 1.2, "
-            "water 1000 (slide \"Viscosity/drag: a feather falls slower than a stone\"; "
-            "Ctrl+click to type)");
-    typedWarning(app, "drag k");
-    ImGui::TextColored(uiDimColor(), "Mistakes (the Tips slides' bugs)");
-    for (int m = 0; m < static_cast<int>(Mistake::Count); ++m) {
-        const Mistake mistake = static_cast<Mistake>(m);
-        bool on = s.has(mistake);
-        if (ImGui::Checkbox(mistakeName(mistake), &on)) s.set(mistake, on);
-        tooltip((std::string("Slide: \"") + mistakeSlide(mistake) + "\"").c_str());
-    }
+    settingWidgets(app, settings_table::Section::Physics);
     ImGui::Separator();
     ImGui::Checkbox("Thrust (arrow keys)", &app.sim.thrust.on);
     tooltip("Hold the arrow keys to push the selected block with the thrust force (added to its "
@@ -360,17 +382,17 @@ void physicsSection(App& app) {
 
 // The selected block's own constant force [fx, fy] (N): a thruster that is always on.
 void blockForceField(App& app, Block& b) {
+    const settings_table::BlockKey& row = settings_table::blockKey("force");
     float f[2] = {static_cast<float>(b.force.x), static_cast<float>(b.force.y)};
     Vec2 force = b.force;
-    if (ImGui::DragFloat2("force", f, 0.05f, -1000.0f, 1000.0f, "%.2f N") &&
-        acceptTyped2(app, "force", f, b.force, limits::kForce, force) &&
-        acceptAcceleration(app, "force", force, b.mass)) {
+    if (ImGui::DragFloat2(row.label, f, 0.05f, -1000.0f, 1000.0f, row.sliderFormat) &&
+        acceptTyped2(app, row.label, f, b.force, row.range, force) &&
+        acceptAcceleration(app, row.label, force, b.mass)) {
         b.force = force;
         app.sim.noteEdit(true);
     }
-    tooltip("A constant force on the block (N), a = F/m (Ctrl+click to type); its arrow is drawn "
-            "with the arrows overlay");
-    typedWarning(app, "force");
+    tooltip(row.tooltip);
+    typedWarning(app, row.label);
 }
 
 void selectedSection(App& app) {
@@ -396,37 +418,42 @@ void selectedSection(App& app) {
     changed |= ImGui::RadioButton("kinematic", &kind, 2);
     if (changed) app.sim.setBlockKind(i, static_cast<BodyKind>(kind));
     if (b.isDynamic()) {
+        const settings_table::BlockKey& massRow = settings_table::blockKey("mass");
         float mass = static_cast<float>(b.mass);
         double newMass = b.mass;
-        if (ImGui::SliderFloat("mass", &mass, 0.01f, 1000.0f, "%.3g kg",
+        if (ImGui::SliderFloat(massRow.label, &mass, 0.01f, 1000.0f, massRow.sliderFormat,
                                ImGuiSliderFlags_Logarithmic) &&
-            acceptTyped(app, "mass", mass, b.mass, limits::kMass, newMass) &&
-            acceptAcceleration(app, "mass", b.force, newMass)) {
+            acceptTyped(app, massRow.label, mass, b.mass, massRow.range, newMass) &&
+            acceptAcceleration(app, massRow.label, b.force, newMass)) {
             b.mass = newMass;
             app.sim.noteEdit(true);
         }
-        typedWarning(app, "mass");
+        typedWarning(app, massRow.label);
         blockForceField(app, b);
     } else {
         ImGui::TextColored(uiDimColor(), "mass: infinite");
     }
+    const settings_table::BlockKey& sizeRow = settings_table::blockKey("size");
     float size[2] = {static_cast<float>(b.size.x), static_cast<float>(b.size.y)};
-    if (ImGui::DragFloat2("size", size, 0.02f, 0.05f, 50.0f, "%.2f m")) {
+    if (ImGui::DragFloat2(sizeRow.label, size, 0.02f, 0.05f, 50.0f, sizeRow.sliderFormat)) {
         Vec2 wanted = b.size;
-        if (acceptTyped2(app, "size", size, b.size, limits::kSize, wanted) &&
+        if (acceptTyped2(app, sizeRow.label, size, b.size, sizeRow.range, wanted) &&
             !app.sim.setBlockSize(i, wanted)) {
             app.ui.typedWarning.note(
-                "size", {false, 0.0, "size: that size would overlap another block or a wall"});
+                sizeRow.label,
+                {false, 0.0, "size: that size would overlap another block or a wall"});
         }
     }
-    typedWarning(app, "size");
+    typedWarning(app, sizeRow.label);
     if (b.kind != BodyKind::Static) {
+        const settings_table::BlockKey& velocityRow = settings_table::blockKey("velocity");
         float v[2] = {static_cast<float>(b.velocity.x), static_cast<float>(b.velocity.y)};
-        if (ImGui::DragFloat2("velocity", v, 0.05f, -1000.0f, 1000.0f, "%.2f m/s") &&
-            acceptTyped2(app, "velocity", v, b.velocity, limits::kSpeed, b.velocity)) {
+        if (ImGui::DragFloat2(velocityRow.label, v, 0.05f, -1000.0f, 1000.0f,
+                              velocityRow.sliderFormat) &&
+            acceptTyped2(app, velocityRow.label, v, b.velocity, velocityRow.range, b.velocity)) {
             app.sim.noteEdit(true);
         }
-        typedWarning(app, "velocity");
+        typedWarning(app, velocityRow.label);
     }
     ImGui::TextColored(uiDimColor(), "position (%.2f, %.2f) m", b.position.x, b.position.y);
     if (ImGui::Button("Delete block")) deleteSelected(app);
