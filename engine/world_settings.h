@@ -1,10 +1,11 @@
 // The world's settings: WorldSettings and, below it, its rows of the settings table
-// (settings_table.h: scene key, limits, words, sandbox-cli flag, panel widget). A new setting is
-// its member and its row here, the engine code that uses it, a test and the docs.
+// (settings_rows.h types a row: scene key, limits, words, sandbox-cli flag, panel widget;
+// settings_table.h reads them). A new setting is its member and its row here, the engine code
+// that uses it, a test and the docs.
 #pragma once
 
 #include "input_limits.h"
-#include "settings_table.h"
+#include "settings_rows.h"
 #include "vec2.h"
 
 #include <cstdint>

@@ -1,25 +1,14 @@
-// Scene files, format v1 (docs/scene-format.md): load with validation, save, and build a World from a scene.
+// Scene files, format v1 (docs/scene-format.md): load with validation, save, and build a World from
+// a scene.
 #pragma once
 
+#include "block_def.h"
 #include "scene_error.h"
 #include "world.h"
 
 #include <optional>
 #include <string>
 #include <vector>
-
-struct BlockDef {
-    std::string name;    // optional in the file ("" when absent)
-    Vec2 position;       // m
-    Vec2 size{1.0, 1.0}; // m
-    Vec2 velocity;       // m/s
-    double mass = 1.0;   // kg (dynamic only)
-    Vec2 force;          // N, constant (dynamic only): a thruster, a = F/m
-    BodyKind kind = BodyKind::Dynamic;
-    std::string color; // "#rrggbb", optional ("" when absent)
-
-    bool operator==(const BlockDef& o) const;
-};
 
 struct Scene {
     std::string name;

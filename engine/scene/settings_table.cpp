@@ -2,7 +2,7 @@
 // by its kind. Reading and writing the JSON of a scene file is in scene.cpp and scene_save.cpp.
 #include "settings_table.h"
 
-#include "scene.h"
+#include "block_def.h"
 #include "world_settings.h"
 
 #include <algorithm>

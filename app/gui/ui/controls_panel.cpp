@@ -120,11 +120,13 @@ void lessonSection(App& app) {
     if (ImGui::Button("< Prev", ImVec2(w, 0))) applyAction(app, Action::LessonPrevious);
     tooltip("PageUp (or Left, with thrust off)");
     ImGui::SameLine();
-    if (ImGui::Button(s.asking() ? "Answer >" : "Next >", ImVec2(w, 0)))
+    if (ImGui::Button(s.phase == LessonSession::Phase::Setup ? "Play >" : "Next >", ImVec2(w, 0)))
         applyAction(app, Action::LessonNext);
     tooltip("PageDown (or Right, with thrust off)");
     ImGui::SameLine();
     if (ImGui::Button("Restart (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
+    tooltip("R: the step again from its setup, keeping the method and settings you changed; "
+            "Shift+R: the step as written");
     const float rows = std::min<float>(8.0f, static_cast<float>(s.lesson->steps.size()));
     ImGui::BeginChild("##steps", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing()));
     for (std::size_t i = 0; i < s.lesson->steps.size(); ++i) {
@@ -464,11 +466,13 @@ void statisticsSection(const Run& run, const UiState& ui) {
     const StepStats& s = run.stats;
     if (!ImGui::BeginTable("stats", 2, ImGuiTableFlags_SizingStretchProp)) return;
     statRow("collisions / frame", "%.0f", s.collisions);
+    statRow("resting contacts / frame", "%.0f", s.contacts);
     statRow("events / frame", "%.0f", s.events);
     statRow("largest overlap", "%.4f m", s.maxPenetration);
     statRow("event-cap hits", "%.0f", static_cast<double>(run.totals.eventCapHits));
     statRow("step time", "%.3f ms", s.stepMs);
     statRow("collisions (total)", "%.0f", static_cast<double>(run.totals.collisions));
+    statRow("resting contacts (total)", "%.0f", static_cast<double>(run.totals.contacts));
     statRow("momentum x", "%.3f kg·m/s", s.momentum.x);
     statRow("momentum y", "%.3f kg·m/s", s.momentum.y);
     statRow("kinetic energy", "%.3f J", s.kineticEnergy);
