@@ -84,6 +84,7 @@ void scenePicker(App& app) {
     ImGui::SetNextItemWidth(-1.0f - copyWidth);
     // Taller than the default 8 rows: every shipped scene at once, in the lecture's order.
     if (ImGui::BeginCombo("##scene", preview, ImGuiComboFlags_HeightLargest)) {
+        uiBeginRows();
         for (const SceneEntry& e : app.shipped.scenes) {
             const bool current = e.path == app.sim.scenePath;
             if (ImGui::Selectable(e.title.c_str(), current)) loadScene(app, e.path);
@@ -99,6 +100,7 @@ void scenePicker(App& app) {
             const std::string label = "Lesson: " + e.title;
             if (ImGui::Selectable(label.c_str(), current)) openLesson(app, e.path);
         }
+        uiEndRows();
         ImGui::EndCombo();
     }
     tooltip("The shipped scenes in the lecture's order (app/scenes/lecture_order.txt), and "
@@ -128,6 +130,7 @@ void lessonSection(App& app) {
     tooltip("R: the step again from its setup, keeping the method and settings you changed; "
             "Shift+R: the step as written");
     const float rows = std::min<float>(8.0f, static_cast<float>(s.lesson->steps.size()));
+    uiBeginRows();
     ImGui::BeginChild("##steps", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing()));
     for (std::size_t i = 0; i < s.lesson->steps.size(); ++i) {
         const std::string label =
@@ -137,7 +140,8 @@ void lessonSection(App& app) {
         if (current && ImGui::IsWindowAppearing()) ImGui::SetScrollHereY();
     }
     ImGui::EndChild();
-    if (ImGui::SmallButton("close lesson")) closeLesson(app);
+    uiEndRows();
+    if (uiSmallButton("close lesson")) closeLesson(app);
     tooltip("Leave the lesson; the current scene stays");
 }
 
@@ -198,24 +202,27 @@ void compareSection(App& app) {
     }
     if (!st.open()) return;
     textWrappedAtSpaces(studentTraceSummary(st));
-    if (ImGui::SmallButton("first difference")) goToFirstDifference(app);
+    if (uiSmallButton("first difference")) goToFirstDifference(app);
     ImGui::SameLine();
-    if (ImGui::SmallButton("compare again")) compareTraceAgain(app);
+    if (uiSmallButton("compare again")) compareTraceAgain(app);
     tooltip("With the current settings (the method chosen above), from the start");
     ImGui::SameLine();
-    if (ImGui::SmallButton("close")) closeTrace(app);
+    if (uiSmallButton("close")) closeTrace(app);
 }
 
 void runSection(App& app) {
-    const float w = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
-    if (ImGui::Button(app.sim.paused ? "Play  (P)" : "Pause (P)", ImVec2(w, 0))) {
-        applyAction(app, Action::TogglePause);
+    if (!app.view.layout.sheet) { // the sheet has them in its bar
+        const float w =
+            (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
+        if (ImGui::Button(app.sim.paused ? "Play  (P)" : "Pause (P)", ImVec2(w, 0))) {
+            applyAction(app, Action::TogglePause);
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Step (N)", ImVec2(w, 0))) applyAction(app, Action::StepOnce);
+        ImGui::SameLine();
+        if (ImGui::Button("Reset (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
+        tooltip("Blocks and time back to the start; keeps the method, C, g, frame rate, substeps");
     }
-    ImGui::SameLine();
-    if (ImGui::Button("Step (N)", ImVec2(w, 0))) applyAction(app, Action::StepOnce);
-    ImGui::SameLine();
-    if (ImGui::Button("Reset (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
-    tooltip("Blocks and time back to the start; keeps the method, C, g, frame rate, substeps");
     ImGui::Checkbox("Slow motion (Space)", &app.sim.slowMotion);
     tooltip("5 simulation frames per second, as in the lecture's demo");
     ImGui::SameLine();
@@ -230,10 +237,12 @@ using settings_table::WorldKey;
 void choiceCombo(const WorldKey& row, WorldSettings& s) {
     const int current = row.getChoice(s);
     if (ImGui::BeginCombo(row.panel.label, row.names.name(current))) {
+        uiBeginRows();
         for (int i = 0; i < row.names.count; ++i) {
             if (ImGui::Selectable(row.names.name(i), i == current) && i != current)
                 row.setChoice(s, i);
         }
+        uiEndRows();
         ImGui::EndCombo();
     }
 }
@@ -252,9 +261,10 @@ void numberSlider(App& app, const WorldKey& row, WorldSettings& s) {
                         row.shown.asRate ? row.shown.rateRange : row.range, taken))
             value = row.shown.asRate ? 1.0 / taken : taken;
     }
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    if (&value == &s.bounciness) app.ui.bouncinessSlider = {a.x, a.y, b.x - a.x, b.y - a.y};
     // --verbose: where each slider is, once (the window test drags "bounciness").
     if (app.log.verbose && !app.log.layoutLogged) {
-        const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
         std::printf("widget %s %d %d %d %d\n", row.key, static_cast<int>(a.x),
                     static_cast<int>(a.y), static_cast<int>(width), static_cast<int>(b.y - a.y));
     }
@@ -281,11 +291,11 @@ void pairSlider(App& app, const WorldKey& row, WorldSettings& s) {
     }
     tooltip(row.shown.tooltip);
     ImGui::SameLine();
-    if (ImGui::SmallButton("0")) value = Vec2{};
+    if (uiSmallButton("0")) value = Vec2{};
     if (ImGui::IsItemActivated()) app.ui.typedWarning.note(row.panel.label, TypedValue{});
     tooltip(("No " + std::string(row.shown.name)).c_str());
     ImGui::SameLine();
-    if (ImGui::SmallButton(row.panel.presetLabel)) value = defaultWorldSettings().*row.pair;
+    if (uiSmallButton(row.panel.presetLabel)) value = defaultWorldSettings().*row.pair;
     if (ImGui::IsItemActivated()) app.ui.typedWarning.note(row.panel.label, TypedValue{});
     tooltip(row.panel.presetTooltip);
     ImGui::SameLine();
@@ -502,7 +512,7 @@ void viewSection(App& app) {
         setViewFrame(app.view, com ? ViewFrame::CentreOfMass : ViewFrame::World);
     tooltip("The view moves with the centre of mass's velocity u and the arrows show w = v - u "
             "(the walls drift across the view: they move at -u in this frame)");
-    if (ImGui::SmallButton("clear trails (C)")) applyAction(app, Action::ClearTrails);
+    if (uiSmallButton("clear trails (C)")) applyAction(app, Action::ClearTrails);
     float scale = app.view.uiScale;
     if (ImGui::SliderFloat("UI scale", &scale, 0.75f, 3.0f, "%.2f")) {
         // Applied when released: rebuilding the font under the cursor would fight the slider.
@@ -547,19 +557,51 @@ void viewSection(App& app) {
 
 } // namespace
 
+// A narrow screen's sheet: its bar (open or close it, play, step, reset, help) always shows.
+void sheetBar(App& app) {
+    const float w =
+        (ImGui::GetContentRegionAvail().x - 4.0f * ImGui::GetStyle().ItemSpacing.x) / 5.0f;
+    if (ImGui::Button(app.view.sheetOpen ? "Close" : "Controls", ImVec2(w * 1.3f, 0)))
+        app.view.sheetOpen = !app.view.sheetOpen;
+    ImGui::SameLine();
+    if (ImGui::Button(app.sim.paused ? "Play" : "Pause", ImVec2(w, 0)))
+        applyAction(app, Action::TogglePause);
+    ImGui::SameLine();
+    if (ImGui::Button("Step", ImVec2(w, 0))) applyAction(app, Action::StepOnce);
+    ImGui::SameLine();
+    if (ImGui::Button("Reset", ImVec2(w, 0))) applyAction(app, Action::Reset);
+    ImGui::SameLine();
+    if (ImGui::Button("Help", ImVec2(-1.0f, 0))) app.ui.helpOpen = !app.ui.helpOpen;
+}
+
 void drawControlsPanel(App& app) {
     const ImGuiIO& io = ImGui::GetIO();
-    const float width = static_cast<float>(panelWidth(app.view.uiScale, io.DisplaySize.x));
-    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y), ImGuiCond_Always);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
+    float width = static_cast<float>(panelWidth(app.view.uiScale, io.DisplaySize.x));
+    ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                             ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                             ImGuiWindowFlags_NoBringToFrontOnFocus;
+    if (app.view.layout.sheet) { // along the bottom, the screen's width
+        const ScreenRect& r = app.view.layout.panel;
+        width = static_cast<float>(r.width);
+        ImGui::SetNextWindowPos(ImVec2(static_cast<float>(r.x), static_cast<float>(r.y)));
+        ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(r.height)));
+        flags |= ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar;
+    } else {
+        ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+        ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y), ImGuiCond_Always);
+    }
     if (!ImGui::Begin("Controls", nullptr, flags)) {
         ImGui::End();
         return;
     }
     recordShownWindow(app, "Controls");
+    if (app.view.layout.sheet) {
+        sheetBar(app);
+        if (!app.view.sheetOpen) {
+            ImGui::End();
+            return;
+        }
+    }
     const WorldSettings before = app.sim.world().settings;
     ImGui::PushItemWidth(width * 0.52f);
     scenePicker(app);
@@ -579,7 +621,7 @@ void drawControlsPanel(App& app) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiErrorColor());
         textWrappedAtSpaces(app.ui.messages.error);
         ImGui::PopStyleColor();
-        if (ImGui::SmallButton("dismiss")) app.ui.messages.error.clear();
+        if (uiSmallButton("dismiss")) app.ui.messages.error.clear();
     } else if (!app.ui.messages.note.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiNoteColor());
         textWrappedAtSpaces(app.ui.messages.note);
