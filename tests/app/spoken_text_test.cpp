@@ -1,6 +1,7 @@
 // What a screen reader is told: the collision in the inspector's words, the live region's pace,
 // and the screen's texts as sentences.
 #include "app.h"
+#include "collision_announcer.h"
 #include "spoken_text.h"
 
 #include <gtest/gtest.h>
@@ -10,7 +11,8 @@ namespace {
 // lecture_example_1 up to its one collision (t = 0.625 s, the 38th frame).
 App playedThroughTheCollision() {
     App app;
-    EXPECT_TRUE(loadScene(app, SANDBOX_SCENES_DIR "/lecture_example_1.json")) << app.ui.messages.error;
+    EXPECT_TRUE(loadScene(app, SANDBOX_SCENES_DIR "/lecture_example_1.json"))
+        << app.ui.messages.error;
     for (int i = 0; i < 40 && app.sim.run.totals.collisions == 0; ++i) stepSimulation(app);
     return app;
 }
@@ -19,8 +21,9 @@ TEST(SpokenText, ACollisionInTheInspectorsWords) {
     App app = playedThroughTheCollision();
     ASSERT_EQ(app.sim.run.lastLog.size(), 1u);
     const CollisionRecord& r = app.sim.run.lastLog[0];
-    EXPECT_EQ(collisionSentence(r, app.sim.blockDisplayName(r.block), app.sim.blockDisplayName(r.other)),
-              "m1 hits m2 along x at t = 0.625 s: v1' = -2 m/s, v2' = 4 m/s");
+    EXPECT_EQ(
+        collisionSentence(r, app.sim.blockDisplayName(r.block), app.sim.blockDisplayName(r.other)),
+        "m1 hits m2 along x at t = 0.625 s: v1' = -2 m/s, v2' = 4 m/s");
     CollisionRecord wall = r;
     wall.other = kWallLeft;
     EXPECT_EQ(collisionSentence(wall, "ball", ""),
@@ -59,7 +62,8 @@ TEST(SpokenText, AtMostOneAnnouncementASecondAndABusySceneSummedUp) {
 
 TEST(SpokenText, TheScreenAsSentences) {
     App app;
-    ASSERT_TRUE(loadScene(app, SANDBOX_SCENES_DIR "/lecture_example_1.json")) << app.ui.messages.error;
+    ASSERT_TRUE(loadScene(app, SANDBOX_SCENES_DIR "/lecture_example_1.json"))
+        << app.ui.messages.error;
     SpokenScreen s = spokenScreen(app);
     EXPECT_EQ(s.scene, "Lecture example 1");
     EXPECT_EQ(s.description, app.sim.scene.description);

@@ -1,15 +1,9 @@
-// What a screen reader is told (the browser's page puts it in the DOM beside the canvas): the
-// scene, the lesson's step, the status, and the collisions in the inspector's words through a
-// polite live region, at most about one announcement a second (a busy scene is summed up).
+// What a screen reader is told about the screen (the browser's page puts it in the DOM beside the
+// canvas): the scene, the lesson's step and the status; the collisions are collision_announcer.h's.
 // Plain logic from the app's state, no ImGui: tested in tests/app.
 #pragma once
 
-#include "stats.h"
-
-#include <deque>
-#include <functional>
 #include <string>
-#include <vector>
 
 struct App;
 
@@ -26,30 +20,3 @@ struct SpokenScreen {
     bool operator!=(const SpokenScreen& o) const { return !(*this == o); }
 };
 SpokenScreen spokenScreen(const App& app);
-
-// A collision in the inspector's words: "m1 hits m2 along x at t = 0.625 s: v1' = -2 m/s,
-// v2' = 4 m/s" (a wall: "m1 hits the left wall along x at t = 1.5 s: v1' = -3 m/s"). A name
-// that states its mass goes without it ("m1 = 1 kg" is m1).
-std::string collisionSentence(const CollisionRecord& r, const std::string& name1,
-                              const std::string& name2);
-
-// The live region's pace: the collisions of each simulated frame go in (note); announce() says
-// at most one thing per kAnnounceEverySeconds of real time: the one collision since the last
-// announcement in its words, or, when there were more, how many the last simulated second had
-// ("37 collisions in the last second").
-constexpr double kAnnounceEverySeconds = 1.0;
-class CollisionAnnouncer {
-  public:
-    void note(const std::vector<CollisionRecord>& frameLog);
-    // Time went back (a reset, another scene): what was noted is forgotten (note() does it when
-    // a collision comes earlier than the last).
-    void restart();
-    // `realNow`: s of real time; `name`: a block's name by index. "" when nothing is due.
-    std::string announce(double realNow, const std::function<std::string(int)>& name);
-
-  private:
-    std::deque<double> times_; // world times of the noted collisions within the last second
-    long long sinceAnnounced_ = 0;
-    CollisionRecord last_;
-    double lastAnnounced_ = -1e300;
-};

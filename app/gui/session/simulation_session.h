@@ -12,7 +12,7 @@
 #include "poi.h"
 #include "scene.h"
 #include "side_by_side.h"
-#include "spoken_text.h"
+#include "collision_announcer.h"
 #include "telemetry.h"
 #include "timeline.h"
 #include "trails.h"
@@ -95,7 +95,7 @@ struct SimulationSession {
     CostMeasurement cost; // the cost overlay's measurement and tradeoff sweep
     // Each frame's collisions heard and told: the knocks (collision_sound.h; queued while the
     // sound is on, which by default it is in a lesson: `inLesson`, as the app last said) and the
-    // screen reader's announcer (spoken_text.h, the browser's page).
+    // screen reader's announcer (collision_announcer.h, the browser's page).
     SoundControl sound;
     bool inLesson = false;
     CollisionAnnouncer announcer;

@@ -16,10 +16,20 @@ bool navigating() {
     return io.NavActive && io.NavVisible;
 }
 
+// While a lesson step's thrust is on the arrow keys are the thrust, so ImGui's keyboard
+// navigation (Tab and the arrows) is off; in every other state it is on.
+void followThrustForNavigation(const App& app) {
+    ImGuiIO& io = ImGui::GetIO();
+    if (app.sim.thrust.on)
+        io.ConfigFlags &= ~ImGuiConfigFlags_NavEnableKeyboard;
+    else
+        io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
+}
+
 void handleKeys(App& app, const std::vector<KeyPress>& keys) {
     // Typing into a text field (a file name) must not trigger hotkeys; Esc still closes dialogs.
     const bool typing = ImGui::GetIO().WantTextInput;
-    const bool keyboardNavigation = navigating();
+    const bool keyboardNavigation = navigating() && !app.sim.thrust.on;
     for (const KeyPress& k : keys) {
         const Action action =
             actionForKey(k.key, k.ctrl, k.shift, app.sim.thrust.on, app.ui.inBrowser);
@@ -200,8 +210,9 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     // held (not while typing into a field or moving the keyboard's focus ring), the mouse in the
     // scene.
     handleKeys(app, keys);
+    followThrustForNavigation(app);
     app.view.shownWindows.clear();
-    const bool typing = io.WantTextInput || navigating();
+    const bool typing = io.WantTextInput || (navigating() && !app.sim.thrust.on);
     app.sim.thrust.direction = app.sim.thrust.on && !typing ? heldThrustDirection([&io](int key) {
         return key >= 0 && key < IM_ARRAYSIZE(io.KeysDown) && io.KeysDown[key];
     })
