@@ -3,6 +3,8 @@
 #include "lesson_runner.h"
 #include "overlays.h"
 
+#include <algorithm>
+
 #ifndef SANDBOX_LESSONS_DIR
 #define SANDBOX_LESSONS_DIR ""
 #endif
@@ -11,17 +13,33 @@ namespace {
 
 constexpr std::size_t kMaxDigits = 6;
 
-// Runs the frames up to the pause point (a question's last frame) and pauses there.
+// Runs the frames up to the pause point and pauses there.
 void runToPausePoint(const LessonSession& s, SimulationSession& sim, const View& view) {
     sim.stopAtFrame.reset(); // reached here, not again by playing on
-    while (s.stopFrame && sim.world().frame < s.pauseFrame) sim.step(view.show.sideBySide);
+    while (s.stopFrame && sim.world().frame < *s.stopFrame) sim.step(lessonRunsSideBySide(s, view));
     sim.paused = true;
 }
 
-void reveal(LessonSession& s, SimulationSession& sim, View& view) {
-    runToPausePoint(s, sim, view);
+// The moment: the answer shows, with the overlays that prove it.
+void reveal(LessonSession& s, View& view) {
+    s.phase = LessonSession::Phase::Moment;
+    if (s.step()->question.empty() || s.revealed) return;
     s.revealed = true;
     for (const std::string& name : s.step()->reveal) setOverlay(view.show, name, true);
+}
+
+// Paused at the setup (t = 0), the question asked; `run` says where the step's moment is.
+void showSetup(LessonSession& s, SimulationSession& sim, View& view, const StepRun& run) {
+    const LessonStep& step = *s.step();
+    s.revealed = false;
+    s.phase = LessonSession::Phase::Setup;
+    s.stopFrame.reset();
+    if (step.pause.kind != LessonPause::Kind::None && run.reached)
+        s.stopFrame = static_cast<std::uint64_t>(run.progress.frames);
+    sim.pauseAtSceneEnd = false; // the step stops where it says
+    sim.paused = true;
+    sim.stopAtFrame.reset();
+    if (s.stopFrame && *s.stopFrame == 0) reveal(s, view); // a step whose moment is its setup
 }
 
 } // namespace
@@ -85,25 +103,37 @@ bool enterStep(LessonSession& s, SimulationSession& sim, View& view, Messages& m
     if (step.thrust) sim.thrust.force = *step.thrust;
     sim.reset(); // again, with the selection: the plots and the point of impact follow it
     followNewRun(view, sim.world());
-    // Where it stops: the runner's pause point (a frame earlier while a question waits).
-    const StepRun run = runStepToPause(step);
-    s.pauseFrame = static_cast<std::uint64_t>(run.progress.frames);
-    s.stopFrame.reset();
-    if (step.pause.kind != LessonPause::Kind::None && run.reached) {
-        s.stopFrame = s.asking() && s.pauseFrame > 0 ? s.pauseFrame - 1 : s.pauseFrame;
-    }
-    sim.pauseAtSceneEnd = false; // the step stops where it says
-    sim.paused = s.stopFrame && *s.stopFrame == 0;
-    sim.stopAtFrame = sim.paused ? std::nullopt : s.stopFrame;
+    showSetup(s, sim, view, runStepToPause(step));
     messages.clear();
     return true;
 }
 
+void replayStep(LessonSession& s, SimulationSession& sim, View& view, Messages& messages) {
+    if (!s.step()) return;
+    sim.reset(); // the lecturer's method and settings stay, as R outside lessons
+    followNewRun(view, sim.world());
+    LessonStep asRun = *s.step(); // where the step now pauses, with those settings
+    asRun.scene.settings = sim.world().settings;
+    showSetup(s, sim, view, runStepToPause(asRun));
+    messages.clear();
+}
+
 void lessonNext(LessonSession& s, SimulationSession& sim, View& view, Messages& messages) {
     if (!s.active()) return;
-    if (s.asking()) {
-        reveal(s, sim, view);
+    switch (s.phase) {
+    case LessonSession::Phase::Setup: // play toward the moment
+        s.phase = LessonSession::Phase::Playing;
+        sim.stopAtFrame = s.stopFrame;
+        sim.paused = false;
         return;
+    case LessonSession::Phase::Playing: // the moment at once
+        if (s.stopFrame) {
+            lessonShowPausePoint(s, sim, view);
+            return;
+        }
+        break; // no moment: the next step
+    case LessonSession::Phase::Moment:
+        break;
     }
     if (s.current + 1 < s.lesson->steps.size()) enterStep(s, sim, view, messages, s.current + 1);
 }
@@ -131,13 +161,24 @@ void lessonTypeDigit(LessonSession& s, int digit) {
 }
 
 void lessonShowPausePoint(LessonSession& s, SimulationSession& sim, View& view) {
-    const LessonStep* step = s.step();
-    if (!step) return;
-    if (!step->question.empty() && !s.revealed) {
-        reveal(s, sim, view);
-        return;
-    }
+    if (!s.step()) return;
     runToPausePoint(s, sim, view);
+    reveal(s, view);
+}
+
+bool lessonRunsSideBySide(const LessonSession& s, const View& view) {
+    if (view.show.sideBySide) return true;
+    const LessonStep* step = s.step();
+    return step &&
+           std::find(step->reveal.begin(), step->reveal.end(), "sidebyside") != step->reveal.end();
+}
+
+void lessonAfterFrames(LessonSession& s, SimulationSession& sim, View& view) {
+    if (s.phase != LessonSession::Phase::Playing || !s.stopFrame) return;
+    if (sim.world().frame < *s.stopFrame) return;
+    sim.stopAtFrame.reset();
+    sim.paused = true;
+    reveal(s, view);
 }
 
 std::string lessonHeading(const LessonSession& session) {
@@ -152,8 +193,14 @@ std::string lessonCaption(const LessonSession& session) {
     if (!step) return "";
     std::string text = step->caption;
     if (!step->question.empty()) {
-        text += "\n" + (session.revealed ? "Answer: " + step->answer
-                                         : "Question: " + step->question + "  (PageDown: answer)");
+        if (session.revealed)
+            text += "\nAnswer: " + step->answer;
+        else if (session.phase == LessonSession::Phase::Setup)
+            text += "\nPredict: " + step->question + "  (PageDown: play)";
+        else
+            text += "\nPredict: " + step->question;
+    } else if (session.phase == LessonSession::Phase::Setup && session.stopFrame) {
+        text += "\n(PageDown: play)";
     }
     if (!session.digits.empty()) text += "\nGo to step " + session.digits + " (Enter)";
     return text;

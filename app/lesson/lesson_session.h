@@ -16,14 +16,21 @@
 #include <string>
 
 struct LessonSession {
+    // Predict, then observe: a step opens paused at its setup (t = 0) with its question; the
+    // next press plays it to its moment, which pauses and shows the answer; the next goes on.
+    enum class Phase {
+        Setup,   // paused at t = 0, the question asked
+        Playing, // running toward the moment (the question still shown)
+        Moment,  // paused at the pause point (or running free: no pause point), answer shown
+    };
     std::optional<Lesson> lesson; // none: no lesson open (the app shows scenes)
     std::size_t current = 0;      // step index
-    // Where the step stops by itself: the frame count of its pause point, one frame earlier
-    // while a question waits for its answer. None: it does not pause.
+    Phase phase = Phase::Setup;
+    // The frame count of the step's pause point (the runner's, for the step as it now runs:
+    // after R, with the lecturer's method and settings). None: it does not pause.
     std::optional<std::uint64_t> stopFrame;
-    std::uint64_t pauseFrame = 0; // the pause point's frame (the runner's)
-    bool revealed = false;        // the question's answer shows
-    std::string digits;           // typed step number, until Enter
+    bool revealed = false; // the question's answer shows (at the moment)
+    std::string digits;    // typed step number, until Enter
 
     bool active() const { return lesson.has_value(); }
     const LessonStep* step() const {
@@ -48,10 +55,16 @@ bool openLesson(LessonSession& s, SimulationSession& sim, View& view, Messages& 
                 const std::string& path, const std::string& scenesDir, std::size_t first = 0);
 // Closes the lesson; the current scene stays (its own stops, the world's frame and camera).
 void closeLesson(LessonSession& s, SimulationSession& sim, View& view);
-// Shows step `index` from its start (R restarts the step this way). False when out of range.
+// Shows step `index` as written, paused at its setup (t = 0) with its question (Shift+R restores
+// the step this way). False when out of range.
 bool enterStep(LessonSession& s, SimulationSession& sim, View& view, Messages& messages,
                std::size_t index);
-// Answers the question when one waits, else the next step (none after the last).
+// R: the step again from its setup, keeping what the lecturer changed (method, C, g, frame rate,
+// substeps, time scale, overlays), as R does outside lessons; it stops at its pause point as the
+// step now runs.
+void replayStep(LessonSession& s, SimulationSession& sim, View& view, Messages& messages);
+// The next press: at the setup it plays the step toward its moment; while it plays it goes to
+// the moment at once; at the moment, the next step (none after the last).
 void lessonNext(LessonSession& s, SimulationSession& sim, View& view, Messages& messages);
 // The previous step (none before the first).
 void lessonPrevious(LessonSession& s, SimulationSession& sim, View& view, Messages& messages);
@@ -62,6 +75,13 @@ bool lessonJump(LessonSession& s, SimulationSession& sim, View& view, Messages& 
 // Runs the step to its pause point and reveals its answer: what the window shows once the class
 // has seen the step (offscreen screenshots, --record-steps).
 void lessonShowPausePoint(LessonSession& s, SimulationSession& sim, View& view);
+// True when the three methods run alongside: their overlay is shown, or the open step reveals
+// it at its moment (it runs hidden while the question is asked, so no table gives the answer
+// away, and shows the whole run with the answer).
+bool lessonRunsSideBySide(const LessonSession& s, const View& view);
+// After the frames of a displayed frame: when the step reached its moment while playing, shows
+// the answer and the overlays that prove it.
+void lessonAfterFrames(LessonSession& s, SimulationSession& sim, View& view);
 // The caption bar's first line: "n / N · title".
 std::string lessonHeading(const LessonSession& session);
 // The caption bar's text under it: the caption, then the question or its answer.

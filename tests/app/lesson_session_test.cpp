@@ -40,36 +40,50 @@ TEST(LessonSession, EveryStepShowsWhatTheRunnerChecks) {
         const StepRun run = runStepToPause(lesson.steps[i]);
         EXPECT_EQ(stateHash(app.sim.world()), stateHash(run.world)) << lesson.steps[i].title;
         EXPECT_TRUE(app.sim.paused);
+        // One count of collisions: the badge's (the run's totals) is sandbox-cli lesson's, and
+        // the rest rule's resting contacts are counted apart in both.
+        EXPECT_EQ(app.sim.run.totals.collisions, run.progress.collisions) << lesson.steps[i].title;
+        EXPECT_EQ(app.sim.run.totals.contacts, run.progress.contacts) << lesson.steps[i].title;
     }
 }
 
-TEST(LessonSession, PlayingPausesAtThePausePointOrJustBeforeAQuestion) {
+// Predict, then observe (issue 24): every step opens paused at its setup (t = 0) with its
+// question; the next press plays it, at its time scale, through the window's clock to its
+// moment, where it pauses by itself and shows the answer (the runner's state, bit for bit).
+TEST(LessonSession, EveryStepOpensAtItsSetupAndPlaysToItsMoment) {
     App app = lessonApp();
     const Lesson& lesson = *app.lesson.lesson;
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
         const LessonStep& step = lesson.steps[i];
-        if (step.pause.kind == LessonPause::Kind::None) continue;
         enterStep(app, i);
-        playUntilPaused(app);
+        EXPECT_EQ(app.sim.world().time, 0.0) << step.title;
+        EXPECT_TRUE(app.sim.paused) << step.title;
+        EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Setup) << step.title;
+        if (!step.question.empty()) {
+            EXPECT_NE(lessonCaption(app.lesson).find("Predict: " + step.question),
+                      std::string::npos)
+                << step.title;
+            EXPECT_EQ(lessonCaption(app.lesson).find("Answer: "), std::string::npos);
+        }
+        if (step.pause.kind == LessonPause::Kind::None) continue;
         const StepRun run = runStepToPause(step);
         const std::uint64_t frames = static_cast<std::uint64_t>(run.progress.frames);
-        if (step.question.empty() || frames == 0) {
-            EXPECT_EQ(app.sim.world().frame, frames) << step.title;
-            EXPECT_EQ(stateHash(app.sim.world()), stateHash(run.world)) << step.title;
-        } else {
-            EXPECT_EQ(app.sim.world().frame + 1, frames) << step.title; // the moment before
-            EXPECT_TRUE(app.lesson.asking());
-            applyLessonAction(app, Action::LessonNext); // the answer: one more frame
-            EXPECT_FALSE(app.lesson.asking());
-            EXPECT_EQ(app.sim.world().frame, frames) << step.title;
-            EXPECT_EQ(stateHash(app.sim.world()), stateHash(run.world)) << step.title;
-            EXPECT_EQ(app.lesson.current, i); // still this step
-            EXPECT_NE(lessonCaption(app.lesson).find("Answer: " + step.answer), std::string::npos);
+        applyLessonAction(app, Action::LessonNext); // play
+        EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Playing) << step.title;
+        // The window's clock, 60 displayed frames a second, at the step's time scale.
+        for (int k = 0; k < 100000 && !app.sim.paused; ++k) advanceSimulation(app, 1.0 / 60.0);
+        EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Moment) << step.title;
+        EXPECT_EQ(app.sim.world().frame, frames) << step.title;
+        EXPECT_EQ(stateHash(app.sim.world()), stateHash(run.world)) << step.title;
+        EXPECT_EQ(app.lesson.current, i); // still this step
+        if (!step.question.empty()) {
+            EXPECT_NE(lessonCaption(app.lesson).find("Answer: " + step.answer), std::string::npos)
+                << step.title;
         }
         // Playing on does not stop again.
         app.sim.paused = false;
-        stepSimulation(app);
-        EXPECT_FALSE(app.sim.paused);
+        advanceSimulation(app, 1.0 / 60.0);
+        EXPECT_FALSE(app.sim.paused) << step.title;
     }
 }
 
@@ -89,7 +103,14 @@ TEST(LessonSession, KeysWalkThroughTheSteps) {
     EXPECT_EQ(digitOfKey(keys::kKeypad0 + 3), 3);
     EXPECT_EQ(digitOfKey(keys::kEnter), -1);
 
-    applyLessonAction(app, Action::LessonNext); // step 1 has no question
+    applyLessonAction(app, Action::LessonNext); // step 1 plays from its setup
+    EXPECT_EQ(app.lesson.current, 0u);
+    EXPECT_FALSE(app.sim.paused);
+    applyLessonAction(app, Action::LessonNext); // its moment at once
+    EXPECT_EQ(app.lesson.current, 0u);
+    EXPECT_TRUE(app.sim.paused);
+    EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Moment);
+    applyLessonAction(app, Action::LessonNext); // step 2
     EXPECT_EQ(app.lesson.current, 1u);
     applyLessonAction(app, Action::LessonPrevious);
     EXPECT_EQ(app.lesson.current, 0u);
@@ -119,8 +140,10 @@ TEST(LessonSession, LeavingAndComingBackGivesTheSameState) {
     enterStep(app, 3);
     const std::uint64_t start = stateHash(app.sim.world());
     const Overlays shown = app.view.show;
+    applyLessonAction(app, Action::LessonNext); // play (step 4 asks)
     playUntilPaused(app);
-    applyLessonAction(app, Action::LessonNext); // the answer (step 4 asks)
+    lessonAfterFrames(app.lesson, app.sim, app.view); // the moment: the answer
+    EXPECT_FALSE(app.lesson.asking());
     applyLessonAction(app, Action::LessonNext); // step 5
     EXPECT_EQ(app.lesson.current, 4u);
     applyLessonAction(app, Action::LessonPrevious);
@@ -132,19 +155,35 @@ TEST(LessonSession, LeavingAndComingBackGivesTheSameState) {
     EXPECT_TRUE(app.lesson.asking());
 }
 
-TEST(LessonSession, RRestartsTheStepExactly) {
+// R replays the step from its setup keeping what the lecturer changed, as R does outside lessons
+// (issue 24: step 2's answer says "S stops it"; after S, R must not bring the step's method
+// back); Shift+R restores the step as written.
+TEST(LessonSession, RReplaysWithTheLecturersChangesShiftRAsWritten) {
     App app = lessonApp();
-    enterStep(app, 6);
+    enterStep(app, 1); // the bullet: move-and-correct tunnels
     const std::uint64_t start = stateHash(app.sim.world());
     const int selected = app.sim.selected;
-    for (int i = 0; i < 20; ++i) stepSimulation(app);
-    app.sim.world().settings.bounciness = 0.3; // the lecturer played with a slider
+    applyLessonAction(app, Action::LessonNext);
+    for (int i = 0; i < 5; ++i) stepSimulation(app);
+    app.sim.world().settings.method = Method::Perfect; // S
     applyLessonAction(app, Action::Reset);
-    EXPECT_EQ(app.lesson.current, 6u);
-    EXPECT_EQ(stateHash(app.sim.world()), start);
-    EXPECT_EQ(app.sim.world().settings.bounciness, app.lesson.step()->scene.settings.bounciness);
+    EXPECT_EQ(app.lesson.current, 1u);
+    EXPECT_EQ(app.sim.world().time, 0.0);
+    EXPECT_EQ(app.sim.world().settings.method, Method::Perfect); // kept
     EXPECT_EQ(app.sim.selected, selected);
-    EXPECT_FALSE(app.sim.paused);
+    EXPECT_TRUE(app.sim.paused); // at the setup again
+    EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Setup);
+    // Played to its moment, the perfect method stops the bullet at the wall.
+    applyLessonAction(app, Action::LessonNext);
+    playUntilPaused(app);
+    lessonAfterFrames(app.lesson, app.sim, app.view);
+    EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Moment);
+    const Block& bullet = app.sim.world().blocks[static_cast<std::size_t>(selected)];
+    EXPECT_LT(bullet.position.x, 12.0);          // in front of the wall (at x = 12 m), not past it
+    applyLessonAction(app, Action::ResetToFile); // Shift+R
+    EXPECT_EQ(app.sim.world().settings.method, app.lesson.step()->scene.settings.method);
+    EXPECT_EQ(stateHash(app.sim.world()), start);
+    EXPECT_TRUE(app.sim.paused);
 }
 
 TEST(LessonSession, StepSettingsAreApplied) {

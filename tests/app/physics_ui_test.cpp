@@ -308,8 +308,11 @@ TEST(PhysicsSettings, TheLessonsPlatformerTurnsThrustOnAndTheArrowsDoNotStep) {
     const Action right = actionForKey(keys::kRight, false, false, app.sim.thrust.on);
     EXPECT_FALSE(applyLessonAction(app, right));
     EXPECT_EQ(app.lesson.current, platformer);
-    EXPECT_TRUE(
-        applyLessonAction(app, actionForKey(keys::kPageDown, false, false, app.sim.thrust.on)));
+    const Action pageDown = actionForKey(keys::kPageDown, false, false, app.sim.thrust.on);
+    EXPECT_TRUE(applyLessonAction(app, pageDown)); // plays the step from its setup
+    EXPECT_EQ(app.lesson.current, platformer);
+    EXPECT_TRUE(applyLessonAction(app, pageDown)); // its moment
+    EXPECT_TRUE(applyLessonAction(app, pageDown)); // the next step
     EXPECT_EQ(app.lesson.current, platformer + 1);
     EXPECT_FALSE(app.sim.thrust.on); // the next step does not use it
 }

@@ -18,6 +18,8 @@ focus_window
 sleep 0.5
 shot step1
 
+# Step 1 opens at its setup: PageDown plays it, again goes to its moment, again to step 2.
+xdotool key Next; sleep 0.3; xdotool key Next; sleep 0.3
 xdotool key Next; wait_for "lesson step 2 / " 30
 sleep 1; shot step2
 [ "$(differing step1 step2 $caption_region)" -gt 0 ] || fail "PageDown: the caption did not change"
@@ -31,8 +33,9 @@ sleep 1; shot back1
 echo "ok: PageUp goes back to step 1"
 
 # End goes to the last step. Typing 2 5 Enter jumps to step 25 (the platformer, no timings on
-# screen), which pauses by itself at t = 1.5 s; R restarts it, it plays and pauses again at the
-# same state: the same picture.
+# screen), which opens paused at its setup; PageDown plays it and it pauses by itself at t = 1.5 s;
+# R brings it back to its setup, PageDown plays it again and it pauses at the same state: the
+# same picture.
 pauses() { grep -c "^paused" "$log"; }
 # wait_pause N: until the log has more than N "paused" lines.
 wait_pause() {
@@ -44,11 +47,13 @@ echo "ok: End goes to the last step"
 n=$(pauses)
 xdotool key 2 5 Return; wait_for "lesson step 25 / "
 echo "ok: 2 5 Enter goes to step 25"
+xdotool key Next
 wait_pause "$n" "step 25 did not pause by itself"
 sleep 0.3; shot last_a
 n=$(pauses)
 xdotool key r; wait_for "lesson restart 25"
-sleep 0.1; shot restarted
+sleep 0.3; shot restarted
+xdotool key Next
 wait_pause "$n" "the restarted step did not pause again"
 sleep 0.3; shot last_b
 [ "$(differing last_a restarted $scene_region)" -gt 0 ] || fail "R: the step did not restart"

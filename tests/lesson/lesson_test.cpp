@@ -97,6 +97,23 @@ TEST_P(ShippedLessonStep, ReachesWhatItExpects) {
     for (const std::string& failure : checkStep(step, run)) ADD_FAILURE() << failure;
 }
 
+// Motion worth watching (issue 24): from its setup (t = 0) to its moment every step shows the
+// class 1.5 to 12 s of motion at its time scale (a step without a pause point is not timed).
+// The bounds are the issue's; the time is the engine's sum of frame steps, so 1e-9 s of slack
+// for its rounding (90 frames of 1/60 s end at 1.4999999999999996 s).
+TEST_P(ShippedLessonStep, ShowsOneAndAHalfToTwelveSecondsOfMotion) {
+    const LessonResult r = loadLessonFile(GetParam().file, context());
+    ASSERT_TRUE(r.lesson) << r.error.text();
+    const LessonStep& step = r.lesson->steps.at(GetParam().step);
+    if (step.pause.kind == LessonPause::Kind::None) GTEST_SKIP() << "no pause point";
+    const StepRun run = runStepToPause(step);
+    const double seconds = run.world.time / step.timeScale;
+    EXPECT_GE(seconds, 1.5 - 1e-9) << step.title << ": " << run.world.time << " s at time scale "
+                            << step.timeScale;
+    EXPECT_LE(seconds, 12.0 + 1e-9) << step.title << ": " << run.world.time << " s at time scale "
+                             << step.timeScale;
+}
+
 INSTANTIATE_TEST_SUITE_P(Lessons, ShippedLessonStep, testing::ValuesIn(shippedSteps()), caseName);
 
 TEST(Lesson, Lecture3FollowsTheLectureWithEnoughSteps) {

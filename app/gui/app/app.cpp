@@ -111,7 +111,7 @@ void resetToFile(App& app) {
 }
 
 FrameOutcome stepSimulation(App& app) {
-    return app.sim.step(app.view.show.sideBySide);
+    return app.sim.step(lessonRunsSideBySide(app.lesson, app.view));
 }
 
 int advanceSimulation(App& app, double realSeconds) {
@@ -119,7 +119,9 @@ int advanceSimulation(App& app, double realSeconds) {
         app.sim.clock.reset();
         return 0;
     }
-    return app.sim.advance(realSeconds, app.view.show.sideBySide);
+    const int frames = app.sim.advance(realSeconds, lessonRunsSideBySide(app.lesson, app.view));
+    if (app.lesson.active()) lessonAfterFrames(app.lesson, app.sim, app.view); // its moment
+    return frames;
 }
 
 bool scrubTo(App& app, std::uint64_t frame) {
@@ -268,7 +270,11 @@ bool applyLessonAction(App& app, Action action) {
     LessonSession& s = app.lesson;
     Messages& m = app.ui.messages;
     switch (action) {
-    case Action::Reset: // restarts the step
+    case Action::Reset: // the step again from its setup, the lecturer's changes kept
+        if (!s.active()) return false;
+        replayStep(s, app.sim, app.view, m);
+        break;
+    case Action::ResetToFile: // the step as written
         if (!s.active()) return false;
         enterStep(s, app.sim, app.view, m, s.current);
         break;

@@ -57,6 +57,9 @@ struct UiState {
     bool inBrowser = false;
     bool filePickerRequested = false;
     bool copyLinkRequested = false; // "Copy link": the link for what is on screen (browser/link.h)
+    bool touchUi = false;           // sizes for fingers (a touch screen; ui_style.h's uiSetTouch)
+    // Where the bounciness slider was last drawn (px; the window and browser tests press it).
+    ScreenRect bouncinessSlider;
     // Requests to the window backend.
     bool quitRequested = false;
     bool fullscreenRequested = false;

@@ -33,6 +33,10 @@ bool openFirst(App& app, const Options& options, const std::string& lastScene, s
         if (error) *error = "--step needs a lesson (--lesson NAME or a lesson file)";
         return false;
     }
+    if (options.atSetup) {
+        if (error) *error = "--at needs a lesson (--lesson NAME or a lesson file)";
+        return false;
+    }
 
     if (!options.scene.empty()) {
         const std::string path = resolveScenePath(options.scene, app.shipped.scenesDir);

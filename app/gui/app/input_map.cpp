@@ -5,10 +5,10 @@
 const std::vector<KeyBinding>& keyBindings() {
     static const std::vector<KeyBinding> bindings{
         {keys::kR, false, Action::Reset, "R",
-         "Reset blocks and time (keeps method, C, g, frame rate, substeps; in a lesson: restart "
-         "the step)"},
-        {keys::kR, false, Action::ResetToFile, "Shift+R", "Reset to file: everything as loaded",
-         true, true},
+         "Reset blocks and time (keeps method, C, g, frame rate, substeps; in a lesson: the step "
+         "again from its setup, keeping those)"},
+        {keys::kR, false, Action::ResetToFile, "Shift+R",
+         "Reset to file: everything as loaded (in a lesson: the step as written)", true, true},
         {keys::kP, false, Action::TogglePause, "P", "Pause / resume"},
         {keys::kSpace, false, Action::ToggleSlowMotion, "Space", "Slow motion (5 frames/s)"},
         {keys::kD, false, Action::ToggleTrails, "D", "Draw trajectories on / off"},

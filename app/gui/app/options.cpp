@@ -80,6 +80,11 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
                    "Open a lesson: a shipped lesson's name (lecture3) or a lesson file");
     app.add_option("--step", o.step, "Start the lesson at step N (1 is the first)")
         ->check(CLI::Range(1, 1000000));
+    std::string at = "moment";
+    app.add_option("--at", at,
+                   "Offscreen, with --lesson: setup (the step at t = 0, its question asked) or "
+                   "moment (its pause point, the answer shown; the default)")
+        ->check(CLI::IsMember({"setup", "moment"}));
     app.add_option("--record-steps", o.recordSteps,
                    "Offscreen: write one PNG per lesson step (after its pause point) here");
     app.add_option("--theme", o.theme,
@@ -119,6 +124,7 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         if (!o.layoutJson.empty() && o.screenshot.empty()) {
             throw CLI::ValidationError("--layout-json", "needs --screenshot FILE");
         }
+        o.atSetup = at == "setup";
         if (!o.recordSteps.empty() && o.lesson.empty() && o.scene.empty()) {
             throw CLI::ValidationError("--record-steps", "needs a lesson (--lesson NAME)");
         }

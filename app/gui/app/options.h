@@ -29,6 +29,8 @@ struct Options {
     std::string layoutJson;  // offscreen: write the layout (scene, world, windows) here, in pixels
     std::string lesson;      // --lesson NAME or file (docs/lesson-format.md)
     int step = 0;            // --step N (1-based) of the lesson; 0: the first
+    bool atSetup = false;    // offscreen --at setup: the step at t = 0 with its question (else
+                             // --at moment, the default: at its pause point with the answer)
     std::string recordSteps; // offscreen: one PNG per lesson step into this directory
     std::optional<ViewFrame> frame; // --frame: start in this frame (a lesson's steps choose theirs)
     std::string theme;              // --theme dark|light; "": the saved setting (window) or dark

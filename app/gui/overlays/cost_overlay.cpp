@@ -78,7 +78,7 @@ void drawCostOverlay(App& app) {
         }
         ImGui::EndTable();
     }
-    if (ImGui::SmallButton("Measure again")) cost.measure(app.sim.world(), app.sim.scenePath);
+    if (uiSmallButton("Measure again")) cost.measure(app.sim.world(), app.sim.scenePath);
     ImGui::SameLine();
     dimText("(a copy, 30 frames per method)");
     ImGui::Separator();

@@ -5,6 +5,7 @@
 #include "csv_export.h"
 #include "overlay_window.h"
 #include "plot_widget.h"
+#include "ui_style.h"
 
 #include <algorithm>
 #include <cmath>
@@ -99,7 +100,7 @@ void exportButtons(App& app) {
     ImGui::TextDisabled("CSV:");
     for (const PlotRow& row : plotRows()) {
         ImGui::SameLine();
-        if (!ImGui::SmallButton(row.name)) continue;
+        if (!uiSmallButton(row.name)) continue;
         const std::string prefix =
             row.ofWatchedBlock && app.sim.telemetry.watched >= 0 ? watchedName(app) + " " : "";
         std::vector<std::string> columns;

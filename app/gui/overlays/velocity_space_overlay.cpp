@@ -130,7 +130,7 @@ void drawVelocitySpaceOverlay(App& app) {
     drawPicture(app, path, lo, side);
     if (beside) ImGui::SameLine();
     ImGui::BeginChild("##velocityspace-caption", ImVec2(0.0f, 0.0f), false);
-    if (ImGui::SmallButton("CSV")) {
+    if (uiSmallButton("CSV")) {
         exportCsv(app, "velocity space",
                   velocitySpaceTable(path, app.sim.blockDisplayName(pair.block1),
                                      app.sim.blockDisplayName(pair.block2)));

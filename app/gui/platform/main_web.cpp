@@ -10,12 +10,16 @@
 #include "mouse_tool.h"
 #include "options.h"
 #include "renderer.h"
+#include "touch_input.h"
 #include "ui_renderer_gl.h"
 #include "ui_style.h"
 #include "url_params.h"
 
 #include <emscripten.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h> // a swipe scrolls the window under the finger (ImGui 1.86)
 
 #include <cmath>
 #include <cstdio>
@@ -39,6 +43,9 @@ struct WebApp {
     std::string linkQuery, linkScene;
     double linkSceneAt = -1e9;
     double pixelRatio = 1.0; // the ratio app.view.uiScale includes (the user's scale times it)
+    TouchInput touch;
+    ImGuiWindow* touchScrolls = nullptr; // what a swipe scrolls: the window under the finger
+    bool typingShown = false;            // the page's field for the on-screen keyboard has focus
     long long frames = 0;
 };
 
@@ -91,6 +98,54 @@ void followLink(WebApp& w, double now) {
     pageSetLink(w.linkQuery, w.linkScene);
 }
 
+// Touch (touch_input.h): ImGui's mouse as the fingers say, before ImGui's frame; a swipe
+// scrolls the window the finger went down on, a drag from the scene's empty space pans.
+void applyTouch(WebApp& w, double now) {
+    if (w.canvas.mouseMoved) w.touch.mouseMoved(); // the pointer is the mouse's again
+    w.canvas.mouseMoved = false;
+    for (const TouchEvent& e : canvasTakeTouches(w.canvas))
+        w.touch.event(e.phase, e.id, e.pos, e.time);
+    if (!w.touch.active()) return;
+    const TouchInput::Frame f = w.touch.frame(now);
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = f.pointer ? ImVec2(static_cast<float>(f.pos.x), static_cast<float>(f.pos.y))
+                            : ImVec2(-FLT_MAX, -FLT_MAX); // nothing hovered: no tooltip stays
+    for (bool& down : io.MouseDown) down = false;
+    io.MouseDown[0] = f.down;
+    io.KeyCtrl =
+        f.ctrl || io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL];
+    if (f.scrollY != 0.0 && w.touchScrolls)
+        ImGui::SetScrollY(w.touchScrolls, w.touchScrolls->Scroll.y - static_cast<float>(f.scrollY));
+    if (f.pan.x != 0.0 || f.pan.y != 0.0) touchPanZoom(w.app.view, Vec2{}, f.pan, 1.0);
+}
+
+// After ImGui's frame began with the pointer at a finger that just went down: is it on the UI
+// (and which window scrolls), or on the scene (on a block, or empty space)?
+void resolveTouch(WebApp& w) {
+    const TouchInput::Mode mode = w.touch.mode();
+    if (mode == TouchInput::Mode::Waiting || mode == TouchInput::Mode::Pending) {
+        ImGuiWindow* window = GImGui->HoveredWindow; // the nearest that scrolls, from there out
+        while (window && (window->Flags & ImGuiWindowFlags_ChildWindow) &&
+               window->ScrollMax.y <= 0.0f)
+            window = window->ParentWindow;
+        w.touchScrolls = window;
+    }
+    if (!w.touch.waitingForStart()) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const Vec2 at{io.MousePos.x, io.MousePos.y};
+    w.touch.resolveStart(io.WantCaptureMouse,
+                         blockAtScreen(w.app.sim.world(), w.app.view, at) >= 0);
+}
+
+// Typing with the on-screen keyboard: while a field takes text after a tap, the page's own text
+// field has the focus (the keyboard shows) and hands its characters to ImGui.
+void followTyping(WebApp& w) {
+    const bool typing = w.touch.active() && ImGui::GetIO().WantTextInput;
+    if (typing == w.typingShown) return;
+    w.typingShown = typing;
+    pageSetTyping(typing);
+}
+
 // Requests the app made of its platform, answered by the page.
 void answerRequests(WebApp& w) {
     App& app = w.app;
@@ -126,18 +181,34 @@ void frame(void* arg) {
     for (const std::string& path : canvasTakeOpenedFiles(w.canvas)) openFile(app, path);
     for (const TouchGesture& g : canvasTakeGestures(w.canvas))
         touchPanZoom(app.view, g.from, g.to, g.spreadRatio);
+    app.ui.touchUi = app.ui.touchUi || w.canvas.touchScreen || w.touch.active();
+    if (app.ui.touchUi != uiTouch()) uiSetTouch(app.ui.touchUi);
+    applyTouch(w, emscripten_get_now() / 1000.0);
     ImGui::NewFrame();
+    resolveTouch(w);
     appFrame(app, canvasTakeKeyPresses(w.canvas), realSeconds, true);
     ImGui::Render();
     appRender(app, w.renderer, w.canvas.width, w.canvas.height);
     uiRendererRender(ImGui::GetDrawData());
     answerRequests(w);
+    followTyping(w);
     followLink(w, emscripten_get_now() / 1000.0);
     saveSettings(w);
     if (w.frames++ == 0) pageFirstFrameShown();
 }
 
 } // namespace
+
+// Called by web/index.html with what the page's text field got from the on-screen keyboard.
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_typed(unsigned int codepoint) {
+    if (gWeb && codepoint >= 0x20 && codepoint != 0x7f) ImGui::GetIO().AddInputCharacter(codepoint);
+}
+
+// Called by web/index.html's first-visit hint: opens the first shipped lesson at its start.
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_open_lesson() {
+    if (!gWeb || gWeb->app.shipped.lessons.empty()) return;
+    openLesson(gWeb->app, gWeb->app.shipped.lessons.front().path);
+}
 
 // Called by web/index.html when "Copy link" is done: the note, or the error (a link too long).
 extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_link_copied(int chars, int copied) {
@@ -205,10 +276,24 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
                     exact((corner.y - b.size.y * ppm) / ratio) + "," +
                     exact(b.size.x * ppm / ratio) + "," + exact(b.size.y * ppm / ratio) + "]";
     }
-    const ScreenRect& scene = app.view.layout.scene;
+    auto rect = [&](const ScreenRect& r) { // in CSS pixels
+        return "[" + exact(r.x / ratio) + "," + exact(r.y / ratio) + "," + exact(r.width / ratio) +
+               "," + exact(r.height / ratio) + "]";
+    };
+    const ImGuiIO& io = ImGui::GetIO();
     text += ",\"blocks\":[" + blocks + "],\"blocksOnScreen\":[" + onScreen +
-            "],\"sceneOnScreen\":[" + exact(scene.x / ratio) + "," + exact(scene.y / ratio) + "," +
-            exact(scene.width / ratio) + "," + exact(scene.height / ratio) + "]}";
+            "],\"sceneOnScreen\":" + rect(app.view.layout.scene) +
+            ",\"panelOnScreen\":" + rect(app.view.layout.panel) +
+            ",\"sheet\":" + (app.view.layout.sheet ? "true" : "false") +
+            ",\"sheetOpen\":" + (app.view.sheetOpen ? "true" : "false") +
+            ",\"touchUi\":" + (app.ui.touchUi ? "true" : "false") +
+            ",\"frameHeight\":" + exact(ImGui::GetFrameHeight() / ratio) +
+            ",\"bouncinessSlider\":" + rect(app.ui.bouncinessSlider) +
+            ",\"bounciness\":" + exact(app.sim.world().settings.bounciness) + ",\"gravity\":[" +
+            exact(app.sim.world().settings.gravity.x) + "," +
+            exact(app.sim.world().settings.gravity.y) + "]" +
+            ",\"pointerOnScreen\":" + (ImGui::IsMousePosValid(&io.MousePos) ? "true" : "false") +
+            ",\"typing\":" + (io.WantTextInput ? "true" : "false") + "}";
     return text.c_str();
 }
 

@@ -107,7 +107,9 @@ int writeScreenshot(Offscreen& off, const Options& o) {
 }
 
 int screenshot(App& app, Offscreen& off, const Options& o) {
-    if (app.lesson.active()) lessonShowPausePoint(app); // the step as the window shows it there
+    // The step's moment (its pause point, the answer shown), or with --at setup the step as it
+    // opens: t = 0, the question asked.
+    if (app.lesson.active() && !o.atSetup) lessonShowPausePoint(app);
     // --frames N simulates N frames, as if P had been pressed (the badge then shows no PAUSED).
     for (int i = 0; i < o.frames; ++i) stepSimulation(app);
     if (o.frames > 0) app.sim.paused = false;

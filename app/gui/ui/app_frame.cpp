@@ -45,6 +45,11 @@ void applyAction(App& app, Action action) {
         logEvent(app, "reset");
         break;
     case Action::ResetToFile:
+        if (applyLessonAction(app, action)) { // in a lesson: the step as written
+            logEvent(app,
+                     ("lesson step as written " + std::to_string(app.lesson.current + 1)).c_str());
+            break;
+        }
         resetToFile(app);
         logEvent(app, "reset to file");
         break;

@@ -38,6 +38,7 @@ void scenePicker(App& app) {
     ImGui::SetNextItemWidth(-1.0f - copyWidth);
     // Taller than the default 8 rows: every shipped scene at once, in the lecture's order.
     if (ImGui::BeginCombo("##scene", preview, ImGuiComboFlags_HeightLargest)) {
+        uiBeginRows();
         for (const SceneEntry& e : app.shipped.scenes) {
             const bool current = e.path == app.sim.scenePath;
             if (ImGui::Selectable(e.title.c_str(), current)) loadScene(app, e.path);
@@ -53,6 +54,7 @@ void scenePicker(App& app) {
             const std::string label = "Lesson: " + e.title;
             if (ImGui::Selectable(label.c_str(), current)) openLesson(app, e.path);
         }
+        uiEndRows();
         ImGui::EndCombo();
     }
     tooltip("The shipped scenes in the lecture's order (app/scenes/lecture_order.txt), and "
@@ -74,12 +76,15 @@ void lessonSection(App& app) {
     if (ImGui::Button("< Prev", ImVec2(w, 0))) applyAction(app, Action::LessonPrevious);
     tooltip("PageUp (or Left, with thrust off)");
     ImGui::SameLine();
-    if (ImGui::Button(s.asking() ? "Answer >" : "Next >", ImVec2(w, 0)))
+    if (ImGui::Button(s.phase == LessonSession::Phase::Setup ? "Play >" : "Next >", ImVec2(w, 0)))
         applyAction(app, Action::LessonNext);
     tooltip("PageDown (or Right, with thrust off)");
     ImGui::SameLine();
     if (ImGui::Button("Restart (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
+    tooltip("R: the step again from its setup, keeping the method and settings you changed; "
+            "Shift+R: the step as written");
     const float rows = std::min<float>(8.0f, static_cast<float>(s.lesson->steps.size()));
+    uiBeginRows();
     ImGui::BeginChild("##steps", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing()));
     for (std::size_t i = 0; i < s.lesson->steps.size(); ++i) {
         const std::string label =
@@ -89,7 +94,8 @@ void lessonSection(App& app) {
         if (current && ImGui::IsWindowAppearing()) ImGui::SetScrollHereY();
     }
     ImGui::EndChild();
-    if (ImGui::SmallButton("close lesson")) closeLesson(app);
+    uiEndRows();
+    if (uiSmallButton("close lesson")) closeLesson(app);
     tooltip("Leave the lesson; the current scene stays");
 }
 
@@ -150,24 +156,27 @@ void compareSection(App& app) {
     }
     if (!st.open()) return;
     textWrappedAtSpaces(studentTraceSummary(st));
-    if (ImGui::SmallButton("first difference")) goToFirstDifference(app);
+    if (uiSmallButton("first difference")) goToFirstDifference(app);
     ImGui::SameLine();
-    if (ImGui::SmallButton("compare again")) compareTraceAgain(app);
+    if (uiSmallButton("compare again")) compareTraceAgain(app);
     tooltip("With the current settings (the method chosen above), from the start");
     ImGui::SameLine();
-    if (ImGui::SmallButton("close")) closeTrace(app);
+    if (uiSmallButton("close")) closeTrace(app);
 }
 
 void runSection(App& app) {
-    const float w = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
-    if (ImGui::Button(app.sim.paused ? "Play  (P)" : "Pause (P)", ImVec2(w, 0))) {
-        applyAction(app, Action::TogglePause);
+    if (!app.view.layout.sheet) { // the sheet has them in its bar
+        const float w =
+            (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
+        if (ImGui::Button(app.sim.paused ? "Play  (P)" : "Pause (P)", ImVec2(w, 0))) {
+            applyAction(app, Action::TogglePause);
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Step (N)", ImVec2(w, 0))) applyAction(app, Action::StepOnce);
+        ImGui::SameLine();
+        if (ImGui::Button("Reset (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
+        tooltip("Blocks and time back to the start; keeps the method, C, g, frame rate, substeps");
     }
-    ImGui::SameLine();
-    if (ImGui::Button("Step (N)", ImVec2(w, 0))) applyAction(app, Action::StepOnce);
-    ImGui::SameLine();
-    if (ImGui::Button("Reset (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
-    tooltip("Blocks and time back to the start; keeps the method, C, g, frame rate, substeps");
     ImGui::Checkbox("Slow motion (Space)", &app.sim.slowMotion);
     tooltip("5 simulation frames per second, as in the lecture's demo");
     ImGui::SameLine();
@@ -180,11 +189,13 @@ void statisticsSection(const Run& run, const UiState& ui) {
     const StepStats& s = run.stats;
     if (!ImGui::BeginTable("stats", 2, ImGuiTableFlags_SizingStretchProp)) return;
     statRow("collisions / frame", "%.0f", s.collisions);
+    statRow("resting contacts / frame", "%.0f", s.contacts);
     statRow("events / frame", "%.0f", s.events);
     statRow("largest overlap", "%.4f m", s.maxPenetration);
     statRow("event-cap hits", "%.0f", static_cast<double>(run.totals.eventCapHits));
     statRow("step time", "%.3f ms", s.stepMs);
     statRow("collisions (total)", "%.0f", static_cast<double>(run.totals.collisions));
+    statRow("resting contacts (total)", "%.0f", static_cast<double>(run.totals.contacts));
     statRow("momentum x", "%.3f kg·m/s", s.momentum.x);
     statRow("momentum y", "%.3f kg·m/s", s.momentum.y);
     statRow("kinetic energy", "%.3f J", s.kineticEnergy);
@@ -214,7 +225,7 @@ void viewSection(App& app) {
         setViewFrame(app.view, com ? ViewFrame::CentreOfMass : ViewFrame::World);
     tooltip("The view moves with the centre of mass's velocity u and the arrows show w = v - u "
             "(the walls drift across the view: they move at -u in this frame)");
-    if (ImGui::SmallButton("clear trails (C)")) applyAction(app, Action::ClearTrails);
+    if (uiSmallButton("clear trails (C)")) applyAction(app, Action::ClearTrails);
     float scale = app.view.uiScale;
     if (ImGui::SliderFloat("UI scale", &scale, 0.75f, 3.0f, "%.2f")) {
         // Applied when released: rebuilding the font under the cursor would fight the slider.
@@ -251,19 +262,51 @@ void viewSection(App& app) {
 
 } // namespace
 
+// A narrow screen's sheet: its bar (open or close it, play, step, reset, help) always shows.
+void sheetBar(App& app) {
+    const float w =
+        (ImGui::GetContentRegionAvail().x - 4.0f * ImGui::GetStyle().ItemSpacing.x) / 5.0f;
+    if (ImGui::Button(app.view.sheetOpen ? "Close" : "Controls", ImVec2(w * 1.3f, 0)))
+        app.view.sheetOpen = !app.view.sheetOpen;
+    ImGui::SameLine();
+    if (ImGui::Button(app.sim.paused ? "Play" : "Pause", ImVec2(w, 0)))
+        applyAction(app, Action::TogglePause);
+    ImGui::SameLine();
+    if (ImGui::Button("Step", ImVec2(w, 0))) applyAction(app, Action::StepOnce);
+    ImGui::SameLine();
+    if (ImGui::Button("Reset", ImVec2(w, 0))) applyAction(app, Action::Reset);
+    ImGui::SameLine();
+    if (ImGui::Button("Help", ImVec2(-1.0f, 0))) app.ui.helpOpen = !app.ui.helpOpen;
+}
+
 void drawControlsPanel(App& app) {
     const ImGuiIO& io = ImGui::GetIO();
-    const float width = static_cast<float>(panelWidth(app.view.uiScale, io.DisplaySize.x));
-    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y), ImGuiCond_Always);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
+    float width = static_cast<float>(panelWidth(app.view.uiScale, io.DisplaySize.x));
+    ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                             ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                             ImGuiWindowFlags_NoBringToFrontOnFocus;
+    if (app.view.layout.sheet) { // along the bottom, the screen's width
+        const ScreenRect& r = app.view.layout.panel;
+        width = static_cast<float>(r.width);
+        ImGui::SetNextWindowPos(ImVec2(static_cast<float>(r.x), static_cast<float>(r.y)));
+        ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(r.height)));
+        flags |= ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar;
+    } else {
+        ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+        ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y), ImGuiCond_Always);
+    }
     if (!ImGui::Begin("Controls", nullptr, flags)) {
         ImGui::End();
         return;
     }
     recordShownWindow(app, "Controls");
+    if (app.view.layout.sheet) {
+        sheetBar(app);
+        if (!app.view.sheetOpen) {
+            ImGui::End();
+            return;
+        }
+    }
     const WorldSettings before = app.sim.world().settings;
     ImGui::PushItemWidth(width * 0.52f);
     scenePicker(app);
@@ -283,7 +326,7 @@ void drawControlsPanel(App& app) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiErrorColor());
         textWrappedAtSpaces(app.ui.messages.error);
         ImGui::PopStyleColor();
-        if (ImGui::SmallButton("dismiss")) app.ui.messages.error.clear();
+        if (uiSmallButton("dismiss")) app.ui.messages.error.clear();
     } else if (!app.ui.messages.note.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiNoteColor());
         textWrappedAtSpaces(app.ui.messages.note);

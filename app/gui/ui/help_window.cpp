@@ -59,6 +59,19 @@ void drawHelpWindow(App& app) {
             }
             ImGui::EndTabItem();
         }
+        if (app.ui.touchUi && ImGui::BeginTabItem("Touch")) { // browser/touch_input.h
+            if (ImGui::BeginTable("touch", 2, flags)) {
+                row("Tap", "Select a block; on the panel, press a button (a number field opens "
+                           "for typing: the on-screen keyboard)");
+                row("Two quick taps", "Add a block on empty space");
+                row("Drag", "Move a block; from empty space, pan the view");
+                row("Two fingers", "Pan and zoom");
+                row("Swipe on the panel", "Scroll it (a slider under the finger keeps its value)");
+                row("Hold, then slide", "Drag a slider");
+                ImGui::EndTable();
+            }
+            ImGui::EndTabItem();
+        }
         if (ImGui::BeginTabItem("Overlays")) {
             dimText("Turn them on in the Overlays section. Windows dock around the scene, which "
                     "keeps the rest; drag a window by its title to float it, \"dock\" puts it "

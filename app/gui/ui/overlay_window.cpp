@@ -107,7 +107,7 @@ bool beginOverlayWindow(App& app, OverlayId id) {
         p.y = std::clamp(p.y, 0.0f, display.y - ImGui::GetFrameHeight());
         if (p.x != pos.x || p.y != pos.y) ImGui::SetWindowPos(p);
         if (visible) {
-            if (ImGui::SmallButton("dock")) setFloating(app.view, title, false);
+            if (uiSmallButton("dock")) setFloating(app.view, title, false);
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("Put the window back beside the scene");
         }
     }

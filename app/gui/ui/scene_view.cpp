@@ -234,11 +234,19 @@ void drawBadge(const App& app, ImDrawList* dl) {
         }
         at.x += plate(dl, at, caption.c_str(), plateBg, plateFg, pad);
     } else {
-        char text[160];
-        std::snprintf(text, sizeof text, "%s   t = %.2f s   %llu collision%s",
-                      methodName(app.sim.world().settings.method), app.sim.world().time,
-                      static_cast<unsigned long long>(app.sim.run.totals.collisions),
-                      app.sim.run.totals.collisions == 1 ? "" : "s");
+        // One count of collisions (the lesson's and sandbox-cli's); the rest rule's resting
+        // contacts apart, so a settled pile's count stands still.
+        const StepTotals& totals = app.sim.run.totals;
+        char text[200];
+        const int n = std::snprintf(
+            text, sizeof text, "%s   t = %.2f s   %llu collision%s",
+            methodName(app.sim.world().settings.method), app.sim.world().time,
+            static_cast<unsigned long long>(totals.collisions), totals.collisions == 1 ? "" : "s");
+        if (totals.contacts > 0 && n > 0 && n < static_cast<int>(sizeof text)) {
+            std::snprintf(
+                text + n, sizeof text - static_cast<std::size_t>(n), "   %llu resting contact%s",
+                static_cast<unsigned long long>(totals.contacts), totals.contacts == 1 ? "" : "s");
+        }
         at.x += plate(dl, at, text, plateBg, plateFg, pad);
     }
     const char* state = app.sim.paused       ? "PAUSED"
@@ -271,7 +279,7 @@ void drawBadge(const App& app, ImDrawList* dl) {
 void drawLargeCount(const App& app, ImDrawList* dl) {
     std::size_t dynamic = 0;
     for (const Block& b : app.sim.world().blocks) dynamic += b.isDynamic();
-    // (No gravity: under gravity a resting block counts a contact every frame.)
+    // (No gravity: the count is the lesson only where nothing rests.)
     if (dynamic == 0 || dynamic > 3 || app.sim.run.totals.collisions < 100 ||
         app.sim.world().settings.gravity != Vec2{}) {
         return;

@@ -20,10 +20,12 @@ using settings_table::WorldKey;
 void choiceCombo(const WorldKey& row, WorldSettings& s) {
     const int current = row.getChoice(s);
     if (ImGui::BeginCombo(row.panel.label, row.names.name(current))) {
+        uiBeginRows();
         for (int i = 0; i < row.names.count; ++i) {
             if (ImGui::Selectable(row.names.name(i), i == current) && i != current)
                 row.setChoice(s, i);
         }
+        uiEndRows();
         ImGui::EndCombo();
     }
 }
@@ -42,9 +44,10 @@ void numberSlider(App& app, const WorldKey& row, WorldSettings& s) {
                         row.shown.asRate ? row.shown.rateRange : row.range, taken))
             value = row.shown.asRate ? 1.0 / taken : taken;
     }
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    if (&value == &s.bounciness) app.ui.bouncinessSlider = {a.x, a.y, b.x - a.x, b.y - a.y};
     // --verbose: where each slider is, once (the window test drags "bounciness").
     if (app.log.verbose && !app.log.layoutLogged) {
-        const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
         std::printf("widget %s %d %d %d %d\n", row.key, static_cast<int>(a.x),
                     static_cast<int>(a.y), static_cast<int>(width), static_cast<int>(b.y - a.y));
     }
@@ -71,11 +74,11 @@ void pairSlider(App& app, const WorldKey& row, WorldSettings& s) {
     }
     tooltip(row.shown.tooltip);
     ImGui::SameLine();
-    if (ImGui::SmallButton("0")) value = Vec2{};
+    if (uiSmallButton("0")) value = Vec2{};
     if (ImGui::IsItemActivated()) app.ui.typedWarning.note(row.panel.label, TypedValue{});
     tooltip(("No " + std::string(row.shown.name)).c_str());
     ImGui::SameLine();
-    if (ImGui::SmallButton(row.panel.presetLabel)) value = defaultWorldSettings().*row.pair;
+    if (uiSmallButton(row.panel.presetLabel)) value = defaultWorldSettings().*row.pair;
     if (ImGui::IsItemActivated()) app.ui.typedWarning.note(row.panel.label, TypedValue{});
     tooltip(row.panel.presetTooltip);
     ImGui::SameLine();

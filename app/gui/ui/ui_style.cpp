@@ -16,6 +16,7 @@ constexpr float kBaseFontPx = 16.0f;
 float gScale = 0.0f;
 float gLabelScale = 1.0f;
 bool gLight = false;
+bool gTouch = false;
 ImFont* gLabelFont = nullptr;
 ImFont* gCompactFont = nullptr;
 
@@ -86,6 +87,16 @@ void setTheme(ImGuiStyle& style) {
     setTheme(style, gLight);
 }
 
+// Touch sizes at UI scale 1: a frame kTouchTargetPx high around the 16 px font, a slider's grab
+// a fingertip wide, a thin scroll bar (a swipe scrolls).
+void setTouchSizes(ImGuiStyle& style) {
+    style.FramePadding = ImVec2(10.0f, (kTouchTargetPx - kBaseFontPx) * 0.5f);
+    style.ItemSpacing = ImVec2(10.0f, 8.0f);
+    style.ItemInnerSpacing = ImVec2(8.0f, 6.0f);
+    style.GrabMinSize = 28.0f;
+    style.ScrollbarSize = 8.0f;
+}
+
 } // namespace
 
 void uiCreateContext(const char* iniPath) {
@@ -122,6 +133,18 @@ ImFont* addFont(ImGuiIO& io, float px) {
     return io.Fonts->AddFontDefault(&config);
 }
 
+namespace {
+
+void applyStyle(float scale, bool light) {
+    ImGuiStyle style;
+    setTheme(style, light);
+    if (gTouch) setTouchSizes(style);
+    style.ScaleAllSizes(scale);
+    ImGui::GetStyle() = style;
+}
+
+} // namespace
+
 bool uiApplyLook(float scale, float labelScale, bool light) {
     const bool fonts = scale != gScale || labelScale != gLabelScale || !gLabelFont;
     if (!fonts && light == gLight) return false;
@@ -139,15 +162,37 @@ bool uiApplyLook(float scale, float labelScale, bool light) {
             addFont(io, std::round(kBaseFontPx * scale * static_cast<float>(kCompactFontScale)));
         io.Fonts->Build();
     }
-    ImGuiStyle style;
-    setTheme(style, light);
-    style.ScaleAllSizes(scale);
-    ImGui::GetStyle() = style;
+    applyStyle(scale, light);
     return fonts;
 }
 
 bool uiApplyScale(float scale) {
     return uiApplyLook(scale, gLabelScale, gLight);
+}
+
+void uiSetTouch(bool touch) {
+    if (touch == gTouch) return;
+    gTouch = touch;
+    applyStyle(gScale > 0.0f ? gScale : 1.0f, gLight);
+}
+
+bool uiTouch() {
+    return gTouch;
+}
+
+void uiBeginRows() {
+    const float row = kTouchTargetPx * gScale - ImGui::GetTextLineHeight();
+    const ImVec2 spacing = ImGui::GetStyle().ItemSpacing;
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing,
+                        gTouch ? ImVec2(spacing.x, std::fmax(spacing.y, row)) : spacing);
+}
+
+void uiEndRows() {
+    ImGui::PopStyleVar();
+}
+
+bool uiSmallButton(const char* label) {
+    return gTouch ? ImGui::Button(label) : ImGui::SmallButton(label);
 }
 
 ImFont* uiCompactFont() {
