@@ -35,6 +35,16 @@ DevTools protocol (python3-websocket). One check per run:
                 large for a link says so
   unsaved       no question before leaving at first; after an edit (a block dragged) the page
                 asks (beforeunload); Ctrl+S downloads the scene named after it
+  axe           axe-core (npm, injected into the page) finds no violation at the first frame
+                and with a lesson open
+  live-region   lecture_example_1 played (with the page's own Play button) through its
+                collision leaves the live region saying it in the inspector's words; the page's
+                text names the scene and the lesson's step
+  hidden-control  the page's hidden C control sets the world's C; a refused value is said
+  sound         M turns the sound on and lecture_example_1's collision plays a knock through
+                emscripten's OpenAL (a source of its Web Audio context has played)
+  keyboard      Tab, then the arrow keys, walk through at least 15 of the panel's controls, each
+                with the focus ring shown around it (keyboard_focus.png is written for looking)
   shots DIR     writes screenshots into DIR to look at (docs/web/): 390x844 (a phone, the panel
                 closed and open), 1024x768 (a tablet), 1366x768 (a laptop), 1280x720 and
                 1920x1080 (projectors)
@@ -62,6 +72,11 @@ import urllib.request
 SKIP = 77
 CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
 HANG_GUARD_S = 120  # the longest any wait may take before the check fails as hung
+# axe-core, as scripts/web.sh installs it (npm) into its cache.
+AXE_JS = os.environ.get("SANDBOX_AXE_JS") or os.path.join(
+    os.environ.get("SANDBOX_WEB_CACHE") or os.path.join(
+        os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "collision-sandbox"),
+    "npm", "node_modules", "axe-core", "axe.min.js")
 
 
 def skip(why):
@@ -166,6 +181,13 @@ class Page:
         result = self.call("Runtime.evaluate", expression=expression, returnByValue=True)
         if "exceptionDetails" in result:
             raise AssertionError(f"{expression}: {result['exceptionDetails']}")
+        return result["result"].get("value")
+
+    def evaluate_async(self, expression):
+        result = self.call("Runtime.evaluate", expression=expression, returnByValue=True,
+                           awaitPromise=True)
+        if "exceptionDetails" in result:
+            raise AssertionError(f"{expression[:200]}: {result['exceptionDetails']}")
         return result["result"].get("value")
 
     def status(self):
@@ -536,6 +558,122 @@ def link(page, base):
     print("a damaged fragment is named; a scene too large for a link says so")
 
 
+def axe_violations(page):
+    """axe-core's violations on the page as it is: ["rule: help (n nodes)", ...]."""
+    if not page.evaluate("typeof axe !== 'undefined'"):
+        page.evaluate(open(AXE_JS, encoding="utf-8").read())
+    found = page.evaluate_async(
+        "axe.run(document).then(r => JSON.stringify(r.violations.map(v => v.id + ': ' + v.help + "
+        "' (' + v.nodes.map(n => n.target.join(' ')).join(', ') + ')')))")
+    return json.loads(found)
+
+
+def axe(page, base):
+    page.open(base)
+    found = axe_violations(page)
+    check(not found, "axe-core at the first frame:\n" + "\n".join(found))
+    page.open(base + "?lesson=lecture3&step=5")
+    check(page.status()["lessonStep"] == 5, "the lesson did not open")
+    page.wait_frames(2)
+    check(page.evaluate("document.getElementById('reader-lesson').textContent").startswith(
+        "Lesson: "), "the page's text has no lesson")
+    found = axe_violations(page)
+    check(not found, "axe-core with a lesson open:\n" + "\n".join(found))
+    print("axe-core: no violation at the first frame nor with a lesson open")
+
+
+def live_region(page, base):
+    page.open(base + "?scene=lecture_example_1")
+    text = lambda id: page.evaluate(f"document.getElementById('{id}').textContent")
+    check(text("reader-scene") == "Scene: Lecture example 1", f"scene text: {text('reader-scene')!r}")
+    check("paused" in text("reader-status"), f"status text: {text('reader-status')!r}")
+    page.evaluate("document.getElementById('c-play').click()")
+    page.wait(lambda: page.status()["simTime"] > 0.8, "t = 0.8 s (past the collision)")
+    page.wait(lambda: "hits" in text("reader-live"), "the collision in the live region")
+    said = text("reader-live")
+    for word in ("m1", "m2", "-2", "4"):
+        check(word in said, f"the live region lacks {word!r}: {said!r}")
+    check(page.evaluate("document.getElementById('reader-live').getAttribute('aria-live')")
+          == "polite", "the live region is not polite")
+    check("running" in text("reader-status"), f"status text: {text('reader-status')!r}")
+    print(f"live region: {said!r}")
+
+
+def hidden_control(page, base):
+    page.open(base + "?scene=lecture_example_1")
+    check(page.status()["bounciness"] == 1.0, f"C is not 1 at first: {page.status()}")
+
+    def set_c(value):
+        page.evaluate("(function () { var c = document.getElementById('c-bounciness'); "
+                      f"c.value = '{value}'; c.dispatchEvent(new Event('change', {{bubbles: true}})); }})()")
+        page.wait_frames(2)
+
+    set_c("0.25")
+    check(page.status()["bounciness"] == 0.25, f"the hidden C control did not set C: {page.status()}")
+    check(page.evaluate("document.getElementById('c-bounciness').value") == "0.25",
+          "the control does not show C")
+    set_c("2")
+    check(page.status()["bounciness"] == 0.25, "a refused C was taken")
+    error = page.evaluate("document.getElementById('c-error').textContent")
+    check("must be from 0 to 1" in error, f"the refused C is not said: {error!r}")
+    print(f"the hidden C control sets C (0.25); a refused value is said: {error!r}")
+
+
+def sound(page, base):
+    page.open(base + "?scene=lecture_example_1")
+    played = ("typeof AL !== 'undefined' && AL.currentCtx ? Object.values(AL.currentCtx.sources)"
+              ".filter(s => s && s.state !== 0x1011 /* AL_INITIAL */).length : -1")
+    check(page.evaluate(played) == -1, "a sound context before any sound")
+    page.key("m", "KeyM", 77)
+    page.key("p", "KeyP", 80)
+    page.wait(lambda: page.status()["simTime"] > 0.8, "t = 0.8 s (past the collision)")
+    page.wait(lambda: page.evaluate(played) > 0, "a knock played")
+    state = page.evaluate("AL.currentCtx.audioCtx.state")
+    print(f"M and the collision: {page.evaluate(played)} OpenAL source(s) played; "
+          f"Web Audio context {state}")
+
+
+FOCUS_RING = (255, 217, 64)  # ui_style.cpp's NavHighlight, dark theme
+
+
+def focus_ring_shown(img, rect):
+    """Pixels of the focus ring's colour on the outline of `rect` (grown by 4 px)."""
+    x0, y0, x1, y1 = rect[0] - 4, rect[1] - 4, rect[2] + 4, rect[3] + 4
+    near = lambda p: all(abs(a - b) <= 40 for a, b in zip(p, FOCUS_RING))
+    count = 0
+    for x in range(max(0, x0), min(img.width, x1)):
+        for y in range(max(0, y0), min(img.height, y1)):
+            if (x - x0 < 8 or x1 - x < 8 or y - y0 < 8 or y1 - y < 8) and near(img.getpixel((x, y))):
+                count += 1
+    return count
+
+
+def keyboard(page, base):
+    page.open(base)
+    page.key("Tab", "Tab", 9)
+    page.wait_frames(3)
+    s = page.status()
+    check(s["navVisible"], f"Tab did not show the focus ring: {s}")
+    seen, unringed = {}, []
+    for _ in range(40):
+        s = page.status()
+        if s["navVisible"] and s["navId"] not in seen:
+            img = image(page.screenshot())
+            seen[s["navId"]] = s["navRect"]
+            if focus_ring_shown(img, s["navRect"]) < 20:
+                unringed.append(s["navRect"])
+            if len(seen) == 15:
+                img.save("keyboard_focus.png")
+        if len(seen) >= 20:
+            break
+        page.key("ArrowDown", "ArrowDown", 40)
+        page.wait_frames(2)
+    check(len(seen) >= 15, f"the arrows reached only {len(seen)} controls")
+    check(not unringed, f"no focus ring seen around {unringed}")
+    print(f"Tab and the arrows walked through {len(seen)} controls, each with its focus ring "
+          f"(keyboard_focus.png: the 15th)")
+
+
 def phone(base):
     page = Page(390, 844, 3, touch=True)
     try:
@@ -548,11 +686,15 @@ def phone(base):
         check(share >= 0.6, f"the scene has {share:.0%} of the screen")
         smallest = min(min(b[2], b[3]) for b in s["blocksOnScreen"])
         check(smallest >= 24 - 1e-9, f"the smallest block is {smallest:.1f} CSS px")
+        # The hint: shown, inside the screen with its buttons (each inside it, 44 px high).
         hint = page.evaluate("(() => { const h = document.getElementById('hint'); "
-                             "const r = h.getBoundingClientRect(); return [!h.hidden, r.width, "
-                             "Math.min(...[...h.querySelectorAll('button')].map("
-                             "b => b.getBoundingClientRect().height))]; })()")
-        check(hint[0] and hint[1] <= 390 and hint[2] >= 44, f"the first visit's hint: {hint}")
+                             "const r = h.getBoundingClientRect(); "
+                             "const b = [...h.querySelectorAll('button')].map("
+                             "e => e.getBoundingClientRect()); return [!h.hidden, r.left, r.right, "
+                             "Math.min(...b.map(e => e.height)), Math.min(...b.map(e => e.left)), "
+                             "Math.max(...b.map(e => e.right))]; })()")
+        check(hint[0] and 0 <= hint[1] and hint[2] <= 390 and hint[3] >= 44 and
+              hint[1] <= hint[4] and hint[5] <= hint[2], f"the first visit's hint: {hint}")
         panel = s["panelOnScreen"]
         page.tap(panel[0] + 40, panel[1] + panel[3] / 2)  # "Controls", the bar's first button
         s = page.status()
@@ -675,6 +817,8 @@ def main():
     site, what = sys.argv[1], sys.argv[2]
     if not os.path.exists(CHROMIUM):
         skip("chromium is not installed (scripts/web.sh deps installs it)")
+    if what == "axe" and not os.path.exists(AXE_JS):
+        skip(f"{AXE_JS} is missing (scripts/web.sh deps installs axe-core)")
     if not os.path.exists(os.path.join(site, "index.html")):
         skip(f"{site}/index.html is missing: build the browser build with scripts/web.sh build")
     server = http.server.ThreadingHTTPServer(
@@ -683,7 +827,9 @@ def main():
     base = f"http://127.0.0.1:{server.server_address[1]}/index.html"
     checks = {"first-frame": first_frame, "pause": pause, "url-scene": url_scene,
               "url-lesson": url_lesson, "url-bad": url_bad, "open-file": open_file,
-              "wheel": wheel, "trackers": trackers, "unsaved": unsaved, "link": link}
+              "wheel": wheel, "trackers": trackers, "unsaved": unsaved, "link": link,
+              "axe": axe, "live-region": live_region, "hidden-control": hidden_control,
+              "keyboard": keyboard, "sound": sound}
     try:
         if what == "shots":
             shots(base, sys.argv[3])

@@ -1,5 +1,6 @@
 #include "canvas_web.h"
 
+#include "app_frame.h"
 #include "browser_input.h"
 #include "input_map.h"
 #include "ui_renderer_gl.h"
@@ -96,6 +97,8 @@ EM_JS(void, page_download, (const char* path), { window.sandboxPage.download(UTF
 EM_JS(void, page_toggle_fullscreen, (), { window.sandboxPage.toggleFullscreen(); });
 EM_JS(void, page_first_frame_shown, (), { window.sandboxPage.firstFrameShown(); });
 EM_JS(void, page_set_typing, (int typing), { window.sandboxPage.setTyping(!!typing); });
+EM_JS(void, page_show_state, (const char* json), { window.sandboxPage.showState(UTF8ToString(json)); });
+EM_JS(void, page_announce, (const char* text), { window.sandboxPage.announce(UTF8ToString(text)); });
 EM_JS(void, page_set_unsaved_edits, (int unsaved), { window.sandboxPage.setUnsavedEdits(!!unsaved); });
 EM_JS(void, page_set_link, (const char* query, const char* scene), {
     window.sandboxPage.setLink(UTF8ToString(query), UTF8ToString(scene));
@@ -262,6 +265,14 @@ void pageToggleFullscreen() {
 
 void pageFirstFrameShown() {
     page_first_frame_shown();
+}
+
+void pageShowState(const std::string& json) {
+    page_show_state(json.c_str());
+}
+
+void pageAnnounce(const std::string& text) {
+    page_announce(text.c_str());
 }
 
 void pageSetUnsavedEdits(bool unsaved) {

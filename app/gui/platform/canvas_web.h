@@ -71,6 +71,10 @@ void pageToggleFullscreen();
 void pageFirstFrameShown(); // hides the loading note
 // The page's text field takes the focus (the on-screen keyboard shows), or gives it back.
 void pageSetTyping(bool typing);
+// The screen reader's side of the page (page_controls.h): the DOM text and hidden controls from
+// pageStateJson(), and one sentence for the polite live region.
+void pageShowState(const std::string& json);
+void pageAnnounce(const std::string& text);
 // With unsaved edits, the browser asks before the tab is closed or reloaded (beforeunload).
 void pageSetUnsavedEdits(bool unsaved);
 // The address bar shows this link (link.h: the query, and the scene it carries or ""); the page

@@ -5,10 +5,12 @@
 #include "app_config.h"
 #include "app_frame.h"
 #include "app_setup.h"
+#include "audio_out.h"
 #include "canvas_web.h"
 #include "link.h"
 #include "mouse_tool.h"
 #include "options.h"
+#include "page_controls.h"
 #include "renderer.h"
 #include "touch_input.h"
 #include "ui_renderer_gl.h"
@@ -35,6 +37,7 @@ struct WebApp {
     App app;
     CanvasWeb canvas;
     SceneRenderer renderer;
+    AudioOut audio; // Web Audio, through emscripten's OpenAL
     AppConfig config;
     std::string storedSettings; // what local storage holds, to write only on change
     bool unsavedShown = false;  // what the page was last told (it asks before unloading then)
@@ -47,6 +50,8 @@ struct WebApp {
     ImGuiWindow* touchScrolls = nullptr; // what a swipe scrolls: the window under the finger
     bool typingShown = false;            // the page's field for the on-screen keyboard has focus
     long long frames = 0;
+    double realTime = 0.0;  // s since the first frame (the live region's pace)
+    std::string shownState; // pageStateJson() as the page last got it
 };
 
 WebApp* gWeb = nullptr;
@@ -67,6 +72,8 @@ void saveSettings(WebApp& w) {
     w.config.uiScale = static_cast<float>(w.app.view.uiScale / w.pixelRatio);
     w.config.windowWidth = w.canvas.width;
     w.config.windowHeight = w.canvas.height;
+    w.config.sound = w.app.sim.sound.chosen ? (w.app.sim.sound.on ? 1 : 0) : -1;
+    w.config.volume = w.app.sim.sound.volume;
     const std::string text = formatAppConfig(w.config);
     if (text != w.storedSettings) storageSet(kSettingsKey, text);
     w.storedSettings = text;
@@ -166,6 +173,18 @@ void answerRequests(WebApp& w) {
     }
 }
 
+// The page's text for a screen reader, kept in step with the canvas, and the collisions through
+// its live region (at most about one a second).
+void tellPage(WebApp& w, double realSeconds) {
+    w.realTime += realSeconds;
+    std::string state = pageStateJson(w.app);
+    if (state != w.shownState) pageShowState(state);
+    w.shownState = std::move(state);
+    const std::string said = w.app.sim.announcer.announce(
+        w.realTime, [&](int i) { return w.app.sim.blockDisplayName(i); });
+    if (!said.empty()) pageAnnounce(said);
+}
+
 void frame(void* arg) {
     WebApp& w = *static_cast<WebApp*>(arg);
     App& app = w.app;
@@ -190,11 +209,31 @@ void frame(void* arg) {
     ImGui::Render();
     appRender(app, w.renderer, w.canvas.width, w.canvas.height);
     uiRendererRender(ImGui::GetDrawData());
+    w.audio.play(app.sim.sound);
     answerRequests(w);
+    tellPage(w, realSeconds);
     followTyping(w);
     followLink(w, emscripten_get_now() / 1000.0);
     saveSettings(w);
     if (w.frames++ == 0) pageFirstFrameShown();
+}
+
+// ImGui's keyboard focus for the browser tests: the focused control's id, whether the focus ring
+// shows, and its rectangle (framebuffer pixels).
+std::string navigationJson() {
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    ImRect r;
+    if (g.NavWindow) {
+        r = g.NavWindow->NavRectRel[0];
+        r.Translate(g.NavWindow->Pos);
+    }
+    const ImGuiIO& io = ImGui::GetIO();
+    char text[200];
+    std::snprintf(text, sizeof text, ",\"navId\":%u,\"navVisible\":%s,\"navRect\":[%d,%d,%d,%d]",
+                  static_cast<unsigned>(g.NavId), io.NavActive && io.NavVisible ? "true" : "false",
+                  static_cast<int>(r.Min.x), static_cast<int>(r.Min.y), static_cast<int>(r.Max.x),
+                  static_cast<int>(r.Max.y));
+    return text;
 }
 
 } // namespace
@@ -293,8 +332,20 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
             exact(app.sim.world().settings.gravity.x) + "," +
             exact(app.sim.world().settings.gravity.y) + "]" +
             ",\"pointerOnScreen\":" + (ImGui::IsMousePosValid(&io.MousePos) ? "true" : "false") +
-            ",\"typing\":" + (io.WantTextInput ? "true" : "false") + "}";
+            ",\"typing\":" + (io.WantTextInput ? "true" : "false") + navigationJson() + "}";
     return text.c_str();
+}
+
+// The page's own form controls (page_controls.h): a control set to `value`. Returns "" or why
+// the value was refused (the page shows it beside the control).
+extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_control(const char* control,
+                                                                const char* value) {
+    static std::string error;
+    if (!gWeb) return "";
+    const PageControlOutcome out = applyPageControl(gWeb->app, control, value);
+    applyAction(gWeb->app, out.action);
+    error = out.error;
+    return error.c_str();
 }
 
 int main() {
@@ -308,6 +359,9 @@ int main() {
     std::string error;
     setupApp(app, Options{}, w.config.lastScene, &error);
     applyUrlParams(app, params);
+    app.sim.sound.chosen = w.config.sound >= 0;
+    app.sim.sound.on = w.config.sound == 1;
+    app.sim.sound.volume = w.config.volume;
     const std::string linkError = pageLinkError();
     if (!linkError.empty())
         app.ui.messages.error += (app.ui.messages.error.empty() ? "" : "\n") + linkError;

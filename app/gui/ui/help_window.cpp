@@ -32,8 +32,10 @@ void drawHelpWindow(App& app) {
     }
     recordShownWindow(app, "Help");
     ImGui::TextUnformatted(
-        app.ui.inBrowser ? "Esc closes this window.  Tab: present mode.  Close the tab to quit."
-                         : "Esc closes this window.  Tab: present mode.  Ctrl+Q quits.");
+        app.ui.inBrowser ? "Esc closes this window.  F5: present mode.  Tab: keyboard focus on the "
+                           "panel.  Close the tab to quit."
+                         : "Esc closes this window.  F5: present mode.  Tab: keyboard focus on the "
+                           "panel.  Ctrl+Q quits.");
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
     if (ImGui::BeginTabBar("help")) {
         if (ImGui::BeginTabItem("Keys")) {

@@ -1,6 +1,8 @@
 #include "ui_style.h"
 
 #include "dock_layout.h"
+#include "input_map.h"
+#include "palette.h"
 #include "text_format.h"
 
 #include <imgui.h>
@@ -32,7 +34,8 @@ bool fileExists(const char* path) {
 void setLightColors(ImGuiStyle& style) {
     ImGui::StyleColorsLight(&style);
     ImVec4* c = style.Colors;
-    c[ImGuiCol_WindowBg] = ImVec4(0.96f, 0.96f, 0.95f, 0.98f);
+    const Color bg = windowBackground(true);
+    c[ImGuiCol_WindowBg] = ImVec4(bg.r, bg.g, bg.b, bg.a);
     c[ImGuiCol_PopupBg] = ImVec4(0.98f, 0.98f, 0.97f, 0.99f);
     c[ImGuiCol_TitleBg] = ImVec4(0.30f, 0.45f, 0.68f, 1.0f);
     c[ImGuiCol_TitleBgActive] = ImVec4(0.30f, 0.45f, 0.68f, 1.0f);
@@ -61,9 +64,13 @@ void setTheme(ImGuiStyle& style, bool light) {
     // No anti-aliased fringe around filled shapes: it doubled the triangles of the panel, and
     // every thin triangle costs a software rasteriser; rounded corners stay smooth enough.
     style.AntiAliasedFill = false;
+    // The keyboard's focus ring: a colour no control has, plainly seen on either theme.
+    style.Colors[ImGuiCol_NavHighlight] =
+        light ? ImVec4(0.80f, 0.10f, 0.55f, 1.0f) : ImVec4(1.0f, 0.85f, 0.25f, 1.0f);
     if (light) return;
     ImVec4* c = style.Colors;
-    c[ImGuiCol_WindowBg] = ImVec4(0.105f, 0.113f, 0.140f, 0.97f);
+    const Color bg = windowBackground(false);
+    c[ImGuiCol_WindowBg] = ImVec4(bg.r, bg.g, bg.b, bg.a);
     c[ImGuiCol_PopupBg] = ImVec4(0.12f, 0.13f, 0.16f, 0.98f);
     c[ImGuiCol_TitleBg] = ImVec4(0.16f, 0.29f, 0.48f, 1.0f);
     c[ImGuiCol_TitleBgActive] = ImVec4(0.16f, 0.29f, 0.48f, 1.0f);
@@ -104,6 +111,20 @@ void uiCreateContext(const char* iniPath) {
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = iniPath;
+    // Every control reachable from the keyboard: the arrows move ImGui's focus ring (once Tab or
+    // F6 put it in a window), Space presses, Enter types into a field (input_map.h's Tab row).
+    io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
+    // The navigation's keys, as ImGui's GLFW backend maps them (the offscreen renderer has no
+    // backend: 1.86 asserts without Space).
+    const int navigationKeys[][2] = {
+        {ImGuiKey_Tab, keys::kTab},           {ImGuiKey_LeftArrow, keys::kLeft},
+        {ImGuiKey_RightArrow, keys::kRight},  {ImGuiKey_UpArrow, keys::kUp},
+        {ImGuiKey_DownArrow, keys::kDown},    {ImGuiKey_PageUp, keys::kPageUp},
+        {ImGuiKey_PageDown, keys::kPageDown}, {ImGuiKey_Home, keys::kHome},
+        {ImGuiKey_End, keys::kEnd},           {ImGuiKey_Delete, keys::kDelete},
+        {ImGuiKey_Space, keys::kSpace},       {ImGuiKey_Enter, keys::kEnter},
+        {ImGuiKey_Escape, keys::kEscape},     {ImGuiKey_KeyPadEnter, keys::kKeypadEnter}};
+    for (const auto& k : navigationKeys) io.KeyMap[k[0]] = k[1];
     setTheme(ImGui::GetStyle());
     gScale = 0.0f;
     gLabelFont = nullptr;
@@ -249,4 +270,13 @@ ImVec4 uiDimColor() {
 }
 ImVec4 uiQuestionColor() {
     return uiThemed(ImVec4{1.0f, 0.82f, 0.40f, 1.0f});
+}
+
+ImVec4 uiMarkColorVec(Mark mark) {
+    const Color c = markColor(mark, gLight);
+    return ImVec4(c.r, c.g, c.b, c.a);
+}
+
+ImU32 uiMarkColor(Mark mark) {
+    return markColor(mark, gLight).packed();
 }

@@ -50,3 +50,7 @@ ImVec4 uiWarningColor();
 ImVec4 uiNoteColor();
 ImVec4 uiDimColor();
 ImVec4 uiQuestionColor();
+// A mark's colour in the current theme (palette.h's table: chosen per theme, not uiThemed).
+enum class Mark;
+ImU32 uiMarkColor(Mark mark);
+ImVec4 uiMarkColorVec(Mark mark);

@@ -15,7 +15,8 @@ get_filename_component(SHIPPED_LESSONS ${PROJECT_SOURCE_DIR}/lessons ABSOLUTE)
 file(GLOB SHIPPED_SCENE_FILES CONFIGURE_DEPENDS ${SHIPPED_SCENES}/*.json ${SHIPPED_LESSONS}/*.json)
 
 # The main and the canvas, compiled once for both.
-add_library(sandbox_web_main OBJECT platform/main_web.cpp platform/canvas_web.cpp)
+add_library(sandbox_web_main OBJECT platform/main_web.cpp platform/canvas_web.cpp
+                                    platform/audio_out.cpp)
 target_include_directories(sandbox_web_main PRIVATE platform)
 target_link_libraries(sandbox_web_main PUBLIC sandbox_ui sandbox_ui_renderer glfw)
 sandbox_warnings(sandbox_web_main)
@@ -25,6 +26,7 @@ sandbox_warnings(sandbox_web_main)
 function(sandbox_web_files target how)
   target_link_options(${target} PRIVATE
     -sALLOW_MEMORY_GROWTH=1
+    -lopenal
     -sEXPORTED_RUNTIME_METHODS=ccall,FS
     "SHELL:${how} ${SHIPPED_SCENES}@/scenes"
     "SHELL:${how} ${SHIPPED_LESSONS}@/lessons"
