@@ -60,6 +60,13 @@ struct CollisionRecord {
     double C = 0.0;            // bounciness used (0 when the rest rule applied)
     double v1After = 0.0, v2After = 0.0; // m/s after
     bool rest = false;                   // resolved by the rest rule (a resting contact)
+    // Friction along the other axis (resolve.h, "Friction"): μ of the pair, and how much the
+    // contact changed the two bodies' relative velocity along its axis (dvn) and along the other
+    // (dvt, |dvt| <= μ·|dvn|). perSecond: a resting contact under the exact integrator, whose
+    // friction is a deceleration: both are then changes of acceleration (m/s^2).
+    double mu = 0.0;
+    double dvn = 0.0, dvt = 0.0; // m/s (m/s^2 when perSecond)
+    bool perSecond = false;
     // Two bodies: the first one's centre is at most the other's along the axis, so they approach
     // when v1 - v2 > 0 (else when v2 - v1 > 0): the relative-velocity test the inspector shows
     // (lecture, "Tips – Collision Resolve"). A wall's side is in `other`.

@@ -118,6 +118,10 @@ StepStats World::step(std::vector<CollisionRecord>* log) {
     StepScratch& buffers = scratch.get();
 
     const Integrator integrator = settings.integrator; // read here only
+    // Friction acts when some μ > 0 (resolve.cpp, "Friction"); else no friction code runs.
+    double maxFriction = settings.friction;
+    for (const Block& b : blocks) maxFriction = std::max(maxFriction, b.friction);
+    const bool friction = maxFriction > 0.0;
     for (int k = 0; k < substeps; ++k) {
         // 1. Forces (gravity, a block's own force, drag). Semi-implicit Euler changes the
         //    velocities first and then moves with the new ones (the lecture's order); explicit
@@ -126,9 +130,17 @@ StepStats World::step(std::vector<CollisionRecord>* log) {
         //    x += v·h + a·h²/2, v += a·h and finds impacts as roots of the quadratic.
         if (integrator == Integrator::SemiImplicitEuler) applyForces(*this, h);
         SubstepContext ctx{*this, buffers, buffers.broadPhase, stats, log, h, time};
+        ctx.friction = friction;
+        ctx.maxFriction = maxFriction;
         if (integrator == Integrator::Exact) {
             accelerations(*this, h, buffers.acceleration);
             ctx.acceleration = &buffers.acceleration;
+            if (friction) {
+                buffers.forces = buffers.acceleration;
+                buffers.slides.assign(2 * blocks.size(), Slide{});
+                ctx.forces = &buffers.forces;
+                ctx.slides = &buffers.slides;
+            }
         }
         // 2. Motion and collisions, by the chosen simulation method.
         advance(ctx, settings.method);

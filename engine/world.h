@@ -25,6 +25,7 @@ struct Block {
     double mass = 1.0; // kg; kInfiniteMass for static and kinematic blocks
     Vec2 force;        // N, a constant force on a dynamic block (a thruster): a = F/m
     BodyKind kind = BodyKind::Dynamic;
+    double friction = -1.0; // μ of this block's faces (>= 0), or < 0: the world's (resolve.h)
 
     bool isDynamic() const { return kind == BodyKind::Dynamic; }
     Vec2 halfSize() const { return size * 0.5; }

@@ -55,6 +55,7 @@ struct WorldSettings {
     Integrator integrator = Integrator::SemiImplicitEuler;
     std::uint8_t mistakes = 0; // bit (1 << Mistake) set: that mistake is made (all off: correct)
     double drag = 0.0;         // k in kg/m^3: quadratic drag force -k·A·|v|·v, A = w·h (m^2)
+    double friction = 0.0;     // μ >= 0: Coulomb friction at every contact (resolve.h, "Friction")
 
     bool has(Mistake m) const { return (mistakes >> static_cast<int>(m)) & 1u; }
     void set(Mistake m, bool on) {
@@ -161,4 +162,7 @@ inline constexpr settings_table::WorldKey kWorldKeys[] = {
     {{&WorldSettings::restSpeed}, "rest_speed", {}, {}, {}, {}, false},
     {{&WorldSettings::eventCap}, "event_cap", {}, {}, {}, {}, false},
     {{&WorldSettings::measureOverlap}, "measure_overlap", {}, {}, {}, {}, false},
+    // Coulomb friction (docs/physics.md, "Friction"): engine-only until the app and scene files
+    // give it its words, flag and slider (issue 25); 0 runs no friction code at all.
+    {{&WorldSettings::friction}, "friction", limits::kFriction, {}, {}, {}, false},
 };

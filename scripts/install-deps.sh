@@ -8,6 +8,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libstb-dev
   libimgui-dev libglfw3-dev libosmesa6-dev libgl-dev
   xvfb xdotool x11-apps imagemagick fonts-dejavu-core
+  libopenal-dev libsndfile1-dev
   libbox2d-dev libchipmunk-dev
   clang libclang-rt-14-dev
 )

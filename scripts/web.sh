@@ -20,6 +20,10 @@ imgui_dir=$cache/imgui-$imgui_version
 # the header-only packages the build uses.
 web_packages=(emscripten chromium python3-websocket python3-pil xz-utils
   nlohmann-json3-dev libcli11-dev libstb-dev fonts-dejavu-core cmake)
+# axe-core (npm), which the browser tests inject into the page to check its accessibility; kept
+# in the cache, where tests/web/browser_test.py looks for it.
+axe_version=4.14.1
+axe_dir=$cache/npm
 
 install_deps() {
   local missing=() p
@@ -33,6 +37,14 @@ install_deps() {
   "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
   "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
     --no-install-recommends "${missing[@]}"
+}
+
+install_axe() {
+  grep -qs "\"version\": \"$axe_version\"" "$axe_dir/node_modules/axe-core/package.json" && return 0
+  echo "web.sh: installing axe-core $axe_version (npm) into $axe_dir"
+  command -v npm >/dev/null || { echo "web.sh: npm is missing (Node.js's package manager)" >&2; return 1; }
+  mkdir -p "$axe_dir"
+  npm install --no-audit --no-fund --silent --prefix "$axe_dir" "axe-core@$axe_version"
 }
 
 # Dear ImGui 1.86's sources from Debian's source package, without touching apt's configuration.
@@ -62,6 +74,7 @@ fetch_imgui() {
 
 build() {
   install_deps
+  install_axe
   fetch_imgui
   # Debian's emcc with Node 20: its JS optimizer finds acorn only through NODE_PATH.
   export NODE_PATH=/usr/share/nodejs
@@ -81,6 +94,6 @@ serve() {
 case "${1:-build}" in
   build) shift || true; build "$@" ;;
   serve) shift; serve "$@" ;;
-  deps) install_deps ;;
+  deps) install_deps; install_axe ;;
   *) echo "usage: scripts/web.sh build | serve [PORT] | deps" >&2; exit 2 ;;
 esac

@@ -3,6 +3,7 @@
 #include "collision.h"
 #include "inspector_format.h"
 #include "resolve.h"
+#include "rule_candidates.h"
 #include "text_format.h"
 
 #include <algorithm>
@@ -31,81 +32,6 @@ std::string at(Vec2 p) {
 
 std::string bodyName(const Scene& scene, int index) {
     return index < 0 ? wallName(index) : traceBlockName(scene, index);
-}
-
-// The velocity a body moves with over the frame (semi-implicit Euler: the acceleration first).
-Vec2 frameVelocityOf(const Block& b, const WorldSettings& s) {
-    if (b.isDynamic()) return b.velocity + accelerationOf(s, b, s.dt) * s.dt;
-    if (b.kind == BodyKind::Kinematic) return b.velocity;
-    return {};
-}
-
-// The student's velocity after a collision, one component at a time, against the lecture's
-// candidates: the momentum formula, the body's own component reversed (without Newton), none.
-enum class Rule { Formula, Reflect, Unchanged, None };
-
-struct Candidates {
-    double formula = 0.0, reflect = 0.0, unchanged = 0.0;
-    // How far apart the closest two are: how well this component tells the rules apart.
-    double spread() const {
-        return std::min({std::abs(formula - reflect), std::abs(formula - unchanged),
-                         std::abs(reflect - unchanged)});
-    }
-    Rule rule(double yours, double tolerance, bool unchangedFirst) const {
-        auto near = [&](double v) { return std::abs(yours - v) <= tolerance; };
-        if (unchangedFirst && near(unchanged)) return Rule::Unchanged;
-        if (near(formula)) return Rule::Formula;
-        if (near(reflect)) return Rule::Reflect;
-        if (near(unchanged)) return Rule::Unchanged;
-        return Rule::None;
-    }
-};
-
-// Block `i` against body `other` (a block, or a wall < 0) along `axis` with bounciness C.
-Candidates candidatesFor(const std::vector<Block>& before, const WorldSettings& s, int i, int other,
-                         int axis, double C) {
-    const Block& me = before[static_cast<std::size_t>(i)];
-    const double v = frameVelocityOf(me, s)[axis];
-    double m2 = kInfiniteMass, v2 = 0.0;
-    if (other >= 0) {
-        const Block& o = before[static_cast<std::size_t>(other)];
-        m2 = o.mass;
-        v2 = frameVelocityOf(o, s)[axis];
-    }
-    const double u = centerOfMassVelocity(me.mass, v, m2, v2);
-    return {velocityAfterCollision(v, u, C), -C * v, v};
-}
-
-// Every body block `i` would touch during the frame (each at its first touch), with the others
-// moving at their frame velocity or, as the turn-based method has them, held still.
-struct Touch {
-    int other = 0; // block index or Wall
-    int axis = 0;
-    double t = 0.0; // fraction of the frame
-};
-std::vector<Touch> touchesInFrame(const std::vector<Block>& before, const Bounds& bounds,
-                                  const WorldSettings& s, int i) {
-    std::vector<Touch> touches;
-    const Block& me = before[static_cast<std::size_t>(i)];
-    const Vec2 v = frameVelocityOf(me, s);
-    const Aabb box = aabbOf(me);
-    for (int axis = 0; axis < 2; ++axis) { // each wall the block moves toward
-        if (v[axis] == 0.0) continue;
-        const double gap =
-            v[axis] > 0.0 ? bounds.max[axis] - box.max[axis] : box.min[axis] - bounds.min[axis];
-        const double t = gap / (std::abs(v[axis]) * s.dt);
-        if (t >= 0.0 && t <= 1.0) touches.push_back({wallOnAxis(axis, v[axis]), axis, t});
-    }
-    for (std::size_t j = 0; j < before.size(); ++j) {
-        if (static_cast<int>(j) == i) continue;
-        const Aabb other = aabbOf(before[j]);
-        Impact hit = timeOfImpact(box, v, other, frameVelocityOf(before[j], s), s.dt);
-        if (!hit.hit()) hit = timeOfImpact(box, v, other, Vec2{}, s.dt);
-        for (int axis = 0; axis < 2; ++axis)
-            if (hit.axes & (1 << axis))
-                touches.push_back({static_cast<int>(j), axis, hit.time / s.dt});
-    }
-    return touches;
 }
 
 void add(PartingCollision& p, std::string id, std::string says, std::string slide,

@@ -141,7 +141,7 @@ void SceneGeometry::addArrows(const SceneView& view) {
         if (f == Vec2{}) continue;
         const Vec2 from = view.world->blocks[i].position;
         const Vec2 tip = arrowOnScreen(*view.camera, from, f * kForceArrowScale).tip;
-        over.arrow(from, tip, kForceShaftPx * px, kArrowHeadPx * 1.3 * px, scene_colors::kForce);
+        over.arrow(from, tip, kForceShaftPx * px, kArrowHeadPx * 1.3 * px, view.theme->force);
     }
     if (!view.vectors) return;
     std::size_t dynamic = 0;
@@ -154,9 +154,9 @@ void SceneGeometry::addArrows(const SceneView& view) {
                           (bl.velocity - view.frameVelocity) * (bl.mass * kMomentumArrowScale))
                 .tip;
         if (heads)
-            momenta.lineArrow(bl.position, tip, kArrowHeadPx * 1.3 * px, scene_colors::kMomentum);
+            momenta.lineArrow(bl.position, tip, kArrowHeadPx * 1.3 * px, view.theme->momentum);
         else
-            momenta.segment(bl.position, tip, scene_colors::kMomentum);
+            momenta.segment(bl.position, tip, view.theme->momentum);
     }
     for (const Block& bl : view.world->blocks) {
         if (bl.kind == BodyKind::Static) continue;

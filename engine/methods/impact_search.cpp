@@ -180,13 +180,26 @@ void ImpactSearch::predict(int i, double now) {
     const Aabb path = timeline_.trajectory(i, now);
     predictWalls(i, now, path);
     paths_.queryOthers(path, i, [&](int j) { predictPair(i, j, now); });
+    if (ctx_.slides) predictStops(i, now);
+}
+
+// When block i, sliding on an infinite mass with friction (exact integrator), stops sliding.
+void ImpactSearch::predictStops(int i, double now) {
+    const Vec2 v = timeline_.velocityAt(i, now);
+    for (int axis = 0; axis < 2; ++axis) {
+        const double t = ctx_.stopTime(i, axis, v[axis]);
+        if (t < ctx_.h - now)
+            timeline_.schedule({now + t, i, kStopEvent - axis, timeline_.stamp(i), 0,
+                                static_cast<std::uint8_t>(1 << axis)});
+    }
 }
 
 // Windows pay when the moving blocks travel, on average, many window lengths in a substep. The
 // mean travel and extent are taken over at most kWindowSample blocks spread over the list (a loop
 // over all of them cost the plain search's substep 4%; this choice changes no result).
 bool ImpactSearch::useWindows() {
-    if (w_.windowPolicy < 0.0) return false;
+    // Friction's stop events are predicted from the paths only.
+    if (w_.windowPolicy < 0.0 || ctx_.friction) return false;
     const size_t n = blocks_.size(), samples = std::min(n, kWindowSample);
     double travel = 0.0;    // m: the moving blocks' travel over the substep, summed
     int moving = 0;         // moving blocks

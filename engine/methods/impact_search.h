@@ -39,6 +39,7 @@ class ImpactSearch {
     void predictWalls(int i, double now, const Aabb& path);
     void predictPair(int i, int j, double now);
     void predict(int i, double now);
+    void predictStops(int i, double now);
     // Windows (see impact_search.cpp).
     bool useWindows();
     void startWindows();

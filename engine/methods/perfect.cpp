@@ -106,8 +106,11 @@ bool PerfectSolver::collapsesOrTraps(const Event& e, int axis, int meetings, int
 }
 
 // Resolves the event's contact along each axis it touches on (lecture, "Collisions on a Line –
-// Full Formula"), by the rest rule whenever one of the rules above says so.
+// Full Formula"), by the rest rule whenever one of the rules above says so. Returns whether a
+// velocity (or, exact integrator, an acceleration) changed.
 bool PerfectSolver::resolve(const Event& e, int processed) {
+    // A block that stops sliding (friction, the exact integrator): no contact to resolve.
+    if (isStop(e)) return resolver_.stopSliding(e.a, stopAxis(e)) != Resolution::None;
     const int meetings = meetingsAtInstant(e);
     bool changed = false;
     for (int axis = 0; axis < 2; ++axis) {

@@ -27,6 +27,17 @@ inline double velocityAfterCollision(double v, double u, double C) {
 
 struct StepScratch;
 
+// With friction and the exact integrator, how a block slides along one axis on the infinite masses
+// (walls, static and kinematic blocks) it rests on: friction is then a constant deceleration
+// within the substep, which ends when the block has the same velocity as its support (resolve.h,
+// "Friction"). One per block and axis, reset every substep.
+struct Slide {
+    bool on = false;    // it rests on an infinite mass along the other axis
+    int support = 0;    // that body: a block index, or a Wall (negative)
+    double limit = 0.0; // m/s^2: μ·N/m, the most friction can change its acceleration
+    double accel = 0.0; // m/s^2: friction's part of its acceleration along the axis now
+};
+
 // What one substep of a method works with: the world, the buffers it may reuse (scratch.h; its
 // broad phase), the statistics and log.
 struct SubstepContext {
@@ -43,6 +54,13 @@ struct SubstepContext {
     // m/s^2 per block over this substep: the exact integrator's constant accelerations (the rest
     // rule zeroes them for supported blocks). Null for the Euler integrators: motion is linear.
     std::vector<Vec2>* acceleration = nullptr;
+    // Friction ("Friction" below): some μ > 0 (else no friction code runs: the results are those
+    // without it, bit for bit). With the exact integrator also each block's forces' acceleration
+    // at the substep's start and its slides (2 per block: x, y).
+    bool friction = false;
+    double maxFriction = 0.0; // the largest μ of the world and its blocks
+    const std::vector<Vec2>* forces = nullptr;
+    std::vector<Slide>* slides = nullptr;
 
     // How blocks move within the substep and where the methods detect impacts: the methods call
     // these instead of the linear formulas, so the integrator and the mistake "discrete" are
@@ -68,6 +86,9 @@ struct SubstepContext {
         if (plain()) return timeOfImpact(a, va, b, vb, maxTime); // the common case, inline
         return impactWithOptions(i, a, va, j, b, vb, maxTime);
     }
+    // Friction with the exact integrator: when block i, sliding along `axis` on its support
+    // (Slide) at `velocity`, will have the support's velocity (s from then; kNever: never).
+    double stopTime(int i, int axis, double velocity) const;
     Impact impactWithOptions(int i, const Aabb& a, Vec2 va, int j, const Aabb& b, Vec2 vb,
                              double maxTime) const;
     WallImpact wallImpact(int i, const Aabb& box, Vec2 v, double maxTime) const {
@@ -128,6 +149,10 @@ class Resolver {
     // Block a touches the wall on `axis` that it moves toward.
     Resolution resolveWall(int a, int axis, RestRule rest = RestRule::WhenSlow);
 
+    // Block i, sliding along `axis`, has its support's velocity (stopTime()): it moves on with
+    // the support, held by static friction (up to Slide::limit).
+    Resolution stopSliding(int i, int axis);
+
     // Whether block i (dynamic) is caught along `axis` between infinite masses: the blocks that
     // touch it along the axis, and those that touch them, reach a wall, a static or a kinematic
     // block both below and above it. Along that line nothing can move without a collision.
@@ -146,6 +171,18 @@ class Resolver {
                 double C, double v1After, double v2After, bool rest);
     void setVelocity(int i, int axis, double v);
     void findNear(const Aabb& box);
+    // Friction ("Friction" in resolve.cpp).
+    double frictionOf(int body) const;
+    double frictionOf(int a, int b) const { return std::sqrt(frictionOf(a) * frictionOf(b)); }
+    double inverseMass(int body) const;
+    double velocityOf(int body, int axis) const;
+    double frictionImpulse(int a, int b, int tangent, double mu, double jn);
+    void contactFriction(int a, int b, int axis, double dvn);
+    void slideFriction(int i, int tangent);
+    void touch(int i, const Aabb& box, int j, int axis);
+    double freeClusterAcceleration(int axis, double u, double withoutFriction);
+    void clusterFriction(int axis, bool anchoredBelow, bool anchoredAbove, int seedA,
+                         int seedOther);
     void sync(int i) {
         if (hooks_) hooks_->bringToNow(i, now_);
     }
@@ -156,6 +193,11 @@ class Resolver {
     double now_ = 0.0;
     bool forceRest_ = false; // the contact being resolved: RestRule::Always
     std::vector<int> changed_;
+    // The friction of the contact being resolved, for its record.
+    struct FrictionNote {
+        double mu = 0.0, dvn = 0.0, dvt = 0.0;
+        bool perSecond = false;
+    } note_;
     // Scratch for the rest rule's cluster search.
     std::vector<int> members_;
     std::vector<int> queue_;
@@ -168,4 +210,26 @@ class Resolver {
         bool above;   // it lies above one
     };
     std::vector<Anchor> kinematics_;
+    // Friction in the cluster: the contacts along the axis (a dynamic member and the body it
+    // touches, `side` +1 when that body lies above it), and per dynamic member (queue_'s order)
+    // its velocity and acceleration before the merge and the load it carries.
+    struct Touch {
+        int block;
+        int other; // a block index or a Wall
+        int side;
+        double width; // m: how far they overlap along the other axis
+    };
+    std::vector<Touch> touches_;
+    std::vector<double> velocityBefore_, accelBefore_;
+    // Per dynamic member: the momentum change it passes to what holds it (N·s), and with the exact
+    // integrator the force its contacts take (N) and that force's change at this event (N).
+    std::vector<double> impulseLoad_, forceLoad_, changeLoad_;
+    // Per touch: the member it holds, its support, and the loads it carries (N·s, N, N).
+    struct Carried {
+        int held, support;
+        double width; // m
+        double jn, fn, fd;
+    };
+    std::vector<Carried> carried_;
+    std::vector<int> order_, rank_; // members by distance from the anchors, and each one's place
 };

@@ -16,6 +16,15 @@
 using Event = PerfectScratch::Event;
 using Motion = PerfectScratch::Motion;
 constexpr int kWallEvent = CrushRule::kWall; // Event::b for an impact with the bounds
+// Event::b for a block that stops sliding along x (kStopEvent) or y (kStopEvent - 1): friction
+// with the exact integrator (resolve.h, Resolver::stopSliding).
+constexpr int kStopEvent = -10;
+inline bool isStop(const Event& e) {
+    return e.b <= kStopEvent;
+}
+inline int stopAxis(const Event& e) {
+    return kStopEvent - e.b;
+}
 
 class SubstepTimeline {
   public:

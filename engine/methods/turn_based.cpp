@@ -28,6 +28,7 @@
 #include "methods.h"
 #include "scratch.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <unordered_map>
 #include <utility>
@@ -102,6 +103,65 @@ void findFirstImpact(SubstepContext& ctx, int i, double remaining, const Aabb& p
         else
             keepEarliest(j, impact);
     });
+}
+
+// With friction: block i touches, along one axis, neighbours that it does not approach (they
+// move as it does: a pushed pair merged by the rest rule), but that are held still in its turn,
+// so they stop it at once. The lecture's turn-based would end its turn there and lose the motion
+// along the face too (gravity would then add to a block that never falls). Instead its motion
+// along that axis is held for the rest of the turn (its velocity kept, given back at the end),
+// and it moves along the face.
+struct HeldAxis {
+    int axis = -1;
+    double velocity = 0.0;     // m/s, along the axis
+    double acceleration = 0.0; // m/s^2 (the exact integrator's)
+
+    // Holds the axis of `first` (one axis for all its impacts); false if there is none.
+    bool hold(SubstepContext& ctx, int i, const FirstImpact& first) {
+        std::uint8_t axes = first.wallAxes;
+        for (const auto& hit : first.blocks) axes |= hit.second;
+        if (axis >= 0 || (axes != kAxisX && axes != kAxisY)) return false;
+        axis = axes == kAxisX ? 0 : 1;
+        Block& block = ctx.world.blocks[i];
+        velocity = block.velocity[axis];
+        block.velocity[axis] = 0.0;
+        if (ctx.acceleration) {
+            acceleration = (*ctx.acceleration)[i][axis];
+            (*ctx.acceleration)[i][axis] = 0.0;
+        }
+        return true;
+    }
+    // Gives the held motion back (unless a collision has set one since).
+    void release(SubstepContext& ctx, int i) {
+        if (axis < 0) return;
+        Block& block = ctx.world.blocks[i];
+        if (block.velocity[axis] == 0.0) block.velocity[axis] = velocity;
+        if (ctx.acceleration && (*ctx.acceleration)[i][axis] == 0.0)
+            (*ctx.acceleration)[i][axis] = acceleration;
+        axis = -1;
+    }
+};
+
+// Friction with the exact integrator: if block i, sliding on an infinite mass, comes to its
+// support's velocity before its first impact (at `impact`, s from now) and within the `remaining`
+// turn, moves it there, lets it stop sliding (Resolver::stopSliding) and returns true.
+bool stopsSlidingFirst(SubstepContext& ctx, Resolver& resolver, int i, double impact,
+                       double remaining, double& elapsed) {
+    Block& block = ctx.world.blocks[i];
+    double stop = std::min(impact, remaining);
+    int axis = -1;
+    for (int k = 0; k < 2; ++k) {
+        const double t = ctx.stopTime(i, k, block.velocity[k]);
+        if (t < stop) stop = t, axis = k;
+    }
+    if (axis < 0) return false;
+    block.position = ctx.positionAfter(i, block.position, block.velocity, stop);
+    block.velocity = ctx.velocityAfter(i, block.velocity, stop);
+    elapsed += stop;
+    resolver.setNow(elapsed);
+    resolver.stopSliding(i, axis);
+    resolver.clearChanged();
+    return true;
 }
 
 // Resolves the contacts of one instant of a block's turn: its impacts, then every contact that a
@@ -292,11 +352,14 @@ void advanceTurnBased(SubstepContext& ctx) {
         Block& block = blocks[i];
         if (block.kind == BodyKind::Static) continue;
         double elapsed = 0.0;
+        HeldAxis held; // with friction: the axis along which it is held this turn, if any
         for (int contact = 0; contact <= kMaxRestingContactsPerTurn; ++contact) {
             const double remaining = ctx.h - elapsed;
             const Aabb path = ctx.path(i, block.position, block.size, block.velocity, remaining);
             if (!contains(grid.box(i), path)) grid.set(i, path);
             findFirstImpact(ctx, i, remaining, path, first);
+            if (ctx.slides && stopsSlidingFirst(ctx, resolver, i, first.time, remaining, elapsed))
+                continue;
             if (first.time == kNever) { // free flight for the rest of the step
                 block.position = ctx.positionAfter(i, block.position, block.velocity, remaining);
                 block.velocity = ctx.velocityAfter(i, block.velocity, remaining);
@@ -328,10 +391,16 @@ void advanceTurnBased(SubstepContext& ctx) {
                 if (!contains(grid.box(j), reach)) grid.set(j, reach);
             }
             resolver.clearChanged();
+            // With friction a block pressed along a face by a neighbour that moves with it (a
+            // crate pushed on, a block beside one held by its floor) slides along that face.
+            if (ctx.friction && !bounced && !rested && !moveBack && first.time == 0.0 &&
+                held.hold(ctx, i, first))
+                continue;
             // A bounce ends the turn (the rest of the step is lost, as in the lecture); so does
             // a "collision that is not really a collision". Only a resting contact lets it go on.
             if (bounced || !rested || moveBack) break;
         }
+        held.release(ctx, i);
     }
     ctx.advanced = ctx.h;
 }

@@ -42,6 +42,7 @@ inline constexpr Range kDt{1e-6, 1.0, "s"};              // seconds per frame
 inline constexpr Range kSubsteps{1.0, 1000.0, "", true}; // steps per frame
 inline constexpr Range kForce{-1e9, 1e9, "N"};           // each force component (and F/m <= 1e9)
 inline constexpr Range kDrag{0.0, 1e6, "kg/m^3"};        // the medium's density (water: 1e3)
+inline constexpr Range kFriction{0.0, 1e3, ""};          // μ, Coulomb friction (rubber on dry: ~1)
 inline constexpr Range kThrust{0.01, 1e4, "N"};          // the keyboard thrust (app, lessons)
 inline constexpr Range kFrameRate{1.0 / kDt.max, 1.0 / kDt.min, "Hz"}; // 1/dt (the app's field)
 inline constexpr Range kTimeScale{0.01, 100.0, ""}; // simulated s per real s (app, lessons)

@@ -60,6 +60,7 @@ Vec2 vec2(const nlohmann::json& value, const std::string& path);
 namespace settings_table {
 struct WorldKey;
 }
+struct WorldSettings;
 // A world setting's value as JSON (a scene file's "world" and sandbox-cli run --json).
 nlohmann::json settingJson(const settings_table::WorldKey& row, const WorldSettings& s);
 

@@ -22,7 +22,10 @@ TEST(KeyMap, TheLecturesKeys) {
 
 TEST(KeyMap, TheSandboxsKeys) {
     EXPECT_EQ(actionForKey(keys::kN, false), Action::StepOnce);
-    EXPECT_EQ(actionForKey(keys::kTab, false), Action::TogglePresent);
+    EXPECT_EQ(actionForKey(keys::kF5, false), Action::TogglePresent);
+    EXPECT_EQ(actionForKey(keys::kTab, false), Action::KeyboardFocus);
+    EXPECT_EQ(actionForKey(keys::kF6, false), Action::NextWindow);
+    EXPECT_EQ(actionForKey(keys::kM, false), Action::ToggleSound);
     EXPECT_EQ(actionForKey(keys::kR, false, true), Action::ResetToFile);
     EXPECT_EQ(actionForKey(keys::kP, false, true), Action::TogglePause); // Shift does not matter
     EXPECT_EQ(actionForKey(keys::kQ, true), Action::Quit);

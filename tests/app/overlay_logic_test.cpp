@@ -446,3 +446,27 @@ TEST(CostMeasurement, ChartRowsByScene) {
 }
 
 } // namespace
+
+// Dash patterns (the plots' second cue besides colour): exact lengths along the line.
+TEST(PlotLogic, DashPiecesFollowThePatternAlongTheLine) {
+    const std::vector<PlotPoint> straight{{0.0f, 0.0f}, {100.0f, 0.0f}};
+    EXPECT_EQ(dashPieces(straight, Dash::Solid, 2.0f).size(), 1u);
+    // Dashed, unit 2: 6 px drawn, 4 px left out, so ten dashes [10k, 10k + 6].
+    const auto dashes = dashPieces(straight, Dash::Dashed, 2.0f);
+    ASSERT_EQ(dashes.size(), 10u);
+    for (std::size_t k = 0; k < dashes.size(); ++k) {
+        ASSERT_EQ(dashes[k].size(), 2u);
+        EXPECT_FLOAT_EQ(dashes[k][0].x, 10.0f * static_cast<float>(k));
+        EXPECT_FLOAT_EQ(dashes[k][1].x, 10.0f * static_cast<float>(k) + 6.0f);
+    }
+    // Dotted, unit 2: 2 px drawn, 3 px left out: twenty dots.
+    EXPECT_EQ(dashPieces(straight, Dash::Dotted, 2.0f).size(), 20u);
+    // Around a corner the dash goes on: 4 px along x, then 2 px up (6 in all).
+    const auto corner = dashPieces({{0.0f, 0.0f}, {4.0f, 0.0f}, {4.0f, 10.0f}}, Dash::Dashed, 2.0f);
+    ASSERT_EQ(corner.size(), 2u);
+    ASSERT_EQ(corner[0].size(), 3u);
+    EXPECT_FLOAT_EQ(corner[0][2].x, 4.0f);
+    EXPECT_FLOAT_EQ(corner[0][2].y, 2.0f);
+    EXPECT_FLOAT_EQ(corner[1][0].y, 6.0f);  // 4 px left out
+    EXPECT_FLOAT_EQ(corner[1][1].y, 10.0f); // cut at the line's end
+}

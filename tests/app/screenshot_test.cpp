@@ -168,7 +168,10 @@ void expectBlocksWhereTheEngineSays(const std::string& scene, int frames) {
         const Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
         if (!b.isDynamic() || app.view.camera.metresToPixels(std::min(b.size.x, b.size.y)) < 12)
             continue;
-        EXPECT_GE(colourMatch(image, app, i, 40), 0.6)
+        // The block's name is drawn on it: on a small block its anti-aliased letters cover up
+        // to about 45% of the sampled centre (the palette's darker red: 29 of 49 samples match);
+        // a block drawn elsewhere matches next to none.
+        EXPECT_GE(colourMatch(image, app, i, 40), 0.5)
             << scene << ": block " << app.sim.blockDisplayName(i) << " at (" << b.position.x << ", "
             << b.position.y << ") not drawn there; see " << png;
         ++checked;

@@ -7,6 +7,7 @@
 #include "link.h"
 #include "mouse_tool.h"
 #include "shape_batch.h"
+#include "touch_input.h"
 #include "url_params.h"
 
 #include <gtest/gtest.h>
@@ -220,6 +221,134 @@ TEST(Link, ALessonStepIsItsLink) {
     App app = setUpApp();
     applyUrlParams(app, parseUrlParams("?lesson=lecture3&step=5"));
     EXPECT_EQ(linkQuery(app), "lesson=lecture3&step=5");
+}
+
+// Touch: frames as the web main asks them (frame, then resolveStart after a Waiting frame).
+TouchInput::Frame touchFrame(TouchInput& t, double now, bool overUi, bool onBlock = false) {
+    const TouchInput::Frame f = t.frame(now);
+    if (t.waitingForStart()) t.resolveStart(overUi, onBlock);
+    return f;
+}
+
+TEST(TouchInput, ATapOnThePanelIsACtrlClickThenThePointerLeaves) {
+    TouchInput t;
+    t.event(TouchPhase::Start, 7, {100, 200}, 0.0);
+    TouchInput::Frame f = touchFrame(t, 0.016, true);
+    EXPECT_TRUE(f.pointer); // hovering where it went down: the UI is there
+    EXPECT_FALSE(f.down);
+    EXPECT_EQ(t.mode(), TouchInput::Mode::Pending);
+    t.event(TouchPhase::End, 7, {102, 201}, 0.1);
+    f = touchFrame(t, 0.116, true);
+    EXPECT_TRUE(f.down && f.ctrl); // Ctrl+click: a number field opens for typing
+    EXPECT_EQ(f.pos.x, 100.0);
+    f = touchFrame(t, 0.132, true);
+    EXPECT_TRUE(f.pointer && !f.down); // released: the click
+    f = touchFrame(t, 0.148, true);
+    EXPECT_FALSE(f.pointer); // then nothing is hovered: no tooltip stays
+}
+
+TEST(TouchInput, ASwipeOnThePanelScrollsAndNeverPresses) {
+    TouchInput t;
+    t.event(TouchPhase::Start, 1, {100, 500}, 0.0);
+    touchFrame(t, 0.016, true);
+    t.event(TouchPhase::Move, 1, {101, 470}, 0.03);
+    EXPECT_EQ(t.mode(), TouchInput::Mode::Scroll);
+    TouchInput::Frame f = touchFrame(t, 0.033, true);
+    EXPECT_FALSE(f.down);
+    EXPECT_FALSE(f.pointer);
+    EXPECT_EQ(f.scrollY, -30.0); // the content follows the finger from where it went down
+    t.event(TouchPhase::Move, 1, {101, 400}, 0.05);
+    f = touchFrame(t, 0.05, true);
+    EXPECT_EQ(f.scrollY, -70.0);
+    t.event(TouchPhase::Move, 1, {101, 380}, 0.055);
+    t.event(TouchPhase::End, 1, {101, 370}, 0.06); // lifted before a frame showed the last move
+    f = touchFrame(t, 0.066, true);
+    EXPECT_EQ(f.scrollY, -30.0);
+    for (int i = 0; i < 3; ++i) {
+        f = touchFrame(t, 0.07 + i * 0.016, true);
+        EXPECT_FALSE(f.down);
+    }
+}
+
+TEST(TouchInput, HeldThenSlidDragsASlider) {
+    TouchInput t;
+    t.event(TouchPhase::Start, 1, {100, 500}, 0.0);
+    touchFrame(t, 0.016, true);
+    TouchInput::Frame f = touchFrame(t, 0.2, true);
+    EXPECT_FALSE(f.down);
+    f = touchFrame(t, 0.4, true); // still for the hold time: pressing
+    EXPECT_TRUE(f.down);
+    t.event(TouchPhase::Move, 1, {160, 505}, 0.45);
+    f = touchFrame(t, 0.46, true);
+    EXPECT_TRUE(f.down);
+    EXPECT_EQ(f.pos.x, 160.0);
+    t.event(TouchPhase::End, 1, {160, 505}, 0.5);
+    f = touchFrame(t, 0.52, true);
+    EXPECT_TRUE(f.pointer && !f.down);
+}
+
+TEST(TouchInput, OnTheSceneABlockIsDraggedAndEmptySpacePans) {
+    TouchInput t;
+    t.event(TouchPhase::Start, 1, {400, 300}, 0.0);
+    touchFrame(t, 0.016, false, true); // on a block
+    t.event(TouchPhase::Move, 1, {440, 300}, 0.02);
+    TouchInput::Frame f = touchFrame(t, 0.033, false);
+    EXPECT_TRUE(f.down);
+    EXPECT_EQ(f.pos.x, 400.0); // pressed where it went down
+    f = touchFrame(t, 0.05, false);
+    EXPECT_EQ(f.pos.x, 440.0); // then dragging
+    t.event(TouchPhase::End, 1, {440, 300}, 0.06);
+    f = touchFrame(t, 0.066, false);
+    EXPECT_FALSE(f.down);
+
+    TouchInput e;
+    e.event(TouchPhase::Start, 2, {400, 300}, 1.0);
+    touchFrame(e, 1.016, false, false); // empty space
+    e.event(TouchPhase::Move, 2, {430, 320}, 1.02);
+    f = touchFrame(e, 1.033, false); // beyond the slop: the press lets go, a pan begins
+    EXPECT_FALSE(f.down);
+    f = touchFrame(e, 1.05, false);
+    EXPECT_EQ(f.pan.x, 30.0);
+    EXPECT_EQ(f.pan.y, 20.0);
+}
+
+TEST(TouchInput, ASwipeQuickerThanAFrameStillScrolls) {
+    TouchInput t;
+    t.event(TouchPhase::Start, 1, {100, 500}, 0.0);
+    t.event(TouchPhase::Move, 1, {100, 450}, 0.005);
+    t.event(TouchPhase::End, 1, {100, 400}, 0.01);
+    TouchInput::Frame f = touchFrame(t, 0.016, true);
+    EXPECT_FALSE(f.down);
+    f = touchFrame(t, 0.033, true);
+    EXPECT_EQ(f.scrollY, -100.0);
+    EXPECT_FALSE(f.down);
+}
+
+TEST(TouchInput, ATapOnTheSceneIsAPlainClick) {
+    TouchInput t;
+    t.event(TouchPhase::Start, 1, {400, 300}, 0.0);
+    t.event(TouchPhase::End, 1, {400, 300}, 0.01); // lifted before a frame showed where
+    touchFrame(t, 0.016, false);
+    const TouchInput::Frame f = touchFrame(t, 0.033, false);
+    EXPECT_TRUE(f.down);
+    EXPECT_FALSE(f.ctrl);
+}
+
+TEST(SheetLayout, NarrowScreensGetTheSceneAndABarOfButtons) {
+    EXPECT_TRUE(sheetLayout(390.0 * 3, 3.0f)); // a phone held upright, ratio 3
+    EXPECT_FALSE(sheetLayout(1024.0, 1.0f));
+    App app = setUpApp();
+    app.view.uiScale = 3.0f;
+    updateCamera(app, 1170.0, 2532.0);
+    ASSERT_TRUE(app.view.layout.sheet);
+    const ScreenRect& scene = app.view.layout.scene;
+    EXPECT_GE(scene.width * scene.height, 0.6 * 1170.0 * 2532.0);
+    EXPECT_EQ(app.view.layout.panel.height, kSheetBarPx * 3.0);
+    // The smallest block (orange, 0.6 m) is at least kMinBlockPx (x3) on screen.
+    EXPECT_GE(0.6 * app.view.camera.pixelsPerMetre(), kMinBlockPx * 3.0 - 1e-9);
+    app.view.sheetOpen = true;
+    updateCamera(app, 1170.0, 2532.0);
+    EXPECT_EQ(app.view.layout.panel.y, std::round(2532.0 * (1.0 - kSheetOpenShare)));
 }
 
 TEST(WheelNotches, OneNotchIsOneStepTheDesktopsWay) {

@@ -17,12 +17,8 @@ using test_worlds::makeWorld;
 
 class DeterminismTest : public ::testing::TestWithParam<Method> {};
 
-INSTANTIATE_TEST_SUITE_P(Methods, DeterminismTest,
-                         ::testing::Values(Method::Perfect, Method::MoveAndCorrect,
-                                           Method::TurnBased),
-                         [](const ::testing::TestParamInfo<Method>& info) {
-                             return test_worlds::methodTestName(info.param);
-                         });
+INSTANTIATE_TEST_SUITE_P(Methods, DeterminismTest, test_worlds::everyMethod(),
+                         test_worlds::methodParamName);
 
 // A 200-block gas with gravity and C = 0.9 in the default 20 m x 12 m bounds.
 World gasWorld(Method method, std::uint64_t seed) {

@@ -4,11 +4,14 @@
 
 #include "world.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace test_worlds {
 
@@ -106,6 +109,19 @@ inline std::string methodTestName(Method method) {
         break;
     }
     return "Unknown";
+}
+
+// Every method of the engine's enum (Method::Count of them, in its order) and their test names:
+// INSTANTIATE_TEST_SUITE_P(Methods, Suite, test_worlds::everyMethod(),
+// test_worlds::methodParamName)
+inline ::testing::internal::ParamGenerator<Method> everyMethod() {
+    std::vector<Method> methods;
+    for (int m = 0; m < static_cast<int>(Method::Count); ++m)
+        methods.push_back(static_cast<Method>(m));
+    return ::testing::ValuesIn(methods);
+}
+inline std::string methodParamName(const ::testing::TestParamInfo<Method>& info) {
+    return methodTestName(info.param);
 }
 
 } // namespace test_worlds

@@ -394,12 +394,8 @@ TEST_P(JammedBox, TenThousandBlocksStayFiniteAndApart) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, JammedBox,
-                         ::testing::Values(Method::Perfect, Method::MoveAndCorrect,
-                                           Method::TurnBased),
-                         [](const ::testing::TestParamInfo<Method>& info) {
-                             return methodTestName(info.param);
-                         });
+INSTANTIATE_TEST_SUITE_P(Methods, JammedBox, test_worlds::everyMethod(),
+                         test_worlds::methodParamName);
 
 // ----------------------------------------------------------------------------------------------
 // Hand-made extremes.
@@ -472,12 +468,8 @@ TEST_P(Extremes, PlatformsAndLedges) {
     soak(world, "platforms and ledges", 600);
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, Extremes,
-                         ::testing::Values(Method::Perfect, Method::MoveAndCorrect,
-                                           Method::TurnBased),
-                         [](const ::testing::TestParamInfo<Method>& info) {
-                             return methodTestName(info.param);
-                         });
+INSTANTIATE_TEST_SUITE_P(Methods, Extremes, test_worlds::everyMethod(),
+                         test_worlds::methodParamName);
 
 // ----------------------------------------------------------------------------------------------
 // Jams: a dynamic block caught between a kinematic block and something it cannot push (a wall, a
@@ -577,9 +569,10 @@ TEST_P(Jams, JammedKinematicReversalIsRepredicted) {
 // A 20 x 20 jam of 0.1 m blocks (touching, random velocities up to 20 m/s, masses 1 to 1000 kg) in
 // a box with a little room around it. Move-and-correct and turn-based advance. The perfect method
 // meets an event storm at the first instant (corner contacts of the lattice couple every row and
-// column) and, as the event cap allows, ends each frame at the event cap with time held back: bounded work
-// per frame, no overlap, and every such frame says so in eventCapHits (checked by soak()). Known
-// limitation: it does not get past that instant (the shipped 36-block jammed_box.json does).
+// column) and, as the event cap allows, ends each frame at the event cap with time held back:
+// bounded work per frame, no overlap, and every such frame says so in eventCapHits (checked by
+// soak()). Known limitation: it does not get past that instant (the shipped 36-block
+// jammed_box.json does).
 TEST_P(Jams, JammedBoxOf400BlocksAdvances) {
     for (const double C : {0.0, 1.0}) {
         World world;
@@ -610,8 +603,6 @@ TEST_P(Jams, JammedBoxOf400BlocksAdvances) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Methods, Jams, ::testing::Values(Method::Perfect, Method::MoveAndCorrect, Method::TurnBased),
-    [](const ::testing::TestParamInfo<Method>& info) { return methodTestName(info.param); });
+INSTANTIATE_TEST_SUITE_P(Methods, Jams, test_worlds::everyMethod(), test_worlds::methodParamName);
 
 } // namespace

@@ -4,7 +4,8 @@ through SwiftShader) opens build-web/index.html from a local server and is drive
 DevTools protocol (python3-websocket). One check per run:
 
   first-frame   the first frame draws the default scene: a screenshot with many colours, the
-                controls panel visible, the default scene loaded
+                controls panel visible, the default scene loaded; the first visit's hint shows,
+                goes when dismissed and stays gone after a reload; its button opens the lesson
   pause         P pauses: two screenshots taken frames apart are equal (and were not before)
   url-scene     ?scene=newtons_cradle&method=turn-based&show=plots,inspector selects them
   url-lesson    ?lesson=lecture3&step=5 opens the lesson at step 5
@@ -18,13 +19,35 @@ DevTools protocol (python3-websocket). One check per run:
                 exactly screen-sized) leaves the canvas's size = its CSS size x the ratio, and no
                 uncaught error
   trackers      ?utm_source=x&fbclid=y shows no error
+  phone         390x844 at ratio 3 with touch: the panel is a sheet along the bottom; closed, the
+                scene has >= 60% of the screen and the default scene's blocks are >= 24 CSS px;
+                controls are >= 44 CSS px high (the first visit's hint's buttons too, and it goes
+                at the first tap); a tap opens the sheet, a swipe over a slider
+                scrolls it and leaves every setting as it was (and nothing hovered after); a tap
+                on the slider opens it for typing with the on-screen keyboard, and 0.5 typed
+                there is taken; a tap closes the sheet
+  offline       the one-file build (sandbox-offline.html) opened as file:// draws the default
+                scene; the folder build opened as file:// says what to do; served, the page
+                keeps working once the server is gone (the service worker)
   link          the address bar follows an edit (a block dragged, the method changed) with the
                 scene in its fragment; opening that link in a new browser restores exactly those
                 blocks and that method; a damaged fragment is an error naming it, and a scene too
                 large for a link says so
   unsaved       no question before leaving at first; after an edit (a block dragged) the page
                 asks (beforeunload); Ctrl+S downloads the scene named after it
-  shots DIR     writes 1280x720 and 1920x1080 screenshots into DIR (for looking at)
+  axe           axe-core (npm, injected into the page) finds no violation at the first frame
+                and with a lesson open
+  live-region   lecture_example_1 played (with the page's own Play button) through its
+                collision leaves the live region saying it in the inspector's words; the page's
+                text names the scene and the lesson's step
+  hidden-control  the page's hidden C control sets the world's C; a refused value is said
+  sound         M turns the sound on and lecture_example_1's collision plays a knock through
+                emscripten's OpenAL (a source of its Web Audio context has played)
+  keyboard      Tab, then the arrow keys, walk through at least 15 of the panel's controls, each
+                with the focus ring shown around it (keyboard_focus.png is written for looking)
+  shots DIR     writes screenshots into DIR to look at (docs/web/): 390x844 (a phone, the panel
+                closed and open), 1024x768 (a tablet), 1366x768 (a laptop), 1280x720 and
+                1920x1080 (projectors)
 
 Every check also fails on any console error or uncaught exception of the page. Exit 0: passed;
 1: failed; 77: skipped (no chromium, no python3-websocket or no build-web/: ctest SKIP).
@@ -49,6 +72,11 @@ import urllib.request
 SKIP = 77
 CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
 HANG_GUARD_S = 120  # the longest any wait may take before the check fails as hung
+# axe-core, as scripts/web.sh installs it (npm) into its cache.
+AXE_JS = os.environ.get("SANDBOX_AXE_JS") or os.path.join(
+    os.environ.get("SANDBOX_WEB_CACHE") or os.path.join(
+        os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"), "collision-sandbox"),
+    "npm", "node_modules", "axe-core", "axe.min.js")
 
 
 def skip(why):
@@ -74,7 +102,7 @@ class QuietHandler(http.server.SimpleHTTPRequestHandler):
 class Page:
     """One Chromium with one page, over the DevTools protocol."""
 
-    def __init__(self, width, height, pixel_ratio=1.0):
+    def __init__(self, width, height, pixel_ratio=1.0, touch=False):
         self.profile = tempfile.mkdtemp(prefix="sandbox-chromium-")
         self.proc = subprocess.Popen(
             [CHROMIUM, "--headless=new", "--no-sandbox", "--use-angle=swiftshader",
@@ -98,7 +126,9 @@ class Page:
         self.call("Log.enable")
         self.call("Page.enable")
         self.call("Emulation.setDeviceMetricsOverride", width=width, height=height,
-                  deviceScaleFactor=pixel_ratio, mobile=False)
+                  deviceScaleFactor=pixel_ratio, mobile=touch)
+        if touch:  # a phone or tablet: a touch screen, no mouse
+            self.call("Emulation.setTouchEmulationEnabled", enabled=True, maxTouchPoints=5)
 
     def close(self):
         try:
@@ -153,6 +183,13 @@ class Page:
             raise AssertionError(f"{expression}: {result['exceptionDetails']}")
         return result["result"].get("value")
 
+    def evaluate_async(self, expression):
+        result = self.call("Runtime.evaluate", expression=expression, returnByValue=True,
+                           awaitPromise=True)
+        if "exceptionDetails" in result:
+            raise AssertionError(f"{expression[:200]}: {result['exceptionDetails']}")
+        return result["result"].get("value")
+
     def status(self):
         text = self.evaluate("window.sandboxFirstFrame === undefined ? null : "
                              "Module.ccall('sandbox_web_status', 'string', [], [])")
@@ -202,6 +239,42 @@ class Page:
         self.mouse("mouseReleased", x1, y1)
         self.wait_frames(2)
 
+    def fingers(self, path):
+        """One finger along `path` [(x, y), ...] CSS pixels: down at the first point, moved
+        through the others, up at the last, all at once. (The DevTools protocol's own touch
+        events wait for a frame each, and a frame at 390x844 x3 on SwiftShader can take a second:
+        a finger resting that long would be a hold.) As in a browser, a pointerdown comes first."""
+        points = json.dumps(path)
+        self.evaluate(f"""(() => {{
+            const path = {points}, r = canvas.getBoundingClientRect();
+            const touch = ([x, y]) => new Touch({{identifier: 1, target: canvas,
+                clientX: r.left + x, clientY: r.top + y}});
+            const send = (type, t, down) => canvas.dispatchEvent(new TouchEvent(type, {{
+                bubbles: true, cancelable: true, changedTouches: [t], touches: down ? [t] : [],
+                targetTouches: down ? [t] : []}}));
+            canvas.dispatchEvent(new PointerEvent('pointerdown', {{bubbles: true,
+                pointerType: 'touch', clientX: r.left + path[0][0], clientY: r.top + path[0][1]}}));
+            send('touchstart', touch(path[0]), true);
+            for (const p of path.slice(1)) send('touchmove', touch(p), true);
+            send('touchend', touch(path[path.length - 1]), false);
+        }})()""")
+        self.wait_frames(5)
+
+    def tap(self, x, y):
+        self.fingers([(x, y)])
+
+    def swipe(self, x0, y0, x1, y1, steps=8):
+        self.fingers([(x0 + (x1 - x0) * i / steps, y0 + (y1 - y0) * i / steps)
+                      for i in range(steps + 1)])
+
+    def reload(self):
+        """Loads the page again and waits for its new first frame."""
+        self.evaluate("window.sandboxOldPage = true")
+        self.call("Page.reload")
+        self.wait(lambda: self.evaluate("window.sandboxOldPage === undefined && "
+                                        "window.sandboxFirstFrame !== undefined"),
+                  "the first frame after reloading")
+
     def canvas_size(self):
         """The canvas's backing store, its CSS size times the ratio (rounded), and the ratio."""
         return self.evaluate("(() => { const r = canvas.getBoundingClientRect(); "
@@ -245,6 +318,18 @@ def first_frame(page, base):
     print(f"first frame: {colours} colours, panel visible, {status['scene']}; shown "
           f"{page.evaluate('window.sandboxFirstFrame'):.0f} ms after the page started loading "
           "(reported, not checked)")
+    # The first visit's hint: there, dismissed, and not there the next time.
+    hint = "!document.getElementById('hint').hidden"
+    check(page.evaluate(hint), "no first-visit hint")
+    page.evaluate("document.getElementById('hint-close').click()")
+    check(not page.evaluate(hint), "the hint was not dismissed")
+    page.reload()
+    check(not page.evaluate(hint), "the dismissed hint came back")
+    page.evaluate("document.getElementById('hint').hidden = false; "
+                  "document.getElementById('hint-lesson').click()")
+    page.wait_frames(3)
+    check(page.status()["lessonStep"] == 1, "the hint's button did not open the lesson")
+    print("the first visit's hint shows, goes when dismissed, stays gone; it opens the lesson")
 
 
 def pause(page, base):
@@ -473,17 +558,251 @@ def link(page, base):
     print("a damaged fragment is named; a scene too large for a link says so")
 
 
+def axe_violations(page):
+    """axe-core's violations on the page as it is: ["rule: help (n nodes)", ...]."""
+    if not page.evaluate("typeof axe !== 'undefined'"):
+        page.evaluate(open(AXE_JS, encoding="utf-8").read())
+    found = page.evaluate_async(
+        "axe.run(document).then(r => JSON.stringify(r.violations.map(v => v.id + ': ' + v.help + "
+        "' (' + v.nodes.map(n => n.target.join(' ')).join(', ') + ')')))")
+    return json.loads(found)
+
+
+def axe(page, base):
+    page.open(base)
+    found = axe_violations(page)
+    check(not found, "axe-core at the first frame:\n" + "\n".join(found))
+    page.open(base + "?lesson=lecture3&step=5")
+    check(page.status()["lessonStep"] == 5, "the lesson did not open")
+    page.wait_frames(2)
+    check(page.evaluate("document.getElementById('reader-lesson').textContent").startswith(
+        "Lesson: "), "the page's text has no lesson")
+    found = axe_violations(page)
+    check(not found, "axe-core with a lesson open:\n" + "\n".join(found))
+    print("axe-core: no violation at the first frame nor with a lesson open")
+
+
+def live_region(page, base):
+    page.open(base + "?scene=lecture_example_1")
+    text = lambda id: page.evaluate(f"document.getElementById('{id}').textContent")
+    check(text("reader-scene") == "Scene: Lecture example 1", f"scene text: {text('reader-scene')!r}")
+    check("paused" in text("reader-status"), f"status text: {text('reader-status')!r}")
+    page.evaluate("document.getElementById('c-play').click()")
+    page.wait(lambda: page.status()["simTime"] > 0.8, "t = 0.8 s (past the collision)")
+    page.wait(lambda: "hits" in text("reader-live"), "the collision in the live region")
+    said = text("reader-live")
+    for word in ("m1", "m2", "-2", "4"):
+        check(word in said, f"the live region lacks {word!r}: {said!r}")
+    check(page.evaluate("document.getElementById('reader-live').getAttribute('aria-live')")
+          == "polite", "the live region is not polite")
+    check("running" in text("reader-status"), f"status text: {text('reader-status')!r}")
+    print(f"live region: {said!r}")
+
+
+def hidden_control(page, base):
+    page.open(base + "?scene=lecture_example_1")
+    check(page.status()["bounciness"] == 1.0, f"C is not 1 at first: {page.status()}")
+
+    def set_c(value):
+        page.evaluate("(function () { var c = document.getElementById('c-bounciness'); "
+                      f"c.value = '{value}'; c.dispatchEvent(new Event('change', {{bubbles: true}})); }})()")
+        page.wait_frames(2)
+
+    set_c("0.25")
+    check(page.status()["bounciness"] == 0.25, f"the hidden C control did not set C: {page.status()}")
+    check(page.evaluate("document.getElementById('c-bounciness').value") == "0.25",
+          "the control does not show C")
+    set_c("2")
+    check(page.status()["bounciness"] == 0.25, "a refused C was taken")
+    error = page.evaluate("document.getElementById('c-error').textContent")
+    check("must be from 0 to 1" in error, f"the refused C is not said: {error!r}")
+    print(f"the hidden C control sets C (0.25); a refused value is said: {error!r}")
+
+
+def sound(page, base):
+    page.open(base + "?scene=lecture_example_1")
+    played = ("typeof AL !== 'undefined' && AL.currentCtx ? Object.values(AL.currentCtx.sources)"
+              ".filter(s => s && s.state !== 0x1011 /* AL_INITIAL */).length : -1")
+    check(page.evaluate(played) == -1, "a sound context before any sound")
+    page.key("m", "KeyM", 77)
+    page.key("p", "KeyP", 80)
+    page.wait(lambda: page.status()["simTime"] > 0.8, "t = 0.8 s (past the collision)")
+    page.wait(lambda: page.evaluate(played) > 0, "a knock played")
+    state = page.evaluate("AL.currentCtx.audioCtx.state")
+    print(f"M and the collision: {page.evaluate(played)} OpenAL source(s) played; "
+          f"Web Audio context {state}")
+
+
+FOCUS_RING = (255, 217, 64)  # ui_style.cpp's NavHighlight, dark theme
+
+
+def focus_ring_shown(img, rect):
+    """Pixels of the focus ring's colour on the outline of `rect` (grown by 4 px)."""
+    x0, y0, x1, y1 = rect[0] - 4, rect[1] - 4, rect[2] + 4, rect[3] + 4
+    near = lambda p: all(abs(a - b) <= 40 for a, b in zip(p, FOCUS_RING))
+    count = 0
+    for x in range(max(0, x0), min(img.width, x1)):
+        for y in range(max(0, y0), min(img.height, y1)):
+            if (x - x0 < 8 or x1 - x < 8 or y - y0 < 8 or y1 - y < 8) and near(img.getpixel((x, y))):
+                count += 1
+    return count
+
+
+def keyboard(page, base):
+    page.open(base)
+    page.key("Tab", "Tab", 9)
+    page.wait_frames(3)
+    s = page.status()
+    check(s["navVisible"], f"Tab did not show the focus ring: {s}")
+    seen, unringed = {}, []
+    for _ in range(40):
+        s = page.status()
+        if s["navVisible"] and s["navId"] not in seen:
+            img = image(page.screenshot())
+            seen[s["navId"]] = s["navRect"]
+            if focus_ring_shown(img, s["navRect"]) < 20:
+                unringed.append(s["navRect"])
+            if len(seen) == 15:
+                img.save("keyboard_focus.png")
+        if len(seen) >= 20:
+            break
+        page.key("ArrowDown", "ArrowDown", 40)
+        page.wait_frames(2)
+    check(len(seen) >= 15, f"the arrows reached only {len(seen)} controls")
+    check(not unringed, f"no focus ring seen around {unringed}")
+    print(f"Tab and the arrows walked through {len(seen)} controls, each with its focus ring "
+          f"(keyboard_focus.png: the 15th)")
+
+
+def phone(base):
+    page = Page(390, 844, 3, touch=True)
+    try:
+        page.open(base)
+        page.wait_frames(2)
+        s = page.status()
+        check(s["sheet"] and not s["sheetOpen"], f"not a closed sheet: {s['panelOnScreen']}")
+        scene = s["sceneOnScreen"]
+        share = scene[2] * scene[3] / (390 * 844)
+        check(share >= 0.6, f"the scene has {share:.0%} of the screen")
+        smallest = min(min(b[2], b[3]) for b in s["blocksOnScreen"])
+        check(smallest >= 24 - 1e-9, f"the smallest block is {smallest:.1f} CSS px")
+        # The hint: shown, inside the screen with its buttons (each inside it, 44 px high).
+        hint = page.evaluate("(() => { const h = document.getElementById('hint'); "
+                             "const r = h.getBoundingClientRect(); "
+                             "const b = [...h.querySelectorAll('button')].map("
+                             "e => e.getBoundingClientRect()); return [!h.hidden, r.left, r.right, "
+                             "Math.min(...b.map(e => e.height)), Math.min(...b.map(e => e.left)), "
+                             "Math.max(...b.map(e => e.right))]; })()")
+        check(hint[0] and 0 <= hint[1] and hint[2] <= 390 and hint[3] >= 44 and
+              hint[1] <= hint[4] and hint[5] <= hint[2], f"the first visit's hint: {hint}")
+        panel = s["panelOnScreen"]
+        page.tap(panel[0] + 40, panel[1] + panel[3] / 2)  # "Controls", the bar's first button
+        s = page.status()
+        check(s["sheetOpen"], "a tap on Controls did not open the sheet")
+        check(page.evaluate("document.getElementById('hint').hidden"),
+              "the hint stays over the open sheet")
+        check(s["touchUi"] and s["frameHeight"] >= 44, f"controls {s['frameHeight']} px high")
+        check(not s["pointerOnScreen"], "the pointer stays after a tap (a tooltip would too)")
+        slider = s["bouncinessSlider"]
+        x, y = slider[0] + slider[2] * 0.3, slider[1] + slider[3] / 2
+        settings = (s["bounciness"], s["gravity"], s["method"])
+        page.swipe(x, y, x, y - 80)  # the slider stays in view
+        s = page.status()
+        moved = slider[1] - s["bouncinessSlider"][1]
+        check(abs(moved - 80) < 1, f"the panel scrolled by {moved} px (the swipe: 80)")
+        check((s["bounciness"], s["gravity"], s["method"]) == settings,
+              f"the swipe changed a setting: {settings} -> {s['bounciness'], s['gravity']}")
+        check(not s["pointerOnScreen"], "the pointer stays after a swipe")
+        slider = s["bouncinessSlider"]
+        page.tap(slider[0] + slider[2] * 0.3, slider[1] + slider[3] / 2)
+        page.wait(lambda: page.evaluate("document.activeElement.id") == "type-in",
+                  "the on-screen keyboard's field to take the focus")
+        check(page.status()["typing"], "the slider did not open for typing")
+        page.call("Input.insertText", text="0.5")
+        page.key("Enter", "Enter", 13)
+        page.wait_frames(3)
+        s = page.status()
+        check(s["bounciness"] == 0.5, f"typed 0.5, the bounciness is {s['bounciness']}")
+        check(page.evaluate("document.activeElement.id") != "type-in", "the keyboard stays")
+        panel = s["panelOnScreen"]
+        page.tap(panel[0] + 40, panel[1] + 30)  # "Close"
+        check(not page.status()["sheetOpen"], "a tap on Close did not close the sheet")
+        page.wait_frames(2)
+        check(not page.errors, "the console has errors:\n" + "\n".join(page.errors))
+        print(f"390x844: the scene {share:.0%} of the screen, blocks >= {smallest:.1f} CSS px, "
+              f"controls {s['frameHeight']:.0f} px; the sheet opens and closes, a swipe scrolled "
+              f"it by {moved:.0f} px and changed nothing; 0.5 typed into C")
+    finally:
+        page.close()
+
+
+def offline(site, base):
+    one_file = "file://" + os.path.abspath(os.path.join(site, "sandbox-offline.html"))
+    folder = "file://" + os.path.abspath(os.path.join(site, "index.html"))
+    page = Page(1280, 720)
+    try:
+        page.open(one_file)
+        img = image(page.screenshot())
+        colours = colour_count(img)
+        check(colours >= 300, f"the one-file build's first frame has only {colours} colours")
+        s = page.status()
+        check(s["scene"].endswith("/bouncing_squares.json") and s["error"] == "", f"{s}")
+        page.call("Page.navigate", url=folder)
+        page.wait(lambda: "sandbox-offline.html" in page.evaluate(
+            "document.getElementById('note') ? document.getElementById('note').textContent : ''"),
+            "the folder build's note about file://")
+        check(not page.errors, "the console has errors:\n" + "\n".join(page.errors))
+    finally:
+        page.close()
+    print(f"file://: the one-file build drew the default scene ({colours} colours); the folder "
+          "build says what to do")
+    # Served, visited once, then the server goes away: the service worker's copy answers.
+    server = http.server.ThreadingHTTPServer(
+        ("127.0.0.1", 0), functools.partial(QuietHandler, directory=site))
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    url = f"http://127.0.0.1:{server.server_address[1]}/index.html?scene=newtons_cradle"
+    page = Page(1280, 720)
+    try:
+        page.open(url)
+        page.evaluate("navigator.serviceWorker.ready.then(() => { window.sandboxWorker = 1; })")
+        page.wait(lambda: page.evaluate("!!window.sandboxWorker"), "the service worker")
+        page.wait(lambda: page.evaluate("caches.open('collision-sandbox').then(c => c.keys())"
+                                        ".then(k => window.sandboxKept = k.length), "
+                                        "window.sandboxKept >= 5"), "the files to be kept")
+        server.shutdown()
+        server.server_close()
+        page.reload()
+        s = page.status()
+        check(s["scene"].endswith("/newtons_cradle.json"), f"offline: {s}")
+    finally:
+        page.close()
+    print("served: once visited, the page opened again with the server gone")
+
+
 def shots(base, out_dir):
+    """Screenshots to look at (docs/web/): a phone held upright (the sheet closed, then open), a
+    tablet, a laptop, and the projector cases."""
     os.makedirs(out_dir, exist_ok=True)
     every = "?show=plots,inspector,com,poi,timeline,vectors,trails,sidebyside,cost"
-    # (CSS width, height, device pixel ratio, query): the last is a 1080p projector seen as a
-    # 1280x720 page at ratio 1.5, so the UI scale is 1.5 as the window's --ui-scale 1.5.
-    for w, h, ratio, query in ((1280, 720, 1, ""), (1920, 1080, 1, every), (1280, 720, 1.5, every)):
-        page = Page(w, h, ratio)
+    # (name, CSS width, height, device pixel ratio, touch, query, open the sheet): the 1080p
+    # projector is also seen as a 1280x720 page at ratio 1.5 (the window's --ui-scale 1.5).
+    cases = (("phone_390x844", 390, 844, 3, True, "", False),
+             ("phone_390x844_panel", 390, 844, 3, True, "", True),
+             ("tablet_1024x768", 1024, 768, 2, True, "", False),
+             ("laptop_1366x768", 1366, 768, 1, False, "", False),
+             ("web_1280x720", 1280, 720, 1, False, "", False),
+             ("web_1920x1080_every_overlay", 1920, 1080, 1, False, every, False),
+             ("web_1280x720_ratio1.5_every_overlay", 1280, 720, 1.5, False, every, False))
+    for name, w, h, ratio, touch, query, sheet in cases:
+        page = Page(w, h, ratio, touch)
         try:
             page.open(base + query)
             page.wait_frames(30)
-            path = os.path.join(out_dir, f"web_{w}x{h}_ratio{ratio}.png")
+            if sheet:
+                panel = page.status()["panelOnScreen"]
+                page.tap(panel[0] + 40, panel[1] + panel[3] / 2)
+                page.wait_frames(5)
+            path = os.path.join(out_dir, name + ".png")
             open(path, "wb").write(page.screenshot())
             print(path, f"(first frame after {page.evaluate('window.sandboxFirstFrame'):.0f} ms)")
             check(not page.errors, "\n".join(page.errors))
@@ -498,6 +817,8 @@ def main():
     site, what = sys.argv[1], sys.argv[2]
     if not os.path.exists(CHROMIUM):
         skip("chromium is not installed (scripts/web.sh deps installs it)")
+    if what == "axe" and not os.path.exists(AXE_JS):
+        skip(f"{AXE_JS} is missing (scripts/web.sh deps installs axe-core)")
     if not os.path.exists(os.path.join(site, "index.html")):
         skip(f"{site}/index.html is missing: build the browser build with scripts/web.sh build")
     server = http.server.ThreadingHTTPServer(
@@ -506,7 +827,9 @@ def main():
     base = f"http://127.0.0.1:{server.server_address[1]}/index.html"
     checks = {"first-frame": first_frame, "pause": pause, "url-scene": url_scene,
               "url-lesson": url_lesson, "url-bad": url_bad, "open-file": open_file,
-              "wheel": wheel, "trackers": trackers, "unsaved": unsaved, "link": link}
+              "wheel": wheel, "trackers": trackers, "unsaved": unsaved, "link": link,
+              "axe": axe, "live-region": live_region, "hidden-control": hidden_control,
+              "keyboard": keyboard, "sound": sound}
     try:
         if what == "shots":
             shots(base, sys.argv[3])
@@ -514,6 +837,10 @@ def main():
         if what == "fullscreen":
             for ratio in (1, 2):
                 fullscreen(base, ratio)
+            print("passed")
+            return 0
+        if what in ("phone", "offline"):
+            phone(base) if what == "phone" else offline(site, base)
             print("passed")
             return 0
         page = Page(1280, 720)

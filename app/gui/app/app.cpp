@@ -111,6 +111,7 @@ void resetToFile(App& app) {
 }
 
 FrameOutcome stepSimulation(App& app) {
+    app.sim.inLesson = app.lesson.active();
     return app.sim.step(lessonRunsSideBySide(app.lesson, app.view));
 }
 
@@ -119,6 +120,7 @@ int advanceSimulation(App& app, double realSeconds) {
         app.sim.clock.reset();
         return 0;
     }
+    app.sim.inLesson = app.lesson.active();
     const int frames = app.sim.advance(realSeconds, lessonRunsSideBySide(app.lesson, app.view));
     if (app.lesson.active()) lessonAfterFrames(app.lesson, app.sim, app.view); // its moment
     return frames;

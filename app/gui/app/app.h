@@ -42,6 +42,9 @@ struct UiState {
     // arrows' values; the overlays' labels (point of impact, centre of mass) avoid them.
     std::vector<ScreenRect> takenOnScreen;
     std::string physicsFollowedScene; // the scene the "Physics" header last opened or closed for
+    // The window the keyboard focus goes to this frame (Tab: the panel, F6: the next window);
+    // "" when none. recordShownWindow moves ImGui's navigation there as the window is drawn.
+    std::string keyboardFocus;
     bool helpOpen = false;
     bool firstLaunch = false; // no settings file yet: the start hint names the first keys
     // Dialogs: quit with unsaved edits, and Save (a name, and whether to overwrite).
@@ -57,6 +60,9 @@ struct UiState {
     bool inBrowser = false;
     bool filePickerRequested = false;
     bool copyLinkRequested = false; // "Copy link": the link for what is on screen (browser/link.h)
+    bool touchUi = false;           // sizes for fingers (a touch screen; ui_style.h's uiSetTouch)
+    // Where the bounciness slider was last drawn (px; the window and browser tests press it).
+    ScreenRect bouncinessSlider;
     // Requests to the window backend.
     bool quitRequested = false;
     bool fullscreenRequested = false;

@@ -50,6 +50,12 @@ AppConfig parseAppConfig(const std::string& text) {
             if (parseNumber(value, s) && s == s) {
                 config.labelScale = std::clamp(s, kMinLabelScale, kMaxLabelScale);
             }
+        } else if (key == "sound") {
+            if (value == "on") config.sound = 1;
+            if (value == "off") config.sound = 0;
+        } else if (key == "volume") {
+            float v = 0.8f;
+            if (parseNumber(value, v) && v == v) config.volume = std::clamp(v, 0.0f, 1.0f);
         } else if (key == "window_width") {
             int w = 0;
             if (parseNumber(value, w)) config.windowWidth = std::clamp(w, 320, 16384);
@@ -70,6 +76,8 @@ std::string formatAppConfig(const AppConfig& config) {
     out << "label_scale = " << config.labelScale << "\n";
     out << "window_width = " << config.windowWidth << "\n";
     out << "window_height = " << config.windowHeight << "\n";
+    if (config.sound >= 0) out << "sound = " << (config.sound ? "on" : "off") << "\n";
+    out << "volume = " << config.volume << "\n";
     return out.str();
 }
 

@@ -15,6 +15,8 @@ struct AppConfig {
     bool existed = false;    // loaded from a file (false: the first launch)
     int windowWidth = 1280;
     int windowHeight = 720;
+    int sound = -1;      // the knocks (M): -1 not chosen (on in lessons only), 0 off, 1 on
+    float volume = 0.8f; // of the knocks, 0..1
 };
 
 // Parses the file's text; unknown keys and bad values are ignored (a hand-edited file never

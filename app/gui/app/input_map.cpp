@@ -19,8 +19,20 @@ const std::vector<KeyBinding>& keyBindings() {
         {keys::kU, false, Action::ToggleFrame, "U",
          "Centre-of-mass frame: the view moves with u, arrows show w = v - u (again: the world's)"},
         {keys::kF, false, Action::FitView, "F", "Fit the world into the view"},
-        {keys::kTab, false, Action::TogglePresent, "Tab",
+        {keys::kM, false, Action::ToggleSound, "M",
+         "Sound on / off: a knock at each collision (louder for a harder hit, higher for a "
+         "smaller block, lower on a wall); off by default outside lessons, remembered"},
+        {keys::kF5, false, Action::TogglePresent, "F5",
          "Present mode: only the scene and a caption (again: all back)"},
+        {keys::kTab, false, Action::KeyboardFocus, "Tab",
+         "Keyboard: the focus ring on the panel's first control; then Tab and Shift+Tab go "
+         "from field to field (type a value, Enter), the arrows from control to control"},
+        {-1, false, Action::Navigate, "Arrows, Space, Enter, Esc",
+         "Keyboard, with the focus ring shown: the arrows move to a control; Space presses a "
+         "button, ticks a box, opens a section or a list; Enter types into a slider; Esc leaves "
+         "the controls (the arrows, Space and Enter act on the scene and the lesson again)"},
+        {keys::kF6, false, Action::NextWindow, "F6",
+         "Keyboard: the focus ring on the next window (the panel, each overlay window, Help)"},
         {keys::kF11, false, Action::ToggleFullscreen, "F11", "Fullscreen"},
         {keys::kF1, false, Action::ToggleHelp, "F1", "This help"},
         {keys::kEqual, true, Action::UiScaleUp, "Ctrl+=", "Larger UI (projector)", true, false,
@@ -72,6 +84,15 @@ const std::vector<KeyBinding>& keyBindings() {
         return all;
     }();
     return withDigits;
+}
+
+bool navigationKey(int key) {
+    static const int kNavigationKeys[] = {keys::kLeft,        keys::kRight, keys::kUp,
+                                          keys::kDown,        keys::kSpace, keys::kEnter,
+                                          keys::kKeypadEnter, keys::kTab,   keys::kEscape};
+    for (int k : kNavigationKeys)
+        if (k == key) return true;
+    return false;
 }
 
 int digitOfKey(int key) {
@@ -140,8 +161,16 @@ const char* actionName(Action action) {
         return "frame";
     case Action::FitView:
         return "fit-view";
+    case Action::ToggleSound:
+        return "sound";
     case Action::TogglePresent:
         return "present";
+    case Action::KeyboardFocus:
+        return "keyboard-focus";
+    case Action::NextWindow:
+        return "next-window";
+    case Action::Navigate:
+        return "navigate";
     case Action::ToggleFullscreen:
         return "fullscreen";
     case Action::ToggleHelp:

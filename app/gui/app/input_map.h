@@ -16,6 +16,7 @@ constexpr int kEqual = 61;
 constexpr int kC = 67;
 constexpr int kD = 68;
 constexpr int kF = 70;
+constexpr int kM = 77;
 constexpr int kN = 78;
 constexpr int kP = 80;
 constexpr int kQ = 81;
@@ -37,6 +38,8 @@ constexpr int kPageDown = 267;
 constexpr int kHome = 268;
 constexpr int kEnd = 269;
 constexpr int kF1 = 290;
+constexpr int kF5 = 294;
+constexpr int kF6 = 295;
 constexpr int kF11 = 300;
 constexpr int kKeypad0 = 320; // kKeypad0 + d for the digit d
 constexpr int kKeypadSubtract = 333;
@@ -57,7 +60,11 @@ enum class Action {
     ToggleVectors,    // V: velocity arrows
     ToggleFrame,      // U: the centre-of-mass frame (the camera moves with u) or the world's
     FitView,          // F: show the whole world
-    TogglePresent,    // Tab: present mode (the scene and a caption only)
+    ToggleSound,      // M: a knock at each collision (off by default outside lessons)
+    TogglePresent,    // F5: present mode (the scene and a caption only), as slides start
+    KeyboardFocus,    // Tab: keyboard focus on the panel (ImGui's navigation, a focus ring)
+    NextWindow,       // F6: keyboard focus on the next window (panel, overlays, Help)
+    Navigate, // arrows, Space, Enter, Esc with the focus ring shown: ImGui's (navigationKey)
     ToggleFullscreen, // F11
     ToggleHelp,       // F1
     UiScaleUp,        // Ctrl+=
@@ -108,6 +115,10 @@ struct KeyBinding {
 
 // Every binding, in the order the Help window lists them.
 const std::vector<KeyBinding>& keyBindings();
+// The keys ImGui's keyboard navigation uses (arrows, Space, Enter, Tab, Esc): while its focus
+// ring is shown they move, press and leave the panel's controls, and no binding above applies
+// (the arrows step a lesson or push a thrust again once Esc has hidden the ring).
+bool navigationKey(int key);
 // The action for `key` pressed with (or without) Ctrl and Shift, with thrust on or off;
 // Action::None when unbound. A key bound without Shift also answers with Shift held when it has
 // no Shift binding of its own. In the browser (`browser`), keys the browser keeps answer None.

@@ -94,6 +94,10 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
                    "Offscreen: after --frames, go back to this frame on the timeline (as its "
                    "slider does): the replay as the overlays show it")
         ->check(CLI::Range(0LL, 10000000LL));
+    app.add_option("--audio-wav", o.audioWav,
+                   "Offscreen: write what would be heard of the frames simulated (--frames N, or "
+                   "--record's) to this WAV file (mono, 16 bit, 44.1 kHz; sound on at full "
+                   "volume); alone, nothing is rendered");
     std::string traceUnits, pxPerM, pxOrigin;
     app.add_option("--compare", o.compareTrace,
                    "Open a trace your engine printed (CSV: t, then NAME_x, NAME_y, NAME_vx, "

@@ -2,6 +2,7 @@
 //   sandbox [SCENE] [--screenshot FILE] [--frames N] [--size WxH] [--show LIST]
 //           [--record DIR] [--benchmark-frames N] [--ui-scale S] [--verbose] [--present]
 //           [--layout-json FILE] [--frame world|com] [--theme dark|light] [--timeline-frame N]
+//           [--audio-wav FILE]
 //           [--compare TRACE.csv [--trace-units si|gxp --px-per-m N --px-origin X,Y]]
 #pragma once
 
@@ -35,6 +36,7 @@ struct Options {
     std::optional<ViewFrame> frame; // --frame: start in this frame (a lesson's steps choose theirs)
     std::string theme;              // --theme dark|light; "": the saved setting (window) or dark
     long long timelineFrame = -1;   // offscreen: after --frames, back to this frame (the timeline)
+    std::string audioWav;           // offscreen: the knocks of the frames simulated, as a WAV file
     // --compare FILE: a trace of the student's engine opened on the scene (docs/compare.md), in
     // --trace-units (si, or gxp with --px-per-m and --px-origin).
     std::string compareTrace;
@@ -56,5 +58,5 @@ ParsedOptions parseOptions(int argc, const char* const* argv);
 // True when the run renders offscreen rather than opening a window.
 inline bool wantsOffscreen(const Options& o) {
     return !o.screenshot.empty() || !o.record.empty() || o.benchmarkFrames > 0 ||
-           !o.recordSteps.empty();
+           !o.recordSteps.empty() || !o.audioWav.empty();
 }

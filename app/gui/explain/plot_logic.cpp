@@ -155,3 +155,38 @@ std::vector<std::size_t> columnExtremes(const std::vector<float>& xs, const std:
     }
     return kept;
 }
+
+std::vector<std::vector<PlotPoint>> dashPieces(const std::vector<PlotPoint>& line, Dash dash,
+                                               float unit) {
+    if (dash == Dash::Solid || line.size() < 2 || !(unit > 0.0f)) return {line};
+    const float on = dash == Dash::Dashed ? 3.0f * unit : unit;
+    const float off = dash == Dash::Dashed ? 2.0f * unit : 1.5f * unit;
+    std::vector<std::vector<PlotPoint>> pieces;
+    bool drawing = true;
+    float left = on; // px until the pattern switches
+    std::vector<PlotPoint> piece{line[0]};
+    for (std::size_t i = 1; i < line.size(); ++i) {
+        PlotPoint from = line[i - 1];
+        const PlotPoint to = line[i];
+        float length = std::hypot(to.x - from.x, to.y - from.y);
+        while (length > left) {
+            const float t = left / length;
+            const PlotPoint at{from.x + (to.x - from.x) * t, from.y + (to.y - from.y) * t};
+            if (drawing) {
+                piece.push_back(at);
+                pieces.push_back(piece);
+                piece.clear();
+            } else {
+                piece = {at};
+            }
+            drawing = !drawing;
+            length -= left;
+            from = at;
+            left = drawing ? on : off;
+        }
+        left -= length;
+        if (drawing) piece.push_back(to);
+    }
+    if (drawing && piece.size() >= 2) pieces.push_back(piece);
+    return pieces;
+}

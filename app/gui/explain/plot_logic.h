@@ -40,6 +40,17 @@ PlotRange paddedRange(double lo, double hi, double margin = 0.08);
 std::vector<std::size_t> columnExtremes(const std::vector<float>& xs, const std::vector<float>& ys,
                                         float columnPx);
 
+// How a plot series' line is drawn, besides its colour: a second cue for telling series apart.
+enum class Dash { Solid, Dashed, Dotted };
+struct PlotPoint {
+    float x, y;
+};
+// The pieces of `line` (px) that a dash pattern draws: Solid the whole line; Dashed `unit`*3
+// drawn and `unit`*2 left out, Dotted `unit` drawn and `unit`*1.5 left out, measured along the
+// line (the pattern runs on across its corners). Each piece is a polyline of its own.
+std::vector<std::vector<PlotPoint>> dashPieces(const std::vector<PlotPoint>& line, Dash dash,
+                                               float unit);
+
 // Samples (t, v[0..k)) in a ring buffer of `capacity`; the oldest are dropped.
 class TimeSeries {
   public:

@@ -61,8 +61,7 @@ void drawMomentaDiagram(App& app) {
     ImGui::InvisibleButton("##momenta", ImVec2(std::max(avail.x, 40.0f), std::max(avail.y, 40.0f)));
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-    dl->AddRectFilled(
-        lo, hi, uiLightTheme() ? IM_COL32(255, 255, 255, 235) : IM_COL32(10, 12, 18, 150), 3.0f);
+    dl->AddRectFilled(lo, hi, plotAreaColor(uiLightTheme()).packed(), 3.0f);
     Vec2 mn{0.0, 0.0}, mx{0.0, 0.0};
     for (const Vec2& t : tips) {
         mn = Vec2{std::min(mn.x, t.x), std::min(mn.y, t.y)};
@@ -101,14 +100,14 @@ void drawMomentaDiagram(App& app) {
     const ImVec2 off = len > 1.0f ? ImVec2(-dy / len * shift, dx / len * shift) : ImVec2(0, 0);
     a = ImVec2(a.x + off.x, a.y + off.y);
     b = ImVec2(b.x + off.x, b.y + off.y);
-    arrow(dl, a, b, uiThemed(overlay_colors::kTotal), width * 1.3f, head * 1.2f);
-    dl->AddCircleFilled(map(Vec2{}), width * 1.5f, uiThemed(overlay_colors::kTotal));
+    arrow(dl, a, b, uiMarkColor(Mark::Total), width * 1.3f, head * 1.2f);
+    dl->AddCircleFilled(map(Vec2{}), width * 1.5f, uiMarkColor(Mark::Total));
     if (len > 1.0f) {
         const char* text = "total";
         const ImVec2 ts = ImGui::CalcTextSize(text);
         dl->AddText(
             ImVec2((a.x + b.x - ts.x) * 0.5f + off.x * 1.5f, (a.y + b.y) * 0.5f + off.y * 1.2f),
-            uiThemed(overlay_colors::kTotal), text);
+            uiMarkColor(Mark::Total), text);
     }
 }
 
@@ -120,7 +119,7 @@ void drawComOverlay(App& app) {
         ImDrawList* dl = ImGui::GetBackgroundDrawList();
         const ImVec2 p = toScreen(app, c.position);
         const float r = 9.0f * app.view.uiScale;
-        const ImU32 col = uiThemed(overlay_colors::kCom);
+        const ImU32 col = uiMarkColor(Mark::CentreOfMass);
         // In its own frame the centre of mass stands still: no arrow.
         const Vec2 tip =
             c.position +

@@ -14,9 +14,9 @@ namespace {
 
 ImU32 engineColor(const std::string& engine) {
     Method m;
-    if (parseMethod(engine.c_str(), m)) return methodColor(m).packed();
-    if (engine == "chipmunk") return IM_COL32(120, 200, 230, 255);
-    return IM_COL32(200, 200, 210, 255); // box2d
+    if (parseMethod(engine.c_str(), m)) return uiMarkColor(methodMark(m));
+    if (engine == "chipmunk") return uiThemed(IM_COL32(120, 200, 230, 255));
+    return uiThemed(IM_COL32(200, 200, 210, 255)); // box2d
 }
 
 void tradeoffChart(CostMeasurement& cost) {
@@ -71,14 +71,13 @@ void drawCostOverlay(App& app) {
             const Method method = static_cast<Method>(m);
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            const Color c = methodColor(method);
-            ImGui::TextColored(uiThemed(ImVec4(c.r, c.g, c.b, 1.0f)), "%s", methodName(method));
+            ImGui::TextColored(uiMarkColorVec(methodMark(method)), "%s", methodName(method));
             ImGui::TableNextColumn();
             ImGui::Text("%.3f ms/step", cost.msPerStep(method));
         }
         ImGui::EndTable();
     }
-    if (ImGui::SmallButton("Measure again")) cost.measure(app.sim.world(), app.sim.scenePath);
+    if (uiSmallButton("Measure again")) cost.measure(app.sim.world(), app.sim.scenePath);
     ImGui::SameLine();
     dimText("(a copy, 30 frames per method)");
     ImGui::Separator();

@@ -58,7 +58,7 @@ void studentTraceSection(App& app) {
             }
         }
         for (const std::string& line : diagnosisLines(c)) textWrappedAtSpaces(line);
-        if (ImGui::SmallButton("go to the first difference")) goToFirstDifference(app);
+        if (uiSmallButton("go to the first difference")) goToFirstDifference(app);
     }
     ImGui::Separator();
 }

@@ -5,6 +5,7 @@
 #include "csv_export.h"
 #include "overlay_window.h"
 #include "plot_widget.h"
+#include "ui_style.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,11 +20,12 @@ std::vector<double> markersIn(const std::deque<double>& times) {
 }
 
 // Series `channel` of `ts` within [window.lo, window.hi] and [from, to].
-PlotSeries series(const char* label, ImU32 color, const TimeSeries& ts, int channel,
+PlotSeries series(const char* label, ImU32 color, Dash dash, const TimeSeries& ts, int channel,
                   PlotRange window, double from, double to) {
     PlotSeries s;
     s.label = label;
     s.color = color;
+    s.dash = dash;
     for (std::size_t i = ts.firstAtOrAfter(std::max(window.lo, from)); i < ts.size(); ++i) {
         const double t = ts.time(i);
         if (t > std::min(window.hi, to) + 1e-12) break;
@@ -35,18 +37,20 @@ PlotSeries series(const char* label, ImU32 color, const TimeSeries& ts, int chan
 
 // A series up to `now` and, while the timeline replays, its recorded future, faded and without
 // a legend entry.
-void addSeries(std::vector<PlotSeries>& out, const char* label, ImU32 color, const TimeSeries& ts,
-               int channel, PlotRange window, double now, bool replaying) {
-    out.push_back(series(label, color, ts, channel, window, -INFINITY, now));
+void addSeries(std::vector<PlotSeries>& out, const char* label, ImU32 color, Dash dash,
+               const TimeSeries& ts, int channel, PlotRange window, double now, bool replaying) {
+    out.push_back(series(label, color, dash, ts, channel, window, -INFINITY, now));
     if (!replaying) return;
     const ImU32 faded = (color & ~IM_COL32_A_MASK) | IM_COL32(0, 0, 0, 70);
-    out.push_back(series("", faded, ts, channel, window, now, INFINITY));
+    out.push_back(series("", faded, dash, ts, channel, window, now, INFINITY));
 }
 
-// The three plots, in one table: what each draws and what its CSV button writes.
+// The three plots, in one table: what each draws and what its CSV button writes. The series of
+// a plot differ by colour (palette.h's marks) and by dash pattern.
 struct PlotChannel {
     const char* label; // in the legend
-    ImU32 color;
+    Mark mark;
+    Dash dash;
     const char* column; // its CSV column, with the unit
 };
 struct PlotRow {
@@ -60,30 +64,31 @@ struct PlotRow {
 };
 
 const std::vector<PlotRow>& plotRows() {
-    using namespace overlay_colors;
     static const std::vector<PlotRow> rows{
         {"velocity",
          "v of",
          "m/s",
          &Telemetry::velocity,
          &Telemetry::watchedCollisionTimes,
-         {{"vx", kX, "vx (m/s)"}, {"vy", kY, "vy (m/s)"}},
+         {{"vx", Mark::PlotX, Dash::Solid, "vx (m/s)"},
+          {"vy", Mark::PlotY, Dash::Dashed, "vy (m/s)"}},
          true},
         {"momentum",
          "total momentum",
          "kg·m/s",
          &Telemetry::momentum,
          &Telemetry::collisionTimes,
-         {{"px", kX, "px (kg*m/s)"}, {"py", kY, "py (kg*m/s)"}},
+         {{"px", Mark::PlotX, Dash::Solid, "px (kg*m/s)"},
+          {"py", Mark::PlotY, Dash::Dashed, "py (kg*m/s)"}},
          false},
         {"energy",
          "energy",
          "J",
          &Telemetry::energy,
          &Telemetry::collisionTimes,
-         {{"kinetic", kKinetic, "kinetic (J)"},
-          {"potential", kPotential, "potential (J)"},
-          {"total", kTotal, "total (J)"}},
+         {{"kinetic", Mark::Kinetic, Dash::Solid, "kinetic (J)"},
+          {"potential", Mark::Potential, Dash::Dashed, "potential (J)"},
+          {"total", Mark::Total, Dash::Dotted, "total (J)"}},
          false},
     };
     return rows;
@@ -99,7 +104,7 @@ void exportButtons(App& app) {
     ImGui::TextDisabled("CSV:");
     for (const PlotRow& row : plotRows()) {
         ImGui::SameLine();
-        if (!ImGui::SmallButton(row.name)) continue;
+        if (!uiSmallButton(row.name)) continue;
         const std::string prefix =
             row.ofWatchedBlock && app.sim.telemetry.watched >= 0 ? watchedName(app) + " " : "";
         std::vector<std::string> columns;
@@ -145,8 +150,9 @@ void drawPlotsOverlay(App& app) {
         o.yUnit = row.unit;
         std::vector<PlotSeries> series;
         for (std::size_t c = 0; c < row.channels.size(); ++c)
-            addSeries(series, row.channels[c].label, row.channels[c].color, tm.*row.series,
-                      static_cast<int>(c), window, now, replaying);
+            addSeries(series, row.channels[c].label, uiMarkColor(row.channels[c].mark),
+                      row.channels[c].dash, tm.*row.series, static_cast<int>(c), window, now,
+                      replaying);
         const std::string id = std::string("##") + row.name;
         drawPlot(id.c_str(), o, series, markersIn(tm.*row.markers));
     }

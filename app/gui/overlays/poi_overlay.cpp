@@ -15,19 +15,14 @@
 
 namespace {
 
-constexpr ImU32 kOld = IM_COL32(200, 205, 215, 230);
-constexpr ImU32 kNew = IM_COL32(255, 90, 80, 240);
-constexpr ImU32 kGhost = IM_COL32(90, 235, 130, 255);
-constexpr ImU32 kCrooked = IM_COL32(255, 170, 50, 240);
-
 ImVec2 toScreen(const App& app, Vec2 p) {
     const Vec2 s = app.view.camera.worldToScreen(p);
     return ImVec2(static_cast<float>(s.x), static_cast<float>(s.y));
 }
 
-void box(const App& app, ImDrawList* dl, Vec2 centre, Vec2 size, ImU32 darkColor, float width,
+void box(const App& app, ImDrawList* dl, Vec2 centre, Vec2 size, Mark mark, float width,
          bool dashed) {
-    const ImU32 color = uiThemed(darkColor);
+    const ImU32 color = uiMarkColor(mark);
     const ImVec2 a = toScreen(app, centre - size * 0.5), b = toScreen(app, centre + size * 0.5);
     const ImVec2 lo(std::min(a.x, b.x), std::min(a.y, b.y)),
         hi(std::max(a.x, b.x), std::max(a.y, b.y));
@@ -49,10 +44,10 @@ void box(const App& app, ImDrawList* dl, Vec2 centre, Vec2 size, ImU32 darkColor
     }
 }
 
-void label(ImDrawList* dl, ImVec2 at, ImU32 color, const std::string& text) {
+void label(ImDrawList* dl, ImVec2 at, Mark mark, const std::string& text) {
     if (!uiLightTheme())
         dl->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 230), text.c_str());
-    dl->AddText(at, uiThemed(color), text.c_str());
+    dl->AddText(at, uiMarkColor(mark), text.c_str());
 }
 
 } // namespace
@@ -64,20 +59,21 @@ void drawPoiOverlay(App& app) {
     if (!p.valid || p.block < 0 || p.block >= static_cast<int>(app.sim.world().blocks.size())) {
         const char* text = "Point of impact: shown after the watched block's next collision";
         const ImVec2 size = ImGui::CalcTextSize(text);
-        label(dl, sceneCaptionPlace(app, size.x, size.y, {}), kOld, text);
+        label(dl, sceneCaptionPlace(app, size.x, size.y, {}), Mark::PoiOld, text);
         return;
     }
     const float w = 2.0f * s;
     // The path of the frame, old centre to new centre.
-    dl->AddLine(toScreen(app, p.oldPosition), toScreen(app, p.newPosition), kOld, 1.5f * s);
-    box(app, dl, p.oldPosition, p.size, kOld, w, true);
-    box(app, dl, p.newPosition, p.size, kNew, w, true);
-    box(app, dl, p.crooked, p.size, kCrooked, w, false);
-    box(app, dl, p.ghost, p.size, kGhost, w * 1.3f, false);
+    dl->AddLine(toScreen(app, p.oldPosition), toScreen(app, p.newPosition),
+                uiMarkColor(Mark::PoiOld), 1.5f * s);
+    box(app, dl, p.oldPosition, p.size, Mark::PoiOld, w, true);
+    box(app, dl, p.newPosition, p.size, Mark::PoiNew, w, true);
+    box(app, dl, p.crooked, p.size, Mark::PoiMovedBack, w, false);
+    box(app, dl, p.ghost, p.size, Mark::PoiContact, w * 1.3f, false);
     // Each label on its own side of its box: old above, new right, POI left, moved back below.
     const float hw = static_cast<float>(app.view.camera.metresToPixels(p.size.x * 0.5));
     const float hh = static_cast<float>(app.view.camera.metresToPixels(p.size.y * 0.5));
-    auto place = [&](Vec2 c, const char* text, ImU32 color, int side) {
+    auto place = [&](Vec2 c, const char* text, Mark mark, int side) {
         const ImVec2 sc = toScreen(app, c);
         const ImVec2 ts = ImGui::CalcTextSize(text);
         const float g = 4.0f * s;
@@ -85,12 +81,12 @@ void drawPoiOverlay(App& app) {
                           : side == 1 ? ImVec2(sc.x + hw + g, sc.y - ts.y * 0.5f)
                           : side == 2 ? ImVec2(sc.x - hw - g - ts.x, sc.y - ts.y * 0.5f)
                                       : ImVec2(sc.x - ts.x * 0.5f, sc.y + hh + g);
-        label(dl, placeSceneLabel(app, at, ts), color, text);
+        label(dl, placeSceneLabel(app, at, ts), mark, text);
     };
-    place(p.oldPosition, "old", kOld, 0);
-    place(p.newPosition, "new", kNew, 1);
-    place(p.ghost, "POI", kGhost, 2);
-    if (length(p.crooked - p.ghost) > 1e-9) place(p.crooked, "moved back", kCrooked, 3);
+    place(p.oldPosition, "old", Mark::PoiOld, 0);
+    place(p.newPosition, "new", Mark::PoiNew, 1);
+    place(p.ghost, "POI", Mark::PoiContact, 2);
+    if (length(p.crooked - p.ghost) > 1e-9) place(p.crooked, "moved back", Mark::PoiMovedBack, 3);
 
     // The caption: the numbers of t = a/b.
     const char axis = p.axis == 0 ? 'x' : 'y';
@@ -104,9 +100,10 @@ void drawPoiOverlay(App& app) {
         std::string("moved back along ") + axis + " only: (" + formatNumber(p.crooked.x) + ", " +
             formatNumber(p.crooked.y) + "), crooked",
     };
-    const ImU32 colors[4] = {IM_COL32(230, 234, 242, 255), kGhost, kGhost, kCrooked};
+    const ImU32 colors[4] = {uiThemed(IM_COL32(230, 234, 242, 255)), uiMarkColor(Mark::PoiContact),
+                             uiMarkColor(Mark::PoiContact), uiMarkColor(Mark::PoiMovedBack)};
     std::vector<CaptionLine> caption;
-    for (int i = 0; i < 4; ++i) caption.push_back({lines[i], colors[i]});
+    for (int i = 0; i < 4; ++i) caption.push_back({lines[i], colors[i], true});
     std::vector<WorldBox> boxes;
     for (Vec2 c : {p.oldPosition, p.newPosition, p.ghost, p.crooked}) boxes.push_back({c, p.size});
     drawSceneCaption(app, caption, boxes);

@@ -35,8 +35,7 @@ void drawSideBySideOverlay(App& app) {
             const bool live = method == app.sim.world().settings.method;
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            const Color c = methodColor(method);
-            ImGui::TextColored(uiThemed(ImVec4(c.r, c.g, c.b, 1.0f)), "%s%s", methodName(method),
+            ImGui::TextColored(uiMarkColorVec(methodMark(method)), "%s%s", methodName(method),
                                live ? " (live)" : "");
             ImGui::TableNextColumn();
             ImGui::Text("%lld", static_cast<long long>(r.totals.collisions));

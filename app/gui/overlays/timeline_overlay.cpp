@@ -24,7 +24,7 @@ void markFirstDifference(App& app, std::uint64_t first, std::uint64_t last) {
     }
     char text[96];
     std::snprintf(text, sizeof text, "first difference: frame %lld", static_cast<long long>(at));
-    if (ImGui::SmallButton(text)) goToFirstDifference(app);
+    if (uiSmallButton(text)) goToFirstDifference(app);
 }
 
 } // namespace

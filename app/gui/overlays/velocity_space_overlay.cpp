@@ -16,11 +16,6 @@ namespace {
 
 // Points of the path drawn at most (a software rasteriser pays for each).
 constexpr std::size_t kPathSegments = 3000;
-constexpr ImU32 kCircle = overlay_colors::kKinetic;
-constexpr ImU32 kLine = overlay_colors::kMomentum;
-constexpr ImU32 kReflection = IM_COL32(170, 180, 200, 200);
-constexpr ImU32 kPath = IM_COL32(90, 200, 255, 200);
-constexpr ImU32 kChord = IM_COL32(90, 200, 255, 150);
 constexpr std::size_t kChords = 40; // the path's last steps drawn as lines
 constexpr ImU32 kAxes = IM_COL32(255, 255, 255, 70);
 
@@ -56,8 +51,7 @@ void drawPicture(App& app, const VelocitySpacePath& path, ImVec2 lo, float side)
     };
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 hi(lo.x + side, lo.y + side);
-    dl->AddRectFilled(
-        lo, hi, uiLightTheme() ? IM_COL32(255, 255, 255, 235) : IM_COL32(10, 12, 18, 150), 3.0f);
+    dl->AddRectFilled(lo, hi, plotAreaColor(uiLightTheme()).packed(), 3.0f);
     dl->PushClipRect(lo, hi, true);
     // Axes: a wall hit flips one coordinate, a reflection across the other axis.
     dl->AddLine(ImVec2(lo.x, centre.y), ImVec2(hi.x, centre.y), uiThemed(kAxes), 1.0f);
@@ -65,7 +59,7 @@ void drawPicture(App& app, const VelocitySpacePath& path, ImVec2 lo, float side)
     const float width = std::max(1.5f, font * 0.1f);
     // The block-block reflection line, through the origin along (sqrt(m1), sqrt(m2)).
     const Vec2 n = normalized(Vec2{std::sqrt(pair.m1), std::sqrt(pair.m2)});
-    dashedLine(dl, map(n * (-2.0 * extent)), map(n * (2.0 * extent)), uiThemed(kReflection),
+    dashedLine(dl, map(n * (-2.0 * extent)), map(n * (2.0 * extent)), uiMarkColor(Mark::Reflection),
                font * 0.4f, width);
     // The path: every state a dot (thinned to at most kPathSegments), the last kChords steps
     // as lines (thousands of chords would fill the disc; the dots show where they land).
@@ -73,20 +67,20 @@ void drawPicture(App& app, const VelocitySpacePath& path, ImVec2 lo, float side)
     const std::size_t stride = std::max<std::size_t>(1, samples.size() / kPathSegments);
     for (std::size_t k = 0; k < samples.size(); k += stride)
         dl->AddCircleFilled(map(velocitySpacePoint(pair, samples[k].v1, samples[k].v2)),
-                            width * 0.8f, uiThemed(kPath), 6);
+                            width * 0.8f, uiMarkColor(Mark::VelocityPath), 6);
     const std::size_t first = samples.size() > kChords ? samples.size() - kChords : 0;
     for (std::size_t k = first + 1; k < samples.size(); ++k) {
         dl->AddLine(map(velocitySpacePoint(pair, samples[k - 1].v1, samples[k - 1].v2)),
-                    map(velocitySpacePoint(pair, samples[k].v1, samples[k].v2)), uiThemed(kChord),
-                    1.0f);
+                    map(velocitySpacePoint(pair, samples[k].v1, samples[k].v2)),
+                    uiMarkColor(Mark::VelocityPath), 1.0f);
     }
     // Kinetic energy: the circle through the state, radius sqrt(2·KE).
     const float r = static_cast<float>(length(now) * scale);
-    if (r > 1.0f) dl->AddCircle(centre, r, uiThemed(kCircle), 64, width);
+    if (r > 1.0f) dl->AddCircle(centre, r, uiMarkColor(Mark::Kinetic), 64, width);
     // Momentum: the line sqrt(m1)·x + sqrt(m2)·y = p through the state, across n.
     const Vec2 t = perpendicular(n); // over the path, as the circle
-    dl->AddLine(map(now - t * (3.0 * extent)), map(now + t * (3.0 * extent)), uiThemed(kLine),
-                width);
+    dl->AddLine(map(now - t * (3.0 * extent)), map(now + t * (3.0 * extent)),
+                uiMarkColor(Mark::Momentum), width);
     dl->AddCircleFilled(map(now), font * 0.3f, uiThemed(IM_COL32(255, 255, 255, 240)));
     // Axis names, where there is room for them (the caption names the axes too).
     if (side < 9.0f * font) {
@@ -130,7 +124,7 @@ void drawVelocitySpaceOverlay(App& app) {
     drawPicture(app, path, lo, side);
     if (beside) ImGui::SameLine();
     ImGui::BeginChild("##velocityspace-caption", ImVec2(0.0f, 0.0f), false);
-    if (ImGui::SmallButton("CSV")) {
+    if (uiSmallButton("CSV")) {
         exportCsv(app, "velocity space",
                   velocitySpaceTable(path, app.sim.blockDisplayName(pair.block1),
                                      app.sim.blockDisplayName(pair.block2)));

@@ -1,5 +1,6 @@
 #include "canvas_web.h"
 
+#include "app_frame.h"
 #include "browser_input.h"
 #include "input_map.h"
 #include "ui_renderer_gl.h"
@@ -20,9 +21,31 @@ namespace {
 
 CanvasWeb* gCanvas = nullptr; // the one canvas, for the callbacks from the page
 
-void onKey(GLFWwindow*, int key, int, int action, int mods) {
-    if (!gCanvas || action != GLFW_PRESS) return;
-    gCanvas->keyPresses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0});
+// Keys for the app (presses, queued) and for ImGui, which sees only the keys down when a frame
+// starts: a key pressed and released between two frames (an on-screen keyboard's Enter, often)
+// would be lost, so its release waits until a frame has seen it down.
+void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
+    if (!gCanvas) return;
+    CanvasWeb& c = *gCanvas;
+    if (action == GLFW_PRESS) {
+        c.keyPresses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0});
+        c.keysSinceFrame.push_back(key);
+    } else if (action == GLFW_RELEASE && std::find(c.keysSinceFrame.begin(), c.keysSinceFrame.end(),
+                                                   key) != c.keysSinceFrame.end()) {
+        c.releasesLater.push_back({key, scancode, mods});
+        return;
+    }
+    ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+}
+
+// At a frame's start: the releases held back for the frame before are let through, and those
+// held back since wait for this frame.
+void releaseHeldKeys(CanvasWeb& c) {
+    for (const CanvasWeb::HeldRelease& r : c.releasesNow)
+        ImGui_ImplGlfw_KeyCallback(c.window, r.key, r.scancode, GLFW_RELEASE, r.mods);
+    c.releasesNow.swap(c.releasesLater);
+    c.releasesLater.clear();
+    c.keysSinceFrame.clear();
 }
 
 void onDrop(GLFWwindow*, int count, const char** paths) {
@@ -40,6 +63,7 @@ EM_JS(void, page_canvas_size, (double* out), {
     HEAPF64[(out >> 3) + 1] = s.height;
     HEAPF64[(out >> 3) + 2] = s.ratio;
     HEAPF64[(out >> 3) + 3] = s.fullscreen ? 1 : 0;
+    HEAPF64[(out >> 3) + 4] = s.touch ? 1 : 0;
 });
 // The canvas's backing store, and what emscripten's GLFW reports as the window's and the
 // framebuffer's size (both framebuffer pixels here). Not glfwSetWindowSize: it asks for full
@@ -72,6 +96,9 @@ EM_JS(void, page_open_file_picker, (), { window.sandboxPage.openFilePicker(); })
 EM_JS(void, page_download, (const char* path), { window.sandboxPage.download(UTF8ToString(path)); });
 EM_JS(void, page_toggle_fullscreen, (), { window.sandboxPage.toggleFullscreen(); });
 EM_JS(void, page_first_frame_shown, (), { window.sandboxPage.firstFrameShown(); });
+EM_JS(void, page_set_typing, (int typing), { window.sandboxPage.setTyping(!!typing); });
+EM_JS(void, page_show_state, (const char* json), { window.sandboxPage.showState(UTF8ToString(json)); });
+EM_JS(void, page_announce, (const char* text), { window.sandboxPage.announce(UTF8ToString(text)); });
 EM_JS(void, page_set_unsaved_edits, (int unsaved), { window.sandboxPage.setUnsavedEdits(!!unsaved); });
 EM_JS(void, page_set_link, (const char* query, const char* scene), {
     window.sandboxPage.setLink(UTF8ToString(query), UTF8ToString(scene));
@@ -93,9 +120,10 @@ std::string takeString(char* text) {
 // The canvas follows its CSS size (the page's stylesheet: the whole viewport, in or out of full
 // screen): its backing store is that size times the device pixel ratio, at any ratio.
 void followPage(CanvasWeb& c) {
-    double css[4] = {0.0, 0.0, 1.0, 0.0};
+    double css[5] = {0.0, 0.0, 1.0, 0.0, 0.0};
     page_canvas_size(css);
     c.fullscreen = css[3] != 0.0;
+    c.touchScreen = css[4] != 0.0;
     const double ratio = css[2] > 0.0 && std::isfinite(css[2]) ? css[2] : 1.0;
     const int width = std::max(1, static_cast<int>(std::lround(css[0] * ratio)));
     const int height = std::max(1, static_cast<int>(std::lround(css[1] * ratio)));
@@ -122,6 +150,20 @@ extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_wheel(double deltaX, double del
     if (n.x != 0.0 || n.y != 0.0) ImGui_ImplGlfw_ScrollCallback(gCanvas->window, n.x, n.y);
 }
 
+// Called by web/index.html for each finger that went down, moved or lifted (CSS pixels from the
+// canvas's corner, ms on the page's clock).
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_touch(int phase, int id, double x, double y,
+                                                       double ms) {
+    if (!gCanvas || phase < 0 || phase > 3 || !std::isfinite(x) || !std::isfinite(y)) return;
+    const double r = gCanvas->devicePixelRatio;
+    gCanvas->touches.push_back({static_cast<TouchPhase>(phase), id, {x * r, y * r}, ms / 1000.0});
+}
+
+// Called by web/index.html when a real mouse moves: the pointer is the mouse's again.
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_mouse_moved() {
+    if (gCanvas) gCanvas->mouseMoved = true;
+}
+
 // Called by web/index.html for a two-finger move: midpoints and spread in CSS pixels.
 extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_gesture(double fromX, double fromY, double toX,
                                                          double toY, double spreadRatio) {
@@ -146,7 +188,6 @@ bool canvasInit(CanvasWeb& c, std::string* error) {
     }
     glfwMakeContextCurrent(c.window);
     gCanvas = &c;
-    glfwSetKeyCallback(c.window, onKey);
     glfwSetDropCallback(c.window, onDrop);
     followPage(c);
     std::string uiError;
@@ -155,6 +196,7 @@ bool canvasInit(CanvasWeb& c, std::string* error) {
         canvasShutdown(c);
         return false;
     }
+    glfwSetKeyCallback(c.window, onKey); // instead of ImGui's, which onKey calls
     c.lastTime = glfwGetTime();
     return true;
 }
@@ -171,6 +213,7 @@ void canvasShutdown(CanvasWeb& c) {
 
 void canvasNewFrame(CanvasWeb& c, double* realSeconds) {
     followPage(c);
+    releaseHeldKeys(c);
     const double now = glfwGetTime();
     if (realSeconds) *realSeconds = now - c.lastTime;
     c.lastTime = now;
@@ -224,6 +267,14 @@ void pageFirstFrameShown() {
     page_first_frame_shown();
 }
 
+void pageShowState(const std::string& json) {
+    page_show_state(json.c_str());
+}
+
+void pageAnnounce(const std::string& text) {
+    page_announce(text.c_str());
+}
+
 void pageSetUnsavedEdits(bool unsaved) {
     page_set_unsaved_edits(unsaved ? 1 : 0);
 }
@@ -242,4 +293,14 @@ std::string pageLinkScene() {
 
 std::string pageLinkError() {
     return takeString(page_link_error());
+}
+
+std::vector<TouchEvent> canvasTakeTouches(CanvasWeb& c) {
+    std::vector<TouchEvent> touches;
+    touches.swap(c.touches);
+    return touches;
+}
+
+void pageSetTyping(bool typing) {
+    page_set_typing(typing ? 1 : 0);
 }

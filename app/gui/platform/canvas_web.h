@@ -6,6 +6,7 @@
 #pragma once
 
 #include "input_map.h"
+#include "touch_input.h"
 #include "vec2.h"
 
 #include <string>
@@ -20,11 +21,28 @@ struct TouchGesture {
     double spreadRatio = 1.0;
 };
 
+// A finger's event from the page (touch_input.h), in framebuffer pixels and seconds.
+struct TouchEvent {
+    TouchPhase phase;
+    int id;
+    Vec2 pos;
+    double time;
+};
+
 struct CanvasWeb {
     GLFWwindow* window = nullptr;
-    int width = 0, height = 0;            // the canvas, framebuffer pixels (CSS pixels x ratio)
-    double devicePixelRatio = 1.0;        // framebuffer pixels per CSS pixel
-    bool fullscreen = false;              // the page is full screen
+    int width = 0, height = 0;       // the canvas, framebuffer pixels (CSS pixels x ratio)
+    double devicePixelRatio = 1.0;   // framebuffer pixels per CSS pixel
+    bool fullscreen = false;         // the page is full screen
+    bool touchScreen = false;        // the device's pointer is coarse (a finger)
+    std::vector<TouchEvent> touches; // since the last canvasTakeTouches()
+    bool mouseMoved = false;         // a real mouse moved since touch events (if any)
+    // Keys pressed since the last frame, and their releases held back (canvas_web.cpp's onKey).
+    struct HeldRelease {
+        int key, scancode, mods;
+    };
+    std::vector<int> keysSinceFrame;
+    std::vector<HeldRelease> releasesLater, releasesNow;
     double lastTime = 0.0;                // s
     std::vector<KeyPress> keyPresses;     // since the last canvasTakeKeyPresses()
     std::vector<std::string> openedFiles; // dropped or picked, in the browser's file system
@@ -41,6 +59,7 @@ void canvasNewFrame(CanvasWeb& c, double* realSeconds);
 std::vector<KeyPress> canvasTakeKeyPresses(CanvasWeb& c);
 std::vector<std::string> canvasTakeOpenedFiles(CanvasWeb& c);
 std::vector<TouchGesture> canvasTakeGestures(CanvasWeb& c);
+std::vector<TouchEvent> canvasTakeTouches(CanvasWeb& c);
 
 // The page's services.
 std::string pageQueryString();           // location.search
@@ -50,6 +69,12 @@ void pageOpenFilePicker();                  // the browser's file dialog
 void pageDownload(const std::string& path); // offers a file of the browser's FS
 void pageToggleFullscreen();
 void pageFirstFrameShown(); // hides the loading note
+// The page's text field takes the focus (the on-screen keyboard shows), or gives it back.
+void pageSetTyping(bool typing);
+// The screen reader's side of the page (page_controls.h): the DOM text and hidden controls from
+// pageStateJson(), and one sentence for the polite live region.
+void pageShowState(const std::string& json);
+void pageAnnounce(const std::string& text);
 // With unsaved edits, the browser asks before the tab is closed or reloaded (beforeunload).
 void pageSetUnsavedEdits(bool unsaved);
 // The address bar shows this link (link.h: the query, and the scene it carries or ""); the page

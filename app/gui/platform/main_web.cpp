@@ -5,17 +5,23 @@
 #include "app_config.h"
 #include "app_frame.h"
 #include "app_setup.h"
+#include "audio_out.h"
 #include "canvas_web.h"
 #include "link.h"
 #include "mouse_tool.h"
 #include "options.h"
+#include "page_controls.h"
 #include "renderer.h"
+#include "touch_input.h"
 #include "ui_renderer_gl.h"
 #include "ui_style.h"
 #include "url_params.h"
 
 #include <emscripten.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h> // a swipe scrolls the window under the finger (ImGui 1.86)
 
 #include <cmath>
 #include <cstdio>
@@ -31,6 +37,7 @@ struct WebApp {
     App app;
     CanvasWeb canvas;
     SceneRenderer renderer;
+    AudioOut audio; // Web Audio, through emscripten's OpenAL
     AppConfig config;
     std::string storedSettings; // what local storage holds, to write only on change
     bool unsavedShown = false;  // what the page was last told (it asks before unloading then)
@@ -39,7 +46,12 @@ struct WebApp {
     std::string linkQuery, linkScene;
     double linkSceneAt = -1e9;
     double pixelRatio = 1.0; // the ratio app.view.uiScale includes (the user's scale times it)
+    TouchInput touch;
+    ImGuiWindow* touchScrolls = nullptr; // what a swipe scrolls: the window under the finger
+    bool typingShown = false;            // the page's field for the on-screen keyboard has focus
     long long frames = 0;
+    double realTime = 0.0;  // s since the first frame (the live region's pace)
+    std::string shownState; // pageStateJson() as the page last got it
 };
 
 WebApp* gWeb = nullptr;
@@ -60,6 +72,8 @@ void saveSettings(WebApp& w) {
     w.config.uiScale = static_cast<float>(w.app.view.uiScale / w.pixelRatio);
     w.config.windowWidth = w.canvas.width;
     w.config.windowHeight = w.canvas.height;
+    w.config.sound = w.app.sim.sound.chosen ? (w.app.sim.sound.on ? 1 : 0) : -1;
+    w.config.volume = w.app.sim.sound.volume;
     const std::string text = formatAppConfig(w.config);
     if (text != w.storedSettings) storageSet(kSettingsKey, text);
     w.storedSettings = text;
@@ -91,6 +105,54 @@ void followLink(WebApp& w, double now) {
     pageSetLink(w.linkQuery, w.linkScene);
 }
 
+// Touch (touch_input.h): ImGui's mouse as the fingers say, before ImGui's frame; a swipe
+// scrolls the window the finger went down on, a drag from the scene's empty space pans.
+void applyTouch(WebApp& w, double now) {
+    if (w.canvas.mouseMoved) w.touch.mouseMoved(); // the pointer is the mouse's again
+    w.canvas.mouseMoved = false;
+    for (const TouchEvent& e : canvasTakeTouches(w.canvas))
+        w.touch.event(e.phase, e.id, e.pos, e.time);
+    if (!w.touch.active()) return;
+    const TouchInput::Frame f = w.touch.frame(now);
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = f.pointer ? ImVec2(static_cast<float>(f.pos.x), static_cast<float>(f.pos.y))
+                            : ImVec2(-FLT_MAX, -FLT_MAX); // nothing hovered: no tooltip stays
+    for (bool& down : io.MouseDown) down = false;
+    io.MouseDown[0] = f.down;
+    io.KeyCtrl =
+        f.ctrl || io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL];
+    if (f.scrollY != 0.0 && w.touchScrolls)
+        ImGui::SetScrollY(w.touchScrolls, w.touchScrolls->Scroll.y - static_cast<float>(f.scrollY));
+    if (f.pan.x != 0.0 || f.pan.y != 0.0) touchPanZoom(w.app.view, Vec2{}, f.pan, 1.0);
+}
+
+// After ImGui's frame began with the pointer at a finger that just went down: is it on the UI
+// (and which window scrolls), or on the scene (on a block, or empty space)?
+void resolveTouch(WebApp& w) {
+    const TouchInput::Mode mode = w.touch.mode();
+    if (mode == TouchInput::Mode::Waiting || mode == TouchInput::Mode::Pending) {
+        ImGuiWindow* window = GImGui->HoveredWindow; // the nearest that scrolls, from there out
+        while (window && (window->Flags & ImGuiWindowFlags_ChildWindow) &&
+               window->ScrollMax.y <= 0.0f)
+            window = window->ParentWindow;
+        w.touchScrolls = window;
+    }
+    if (!w.touch.waitingForStart()) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const Vec2 at{io.MousePos.x, io.MousePos.y};
+    w.touch.resolveStart(io.WantCaptureMouse,
+                         blockAtScreen(w.app.sim.world(), w.app.view, at) >= 0);
+}
+
+// Typing with the on-screen keyboard: while a field takes text after a tap, the page's own text
+// field has the focus (the keyboard shows) and hands its characters to ImGui.
+void followTyping(WebApp& w) {
+    const bool typing = w.touch.active() && ImGui::GetIO().WantTextInput;
+    if (typing == w.typingShown) return;
+    w.typingShown = typing;
+    pageSetTyping(typing);
+}
+
 // Requests the app made of its platform, answered by the page.
 void answerRequests(WebApp& w) {
     App& app = w.app;
@@ -111,6 +173,18 @@ void answerRequests(WebApp& w) {
     }
 }
 
+// The page's text for a screen reader, kept in step with the canvas, and the collisions through
+// its live region (at most about one a second).
+void tellPage(WebApp& w, double realSeconds) {
+    w.realTime += realSeconds;
+    std::string state = pageStateJson(w.app);
+    if (state != w.shownState) pageShowState(state);
+    w.shownState = std::move(state);
+    const std::string said = w.app.sim.announcer.announce(
+        w.realTime, [&](int i) { return w.app.sim.blockDisplayName(i); });
+    if (!said.empty()) pageAnnounce(said);
+}
+
 void frame(void* arg) {
     WebApp& w = *static_cast<WebApp*>(arg);
     App& app = w.app;
@@ -126,18 +200,54 @@ void frame(void* arg) {
     for (const std::string& path : canvasTakeOpenedFiles(w.canvas)) openFile(app, path);
     for (const TouchGesture& g : canvasTakeGestures(w.canvas))
         touchPanZoom(app.view, g.from, g.to, g.spreadRatio);
+    app.ui.touchUi = app.ui.touchUi || w.canvas.touchScreen || w.touch.active();
+    if (app.ui.touchUi != uiTouch()) uiSetTouch(app.ui.touchUi);
+    applyTouch(w, emscripten_get_now() / 1000.0);
     ImGui::NewFrame();
+    resolveTouch(w);
     appFrame(app, canvasTakeKeyPresses(w.canvas), realSeconds, true);
     ImGui::Render();
     appRender(app, w.renderer, w.canvas.width, w.canvas.height);
     uiRendererRender(ImGui::GetDrawData());
+    w.audio.play(app.sim.sound);
     answerRequests(w);
+    tellPage(w, realSeconds);
+    followTyping(w);
     followLink(w, emscripten_get_now() / 1000.0);
     saveSettings(w);
     if (w.frames++ == 0) pageFirstFrameShown();
 }
 
+// ImGui's keyboard focus for the browser tests: the focused control's id, whether the focus ring
+// shows, and its rectangle (framebuffer pixels).
+std::string navigationJson() {
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    ImRect r;
+    if (g.NavWindow) {
+        r = g.NavWindow->NavRectRel[0];
+        r.Translate(g.NavWindow->Pos);
+    }
+    const ImGuiIO& io = ImGui::GetIO();
+    char text[200];
+    std::snprintf(text, sizeof text, ",\"navId\":%u,\"navVisible\":%s,\"navRect\":[%d,%d,%d,%d]",
+                  static_cast<unsigned>(g.NavId), io.NavActive && io.NavVisible ? "true" : "false",
+                  static_cast<int>(r.Min.x), static_cast<int>(r.Min.y), static_cast<int>(r.Max.x),
+                  static_cast<int>(r.Max.y));
+    return text;
+}
+
 } // namespace
+
+// Called by web/index.html with what the page's text field got from the on-screen keyboard.
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_typed(unsigned int codepoint) {
+    if (gWeb && codepoint >= 0x20 && codepoint != 0x7f) ImGui::GetIO().AddInputCharacter(codepoint);
+}
+
+// Called by web/index.html's first-visit hint: opens the first shipped lesson at its start.
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_open_lesson() {
+    if (!gWeb || gWeb->app.shipped.lessons.empty()) return;
+    openLesson(gWeb->app, gWeb->app.shipped.lessons.front().path);
+}
 
 // Called by web/index.html when "Copy link" is done: the note, or the error (a link too long).
 extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_link_copied(int chars, int copied) {
@@ -205,11 +315,37 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
                     exact((corner.y - b.size.y * ppm) / ratio) + "," +
                     exact(b.size.x * ppm / ratio) + "," + exact(b.size.y * ppm / ratio) + "]";
     }
-    const ScreenRect& scene = app.view.layout.scene;
+    auto rect = [&](const ScreenRect& r) { // in CSS pixels
+        return "[" + exact(r.x / ratio) + "," + exact(r.y / ratio) + "," + exact(r.width / ratio) +
+               "," + exact(r.height / ratio) + "]";
+    };
+    const ImGuiIO& io = ImGui::GetIO();
     text += ",\"blocks\":[" + blocks + "],\"blocksOnScreen\":[" + onScreen +
-            "],\"sceneOnScreen\":[" + exact(scene.x / ratio) + "," + exact(scene.y / ratio) + "," +
-            exact(scene.width / ratio) + "," + exact(scene.height / ratio) + "]}";
+            "],\"sceneOnScreen\":" + rect(app.view.layout.scene) +
+            ",\"panelOnScreen\":" + rect(app.view.layout.panel) +
+            ",\"sheet\":" + (app.view.layout.sheet ? "true" : "false") +
+            ",\"sheetOpen\":" + (app.view.sheetOpen ? "true" : "false") +
+            ",\"touchUi\":" + (app.ui.touchUi ? "true" : "false") +
+            ",\"frameHeight\":" + exact(ImGui::GetFrameHeight() / ratio) +
+            ",\"bouncinessSlider\":" + rect(app.ui.bouncinessSlider) +
+            ",\"bounciness\":" + exact(app.sim.world().settings.bounciness) + ",\"gravity\":[" +
+            exact(app.sim.world().settings.gravity.x) + "," +
+            exact(app.sim.world().settings.gravity.y) + "]" +
+            ",\"pointerOnScreen\":" + (ImGui::IsMousePosValid(&io.MousePos) ? "true" : "false") +
+            ",\"typing\":" + (io.WantTextInput ? "true" : "false") + navigationJson() + "}";
     return text.c_str();
+}
+
+// The page's own form controls (page_controls.h): a control set to `value`. Returns "" or why
+// the value was refused (the page shows it beside the control).
+extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_control(const char* control,
+                                                                const char* value) {
+    static std::string error;
+    if (!gWeb) return "";
+    const PageControlOutcome out = applyPageControl(gWeb->app, control, value);
+    applyAction(gWeb->app, out.action);
+    error = out.error;
+    return error.c_str();
 }
 
 int main() {
@@ -223,6 +359,9 @@ int main() {
     std::string error;
     setupApp(app, Options{}, w.config.lastScene, &error);
     applyUrlParams(app, params);
+    app.sim.sound.chosen = w.config.sound >= 0;
+    app.sim.sound.on = w.config.sound == 1;
+    app.sim.sound.volume = w.config.volume;
     const std::string linkError = pageLinkError();
     if (!linkError.empty())
         app.ui.messages.error += (app.ui.messages.error.empty() ? "" : "\n") + linkError;

@@ -4,6 +4,7 @@
 #include "app_config.h"
 #include "app_frame.h"
 #include "app_setup.h"
+#include "audio_out.h"
 #include "options.h"
 #include "renderer.h"
 #include "scene_library.h"
@@ -55,6 +56,9 @@ int runWindow(const Options& options, char** argv, int argc) {
     setUiScale(app.view, options.uiScale > 0.0f ? options.uiScale : config.uiScale);
     app.view.lightTheme = options.theme.empty() ? config.lightTheme : options.theme == "light";
     app.view.labelScale = config.labelScale;
+    app.sim.sound.chosen = config.sound >= 0;
+    app.sim.sound.on = config.sound == 1;
+    app.sim.sound.volume = config.volume;
     app.ui.firstLaunch = !config.existed;
     if (options.present) setPresentMode(app.view, true);
     const bool sizeGiven = options.width != 1280 || options.height != 720;
@@ -81,6 +85,7 @@ int runWindow(const Options& options, char** argv, int argc) {
         std::fprintf(stderr, "sandbox: shader error: %s\n", error.c_str());
         app.ui.messages.error = "Shader error: " + error;
     }
+    AudioOut audio;
     bool first = true;
     double realSeconds = 0.0;
     while (!app.ui.quitRequested && windowNewFrame(window, &realSeconds)) {
@@ -100,6 +105,7 @@ int runWindow(const Options& options, char** argv, int argc) {
         appRender(app, renderer, fw, fh);
         uiRendererRender(ImGui::GetDrawData());
         windowPresent(window);
+        audio.play(app.sim.sound);
         if (first && app.log.verbose) {
             std::printf("window ready %dx%d\n", fw, fh);
             std::fflush(stdout);
@@ -117,6 +123,8 @@ int runWindow(const Options& options, char** argv, int argc) {
     config.uiScale = app.view.uiScale;
     config.lightTheme = app.view.lightTheme;
     config.labelScale = app.view.labelScale;
+    config.sound = app.sim.sound.chosen ? (app.sim.sound.on ? 1 : 0) : -1;
+    config.volume = app.sim.sound.volume;
     windowSize(window, &config.windowWidth, &config.windowHeight);
     if (!saveAppConfig(configDir, config) && !configDir.empty()) {
         std::fprintf(stderr, "sandbox: cannot save settings in %s\n", configDir.c_str());

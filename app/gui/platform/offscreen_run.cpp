@@ -8,6 +8,7 @@
 #include "renderer.h"
 #include "ui_renderer_gl.h"
 #include "ui_style.h"
+#include "wav_io.h"
 
 #include <imgui.h>
 
@@ -15,6 +16,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -31,6 +33,46 @@ struct Offscreen {
     OffscreenOsmesa context;
     SceneRenderer renderer;
 };
+
+// --audio-wav: the knocks of the frames simulated, mixed as OpenAL plays them (audio_out.cpp),
+// on a track that starts at the world's time when the simulation starts.
+struct AudioTrack {
+    bool wanted = false;
+    double start = 0.0; // s, world time of sample 0
+    std::vector<float> samples;
+};
+
+AudioTrack startTrack(App& app, const Options& o, int frames) {
+    AudioTrack track;
+    track.wanted = !o.audioWav.empty();
+    if (!track.wanted) return track;
+    app.sim.sound.chosen = true; // what would be heard with sound on, at full volume
+    app.sim.sound.on = true;
+    app.sim.sound.volume = 1.0f;
+    app.sim.sound.queue.clear();
+    track.start = app.sim.world().time;
+    const double seconds = frames * app.sim.world().settings.dt + kKnockSeconds; // the last knock ends
+    track.samples.assign(static_cast<std::size_t>(std::ceil(seconds * kSampleRate)), 0.0f);
+    return track;
+}
+
+// One simulation frame, its knocks mixed into the track.
+void simulateFrame(App& app, AudioTrack& track) {
+    stepSimulation(app);
+    for (const Knock& k : app.sim.sound.queue) mixKnock(track.samples, track.start, k, 1.0f);
+    app.sim.sound.queue.clear();
+}
+
+int writeTrack(const AudioTrack& track, const Options& o) {
+    if (!track.wanted) return 0;
+    std::string error;
+    if (!writeWav(o.audioWav, track.samples, kSampleRate, &error)) {
+        std::fprintf(stderr, "sandbox: %s\n", printable(error, kPrintablePath).c_str());
+        return 1;
+    }
+    std::printf("%s\n", printable(o.audioWav, kPrintablePath).c_str());
+    return 0;
+}
 
 void renderFrame(App& app, Offscreen& off) {
     offscreenNewFrame(off.context, kFrameSeconds);
@@ -111,7 +153,9 @@ int screenshot(App& app, Offscreen& off, const Options& o) {
     // opens: t = 0, the question asked.
     if (app.lesson.active() && !o.atSetup) lessonShowPausePoint(app);
     // --frames N simulates N frames, as if P had been pressed (the badge then shows no PAUSED).
-    for (int i = 0; i < o.frames; ++i) stepSimulation(app);
+    AudioTrack track = startTrack(app, o, o.frames);
+    for (int i = 0; i < o.frames; ++i) simulateFrame(app, track);
+    if (writeTrack(track, o) != 0) return 1;
     if (o.frames > 0) app.sim.paused = false;
     if (o.timelineFrame >= 0) { // the timeline's slider, dragged back: paused there, replaying
         scrubTo(app, static_cast<std::uint64_t>(o.timelineFrame));
@@ -142,13 +186,15 @@ int record(App& app, Offscreen& off, const Options& o) {
     for (int i = 0; i < kSettleFrames - 1; ++i) renderFrame(app, off);
     app.sim.paused = false; // a recording runs the scene
     char name[32];
+    AudioTrack track = startTrack(app, o, o.frames);
     for (int i = 0; i < o.frames; ++i) {
-        stepSimulation(app);
+        simulateFrame(app, track);
         renderFrame(app, off);
         std::snprintf(name, sizeof name, "/frame_%05d.png", i);
         if (!writeFrame(off, o.record + name)) return 1;
     }
     std::printf("wrote %d frames to %s\n", o.frames, o.record.c_str());
+    if (writeTrack(track, o) != 0) return 1;
     if (!onPath("ffmpeg")) {
         std::printf("ffmpeg not found: no video made (install ffmpeg for an MP4)\n");
         return 0;
@@ -217,7 +263,7 @@ int benchmark(App& app, Offscreen& off, const Options& o) {
 int runOffscreen(const Options& options) {
     Options o = options;
     if (o.screenshot.empty() && o.record.empty() && o.benchmarkFrames <= 0 &&
-        o.recordSteps.empty()) {
+        o.recordSteps.empty() && o.audioWav.empty()) {
         o.screenshot = "sandbox-screenshot.png";
     }
     App app;
@@ -225,6 +271,13 @@ int runOffscreen(const Options& options) {
     if (!setupApp(app, o, "", &error)) {
         std::fprintf(stderr, "sandbox: %s\n", error.c_str());
         return 1;
+    }
+    if (o.screenshot.empty() && o.record.empty() && o.benchmarkFrames <= 0 &&
+        o.recordSteps.empty()) { // --audio-wav alone: simulate and listen, draw nothing
+        if (app.lesson.active()) lessonShowPausePoint(app);
+        AudioTrack track = startTrack(app, o, o.frames);
+        for (int i = 0; i < o.frames; ++i) simulateFrame(app, track);
+        return writeTrack(track, o);
     }
     setUiScale(app.view, o.uiScale > 0.0f ? o.uiScale : 1.0f);
     if (o.present) setPresentMode(app.view, true);

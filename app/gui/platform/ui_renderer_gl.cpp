@@ -10,9 +10,11 @@
 
 namespace {
 
+#if !SANDBOX_GL_ES
 // A solid run smaller than this is drawn with the texture instead: on llvmpipe a draw call with
 // a program switch costs about as much as sampling the texture for this many pixels.
 constexpr float kMinSolidRunPixels = 4096.0f;
+#endif
 
 struct UiProgram {
     GLuint program = 0;
@@ -28,6 +30,8 @@ struct UiRenderer {
     GLuint fontTexture = 0;
     bool fontsChanged = true;
     std::vector<UiDrawRun> runs;
+    std::vector<ImDrawVert> vertices; // GL ES: every list's, uploaded at once
+    std::vector<ImDrawIdx> indices;
 };
 UiRenderer gUi;
 
@@ -150,19 +154,101 @@ void uiRendererNewFrame() {
     if (gUi.fontsChanged && gUi.textured.program) uploadFontTexture();
 }
 
+namespace {
+
+// The scissor box for a command: its clip rectangle in framebuffer pixels (GL's y goes up).
+// False when nothing of it is visible.
+bool scissorTo(const ImDrawCmd& cmd, const ImDrawData* data, int fbHeight) {
+    const ImVec2 clipOffset = data->DisplayPos, clipScale = data->FramebufferScale;
+    const float x0 = (cmd.ClipRect.x - clipOffset.x) * clipScale.x;
+    const float y0 = (cmd.ClipRect.y - clipOffset.y) * clipScale.y;
+    const float x1 = (cmd.ClipRect.z - clipOffset.x) * clipScale.x;
+    const float y1 = (cmd.ClipRect.w - clipOffset.y) * clipScale.y;
+    if (x1 <= x0 || y1 <= y0) return false;
+    glScissor(static_cast<GLint>(x0), static_cast<GLint>(fbHeight - y1),
+              static_cast<GLsizei>(x1 - x0), static_cast<GLsizei>(y1 - y0));
+    return true;
+}
+
+// A command's own callback, or ImGui's request to set the render state again.
+void runCallback(const ImDrawList* list, const ImDrawCmd& cmd, const ImDrawData* data, int fbWidth,
+                 int fbHeight) {
+    if (cmd.UserCallback == ImDrawCallback_ResetRenderState)
+        setupRenderState(data, fbWidth, fbHeight);
+    else
+        cmd.UserCallback(list, &cmd);
+}
+
+} // namespace
+
+#if SANDBOX_GL_ES
+namespace {
+
+// The browser's WebGL 2 (GL ES): every call crosses from wasm to JavaScript and on to the GPU
+// process, which costs more than it saves to skip texturing, and a GPU rasterises anyway. So
+// every list's vertices and indices are uploaded at once, and each command is one draw with the
+// textured program (solid shapes sample the atlas's white texel: the same colours).
+void renderForWebGl(const ImDrawData* data, int fbWidth, int fbHeight) {
+    gUi.vertices.clear();
+    gUi.indices.clear();
+    for (int n = 0; n < data->CmdListsCount; ++n) {
+        const ImDrawList* list = data->CmdLists[n];
+        gUi.vertices.insert(gUi.vertices.end(), list->VtxBuffer.begin(), list->VtxBuffer.end());
+        gUi.indices.insert(gUi.indices.end(), list->IdxBuffer.begin(), list->IdxBuffer.end());
+    }
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(gUi.vertices.size() * sizeof(ImDrawVert)),
+                 gUi.vertices.data(), GL_STREAM_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                 static_cast<GLsizeiptr>(gUi.indices.size() * sizeof(ImDrawIdx)),
+                 gUi.indices.data(), GL_STREAM_DRAW);
+    glUseProgram(gUi.textured.program);
+    const GLenum indexType = sizeof(ImDrawIdx) == 2 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT;
+    unsigned listVertices = 0, listIndices = 0; // where the list starts in the buffers
+    unsigned attributesAt = ~0u;                // the first vertex the attributes point at
+    GLuint texture = ~0u;                       // the texture bound
+    for (int n = 0; n < data->CmdListsCount; ++n) {
+        const ImDrawList* list = data->CmdLists[n];
+        for (const ImDrawCmd& cmd : list->CmdBuffer) {
+            if (cmd.UserCallback) {
+                runCallback(list, cmd, data, fbWidth, fbHeight);
+                glUseProgram(gUi.textured.program);
+                attributesAt = texture = ~0u;
+                continue;
+            }
+            if (!scissorTo(cmd, data, fbHeight)) continue;
+            if (textureName(cmd.GetTexID()) != texture) {
+                texture = textureName(cmd.GetTexID());
+                glBindTexture(GL_TEXTURE_2D, texture);
+            }
+            if (listVertices + cmd.VtxOffset != attributesAt) {
+                attributesAt = listVertices + cmd.VtxOffset;
+                pointAttributesAt(attributesAt);
+            }
+            const std::size_t first = std::size_t{listIndices} + cmd.IdxOffset;
+            glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(cmd.ElemCount), indexType,
+                           reinterpret_cast<void*>(first * sizeof(ImDrawIdx)));
+        }
+        listVertices += static_cast<unsigned>(list->VtxBuffer.Size);
+        listIndices += static_cast<unsigned>(list->IdxBuffer.Size);
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glBindVertexArray(0);
+}
+
+} // namespace
+#endif
+
 void uiRendererRender(const ImDrawData* data) {
     const int fbWidth = static_cast<int>(data->DisplaySize.x * data->FramebufferScale.x);
     const int fbHeight = static_cast<int>(data->DisplaySize.y * data->FramebufferScale.y);
     if (fbWidth <= 0 || fbHeight <= 0 || !gUi.textured.program) return;
     setupRenderState(data, fbWidth, fbHeight);
-
-    const ImVec2 clipOffset = data->DisplayPos, clipScale = data->FramebufferScale;
+#if SANDBOX_GL_ES
+    renderForWebGl(data, fbWidth, fbHeight);
+#else
     const ImVec2 whiteUv = ImGui::GetIO().Fonts->TexUvWhitePixel;
     const GLenum indexType = sizeof(ImDrawIdx) == 2 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT;
     GLuint current = 0; // the program in use
-#if SANDBOX_GL_ES
-    unsigned attributesAt = ~0u; // the first vertex the attributes point at (none yet)
-#endif
     for (int n = 0; n < data->CmdListsCount; ++n) {
         const ImDrawList* list = data->CmdLists[n];
         glBufferData(GL_ARRAY_BUFFER,
@@ -173,21 +259,11 @@ void uiRendererRender(const ImDrawData* data) {
                      list->IdxBuffer.Data, GL_STREAM_DRAW);
         for (const ImDrawCmd& cmd : list->CmdBuffer) {
             if (cmd.UserCallback) {
-                if (cmd.UserCallback == ImDrawCallback_ResetRenderState)
-                    setupRenderState(data, fbWidth, fbHeight);
-                else
-                    cmd.UserCallback(list, &cmd);
+                runCallback(list, cmd, data, fbWidth, fbHeight);
                 current = 0;
                 continue;
             }
-            // The clip rectangle in framebuffer pixels (GL's y goes up).
-            const float x0 = (cmd.ClipRect.x - clipOffset.x) * clipScale.x;
-            const float y0 = (cmd.ClipRect.y - clipOffset.y) * clipScale.y;
-            const float x1 = (cmd.ClipRect.z - clipOffset.x) * clipScale.x;
-            const float y1 = (cmd.ClipRect.w - clipOffset.y) * clipScale.y;
-            if (x1 <= x0 || y1 <= y0) continue;
-            glScissor(static_cast<GLint>(x0), static_cast<GLint>(fbHeight - y1),
-                      static_cast<GLsizei>(x1 - x0), static_cast<GLsizei>(y1 - y0));
+            if (!scissorTo(cmd, data, fbHeight)) continue;
             glBindTexture(GL_TEXTURE_2D, textureName(cmd.GetTexID()));
 
             gUi.runs.clear();
@@ -197,26 +273,18 @@ void uiRendererRender(const ImDrawData* data) {
                               whiteUv, kMinSolidRunPixels, gUi.runs);
             else
                 gUi.runs.push_back({cmd.IdxOffset, cmd.ElemCount, false});
-#if SANDBOX_GL_ES
-            if (cmd.VtxOffset != attributesAt) pointAttributesAt(cmd.VtxOffset);
-            attributesAt = cmd.VtxOffset;
-#endif
             for (const UiDrawRun& run : gUi.runs) {
                 const GLuint program = run.solid ? gUi.solid.program : gUi.textured.program;
                 if (program != current) glUseProgram(program);
                 current = program;
                 const auto* firstIndex = reinterpret_cast<void*>(
                     static_cast<std::size_t>(run.firstIndex) * sizeof(ImDrawIdx));
-#if SANDBOX_GL_ES
-                glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(run.indexCount), indexType,
-                               firstIndex);
-#else
                 glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(run.indexCount),
                                          indexType, firstIndex, static_cast<GLint>(cmd.VtxOffset));
-#endif
             }
         }
     }
     glDisable(GL_SCISSOR_TEST);
     glBindVertexArray(0);
+#endif
 }

@@ -1,5 +1,6 @@
 #include "window_glfw.h"
 
+#include "app_frame.h"
 #include "input_map.h"
 #include "ui_renderer_gl.h"
 
@@ -14,9 +15,9 @@
 // The key map uses GLFW's codes without including GLFW; check they agree.
 static_assert(keys::kSpace == GLFW_KEY_SPACE && keys::kMinus == GLFW_KEY_MINUS &&
                   keys::kEqual == GLFW_KEY_EQUAL && keys::kC == GLFW_KEY_C &&
-                  keys::kD == GLFW_KEY_D && keys::kF == GLFW_KEY_F && keys::kN == GLFW_KEY_N &&
-                  keys::kP == GLFW_KEY_P && keys::kQ == GLFW_KEY_Q && keys::kR == GLFW_KEY_R &&
-                  keys::kS == GLFW_KEY_S && keys::kV == GLFW_KEY_V &&
+                  keys::kD == GLFW_KEY_D && keys::kF == GLFW_KEY_F && keys::kM == GLFW_KEY_M &&
+                  keys::kN == GLFW_KEY_N && keys::kP == GLFW_KEY_P && keys::kQ == GLFW_KEY_Q &&
+                  keys::kR == GLFW_KEY_R && keys::kS == GLFW_KEY_S && keys::kV == GLFW_KEY_V &&
                   keys::kEscape == GLFW_KEY_ESCAPE && keys::kTab == GLFW_KEY_TAB &&
                   keys::kDelete == GLFW_KEY_DELETE && keys::kF1 == GLFW_KEY_F1 &&
                   keys::kF11 == GLFW_KEY_F11 && keys::kKeypadSubtract == GLFW_KEY_KP_SUBTRACT &&
@@ -106,6 +107,8 @@ bool windowNewFrame(WindowGlfw& w, double* realSeconds) {
     w.lastTime = now;
     uiRendererNewFrame();
     ImGui_ImplGlfw_NewFrame();
+    holdKeyTaps(w.keyPresses, w.heldTaps,
+                [&w](int key) { return glfwGetKey(w.window, key) == GLFW_PRESS; });
     return true;
 }
 

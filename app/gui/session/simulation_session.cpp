@@ -107,6 +107,10 @@ FrameOutcome SimulationSession::step(bool sideBySide) {
     addStep(run.totals, run.stats);
     run.trails.record(w);
     telemetry.record(w, selected, run.lastLog);
+    announcer.note(run.lastLog);
+    if (soundOn(sound, inLesson)) {
+        for (const Knock& k : sound.scheduler.admit(run.lastLog, w)) sound.queue.push_back(k);
+    }
     // The point of impact of the watched block's latest collision (kept until the next one).
     FrameOutcome out;
     const int watched = telemetry.watched;

@@ -5,12 +5,14 @@
 // notice). Plain logic: no GL, no ImGui; tested in tests/app.
 #pragma once
 
+#include "collision_sound.h"
 #include "cost.h"
 #include "fixed_step.h"
 #include "palette.h"
 #include "poi.h"
 #include "scene.h"
 #include "side_by_side.h"
+#include "collision_announcer.h"
 #include "telemetry.h"
 #include "timeline.h"
 #include "trails.h"
@@ -91,6 +93,12 @@ struct SimulationSession {
     Telemetry telemetry;
     WorldHistory history;
     CostMeasurement cost; // the cost overlay's measurement and tradeoff sweep
+    // Each frame's collisions heard and told: the knocks (collision_sound.h; queued while the
+    // sound is on, which by default it is in a lesson: `inLesson`, as the app last said) and the
+    // screen reader's announcer (collision_announcer.h, the browser's page).
+    SoundControl sound;
+    bool inLesson = false;
+    CollisionAnnouncer announcer;
     // Edits of blocks (drag, fling, add, delete, the panel's fields) since the last load or save;
     // quitting asks when there are any, or when the settings differ from the scene's.
     bool blocksEdited = false;

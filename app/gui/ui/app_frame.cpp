@@ -10,13 +10,31 @@
 
 namespace {
 
+// True while ImGui's keyboard navigation shows its focus ring: the navigation keys are its.
+bool navigating() {
+    const ImGuiIO& io = ImGui::GetIO();
+    return io.NavActive && io.NavVisible;
+}
+
+// While a lesson step's thrust is on the arrow keys are the thrust, so ImGui's keyboard
+// navigation (Tab and the arrows) is off; in every other state it is on.
+void followThrustForNavigation(const App& app) {
+    ImGuiIO& io = ImGui::GetIO();
+    if (app.sim.thrust.on)
+        io.ConfigFlags &= ~ImGuiConfigFlags_NavEnableKeyboard;
+    else
+        io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
+}
+
 void handleKeys(App& app, const std::vector<KeyPress>& keys) {
     // Typing into a text field (a file name) must not trigger hotkeys; Esc still closes dialogs.
     const bool typing = ImGui::GetIO().WantTextInput;
+    const bool keyboardNavigation = navigating() && !app.sim.thrust.on;
     for (const KeyPress& k : keys) {
         const Action action =
             actionForKey(k.key, k.ctrl, k.shift, app.sim.thrust.on, app.ui.inBrowser);
         if (typing && action != Action::Escape) continue;
+        if (keyboardNavigation && !k.ctrl && navigationKey(k.key)) continue;
         if (action == Action::LessonDigit)
             lessonTypeDigit(app.lesson, digitOfKey(k.key));
         else
@@ -80,6 +98,19 @@ void applyAction(App& app, Action action) {
         setViewFrame(app.view, app.view.frame == ViewFrame::World ? ViewFrame::CentreOfMass
                                                                   : ViewFrame::World);
         logEvent(app, app.view.frame == ViewFrame::World ? "frame: world" : "frame: com");
+        break;
+    case Action::KeyboardFocus:
+        app.ui.keyboardFocus = "Controls";
+        if (!app.view.uiVisible || app.view.presentMode) app.ui.keyboardFocus.clear();
+        break;
+    case Action::NextWindow:
+        app.ui.keyboardFocus = nextWindowForKeyboard(app);
+        break;
+    case Action::Navigate: // a row of the Help window: ImGui's navigation does it (no key)
+        break;
+    case Action::ToggleSound:
+        toggleSound(app.sim.sound, app.lesson.active());
+        logEvent(app, soundOn(app.sim.sound, app.lesson.active()) ? "sound: on" : "sound: off");
         break;
     case Action::FitView:
         app.view.autoFit = true;
@@ -156,15 +187,32 @@ void logStateChanges(App& app) {
     app.log.lastValid = true;
 }
 
+void holdKeyTaps(const std::vector<KeyPress>& queued, std::vector<int>& held,
+                 const std::function<bool(int key)>& isDown) {
+    ImGuiIO& io = ImGui::GetIO();
+    constexpr int keyCount = IM_ARRAYSIZE(ImGuiIO::KeysDown);
+    const auto valid = [](int key) { return key >= 0 && key < keyCount; };
+    for (int key : held)
+        if (valid(key)) io.KeysDown[key] = isDown(key);
+    held.clear();
+    for (const KeyPress& k : queued) {
+        if (!valid(k.key) || io.KeysDown[k.key]) continue;
+        io.KeysDown[k.key] = true;
+        held.push_back(k.key);
+    }
+}
+
 void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, bool runClock) {
     const ImGuiIO& io = ImGui::GetIO();
     const auto layOut = [&app, &io] { updateCamera(app, io.DisplaySize.x, io.DisplaySize.y); };
-    app.view.shownWindows.clear();
     layOut();
-    // Input: the keys pressed, the thrust's arrow keys held (not while typing into a field), the
-    // mouse in the scene.
+    // Input: the keys pressed (F6 reads the windows the last frame drew), the thrust's arrow keys
+    // held (not while typing into a field or moving the keyboard's focus ring), the mouse in the
+    // scene.
     handleKeys(app, keys);
-    const bool typing = io.WantTextInput;
+    followThrustForNavigation(app);
+    app.view.shownWindows.clear();
+    const bool typing = io.WantTextInput || (navigating() && !app.sim.thrust.on);
     app.sim.thrust.direction = app.sim.thrust.on && !typing ? heldThrustDirection([&io](int key) {
         return key >= 0 && key < IM_ARRAYSIZE(io.KeysDown) && io.KeysDown[key];
     })
@@ -211,7 +259,8 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
         for (int m = 0; m < static_cast<int>(Method::Count); ++m) {
             const Method method = static_cast<Method>(m);
             if (method == app.sim.world().settings.method) continue;
-            scene.ghosts.push_back({&app.sim.run.methods.run(method).world, methodColor(method)});
+            scene.ghosts.push_back({&app.sim.run.methods.run(method).world,
+                                    markColor(methodMark(method), app.view.lightTheme)});
         }
     }
     // The ghost overlay: a student's blocks at this frame as outlines (docs/compare.md).

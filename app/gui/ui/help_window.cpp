@@ -32,8 +32,10 @@ void drawHelpWindow(App& app) {
     }
     recordShownWindow(app, "Help");
     ImGui::TextUnformatted(
-        app.ui.inBrowser ? "Esc closes this window.  Tab: present mode.  Close the tab to quit."
-                         : "Esc closes this window.  Tab: present mode.  Ctrl+Q quits.");
+        app.ui.inBrowser ? "Esc closes this window.  F5: present mode.  Tab: keyboard focus on the "
+                           "panel.  Close the tab to quit."
+                         : "Esc closes this window.  F5: present mode.  Tab: keyboard focus on the "
+                           "panel.  Ctrl+Q quits.");
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
     if (ImGui::BeginTabBar("help")) {
         if (ImGui::BeginTabItem("Keys")) {
@@ -55,6 +57,19 @@ void drawHelpWindow(App& app) {
                 row("Double-click", "Add a block on empty space");
                 row("Wheel", "Zoom about the cursor (F fits the world again)");
                 row("Middle drag", "Pan");
+                ImGui::EndTable();
+            }
+            ImGui::EndTabItem();
+        }
+        if (app.ui.touchUi && ImGui::BeginTabItem("Touch")) { // browser/touch_input.h
+            if (ImGui::BeginTable("touch", 2, flags)) {
+                row("Tap", "Select a block; on the panel, press a button (a number field opens "
+                           "for typing: the on-screen keyboard)");
+                row("Two quick taps", "Add a block on empty space");
+                row("Drag", "Move a block; from empty space, pan the view");
+                row("Two fingers", "Pan and zoom");
+                row("Swipe on the panel", "Scroll it (a slider under the finger keeps its value)");
+                row("Hold, then slide", "Drag a slider");
                 ImGui::EndTable();
             }
             ImGui::EndTabItem();

@@ -18,7 +18,8 @@ void drawLessonCaption(App& app) {
     const LessonStep* step = s.step();
     if (!step) return;
     const ImGuiIO& io = ImGui::GetIO();
-    const float left = app.view.uiVisible && !app.view.presentMode
+    const float left = app.view.uiVisible && !app.view.presentMode &&
+                               !app.view.layout.sheet
                            ? static_cast<float>(panelWidth(app.view.uiScale, io.DisplaySize.x))
                            : 0.0f;
     ImGui::SetNextWindowPos(ImVec2(left, 0.0f), ImGuiCond_Always);

@@ -2,6 +2,8 @@
 
 #include "ui_style.h"
 
+#include <imgui_internal.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -55,13 +57,38 @@ void drawSceneCaption(const App& app, const std::vector<CaptionLine>& lines,
         ImVec2(at.x - 6 * s, at.y - 4 * s), ImVec2(at.x + width + 6 * s, at.y + n * font + 4 * s),
         uiLightTheme() ? IM_COL32(250, 250, 252, 230) : IM_COL32(16, 18, 26, 215), 4.0f);
     for (std::size_t i = 0; i < lines.size(); ++i)
-        dl->AddText(ImVec2(at.x, at.y + static_cast<float>(i) * font), uiThemed(lines[i].color),
+        dl->AddText(ImVec2(at.x, at.y + static_cast<float>(i) * font),
+                    lines[i].themed ? lines[i].color : uiThemed(lines[i].color),
                     lines[i].text.c_str());
 }
 
 void recordShownWindow(App& app, const char* name) {
     const ImVec2 p = ImGui::GetWindowPos(), s = ImGui::GetWindowSize();
     app.view.shownWindows.push_back({name, {p.x, p.y, s.x, s.y}});
+    if (app.ui.keyboardFocus != name) return;
+    app.ui.keyboardFocus.clear();
+    // ImGui 1.86 has no public call for it: focus the window and let its navigation pick the
+    // first control, with the focus ring shown (as after an arrow key) and the mouse's hover off.
+    ImGuiWindow* window = ImGui::GetCurrentWindow();
+    ImGui::FocusWindow(window);
+    ImGui::NavInitWindow(window, true);
+    ImGuiContext& g = *ImGui::GetCurrentContext();
+    g.NavDisableHighlight = false;
+    g.NavDisableMouseHover = true;
+}
+
+std::string nextWindowForKeyboard(const App& app) {
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    const ImGuiWindow* focused = g.NavWindow ? g.NavWindow->RootWindow : nullptr;
+    const std::vector<DockedWindow>& shown = app.view.shownWindows;
+    if (shown.empty()) return "";
+    for (std::size_t i = 0; focused && i < shown.size(); ++i) {
+        const std::string& title = shown[i].name;
+        // ImGui names a window by its title, "title##id" included.
+        if (title == focused->Name || std::string(focused->Name).rfind(title + "##", 0) == 0)
+            return shown[(i + 1) % shown.size()].name;
+    }
+    return shown.front().name;
 }
 
 bool beginOverlayWindow(App& app, OverlayId id) {
@@ -107,7 +134,7 @@ bool beginOverlayWindow(App& app, OverlayId id) {
         p.y = std::clamp(p.y, 0.0f, display.y - ImGui::GetFrameHeight());
         if (p.x != pos.x || p.y != pos.y) ImGui::SetWindowPos(p);
         if (visible) {
-            if (ImGui::SmallButton("dock")) setFloating(app.view, title, false);
+            if (uiSmallButton("dock")) setFloating(app.view, title, false);
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("Put the window back beside the scene");
         }
     }

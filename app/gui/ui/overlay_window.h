@@ -12,24 +12,18 @@
 #include <string>
 #include <vector>
 
-// Colours of the plotted quantities (shared by the plots and the arrows' legends).
-namespace overlay_colors {
-constexpr ImU32 kX = IM_COL32(90, 200, 255, 255);
-constexpr ImU32 kY = IM_COL32(255, 120, 170, 255);
-constexpr ImU32 kKinetic = IM_COL32(255, 190, 70, 255);
-constexpr ImU32 kPotential = IM_COL32(120, 220, 120, 255);
-constexpr ImU32 kTotal = IM_COL32(240, 240, 245, 255);
-constexpr ImU32 kMomentum = IM_COL32(255, 150, 60, 255);
-constexpr ImU32 kCom = IM_COL32(255, 235, 90, 255);
-} // namespace overlay_colors
-
 // Begins the window of row `id` (ImGui::End() must follow, as with Begin), with the row's title,
 // docked at its rectangle in app.view.layout, or floating when pulled out; its close button clears
 // the row's flag. The one placement function: every overlay window goes through it (through
 // OverlayWindow).
 bool beginOverlayWindow(App& app, OverlayId id);
-// Notes the current window (between Begin and End) in app.view.shownWindows, for --layout-json.
+// Notes the current window (between Begin and End) in app.view.shownWindows, for --layout-json;
+// when the keyboard focus was asked for it (app.ui.keyboardFocus), moves ImGui's navigation
+// there, its focus ring on the window's first control.
 void recordShownWindow(App& app, const char* name);
+// F6: the window after the one with the keyboard focus in this frame's drawing order (the panel,
+// the overlay windows, Help), or the first; "" when none is shown.
+std::string nextWindowForKeyboard(const App& app);
 // Where an overlay's label of `size` px wanted at `at` (its top-left) goes over the scene: there,
 // or moved up or down by lines until it overlaps nothing taken on screen this frame (the blocks,
 // their labels, the arrows' values: app.ui.takenOnScreen); the spot is then taken too
@@ -41,10 +35,12 @@ struct WorldBox {
     Vec2 centre;
     Vec2 size;
 };
-// One line of a caption over the scene, in its colour (the dark theme's; uiThemed deepens it).
+// One line of a caption over the scene, in its colour (the dark theme's; uiThemed deepens it;
+// or, `themed`, already the theme's: a mark's, uiMarkColor).
 struct CaptionLine {
     std::string text;
     ImU32 color;
+    bool themed = false;
 };
 // Where a caption of `width` x `height` px goes over the scene (placeCaption): covering no
 // block (grown by its labels), none of `boxes` (grown by one and a half lines), nor the status

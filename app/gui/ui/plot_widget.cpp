@@ -1,5 +1,6 @@
 #include "plot_widget.h"
 
+#include "palette.h"
 #include "ui_style.h"
 
 #include <algorithm>
@@ -10,7 +11,7 @@ namespace {
 
 // The plot's colours in the current theme (the light one: a white plot area, dark lines).
 ImU32 frameBg() {
-    return uiLightTheme() ? IM_COL32(255, 255, 255, 235) : IM_COL32(10, 12, 18, 150);
+    return plotAreaColor(uiLightTheme()).packed();
 }
 ImU32 gridColor() {
     return uiLightTheme() ? IM_COL32(0, 0, 0, 30) : IM_COL32(255, 255, 255, 28);
@@ -28,6 +29,24 @@ ImU32 cursorColor() {
     return uiThemed(IM_COL32(120, 220, 255, 230));
 }
 constexpr std::size_t kMaxMarkers = 150;
+
+// A series' line in its dash pattern (dashPieces), the dashes' unit scaled with the line.
+void polyline(ImDrawList* dl, const std::vector<ImVec2>& points, ImU32 color, Dash dash,
+              float thickness) {
+    if (dash == Dash::Solid) {
+        dl->AddPolyline(points.data(), static_cast<int>(points.size()), color, 0, thickness);
+        return;
+    }
+    std::vector<PlotPoint> line;
+    line.reserve(points.size());
+    for (const ImVec2& p : points) line.push_back({p.x, p.y});
+    std::vector<ImVec2> piece;
+    for (const std::vector<PlotPoint>& part : dashPieces(line, dash, 2.0f * thickness)) {
+        piece.clear();
+        for (const PlotPoint& p : part) piece.emplace_back(p.x, p.y);
+        dl->AddPolyline(piece.data(), static_cast<int>(piece.size()), color, 0, thickness);
+    }
+}
 constexpr float kColumnPx = 2.0f; // series thinned to their extremes per column this wide
 
 double axisValue(double v, bool log) {
@@ -218,13 +237,9 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
             pts.clear();
             for (std::size_t k : columnExtremes(xs, ys, kColumnPx)) pts.push_back(mapped[k]);
         }
-        if (pts.size() >= 2) {
-            dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), uiThemed(s.color), 0,
-                            thickness);
-        }
+        if (pts.size() >= 2) polyline(dl, pts, s.color, s.dash, thickness);
         if (s.points) {
-            for (const ImVec2& p : pts)
-                dl->AddCircleFilled(p, thickness * 1.8f, uiThemed(s.color), 8);
+            for (const ImVec2& p : pts) dl->AddCircleFilled(p, thickness * 1.8f, s.color, 8);
         }
     }
     // The timeline's "now": where the scrubbed time is in the recorded run.
@@ -243,8 +258,8 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
     for (const HeaderItem& it : items) {
         if (it.series) {
             const float cy = it.y + font * 0.5f;
-            dl->AddLine(ImVec2(it.x, cy), ImVec2(it.x + font * 0.9f, cy),
-                        uiThemed(it.series->color), thickness * 1.5f);
+            polyline(dl, {ImVec2(it.x, cy), ImVec2(it.x + font * 0.9f, cy)}, it.series->color,
+                     it.series->dash, thickness * 1.5f);
             dl->AddText(ImVec2(it.x + font * 1.2f, it.y), uiThemed(IM_COL32(225, 230, 240, 255)),
                         it.text.c_str());
         } else {
@@ -273,8 +288,8 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
                     }
                 }
                 if (std::isfinite(value)) {
-                    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(uiThemed(s.color)),
-                                       "%s = %.4g %s", s.label.c_str(), value, o.yUnit);
+                    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(s.color), "%s = %.4g %s",
+                                       s.label.c_str(), value, o.yUnit);
                 }
             }
             ImGui::EndTooltip();

@@ -13,8 +13,9 @@
 #include <vector>
 
 struct PlotSeries {
-    std::string label; // "" : no legend entry (the faded part of a series)
-    ImU32 color = IM_COL32(255, 255, 255, 255);
+    std::string label;                          // "" : no legend entry (the faded part of a series)
+    ImU32 color = IM_COL32(255, 255, 255, 255); // as drawn (the caller's theme's colour)
+    Dash dash = Dash::Solid;
     std::vector<double> x, y;
     bool points = false; // draw a dot at every sample (sparse data: the tradeoff chart)
 };

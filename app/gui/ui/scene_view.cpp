@@ -386,7 +386,7 @@ void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl) {
             y = ty - ts.y * 0.5f;
         }
         x = std::clamp(x, static_cast<float>(vp.x), static_cast<float>(vp.x + vp.width) - ts.x);
-        shadowText(dl, ImVec2(x, y), scene_colors::kForce.packed(), text,
+        shadowText(dl, ImVec2(x, y), sceneTheme(app.view.lightTheme).force.packed(), text,
                    packed(theme().textShadow));
         ++written;
     }

@@ -1,6 +1,8 @@
 #include "ui_style.h"
 
 #include "dock_layout.h"
+#include "input_map.h"
+#include "palette.h"
 #include "text_format.h"
 
 #include <imgui.h>
@@ -16,6 +18,7 @@ constexpr float kBaseFontPx = 16.0f;
 float gScale = 0.0f;
 float gLabelScale = 1.0f;
 bool gLight = false;
+bool gTouch = false;
 ImFont* gLabelFont = nullptr;
 ImFont* gCompactFont = nullptr;
 
@@ -31,7 +34,8 @@ bool fileExists(const char* path) {
 void setLightColors(ImGuiStyle& style) {
     ImGui::StyleColorsLight(&style);
     ImVec4* c = style.Colors;
-    c[ImGuiCol_WindowBg] = ImVec4(0.96f, 0.96f, 0.95f, 0.98f);
+    const Color bg = windowBackground(true);
+    c[ImGuiCol_WindowBg] = ImVec4(bg.r, bg.g, bg.b, bg.a);
     c[ImGuiCol_PopupBg] = ImVec4(0.98f, 0.98f, 0.97f, 0.99f);
     c[ImGuiCol_TitleBg] = ImVec4(0.30f, 0.45f, 0.68f, 1.0f);
     c[ImGuiCol_TitleBgActive] = ImVec4(0.30f, 0.45f, 0.68f, 1.0f);
@@ -60,9 +64,13 @@ void setTheme(ImGuiStyle& style, bool light) {
     // No anti-aliased fringe around filled shapes: it doubled the triangles of the panel, and
     // every thin triangle costs a software rasteriser; rounded corners stay smooth enough.
     style.AntiAliasedFill = false;
+    // The keyboard's focus ring: a colour no control has, plainly seen on either theme.
+    style.Colors[ImGuiCol_NavHighlight] =
+        light ? ImVec4(0.80f, 0.10f, 0.55f, 1.0f) : ImVec4(1.0f, 0.85f, 0.25f, 1.0f);
     if (light) return;
     ImVec4* c = style.Colors;
-    c[ImGuiCol_WindowBg] = ImVec4(0.105f, 0.113f, 0.140f, 0.97f);
+    const Color bg = windowBackground(false);
+    c[ImGuiCol_WindowBg] = ImVec4(bg.r, bg.g, bg.b, bg.a);
     c[ImGuiCol_PopupBg] = ImVec4(0.12f, 0.13f, 0.16f, 0.98f);
     c[ImGuiCol_TitleBg] = ImVec4(0.16f, 0.29f, 0.48f, 1.0f);
     c[ImGuiCol_TitleBgActive] = ImVec4(0.16f, 0.29f, 0.48f, 1.0f);
@@ -86,6 +94,16 @@ void setTheme(ImGuiStyle& style) {
     setTheme(style, gLight);
 }
 
+// Touch sizes at UI scale 1: a frame kTouchTargetPx high around the 16 px font, a slider's grab
+// a fingertip wide, a thin scroll bar (a swipe scrolls).
+void setTouchSizes(ImGuiStyle& style) {
+    style.FramePadding = ImVec2(10.0f, (kTouchTargetPx - kBaseFontPx) * 0.5f);
+    style.ItemSpacing = ImVec2(10.0f, 8.0f);
+    style.ItemInnerSpacing = ImVec2(8.0f, 6.0f);
+    style.GrabMinSize = 28.0f;
+    style.ScrollbarSize = 8.0f;
+}
+
 } // namespace
 
 void uiCreateContext(const char* iniPath) {
@@ -93,6 +111,20 @@ void uiCreateContext(const char* iniPath) {
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = iniPath;
+    // Every control reachable from the keyboard: the arrows move ImGui's focus ring (once Tab or
+    // F6 put it in a window), Space presses, Enter types into a field (input_map.h's Tab row).
+    io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
+    // The navigation's keys, as ImGui's GLFW backend maps them (the offscreen renderer has no
+    // backend: 1.86 asserts without Space).
+    const int navigationKeys[][2] = {
+        {ImGuiKey_Tab, keys::kTab},           {ImGuiKey_LeftArrow, keys::kLeft},
+        {ImGuiKey_RightArrow, keys::kRight},  {ImGuiKey_UpArrow, keys::kUp},
+        {ImGuiKey_DownArrow, keys::kDown},    {ImGuiKey_PageUp, keys::kPageUp},
+        {ImGuiKey_PageDown, keys::kPageDown}, {ImGuiKey_Home, keys::kHome},
+        {ImGuiKey_End, keys::kEnd},           {ImGuiKey_Delete, keys::kDelete},
+        {ImGuiKey_Space, keys::kSpace},       {ImGuiKey_Enter, keys::kEnter},
+        {ImGuiKey_Escape, keys::kEscape},     {ImGuiKey_KeyPadEnter, keys::kKeypadEnter}};
+    for (const auto& k : navigationKeys) io.KeyMap[k[0]] = k[1];
     setTheme(ImGui::GetStyle());
     gScale = 0.0f;
     gLabelFont = nullptr;
@@ -122,6 +154,18 @@ ImFont* addFont(ImGuiIO& io, float px) {
     return io.Fonts->AddFontDefault(&config);
 }
 
+namespace {
+
+void applyStyle(float scale, bool light) {
+    ImGuiStyle style;
+    setTheme(style, light);
+    if (gTouch) setTouchSizes(style);
+    style.ScaleAllSizes(scale);
+    ImGui::GetStyle() = style;
+}
+
+} // namespace
+
 bool uiApplyLook(float scale, float labelScale, bool light) {
     const bool fonts = scale != gScale || labelScale != gLabelScale || !gLabelFont;
     if (!fonts && light == gLight) return false;
@@ -139,15 +183,37 @@ bool uiApplyLook(float scale, float labelScale, bool light) {
             addFont(io, std::round(kBaseFontPx * scale * static_cast<float>(kCompactFontScale)));
         io.Fonts->Build();
     }
-    ImGuiStyle style;
-    setTheme(style, light);
-    style.ScaleAllSizes(scale);
-    ImGui::GetStyle() = style;
+    applyStyle(scale, light);
     return fonts;
 }
 
 bool uiApplyScale(float scale) {
     return uiApplyLook(scale, gLabelScale, gLight);
+}
+
+void uiSetTouch(bool touch) {
+    if (touch == gTouch) return;
+    gTouch = touch;
+    applyStyle(gScale > 0.0f ? gScale : 1.0f, gLight);
+}
+
+bool uiTouch() {
+    return gTouch;
+}
+
+void uiBeginRows() {
+    const float row = kTouchTargetPx * gScale - ImGui::GetTextLineHeight();
+    const ImVec2 spacing = ImGui::GetStyle().ItemSpacing;
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing,
+                        gTouch ? ImVec2(spacing.x, std::fmax(spacing.y, row)) : spacing);
+}
+
+void uiEndRows() {
+    ImGui::PopStyleVar();
+}
+
+bool uiSmallButton(const char* label) {
+    return gTouch ? ImGui::Button(label) : ImGui::SmallButton(label);
 }
 
 ImFont* uiCompactFont() {
@@ -204,4 +270,13 @@ ImVec4 uiDimColor() {
 }
 ImVec4 uiQuestionColor() {
     return uiThemed(ImVec4{1.0f, 0.82f, 0.40f, 1.0f});
+}
+
+ImVec4 uiMarkColorVec(Mark mark) {
+    const Color c = markColor(mark, gLight);
+    return ImVec4(c.r, c.g, c.b, c.a);
+}
+
+ImU32 uiMarkColor(Mark mark) {
+    return markColor(mark, gLight).packed();
 }

@@ -15,6 +15,18 @@ bool uiApplyLook(float scale, float labelScale, bool light);
 bool uiApplyScale(float scale); // uiApplyLook with the current label scale and theme
 // The scale uiApplyLook last applied.
 float uiCurrentScale();
+// Sizes for fingers (phones and tablets; the browser build when the device has a touch screen):
+// every button, field, checkbox and header at least kTouchTargetPx high (at UI scale 1), the
+// platforms' guideline for a tap target (Apple: 44 pt; Material: 48 dp), and the rows of lists
+// as tall. Applied with the look (uiApplyLook), between frames.
+constexpr float kTouchTargetPx = 44.0f;
+void uiSetTouch(bool touch);
+bool uiTouch();
+// In a list (a combo's popup, the lesson's steps): rows kTouchTargetPx high with touch sizes.
+void uiBeginRows();
+void uiEndRows();
+// ImGui::SmallButton, but a full-height button with touch sizes.
+bool uiSmallButton(const char* label);
 // The font of the scene's labels (block names, axis numbers, the caption): its own size.
 struct ImFont;
 ImFont* uiLabelFont();
@@ -38,3 +50,7 @@ ImVec4 uiWarningColor();
 ImVec4 uiNoteColor();
 ImVec4 uiDimColor();
 ImVec4 uiQuestionColor();
+// A mark's colour in the current theme (palette.h's table: chosen per theme, not uiThemed).
+enum class Mark;
+ImU32 uiMarkColor(Mark mark);
+ImVec4 uiMarkColorVec(Mark mark);

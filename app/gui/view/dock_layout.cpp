@@ -51,9 +51,25 @@ const ScreenRect* Layout::find(const std::string& name) const {
     return nullptr;
 }
 
+bool sheetLayout(double displayWidth, float uiScale) {
+    return displayWidth < kSheetBelowPx * static_cast<double>(uiScale > 0.0f ? uiScale : 1.0f);
+}
+
 Layout computeLayout(const LayoutInput& in) {
-    Layout out;
     const double W = std::max(1.0, in.displayWidth), H = std::max(1.0, in.displayHeight);
+    if (in.panelHeight > 0.0) { // a sheet: the rest is laid out above it, windows in the strip
+        const double top = std::round(H - std::clamp(in.panelHeight, 1.0, H - 1.0));
+        LayoutInput above = in;
+        above.displayHeight = top;
+        above.panelWidth = 0.0;
+        above.panelHeight = 0.0;
+        for (DockRequest& w : above.windows) w.side = DockSide::Bottom;
+        Layout out = computeLayout(above);
+        out.panel = fromEdges(0.0, top, W, H);
+        out.sheet = true;
+        return out;
+    }
+    Layout out;
     const double s = in.uiScale > 0.0f ? static_cast<double>(in.uiScale) : 1.0;
     const double panel = std::clamp(in.panelWidth, 0.0, W * 0.5);
     out.panel = panel > 0.0 ? fromEdges(0.0, 0.0, panel, H) : ScreenRect{0.0, 0.0, 0.0, H};

@@ -35,12 +35,22 @@ struct DockRequest {
     double crossExtent = 360.0;
 };
 
+// Narrow screens (a phone held upright): below kSheetBelowPx wide (px at UI scale 1) the panel
+// is a sheet along the bottom, the screen's width: closed, one row of buttons kSheetBarPx high
+// (44 px touch buttons and the window's padding); open, kSheetOpenShare of the height. Docked
+// windows then share a strip above it, and the scene keeps the rest.
+constexpr double kSheetBelowPx = 600.0;
+constexpr double kSheetBarPx = 64.0;
+constexpr double kSheetOpenShare = 0.55;
+bool sheetLayout(double displayWidth, float uiScale);
+
 struct LayoutInput {
     double displayWidth = 1280.0;
     double displayHeight = 720.0;
     float uiScale = 1.0f;
-    double panelWidth = 0.0; // 0: no panel (hidden, or present mode)
-    double topInset = 0.0;   // px right of the panel kept free at the top (a lesson's caption)
+    double panelWidth = 0.0;  // 0: no panel (hidden, or present mode)
+    double panelHeight = 0.0; // > 0: the panel is a sheet this high along the bottom
+    double topInset = 0.0;    // px right of the panel kept free at the top (a lesson's caption)
     std::vector<DockRequest> windows;
 };
 
@@ -50,8 +60,9 @@ struct DockedWindow {
 };
 
 struct Layout {
-    ScreenRect panel; // width 0 when there is none
-    ScreenRect scene; // what the scene view gets
+    ScreenRect panel;   // width 0 when there is none
+    bool sheet = false; // the panel is a sheet along the bottom (sheetLayout)
+    ScreenRect scene;   // what the scene view gets
     std::vector<DockedWindow> windows;
     // The rectangle of window `name`, or nullptr when it is not docked.
     const ScreenRect* find(const std::string& name) const;

@@ -17,6 +17,11 @@ bool validBlock(const World& world, int i) {
 
 } // namespace
 
+int blockAtScreen(const World& world, const View& view, Vec2 screen) {
+    return pickBlock(world, view.camera.screenToWorld(screen),
+                     view.camera.pixelsToMetres(kPickTolerancePx));
+}
+
 void mousePress(MouseTool& m, SimulationSession& sim, const View& view, MouseButton button,
                 Vec2 screen, bool doubleClick) {
     World& w = sim.world();
@@ -24,7 +29,7 @@ void mousePress(MouseTool& m, SimulationSession& sim, const View& view, MouseBut
     m.cursorWorld = world;
     m.pressWorld = world;
     m.lastScreen = screen;
-    const int hit = pickBlock(w, world, view.camera.pixelsToMetres(kPickTolerancePx));
+    const int hit = blockAtScreen(w, view, screen);
     switch (button) {
     case MouseButton::Left:
         if (hit < 0) {

@@ -9,6 +9,7 @@
 
 struct SimulationSession;
 struct View;
+struct World;
 
 enum class MouseButton { Left, Right, Middle };
 
@@ -35,6 +36,8 @@ struct MouseTool {
 // `view`'s camera, pans the camera.
 void mousePress(MouseTool& m, SimulationSession& sim, const View& view, MouseButton button,
                 Vec2 screen, bool doubleClick);
+// The block a press at `screen` (px) would take (a few pixels' tolerance), or -1.
+int blockAtScreen(const World& world, const View& view, Vec2 screen);
 void mouseMove(MouseTool& m, SimulationSession& sim, View& view, Vec2 screen);
 void mouseRelease(MouseTool& m, SimulationSession& sim, View& view, MouseButton button,
                   Vec2 screen);

@@ -15,7 +15,13 @@ Layout computeAppLayout(const View& view, bool captionBar, double displayWidth,
     // A lesson's caption bar over the top of the scene (and the column), presenting too.
     if (captionBar) in.topInset = std::min(view.captionHeight, displayHeight * 0.5);
     if (view.presentMode) return computeLayout(in); // the scene alone (under a lesson's caption)
-    in.panelWidth = view.uiVisible ? panelWidth(view.uiScale, displayWidth) : 0.0;
+    if (!view.uiVisible) {
+    } else if (sheetLayout(displayWidth, view.uiScale)) {
+        in.panelHeight = view.sheetOpen ? displayHeight * kSheetOpenShare
+                                        : kSheetBarPx * static_cast<double>(view.uiScale);
+    } else {
+        in.panelWidth = panelWidth(view.uiScale, displayWidth);
+    }
     for (const OverlayInfo& row : kOverlays) {
         if (!row.title || !(view.show.*row.flag) || isFloating(view, row.title)) continue;
         in.windows.push_back({row.title, row.place.side, row.place.minExtent, row.place.weight,
@@ -29,13 +35,36 @@ ScreenRect sceneViewport(const View& view, bool captionBar, double displayWidth,
     return computeAppLayout(view, captionBar, displayWidth, displayHeight).scene;
 }
 
+namespace {
+
+// kMinBlockPx for the smallest dynamic block, at most the zoom at which the world fills the
+// scene; the centre stays the world's.
+void zoomForFingers(View& view, const World& world, const Bounds& bounds) {
+    double smallest = 0.0;
+    for (const Block& b : world.blocks)
+        if (b.isDynamic()) {
+            const double side = std::min(b.size.x, b.size.y);
+            smallest = smallest > 0.0 ? std::min(smallest, side) : side;
+        }
+    const double w = bounds.max.x - bounds.min.x, h = bounds.max.y - bounds.min.y;
+    if (!(smallest > 0.0) || !(w > 0.0) || !(h > 0.0)) return;
+    const ScreenRect& scene = view.layout.scene;
+    const double filling = std::max(scene.width / w, scene.height / h);
+    const double wanted = kMinBlockPx * static_cast<double>(view.uiScale) / smallest;
+    const double ppm = view.camera.pixelsPerMetre();
+    view.camera.setPixelsPerMetre(std::max(ppm, std::min(filling, wanted)));
+}
+
+} // namespace
+
 void updateCamera(View& view, const World& world, bool captionBar, double displayWidth,
                   double displayHeight) {
     view.layout = computeAppLayout(view, captionBar, displayWidth, displayHeight);
     view.camera.setViewport(view.layout.scene);
     if (view.autoFit) {
-        view.camera.fit(view.fitBounds ? *view.fitBounds : world.bounds,
-                        kFitMarginPx * static_cast<double>(view.uiScale));
+        const Bounds& bounds = view.fitBounds ? *view.fitBounds : world.bounds;
+        view.camera.fit(bounds, kFitMarginPx * static_cast<double>(view.uiScale));
+        if (view.layout.sheet) zoomForFingers(view, world, bounds);
     }
     view.camera.setCentre(view.camera.centre() +
                           followShift(view.frameCamera, world, view.frame, view.autoFit));

@@ -46,6 +46,7 @@ struct View {
     // Every window drawn this frame with its rectangle (for --layout-json), in drawing order.
     std::vector<DockedWindow> shownWindows;
     double captionHeight = 0.0; // px a lesson's caption bar takes at the top of the scene
+    bool sheetOpen = false;     // narrow screens: the panel's sheet is open (sheetLayout)
 };
 
 // Width of the controls panel in pixels for a UI scale and window width.
@@ -61,6 +62,10 @@ ScreenRect sceneViewport(const View& view, bool captionBar, double displayWidth,
 // Pixels (at UI scale 1) between the world's bounds and the scene's rectangle when the camera
 // fits the world: room for the axis numbers and, at the top, the status badge or caption.
 constexpr double kFitMarginPx = 36.0;
+// On a narrow screen (sheetLayout), the fit zooms in until the smallest dynamic block is at least
+// kMinBlockPx (at UI scale 1: big enough to see and to grab with a finger), but never beyond
+// filling the scene with the world (part of it is then out of view: a drag on empty space pans).
+constexpr double kMinBlockPx = 24.0;
 // Lays out the frame (view.layout), gives the camera the scene's rectangle and refits `world`
 // while view.autoFit holds; in the centre of mass's frame the camera follows it.
 void updateCamera(View& view, const World& world, bool captionBar, double displayWidth,

@@ -17,12 +17,8 @@ using test_worlds::makeWorld;
 
 class MethodsTest : public ::testing::TestWithParam<Method> {};
 
-INSTANTIATE_TEST_SUITE_P(Methods, MethodsTest,
-                         ::testing::Values(Method::Perfect, Method::MoveAndCorrect,
-                                           Method::TurnBased),
-                         [](const ::testing::TestParamInfo<Method>& info) {
-                             return test_worlds::methodTestName(info.param);
-                         });
+INSTANTIATE_TEST_SUITE_P(Methods, MethodsTest, test_worlds::everyMethod(),
+                         test_worlds::methodParamName);
 
 // Steps `frames` frames and returns every collision record.
 std::vector<CollisionRecord> run(World& world, int frames) {
@@ -106,9 +102,7 @@ class CornerHit : public ::testing::TestWithParam<Method> {};
 
 INSTANTIATE_TEST_SUITE_P(ContinuousMethods, CornerHit,
                          ::testing::Values(Method::Perfect, Method::TurnBased),
-                         [](const ::testing::TestParamInfo<Method>& info) {
-                             return test_worlds::methodTestName(info.param);
-                         });
+                         test_worlds::methodParamName);
 
 TEST_P(CornerHit, ResolvesBothVelocityComponents) {
     World world = makeWorld(GetParam(), {0.0, 0.0}, 1.0);
@@ -167,9 +161,7 @@ class NoTunnelling : public ::testing::TestWithParam<Method> {};
 
 INSTANTIATE_TEST_SUITE_P(ContinuousMethods, NoTunnelling,
                          ::testing::Values(Method::Perfect, Method::TurnBased),
-                         [](const ::testing::TestParamInfo<Method>& info) {
-                             return test_worlds::methodTestName(info.param);
-                         });
+                         test_worlds::methodParamName);
 
 TEST_P(NoTunnelling, BulletBouncesOffThinWallAndNeverPasses) {
     World world = bulletWorld(GetParam());
@@ -247,9 +239,7 @@ class SlidingOnTop : public ::testing::TestWithParam<Method> {};
 
 INSTANTIATE_TEST_SUITE_P(ContinuousMethods, SlidingOnTop,
                          ::testing::Values(Method::Perfect, Method::TurnBased),
-                         [](const ::testing::TestParamInfo<Method>& info) {
-                             return test_worlds::methodTestName(info.param);
-                         });
+                         test_worlds::methodParamName);
 
 TEST_P(SlidingOnTop, DoesNotCollideSideways) {
     World world = makeWorld(GetParam(), {0.0, -9.81}, 0.5);

@@ -79,12 +79,8 @@ TEST(MoveAndCorrect, RestingStackReportsTransientOverlapAndSinks) {
 
 class BouncingBlock : public ::testing::TestWithParam<Method> {};
 
-INSTANTIATE_TEST_SUITE_P(Methods, BouncingBlock,
-                         ::testing::Values(Method::Perfect, Method::MoveAndCorrect,
-                                           Method::TurnBased),
-                         [](const ::testing::TestParamInfo<Method>& info) {
-                             return test_worlds::methodTestName(info.param);
-                         });
+INSTANTIATE_TEST_SUITE_P(Methods, BouncingBlock, test_worlds::everyMethod(),
+                         test_worlds::methodParamName);
 
 TEST_P(BouncingBlock, ComesToRestOnTheFloorWithoutHittingTheEventCap) {
     // Dropped from 5 m with C = 0.8: each bounce keeps 0.8 of the speed (~9.9 m/s at first);
