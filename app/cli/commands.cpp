@@ -329,15 +329,22 @@ nlohmann::ordered_json stepJson(std::size_t number, const LessonStep& step, cons
     j["time_scale"] = step.timeScale;
     j["motion_seconds"] = run.world.time / step.timeScale;
     j["question"] = step.question;
-    nlohmann::ordered_json blocks = nlohmann::ordered_json::array();
-    for (std::size_t b = 0; b < run.world.blocks.size(); ++b) {
-        nlohmann::ordered_json block;
-        block["name"] = blockLabel(step, b);
-        block["position"] = vecJson(run.world.blocks[b].position);
-        block["velocity"] = vecJson(run.world.blocks[b].velocity);
-        blocks.push_back(std::move(block));
-    }
-    j["blocks"] = std::move(blocks);
+    j["given"] = step.given.size(); // statements of the question checked at the setup
+    // The blocks as the setup shows them (t = 0, the question asked), then at the moment.
+    const auto blocksJson = [&step](const World& world, bool withSize) {
+        nlohmann::ordered_json blocks = nlohmann::ordered_json::array();
+        for (std::size_t b = 0; b < world.blocks.size(); ++b) {
+            nlohmann::ordered_json block;
+            block["name"] = blockLabel(step, b);
+            block["position"] = vecJson(world.blocks[b].position);
+            block["velocity"] = vecJson(world.blocks[b].velocity);
+            if (withSize) block["size"] = vecJson(world.blocks[b].size);
+            blocks.push_back(std::move(block));
+        }
+        return blocks;
+    };
+    j["setup_blocks"] = blocksJson(stepStartWorld(step), true);
+    j["blocks"] = blocksJson(run.world, false);
     j["failures"] = failures;
     return j;
 }

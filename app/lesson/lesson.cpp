@@ -262,6 +262,13 @@ constexpr QuantityKey kQuantities[] = {
     {"collisions", LessonExpect::Quantity::Collisions, false},
     {"kinetic_energy", LessonExpect::Quantity::KineticEnergy, false},
     {"max_penetration", LessonExpect::Quantity::MaxPenetration, false},
+    {"left", LessonExpect::Quantity::Left, true},
+    {"right", LessonExpect::Quantity::Right, true},
+    {"bottom", LessonExpect::Quantity::Bottom, true},
+    {"top", LessonExpect::Quantity::Top, true},
+    {"mass", LessonExpect::Quantity::Mass, true},
+    {"frame_rate", LessonExpect::Quantity::FrameRate, false},
+    {"bounciness", LessonExpect::Quantity::Bounciness, false},
 };
 // Pairs written as one key: "position": [x, y] and so on.
 struct PairKey {
@@ -345,12 +352,23 @@ void parseExpect(const json& value, const std::string& path, const Scene& scene,
     out.insert(out.end(), found.begin(), found.end());
 }
 
+// An array of expectations ("expect" or "given").
+void parseExpects(const json& list, const std::string& path, const Scene& scene,
+                  const std::string& source, std::vector<LessonExpect>& out) {
+    if (!list.is_array()) throw ValueError{path, "must be an array"};
+    if (list.size() > kMaxExpects) throw ValueError{path, "more than 100 expectations"};
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string at = indexPath(path, i);
+        parseExpect(list[i], at, scene, source + ": " + at, out);
+    }
+}
+
 LessonStep parseStep(const json& value, const std::string& path, const std::string& source,
                      const LessonContext& context) {
     requireObject(value, path);
     checkKeys(value, path,
               {"title", "caption", "scene", "overrides", "overlays", "select", "thrust", "camera",
-               "frame", "pause_at", "question", "answer", "reveal", "expect"});
+               "frame", "pause_at", "question", "answer", "reveal", "given", "expect"});
     LessonStep step;
     if (!value.contains("title")) throw ValueError{path, "missing \"title\""};
     step.title = text(value["title"], keyPath(path, "title"), 1);
@@ -401,16 +419,14 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
                                                       "\"question\""};
         step.reveal = overlayList(value["reveal"], keyPath(path, "reveal"), context);
     }
-    if (value.contains("expect")) {
-        const json& expect = value["expect"];
-        const std::string p = keyPath(path, "expect");
-        if (!expect.is_array()) throw ValueError{p, "must be an array"};
-        if (expect.size() > kMaxExpects) throw ValueError{p, "more than 100 expectations"};
-        for (std::size_t i = 0; i < expect.size(); ++i) {
-            const std::string at = indexPath(p, i);
-            parseExpect(expect[i], at, step.scene, source + ": " + at, step.expect);
-        }
+    if (value.contains("given")) {
+        if (!value.contains("question"))
+            throw ValueError{keyPath(path, "given"), "what a question states: needs a "
+                                                     "\"question\""};
+        parseExpects(value["given"], keyPath(path, "given"), step.scene, source, step.given);
     }
+    if (value.contains("expect"))
+        parseExpects(value["expect"], keyPath(path, "expect"), step.scene, source, step.expect);
     return step;
 }
 

@@ -22,8 +22,8 @@ struct LessonPause {
     std::string blockName; // as written in the file
 };
 
-// One number the engine must reach at the pause point: equal within `tolerance`, or in
-// [min, max].
+// One number the engine must reach at the pause point (or, in a step's `given`, that holds at its
+// setup): equal within `tolerance`, or in [min, max].
 struct LessonExpect {
     enum class Quantity {
         X,              // m, the block's centre
@@ -36,6 +36,13 @@ struct LessonExpect {
         MomentumY,      // kg·m/s
         KineticEnergy,  // J
         MaxPenetration, // m, the largest overlap met since the step began
+        Left,           // m, the block's sides: x - width/2
+        Right,          // m, x + width/2
+        Bottom,         // m, y - height/2
+        Top,            // m, y + height/2
+        Mass,           // kg (infinite for static and kinematic blocks)
+        FrameRate,      // frames/s, 1/dt
+        Bounciness,     // C
     };
     std::string where; // "file: steps[3].expect[0]" (for messages)
     Quantity quantity = Quantity::X;
@@ -64,7 +71,10 @@ struct LessonStep {
     ViewFrame frame = ViewFrame::World; // "frame": "com": seen moving with the centre of mass
     LessonPause pause;
     std::string question; // shown until the next press...
-    std::string answer;   // ...which shows this and turns on `reveal`
+    // What the question says of the setup, checked there (t = 0, before any frame): a question
+    // stays true of what the class sees when it is asked.
+    std::vector<LessonExpect> given;
+    std::string answer; // ...which shows this and turns on `reveal`
     std::vector<std::string> reveal;
     std::vector<LessonExpect> expect;
 };

@@ -103,19 +103,30 @@ double measure(const LessonExpect& e, const StepRun& run) {
         return kineticEnergy(w);
     case Q::MaxPenetration:
         return run.progress.maxPenetration;
+    case Q::Left:
+        return b ? b->position.x - b->halfSize().x : NAN;
+    case Q::Right:
+        return b ? b->position.x + b->halfSize().x : NAN;
+    case Q::Bottom:
+        return b ? b->position.y - b->halfSize().y : NAN;
+    case Q::Top:
+        return b ? b->position.y + b->halfSize().y : NAN;
+    case Q::Mass:
+        return b ? b->mass : NAN;
+    case Q::FrameRate:
+        return 1.0 / w.settings.dt;
+    case Q::Bounciness:
+        return w.settings.bounciness;
     }
     return NAN;
 }
 
-std::vector<std::string> checkStep(const LessonStep& step, const StepRun& run) {
-    std::vector<std::string> failures;
-    if (!run.reached) {
-        failures.push_back("step " + scene_json::dumpValue(step.title) +
-                           ": the pause point was not reached in " +
-                           std::to_string(run.progress.frames) + " frames");
-        return failures;
-    }
-    for (const LessonExpect& e : step.expect) {
+namespace {
+
+// One message per expectation of `expects` that `run` does not meet.
+void checkExpects(const std::vector<LessonExpect>& expects, const StepRun& run, bool atSetup,
+                  std::vector<std::string>& failures) {
+    for (const LessonExpect& e : expects) {
         const double value = measure(e, run);
         const bool ok = e.equals ? std::abs(value - *e.equals) <= e.tolerance
                                  : (!e.min || value >= *e.min) && (!e.max || value <= *e.max);
@@ -129,10 +140,32 @@ std::vector<std::string> checkStep(const LessonStep& step, const StepRun& run) {
             expected = std::string("in [") + (e.min ? formatNumber(*e.min) : "-inf") + ", " +
                        (e.max ? formatNumber(*e.max) : "inf") + "]";
         }
+        const std::string when = atSetup ? "at the setup, t = 0"
+                                         : "at t = " + formatNumber(run.world.time) + " s, frame " +
+                                               std::to_string(run.progress.frames);
         failures.push_back(e.where + ": " + what + " is " + formatNumber(value) + ", expected " +
-                           expected + " (at t = " + formatNumber(run.world.time) + " s, frame " +
-                           std::to_string(run.progress.frames) + ")");
+                           expected + " (" + when + ")");
     }
+}
+
+} // namespace
+
+std::vector<std::string> checkSetup(const LessonStep& step) {
+    std::vector<std::string> failures;
+    StepRun setup{stepStartWorld(step), StepProgress{}, true};
+    checkExpects(step.given, setup, true, failures);
+    return failures;
+}
+
+std::vector<std::string> checkStep(const LessonStep& step, const StepRun& run) {
+    std::vector<std::string> failures = checkSetup(step);
+    if (!run.reached) {
+        failures.push_back("step " + scene_json::dumpValue(step.title) +
+                           ": the pause point was not reached in " +
+                           std::to_string(run.progress.frames) + " frames");
+        return failures;
+    }
+    checkExpects(step.expect, run, false, failures);
     return failures;
 }
 

@@ -41,7 +41,10 @@ StepRun runStepToPause(const LessonStep& step);
 
 // The measured value of an expectation in a run.
 double measure(const LessonExpect& e, const StepRun& run);
-// Checks every expectation of the step; one message per failure ("lesson.json: steps[3].expect[0]:
+// Checks what the step's question states of its setup (`given`) at t = 0, before any frame.
+std::vector<std::string> checkSetup(const LessonStep& step);
+// Checks the step's `given` at its setup and every expectation at its pause point; one message
+// per failure ("lesson.json: steps[3].expect[0]:
 // vx of "m1" is -1.5, expected -2 within 1e-09"), and one if the pause point was not reached.
 std::vector<std::string> checkStep(const LessonStep& step, const StepRun& run);
 // Every step of the lesson, in order: all failure messages.

@@ -188,20 +188,27 @@ std::string lessonHeading(const LessonSession& session) {
            std::to_string(session.lesson->steps.size()) + " \xc2\xb7 " + step->title;
 }
 
+std::string lessonHint(const LessonSession& session) {
+    if (!session.step()) return "";
+    switch (session.phase) {
+    case LessonSession::Phase::Setup:
+        return session.stopFrame ? "PageDown: play" : "";
+    case LessonSession::Phase::Playing:
+        return "PageDown: the moment at once";
+    case LessonSession::Phase::Moment:
+        return "";
+    }
+    return "";
+}
+
 std::string lessonCaption(const LessonSession& session) {
     const LessonStep* step = session.step();
     if (!step) return "";
     std::string text = step->caption;
-    if (!step->question.empty()) {
-        if (session.revealed)
-            text += "\nAnswer: " + step->answer;
-        else if (session.phase == LessonSession::Phase::Setup)
-            text += "\nPredict: " + step->question + "  (PageDown: play)";
-        else
-            text += "\nPredict: " + step->question;
-    } else if (session.phase == LessonSession::Phase::Setup && session.stopFrame) {
-        text += "\n(PageDown: play)";
-    }
+    if (!step->question.empty())
+        text += session.revealed ? "\nAnswer: " + step->answer : "\nPredict: " + step->question;
+    const std::string hint = lessonHint(session);
+    if (!hint.empty()) text += "\n" + hint;
     if (!session.digits.empty()) text += "\nGo to step " + session.digits + " (Enter)";
     return text;
 }

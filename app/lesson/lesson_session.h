@@ -84,5 +84,8 @@ bool lessonRunsSideBySide(const LessonSession& s, const View& view);
 void lessonAfterFrames(LessonSession& s, SimulationSession& sim, View& view);
 // The caption bar's first line: "n / N · title".
 std::string lessonHeading(const LessonSession& session);
-// The caption bar's text under it: the caption, then the question or its answer.
+// The key to press next, by phase ("PageDown: play" at the setup); "" at the moment.
+std::string lessonHint(const LessonSession& session);
+// The caption bar's text under it: the caption, then "Predict: " and the question or "Answer: "
+// and its answer, then the hint.
 std::string lessonCaption(const LessonSession& session);

@@ -108,13 +108,68 @@ TEST_P(ShippedLessonStep, ShowsOneAndAHalfToTwelveSecondsOfMotion) {
     if (step.pause.kind == LessonPause::Kind::None) GTEST_SKIP() << "no pause point";
     const StepRun run = runStepToPause(step);
     const double seconds = run.world.time / step.timeScale;
-    EXPECT_GE(seconds, 1.5 - 1e-9) << step.title << ": " << run.world.time << " s at time scale "
-                            << step.timeScale;
-    EXPECT_LE(seconds, 12.0 + 1e-9) << step.title << ": " << run.world.time << " s at time scale "
-                             << step.timeScale;
+    EXPECT_GE(seconds, 1.5 - 1e-9)
+        << step.title << ": " << run.world.time << " s at time scale " << step.timeScale;
+    EXPECT_LE(seconds, 12.0 + 1e-9)
+        << step.title << ": " << run.world.time << " s at time scale " << step.timeScale;
+}
+
+// Every question true of the setup on screen (issue 24): a step that asks states what its
+// question says of the setup in `given`, checked at t = 0 (checkSetup: exact numbers within each
+// statement's tolerance, 1e-9 unless it says), and every block it names there lies inside the
+// step's camera (or the world, without one), so the class can read those numbers off the screen.
+TEST_P(ShippedLessonStep, ItsQuestionIsTrueOfTheSetupOnScreen) {
+    const LessonResult r = loadLessonFile(GetParam().file, context());
+    ASSERT_TRUE(r.lesson) << r.error.text();
+    const LessonStep& step = r.lesson->steps.at(GetParam().step);
+    if (step.question.empty()) GTEST_SKIP() << "no question";
+    EXPECT_FALSE(step.given.empty()) << step.title << ": what does its question say of the setup?";
+    for (const std::string& failure : checkSetup(step)) ADD_FAILURE() << failure;
+    const World setup = stepStartWorld(step);
+    const Bounds frame = step.camera.value_or(setup.bounds);
+    for (const LessonExpect& e : step.given) {
+        if (e.block < 0) continue;
+        const Block& b = setup.blocks.at(static_cast<std::size_t>(e.block));
+        const Vec2 lo = b.position - b.halfSize(), hi = b.position + b.halfSize();
+        if (b.isDynamic()) { // a wall may run on past the frame; what moves is seen whole
+            EXPECT_TRUE(lo.x >= frame.min.x && lo.y >= frame.min.y && hi.x <= frame.max.x &&
+                        hi.y <= frame.max.y)
+                << step.title << ": " << e.blockName << " is not all inside the camera";
+        } else {
+            EXPECT_TRUE(hi.x > frame.min.x && hi.y > frame.min.y && lo.x < frame.max.x &&
+                        lo.y < frame.max.y)
+                << step.title << ": " << e.blockName << " is not in the camera";
+        }
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Lessons, ShippedLessonStep, testing::ValuesIn(shippedSteps()), caseName);
+
+// A question that is not true of its setup is caught: `given` is checked at t = 0, before any
+// frame, and names its place and both numbers.
+TEST(LessonRunner, AGivenThatTheSetupDoesNotShowFails) {
+    const std::string q = R"("question": "q?", "answer": "a", )";
+    const LessonStep right = onlyStep(
+        lessonWith(q + R"("given": [{"block": "m1", "x": 4, "right": 4.5, "vx": 6, "mass": 1},
+                         {"block": "m2", "left": 8.25, "top": 6.5, "bottom": 5.5},
+                         {"frame_rate": 60, "bounciness": 1}])"));
+    EXPECT_EQ(right.given.size(), 9u);
+    EXPECT_TRUE(checkSetup(right).empty());
+    // The gap between m1's right side and m2's left side is 3.75 m, not 4 m.
+    const LessonStep wrong = onlyStep(
+        lessonWith(q + R"("pause_at": {"collision": 1}, "given": [{"block": "m2", "left": 8.5}])"));
+    const std::vector<std::string> failures = checkStep(wrong, runStepToPause(wrong));
+    ASSERT_EQ(failures.size(), 1u);
+    EXPECT_NE(failures[0].find("steps[0].given[0]: left of \"m2\" is 8.25, expected 8.5"),
+              std::string::npos)
+        << failures[0];
+    EXPECT_NE(failures[0].find("(at the setup, t = 0)"), std::string::npos) << failures[0];
+    // What a question states: no question, no `given`.
+    const LessonResult alone =
+        parseLesson(lessonWith(R"("given": [{"block": "m1", "x": 4}])"), "test.json", context());
+    ASSERT_FALSE(alone.lesson);
+    EXPECT_NE(alone.error.text().find("steps[0].given"), std::string::npos) << alone.error.text();
+}
 
 TEST(Lesson, Lecture3FollowsTheLectureWithEnoughSteps) {
     const LessonResult r =

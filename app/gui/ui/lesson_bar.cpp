@@ -1,6 +1,7 @@
 // The lesson's caption bar: across the top of the scene, "n / N · title" large, the keys (in
 // present mode the method and t: lessonBarStatus) beside it, the caption under it, then the
-// question (or, after the next press, its answer). The one caption of a lesson, presenting or
+// question ("Predict: ...", at the setup and while the step plays; its answer at the moment) and
+// the key to press next. The one caption of a lesson, presenting or
 // not (present mode's one-line caption is for scenes). Opaque, so nothing shows through; its
 // height is kept in app.view.captionHeight and the scene's viewport starts below it. In present
 // mode it is the scene's caption, not a window: --layout-json lists no window there.
@@ -52,10 +53,11 @@ void drawLessonCaption(App& app) {
         if (s.revealed) {
             ImGui::TextColored(uiNoteColor(), "Answer: %s", step->answer.c_str());
         } else {
-            ImGui::TextColored(uiQuestionColor(), "Question: %s", step->question.c_str());
-            ImGui::TextColored(uiDimColor(), "PageDown shows the answer");
+            ImGui::TextColored(uiQuestionColor(), "Predict: %s", step->question.c_str());
         }
     }
+    const std::string hint = lessonHint(s);
+    if (!hint.empty()) ImGui::TextColored(uiDimColor(), "%s", hint.c_str());
     if (!s.digits.empty())
         ImGui::TextColored(uiDimColor(), "Go to step %s (Enter)", s.digits.c_str());
     ImGui::PopTextWrapPos();

@@ -155,36 +155,46 @@ void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed)
     }
 }
 
+// The numbers of the grid along the floor and the left wall; when the camera leaves the floor
+// (or the left wall) out of the view, along the view's bottom (or left) edge, so that a position
+// a step's question names can be read off the screen.
 void drawAxisNumbers(const App& app, ImDrawList* dl) {
     const Camera& cam = app.view.camera;
     const Bounds& bounds = app.sim.world().bounds;
+    const ScreenRect& vp = cam.viewport();
     const double step = gridSpacing(cam.pixelsPerMetre(), 12.0) * 5.0;
     const ImU32 color = packed(theme().axis);
     const float gap = 14.0f;
+    // Where the floor (the left wall) is below (left of) the view, the numbers go on its edge.
+    const Vec2 corner = cam.worldToScreen(bounds.min);
+    const bool floorHidden = corner.y > vp.y + vp.height;
+    const bool wallHidden = corner.x < vp.x;
+    const float xRow =
+        floorHidden ? static_cast<float>(vp.y + vp.height) - ImGui::GetTextLineHeight() - 4.0f
+                    : static_cast<float>(corner.y) + gap;
     char text[32];
     for (double x = bounds.min.x; x <= bounds.max.x + 1e-9; x += step) {
         std::snprintf(text, sizeof text, "%g", x);
         const Vec2 s = cam.worldToScreen({x, bounds.min.y});
         const ImVec2 size = ImGui::CalcTextSize(text);
-        dl->AddText(ImVec2(static_cast<float>(s.x) - size.x * 0.5f, static_cast<float>(s.y) + gap),
-                    color, text);
+        dl->AddText(ImVec2(static_cast<float>(s.x) - size.x * 0.5f, xRow), color, text);
     }
     for (double y = bounds.min.y; y <= bounds.max.y + 1e-9; y += step) {
         std::snprintf(text, sizeof text, "%g", y);
         const Vec2 s = cam.worldToScreen({bounds.min.x, y});
         const ImVec2 size = ImGui::CalcTextSize(text);
-        dl->AddText(
-            ImVec2(static_cast<float>(s.x) - size.x - gap, static_cast<float>(s.y) - size.y * 0.5f),
-            color, text);
+        const float x =
+            wallHidden ? static_cast<float>(vp.x) + 4.0f : static_cast<float>(s.x) - size.x - gap;
+        dl->AddText(ImVec2(x, static_cast<float>(s.y) - size.y * 0.5f), color, text);
     }
     // The unit, after the last number on the x axis.
     const double lastX =
         bounds.min.x + std::floor((bounds.max.x - bounds.min.x) / step + 1e-9) * step;
     std::snprintf(text, sizeof text, "%g", lastX);
     const Vec2 last = cam.worldToScreen({lastX, bounds.min.y});
-    dl->AddText(ImVec2(static_cast<float>(last.x) + ImGui::CalcTextSize(text).x * 0.5f + 4.0f,
-                       static_cast<float>(last.y) + gap),
-                color, "m");
+    dl->AddText(
+        ImVec2(static_cast<float>(last.x) + ImGui::CalcTextSize(text).x * 0.5f + 4.0f, xRow), color,
+        "m");
 }
 
 // A text on a rounded plate; returns its width with the padding.
