@@ -1,5 +1,8 @@
 #include "chart.h"
 
+#include "printable.h"
+#include "safe_file.h"
+
 #include <stb_image_write.h>
 #include <stb_truetype.h> // libstb.so holds the implementation: no STB_TRUETYPE_IMPLEMENTATION
 
@@ -164,8 +167,8 @@ class Canvas {
         return layout(
             s, px, [](const Font::Glyph&, float) {}, 0.0f);
     }
-    bool save(const std::string& path) const {
-        return stbi_write_png(path.c_str(), w_, h_, 3, pixels_.data(), w_ * 3) != 0;
+    bool save(const std::string& path, std::string* error) const {
+        return writePngFile(path, pixels_.data(), w_, h_, 3, error);
     }
 
   private:
@@ -255,6 +258,22 @@ void drawPanel(Canvas& canvas, const ChartPanel& panel, int x0, int y0, int w, i
 
 } // namespace
 
+bool writePngFile(const std::string& path, const std::uint8_t* pixels, int width, int height,
+                  int channels, std::string* error) {
+    // Encoded in memory, then written through a SafeFile (the old file kept on failure).
+    std::string png;
+    const auto append = [](void* to, void* data, int size) {
+        static_cast<std::string*>(to)->append(static_cast<const char*>(data),
+                                              static_cast<std::size_t>(size));
+    };
+    if (stbi_write_png_to_func(append, &png, width, height, channels, pixels, width * channels) ==
+        0) {
+        if (error) *error = printable(path, kPrintablePath) + ": cannot encode the PNG";
+        return false;
+    }
+    return writeFileSafely(path, png, error);
+}
+
 bool writeLogLogChart(const std::string& path, const std::vector<ChartPanel>& panels,
                       const std::string& title, std::string* error) {
     const int columns = 3, panelW = 560, panelH = 400, header = 70;
@@ -280,9 +299,5 @@ bool writeLogLogChart(const std::string& path, const std::vector<ChartPanel>& pa
     for (size_t i = 0; i < panels.size(); ++i)
         drawPanel(canvas, panels[i], static_cast<int>(i % columns) * panelW,
                   header + static_cast<int>(i / columns) * panelH, panelW, panelH, colours);
-    if (!canvas.save(path)) {
-        if (error) *error = "cannot write " + path;
-        return false;
-    }
-    return true;
+    return canvas.save(path, error);
 }

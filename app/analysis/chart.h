@@ -5,6 +5,7 @@
 
 #include "vec2.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -26,3 +27,9 @@ struct ChartPanel {
 // cannot be read.
 bool writeLogLogChart(const std::string& path, const std::vector<ChartPanel>& panels,
                       const std::string& title, std::string* error);
+
+// Writes 8-bit pixels (`channels` per pixel, top row first) as a PNG through a SafeFile
+// (safe_file.h): encoded in memory, the old file kept on failure; false with `error` naming the
+// file. The chart's and the app's screenshots' one PNG writer.
+bool writePngFile(const std::string& path, const std::uint8_t* pixels, int width, int height,
+                  int channels, std::string* error);

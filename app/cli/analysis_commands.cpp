@@ -2,6 +2,7 @@
 
 #include "commands.h"
 #include "printable.h"
+#include "safe_file.h"
 #include "stability.h"
 #include "tradeoff.h"
 
@@ -24,12 +25,14 @@ bool prepare(const std::string& dir, std::ostream& err) {
     return true;
 }
 
-// Writes a file with `write(stream)`; false with a message on `err` when it cannot be written.
+// Writes a file with `write(stream)` through a SafeFile; false with a message on `err` when it
+// cannot be written (the file that was there is kept).
 template <class Write> bool writeFile(const std::string& path, std::ostream& err, Write&& write) {
-    std::ofstream file(path);
-    if (file) write(file);
-    if (!file) {
-        err << printable(path, kPrintablePath) << ": cannot write\n";
+    SafeFile file(path);
+    write(file.stream());
+    std::string error;
+    if (!file.commit(&error)) {
+        err << error << "\n";
         return false;
     }
     return true;

@@ -6,6 +6,7 @@
 #include "input_limits.h"
 #include "lesson_runner.h"
 #include "printable.h"
+#include "safe_file.h"
 #include "scene.h"
 #include "scene_json.h"
 #include "world.h"
@@ -18,6 +19,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <ostream>
 
 namespace {
@@ -169,6 +171,25 @@ RunTotals simulate(World& world, const StopRule& stop, const RunRequest& request
     return totals;
 }
 
+// No silent blow-up: where nothing adds energy (no thrust, no moving platform), kinetic plus
+// potential energy may not grow past kEnergyGrowthWarning times its start unnoticed. Where it does,
+// the method fails at these settings (README, "Energy at the extremes"): the run is
+// as simulated, and stderr says so.
+constexpr double kEnergyGrowthWarning = 10.0;
+
+void warnEnergyGrowth(const World& world, double before, std::ostream& err) {
+    for (const Block& b : world.blocks)
+        if (b.kind == BodyKind::Kinematic || b.force.x != 0.0 || b.force.y != 0.0) return;
+    const double after = kineticEnergy(world) + potentialEnergy(world);
+    if (!(before > 0.0) || !(after > kEnergyGrowthWarning * before)) return;
+    err << "sandbox-cli run: warning: kinetic plus potential energy grew from "
+        << limits::formatNumber(before) << " J to " << limits::formatNumber(after) << " J (x"
+        << limits::formatNumber(std::round(after / before)) << ") with nothing adding any: the "
+        << methodName(world.settings.method)
+        << " method creates it at these settings (README, \"Energy at the "
+           "extremes\")\n";
+}
+
 nlohmann::ordered_json vecJson(Vec2 v) {
     return {v.x, v.y};
 }
@@ -257,25 +278,30 @@ int runCommand(const RunRequest& request, std::ostream& out, std::ostream& err) 
     StopRule stop;
     if (!applyOptions(request, scene.duration, scene.settings, stop, err)) return kExitBadInput;
     World world = makeWorld(scene);
-    std::ofstream trace;
+    std::optional<SafeFile> trace;
     if (request.trace) {
-        trace.open(*request.trace, std::ios::binary | std::ios::trunc);
-        if (!trace) {
+        // Written beside its target and renamed over it when complete: never onto the scene read.
+        if (sameExistingFile(*request.trace, request.scene)) {
             err << "sandbox-cli run: --trace " << printable(*request.trace, kPrintablePath)
-                << ": cannot write the file\n";
+                << ": is the scene file being run; the output may not overwrite its input\n";
             return kExitBadInput;
         }
-        trace << std::setprecision(17);
-        writeTraceHeader(trace, scene);
+        trace.emplace(*request.trace);
+        std::string error;
+        if (!trace->opened(&error)) {
+            err << "sandbox-cli run: --trace " << error << "\n";
+            return kExitBadInput;
+        }
+        trace->stream() << std::setprecision(17);
+        writeTraceHeader(trace->stream(), scene);
     }
-    const RunTotals run = simulate(world, stop, request, request.trace ? &trace : nullptr, err);
-    if (request.trace) {
-        trace.close();
-        if (!trace) {
-            err << "sandbox-cli run: --trace " << printable(*request.trace, kPrintablePath)
-                << ": writing failed\n";
-            return kExitBadInput;
-        }
+    const double energyBefore = kineticEnergy(world) + potentialEnergy(world);
+    const RunTotals run = simulate(world, stop, request, trace ? &trace->stream() : nullptr, err);
+    warnEnergyGrowth(world, energyBefore, err);
+    std::string error;
+    if (trace && !trace->commit(&error)) {
+        err << "sandbox-cli run: --trace " << error << "\n";
+        return kExitBadInput;
     }
     if (request.json)
         printJson(scene, world, run.steps, run.interrupted, out);
@@ -310,7 +336,8 @@ int validateCommand(const std::string& path, std::ostream& out, std::ostream& er
 namespace {
 
 std::string blockLabel(const LessonStep& step, std::size_t b) {
-    return step.scene.blocks[b].name.empty() ? "#" + std::to_string(b) : step.scene.blocks[b].name;
+    return step.scene->blocks[b].name.empty() ? "#" + std::to_string(b)
+                                              : step.scene->blocks[b].name;
 }
 
 // One step as `lesson --json` lists it: where it pauses, what it counted, and the seconds of
@@ -360,7 +387,8 @@ int lessonCommand(const std::string& path, std::ostream& out, std::ostream& err,
     }
     const Lesson& lesson = *loaded.lesson;
     nlohmann::ordered_json steps = nlohmann::ordered_json::array();
-    if (!json) out << lesson.name << ": " << lesson.steps.size() << " steps\n";
+    if (!json)
+        out << printable(lesson.name, kPrintablePath) << ": " << lesson.steps.size() << " steps\n";
     std::vector<std::string> failures;
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
         const LessonStep& step = lesson.steps[i];
@@ -371,14 +399,16 @@ int lessonCommand(const std::string& path, std::ostream& out, std::ostream& err,
             steps.push_back(stepJson(i + 1, step, run, f));
             continue;
         }
-        out << i + 1 << ". " << step.title << ": " << (run.reached ? "paused" : "NOT PAUSED")
-            << " at t = " << run.world.time << " s (frame " << run.progress.frames << "), "
-            << run.progress.collisions << " collisions, " << run.progress.contacts << " contacts, "
+        out << i + 1 << ". " << printable(step.title, kPrintablePath) << ": "
+            << (run.reached ? "paused" : "NOT PAUSED") << " at t = " << run.world.time
+            << " s (frame " << run.progress.frames << "), " << run.progress.collisions
+            << " collisions, " << run.progress.contacts << " contacts, "
             << methodName(run.world.settings.method) << "\n";
         for (std::size_t b = 0; b < run.world.blocks.size() && b < 12; ++b) {
             const Block& block = run.world.blocks[b];
-            out << "     " << std::left << std::setw(14) << blockLabel(step, b) << std::right
-                << " position " << block.position << "  velocity " << block.velocity << "\n";
+            out << "     " << std::left << std::setw(14) << printable(blockLabel(step, b))
+                << std::right << " position " << block.position << "  velocity " << block.velocity
+                << "\n";
         }
     }
     if (json) {
@@ -388,6 +418,6 @@ int lessonCommand(const std::string& path, std::ostream& out, std::ostream& err,
         // ASCII only: names are \u-escaped, so no byte of them can act on a terminal.
         out << j.dump(-1, ' ', true, nlohmann::ordered_json::error_handler_t::replace) << "\n";
     }
-    for (const std::string& f : failures) err << f << "\n";
+    for (const std::string& f : failures) err << printable(f, kPrintablePath) << "\n";
     return failures.empty() ? kExitOk : kExitBadInput;
 }

@@ -4,7 +4,9 @@
 #include "lesson.h"
 
 #include "input_limits.h"
+#include "lesson_runner.h"
 #include "printable.h"
+#include "safe_file.h"
 #include "scene_json.h"
 #include "vocabulary.h"
 
@@ -13,6 +15,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <system_error>
 
 namespace fs = std::filesystem;
@@ -36,9 +40,10 @@ bool isRegularFile(const fs::path& p) {
     return fs::is_regular_file(p, ec);
 }
 
-// A name echoed in a message, quoted and escaped (no raw control bytes reach a terminal).
+// A name echoed in a message, quoted, escaped and cut (printable.h): no raw control bytes reach a
+// terminal, and a 10 MB name is not a 10 MB message.
 std::string quoted(const std::string& s) {
-    return dumpValue(json(s));
+    return "\"" + printable(s) + "\"";
 }
 
 // A text field: a non-empty string of printable characters (newlines only where allowed), each
@@ -111,53 +116,104 @@ ValueError sceneError(const SceneError& e, const std::string& scenePath) {
     return ValueError{scenePath, e.text()};
 }
 
-// The file a step's "scene" string names: a path (relative to the lesson first), else a
-// shipped scene's name.
-std::string findSceneFile(const std::string& name, const LessonContext& context) {
-    std::vector<fs::path> candidates;
+// The file a step's "scene" string names: a path relative to the lesson's folder that stays
+// inside it (after "..", "." and links), a regular file and not the lesson itself; else a shipped
+// scene's name (no "/"). "" when there is none; a path that exists but may not be used throws.
+std::string findSceneFile(const std::string& name, const LessonContext& context,
+                          const std::string& scenePath) {
     const fs::path p(name);
-    if (p.is_absolute()) {
-        candidates.push_back(p);
-    } else {
-        const fs::path base = context.baseDir.empty() ? fs::path(".") : fs::path(context.baseDir);
-        candidates.push_back(base / p);
-        candidates.push_back(p);
-        if (!context.scenesDir.empty()) {
-            candidates.push_back(fs::path(context.scenesDir) / p);
-            candidates.push_back(fs::path(context.scenesDir) / (name + ".json"));
-        }
+    if (p.is_absolute())
+        throw ValueError{scenePath, quoted(name) + " is an absolute path: a lesson names its "
+                                                   "scenes relative to its own folder"};
+    const fs::path base = context.baseDir.empty() ? fs::path(".") : fs::path(context.baseDir);
+    std::error_code ec;
+    const fs::path folder = fs::weakly_canonical(base, ec);
+    const fs::path file = fs::weakly_canonical(base / p, ec);
+    const bool inside =
+        !ec &&
+        std::mismatch(folder.begin(), folder.end(), file.begin(), file.end()).first == folder.end();
+    const fs::file_status status = fs::status(base / p, ec);
+    if (fs::exists(status) && !p.empty()) {
+        if (!inside) throw ValueError{scenePath, quoted(name) + " is outside the lesson's folder"};
+        if (!fs::is_regular_file(status))
+            throw ValueError{scenePath, quoted(name) + " is not a regular file (a directory, a "
+                                                       "device or a FIFO)"};
+        if (!context.lessonFile.empty() && sameExistingFile(file.string(), context.lessonFile))
+            throw ValueError{scenePath, quoted(name) + " is the lesson file itself"};
+        return (base / p).lexically_normal().string();
     }
-    for (const fs::path& c : candidates)
+    if (!inside) throw ValueError{scenePath, quoted(name) + " is outside the lesson's folder"};
+    if (context.scenesDir.empty() || name.empty() || name.find('/') != std::string::npos ||
+        name == "." || name == "..")
+        return "";
+    for (const fs::path& c :
+         {fs::path(context.scenesDir) / p, fs::path(context.scenesDir) / (name + ".json")})
         if (isRegularFile(c)) return c.lexically_normal().string();
     return "";
 }
 
+// Scenes already loaded in this lesson, by file (and overrides): a scene named by many steps is
+// read and parsed once and its blocks held once. `blocks` counts the blocks of all of them.
+struct SceneCache {
+    struct Entry {
+        std::shared_ptr<const Scene> scene;
+        json root; // the file's JSON, to merge overrides into
+    };
+    std::map<std::string, Entry> files;
+    std::map<std::string, std::shared_ptr<const Scene>> withOverrides;
+    std::size_t blocks = 0;
+    std::size_t maxBlocks = kMaxLessonBlocks;
+
+    std::shared_ptr<const Scene> keep(Scene scene, const std::string& scenePath) {
+        blocks += scene.blocks.size();
+        if (blocks > maxBlocks)
+            throw ValueError{scenePath, "the lesson's scenes hold more than " +
+                                            std::to_string(maxBlocks) +
+                                            " blocks in all (a scene that several steps name "
+                                            "counts once)"};
+        return std::make_shared<const Scene>(std::move(scene));
+    }
+};
+
 // Loads the step's scene with its overrides applied; sets step.sceneSource and step.timeScale.
 void loadStepScene(const json& step, const std::string& path, const LessonContext& context,
-                   LessonStep& out) {
+                   SceneCache& cache, LessonStep& out) {
     const std::string scenePath = keyPath(path, "scene");
     if (!step.contains("scene")) throw ValueError{path, "missing \"scene\""};
     const json& scene = step["scene"];
-    json root;
+    json inlineRoot;
+    const json* root = &inlineRoot;
     if (scene.is_string()) {
         const std::string name = scene.get<std::string>();
-        const std::string file = findSceneFile(name, context);
+        const std::string file = findSceneFile(name, context, scenePath);
         if (file.empty())
-            throw ValueError{
-                scenePath, "no scene " + quoted(name) + " (neither a file nor a shipped scene in " +
-                               (context.scenesDir.empty() ? "(none)" : context.scenesDir) + ")"};
-        std::string fileText;
-        if (auto e = readJsonFile(file, fileText)) throw ValueError{scenePath, e->text()};
-        const SceneResult plain = parseScene(fileText, file); // its own errors at its own places
-        if (!plain.scene) throw ValueError{scenePath, plain.error.text()};
-        parseJsonText(fileText, file, root);
+            throw ValueError{scenePath, "no scene " + quoted(name) +
+                                            " (neither a file in the lesson's folder nor a "
+                                            "shipped scene in " +
+                                            (context.scenesDir.empty()
+                                                 ? "(none)"
+                                                 : printable(context.scenesDir, kPrintablePath)) +
+                                            ")"};
+        auto cached = cache.files.find(file);
+        if (cached == cache.files.end()) {
+            std::string fileText;
+            if (auto e = readJsonFile(file, fileText)) throw ValueError{scenePath, e->text()};
+            // Its own errors at its own places.
+            SceneResult plain = parseScene(fileText, file);
+            if (!plain.scene) throw ValueError{scenePath, plain.error.text()};
+            SceneCache::Entry entry;
+            parseJsonText(fileText, file, entry.root);
+            entry.scene = cache.keep(std::move(*plain.scene), scenePath);
+            cached = cache.files.emplace(file, std::move(entry)).first;
+        }
         out.sceneSource = file;
-        out.scene = *plain.scene;
+        out.scene = cached->second.scene;
+        root = &cached->second.root;
     } else if (scene.is_object()) {
-        root = scene;
-        const SceneResult plain = parseScene(root.dump(), kInline);
+        inlineRoot = scene;
+        SceneResult plain = parseScene(inlineRoot.dump(), kInline);
         if (!plain.scene) throw sceneError(plain.error, scenePath);
-        out.scene = *plain.scene;
+        out.scene = cache.keep(std::move(*plain.scene), scenePath);
     } else {
         throw ValueError{scenePath, "must be a shipped scene's name, a path, or a scene object"};
     }
@@ -165,7 +221,18 @@ void loadStepScene(const json& step, const std::string& path, const LessonContex
 
     const std::string overridesPath = keyPath(path, "overrides");
     const json& overrides = requireObject(step["overrides"], overridesPath);
-    json world = root.contains("world") ? root["world"] : json::object();
+    // The same file with the same overrides: the scene already made for an earlier step.
+    const std::string sharedKey =
+        out.sceneSource.empty() ? "" : out.sceneSource + "\n" + overrides.dump();
+    if (auto it = cache.withOverrides.find(sharedKey);
+        !sharedKey.empty() && it != cache.withOverrides.end()) {
+        out.scene = it->second;
+        if (overrides.contains("time_scale"))
+            out.timeScale = number(overrides["time_scale"], keyPath(overridesPath, "time_scale"));
+        return;
+    }
+    json merged = *root;
+    json world = merged.contains("world") ? merged["world"] : json::object();
     std::vector<std::pair<std::string, std::string>> renamed; // world key -> override key
     for (const auto& item : overrides.items()) {
         const std::string key = item.key();
@@ -187,15 +254,16 @@ void loadStepScene(const json& step, const std::string& path, const LessonContex
             renamed.emplace_back(key, key);
         }
     }
-    root["world"] = world;
-    const SceneResult merged = parseScene(root.dump(), kInline);
-    if (merged.scene) {
-        out.scene = *merged.scene;
+    merged["world"] = world;
+    SceneResult mergedScene = parseScene(merged.dump(), kInline);
+    if (mergedScene.scene) {
+        out.scene = cache.keep(std::move(*mergedScene.scene), scenePath);
+        if (!sharedKey.empty()) cache.withOverrides.emplace(sharedKey, out.scene);
         return;
     }
     // "world.bounciness" -> "steps[2].overrides.bounciness"; anything else the overrides broke
     // (a block now out of the bounds) is placed at the overrides with the scene's path.
-    const ValueError e = sceneError(merged.error, "");
+    const ValueError e = sceneError(mergedScene.error, "");
     const std::string where = e.path.empty() ? "" : e.path.substr(1);
     for (const auto& [worldKey, overrideKey] : renamed) {
         const std::string prefix = "world." + worldKey;
@@ -364,27 +432,29 @@ void parseExpects(const json& list, const std::string& path, const Scene& scene,
 }
 
 LessonStep parseStep(const json& value, const std::string& path, const std::string& source,
-                     const LessonContext& context) {
+                     const LessonContext& context, SceneCache& cache) {
     requireObject(value, path);
     checkKeys(value, path,
               {"title", "caption", "scene", "overrides", "overlays", "select", "thrust", "camera",
                "frame", "pause_at", "question", "answer", "reveal", "given", "expect"});
     LessonStep step;
+    step.place = source + ": " + path;
     if (!value.contains("title")) throw ValueError{path, "missing \"title\""};
     step.title = text(value["title"], keyPath(path, "title"), 1);
     if (!value.contains("caption")) throw ValueError{path, "missing \"caption\""};
     step.caption = text(value["caption"], keyPath(path, "caption"), kMaxCaptionLines);
-    loadStepScene(value, path, context, step);
+    loadStepScene(value, path, context, cache, step);
+    const Scene& scene = *step.scene;
     if (value.contains("overlays"))
         step.overlays = overlayList(value["overlays"], keyPath(path, "overlays"), context);
     if (value.contains("select"))
-        step.selected = requireBlock(step.scene, value["select"], keyPath(path, "select"));
+        step.selected = requireBlock(scene, value["select"], keyPath(path, "select"));
     if (value.contains("thrust")) {
         const std::string p = keyPath(path, "thrust");
         step.thrust = number(value["thrust"], p, limits::kThrust);
         if (step.selected < 0)
             throw ValueError{p, "needs \"select\": the block the arrow keys push"};
-        const BlockDef& b = step.scene.blocks[static_cast<std::size_t>(step.selected)];
+        const BlockDef& b = scene.blocks[static_cast<std::size_t>(step.selected)];
         if (b.kind != BodyKind::Dynamic)
             throw ValueError{p, "the selected block " + quoted(b.name) +
                                     " has no mass: thrust pushes a dynamic block"};
@@ -402,8 +472,20 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
                                     viewFrameName(ViewFrame::CentreOfMass) + ")"};
         step.frame = *frame;
     }
-    if (value.contains("pause_at"))
-        step.pause = parsePause(value["pause_at"], keyPath(path, "pause_at"), step.scene);
+    if (value.contains("pause_at")) {
+        step.pause = parsePause(value["pause_at"], keyPath(path, "pause_at"), scene);
+        // A time pause must be reachable within the step's budget; a collision pause is searched
+        // for within it (lesson_runner.h), and fails with its place when it does not come.
+        if (step.pause.kind == LessonPause::Kind::Time &&
+            static_cast<double>(maxStepFrames(step)) < pauseFrames(step))
+            throw ValueError{keyPath(keyPath(path, "pause_at"), "time"),
+                             dumpValue(step.pause.time) + " s at " +
+                                 dumpValue(1.0 / scene.settings.dt) + " frames per second, " +
+                                 std::to_string(scene.settings.substeps) + " substeps and " +
+                                 std::to_string(scene.blocks.size()) +
+                                 " blocks is more than a step may run (1e8 block-steps: blocks x "
+                                 "frames x substeps)"};
+    }
     if (value.contains("question")) {
         step.question = text(value["question"], keyPath(path, "question"), kMaxCaptionLines);
         if (!value.contains("answer")) throw ValueError{path, "a \"question\" needs an \"answer\""};
@@ -423,10 +505,10 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
         if (!value.contains("question"))
             throw ValueError{keyPath(path, "given"), "what a question states: needs a "
                                                      "\"question\""};
-        parseExpects(value["given"], keyPath(path, "given"), step.scene, source, step.given);
+        parseExpects(value["given"], keyPath(path, "given"), scene, source, step.given);
     }
     if (value.contains("expect"))
-        parseExpects(value["expect"], keyPath(path, "expect"), step.scene, source, step.expect);
+        parseExpects(value["expect"], keyPath(path, "expect"), scene, source, step.expect);
     return step;
 }
 
@@ -443,14 +525,17 @@ Lesson parseLessonValue(const json& root, const std::string& source, const Lesso
     if (!steps.is_array()) throw ValueError{"steps", "must be an array"};
     if (steps.empty()) throw ValueError{"steps", "must have at least one step"};
     if (steps.size() > kMaxSteps) throw ValueError{"steps", "more than 1000 steps"};
+    SceneCache cache;
+    cache.maxBlocks = context.maxBlocks;
     for (std::size_t i = 0; i < steps.size(); ++i)
-        lesson.steps.push_back(parseStep(steps[i], indexPath("steps", i), source, context));
+        lesson.steps.push_back(parseStep(steps[i], indexPath("steps", i), source, context, cache));
     return lesson;
 }
 
-LessonResult lessonFailure(std::string where, std::string message) {
+// Printable and bounded, as the scene loader's errors (scene_error.h), whatever the file's name.
+LessonResult lessonFailure(const std::string& where, const std::string& message) {
     LessonResult r;
-    r.error = {std::move(where), std::move(message)};
+    r.error = ::sceneError(where, message);
     return r;
 }
 
@@ -487,6 +572,7 @@ LessonResult loadLessonFile(const std::string& path, LessonContext context) {
     std::string text;
     if (auto error = readJsonFile(path, text)) return lessonFailure(error->where, error->message);
     if (context.baseDir.empty()) context.baseDir = fs::path(path).parent_path().string();
+    context.lessonFile = path;
     LessonResult r = parseLesson(text, path, context);
     if (r.lesson) r.lesson->path = path;
     return r;
@@ -496,9 +582,9 @@ std::optional<std::size_t> stepIndex(const Lesson& lesson, long long number, std
     const long long count = static_cast<long long>(lesson.steps.size());
     if (number >= 1 && number <= count) return static_cast<std::size_t>(number - 1);
     if (error) {
-        *error = (lesson.path.empty() ? lesson.name : lesson.path) + ": no step " +
-                 std::to_string(number) + " (the lesson has steps 1 to " + std::to_string(count) +
-                 ")";
+        *error = printable(lesson.path.empty() ? lesson.name : lesson.path, kPrintablePath) +
+                 ": no step " + std::to_string(number) + " (the lesson has steps 1 to " +
+                 std::to_string(count) + ")";
     }
     return std::nullopt;
 }

@@ -7,6 +7,7 @@
 #include "scene.h"
 #include "vocabulary.h"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -56,11 +57,21 @@ struct LessonExpect {
 // The name of a quantity as the file writes it ("x", "vy", "kinetic_energy", ...).
 const char* quantityName(LessonExpect::Quantity q);
 
+// The blocks of all a lesson's scenes together (a scene shared by steps counts once): bounds the
+// memory a lesson may take.
+inline constexpr std::size_t kMaxLessonBlocks = 2000000;
+// The work a step's run to its pause point may take, in block-steps (blocks x frames x
+// substeps): bounds the time a lesson takes to validate (1e8: a few seconds).
+inline constexpr double kMaxStepBlockSteps = 1e8;
+
 struct LessonStep {
     std::string title;
-    std::string caption;               // one to three lines, separated by '\n'
-    std::string sceneSource;           // the file the scene came from, or "" for an inline scene
-    Scene scene;                       // with the step's overrides applied
+    std::string caption;     // one to three lines, separated by '\n'
+    std::string place;       // "lesson.json: steps[3]", for the runner's messages
+    std::string sceneSource; // the file the scene came from, or "" for an inline scene
+    // With the step's overrides applied; shared by the steps that name one file with the same
+    // overrides (parsed once: a lesson of 1000 steps on one 200,000-block scene holds it once).
+    std::shared_ptr<const Scene> scene;
     double timeScale = 1.0;            // simulated seconds per real second (the app's Time scale)
     std::vector<std::string> overlays; // names from the overlay table, on while the step shows
     int selected = -1;                 // block index, -1 for none
@@ -93,9 +104,11 @@ struct LessonResult {
 
 // What a lesson file may refer to.
 struct LessonContext {
-    std::string scenesDir;                 // shipped scenes, for "scene": "bullet_wall"
-    std::string baseDir;                   // scene paths are relative to it first ("" = cwd)
-    std::vector<std::string> overlayNames; // the overlay table's names; empty: not checked
+    std::string scenesDir;                    // shipped scenes, for "scene": "bullet_wall"
+    std::string baseDir;                      // scene paths are relative to it ("" = cwd)
+    std::string lessonFile;                   // the lesson's own file: no step may name it
+    std::size_t maxBlocks = kMaxLessonBlocks; // in all the lesson's scenes (lower in tests)
+    std::vector<std::string> overlayNames;    // the overlay table's names; empty: not checked
 };
 
 // Parses and validates lesson text; `sourceName` is used in error places.

@@ -1,5 +1,6 @@
 #include "lesson_runner.h"
 
+#include "printable.h"
 #include "scene_json.h"
 
 #include <algorithm>
@@ -11,7 +12,6 @@ namespace {
 // dt and carry rounding).
 constexpr double kTimeSlack = 1e-9;
 constexpr double kCollisionSearchSeconds = 120.0; // s of simulated time to find a collision
-constexpr int kFrameLimit = 200000;
 
 std::string formatNumber(double x) {
     return scene_json::dumpValue(x);
@@ -50,15 +50,28 @@ bool countFrame(const LessonPause& pause, const World& world, const StepStats& s
     return false;
 }
 
+double pauseFrames(const LessonStep& step) {
+    const double dt = step.scene->settings.dt;
+    const double seconds =
+        step.pause.kind == LessonPause::Kind::Time ? step.pause.time : kCollisionSearchSeconds;
+    return std::ceil(seconds / dt) + 2;
+}
+
 int maxStepFrames(const LessonStep& step) {
-    const double dt = step.scene.settings.dt;
-    const double seconds = step.pause.kind == LessonPause::Kind::Time ? step.pause.time * 1.01 + 1.0
-                                                                      : kCollisionSearchSeconds;
-    return static_cast<int>(std::min<double>(kFrameLimit, std::ceil(seconds / dt) + 2));
+    const Scene& scene = *step.scene;
+    const double dt = scene.settings.dt;
+    // A time pause: the frames to T and a margin (frame times are sums of dt).
+    const double wanted = step.pause.kind == LessonPause::Kind::Time
+                              ? std::ceil((step.pause.time * 1.01 + 1.0) / dt) + 2
+                              : pauseFrames(step);
+    const double perFrame = static_cast<double>(std::max<std::size_t>(1, scene.blocks.size())) *
+                            std::max(1, scene.settings.substeps);
+    const double budget = std::floor(kMaxStepBlockSteps / perFrame);
+    return static_cast<int>(std::max(1.0, std::min(wanted, budget)));
 }
 
 World stepStartWorld(const LessonStep& step) {
-    return makeWorld(step.scene);
+    return makeWorld(*step.scene);
 }
 
 StepRun runStepToPause(const LessonStep& step) {
@@ -132,7 +145,7 @@ void checkExpects(const std::vector<LessonExpect>& expects, const StepRun& run, 
                                  : (!e.min || value >= *e.min) && (!e.max || value <= *e.max);
         if (ok && std::isfinite(value)) continue;
         std::string what = quantityName(e.quantity);
-        if (e.block >= 0) what += " of " + scene_json::dumpValue(e.blockName);
+        if (e.block >= 0) what += " of \"" + printable(e.blockName) + "\"";
         std::string expected;
         if (e.equals) {
             expected = formatNumber(*e.equals) + " within " + formatNumber(e.tolerance);
@@ -143,8 +156,8 @@ void checkExpects(const std::vector<LessonExpect>& expects, const StepRun& run, 
         const std::string when = atSetup ? "at the setup, t = 0"
                                          : "at t = " + formatNumber(run.world.time) + " s, frame " +
                                                std::to_string(run.progress.frames);
-        failures.push_back(e.where + ": " + what + " is " + formatNumber(value) + ", expected " +
-                           expected + " (" + when + ")");
+        failures.push_back(printable(e.where, kPrintablePath) + ": " + what + " is " +
+                           formatNumber(value) + ", expected " + expected + " (" + when + ")");
     }
 }
 
@@ -160,9 +173,15 @@ std::vector<std::string> checkSetup(const LessonStep& step) {
 std::vector<std::string> checkStep(const LessonStep& step, const StepRun& run) {
     std::vector<std::string> failures = checkSetup(step);
     if (!run.reached) {
-        failures.push_back("step " + scene_json::dumpValue(step.title) +
-                           ": the pause point was not reached in " +
-                           std::to_string(run.progress.frames) + " frames");
+        // Where it gave up: the collision search's end, or the step's budget of block-steps.
+        const double searched = static_cast<double>(run.progress.frames);
+        failures.push_back(printable(step.place, kPrintablePath) +
+                           ".pause_at: the pause point was not reached in " +
+                           std::to_string(run.progress.frames) +
+                           " frames (t = " + formatNumber(run.world.time) + " s; " +
+                           (searched >= pauseFrames(step) ? "the search ends after 120 s"
+                                                          : "a step may run 1e8 block-steps") +
+                           ")");
         return failures;
     }
     checkExpects(step.expect, run, false, failures);

@@ -88,7 +88,7 @@ bool enterStep(LessonSession& s, SimulationSession& sim, View& view, Messages& m
     s.revealed = false;
     s.digits.clear();
     // The world the step states, seen as it says.
-    sim.setScene(step.scene, step.sceneSource);
+    sim.setScene(*step.scene, step.sceneSource);
     Overlays shown = ShowSet::noOverlays();
     for (const std::string& name : step.overlays) setOverlay(shown, name, true);
     view.show = shown;
@@ -113,7 +113,9 @@ void replayStep(LessonSession& s, SimulationSession& sim, View& view, Messages& 
     sim.reset(); // the lecturer's method and settings stay, as R outside lessons
     followNewRun(view, sim.world());
     LessonStep asRun = *s.step(); // where the step now pauses, with those settings
-    asRun.scene.settings = sim.world().settings;
+    Scene withSettings = *asRun.scene;
+    withSettings.settings = sim.world().settings;
+    asRun.scene = std::make_shared<const Scene>(std::move(withSettings));
     showSetup(s, sim, view, runStepToPause(asRun));
     messages.clear();
 }

@@ -2,6 +2,7 @@
 // losing data, and the conversion between a Scene and a World.
 #include "scene.h"
 
+#include "safe_file.h"
 #include "scene_json.h"
 #include "settings_table.h"
 
@@ -123,28 +124,7 @@ std::string sceneToJson(const Scene& scene) {
 }
 
 bool saveSceneFile(const Scene& scene, const std::string& path, std::string* error) {
-    auto fail = [&](const std::string& message) {
-        if (error) *error = path + ": " + message;
-        return false;
-    };
-    const std::string text = sceneToJson(scene);
-    const std::string temp = path + ".tmp";
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out) return fail("cannot write " + temp);
-        out << text;
-        out.flush();
-        if (!out) {
-            out.close();
-            std::remove(temp.c_str());
-            return fail("cannot write " + temp);
-        }
-    }
-    if (std::rename(temp.c_str(), path.c_str()) != 0) {
-        std::remove(temp.c_str());
-        return fail("cannot replace the file");
-    }
-    return true;
+    return writeFileSafely(path, sceneToJson(scene), error);
 }
 
 World makeWorld(const Scene& scene) {

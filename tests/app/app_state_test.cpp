@@ -533,9 +533,11 @@ TEST(AppConfig, RoundTripsAndIgnoresNonsense) {
 TEST(AppConfig, SavesUnderTheConfigDirectory) {
     const fs::path dir = tempDir("cfg") / "collision-sandbox";
     AppConfig c;
-    c.lastScene = "a.json";
+    c.lastScene = (dir / "a.json").string(); // the last scene must still be there
+    fs::create_directories(dir);
+    std::ofstream(c.lastScene) << "{}";
     ASSERT_TRUE(saveAppConfig(dir.string(), c));
-    EXPECT_EQ(loadAppConfig(dir.string()).lastScene, "a.json");
+    EXPECT_EQ(loadAppConfig(dir.string()).lastScene, c.lastScene);
     EXPECT_EQ(loadAppConfig((dir / "nope").string()).lastScene, "");
     fs::remove_all(dir.parent_path());
 }

@@ -181,7 +181,7 @@ TEST(LessonSession, RReplaysWithTheLecturersChangesShiftRAsWritten) {
     const Block& bullet = app.sim.world().blocks[static_cast<std::size_t>(selected)];
     EXPECT_LT(bullet.position.x, 12.0);          // in front of the wall (at x = 12 m), not past it
     applyLessonAction(app, Action::ResetToFile); // Shift+R
-    EXPECT_EQ(app.sim.world().settings.method, app.lesson.step()->scene.settings.method);
+    EXPECT_EQ(app.sim.world().settings.method, app.lesson.step()->scene->settings.method);
     EXPECT_EQ(stateHash(app.sim.world()), start);
     EXPECT_TRUE(app.sim.paused);
 }
@@ -192,7 +192,7 @@ TEST(LessonSession, StepSettingsAreApplied) {
         enterStep(app, i);
         const LessonStep& step = *app.lesson.step();
         EXPECT_EQ(app.sim.selected, step.selected);
-        EXPECT_EQ(app.sim.world().settings.method, step.scene.settings.method);
+        EXPECT_EQ(app.sim.world().settings.method, step.scene->settings.method);
         EXPECT_EQ(app.sim.timeScale, step.timeScale);
         EXPECT_EQ(app.view.show.vectors, std::find(step.overlays.begin(), step.overlays.end(),
                                                    "vectors") != step.overlays.end());

@@ -194,7 +194,7 @@ TEST(Lesson, EnteringAStepIsExactEveryTime) {
         EXPECT_EQ(stateHash(first.world), stateHash(again.world)) << lesson.steps[i].title;
         EXPECT_EQ(first.progress.frames, again.progress.frames);
         EXPECT_EQ(stateHash(stepStartWorld(lesson.steps[i])),
-                  stateHash(makeWorld(lesson.steps[i].scene)));
+                  stateHash(makeWorld(*lesson.steps[i].scene)));
     }
 }
 
@@ -257,13 +257,13 @@ TEST(Lesson, OverridesApplyAsSceneKeys) {
     const LessonStep step = onlyStep(lessonWith(
         R"("overrides": {"method": "turn-based", "bounciness": 0.5, "frame_rate": 30,
             "substeps": 2, "gravity": [0, -1], "time_scale": 0.25})"));
-    EXPECT_EQ(step.scene.settings.method, Method::TurnBased);
-    EXPECT_EQ(step.scene.settings.bounciness, 0.5);
-    EXPECT_EQ(step.scene.settings.dt, 1.0 / 30.0);
-    EXPECT_EQ(step.scene.settings.substeps, 2);
-    EXPECT_EQ(step.scene.settings.gravity.y, -1.0);
+    EXPECT_EQ(step.scene->settings.method, Method::TurnBased);
+    EXPECT_EQ(step.scene->settings.bounciness, 0.5);
+    EXPECT_EQ(step.scene->settings.dt, 1.0 / 30.0);
+    EXPECT_EQ(step.scene->settings.substeps, 2);
+    EXPECT_EQ(step.scene->settings.gravity.y, -1.0);
     EXPECT_EQ(step.timeScale, 0.25);
-    EXPECT_EQ(step.scene.blocks.size(), 2u);
+    EXPECT_EQ(step.scene->blocks.size(), 2u);
 }
 
 TEST(Lesson, ShippedScenePathsAndSelection) {

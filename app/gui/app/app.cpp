@@ -1,5 +1,6 @@
 #include "app.h"
 
+#include "safe_file.h"
 #include "save_naming.h"
 
 #include <algorithm>
@@ -238,11 +239,11 @@ std::string exportCsv(App& app, const std::string& plot, const CsvTable& table) 
     // From the scene's and the plot's names, never an existing file.
     const std::string path =
         suggestSavePath(app.sim.scene.name + " " + plot, saveDirectory(app), pathExists, ".csv");
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    if (out) writeCsv(out, table);
-    out.close();
-    if (!out) {
-        app.ui.messages.error = "Export failed: cannot write " + path;
+    SafeFile out(path);
+    writeCsv(out.stream(), table);
+    std::string error;
+    if (!out.commit(&error)) {
+        app.ui.messages.error = "Export failed: " + error;
         return "";
     }
     app.ui.messages.error.clear();

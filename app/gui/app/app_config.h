@@ -5,10 +5,18 @@
 
 #include "view.h" // the UI and label scales' ranges
 
+#include <cstddef>
 #include <string>
+#include <vector>
+
+// A settings file larger than this is not read (defaults and a warning): 1 MiB.
+inline constexpr std::size_t kMaxSettingsBytes = std::size_t{1} << 20;
+// Bad lines warned about one by one; the rest are counted in one more warning.
+inline constexpr std::size_t kMaxSettingsWarnings = 20;
 
 struct AppConfig {
-    std::string lastScene; // an absolute path
+    std::string lastScene;         // an absolute path
+    std::size_t lastSceneLine = 0; // its line in the file, for a warning
     float uiScale = 1.0f;
     bool lightTheme = false;
     float labelScale = 1.0f; // scene labels relative to the UI font
@@ -19,14 +27,20 @@ struct AppConfig {
     float volume = 0.8f; // of the knocks, 0..1
 };
 
-// Parses the file's text; unknown keys and bad values are ignored (a hand-edited file never
-// stops the app from starting). Values are clamped to sane ranges.
-AppConfig parseAppConfig(const std::string& text);
+// Parses the file's text; a hand-edited file never stops the app from starting: a line that is
+// not "key = value", an unknown key, NaN or a value that is not a number keep the default, a value
+// beyond its range is clamped, and each is a warning "FILE:LINE: ..." (when `warnings` is given).
+AppConfig parseAppConfig(const std::string& text, const std::string& file = "settings.txt",
+                         std::vector<std::string>* warnings = nullptr);
 std::string formatAppConfig(const AppConfig& config);
 
 // The directory for the app's files ("" when neither $XDG_CONFIG_HOME nor $HOME is set).
 std::string configDirectory();
-// Loads `dir`/settings.txt; defaults when missing.
-AppConfig loadAppConfig(const std::string& dir);
-// Writes `dir`/settings.txt, creating `dir`. False on failure (the app carries on).
+// Loads `dir`/settings.txt; defaults when missing. Never blocks and never reads more than
+// kMaxSettingsBytes: a FIFO, a device, a directory, a file too large or unreadable gives the
+// defaults and a warning naming the file; a last scene that is not an absolute path to a regular
+// file is dropped with a warning naming its line.
+AppConfig loadAppConfig(const std::string& dir, std::vector<std::string>* warnings = nullptr);
+// Writes `dir`/settings.txt through a SafeFile, creating `dir`; a settings.txt that is not a
+// regular file is replaced by one. False on failure (the app carries on).
 bool saveAppConfig(const std::string& dir, const AppConfig& config);

@@ -3,11 +3,13 @@
 #include "app_config.h"
 #include "input_limits.h"
 #include "printable.h"
+#include "safe_file.h"
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <iostream>
+#include <utility>
 
 bool parseSize(const std::string& text, int& width, int& height) {
     int w = 0, h = 0;
@@ -154,6 +156,17 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         if (!o.record.empty() && o.frames <= 0) {
             throw CLI::ValidationError("--record", "needs --frames N (N > 0)");
         }
+        // An output may never overwrite an input it was made from (the input would be lost).
+        const std::pair<const char*, const std::string*> outputs[] = {
+            {"--screenshot", &o.screenshot},
+            {"--layout-json", &o.layoutJson},
+            {"--audio-wav", &o.audioWav}};
+        for (const auto& [flag, output] : outputs)
+            for (const std::string* input : {&o.scene, &o.lesson, &o.compareTrace})
+                if (!output->empty() && !input->empty() && sameExistingFile(*output, *input))
+                    throw CLI::ValidationError(flag, "'" + *output +
+                                                         "' is an input file of this run; the "
+                                                         "output may not overwrite it");
     } catch (const CLI::ParseError& e) {
         // --help and --version exit 0; every other error is bad usage: exit 2, as sandbox-cli
         // (CLI11's own codes, e.g. 105, mean nothing to a script), its message printable (it

@@ -46,13 +46,17 @@ int execOffscreen(int argc, char** argv, bool addDefaultScreenshot) {
 
 int runWindow(const Options& options, char** argv, int argc) {
     const std::string configDir = configDirectory();
-    AppConfig config = loadAppConfig(configDir);
+    std::vector<std::string> settingsWarnings; // a bad settings file never stops the start
+    AppConfig config = loadAppConfig(configDir, &settingsWarnings);
+    for (const std::string& w : settingsWarnings) std::fprintf(stderr, "sandbox: %s\n", w.c_str());
     App app;
     std::string error;
     if (!setupApp(app, options, config.lastScene, &error)) {
         std::fprintf(stderr, "sandbox: %s\n", error.c_str());
         return 1;
     }
+    if (!settingsWarnings.empty() && app.ui.messages.error.empty())
+        app.ui.messages.error = settingsWarnings.front();
     setUiScale(app.view, options.uiScale > 0.0f ? options.uiScale : config.uiScale);
     app.view.lightTheme = options.theme.empty() ? config.lightTheme : options.theme == "light";
     app.view.labelScale = config.labelScale;
@@ -119,7 +123,13 @@ int runWindow(const Options& options, char** argv, int argc) {
         if (uiApplyLook(app.view.uiScale, app.view.labelScale, app.view.lightTheme))
             uiRendererFontsChanged();
     }
-    config.lastScene = app.sim.scenePath;
+    // Absolute, so that the next start from another folder finds it.
+    std::error_code absoluteError;
+    const std::filesystem::path scenePath = app.sim.scenePath;
+    config.lastScene =
+        scenePath.empty()
+            ? std::string()
+            : std::filesystem::absolute(scenePath, absoluteError).lexically_normal().string();
     config.uiScale = app.view.uiScale;
     config.lightTheme = app.view.lightTheme;
     config.labelScale = app.view.labelScale;

@@ -6,6 +6,7 @@
 #include "png_io.h"
 #include "printable.h"
 #include "renderer.h"
+#include "safe_file.h"
 #include "ui_renderer_gl.h"
 #include "ui_style.h"
 #include "wav_io.h"
@@ -51,7 +52,8 @@ AudioTrack startTrack(App& app, const Options& o, int frames) {
     app.sim.sound.volume = 1.0f;
     app.sim.sound.queue.clear();
     track.start = app.sim.world().time;
-    const double seconds = frames * app.sim.world().settings.dt + kKnockSeconds; // the last knock ends
+    const double seconds =
+        frames * app.sim.world().settings.dt + kKnockSeconds; // the last knock ends
     track.samples.assign(static_cast<std::size_t>(std::ceil(seconds * kSampleRate)), 0.0f);
     return track;
 }
@@ -85,9 +87,10 @@ void renderFrame(App& app, Offscreen& off) {
 }
 
 bool writeFrame(const Offscreen& off, const std::string& path) {
-    if (!writePng(path, offscreenPixelsTopDown(off.context), off.context.width,
-                  off.context.height)) {
-        std::fprintf(stderr, "sandbox: cannot write %s\n", path.c_str());
+    std::string error;
+    if (!writePng(path, offscreenPixelsTopDown(off.context), off.context.width, off.context.height,
+                  &error)) {
+        std::fprintf(stderr, "sandbox: %s\n", error.c_str());
         return false;
     }
     return true;
@@ -127,16 +130,15 @@ bool runProgram(const std::vector<std::string>& args) {
 // The layout of the last frame (--layout-json, docs/cli.md): the scene's rectangle, the world's
 // bounds as drawn, and every window drawn, in image pixels.
 bool writeLayoutJson(const App& app, const std::string& path) {
-    std::FILE* f = std::fopen(path.c_str(), "w");
-    if (!f) {
-        std::fprintf(stderr, "sandbox: cannot write %s\n", path.c_str());
-        return false;
-    }
     const std::string json = layoutJson(app.view.camera.viewport(),
                                         worldRectOnScreen(app.view.camera, app.sim.world().bounds),
                                         app.view.shownWindows);
-    const bool ok = std::fputs(json.c_str(), f) >= 0;
-    return std::fclose(f) == 0 && ok;
+    std::string error;
+    if (!writeFileSafely(path, json, &error)) {
+        std::fprintf(stderr, "sandbox: %s\n", error.c_str());
+        return false;
+    }
+    return true;
 }
 
 // Writes the frame rendered last to --screenshot and prints where it is.
@@ -175,7 +177,8 @@ bool makeDirectory(const std::string& dir) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) {
-        std::fprintf(stderr, "sandbox: cannot create %s: %s\n", dir.c_str(), ec.message().c_str());
+        std::fprintf(stderr, "sandbox: cannot create %s: %s\n",
+                     printable(dir, kPrintablePath).c_str(), ec.message().c_str());
         return false;
     }
     return true;
@@ -193,7 +196,7 @@ int record(App& app, Offscreen& off, const Options& o) {
         std::snprintf(name, sizeof name, "/frame_%05d.png", i);
         if (!writeFrame(off, o.record + name)) return 1;
     }
-    std::printf("wrote %d frames to %s\n", o.frames, o.record.c_str());
+    std::printf("wrote %d frames to %s\n", o.frames, printable(o.record, kPrintablePath).c_str());
     if (writeTrack(track, o) != 0) return 1;
     if (!onPath("ffmpeg")) {
         std::printf("ffmpeg not found: no video made (install ffmpeg for an MP4)\n");
@@ -206,10 +209,10 @@ int record(App& app, Offscreen& off, const Options& o) {
                     "libx264", "-pix_fmt", "yuv420p", video});
     if (!ok) {
         std::fprintf(stderr, "sandbox: ffmpeg failed; the PNG frames are in %s\n",
-                     o.record.c_str());
+                     printable(o.record, kPrintablePath).c_str());
         return 1;
     }
-    std::printf("%s\n", video.c_str());
+    std::printf("%s\n", printable(video, kPrintablePath).c_str());
     return 0;
 }
 
@@ -230,7 +233,7 @@ int recordSteps(App& app, Offscreen& off, const Options& o) {
         std::snprintf(name, sizeof name, "/step_%02zu.png", i + 1);
         if (!writeFrame(off, o.recordSteps + name)) return 1;
     }
-    std::printf("wrote %zu steps to %s\n", steps, o.recordSteps.c_str());
+    std::printf("wrote %zu steps to %s\n", steps, printable(o.recordSteps, kPrintablePath).c_str());
     return 0;
 }
 

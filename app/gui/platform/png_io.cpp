@@ -1,12 +1,14 @@
 #include "png_io.h"
 
-#include <stb_image_write.h>
+#include "chart.h"
+#include "printable.h"
 
-bool writePng(const std::string& path, const std::vector<std::uint8_t>& rgba, int width,
-              int height) {
+bool writePng(const std::string& path, const std::vector<std::uint8_t>& rgba, int width, int height,
+              std::string* error) {
     if (width <= 0 || height <= 0 ||
         rgba.size() < static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
+        if (error) *error = printable(path, kPrintablePath) + ": no image to write";
         return false;
     }
-    return stbi_write_png(path.c_str(), width, height, 4, rgba.data(), width * 4) != 0;
+    return writePngFile(path, rgba.data(), width, height, 4, error);
 }

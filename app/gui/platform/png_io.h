@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
-// Writes RGBA8 pixels, top row first. False on failure.
-bool writePng(const std::string& path, const std::vector<std::uint8_t>& rgba, int width,
-              int height);
+// Writes RGBA8 pixels, top row first, through a SafeFile. False on failure, with `error` naming
+// the file.
+bool writePng(const std::string& path, const std::vector<std::uint8_t>& rgba, int width, int height,
+              std::string* error = nullptr);
