@@ -4,7 +4,6 @@
 #include "lesson.h"
 
 #include "input_limits.h"
-#include "lesson_runner.h"
 #include "printable.h"
 #include "safe_file.h"
 #include "scene_json.h"
@@ -31,7 +30,8 @@ constexpr std::size_t kMaxCaptionLines = 3;
 constexpr std::size_t kMaxLineChars = 200; // a caption line, a title, a question or an answer
 constexpr double kMaxPauseTime = 600.0;    // s
 constexpr int kMaxPauseCollision = 1000000;
-constexpr double kMaxFrameRate = 10000.0; // Hz (dt at least 1e-4 s)
+constexpr double kMaxFrameRate = 10000.0;         // Hz (dt at least 1e-4 s)
+constexpr double kCollisionSearchSeconds = 120.0; // s of simulated time to find a collision
 // Parsed-from-memory scenes are named this; their error places are rewritten to the lesson's.
 const char* const kInline = "\x01";
 
@@ -587,6 +587,26 @@ std::optional<std::size_t> stepIndex(const Lesson& lesson, long long number, std
                  std::to_string(count) + ")";
     }
     return std::nullopt;
+}
+
+double pauseFrames(const LessonStep& step) {
+    const double dt = step.scene->settings.dt;
+    const double seconds =
+        step.pause.kind == LessonPause::Kind::Time ? step.pause.time : kCollisionSearchSeconds;
+    return std::ceil(seconds / dt) + 2;
+}
+
+int maxStepFrames(const LessonStep& step) {
+    const Scene& scene = *step.scene;
+    const double dt = scene.settings.dt;
+    // A time pause: the frames to T and a margin (frame times are sums of dt).
+    const double wanted = step.pause.kind == LessonPause::Kind::Time
+                              ? std::ceil((step.pause.time * 1.01 + 1.0) / dt) + 2
+                              : pauseFrames(step);
+    const double perFrame = static_cast<double>(std::max<std::size_t>(1, scene.blocks.size())) *
+                            std::max(1, scene.settings.substeps);
+    const double budget = std::floor(kMaxStepBlockSteps / perFrame);
+    return static_cast<int>(std::max(1.0, std::min(wanted, budget)));
 }
 
 bool isLessonText(const std::string& text) {

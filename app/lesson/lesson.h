@@ -119,6 +119,13 @@ LessonResult loadLessonFile(const std::string& path, LessonContext context);
 // The index of step `number` (1-based, as the app and --step count); none, with a message, when
 // the lesson has no such step.
 std::optional<std::size_t> stepIndex(const Lesson& lesson, long long number, std::string* error);
+// Frames a pause point needs: a time pause, up to the frame that ends at T; a collision pause,
+// the search of 120 s of simulated time.
+double pauseFrames(const LessonStep& step);
+// Frames the runner tries before it gives up on a pause point: a time pause's frames (with a
+// margin for rounding) or the collision search, within the step's budget of kMaxStepBlockSteps
+// block-steps (blocks x frames x substeps). The lesson loader refuses a time pause beyond it.
+int maxStepFrames(const LessonStep& step);
 // True when `text` is a JSON object with a "steps" key (a lesson, not a scene). False for
 // anything that does not parse.
 bool isLessonText(const std::string& text);

@@ -11,7 +11,6 @@ namespace {
 // s: a frame ending within this of the pause time counts as reaching it (frame times are sums of
 // dt and carry rounding).
 constexpr double kTimeSlack = 1e-9;
-constexpr double kCollisionSearchSeconds = 120.0; // s of simulated time to find a collision
 
 std::string formatNumber(double x) {
     return scene_json::dumpValue(x);
@@ -48,26 +47,6 @@ bool countFrame(const LessonPause& pause, const World& world, const StepStats& s
         return progress.blockCollided;
     }
     return false;
-}
-
-double pauseFrames(const LessonStep& step) {
-    const double dt = step.scene->settings.dt;
-    const double seconds =
-        step.pause.kind == LessonPause::Kind::Time ? step.pause.time : kCollisionSearchSeconds;
-    return std::ceil(seconds / dt) + 2;
-}
-
-int maxStepFrames(const LessonStep& step) {
-    const Scene& scene = *step.scene;
-    const double dt = scene.settings.dt;
-    // A time pause: the frames to T and a margin (frame times are sums of dt).
-    const double wanted = step.pause.kind == LessonPause::Kind::Time
-                              ? std::ceil((step.pause.time * 1.01 + 1.0) / dt) + 2
-                              : pauseFrames(step);
-    const double perFrame = static_cast<double>(std::max<std::size_t>(1, scene.blocks.size())) *
-                            std::max(1, scene.settings.substeps);
-    const double budget = std::floor(kMaxStepBlockSteps / perFrame);
-    return static_cast<int>(std::max(1.0, std::min(wanted, budget)));
 }
 
 World stepStartWorld(const LessonStep& step) {

@@ -25,14 +25,6 @@ bool countFrame(const LessonPause& pause, const World& world, const StepStats& s
 // True when the pause point holds before any frame (a pause at time 0).
 bool pausesAtStart(const LessonPause& pause);
 
-// Frames a pause point needs: a time pause, up to the frame that ends at T; a collision pause,
-// the search of 120 s of simulated time.
-double pauseFrames(const LessonStep& step);
-// Frames the runner tries before it gives up on a pause point: a time pause's frames (with a
-// margin for rounding) or the collision search, within the step's budget of kMaxStepBlockSteps
-// block-steps (blocks x frames x substeps). The lesson loader refuses a time pause beyond it.
-int maxStepFrames(const LessonStep& step);
-
 struct StepRun {
     World world; // at the pause point (or where the runner gave up)
     StepProgress progress;

@@ -1,9 +1,15 @@
 #include "trails.h"
 
+#include <algorithm>
+
 void Trails::record(const World& world) {
     if (world.blocks.size() != blockCount_) {
         blockCount_ = world.blocks.size();
+        const std::size_t fit = maxBytes_ / (sizeof(Vec2) * std::max<std::size_t>(1, blockCount_));
+        capacity_ =
+            static_cast<int>(std::clamp<std::size_t>(fit, 2, static_cast<std::size_t>(wanted_)));
         points_.assign(blockCount_ * static_cast<std::size_t>(capacity_), Vec2{});
+        points_.shrink_to_fit();
         length_ = 0;
         head_ = 0;
         skipped_ = 0;

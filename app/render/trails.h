@@ -8,18 +8,26 @@
 #include <cstddef>
 #include <vector>
 
+// The trails' cap: 32 MiB of points (README, "Memory in long runs"). A scene of more blocks than
+// fit 90 points each keeps fewer points per block (at least 2): 23,301 blocks still get 90.
+inline constexpr std::size_t kTrailsMaxBytes = std::size_t{32} << 20;
+
 class Trails {
   public:
-    // `capacity` points per block, one every `every` recorded frames (default: 3 s at 60 Hz).
-    explicit Trails(int capacity = 90, int every = 2)
-        : capacity_(capacity < 2 ? 2 : capacity), every_(every < 1 ? 1 : every) {}
+    // `capacity` points per block, one every `every` recorded frames (default: 3 s at 60 Hz),
+    // fewer when the blocks' points would pass `maxBytes`.
+    explicit Trails(int capacity = 90, int every = 2, std::size_t maxBytes = kTrailsMaxBytes)
+        : wanted_(capacity < 2 ? 2 : capacity), capacity_(wanted_), every_(every < 1 ? 1 : every),
+          maxBytes_(maxBytes) {}
 
     // Appends the current position of every block. A change in the number of blocks (a block
     // added or removed) restarts every trail, since indices no longer name the same blocks.
     void record(const World& world);
     void clear();
 
-    int capacity() const { return capacity_; }
+    int capacity() const { return capacity_; } // points per block now (see maxBytes)
+    std::size_t bytes() const { return points_.capacity() * sizeof(Vec2); }
+    std::size_t maxBytes() const { return maxBytes_; }
     std::size_t blockCount() const { return blockCount_; }
     // Number of points stored for each block (the same for all blocks).
     int length() const { return length_; }
@@ -32,8 +40,10 @@ class Trails {
     int ageWithinLength(const World& world, double budget) const;
 
   private:
-    int capacity_;
+    int wanted_;   // points per block asked for
+    int capacity_; // points per block kept: wanted_, or fewer within maxBytes_
     int every_;
+    std::size_t maxBytes_;
     int skipped_ = 0; // frames since the last stored point
     std::size_t blockCount_ = 0;
     int length_ = 0;

@@ -65,12 +65,14 @@ std::string nameOf(const std::string& path) {
     return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-// The mode a new file gets (0666 less the umask), or the mode of the file it replaces.
+// The mode a new file gets (0666 less the umask, the owner always able to read and write it:
+// emscripten's umask is 0777, its in-memory files checked against their modes), or the mode of
+// the file it replaces.
 mode_t modeFor(const struct stat* existing) {
     if (existing) return existing->st_mode & 07777;
     const mode_t mask = ::umask(0);
     ::umask(mask);
-    return 0666 & ~mask;
+    return (0666 & ~mask) | 0600;
 }
 
 } // namespace

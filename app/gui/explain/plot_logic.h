@@ -63,6 +63,7 @@ class TimeSeries {
     // Drops the samples later than `t` (the timeline went back).
     void truncateAfter(double t);
     std::size_t size() const { return size_; }
+    std::size_t bytes() const { return (times_.capacity() + values_.capacity()) * sizeof(double); }
     int channels() const { return channels_; }
     // Sample `i`: 0 is the oldest.
     double time(std::size_t i) const;

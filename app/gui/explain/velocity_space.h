@@ -72,6 +72,7 @@ class VelocitySpacePath {
     void truncateAfter(double t);
     const VelocitySpacePair& pair() const { return pair_; }
     const std::deque<VelocitySpaceSample>& samples() const { return samples_; }
+    std::size_t bytes() const { return samples_.size() * sizeof(VelocitySpaceSample); }
 
   private:
     void push(const VelocitySpaceSample& s);

@@ -62,10 +62,17 @@ void drawTimelineOverlay(App& app) {
         go(frame);
     }
     markFirstDifference(app, first, last);
-    char info[160];
+    // Memory in MB of 2^20 bytes, each against its cap (README, "Memory in long runs").
+    const auto mb = [](std::size_t bytes) {
+        return static_cast<double>(bytes) / (1024.0 * 1024.0);
+    };
+    char info[256];
     std::snprintf(
-        info, sizeof info, "%.1f s recorded, %zu keyframes, %.1f MB%s", h.recordedSeconds(),
-        h.keyframeCount(), static_cast<double>(h.bytes()) / (1024.0 * 1024.0),
+        info, sizeof info,
+        "%.1f s recorded, %zu keyframes, %.1f MB of %.0f; trails %.1f MB of %.0f; plots %.1f MB%s",
+        h.recordedSeconds(), h.keyframeCount(), mb(h.bytes()), mb(h.maxBytes()),
+        mb(app.sim.run.trails.bytes()), mb(app.sim.run.trails.maxBytes()),
+        mb(app.sim.telemetry.bytes()),
         app.sim.isReplaying() ? ". Play or step to go on from here; an edit starts a new future."
                               : "");
     ImGui::PushTextWrapPos(0.0f);

@@ -37,9 +37,14 @@ struct Offscreen {
 
 // --audio-wav: the knocks of the frames simulated, mixed as OpenAL plays them (audio_out.cpp),
 // on a track that starts at the world's time when the simulation starts.
+// A recording's cap: 64 MiB of samples (float), 380 s at 44.1 kHz (README, "Memory in long
+// runs"). A longer --audio-wav is refused before the run, not allocated.
+constexpr std::size_t kAudioMaxBytes = std::size_t{64} << 20;
+
 struct AudioTrack {
     bool wanted = false;
-    double start = 0.0; // s, world time of sample 0
+    bool tooLong = false; // over kAudioMaxBytes: refused, nothing allocated
+    double start = 0.0;   // s, world time of sample 0
     std::vector<float> samples;
 };
 
@@ -54,7 +59,17 @@ AudioTrack startTrack(App& app, const Options& o, int frames) {
     track.start = app.sim.world().time;
     const double seconds =
         frames * app.sim.world().settings.dt + kKnockSeconds; // the last knock ends
-    track.samples.assign(static_cast<std::size_t>(std::ceil(seconds * kSampleRate)), 0.0f);
+    const double samples = std::ceil(seconds * kSampleRate);
+    if (samples * sizeof(float) > static_cast<double>(kAudioMaxBytes)) {
+        std::fprintf(stderr,
+                     "sandbox: --audio-wav: %.6g s of sound is more than a recording may hold "
+                     "(64 MiB: %.6g s at %d Hz); simulate fewer frames\n",
+                     seconds, static_cast<double>(kAudioMaxBytes / sizeof(float)) / kSampleRate,
+                     kSampleRate);
+        track.tooLong = true;
+        return track;
+    }
+    track.samples.assign(static_cast<std::size_t>(samples), 0.0f);
     return track;
 }
 
@@ -156,6 +171,7 @@ int screenshot(App& app, Offscreen& off, const Options& o) {
     if (app.lesson.active() && !o.atSetup) lessonShowPausePoint(app);
     // --frames N simulates N frames, as if P had been pressed (the badge then shows no PAUSED).
     AudioTrack track = startTrack(app, o, o.frames);
+    if (track.tooLong) return 1;
     for (int i = 0; i < o.frames; ++i) simulateFrame(app, track);
     if (writeTrack(track, o) != 0) return 1;
     if (o.frames > 0) app.sim.paused = false;
@@ -190,6 +206,7 @@ int record(App& app, Offscreen& off, const Options& o) {
     app.sim.paused = false; // a recording runs the scene
     char name[32];
     AudioTrack track = startTrack(app, o, o.frames);
+    if (track.tooLong) return 1;
     for (int i = 0; i < o.frames; ++i) {
         simulateFrame(app, track);
         renderFrame(app, off);
@@ -279,6 +296,7 @@ int runOffscreen(const Options& options) {
         o.recordSteps.empty()) { // --audio-wav alone: simulate and listen, draw nothing
         if (app.lesson.active()) lessonShowPausePoint(app);
         AudioTrack track = startTrack(app, o, o.frames);
+        if (track.tooLong) return 1;
         for (int i = 0; i < o.frames; ++i) simulateFrame(app, track);
         return writeTrack(track, o);
     }

@@ -1,5 +1,11 @@
 #include "telemetry.h"
 
+std::size_t Telemetry::bytes() const {
+    return velocity.bytes() + momentum.bytes() + energy.bytes() +
+           (collisionTimes.size() + watchedCollisionTimes.size()) * sizeof(double) +
+           recent.size() * sizeof(CollisionRecord) + velocitySpace.bytes();
+}
+
 void Telemetry::clear() {
     velocity.clear();
     momentum.clear();

@@ -25,6 +25,9 @@ struct Telemetry {
     VelocitySpacePath velocitySpace;          // the two dynamic blocks' state (velocity_space)
 
     void clear();
+    // What it holds, in bytes: fixed by its sizes (3,600 samples a series, 512 markers, 20,000
+    // velocity-space samples), under 2 MB whatever the scene.
+    std::size_t bytes() const;
     // Samples `world` (after a step) and appends this frame's `log`. The watched block is
     // `selected`, or the first dynamic block when nothing is selected; a change restarts its
     // series.

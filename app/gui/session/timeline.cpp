@@ -16,8 +16,9 @@ bool sameVec(Vec2 a, Vec2 b) {
 
 } // namespace
 
-WorldHistory::WorldHistory(std::uint64_t capacityFrames, int keyframeEvery)
-    : capacity_(std::max<std::uint64_t>(1, capacityFrames)), every_(std::max(1, keyframeEvery)) {}
+WorldHistory::WorldHistory(std::uint64_t capacityFrames, int keyframeEvery, std::size_t maxBytes)
+    : capacity_(std::max<std::uint64_t>(1, capacityFrames)), every_(std::max(1, keyframeEvery)),
+      maxBytes_(maxBytes) {}
 
 void WorldHistory::clear() {
     keyframes_.clear();
@@ -59,10 +60,12 @@ void WorldHistory::beforeStep(const World& world) {
 void WorldHistory::afterStep(const World& world) {
     last_ = world;
     haveLast_ = true;
-    // Keep `capacity_` frames: drop a keyframe when the next one alone still covers them.
+    // Keep `capacity_` frames: drop a keyframe when the next one alone still covers them; and
+    // stay within `maxBytes_`, the oldest keyframe going first (the newest is always kept).
     while (keyframes_.size() > 1 && world.frame - keyframes_[1].frame >= capacity_) {
         keyframes_.pop_front();
     }
+    while (keyframes_.size() > 1 && bytes() > maxBytes_) keyframes_.pop_front();
 }
 
 std::uint64_t WorldHistory::firstFrame() const {
@@ -112,6 +115,8 @@ void WorldHistory::editedAt(const World& world) {
     keyframes_.push_back(world);
     last_ = world;
     haveLast_ = true;
+    // A keyframe every frame while thrust is held: within `maxBytes_` here too.
+    while (keyframes_.size() > 1 && bytes() > maxBytes_) keyframes_.pop_front();
 }
 
 double WorldHistory::recordedSeconds() const {

@@ -2,7 +2,9 @@
 // Keyframes (whole World copies) every `keyframeEvery` frames, plus a keyframe whenever the world
 // was changed between steps (a drag, a slider); any frame in between is rebuilt by stepping its
 // keyframe forward, which the engine's determinism makes bit-exact. Memory: 1,000 blocks, 60 s
-// at 60 Hz, a keyframe every 12 frames: 300 x 64 kB = 19 MB. Pure logic, no ImGui.
+// at 60 Hz, a keyframe every 12 frames: 300 x 64 kB = 19 MB; whatever the scene (200,000
+// blocks, or a keyframe every frame while thrust is held), at most kTimelineMaxBytes: the oldest
+// keyframes go first, so the timeline reaches back less far. Pure logic, no ImGui.
 #pragma once
 
 #include "world.h"
@@ -12,9 +14,13 @@
 #include <deque>
 #include <vector>
 
+// The timeline's cap: 128 MiB of keyframes (README, "Memory in long runs").
+inline constexpr std::size_t kTimelineMaxBytes = std::size_t{128} << 20;
+
 class WorldHistory {
   public:
-    explicit WorldHistory(std::uint64_t capacityFrames = 3600, int keyframeEvery = 12);
+    explicit WorldHistory(std::uint64_t capacityFrames = 3600, int keyframeEvery = 12,
+                          std::size_t maxBytes = kTimelineMaxBytes);
 
     void clear();
     // Call with the live world just before it steps: truncates the future when the world was
@@ -45,11 +51,13 @@ class WorldHistory {
                                                 std::size_t budgetBlockSteps = 200000) const;
     std::size_t keyframeCount() const { return keyframes_.size(); }
     std::size_t bytes() const;
+    std::size_t maxBytes() const { return maxBytes_; }
 
   private:
     bool sameAsLast(const World& world) const;
     std::uint64_t capacity_;
     int every_;
+    std::size_t maxBytes_;
     std::deque<World> keyframes_; // ascending frame numbers
     World last_;                  // the live world after the last recorded step
     bool haveLast_ = false;

@@ -176,3 +176,17 @@ TEST(SafeFile, SymbolicLinkTargetReplacesTheFileItNames) {
     EXPECT_TRUE(fs::is_symlink(folder.path / "link.csv"));
     EXPECT_EQ(readAll(real), "new");
 }
+
+TEST(SafeFile, NewFileIsTheOwnersWhateverTheUmask) {
+    // Emscripten's umask is 0777: a new file must still be readable by its owner (the browser's
+    // download reads it back).
+    Folder folder("umask");
+    const mode_t old = umask(0777);
+    const bool written = writeFileSafely(folder / "new.json", "{}");
+    umask(old);
+    ASSERT_TRUE(written);
+    struct stat st {};
+    ASSERT_EQ(stat((folder / "new.json").c_str(), &st), 0);
+    EXPECT_EQ(st.st_mode & 0600, 0600u);
+    EXPECT_EQ(readAll(folder / "new.json"), "{}");
+}
