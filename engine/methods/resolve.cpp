@@ -89,8 +89,10 @@ void Resolver::record(int a, int b, int axis, double m1, double v1, double m2, d
     r.m1 = m1, r.m2 = m2, r.v1 = v1, r.v2 = v2, r.u = u, r.C = C;
     r.v1After = v1After, r.v2After = v2After, r.rest = rest;
     r.mu = note_.mu, r.dvn = note_.dvn, r.dvt = note_.dvt, r.perSecond = note_.perSecond;
+    r.position1 = ctx_.world.blocks[a].position;
     if (b >= 0) {
-        r.firstBelow = ctx_.world.blocks[a].position[axis] <= ctx_.world.blocks[b].position[axis];
+        r.position2 = ctx_.world.blocks[b].position;
+        r.firstBelow = r.position1[axis] <= r.position2[axis];
     }
     ctx_.log->push_back(r);
 }

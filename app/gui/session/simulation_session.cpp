@@ -105,7 +105,7 @@ FrameOutcome SimulationSession::step(bool sideBySide) {
     // a thrust frame's result is kept as a keyframe of its own (replays stay bit for bit).
     if (pushed >= 0) history.editedAt(w);
     addStep(run.totals, run.stats);
-    run.trails.record(w);
+    run.trails.record(w, &run.lastLog);
     telemetry.record(w, selected, run.lastLog);
     announcer.note(run.lastLog);
     if (soundOn(sound, inLesson)) {
