@@ -322,8 +322,12 @@ TEST(Lesson, InputScriptsThePlayersKeysOverTime) {
         const PlayerKeys keys = scriptedKeys(step.input, frame * 0.05, 0.05);
         right += keys.right;
         up += keys.up;
-        if (keys.up) EXPECT_EQ(frame, 36);
-        if (keys.right) EXPECT_TRUE(frame >= 10 && frame < 34) << frame;
+        if (keys.up) {
+            EXPECT_EQ(frame, 36);
+        }
+        if (keys.right) {
+            EXPECT_TRUE(frame >= 10 && frame < 34) << frame;
+        }
     }
     EXPECT_EQ(right, 24);
     EXPECT_EQ(up, 1);
