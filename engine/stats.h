@@ -60,7 +60,7 @@ struct CollisionRecord {
     double C = 0.0;            // bounciness used (0 when the rest rule applied)
     double v1After = 0.0, v2After = 0.0; // m/s after
     bool rest = false;                   // resolved by the rest rule (a resting contact)
-    // Friction along the other axis (resolve.h, "Friction"): μ of the pair, and how much the
+    // Friction along the other axis (friction.cpp): μ of the pair, and how much the
     // contact changed the two bodies' relative velocity along its axis (dvn) and along the other
     // (dvt, |dvt| <= μ·|dvn|). perSecond: a resting contact under the exact integrator, whose
     // friction is a deceleration: both are then changes of acceleration (m/s^2).
@@ -71,4 +71,8 @@ struct CollisionRecord {
     // when v1 - v2 > 0 (else when v2 - v1 > 0): the relative-velocity test the inspector shows
     // (lecture, "Tips – Collision Resolve"). A wall's side is in `other`.
     bool firstBelow = true;
+    // m, the two bodies' centres when the contact was resolved: with the perfect and turn-based
+    // methods where they touched (the point of impact, within the frame), with move-and-correct
+    // after the move back. A wall's is (0, 0).
+    Vec2 position1, position2;
 };

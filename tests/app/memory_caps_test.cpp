@@ -58,7 +58,8 @@ TEST(MemoryCaps, TimelineDefaultCapIs128MiB) {
 }
 
 TEST(MemoryCaps, TrailsKeepFewerPointsForManyBlocks) {
-    // 90 points a block fit 23,301 blocks in 32 MiB (16 bytes a point); 200,000 blocks keep 10.
+    // 90 points a block fit 11,233 blocks in 32 MiB (33 bytes a point: its position, its point
+    // of impact, whether it has one; 17 bytes a block pending); 200,000 blocks keep 4.
     Trails small;
     small.record(gas(1000));
     EXPECT_EQ(small.capacity(), 90);
@@ -66,11 +67,11 @@ TEST(MemoryCaps, TrailsKeepFewerPointsForManyBlocks) {
     many.blocks.resize(200000);
     Trails big;
     big.record(many);
-    EXPECT_EQ(big.capacity(), 10); // floor(32 MiB / (16 B x 200,000))
+    EXPECT_EQ(big.capacity(), 4); // floor((32 MiB - 17 B x 200,000) / (33 B x 200,000))
     EXPECT_LE(big.bytes(), kTrailsMaxBytes);
     for (int i = 0; i < 50; ++i) big.record(many);
     EXPECT_LE(big.bytes(), kTrailsMaxBytes); // flat: a ring buffer
-    EXPECT_EQ(big.length(), 10);
+    EXPECT_EQ(big.length(), 4);
 }
 
 TEST(MemoryCaps, PlotsRecordABoundedAmount) {
