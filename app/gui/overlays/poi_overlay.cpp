@@ -53,6 +53,7 @@ void label(ImDrawList* dl, ImVec2 at, Mark mark, const std::string& text) {
 } // namespace
 
 void drawPoiOverlay(App& app) {
+    const SceneLabelFont font(app);
     const PoiView& p = app.sim.run.poi;
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     const float s = app.view.uiScale;

@@ -6,6 +6,7 @@
 #include "png_io.h"
 #include "printable.h"
 #include "renderer.h"
+#include "screen_text.h"
 #include "ui_renderer_gl.h"
 #include "ui_style.h"
 #include "wav_io.h"
@@ -51,7 +52,8 @@ AudioTrack startTrack(App& app, const Options& o, int frames) {
     app.sim.sound.volume = 1.0f;
     app.sim.sound.queue.clear();
     track.start = app.sim.world().time;
-    const double seconds = frames * app.sim.world().settings.dt + kKnockSeconds; // the last knock ends
+    const double seconds =
+        frames * app.sim.world().settings.dt + kKnockSeconds; // the last knock ends
     track.samples.assign(static_cast<std::size_t>(std::ceil(seconds * kSampleRate)), 0.0f);
     return track;
 }
@@ -124,19 +126,34 @@ bool runProgram(const std::vector<std::string>& args) {
     return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
-// The layout of the last frame (--layout-json, docs/cli.md): the scene's rectangle, the world's
-// bounds as drawn, and every window drawn, in image pixels.
-bool writeLayoutJson(const App& app, const std::string& path) {
+bool writeText(const std::string& path, const std::string& text) {
     std::FILE* f = std::fopen(path.c_str(), "w");
     if (!f) {
-        std::fprintf(stderr, "sandbox: cannot write %s\n", path.c_str());
+        std::fprintf(stderr, "sandbox: cannot write %s\n", printable(path, kPrintablePath).c_str());
         return false;
     }
-    const std::string json = layoutJson(app.view.camera.viewport(),
-                                        worldRectOnScreen(app.view.camera, app.sim.world().bounds),
-                                        app.view.shownWindows);
-    const bool ok = std::fputs(json.c_str(), f) >= 0;
-    return std::fclose(f) == 0 && ok;
+    const bool ok = std::fputs(text.c_str(), f) >= 0;
+    if (std::fclose(f) == 0 && ok) return true;
+    std::fprintf(stderr, "sandbox: cannot write %s\n", printable(path, kPrintablePath).c_str());
+    return false;
+}
+
+// The layout of the last frame (--layout-json, docs/cli.md): the scene's rectangle, the world's
+// bounds as drawn, every window drawn, every block as drawn (by its name) and every plot, in
+// image pixels.
+bool writeLayoutJson(const App& app, const std::string& path) {
+    const Camera& camera = app.view.camera;
+    std::vector<DockedWindow> blocks;
+    const std::vector<Block>& world = app.sim.world().blocks;
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        const Bounds box{world[i].position - world[i].size * 0.5,
+                         world[i].position + world[i].size * 0.5};
+        blocks.push_back(
+            {app.sim.blockDisplayName(static_cast<int>(i)), worldRectOnScreen(camera, box)});
+    }
+    return writeText(path, layoutJson(camera.viewport(),
+                                      worldRectOnScreen(camera, app.sim.world().bounds),
+                                      app.view.shownWindows, blocks, app.view.shownPlots));
 }
 
 // Writes the frame rendered last to --screenshot and prints where it is.
@@ -167,6 +184,10 @@ int screenshot(App& app, Offscreen& off, const Options& o) {
     const int code = writeScreenshot(off, o);
     if (code != 0) return code;
     if (!o.layoutJson.empty() && !writeLayoutJson(app, o.layoutJson)) return 1;
+    if (!o.textJson.empty() &&
+        !writeText(o.textJson,
+                   screenTextJson(readScreenText(*ImGui::GetDrawData(), *ImGui::GetIO().Fonts))))
+        return 1;
     return 0;
 }
 
@@ -283,6 +304,8 @@ int runOffscreen(const Options& options) {
     if (o.present) setPresentMode(app.view, true);
     app.view.lightTheme = o.theme == "light";
     uiCreateContext(nullptr);
+    // The image's size before the fonts: the classroom's are baked for its height.
+    ImGui::GetIO().DisplaySize = ImVec2(static_cast<float>(o.width), static_cast<float>(o.height));
     uiApplyLook(app.view.uiScale, app.view.labelScale, app.view.lightTheme);
     Offscreen off;
     if (!offscreenInit(off.context, o.width, o.height, &error)) {
