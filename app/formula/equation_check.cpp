@@ -210,6 +210,19 @@ class Parser {
         return j;
     }
 
+    // True when the expression starting at token i would be the end of a longer one on its left
+    // that did not parse (a function's call, the right operand of an operator).
+    bool continuesLeft(std::size_t i) const {
+        if (i == 0) return false;
+        auto operandEnd = [&](std::size_t k) {
+            return t_[k].kind == Kind::Number || t_[k].kind == Kind::Name || isOp(k, ')');
+        };
+        const std::size_t before = i - 1;
+        if (isOp(before, '*', '/') || isOp(before, '^') || isOp(before, 'q', 'c')) return true;
+        if (isOp(before, '+', '-') && before > 0 && operandEnd(before - 1)) return true;
+        return operandEnd(before) && (isOp(i, '(') || isOp(i, '-', '+'));
+    }
+
   private:
     bool isOp(std::size_t i, char a, char b = 0) const {
         return i < t_.size() && t_[i].kind == Kind::Op && (t_[i].op == a || (b && t_[i].op == b));
@@ -416,6 +429,7 @@ EquationReport checkEquations(const std::string& text, double roundedTo) {
         // The left side: the longest run of tokens before the relation that is an expression.
         std::vector<ChainSide> sides;
         for (std::size_t s = pos; s < r; ++s) {
+            if (parser.continuesLeft(s)) continue; // "ceil(x) - 1 = 3": not "-1 = 3"
             const Side left = parser.expression(s);
             if (left.ok && left.end == r) {
                 sides.push_back({left, s, r});

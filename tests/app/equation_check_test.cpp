@@ -76,6 +76,9 @@ TEST(EquationCheck, ReadsTheNotationOnScreen) {
     // Prose around the chains: the left side starts where an expression starts.
     EXPECT_TRUE(equationsHold("rel. vel. along x = v1 - v2 = 6 - 0 = 6 > 0: approaching"));
     EXPECT_FALSE(equationsHold("Momentum 1*(-2) + 2*4 = 5 kg m/s, the same as before"));
+    // A function the checker does not know leaves its whole chain unchecked, not half of it.
+    EXPECT_TRUE(equationsHold("makes ceil(pi/theta) - 1 = 3141 collisions"));
+    EXPECT_TRUE(equationsHold("f(2)·3 = 7 and floor(2.5) + 1 = 3"));
 }
 
 TEST(EquationCheck, ComparisonsHoldAsPrinted) {
@@ -156,6 +159,26 @@ TEST(EquationCheck, TheRestRulePrintsTheGroupsVelocity) {
     EXPECT_EQ(f.u.find("u = ("), std::string::npos) << f.u;
     EXPECT_EQ(f.u.rfind("u = 0   (rest rule", 0), 0u) << f.u;
     EXPECT_TRUE(equationsHold(f.v1After)) << f.v1After;
+}
+
+// The point of impact of a block at rest that is hit: a and b are how far the facing sides close
+// (the mover's 6 m/s), so a/b is still t. Before, a = b = 0 m (its own speed) printed 0/0.
+TEST(EquationCheck, APointOfImpactOfABlockThatIsHitHolds) {
+    std::vector<Block> blocks(2);
+    blocks[0].size = blocks[1].size = Vec2{1.0, 1.0};
+    blocks[0].position = Vec2{5.0, 5.0}; // at rest, its left face at 4.5
+    blocks[1].position = Vec2{3.75, 5.0};
+    blocks[1].velocity = Vec2{6.0, 0.0}; // its right face at 4.25: 0.25 m to go
+    WorldSettings s;
+    s.gravity = Vec2{0.0, 0.0};
+    s.dt = 0.1;
+    const PoiView p = computePoi(blocks, Bounds{{0.0, 0.0}, {10.0, 10.0}}, s, 0.0, 0);
+    ASSERT_TRUE(p.valid);
+    EXPECT_EQ(p.other, 1);
+    EXPECT_NEAR(p.a, 0.25, 1e-12); // m: the gap
+    EXPECT_NEAR(p.b, 0.6, 1e-12);  // m: 6 m/s over 0.1 s
+    EXPECT_NEAR(p.t, 0.25 / 0.6, 1e-12);
+    EXPECT_EQ(poiEquation(p), "t = a/b = 0.25/0.6 = 0.417 of the frame   (a, b: m along x)");
 }
 
 // Every line the inspector writes of `r`, and the checks of each.
