@@ -75,7 +75,7 @@ struct CollisionRecord {
     ResolveRule rule = ResolveRule::Formula;
     int restBodies = 0;      // the rest rule: the dynamic blocks that took u
     bool restForced = false; // the rest rule whatever the speed (collapse, trap, crush)
-    // Friction along the other axis (resolve.h, "Friction"): μ of the pair, and how much the
+    // Friction along the other axis (friction.cpp): μ of the pair, and how much the
     // contact changed the two bodies' relative velocity along its axis (dvn) and along the other
     // (dvt, |dvt| <= μ·|dvn|). perSecond: a resting contact under the exact integrator, whose
     // friction is a deceleration: both are then changes of acceleration (m/s^2).

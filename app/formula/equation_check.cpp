@@ -15,11 +15,12 @@ enum class Kind { Number, Name, Op, Relation, Break };
 // Operators as one char each: + - * / ^ ( ) | and 'q' square, 'c' cube, 'r' root (√ or sqrt).
 struct Token {
     Kind kind = Kind::Break;
-    char op = 0;           // Op: the operator; Relation: '=', '<', '>', 'l' (<=), 'g' (>=)
-    double value = 0.0;    // Number
-    double unit = 1.0;     // Number: the value of one unit in its last printed digit
-    std::string name;      // Name
-    std::size_t begin = 0; // byte range in the text
+    char op = 0;             // Op: the operator; Relation: '=', '<', '>', 'l' (<=), 'g' (>=)
+    double value = 0.0;      // Number
+    double unit = 1.0;       // Number: the value of one unit in its last printed digit
+    bool scientific = false; // Number: written with an exponent ("1.5e+12")
+    std::string name;        // Name
+    std::size_t begin = 0;   // byte range in the text
     std::size_t end = 0;
 };
 
@@ -92,6 +93,7 @@ std::vector<Token> tokenize(const std::string& s) {
                     while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
                     exponent = std::atoi(s.substr(j + 1, k - j - 1).c_str());
                     j = k;
+                    t.scientific = true;
                 }
             }
             t.kind = Kind::Number;
@@ -174,9 +176,10 @@ struct Side {
     bool ok = false;
     std::size_t end = 0; // the token after it
     double value = 0.0;
-    bool named = false;   // it has a name: a label, not evaluated
-    bool literal = false; // a plain number: 2, -0.5, (-2)
-    double unit = 1.0;    // a literal's last printed digit's unit
+    bool named = false;      // it has a name: a label, not evaluated
+    bool literal = false;    // a plain number: 2, -0.5, (-2)
+    double unit = 1.0;       // a literal's last printed digit's unit
+    bool scientific = false; // a literal written with an exponent
 };
 
 class Parser {
@@ -305,6 +308,7 @@ class Parser {
             s.ok = s.literal = true;
             s.value = k.value;
             s.unit = k.unit;
+            s.scientific = k.scientific;
             s.end = i + 1;
         } else if (k.kind == Kind::Name) {
             s.ok = s.named = true;
@@ -350,7 +354,7 @@ void checkChain(const std::string& text, const std::vector<Token>& tokens,
                 double roundedTo, EquationReport& report) {
     // A literal's unit: its last printed digit's, or finer when the writer dropped zeros.
     auto unitOf = [&](const Side& s) {
-        return roundedTo > 0.0 ? std::min(s.unit, roundedTo) : s.unit;
+        return roundedTo > 0.0 && !s.scientific ? std::min(s.unit, roundedTo) : s.unit;
     };
     auto sideText = [&](const ChainSide& c) {
         return text.substr(tokens[c.first].begin, tokens[c.last - 1].end - tokens[c.first].begin);

@@ -35,7 +35,8 @@ struct EquationReport {
 
 // Every chain in `text` (one line or many), checked as above. `roundedTo` > 0: the writer rounds
 // results to this unit before dropping trailing zeros (formatNumber: 0.001), so a printed "1"
-// stands for 1.000 and is held to +-0.0005; 0: only the digits printed count.
+// stands for 1.000 and is held to +-0.0005 (a number with an exponent, "1.18e+13", keeps its own
+// digits); 0: only the digits printed count.
 EquationReport checkEquations(const std::string& text, double roundedTo = 0.0);
 // True when every chain in `text` holds.
 bool equationsHold(const std::string& text, double roundedTo = 0.0);

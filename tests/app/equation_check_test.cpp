@@ -66,6 +66,7 @@ TEST(EquationCheck, ToleranceIsHalfAUnitOfTheLastPrintedDigit) {
     EXPECT_FALSE(equationsHold("2/3 = 1", kFormatNumberUnit));
     EXPECT_TRUE(equationsHold("0.9999 = 1", kFormatNumberUnit));
     EXPECT_TRUE(equationsHold("1/8000 = 0.000125", kFormatNumberUnit));
+    EXPECT_TRUE(equationsHold("4.21·1e+12 = 4.2e+12", kFormatNumberUnit)); // its own digits
 }
 
 TEST(EquationCheck, ReadsTheNotationOnScreen) {
