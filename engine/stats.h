@@ -86,4 +86,8 @@ struct CollisionRecord {
     // when v1 - v2 > 0 (else when v2 - v1 > 0): the relative-velocity test the inspector shows
     // (lecture, "Tips – Collision Resolve"). A wall's side is in `other`.
     bool firstBelow = true;
+    // m, the two bodies' centres when the contact was resolved: with the perfect and turn-based
+    // methods where they touched (the point of impact, within the frame), with move-and-correct
+    // after the move back. A wall's is (0, 0).
+    Vec2 position1, position2;
 };

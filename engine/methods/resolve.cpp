@@ -92,8 +92,10 @@ void Resolver::record(int a, int b, int axis, double m1, double v1, double m2, d
     r.rule = rule;
     if (rest) r.restBodies = static_cast<int>(queue_.size()), r.restForced = forceRest_;
     r.mu = note_.mu, r.dvn = note_.dvn, r.dvt = note_.dvt, r.perSecond = note_.perSecond;
+    r.position1 = ctx_.world.blocks[a].position;
     if (b >= 0) {
-        r.firstBelow = ctx_.world.blocks[a].position[axis] <= ctx_.world.blocks[b].position[axis];
+        r.position2 = ctx_.world.blocks[b].position;
+        r.firstBelow = r.position1[axis] <= r.position2[axis];
     }
     ctx_.log->push_back(r);
 }

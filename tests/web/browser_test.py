@@ -271,9 +271,17 @@ class Page:
         """Loads the page again and waits for its new first frame."""
         self.evaluate("window.sandboxOldPage = true")
         self.call("Page.reload")
-        self.wait(lambda: self.evaluate("window.sandboxOldPage === undefined && "
-                                        "window.sandboxFirstFrame !== undefined"),
-                  "the first frame after reloading")
+
+        def new_page_shown():
+            try:
+                return self.evaluate("window.sandboxOldPage === undefined && "
+                                     "window.sandboxFirstFrame !== undefined")
+            except AssertionError as e:  # asked while the old page went: ask the new one
+                if "navigated or closed" in str(e):
+                    return False
+                raise
+
+        self.wait(new_page_shown, "the first frame after reloading")
 
     def canvas_size(self):
         """The canvas's backing store, its CSS size times the ratio (rounded), and the ratio."""
