@@ -118,7 +118,7 @@ StepStats World::step(std::vector<CollisionRecord>* log) {
     StepScratch& buffers = scratch.get();
 
     const Integrator integrator = settings.integrator; // read here only
-    // Friction acts when some μ > 0 (resolve.cpp, "Friction"); else no friction code runs.
+    // Friction acts when some μ > 0 (friction.cpp); else no friction code runs.
     double maxFriction = settings.friction;
     for (const Block& b : blocks) maxFriction = std::max(maxFriction, b.friction);
     const bool friction = maxFriction > 0.0;

@@ -55,7 +55,7 @@ struct WorldSettings {
     Integrator integrator = Integrator::SemiImplicitEuler;
     std::uint8_t mistakes = 0; // bit (1 << Mistake) set: that mistake is made (all off: correct)
     double drag = 0.0;         // k in kg/m^3: quadratic drag force -k·A·|v|·v, A = w·h (m^2)
-    double friction = 0.0;     // μ >= 0: Coulomb friction at every contact (resolve.h, "Friction")
+    double friction = 0.0;     // μ >= 0: Coulomb friction at every contact (friction.cpp)
 
     bool has(Mistake m) const { return (mistakes >> static_cast<int>(m)) & 1u; }
     void set(Mistake m, bool on) {

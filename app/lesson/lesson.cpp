@@ -4,6 +4,7 @@
 #include "lesson.h"
 
 #include "input_limits.h"
+#include "lesson_input.h"
 #include "printable.h"
 #include "scene_json.h"
 #include "vocabulary.h"
@@ -368,7 +369,7 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
     requireObject(value, path);
     checkKeys(value, path,
               {"title", "caption", "scene", "overrides", "overlays", "select", "thrust", "camera",
-               "frame", "pause_at", "question", "answer", "reveal", "given", "expect"});
+               "frame", "pause_at", "question", "answer", "reveal", "given", "expect", "input"});
     LessonStep step;
     if (!value.contains("title")) throw ValueError{path, "missing \"title\""};
     step.title = text(value["title"], keyPath(path, "title"), 1);
@@ -389,6 +390,8 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
             throw ValueError{p, "the selected block " + quoted(b.name) +
                                     " has no mass: thrust pushes a dynamic block"};
     }
+    if (value.contains("input"))
+        step.input = parseLessonInput(value["input"], keyPath(path, "input"), step.scene);
     if (value.contains("camera"))
         step.camera = parseCamera(value["camera"], keyPath(path, "camera"));
     if (value.contains("frame")) {

@@ -67,6 +67,9 @@ struct LessonStep {
     // N: the keyboard thrust on with this force (the arrow keys push the selected block, which
     // is dynamic); none: thrust off.
     std::optional<double> thrust;
+    // The scene's player's keys over time (lesson_input.h): the step plays itself. Empty: the
+    // arrow keys.
+    std::vector<ScriptedKeys> input;
     std::optional<Bounds> camera;       // world rectangle to fit into the view; none: the bounds
     ViewFrame frame = ViewFrame::World; // "frame": "com": seen moving with the centre of mass
     LessonPause pause;

@@ -69,7 +69,12 @@ StepRun runStepToPause(const LessonStep& step) {
     std::vector<CollisionRecord> log;
     while (run.progress.frames < limit) {
         log.clear();
-        const StepStats stats = run.world.step(&log);
+        const StepStats stats =
+            step.scene.player
+                ? stepWithPlayer(run.world, *step.scene.player,
+                                 scriptedKeys(step.input, run.world.time, run.world.settings.dt),
+                                 &log)
+                : run.world.step(&log);
         if (countFrame(step.pause, run.world, stats, log, run.progress)) return run;
     }
     run.reached = false;

@@ -75,6 +75,7 @@ bool openLesson(LessonSession& s, SimulationSession& sim, View& view, Messages& 
 void closeLesson(LessonSession& s, SimulationSession& sim, View& view) {
     s = LessonSession{};
     sim.stopAtFrame.reset();
+    sim.script.clear();
     sim.pauseAtSceneEnd = true; // the scene's own end again
     view.fitBounds.reset();
     setViewFrame(view, ViewFrame::World); // a step's frame ends with the lesson
@@ -101,6 +102,7 @@ bool enterStep(LessonSession& s, SimulationSession& sim, View& view, Messages& m
     sim.selected = step.selected;
     sim.thrust.on = step.thrust.has_value(); // the step states it, like its overlays
     if (step.thrust) sim.thrust.force = *step.thrust;
+    sim.script = step.input; // the step plays its player's keys itself
     sim.reset(); // again, with the selection: the plots and the point of impact follow it
     followNewRun(view, sim.world());
     showSetup(s, sim, view, runStepToPause(step));

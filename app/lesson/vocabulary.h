@@ -48,6 +48,10 @@
       drawComOverlay)                                                                              \
     X(poi, "poi", "impact point", "Point of impact t = a/b of the watched block's last collision", \
       false, nullptr, (DockWish{}), drawPoiOverlay)                                                \
+    X(contacts, "contacts", "contacts",                                                           \
+      "The last frame's contacts: a dot per collision, a ring per resting contact, and friction's " \
+      "push along the face (an arrow while sliding, a bar while it holds)",                        \
+      false, nullptr, (DockWish{}), drawContactsOverlay)                                          \
     /* A student's trace (docs/compare.md): their blocks as outlines over the reference's. */     \
     X(ghost, "ghost", "your trace", "Your engine's blocks (a trace opened in the Compare section) " \
       "as outlines over the reference's", false, nullptr, (DockWish{}), drawGhostOverlay)         \

@@ -101,7 +101,8 @@ void SceneGeometry::addGrid(const SceneView& view) {
 // Trails, fading with age, as GL lines. A software rasteriser pays for every pixel of their
 // length, so at most kTrailPixelBudget pixels of trail are drawn: all trails are cut at the same
 // age (a crowded scene shows short tails), and with many blocks only every k-th stored point is
-// used, to stay within kTrailSegmentBudget segments.
+// used, to stay within kTrailSegmentBudget segments. With every point used, a trail passes
+// through each point of impact it kept (Trails::impact).
 void SceneGeometry::addTrails(const SceneView& view, const Trails& trails) {
     const World& world = *view.world;
     const double px = view.camera->pixelsToMetres(1.0);
@@ -123,7 +124,15 @@ void SceneGeometry::addTrails(const SceneView& view, const Trails& trails) {
         while (prevAge < oldest) {
             const int age = std::min(prevAge + stride, oldest);
             const Vec2 p = trails.point(i, age);
-            under.segment(prev, p, c.withAlpha(fade(prevAge)), c.withAlpha(fade(age)));
+            Vec2 hit;
+            if (stride == 1 && trails.impact(i, prevAge, hit)) {
+                // Through the point of impact: the path that happened (trails.h).
+                const float mid = 0.5f * (fade(prevAge) + fade(age));
+                under.segment(prev, hit, c.withAlpha(fade(prevAge)), c.withAlpha(mid));
+                under.segment(hit, p, c.withAlpha(mid), c.withAlpha(fade(age)));
+            } else {
+                under.segment(prev, p, c.withAlpha(fade(prevAge)), c.withAlpha(fade(age)));
+            }
             prev = p;
             prevAge = age;
         }

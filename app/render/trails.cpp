@@ -1,25 +1,45 @@
 #include "trails.h"
 
-void Trails::record(const World& world) {
+void Trails::record(const World& world, const std::vector<CollisionRecord>* log) {
     if (world.blocks.size() != blockCount_) {
         blockCount_ = world.blocks.size();
         points_.assign(blockCount_ * static_cast<std::size_t>(capacity_), Vec2{});
+        impacts_.assign(points_.size(), Vec2{});
+        hasImpact_.assign(points_.size(), 0);
+        pendingImpact_.assign(blockCount_, Vec2{});
+        hasPending_.assign(blockCount_, 0);
         length_ = 0;
         head_ = 0;
         skipped_ = 0;
-    } else if (length_ > 0 && ++skipped_ < every_) {
-        return;
     }
+    if (log && world.settings.method != Method::MoveAndCorrect) {
+        const auto note = [this](int block, Vec2 at) {
+            const auto i = static_cast<std::size_t>(block);
+            if (block < 0 || i >= blockCount_ || hasPending_[i]) return;
+            pendingImpact_[i] = at;
+            hasPending_[i] = 1;
+        };
+        for (const CollisionRecord& r : *log) {
+            if (r.rest) continue; // a resting contact: the block is where it was
+            note(r.block, r.position1);
+            note(r.other, r.position2);
+        }
+    }
+    if (length_ > 0 && ++skipped_ < every_) return;
     skipped_ = 0;
     head_ = (head_ + 1) % capacity_;
     for (std::size_t i = 0; i < blockCount_; ++i) {
-        points_[i * static_cast<std::size_t>(capacity_) + static_cast<std::size_t>(head_)] =
-            world.blocks[i].position;
+        const std::size_t k = slotIndex(i, head_);
+        points_[k] = world.blocks[i].position;
+        impacts_[k] = pendingImpact_[i];
+        hasImpact_[k] = length_ > 0 ? hasPending_[i] : 0; // a first point has no way to it
+        hasPending_[i] = 0;
     }
     if (length_ < capacity_) ++length_;
 }
 
 void Trails::clear() {
+    hasPending_.assign(blockCount_, 0);
     length_ = 0;
     skipped_ = 0;
     head_ = 0;
@@ -28,7 +48,15 @@ void Trails::clear() {
 Vec2 Trails::point(std::size_t block, int age) const {
     if (block >= blockCount_ || age < 0 || age >= length_) return {};
     const int slot = ((head_ - age) % capacity_ + capacity_) % capacity_;
-    return points_[block * static_cast<std::size_t>(capacity_) + static_cast<std::size_t>(slot)];
+    return points_[slotIndex(block, slot)];
+}
+
+bool Trails::impact(std::size_t block, int age, Vec2& at) const {
+    if (block >= blockCount_ || age < 0 || age + 1 >= length_) return false;
+    const int slot = ((head_ - age) % capacity_ + capacity_) % capacity_;
+    if (!hasImpact_[slotIndex(block, slot)]) return false;
+    at = impacts_[slotIndex(block, slot)];
+    return true;
 }
 
 int Trails::ageWithinLength(const World& world, double budget) const {

@@ -1,7 +1,12 @@
 // Trails: the recent positions of every block (the lecture's D key draws them, C clears them).
 // A ring buffer per block in one flat array; pure logic, drawn by the renderer with fading alpha.
+// A trail draws the path that happened: with the perfect and turn-based methods a block that
+// collided on the way to a stored point passes through its point of impact (lecture, "Point of
+// Impact"), kept beside that point, rather than cutting the corner from one frame's end to the
+// next.
 #pragma once
 
+#include "stats.h"
 #include "vec2.h"
 #include "world.h"
 
@@ -16,7 +21,10 @@ class Trails {
 
     // Appends the current position of every block. A change in the number of blocks (a block
     // added or removed) restarts every trail, since indices no longer name the same blocks.
-    void record(const World& world);
+    // `log`, the collisions of the frame just stepped: each block's first point of impact since
+    // its last stored point is kept with the next one (not with move-and-correct, whose resolve
+    // happens after the overlap, at no point of the path).
+    void record(const World& world, const std::vector<CollisionRecord>* log = nullptr);
     void clear();
 
     int capacity() const { return capacity_; }
@@ -25,6 +33,9 @@ class Trails {
     int length() const { return length_; }
     // Point `age` of block `block`: age 0 is the newest, length() - 1 the oldest.
     Vec2 point(std::size_t block, int age) const;
+    // The point of impact on the way from point age + 1 to point age, if the block collided
+    // there (then `at` is where it touched).
+    bool impact(std::size_t block, int age, Vec2& at) const;
     // The oldest age (at least 1, at most length() - 1) up to which the trails of the moving blocks
     // of `world` are together no longer than `budget` metres, all cut at the same age; 0 when
     // there is no trail to draw. Drawing costs in proportion to length on a software rasteriser,
@@ -39,4 +50,14 @@ class Trails {
     int length_ = 0;
     int head_ = 0;             // slot of the newest point
     std::vector<Vec2> points_; // blockCount_ * capacity_
+    // Beside each point: the first point of impact on the way to it (impacts_), and whether there
+    // was one (hasImpact_); pending*_: what the frames since the last stored point met.
+    std::vector<Vec2> impacts_;
+    std::vector<char> hasImpact_;
+    std::vector<Vec2> pendingImpact_;
+    std::vector<char> hasPending_;
+
+    std::size_t slotIndex(std::size_t block, int slot) const {
+        return block * static_cast<std::size_t>(capacity_) + static_cast<std::size_t>(slot);
+    }
 };

@@ -29,8 +29,8 @@ struct StepScratch;
 
 // With friction and the exact integrator, how a block slides along one axis on the infinite masses
 // (walls, static and kinematic blocks) it rests on: friction is then a constant deceleration
-// within the substep, which ends when the block has the same velocity as its support (resolve.h,
-// "Friction"). One per block and axis, reset every substep.
+// within the substep, which ends when the block has the same velocity as its support
+// (friction.cpp). One per block and axis, reset every substep.
 struct Slide {
     bool on = false;    // it rests on an infinite mass along the other axis
     int support = 0;    // that body: a block index, or a Wall (negative)
@@ -54,7 +54,7 @@ struct SubstepContext {
     // m/s^2 per block over this substep: the exact integrator's constant accelerations (the rest
     // rule zeroes them for supported blocks). Null for the Euler integrators: motion is linear.
     std::vector<Vec2>* acceleration = nullptr;
-    // Friction ("Friction" below): some μ > 0 (else no friction code runs: the results are those
+    // Friction (friction.cpp): some μ > 0 (else no friction code runs: the results are those
     // without it, bit for bit). With the exact integrator also each block's forces' acceleration
     // at the substep's start and its slides (2 per block: x, y).
     bool friction = false;
@@ -168,10 +168,10 @@ class Resolver {
     void reverseKinematic(int i, int axis);
     Resolution restCluster(int seedA, int seedB, int axis, Wall seedWall);
     void record(int a, int b, int axis, double m1, double v1, double m2, double v2, double u,
-                double C, double v1After, double v2After, bool rest);
+                double C, double v1After, double v2After, ResolveRule rule);
     void setVelocity(int i, int axis, double v);
     void findNear(const Aabb& box);
-    // Friction ("Friction" in resolve.cpp).
+    // Friction (friction.cpp).
     double frictionOf(int body) const;
     double frictionOf(int a, int b) const { return std::sqrt(frictionOf(a) * frictionOf(b)); }
     double inverseMass(int body) const;

@@ -44,6 +44,8 @@ inline constexpr Range kForce{-1e9, 1e9, "N"};           // each force component
 inline constexpr Range kDrag{0.0, 1e6, "kg/m^3"};        // the medium's density (water: 1e3)
 inline constexpr Range kFriction{0.0, 1e3, ""};          // μ, Coulomb friction (rubber on dry: ~1)
 inline constexpr Range kThrust{0.01, 1e4, "N"};          // the keyboard thrust (app, lessons)
+inline constexpr Range kPlayerForce{0.0, 1e4, "N"};      // a scene's player: its left/right push
+inline constexpr Range kJumpSpeed{0.0, 1e3, "m/s"};      // a scene's player: its jump
 inline constexpr Range kFrameRate{1.0 / kDt.max, 1.0 / kDt.min, "Hz"}; // 1/dt (the app's field)
 inline constexpr Range kTimeScale{0.01, 100.0, ""}; // simulated s per real s (app, lessons)
 inline constexpr Range kFrames{0.0, 1e7, "", true}; // frames of one run (the frame budget)

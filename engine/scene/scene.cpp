@@ -238,9 +238,31 @@ void checkOverlaps(const std::vector<BlockDef>& blocks) {
     }
 }
 
+// "player": {"block": NAME, "force": N, "jump": m/s}: a dynamic block, named, that the keys
+// control (player.h).
+PlayerDef parsePlayer(const json& value, const std::vector<BlockDef>& blocks) {
+    requireObject(value, "player");
+    checkKeys(value, "player", {"block", "force", "jump"});
+    for (const char* key : {"block", "force", "jump"})
+        if (!value.contains(key))
+            throw ValueError{"player", std::string("missing \"") + key + "\""};
+    PlayerDef player;
+    const std::string name = string(value["block"], "player.block");
+    for (std::size_t i = 0; i < blocks.size() && player.block < 0; ++i)
+        if (blocks[i].name == name) player.block = static_cast<int>(i);
+    if (player.block < 0)
+        throw ValueError{"player.block", "no block is named \"" + printable(name) + "\""};
+    if (blocks[static_cast<std::size_t>(player.block)].kind != BodyKind::Dynamic)
+        throw ValueError{"player.block",
+                         "\"" + printable(name) + "\" has no mass: the player is a dynamic block"};
+    player.force = number(value["force"], "player.force", limits::kPlayerForce);
+    player.jump = number(value["jump"], "player.jump", limits::kJumpSpeed);
+    return player;
+}
+
 Scene parseValue(const json& root) {
     requireObject(root, "(top level)");
-    checkKeys(root, "", {"name", "description", "duration", "world", "blocks"});
+    checkKeys(root, "", {"name", "description", "duration", "world", "blocks", "player"});
     Scene scene;
     if (!root.contains("name")) throw ValueError{"(top level)", "missing \"name\""};
     scene.name = string(root["name"], "name");
@@ -259,6 +281,7 @@ Scene parseValue(const json& root) {
         scene.blocks.push_back(parseBlock(blocks[i], indexPath("blocks", i)));
     checkInBounds(scene);
     checkOverlaps(scene.blocks);
+    if (root.contains("player")) scene.player = parsePlayer(root["player"], scene.blocks);
     return scene;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "block_def.h"
+#include "player.h"
 #include "scene_error.h"
 #include "world.h"
 
@@ -20,6 +21,8 @@ struct Scene {
     Bounds bounds;
     WorldSettings settings = defaultWorldSettings();
     std::vector<BlockDef> blocks;
+    // The block the keys control (player.h), optional: "player" names it, with its push and jump.
+    std::optional<PlayerDef> player;
 
     bool operator==(const Scene& o) const;
 };

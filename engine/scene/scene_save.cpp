@@ -93,7 +93,8 @@ bool Scene::operator==(const Scene& o) const {
     // measureOverlap) are not part of format v1.
     return name == o.name && description == o.description && duration == o.duration &&
            bounds.min == o.bounds.min && bounds.max == o.bounds.max &&
-           settings_table::sameSceneSettings(settings, o.settings) && blocks == o.blocks;
+           settings_table::sameSceneSettings(settings, o.settings) && blocks == o.blocks &&
+           player == o.player;
 }
 
 std::string sceneToJson(const Scene& scene) {
@@ -118,8 +119,13 @@ std::string sceneToJson(const Scene& scene) {
     out += "  \"blocks\": [";
     for (std::size_t i = 0; i < scene.blocks.size(); ++i)
         out += (i ? ",\n    " : "\n    ") + blockText(scene.blocks[i]);
-    out += scene.blocks.empty() ? "]\n" : "\n  ]\n";
-    return out + "}\n";
+    out += scene.blocks.empty() ? "]" : "\n  ]";
+    if (const auto& p = scene.player) {
+        const std::string& name = scene.blocks[static_cast<std::size_t>(p->block)].name;
+        out += ",\n  \"player\": {" + field("block", dumpValue(name)) + ", " +
+               field("force", dumpValue(p->force)) + ", " + field("jump", dumpValue(p->jump)) + "}";
+    }
+    return out + "\n}\n";
 }
 
 bool saveSceneFile(const Scene& scene, const std::string& path, std::string* error) {
@@ -187,6 +193,11 @@ Scene sceneFromWorld(const World& world, const Scene& original) {
         def.friction = b.friction;
         if (b.kind == BodyKind::Dynamic) def.mass = b.mass, def.force = b.force;
         scene.blocks.push_back(def);
+    }
+    // The player while its block is still there, dynamic and named (a file names it).
+    if (const auto& p = original.player; p && p->block < static_cast<int>(scene.blocks.size())) {
+        const BlockDef& def = scene.blocks[static_cast<std::size_t>(p->block)];
+        if (def.kind == BodyKind::Dynamic && !def.name.empty()) scene.player = p;
     }
     return scene;
 }

@@ -476,6 +476,51 @@ TEST(Trails, KeepTheNewestPointsAndRestartWhenBlocksChange) {
     EXPECT_EQ(trails.length(), 0);
 }
 
+// Issue 24: a trail draws the path that happened. A block at 6 m/s meets the right wall within
+// a frame; the perfect method's frame ends are both off the wall, but its trail (and turn-based's,
+// whose frame ends at the bounce) passes through where it touched: its centre half its width from
+// the wall, x = 20 - 0.5 = 19.5 exactly (the record keeps the centre as resolved). Move-and-correct
+// resolves after the overlap, at no point of the path: no point of impact is kept.
+TEST(Trails, PassThroughThePointOfImpactWithinTheFrame) {
+    for (Method method : {Method::Perfect, Method::TurnBased, Method::MoveAndCorrect}) {
+        SCOPED_TRACE(methodName(method));
+        World w;
+        w.settings.gravity = {0.0, 0.0};
+        w.settings.method = method;
+        Block b;
+        b.position = {17.0, 6.0};
+        b.size = {1.0, 1.0};
+        b.velocity = {6.0, 0.0};
+        w.blocks.push_back(b);
+        Trails trails(200, 1);
+        std::vector<CollisionRecord> log;
+        trails.record(w, &log);
+        int impacts = 0;
+        for (int frame = 0; frame < 60; ++frame) {
+            log.clear();
+            w.step(&log);
+            trails.record(w, &log);
+        }
+        for (int age = 0; age + 1 < trails.length(); ++age) {
+            Vec2 at;
+            if (!trails.impact(0, age, at)) continue;
+            ++impacts;
+            EXPECT_EQ(at.x, 19.5);
+            EXPECT_EQ(at.y, 6.0);
+            EXPECT_LT(trails.point(0, age + 1).x, 19.5);
+            if (method == Method::Perfect) {
+                // Neither end of that frame is at the wall: without the point the trail would cut
+                // the corner.
+                EXPECT_LT(trails.point(0, age).x, 19.5);
+            } else {
+                // Turn-based loses the rest of the frame at the bounce: it ends where it touched.
+                EXPECT_EQ(trails.point(0, age).x, 19.5);
+            }
+        }
+        EXPECT_EQ(impacts, method == Method::MoveAndCorrect ? 0 : 1);
+    }
+}
+
 TEST(Trails, AgeWithinLengthCutsAllTrailsAtTheSameAge) {
     // Two moving blocks, each 1 m further per recorded point, and a static one that never counts.
     Trails trails(10, 1);

@@ -288,7 +288,7 @@ TEST(PhysicsSettings, CtrlSSavesThemAndTheBlocksForceButNeverTheHeldThrust) {
     EXPECT_GT(back.scene->blocks[1].velocity.y, 0.0); // ...and it did push
 }
 
-TEST(PhysicsSettings, TheLessonsPlatformerTurnsThrustOnAndTheArrowsDoNotStep) {
+TEST(PhysicsSettings, TheLessonsPlatformerPlaysItsScriptAndTheArrowsDoNotStep) {
     App app;
     app.shipped.scenesDir = SANDBOX_SCENES_DIR;
     ASSERT_TRUE(openLesson(app, std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json"))
@@ -299,22 +299,30 @@ TEST(PhysicsSettings, TheLessonsPlatformerTurnsThrustOnAndTheArrowsDoNotStep) {
         if (steps[i].title.find("platformer") != std::string::npos) platformer = i;
     ASSERT_LT(platformer + 1, steps.size());
     ASSERT_TRUE(enterStep(app, platformer));
-    EXPECT_TRUE(app.sim.thrust.on);
-    EXPECT_EQ(app.sim.thrust.force, 20.0);
+    EXPECT_FALSE(app.sim.thrust.on); // the scene's player, not the thrust
+    ASSERT_TRUE(app.sim.scene.player);
+    EXPECT_FALSE(app.sim.script.empty()); // the step's "input" plays it
     ASSERT_GE(app.sim.selected, 0);
     EXPECT_EQ(app.sim.labels[static_cast<std::size_t>(app.sim.selected)].name, "player");
     EXPECT_EQ(std::filesystem::path(app.sim.scenePath).filename(), "platformer.json");
-    // Right pushes the player instead of stepping the lesson; PageDown steps.
-    const Action right = actionForKey(keys::kRight, false, false, app.sim.thrust.on);
+    // With a player the arrows are its keys (appFrame passes arrowsPush): Right does not step
+    // the lesson; PageDown steps.
+    const bool arrowsPush = app.sim.thrust.on || app.sim.scene.player.has_value();
+    const Action right = actionForKey(keys::kRight, false, false, arrowsPush);
     EXPECT_FALSE(applyLessonAction(app, right));
     EXPECT_EQ(app.lesson.current, platformer);
-    const Action pageDown = actionForKey(keys::kPageDown, false, false, app.sim.thrust.on);
+    const Action pageDown = actionForKey(keys::kPageDown, false, false, arrowsPush);
     EXPECT_TRUE(applyLessonAction(app, pageDown)); // plays the step from its setup
     EXPECT_EQ(app.lesson.current, platformer);
-    EXPECT_TRUE(applyLessonAction(app, pageDown)); // its moment
+    EXPECT_TRUE(applyLessonAction(app, pageDown)); // its moment: the script played in the app
+    // The window's run ends where sandbox-cli lesson's does: the player on the shelf (its top
+    // at 6 m), the coin on the floor.
+    const World& w = app.sim.world();
+    EXPECT_NEAR(w.blocks[0].position.y - w.blocks[0].halfSize().y, 6.0, 1e-9);
+    EXPECT_NEAR(w.blocks[6].position.y, 0.25, 1e-9);
     EXPECT_TRUE(applyLessonAction(app, pageDown)); // the next step
     EXPECT_EQ(app.lesson.current, platformer + 1);
-    EXPECT_FALSE(app.sim.thrust.on); // the next step does not use it
+    EXPECT_TRUE(app.sim.script.empty()); // the next step has no script
 }
 
 // What the scene renderer draws for forces: a block's own force with the arrows overlay, the

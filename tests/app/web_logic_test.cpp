@@ -344,8 +344,17 @@ TEST(SheetLayout, NarrowScreensGetTheSceneAndABarOfButtons) {
     const ScreenRect& scene = app.view.layout.scene;
     EXPECT_GE(scene.width * scene.height, 0.6 * 1170.0 * 2532.0);
     EXPECT_EQ(app.view.layout.panel.height, kSheetBarPx * 3.0);
-    // The smallest block (orange, 0.6 m) is at least kMinBlockPx (x3) on screen.
-    EXPECT_GE(0.6 * app.view.camera.pixelsPerMetre(), kMinBlockPx * 3.0 - 1e-9);
+    // The first view shows the whole scene (20 x 12 m): the world's corners inside the scene's
+    // rectangle, the width (the tighter side, upright) filled but for the fit's margins. Exact
+    // up to rounding: 1e-9 px.
+    const Camera& camera = app.view.camera;
+    const Vec2 low = camera.worldToScreen(app.sim.world().bounds.min);
+    const Vec2 high = camera.worldToScreen(app.sim.world().bounds.max);
+    EXPECT_GE(low.x, scene.x - 1e-9);
+    EXPECT_LE(high.x, scene.x + scene.width + 1e-9);
+    EXPECT_GE(high.y, scene.y - 1e-9);
+    EXPECT_LE(low.y, scene.y + scene.height + 1e-9);
+    EXPECT_NEAR(high.x - low.x, scene.width - 2.0 * kFitMarginPx * 3.0, 1e-9);
     app.view.sheetOpen = true;
     updateCamera(app, 1170.0, 2532.0);
     EXPECT_EQ(app.view.layout.panel.y, std::round(2532.0 * (1.0 - kSheetOpenShare)));

@@ -1,4 +1,4 @@
-// Coulomb friction (engine/methods/resolve.cpp, "Friction"): a block sliding on the floor stops
+// Coulomb friction (engine/methods/friction.cpp): a block sliding on the floor stops
 // where the analytic answer says, a pushed pair accelerates at (F - μ·(m1 + m2)·g)/(m1 + m2), a
 // block on a platform that moves off slips for Δv/(μ·g) and then rides, and friction never makes
 // energy. The analytic answers hold to 1e-9 under the exact integrator (the motion is a parabola

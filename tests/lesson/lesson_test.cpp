@@ -297,6 +297,91 @@ TEST(Lesson, AStepCanTurnThrustOnForTheSelectedBlock) {
                               "thrust pushes a dynamic block");
 }
 
+// A player on the floor of a frictionless world with g = 10 m/s^2 and dt = 1/20 s (frame times
+// exact in binary up to rounding of 0.05).
+std::string playerLesson(const std::string& stepFields) {
+    return R"({"name": "t", "steps": [{"title": "s", "caption": "c", "scene": {"name": "p",
+        "world": {"gravity": [0, -10], "dt": 0.05, "integrator": "exact", "bounciness": 0},
+        "blocks": [{"name": "hero", "position": [2, 0.5], "size": 1, "mass": 1}],
+        "player": {"block": "hero", "force": 10, "jump": 5}})" +
+           (stepFields.empty() ? std::string() : ", " + stepFields) + "}]}";
+}
+
+TEST(Lesson, InputScriptsThePlayersKeysOverTime) {
+    const LessonStep step = onlyStep(playerLesson(
+        R"("input": [{"at": 0.5, "hold": ["right"], "for": 1.2}, {"at": 1.8, "press": "up"}])"));
+    ASSERT_EQ(step.input.size(), 2u);
+    EXPECT_EQ(step.input[0].at, 0.5);
+    EXPECT_EQ(step.input[0].duration, 1.2);
+    EXPECT_TRUE(step.input[0].keys.right && !step.input[0].keys.left && !step.input[0].keys.up);
+    EXPECT_EQ(step.input[1].duration, 0.0);
+    EXPECT_TRUE(step.input[1].keys.up);
+    // Right in the frames starting at 0.5 .. 1.65 s (24 of them), up in the one starting at 1.8 s.
+    int right = 0, up = 0;
+    for (int frame = 0; frame < 60; ++frame) {
+        const PlayerKeys keys = scriptedKeys(step.input, frame * 0.05, 0.05);
+        right += keys.right;
+        up += keys.up;
+        if (keys.up) {
+            EXPECT_EQ(frame, 36);
+        }
+        if (keys.right) {
+            EXPECT_TRUE(frame >= 10 && frame < 34) << frame;
+        }
+    }
+    EXPECT_EQ(right, 24);
+    EXPECT_EQ(up, 1);
+}
+
+// The runner plays the script: 10 N on 1 kg for 1.2 s from 0.5 s moves the player 10/2·1.2² =
+// 7.2 m and leaves it at 12 m/s (frictionless, exact integrator: to 1e-9, rounding only); the
+// jump at 1.8 s leaves it 5·0.2 - 10/2·0.2² = 0.8 m up at 2 s.
+TEST(Lesson, TheRunnerPlaysTheStepsInput) {
+    const LessonStep step = onlyStep(playerLesson(
+        R"("input": [{"at": 0.5, "hold": ["right"], "for": 1.2}, {"at": 1.8, "press": "up"}],
+           "pause_at": {"time": 2})"));
+    const StepRun run = runStepToPause(step);
+    ASSERT_TRUE(run.reached);
+    const Block& hero = run.world.blocks[0];
+    EXPECT_NEAR(hero.position.x, 2.0 + 7.2 + 12.0 * 0.3, 1e-9);
+    EXPECT_NEAR(hero.velocity.x, 12.0, 1e-9);
+    EXPECT_NEAR(hero.position.y, 0.5 + 0.8, 1e-9);
+    EXPECT_NEAR(hero.velocity.y, 5.0 - 10.0 * 0.2, 1e-9);
+}
+
+TEST(LessonErrors, InputErrorsNameTheirPlace) {
+    struct Case {
+        const char* fields;
+        const char* where;
+    } const cases[] = {
+        {R"("input": {"at": 1, "press": "up"})", "steps[0].input"},
+        {R"("input": [{"press": "up"}])", "steps[0].input[0]"},
+        {R"("input": [{"at": -1, "press": "up"}])", "steps[0].input[0].at"},
+        {R"("input": [{"at": 1, "press": "jump"}])", "steps[0].input[0].press"},
+        {R"("input": [{"at": 1}])", "steps[0].input[0]"},
+        {R"("input": [{"at": 1, "press": "up", "hold": ["left"], "for": 1}])", "steps[0].input[0]"},
+        {R"("input": [{"at": 1, "press": "up", "for": 1}])", "steps[0].input[0].for"},
+        {R"("input": [{"at": 1, "hold": ["left"]}])", "steps[0].input[0]"},
+        {R"("input": [{"at": 1, "hold": [], "for": 1}])", "steps[0].input[0].hold"},
+        {R"("input": [{"at": 1, "hold": ["left", 3], "for": 1}])", "steps[0].input[0].hold[1]"},
+        {R"("input": [{"at": 1, "hold": ["left"], "for": 0}])", "steps[0].input[0].for"},
+        {R"("input": [{"at": 1, "press": "up", "when": 2}])", "steps[0].input[0].when"},
+    };
+    for (const Case& c : cases) {
+        const LessonResult r = parseLesson(playerLesson(c.fields), "t.json", context());
+        ASSERT_FALSE(r.lesson) << c.fields;
+        EXPECT_EQ(r.error.where, std::string("t.json: ") + c.where)
+            << c.fields << " -> " << r.error.text();
+    }
+    // A scene without a player has no keys to script.
+    const LessonResult r =
+        parseLesson(lessonWith(R"("input": [{"at": 1, "press": "up"}])"), "t.json", context());
+    ASSERT_FALSE(r.lesson);
+    EXPECT_EQ(
+        r.error.text(),
+        "t.json: steps[0].input: needs a scene with a \"player\" (the block the keys control)");
+}
+
 TEST(Lesson, StepNumbersOutsideTheLessonAreErrors) {
     const LessonResult r =
         loadLessonFile(std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json", context());

@@ -52,6 +52,8 @@ struct WebApp {
     long long frames = 0;
     double realTime = 0.0;  // s since the first frame (the live region's pace)
     std::string shownState; // pageStateJson() as the page last got it
+    double stateAt = -1e9;  // realTime when the page's text was last made
+    double linkAt = -1e9;   // the page's clock (s) when the link was last looked at
 };
 
 WebApp* gWeb = nullptr;
@@ -88,8 +90,13 @@ void saveSettings(WebApp& w) {
 // carries is made again at most every kLinkRefreshSeconds while paused; while the simulation
 // runs the blocks move every frame, so the link keeps the scene as it last was when paused.
 constexpr double kLinkRefreshSeconds = 0.5;
+// The link is looked at every kLinkLookSeconds, not every frame (the page puts it in the address
+// bar at most every 400 ms anyway: index.html's setLink).
+constexpr double kLinkLookSeconds = 0.25;
 
 void followLink(WebApp& w, double now) {
+    if (now - w.linkAt < kLinkLookSeconds) return;
+    w.linkAt = now;
     const App& app = w.app;
     std::string scene = w.linkScene;
     if (!linkCarriesScene(app)) {
@@ -173,13 +180,21 @@ void answerRequests(WebApp& w) {
     }
 }
 
-// The page's text for a screen reader, kept in step with the canvas, and the collisions through
-// its live region (at most about one a second).
+// The page's text for a screen reader is made again every kPageTextSeconds: while the simulation
+// runs its status (t) changes every frame, and rewriting the page's text and controls 60 times a
+// second cost more than a millisecond per frame (the DOM), which no reader can follow anyway.
+constexpr double kPageTextSeconds = 0.25;
+
+// The page's text for a screen reader, kept in step with the canvas (within kPageTextSeconds),
+// and the collisions through its live region (at most about one a second).
 void tellPage(WebApp& w, double realSeconds) {
     w.realTime += realSeconds;
-    std::string state = pageStateJson(w.app);
-    if (state != w.shownState) pageShowState(state);
-    w.shownState = std::move(state);
+    if (w.realTime - w.stateAt >= kPageTextSeconds) {
+        w.stateAt = w.realTime;
+        std::string state = pageStateJson(w.app);
+        if (state != w.shownState) pageShowState(state);
+        w.shownState = std::move(state);
+    }
     const std::string said = w.app.sim.announcer.announce(
         w.realTime, [&](int i) { return w.app.sim.blockDisplayName(i); });
     if (!said.empty()) pageAnnounce(said);
@@ -219,14 +234,12 @@ void frame(void* arg) {
 }
 
 // ImGui's keyboard focus for the browser tests: the focused control's id, whether the focus ring
-// shows, and its rectangle (framebuffer pixels).
+// shows, and its rectangle (framebuffer pixels, where it is drawn: NavRectRel is relative to the
+// window's content start, which moves with its scrolling).
 std::string navigationJson() {
     const ImGuiContext& g = *ImGui::GetCurrentContext();
     ImRect r;
-    if (g.NavWindow) {
-        r = g.NavWindow->NavRectRel[0];
-        r.Translate(g.NavWindow->Pos);
-    }
+    if (g.NavWindow) r = ImGui::WindowRectRelToAbs(g.NavWindow, g.NavWindow->NavRectRel[0]);
     const ImGuiIO& io = ImGui::GetIO();
     char text[200];
     std::snprintf(text, sizeof text, ",\"navId\":%u,\"navVisible\":%s,\"navRect\":[%d,%d,%d,%d]",
@@ -319,9 +332,15 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
         return "[" + exact(r.x / ratio) + "," + exact(r.y / ratio) + "," + exact(r.width / ratio) +
                "," + exact(r.height / ratio) + "]";
     };
+    // The world's bounds where they are drawn (CSS pixels).
+    const Bounds& bounds = app.sim.world().bounds;
+    const Vec2 low = app.view.camera.worldToScreen(bounds.min);
+    const Vec2 high = app.view.camera.worldToScreen(bounds.max);
+    const ScreenRect world{low.x, high.y, high.x - low.x, low.y - high.y};
     const ImGuiIO& io = ImGui::GetIO();
     text += ",\"blocks\":[" + blocks + "],\"blocksOnScreen\":[" + onScreen +
-            "],\"sceneOnScreen\":" + rect(app.view.layout.scene) +
+            "],\"worldOnScreen\":" + rect(world) +
+            ",\"sceneOnScreen\":" + rect(app.view.layout.scene) +
             ",\"panelOnScreen\":" + rect(app.view.layout.panel) +
             ",\"sheet\":" + (app.view.layout.sheet ? "true" : "false") +
             ",\"sheetOpen\":" + (app.view.sheetOpen ? "true" : "false") +

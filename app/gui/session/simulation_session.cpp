@@ -42,6 +42,8 @@ void SimulationSession::setScene(const Scene& newScene, const std::string& path)
     selected = -1;
     paused = true;
     blocksEdited = false;
+    script.clear(); // a lesson step sets its own after this
+    playerKeys = {};
     restartRun();
 }
 
@@ -89,23 +91,33 @@ FrameOutcome SimulationSession::step(bool sideBySide) {
     } else {
         run.methods.stop();
     }
+    // The player's keys (player.h): a jump now, a push for this frame like the thrust's.
+    const PlayerKeys keys =
+        script.empty() ? playerKeys : scriptedKeys(script, w.time, w.settings.dt);
+    const bool playing = scene.player && keys.any();
+    const Vec2 push = playing ? applyPlayerKeys(w, *scene.player, keys) : Vec2{};
     run.previousBlocks = w.blocks;
     const double frameStart = w.time;
     run.lastLog.clear();
-    Vec2 ownForce;
-    if (pushed >= 0) {
-        Block& b = w.blocks[static_cast<std::size_t>(pushed)];
-        ownForce = b.force;
-        b.force = ownForce + thrust;
-    }
+    std::vector<std::pair<int, Vec2>> ownForces; // the blocks pushed and their own forces
+    auto addForce = [&](int i, Vec2 f) {
+        if (i < 0 || f == Vec2{}) return;
+        Block& b = w.blocks[static_cast<std::size_t>(i)];
+        ownForces.emplace_back(i, b.force);
+        b.force = b.force + f;
+    };
+    addForce(pushed, thrust);
+    addForce(playing ? scene.player->block : -1, push);
     run.stats = w.step(&run.lastLog);
-    if (pushed >= 0) w.blocks[static_cast<std::size_t>(pushed)].force = ownForce;
+    for (auto it = ownForces.rbegin(); it != ownForces.rend(); ++it)
+        w.blocks[static_cast<std::size_t>(it->first)].force = it->second;
     history.afterStep(w);
     // The timeline rebuilds frames by stepping keyframes, which knows nothing of the keys held:
-    // a thrust frame's result is kept as a keyframe of its own (replays stay bit for bit).
-    if (pushed >= 0) history.editedAt(w);
+    // a thrust or player frame's result is kept as a keyframe of its own (replays stay bit for
+    // bit).
+    if (pushed >= 0 || playing) history.editedAt(w);
     addStep(run.totals, run.stats);
-    run.trails.record(w);
+    run.trails.record(w, &run.lastLog);
     telemetry.record(w, selected, run.lastLog);
     announcer.note(run.lastLog);
     if (soundOn(sound, inLesson)) {

@@ -5,6 +5,7 @@
 // notice). Plain logic: no GL, no ImGui; tested in tests/app.
 #pragma once
 
+#include "collision_announcer.h"
 #include "collision_sound.h"
 #include "cost.h"
 #include "fixed_step.h"
@@ -12,7 +13,6 @@
 #include "poi.h"
 #include "scene.h"
 #include "side_by_side.h"
-#include "collision_announcer.h"
 #include "telemetry.h"
 #include "timeline.h"
 #include "trails.h"
@@ -88,6 +88,12 @@ struct SimulationSession {
     // lesson turns this off, its steps stopping where they say.
     bool pauseAtSceneEnd = true;
     ThrustControl thrust;
+    // The keys held for the scene's player this frame (scene.player; player.h): the arrow keys.
+    // Never part of the world's state.
+    PlayerKeys playerKeys;
+    // A lesson step's scripted keys (its "input"): when not empty they play the player instead
+    // of playerKeys, by the world's time, as sandbox-cli lesson plays them.
+    std::vector<ScriptedKeys> script;
     // What the plots and the inspector read, and the timeline: recorded across runs started by a
     // jump on the timeline (the recording is cut at the jump when stepping resumes).
     Telemetry telemetry;

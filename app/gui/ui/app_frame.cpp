@@ -17,11 +17,16 @@ bool navigating() {
     return io.NavActive && io.NavVisible;
 }
 
-// While a lesson step's thrust is on the arrow keys are the thrust, so ImGui's keyboard
-// navigation (Tab and the arrows) is off; in every other state it is on.
+// The arrow keys push: the thrust (on) or the scene's player (player.h).
+bool arrowsPush(const App& app) {
+    return app.sim.thrust.on || app.sim.scene.player.has_value();
+}
+
+// While a lesson step's thrust is on (or the scene has a player) the arrow keys are the thrust, so
+// ImGui's keyboard navigation (Tab and the arrows) is off; in every other state it is on.
 void followThrustForNavigation(const App& app) {
     ImGuiIO& io = ImGui::GetIO();
-    if (app.sim.thrust.on)
+    if (arrowsPush(app))
         io.ConfigFlags &= ~ImGuiConfigFlags_NavEnableKeyboard;
     else
         io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
@@ -30,10 +35,10 @@ void followThrustForNavigation(const App& app) {
 void handleKeys(App& app, const std::vector<KeyPress>& keys) {
     // Typing into a text field (a file name) must not trigger hotkeys; Esc still closes dialogs.
     const bool typing = ImGui::GetIO().WantTextInput;
-    const bool keyboardNavigation = navigating() && !app.sim.thrust.on;
+    const bool keyboardNavigation = navigating() && !arrowsPush(app);
     for (const KeyPress& k : keys) {
         const Action action =
-            actionForKey(k.key, k.ctrl, k.shift, app.sim.thrust.on, app.ui.inBrowser);
+            actionForKey(k.key, k.ctrl, k.shift, arrowsPush(app), app.ui.inBrowser);
         if (typing && action != Action::Escape) continue;
         if (keyboardNavigation && !k.ctrl && navigationKey(k.key)) continue;
         if (action == Action::LessonDigit)
@@ -215,11 +220,16 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     app.view.shownWindows.clear();
     app.view.shownPlots.clear();
     forgetTextRoles();
-    const bool typing = io.WantTextInput || (navigating() && !app.sim.thrust.on);
-    app.sim.thrust.direction = app.sim.thrust.on && !typing ? heldThrustDirection([&io](int key) {
+    const bool typing = io.WantTextInput || (navigating() && !arrowsPush(app));
+    const Vec2 held = arrowsPush(app) && !typing ? heldThrustDirection([&io](int key) {
         return key >= 0 && key < IM_ARRAYSIZE(io.KeysDown) && io.KeysDown[key];
     })
-                                                            : Vec2{};
+                                                 : Vec2{};
+    // With thrust on the arrows push the selected block; else they are the player's keys (a
+    // lesson step's script, when it has one, plays them instead: lesson_session.cpp).
+    app.sim.thrust.direction = app.sim.thrust.on ? held : Vec2{};
+    if (!app.sim.thrust.on && app.sim.script.empty())
+        app.sim.playerKeys = {held.x<0.0, held.x> 0.0, held.y > 0.0};
     handleSceneMouse(app);
     layOut(); // the UI toggle may have changed it
     // The simulation: the frames due in this much real time.

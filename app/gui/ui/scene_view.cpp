@@ -252,7 +252,9 @@ void drawBadge(const App& app, ImDrawList* dl) {
         ImGui::PopFont();
     } else {
         // One count of collisions (the lesson's and sandbox-cli's); the rest rule's resting
-        // contacts apart, so a settled pile's count stands still.
+        // contacts apart, so a settled pile's count stands still. Those are counted as what
+        // they are, each a merge by the rest rule (a block lying on the floor: one per substep),
+        // not as that many things touching.
         const StepTotals& totals = app.sim.run.totals;
         char text[200];
         const int n = std::snprintf(
@@ -261,7 +263,7 @@ void drawBadge(const App& app, ImDrawList* dl) {
             static_cast<unsigned long long>(totals.collisions), totals.collisions == 1 ? "" : "s");
         if (totals.contacts > 0 && n > 0 && n < static_cast<int>(sizeof text)) {
             std::snprintf(
-                text + n, sizeof text - static_cast<std::size_t>(n), "   %llu resting contact%s",
+                text + n, sizeof text - static_cast<std::size_t>(n), "   %llu rest-rule merge%s",
                 static_cast<unsigned long long>(totals.contacts), totals.contacts == 1 ? "" : "s");
         }
         at.x += plate(dl, at, text, plateBg, plateFg, pad);

@@ -35,28 +35,6 @@ ScreenRect sceneViewport(const View& view, bool captionBar, double displayWidth,
     return computeAppLayout(view, captionBar, displayWidth, displayHeight).scene;
 }
 
-namespace {
-
-// kMinBlockPx for the smallest dynamic block, at most the zoom at which the world fills the
-// scene; the centre stays the world's.
-void zoomForFingers(View& view, const World& world, const Bounds& bounds) {
-    double smallest = 0.0;
-    for (const Block& b : world.blocks)
-        if (b.isDynamic()) {
-            const double side = std::min(b.size.x, b.size.y);
-            smallest = smallest > 0.0 ? std::min(smallest, side) : side;
-        }
-    const double w = bounds.max.x - bounds.min.x, h = bounds.max.y - bounds.min.y;
-    if (!(smallest > 0.0) || !(w > 0.0) || !(h > 0.0)) return;
-    const ScreenRect& scene = view.layout.scene;
-    const double filling = std::max(scene.width / w, scene.height / h);
-    const double wanted = kMinBlockPx * static_cast<double>(view.uiScale) / smallest;
-    const double ppm = view.camera.pixelsPerMetre();
-    view.camera.setPixelsPerMetre(std::max(ppm, std::min(filling, wanted)));
-}
-
-} // namespace
-
 void updateCamera(View& view, const World& world, bool captionBar, double displayWidth,
                   double displayHeight) {
     view.layout = computeAppLayout(view, captionBar, displayWidth, displayHeight);
@@ -64,7 +42,6 @@ void updateCamera(View& view, const World& world, bool captionBar, double displa
     if (view.autoFit) {
         const Bounds& bounds = view.fitBounds ? *view.fitBounds : world.bounds;
         view.camera.fit(bounds, kFitMarginPx * static_cast<double>(view.uiScale));
-        if (view.layout.sheet) zoomForFingers(view, world, bounds);
     }
     view.camera.setCentre(view.camera.centre() +
                           followShift(view.frameCamera, world, view.frame, view.autoFit));

@@ -64,10 +64,9 @@ ScreenRect sceneViewport(const View& view, bool captionBar, double displayWidth,
 // Pixels (at UI scale 1) between the world's bounds and the scene's rectangle when the camera
 // fits the world: room for the axis numbers and, at the top, the status badge or caption.
 constexpr double kFitMarginPx = 36.0;
-// On a narrow screen (sheetLayout), the fit zooms in until the smallest dynamic block is at least
-// kMinBlockPx (at UI scale 1: big enough to see and to grab with a finger), but never beyond
-// filling the scene with the world (part of it is then out of view: a drag on empty space pans).
-constexpr double kMinBlockPx = 24.0;
+// On a narrow screen (sheetLayout) too the fit shows the whole world: a phone held upright sees
+// every block of the scene first (the default scene's 0.6 m block is then about 10 CSS px wide
+// at 390 CSS px; two fingers or the wheel zoom in, a drag on empty space pans).
 // Lays out the frame (view.layout), gives the camera the scene's rectangle and refits `world`
 // while view.autoFit holds; in the centre of mass's frame the camera follows it.
 void updateCamera(View& view, const World& world, bool captionBar, double displayWidth,

@@ -169,12 +169,12 @@ TEST_P(PerfectSettling, SettlingPileNeverHitsTheEventCap) {
     }
 }
 
-// The event cap: with at most 5 events per substep, a dense gas ends its frames early at the
-// time of the last event; the world clock advances by exactly what was simulated, and ending
-// early never leaves an overlap.
-TEST(PerfectEventCap, CapEndsTheFrameEarlyWithoutOverlap) {
+// A dense gas of 300 blocks in a 20 m box under the perfect method with at most 5 collision
+// events per substep: the event cap is met in the first frames.
+World cappedDenseGas(int substeps) {
     World world = makeWorld(Method::Perfect, {0.0, 0.0}, 1.0, Bounds{{0.0, 0.0}, {20.0, 20.0}});
     world.settings.eventCap = 5;
+    world.settings.substeps = substeps;
     GasOptions gas;
     gas.min = {0.0, 0.0};
     gas.max = {20.0, 20.0};
@@ -183,6 +183,14 @@ TEST(PerfectEventCap, CapEndsTheFrameEarlyWithoutOverlap) {
     gas.maxFill = 0.9;
     gas.maxSpeed = 10.0;
     addGas(world, gas);
+    return world;
+}
+
+// The event cap: with at most 5 events per substep, a dense gas ends its frames early at the
+// time of the last event; the world clock advances by exactly what was simulated, and ending
+// early never leaves an overlap.
+TEST(PerfectEventCap, CapEndsTheFrameEarlyWithoutOverlap) {
+    World world = cappedDenseGas(1);
     int capHits = 0;
     for (int f = 0; f < 20; ++f) {
         const double before = world.time;
@@ -205,17 +213,7 @@ TEST(PerfectEventCap, CapEndsTheFrameEarlyWithoutOverlap) {
 }
 
 TEST(PerfectEventCap, CapStopsLaterSubsteps) {
-    World world = makeWorld(Method::Perfect, {0.0, 0.0}, 1.0, Bounds{{0.0, 0.0}, {20.0, 20.0}});
-    world.settings.eventCap = 5;
-    world.settings.substeps = 4;
-    GasOptions gas;
-    gas.min = {0.0, 0.0};
-    gas.max = {20.0, 20.0};
-    gas.count = 300;
-    gas.minFill = 0.7;
-    gas.maxFill = 0.9;
-    gas.maxSpeed = 10.0;
-    addGas(world, gas);
+    World world = cappedDenseGas(4);
     const StepStats s = world.step();
     ASSERT_EQ(s.eventCapHits, 1) << "the frame ends at the first capped substep";
     EXPECT_LT(s.simulatedTime, world.settings.dt);
