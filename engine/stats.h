@@ -46,6 +46,18 @@ inline void addStep(StepTotals& totals, const StepStats& step) {
     totals.stepMs += step.stepMs;
 }
 
+// The rule that resolved a collision (CollisionRecord::rule): what the inspector prints.
+enum class ResolveRule : std::uint8_t {
+    Formula, // the lecture's formula; with an infinite mass u is that body's velocity
+    Reflect, // without Newton (resolve "reflect"): each body v' = -C·v, u unused (0)
+    Reverse, // no finite mass (a kinematic block and a wall or an infinite mass): it reverses
+    // The rest rule (resolve.h), perfectly inelastic: every dynamic block of the resting group
+    // takes u, which is
+    RestFree,     // the group's momentum over its mass (restBodies blocks, no infinite mass)
+    RestAnchored, // the velocity of the infinite masses it rests on (they agree)
+    RestCrushed,  // between infinite masses that disagree: the pressing ones reverse, u clamped
+};
+
 // One resolved collision along one axis, with the numbers of the lecture's formula:
 // u = (m1·v1 + m2·v2) / (m1 + m2),  v' = u - C·(v - u).
 struct CollisionRecord {
@@ -60,6 +72,9 @@ struct CollisionRecord {
     double C = 0.0;            // bounciness used (0 when the rest rule applied)
     double v1After = 0.0, v2After = 0.0; // m/s after
     bool rest = false;                   // resolved by the rest rule (a resting contact)
+    ResolveRule rule = ResolveRule::Formula;
+    int restBodies = 0;      // the rest rule: the dynamic blocks that took u
+    bool restForced = false; // the rest rule whatever the speed (collapse, trap, crush)
     // Friction along the other axis (friction.cpp): μ of the pair, and how much the
     // contact changed the two bodies' relative velocity along its axis (dvn) and along the other
     // (dvt, |dvt| <= μ·|dvn|). perSecond: a resting contact under the exact integrator, whose

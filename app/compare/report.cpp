@@ -231,10 +231,9 @@ std::string reportText(const TraceComparison& c, const ReportContext& ctx) {
         line("  " + f.v1After);
         if (!f.v2After.empty()) line("  " + f.v2After);
         if (p.poi.valid && p.inPartingFrame)
-            line("  point of impact of " + nameOf(scene, p.block) +
-                 ": t = a/b = " + formatNumber(p.poi.a) + " m / " + formatNumber(p.poi.b) +
-                 " m = " + formatNumber(p.poi.t) + " of the frame, POI = (" +
-                 formatNumber(p.poi.ghost.x) + ", " + formatNumber(p.poi.ghost.y) + ")");
+            line("  point of impact of " + nameOf(scene, p.block) + ": " + poiEquation(p.poi) +
+                 ", POI = (" + formatNumber(p.poi.ghost.x) + ", " + formatNumber(p.poi.ghost.y) +
+                 ")");
         if (p.yoursKnown && p.inPartingFrame)
             line("  at the frame's end, " + nameOf(scene, p.block) + ": velocity yours (" +
                  formatNumber(p.yoursVelocity.x) + ", " + formatNumber(p.yoursVelocity.y) +

@@ -1,8 +1,13 @@
 #include "inspector_format.h"
 
+#include "equation_check.h"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <initializer_list>
+#include <utility>
 
 const char* wallName(int other) {
     switch (other) {
@@ -21,10 +26,50 @@ const char* wallName(int other) {
 
 namespace {
 
-std::string vAfterLine(const std::string& v, double u, double C, double before, double after) {
-    // v' = u - C·(v - u)
-    return v + "' = " + formatNumber(u) + " - " + operand(C) + "·(" + formatNumber(before) + " - " +
-           operand(u) + ") = " + formatNumber(after);
+// v' = u - C·(v - u), the lecture's formula.
+std::string formulaLine(const std::string& v, double u, double C, double before, double after,
+                        int* used) {
+    return holdingText(
+        [&](int x) {
+            return v + "' = " + formatNumberWithDigits(u, x) + " - " + operand(C, x) + "·(" +
+                   formatNumberWithDigits(before, x) + " - " + operand(u, x) +
+                   ") = " + formatNumber(after);
+        },
+        used);
+}
+
+// v' = -C·v: without Newton, each body reverses its own component as off a wall at rest.
+std::string reflectLine(const std::string& v, double C, double before, double after, int* used) {
+    return holdingText(
+        [&](int x) {
+            return v + "' = -C·" + v + " = -" + operand(C, x) + "·" + operand(before, x) + " = " +
+                   formatNumber(after);
+        },
+        used);
+}
+
+// A body of infinite mass: unchanged, or reversed (a kinematic block on a wall, on another
+// infinite mass, or pressing a crushed group).
+std::string infiniteLine(const std::string& v, double before, double after) {
+    if (after == before)
+        return v + "' = " + v + " = " + formatNumber(after) + "   (infinite mass: unchanged)";
+    return v + "' = -" + v + " = " + formatNumber(after) + "   (infinite mass: it reverses)";
+}
+
+// "p before = 1·6 + 2·0 = 6 kg·m/s" over the finite bodies given as (mass, velocity) pairs.
+std::string momentumLine(const std::string& label,
+                         std::initializer_list<std::pair<double, double>> bodies, int* used) {
+    return holdingText(
+        [&](int x) {
+            std::string sum;
+            double total = 0.0;
+            for (const auto& [m, v] : bodies) {
+                sum += (sum.empty() ? "" : " + ") + operand(m, x) + "·" + operand(v, x);
+                total += m * v;
+            }
+            return label + " = " + sum + " = " + formatNumber(total) + " kg·m/s";
+        },
+        used);
 }
 
 // The relative-velocity test along `axis`: `lower` and `upper` name the velocities of the body
@@ -33,10 +78,12 @@ std::string vAfterLine(const std::string& v, double u, double C, double before, 
 void relativeLine(CollisionFormula& f, char axis, const std::string& lowerName, double lower,
                   const std::string& upperName, double upper) {
     const double closing = lower - upper;
-    f.relative = std::string("rel. vel. along ") + axis + " = " + lowerName + " - " + upperName +
-                 " = " + formatNumber(lower) + " - " + operand(upper) + " = " +
-                 formatNumber(closing);
     const std::string shown = formatNumber(closing);
+    const std::string head =
+        std::string("rel. vel. along ") + axis + " = " + lowerName + " - " + upperName + " = ";
+    f.relative = holdingText([&](int x) {
+        return head + formatNumberWithDigits(lower, x) + " - " + operand(upper, x) + " = " + shown;
+    });
     if (shown == "0") {
         f.relative += ": not closing, resolved";
     } else if (closing > 0.0) {
@@ -45,6 +92,21 @@ void relativeLine(CollisionFormula& f, char axis, const std::string& lowerName, 
         f.separating = true;
         f.relative += " < 0: separating, not a collision (resolved anyway: the mistake "
                       "no-approach-test)";
+    }
+}
+
+// What the rest rule did, for CollisionFormula::u when it is not the pair's formula.
+std::string restRuleLine(const CollisionRecord& r) {
+    const std::string u = "u = " + formatNumber(r.u) + "   (rest rule: ";
+    switch (r.rule) {
+    case ResolveRule::RestAnchored:
+        return u + "the resting blocks move with the infinite mass they rest on)";
+    case ResolveRule::RestCrushed:
+        return u + "squeezed between infinite masses that move apart or together: the ones "
+                   "pressing reverse)";
+    default:
+        return u + "the " + std::to_string(r.restBodies) +
+               " resting blocks move together: their momentum over their mass)";
     }
 }
 
@@ -117,63 +179,90 @@ CollisionFormula collisionFormula(const CollisionRecord& r, const std::string& n
     const std::string m1 = "m" + s1, v1 = "v" + s1, m2 = "m" + s2, v2 = "v" + s2;
     f.title =
         name1 + "  hits  " + name2 + "  along " + axis + " at t = " + formatNumber(r.time) + " s";
-    const bool finite1 = std::isfinite(r.m1), finite2 = std::isfinite(r.m2);
+    const bool finite1 = std::isfinite(r.m1), finite2 = std::isfinite(r.m2) && !wall;
+    const bool restFormula = r.rule == ResolveRule::RestFree && r.restBodies == 2;
+    // The digits the formula lines needed: the givens are written with as many.
+    int used = 0;
     if (wall) {
-        f.given = m1 + " = " + formatNumber(r.m1) + ", " + v1 + " = " + formatNumber(r.v1) +
-                  ", C = " + formatNumber(r.C) + "; the " + name2 + " does not move";
-        // The wall is on the upper side of the block (right, ceiling) or the lower (left, floor).
         if (r.other == kWallRight || r.other == kWallTop)
             relativeLine(f, axis, v1, r.v1, "0", 0.0);
         else
             relativeLine(f, axis, "0", 0.0, v1, r.v1);
-        f.u = "u = " + formatNumber(r.u) + "   (the " + name2 + "'s velocity: infinite mass)";
-        f.v1After = vAfterLine(v1, r.u, r.C, r.v1, r.v1After);
-        f.momentumBefore = "p" + s1 + " before = " + operand(r.m1) + "·" + operand(r.v1) + " = " +
-                           formatNumber(r.m1 * r.v1) + " kg·m/s";
-        f.momentumAfter = "p" + s1 + " after  = " + operand(r.m1) + "·" + operand(r.v1After) +
-                          " = " + formatNumber(r.m1 * r.v1After) + " kg·m/s";
-        f.note = "A wall takes any impulse: the block's momentum is not conserved.";
-        if (r.rest) f.note = "Rest rule: closing too slowly to bounce, resolved with C = 0.";
-        f.friction = frictionLine(r);
-        return f;
-    }
-    f.given = m1 + " = " + formatNumber(r.m1) + ", " + m2 + " = " + formatNumber(r.m2) + ", " + v1 +
-              " = " + formatNumber(r.v1) + ", " + v2 + " = " + formatNumber(r.v2) +
-              ", C = " + formatNumber(r.C);
-    if (r.firstBelow)
-        relativeLine(f, axis, v1, r.v1, v2, r.v2);
-    else
-        relativeLine(f, axis, v2, r.v2, v1, r.v1);
-    if (finite1 && finite2) {
-        f.u = "u = (" + operand(r.m1) + "·" + operand(r.v1) + " + " + operand(r.m2) + "·" +
-              operand(r.v2) + ")/(" + formatNumber(r.m1) + " + " + formatNumber(r.m2) +
-              ") = " + formatNumber(r.u);
-    } else if (!finite2) {
-        f.u = "u = " + v2 + " = " + formatNumber(r.u) + "   (" + m2 + " is infinite)";
+        if (r.rest && r.rule != ResolveRule::RestAnchored)
+            f.u = restRuleLine(r);
+        else
+            f.u = "u = " + formatNumber(r.u) + "   (the " + name2 + "'s velocity: infinite mass)";
+        if (!finite1) {
+            f.v1After = infiniteLine(v1, r.v1, r.v1After);
+        } else {
+            f.v1After = formulaLine(v1, r.u, r.C, r.v1, r.v1After, &used);
+            f.momentumBefore = momentumLine("p" + s1 + " before", {{r.m1, r.v1}}, &used);
+            f.momentumAfter = momentumLine("p" + s1 + " after ", {{r.m1, r.v1After}}, &used);
+            f.note = "A wall takes any impulse: the block's momentum is not conserved.";
+        }
+        f.given = m1 + " = " + formatNumberWithDigits(r.m1, used) + ", " + v1 + " = " +
+                  formatNumberWithDigits(r.v1, used) +
+                  ", C = " + formatNumberWithDigits(r.C, used) + "; the " + name2 +
+                  " does not move";
     } else {
-        f.u = "u = " + v1 + " = " + formatNumber(r.u) + "   (" + m1 + " is infinite)";
+        if (r.firstBelow)
+            relativeLine(f, axis, v1, r.v1, v2, r.v2);
+        else
+            relativeLine(f, axis, v2, r.v2, v1, r.v1);
+        if (r.rule == ResolveRule::Reflect) {
+            f.u = "without Newton (reflect): no u, each block reverses its own velocity";
+            f.v1After = reflectLine(v1, r.C, r.v1, r.v1After, &used);
+            f.v2After = reflectLine(v2, r.C, r.v2, r.v2After, &used);
+        } else if (r.rule == ResolveRule::Reverse) {
+            f.u = "two infinite masses: a moving one reverses, as on a wall";
+        } else if (finite1 && finite2 && (!r.rest || restFormula)) {
+            f.u = holdingText(
+                [&](int x) {
+                    return "u = (" + operand(r.m1, x) + "·" + operand(r.v1, x) + " + " +
+                           operand(r.m2, x) + "·" + operand(r.v2, x) + ")/(" +
+                           formatNumberWithDigits(r.m1, x) + " + " +
+                           formatNumberWithDigits(r.m2, x) + ") = " + formatNumber(r.u);
+                },
+                &used);
+        } else if (r.rest && (r.rule != ResolveRule::RestAnchored || (finite1 && finite2))) {
+            f.u = restRuleLine(r);
+        } else if (!finite2) {
+            f.u = "u = " + v2 + " = " + formatNumber(r.u) + "   (" + m2 + " is infinite)";
+        } else {
+            f.u = "u = " + v1 + " = " + formatNumber(r.u) + "   (" + m1 + " is infinite)";
+        }
+        if (r.rule != ResolveRule::Reflect) {
+            f.v1After = finite1 ? formulaLine(v1, r.u, r.C, r.v1, r.v1After, &used)
+                                : infiniteLine(v1, r.v1, r.v1After);
+            f.v2After = finite2 ? formulaLine(v2, r.u, r.C, r.v2, r.v2After, &used)
+                                : infiniteLine(v2, r.v2, r.v2After);
+        }
+        if (finite1 && finite2) {
+            f.momentumBefore = momentumLine("p before", {{r.m1, r.v1}, {r.m2, r.v2}}, &used);
+            f.momentumAfter =
+                momentumLine("p after ", {{r.m1, r.v1After}, {r.m2, r.v2After}}, &used);
+            if (r.rule == ResolveRule::Reflect)
+                f.note = "Without Newton the momentum is not conserved: no equal and opposite "
+                         "reaction.";
+        } else if (finite1 || finite2) {
+            const double m = finite1 ? r.m1 : r.m2;
+            const double before = finite1 ? r.v1 : r.v2, after = finite1 ? r.v1After : r.v2After;
+            const std::string who = "p" + (finite1 ? s1 : s2);
+            f.momentumBefore = momentumLine(who + " before", {{m, before}}, &used);
+            f.momentumAfter = momentumLine(who + " after ", {{m, after}}, &used);
+            f.note =
+                "An infinite mass takes any impulse: momentum of the finite body is not conserved.";
+        }
+        f.given = m1 + " = " + formatNumberWithDigits(r.m1, used) + ", " + m2 + " = " +
+                  formatNumberWithDigits(r.m2, used) + ", " + v1 + " = " +
+                  formatNumberWithDigits(r.v1, used) + ", " + v2 + " = " +
+                  formatNumberWithDigits(r.v2, used) + ", C = " + formatNumberWithDigits(r.C, used);
     }
-    f.v1After = vAfterLine(v1, r.u, r.C, r.v1, r.v1After);
-    f.v2After = vAfterLine(v2, r.u, r.C, r.v2, r.v2After);
-    if (finite1 && finite2) {
-        f.momentumBefore = "p before = " + operand(r.m1) + "·" + operand(r.v1) + " + " +
-                           operand(r.m2) + "·" + operand(r.v2) + " = " +
-                           formatNumber(r.m1 * r.v1 + r.m2 * r.v2) + " kg·m/s";
-        f.momentumAfter = "p after  = " + operand(r.m1) + "·" + operand(r.v1After) + " + " +
-                          operand(r.m2) + "·" + operand(r.v2After) + " = " +
-                          formatNumber(r.m1 * r.v1After + r.m2 * r.v2After) + " kg·m/s";
-    } else {
-        const double m = finite1 ? r.m1 : r.m2;
-        const double before = finite1 ? r.v1 : r.v2, after = finite1 ? r.v1After : r.v2After;
-        const std::string who = "p" + (finite1 ? s1 : s2);
-        f.momentumBefore = who + " before = " + operand(m) + "·" + operand(before) + " = " +
-                           formatNumber(m * before) + " kg·m/s";
-        f.momentumAfter = who + " after  = " + operand(m) + "·" + operand(after) + " = " +
-                          formatNumber(m * after) + " kg·m/s";
-        f.note =
-            "An infinite mass takes any impulse: momentum of the finite body is not conserved.";
+    if (r.rest) {
+        f.note = r.restForced ? "Rest rule: a sequence that would not end (collapse, trap or "
+                                "crush), resolved perfectly inelastic (C = 0)."
+                              : "Rest rule: closing too slowly to bounce, resolved with C = 0.";
     }
-    if (r.rest) f.note = "Rest rule: closing too slowly to bounce, resolved with C = 0.";
     f.friction = frictionLine(r);
     return f;
 }

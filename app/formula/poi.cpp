@@ -1,6 +1,8 @@
 #include "poi.h"
 
 #include "collision.h"
+#include "equation_check.h"
+#include "text_format.h"
 
 #include <cmath>
 
@@ -27,6 +29,7 @@ PoiView computePoi(const std::vector<Block>& before, const Bounds& bounds,
     double best = kNever;
     std::uint8_t axes = 0;
     int other = 0;
+    Vec2 otherVelocity; // a wall's: 0
     const WallImpact wall = timeOfWallImpact(box, v, bounds, dt);
     if (wall.hit()) {
         best = wall.time;
@@ -37,11 +40,13 @@ PoiView computePoi(const std::vector<Block>& before, const Bounds& bounds,
     for (std::size_t j = 0; j < before.size(); ++j) {
         if (static_cast<int>(j) == block) continue;
         const Block& o = before[j];
-        const Impact hit = timeOfImpact(box, v, aabbOf(o), frameVelocity(o, settings), dt);
+        const Vec2 vo = frameVelocity(o, settings);
+        const Impact hit = timeOfImpact(box, v, aabbOf(o), vo, dt);
         if (hit.hit() && hit.time < best) {
             best = hit.time;
             axes = hit.axes;
             other = static_cast<int>(j);
+            otherVelocity = vo;
         }
     }
     if (!axes || !std::isfinite(best)) return p;
@@ -58,8 +63,20 @@ PoiView computePoi(const std::vector<Block>& before, const Bounds& bounds,
     p.t = best / dt;
     p.ghost = me.position + v * best;
     p.crooked = movedBackAlongAxis(p.newPosition, p.ghost, p.axis);
-    const double speed = std::abs(p.axis == 0 ? v.x : v.y);
+    // a and b are distances between the facing sides: they close at the relative speed (a block
+    // at rest that is hit has moved nothing, yet its t is the mover's).
+    const Vec2 closing = v - otherVelocity;
+    const double speed = std::abs(p.axis == 0 ? closing.x : closing.y);
     p.a = speed * best;
     p.b = speed * dt;
     return p;
+}
+
+std::string poiEquation(const PoiView& p) {
+    const char axis = p.axis == 0 ? 'x' : 'y';
+    return holdingText([&](int extra) {
+        return "t = a/b = " + formatNumberWithDigits(p.a, extra) + "/" +
+               formatNumberWithDigits(p.b, extra) + " = " + formatNumber(p.t) +
+               " of the frame   (a, b: m along " + axis + ")";
+    });
 }

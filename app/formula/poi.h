@@ -7,6 +7,7 @@
 
 #include "world.h"
 
+#include <string>
 #include <vector>
 
 struct PoiView {
@@ -23,11 +24,15 @@ struct PoiView {
     Vec2 crooked;     // new position moved back along the collision axis only
     Vec2 velocity;    // m/s during the frame (gravity applied first)
     double t = 0.0;   // time of impact as a fraction of the frame
-    double a = 0.0;   // m, distance travelled along the axis to the impact
-    double b = 0.0;   // m, distance along the axis over the whole frame
+    double a = 0.0;   // m, how far the facing sides close along the axis until the impact
+    double b = 0.0;   // m, how far they close over the whole frame (relative speed · dt)
 };
 
 // The point of impact of `block` in the frame that started from `before` (the blocks at the
 // start of the frame) under `settings`; invalid when the block hits nothing during the frame.
 PoiView computePoi(const std::vector<Block>& before, const Bounds& bounds,
                    const WorldSettings& settings, double frameStart, int block);
+
+// The time of impact as the lecture writes it, with as many digits as make it hold as printed:
+// "t = a/b = 0.15/1.4 = 0.107 of the frame   (a, b: m along y)".
+std::string poiEquation(const PoiView& p);

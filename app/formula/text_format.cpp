@@ -13,30 +13,33 @@ bool isRoundingNoise(double value, double scale) {
 }
 
 std::string formatNumber(double value, double scale) {
+    return formatNumberWithDigits(value, 0, scale);
+}
+
+std::string formatNumberWithDigits(double value, int extra, double scale) {
     if (std::isnan(value)) return "nan";
     if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
     if (isRoundingNoise(value, scale)) return "0";
-    char text[48];
+    char text[64];
     const double a = std::abs(value);
-    if (a >= 1e6) {
-        if (a < 1e12 && value == std::round(value))
-            std::snprintf(text, sizeof text, "%.0f", value);
-        else
-            std::snprintf(text, sizeof text, "%.3g", value);
+    const int digits = 3 + std::max(extra, 0);
+    if (a >= 1e12) {
+        std::snprintf(text, sizeof text, "%.*g", digits, value);
         return text;
     }
     if (a < 5e-4) {
-        std::snprintf(text, sizeof text, "%.3g", value);
+        std::snprintf(text, sizeof text, "%.*g", digits, value);
         std::string s = text;
         // "%.3g" writes 1.23e-05 below 1e-4; a fixed form reads better down to 1e-6.
         if (a >= 1e-6 && s.find('e') != std::string::npos) {
-            std::snprintf(text, sizeof text, "%.*f", a >= 1e-5 ? 7 : 8, value);
+            std::snprintf(text, sizeof text, "%.*f", (a >= 1e-5 ? 7 : 8) + std::max(extra, 0),
+                          value);
             s = text;
             while (!s.empty() && s.back() == '0') s.pop_back();
         }
         return s;
     }
-    std::snprintf(text, sizeof text, "%.3f", value);
+    std::snprintf(text, sizeof text, "%.*f", digits, value);
     std::string s = text;
     while (!s.empty() && s.back() == '0') s.pop_back();
     if (!s.empty() && s.back() == '.') s.pop_back();
@@ -44,8 +47,8 @@ std::string formatNumber(double value, double scale) {
     return s;
 }
 
-std::string operand(double value) {
-    const std::string s = formatNumber(value);
+std::string operand(double value, int extra) {
+    const std::string s = formatNumberWithDigits(value, extra);
     return !s.empty() && s[0] == '-' ? "(" + s + ")" : s;
 }
 

@@ -14,11 +14,15 @@ constexpr double kNoiseRelative = 1e-9;
 // scale (scale 1 for fractions and for values in SI units of everyday size).
 bool isRoundingNoise(double value, double scale = 1.0);
 // A number as the UI writes it: rounding noise as "0"; up to 3 decimals, trailing zeros dropped
-// ("2", "-0.5", "0.625"); 3 significant digits below 0.0005 ("0.000123"); whole numbers up to a
-// trillion written out ("1000000"), larger ones as "1.5e+12"; "inf" for infinity.
+// ("2", "-0.5", "0.625", "999997.136", "1000001.5"); 3 significant digits below 0.0005
+// ("0.000123") and from a trillion ("1.5e+12"); "inf" for infinity.
 std::string formatNumber(double value, double scale = 1.0);
-// formatNumber, in parentheses when negative (an operand after an operator: "1·(-2)").
-std::string operand(double value);
+// formatNumber with `extra` more digits (decimals; significant digits below 0.0005 and from a
+// trillion): what an equation prints when three decimals would not add up
+// (a giant's 0.99999354 is not 1). extra 0 is formatNumber.
+std::string formatNumberWithDigits(double value, int extra, double scale = 1.0);
+// formatNumberWithDigits, in parentheses when negative (an operand after an operator: "1·(-2)").
+std::string operand(double value, int extra = 0);
 // formatNumber with a unit: "0.625 s", "6 m/s".
 std::string formatQuantity(double value, const char* unit);
 

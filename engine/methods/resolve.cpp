@@ -75,7 +75,8 @@ void Resolver::reverseKinematic(int i, int axis) {
 }
 
 void Resolver::record(int a, int b, int axis, double m1, double v1, double m2, double v2, double u,
-                      double C, double v1After, double v2After, bool rest) {
+                      double C, double v1After, double v2After, ResolveRule rule) {
+    const bool rest = rule >= ResolveRule::RestFree;
     // One count of collisions: a resting contact (the rest rule) is counted apart, so a settled
     // pile's collision count stands still.
     ++(rest ? ctx_.stats.contacts : ctx_.stats.collisions);
@@ -88,6 +89,8 @@ void Resolver::record(int a, int b, int axis, double m1, double v1, double m2, d
     r.axis = axis;
     r.m1 = m1, r.m2 = m2, r.v1 = v1, r.v2 = v2, r.u = u, r.C = C;
     r.v1After = v1After, r.v2After = v2After, r.rest = rest;
+    r.rule = rule;
+    if (rest) r.restBodies = static_cast<int>(queue_.size()), r.restForced = forceRest_;
     r.mu = note_.mu, r.dvn = note_.dvn, r.dvt = note_.dvt, r.perSecond = note_.perSecond;
     r.position1 = ctx_.world.blocks[a].position;
     if (b >= 0) {
@@ -118,7 +121,8 @@ Resolution Resolver::resolvePair(int a, int b, int axis, RestRule rest) {
         // Two infinite masses: a kinematic block reverses, as on hitting a wall.
         reverseKinematic(a, axis);
         reverseKinematic(b, axis);
-        record(a, b, axis, m1, v1, m2, v2, 0.0, 1.0, A.velocity[axis], B.velocity[axis], false);
+        record(a, b, axis, m1, v1, m2, v2, 0.0, 1.0, A.velocity[axis], B.velocity[axis],
+               ResolveRule::Reverse);
         return Resolution::Bounce;
     }
     if (forceRest_ || (approach && closing < restThreshold(axis)))
@@ -135,7 +139,8 @@ Resolution Resolver::resolvePair(int a, int b, int axis, RestRule rest) {
     setVelocity(a, axis, v1After);
     setVelocity(b, axis, v2After);
     if (ctx_.friction) contactFriction(a, b, axis, std::abs((v1After - v2After) - (v1 - v2)));
-    record(a, b, axis, m1, v1, m2, v2, u, C, v1After, v2After, false);
+    record(a, b, axis, m1, v1, m2, v2, u, C, v1After, v2After,
+           reflect ? ResolveRule::Reflect : ResolveRule::Formula);
     return Resolution::Bounce;
 }
 
@@ -151,7 +156,8 @@ Resolution Resolver::resolveWall(int a, int axis, RestRule rest) {
     const Wall wall = wallOnAxis(axis, into);
     if (A.kind == BodyKind::Kinematic) {
         reverseKinematic(a, axis);
-        record(a, wall, axis, A.mass, v, kInfiniteMass, 0.0, 0.0, 1.0, -v, 0.0, false);
+        record(a, wall, axis, A.mass, v, kInfiniteMass, 0.0, 0.0, 1.0, -v, 0.0,
+               ResolveRule::Reverse);
         return Resolution::Bounce;
     }
     if (forceRest_ || std::abs(v) < restThreshold(axis)) return restCluster(a, -1, axis, wall);
@@ -160,7 +166,7 @@ Resolution Resolver::resolveWall(int a, int axis, RestRule rest) {
     const double after = velocityAfterCollision(v, 0.0, C);
     setVelocity(a, axis, after);
     if (ctx_.friction) contactFriction(a, wall, axis, std::abs(after - v));
-    record(a, wall, axis, A.mass, v, kInfiniteMass, 0.0, 0.0, C, after, 0.0, false);
+    record(a, wall, axis, A.mass, v, kInfiniteMass, 0.0, 0.0, C, after, 0.0, ResolveRule::Formula);
     return Resolution::Bounce;
 }
 
@@ -383,7 +389,10 @@ Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) 
         clusterFriction(axis, below, above, seedA, seedB >= 0 ? seedB : seedWall);
     }
     const double m2 = seedB >= 0 ? blocks[seedB].mass : kInfiniteMass;
+    const ResolveRule rule = jammed     ? ResolveRule::RestCrushed
+                             : anchored ? ResolveRule::RestAnchored
+                                        : ResolveRule::RestFree;
     record(seedA, seedB >= 0 ? seedB : seedWall, axis, blocks[seedA].mass, v1, m2, v2, u, 0.0,
-           blocks[seedA].velocity[axis], seedB >= 0 ? blocks[seedB].velocity[axis] : 0.0, true);
+           blocks[seedA].velocity[axis], seedB >= 0 ? blocks[seedB].velocity[axis] : 0.0, rule);
     return changed_.size() > changedBefore ? Resolution::Rest : Resolution::None;
 }

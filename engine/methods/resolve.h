@@ -168,7 +168,7 @@ class Resolver {
     void reverseKinematic(int i, int axis);
     Resolution restCluster(int seedA, int seedB, int axis, Wall seedWall);
     void record(int a, int b, int axis, double m1, double v1, double m2, double v2, double u,
-                double C, double v1After, double v2After, bool rest);
+                double C, double v1After, double v2After, ResolveRule rule);
     void setVelocity(int i, int axis, double v);
     void findNear(const Aabb& box);
     // Friction (friction.cpp).

@@ -10,6 +10,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -154,6 +155,112 @@ TEST(PresentMode, LeavesNoWindowAndTheWholeImageToTheScene) {
         EXPECT_EQ(scene.h, 1080.0);
         EXPECT_TRUE(inside(rectOf(j.at("world")), scene));
     }
+}
+
+// One offscreen frame's two JSON files: --layout-json and --text-json.
+struct Frame {
+    nlohmann::json layout, texts;
+};
+
+Frame frameOf(const std::string& name, const std::string& args) {
+    const fs::path base = outputDir() / name;
+    const std::string png = base.string() + ".png", layout = base.string() + ".layout.json",
+                      texts = base.string() + ".text.json";
+    fs::remove(layout);
+    fs::remove(texts);
+    std::string output;
+    const int code = run(quote(SANDBOX_OFFSCREEN_EXE) + " " + args + " --screenshot " + quote(png) +
+                             " --layout-json " + quote(layout) + " --text-json " + quote(texts),
+                         &output);
+    EXPECT_EQ(code, 0) << output;
+    Frame f;
+    std::ifstream l(layout), t(texts);
+    EXPECT_TRUE(l.good() && t.good()) << output;
+    if (l && t) {
+        f.layout = nlohmann::json::parse(l);
+        f.texts = nlohmann::json::parse(t).at("texts");
+    }
+    return f;
+}
+
+TEST(LayoutJson, ListsEveryBlockAndPlotAsDrawn) {
+    const Frame f = frameOf("blocks_and_plots", "lecture_example_1 --frames 30 --show plots");
+    ASSERT_TRUE(f.layout.is_object());
+    const Rect world = rectOf(f.layout.at("world"));
+    const auto& blocks = f.layout.at("blocks");
+    ASSERT_EQ(blocks.size(), 2u); // m1 and m2
+    for (const auto& b : blocks) {
+        const Rect r = rectOf(b.at("rect"));
+        EXPECT_TRUE(inside(r, world)) << b.dump();
+        EXPECT_GT(r.w, 10.0) << b.dump();
+        // Its name is drawn (the scene's label, read back from --text-json), on it or beside it.
+        bool labelled = false;
+        for (const auto& t : f.texts)
+            labelled = labelled || (t.at("text") == b.at("name") && t.at("window") == "scene");
+        EXPECT_TRUE(labelled) << b.dump();
+    }
+    EXPECT_FALSE(overlap(rectOf(blocks.at(0).at("rect")), rectOf(blocks.at(1).at("rect"))));
+    Rect plotsWindow;
+    for (const auto& w : f.layout.at("windows"))
+        if (w.at("name") == "Plots") plotsWindow = rectOf(w.at("rect"));
+    const auto& plots = f.layout.at("plots");
+    ASSERT_EQ(plots.size(), 3u);
+    const char* names[] = {"velocity", "momentum", "energy"};
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(plots.at(i).at("name"), names[i]);
+        const Rect r = rectOf(plots.at(i).at("rect"));
+        EXPECT_TRUE(inside(r, plotsWindow)) << plots.at(i).dump();
+        EXPECT_GT(r.h, 40.0);
+        if (i > 0) { // one under another
+            EXPECT_GE(r.y, rectOf(plots.at(i - 1).at("rect")).y + 40.0);
+        }
+    }
+}
+
+// Texts of `part` ("caption", "scene", ...), their smallest line height; 0 when there are none.
+double smallestPx(const nlohmann::json& texts, const std::string& part) {
+    double least = 0.0;
+    for (const auto& t : texts)
+        if (t.at("window") == part)
+            least =
+                least == 0.0 ? t.at("px").get<double>() : std::min(least, t.at("px").get<double>());
+    return least;
+}
+
+// In a lesson and in present mode the caption is 3.3% of the window's height and the scene's
+// labels 2.2% (36 and 24 px at 1080, 24 and 16 at 720), whatever the UI scale; outside them the UI
+// scale sets the labels' size as before (16 px at scale 1).
+TEST(TextJson, ClassroomTextIsSlideSizedWhateverTheUiScale) {
+    for (const char* scale : {"1", "2"}) {
+        const Frame f =
+            frameOf(std::string("lesson_ui") + scale,
+                    "--lesson lecture3 --step 3 --size 1920x1080 --ui-scale " + std::string(scale));
+        EXPECT_GE(smallestPx(f.texts, "caption"), 36.0) << scale;
+        EXPECT_GE(smallestPx(f.texts, "scene"), 24.0) << scale;
+    }
+    const Frame small = frameOf("lesson_720", "--lesson lecture3 --step 3 --size 1280x720");
+    EXPECT_GE(smallestPx(small.texts, "caption"), 24.0);
+    EXPECT_GE(smallestPx(small.texts, "scene"), 16.0);
+    const Frame present = frameOf("present_1080", "lecture_example_1 --present --size 1920x1080");
+    EXPECT_GE(smallestPx(present.texts, "scene"), 24.0);
+    const Frame plain = frameOf("plain_1080", "lecture_example_1 --size 1920x1080");
+    EXPECT_EQ(smallestPx(plain.texts, "scene"), 16.0);
+    EXPECT_EQ(smallestPx(plain.texts, "caption"), 0.0); // no caption outside lessons
+}
+
+TEST(TextJson, ListsTheLessonsCaptionTheBadgeAndThePanel) {
+    const Frame f = frameOf("lesson_step9", "--lesson lecture3 --step 9 --size 1920x1080");
+    bool title = false, status = false, panel = false, label = false;
+    for (const auto& t : f.texts) {
+        const std::string text = t.at("text"), part = t.at("window");
+        title = title || (part == "caption" && text.find("9 / ") == 0);
+        status = status || (part == "status" && text.find("t = ") != std::string::npos);
+        panel = panel || (part == "Controls" && text == "Controls");
+        label = label || (part == "scene" && text == "m1");
+        EXPECT_FALSE(t.at("clipped").get<bool>() && (part == "caption" || part == "scene"))
+            << t.dump();
+    }
+    EXPECT_TRUE(title && status && panel && label) << f.texts.dump(1);
 }
 
 } // namespace

@@ -161,9 +161,13 @@ TEST(DockLayout, LayoutJsonIsTheSpecsDocument) {
                    {{"Plots", {954, 0, 326, 300}}, {"a \"b\"\n", {0, 0, 1, 1}}});
     EXPECT_EQ(json, "{\"scene\": [350, 0, 600, 500], \"world\": [386, 70, 528, 316.8], "
                     "\"windows\": [{\"name\": \"Plots\", \"rect\": [954, 0, 326, 300]}, "
-                    "{\"name\": \"a \\\"b\\\"\\u000a\", \"rect\": [0, 0, 1, 1]}]}\n");
-    EXPECT_EQ(layoutJson({0, 0, 1280, 720}, {36, 36, 10, 10}, {}),
-              "{\"scene\": [0, 0, 1280, 720], \"world\": [36, 36, 10, 10], \"windows\": []}\n");
+                    "{\"name\": \"a \\\"b\\\"\\u000a\", \"rect\": [0, 0, 1, 1]}], "
+                    "\"blocks\": [], \"plots\": []}\n");
+    EXPECT_EQ(layoutJson({0, 0, 1280, 720}, {36, 36, 10, 10}, {}, {{"m1", {100, 200, 50, 50}}},
+                         {{"velocity", {900, 10, 300, 150}}}),
+              "{\"scene\": [0, 0, 1280, 720], \"world\": [36, 36, 10, 10], \"windows\": [], "
+              "\"blocks\": [{\"name\": \"m1\", \"rect\": [100, 200, 50, 50]}], "
+              "\"plots\": [{\"name\": \"velocity\", \"rect\": [900, 10, 300, 150]}]}\n");
 }
 
 TEST(TextFormat, RoundingNoiseReadsAsZero) {

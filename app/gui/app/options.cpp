@@ -74,6 +74,10 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_option("--layout-json", o.layoutJson,
                    "Offscreen (with --screenshot): write the scene's, the world's and every "
                    "window's rectangle in image pixels to this JSON file");
+    app.add_option("--text-json", o.textJson,
+                   "Offscreen (with --screenshot): write every text drawn in the last frame "
+                   "(its text, rectangle in image pixels, line height, window, clipped) to this "
+                   "JSON file");
     std::string frame;
     app.add_option("--frame", frame,
                    "Start in this frame of reference: world, or com (the view moves with the "
@@ -129,6 +133,9 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         }
         if (!o.layoutJson.empty() && o.screenshot.empty()) {
             throw CLI::ValidationError("--layout-json", "needs --screenshot FILE");
+        }
+        if (!o.textJson.empty() && o.screenshot.empty()) {
+            throw CLI::ValidationError("--text-json", "needs --screenshot FILE");
         }
         o.atSetup = at == "setup";
         if (!o.recordSteps.empty() && o.lesson.empty() && o.scene.empty()) {

@@ -1,7 +1,8 @@
 // The command line shared by `sandbox` and `sandbox-offscreen` (docs/cli.md, public):
 //   sandbox [SCENE] [--screenshot FILE] [--frames N] [--size WxH] [--show LIST]
 //           [--record DIR] [--benchmark-frames N] [--ui-scale S] [--verbose] [--present]
-//           [--layout-json FILE] [--frame world|com] [--theme dark|light] [--timeline-frame N]
+//           [--layout-json FILE] [--text-json FILE] [--frame world|com] [--theme dark|light]
+//           [--timeline-frame N]
 //           [--audio-wav FILE]
 //           [--compare TRACE.csv [--trace-units si|gxp --px-per-m N --px-origin X,Y]]
 #pragma once
@@ -28,6 +29,7 @@ struct Options {
     bool verbose = false;    // print state changes (pause, method, sliders...) to stdout
     bool present = false;    // start in present mode: the scene and a caption, no panel or window
     std::string layoutJson;  // offscreen: write the layout (scene, world, windows) here, in pixels
+    std::string textJson;    // offscreen: write every text drawn in the last frame here
     std::string lesson;      // --lesson NAME or file (docs/lesson-format.md)
     int step = 0;            // --step N (1-based) of the lesson; 0: the first
     bool atSetup = false;    // offscreen --at setup: the step at t = 0 with its question (else

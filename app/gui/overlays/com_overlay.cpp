@@ -116,6 +116,7 @@ void drawMomentaDiagram(App& app) {
 void drawComOverlay(App& app) {
     const CentreOfMass c = centreOfMass(app.sim.world());
     if (c.valid) {
+        const SceneLabelFont font(app);
         ImDrawList* dl = ImGui::GetBackgroundDrawList();
         const ImVec2 p = toScreen(app, c.position);
         const float r = 9.0f * app.view.uiScale;

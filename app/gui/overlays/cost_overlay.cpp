@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace {
@@ -19,9 +20,10 @@ ImU32 engineColor(const std::string& engine) {
     return uiThemed(IM_COL32(200, 200, 210, 255)); // box2d
 }
 
-void tradeoffChart(CostMeasurement& cost) {
+// The chart's rectangle on screen (none when there is nothing to chart yet).
+std::optional<ScreenRect> tradeoffChart(CostMeasurement& cost) {
     const std::vector<std::string> scenes = tradeoffScenes(cost.rows());
-    if (scenes.empty()) return;
+    if (scenes.empty()) return std::nullopt;
     int& pick = cost.chartScene;
     pick = std::clamp(pick, 0, static_cast<int>(scenes.size()) - 1);
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12.0f);
@@ -54,7 +56,7 @@ void tradeoffChart(CostMeasurement& cost) {
     o.xUnit = "ms/sim s";
     o.autoX = true;
     o.logX = o.logY = true;
-    drawPlot("##tradeoff", o, series);
+    return drawPlot("##tradeoff", o, series);
 }
 
 } // namespace
@@ -93,6 +95,7 @@ void drawCostOverlay(App& app) {
             dimText("Sweeps method x dt x substeps over scenes with known answers.");
         }
     } else {
-        tradeoffChart(cost);
+        if (const std::optional<ScreenRect> chart = tradeoffChart(cost))
+            app.view.shownPlots.push_back({"tradeoff", *chart});
     }
 }

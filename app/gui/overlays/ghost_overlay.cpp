@@ -30,6 +30,7 @@ double apart(Vec2 a, Vec2 b) {
 void drawGhostOverlay(App& app) {
     const StudentTrace& st = app.studentTrace;
     if (!st.open()) return;
+    const SceneLabelFont font(app);
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     const float s = app.view.uiScale;
     const ImU32 color = studentTraceColor().packed();

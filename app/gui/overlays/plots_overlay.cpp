@@ -154,6 +154,7 @@ void drawPlotsOverlay(App& app) {
                       row.channels[c].dash, tm.*row.series, static_cast<int>(c), window, now,
                       replaying);
         const std::string id = std::string("##") + row.name;
-        drawPlot(id.c_str(), o, series, markersIn(tm.*row.markers));
+        app.view.shownPlots.push_back(
+            {row.name, drawPlot(id.c_str(), o, series, markersIn(tm.*row.markers))});
     }
 }

@@ -53,6 +53,7 @@ void label(ImDrawList* dl, ImVec2 at, Mark mark, const std::string& text) {
 } // namespace
 
 void drawPoiOverlay(App& app) {
+    const SceneLabelFont font(app);
     const PoiView& p = app.sim.run.poi;
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     const float s = app.view.uiScale;
@@ -94,8 +95,7 @@ void drawPoiOverlay(App& app) {
     const std::string lines[4] = {
         "Point of impact of " + app.sim.blockDisplayName(p.block) + " with " + other +
             ", frame from t = " + formatNumber(p.frameStart) + " s",
-        std::string("t = a/b = ") + formatNumber(p.a) + " m / " + formatNumber(p.b) +
-            " m = " + formatNumber(p.t) + "   (along " + axis + ")",
+        poiEquation(p),
         "POI = old + t·v·dt = (" + formatNumber(p.ghost.x) + ", " + formatNumber(p.ghost.y) + ")",
         std::string("moved back along ") + axis + " only: (" + formatNumber(p.crooked.x) + ", " +
             formatNumber(p.crooked.y) + "), crooked",

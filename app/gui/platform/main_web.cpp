@@ -207,7 +207,7 @@ void frame(void* arg) {
     canvasNewFrame(w.canvas, &realSeconds);
     followPixelRatio(w);
     app.view.fullscreen = w.canvas.fullscreen;
-    if (app.view.uiScale != uiCurrentScale()) {
+    if (app.view.uiScale != uiCurrentScale() || uiSlideFontsStale()) { // the canvas's height too
         uiApplyScale(app.view.uiScale);
         uiRendererFontsChanged();
         uiRendererNewFrame(); // uploads the new atlas before this frame uses it

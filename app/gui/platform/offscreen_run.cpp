@@ -7,6 +7,7 @@
 #include "printable.h"
 #include "renderer.h"
 #include "safe_file.h"
+#include "screen_text.h"
 #include "ui_renderer_gl.h"
 #include "ui_style.h"
 #include "wav_io.h"
@@ -142,18 +143,33 @@ bool runProgram(const std::vector<std::string>& args) {
     return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
-// The layout of the last frame (--layout-json, docs/cli.md): the scene's rectangle, the world's
-// bounds as drawn, and every window drawn, in image pixels.
-bool writeLayoutJson(const App& app, const std::string& path) {
-    const std::string json = layoutJson(app.view.camera.viewport(),
-                                        worldRectOnScreen(app.view.camera, app.sim.world().bounds),
-                                        app.view.shownWindows);
+// Writes `text` to `path` through a temporary file renamed over it (safe_file.h): a failed write
+// names the file and leaves what was there.
+bool writeText(const std::string& path, const std::string& text) {
     std::string error;
-    if (!writeFileSafely(path, json, &error)) {
+    if (!writeFileSafely(path, text, &error)) {
         std::fprintf(stderr, "sandbox: %s\n", error.c_str());
         return false;
     }
     return true;
+}
+
+// The layout of the last frame (--layout-json, docs/cli.md): the scene's rectangle, the world's
+// bounds as drawn, every window drawn, every block as drawn (by its name) and every plot, in
+// image pixels.
+bool writeLayoutJson(const App& app, const std::string& path) {
+    const Camera& camera = app.view.camera;
+    std::vector<DockedWindow> blocks;
+    const std::vector<Block>& world = app.sim.world().blocks;
+    for (std::size_t i = 0; i < world.size(); ++i) {
+        const Bounds box{world[i].position - world[i].size * 0.5,
+                         world[i].position + world[i].size * 0.5};
+        blocks.push_back(
+            {app.sim.blockDisplayName(static_cast<int>(i)), worldRectOnScreen(camera, box)});
+    }
+    return writeText(path, layoutJson(camera.viewport(),
+                                      worldRectOnScreen(camera, app.sim.world().bounds),
+                                      app.view.shownWindows, blocks, app.view.shownPlots));
 }
 
 // Writes the frame rendered last to --screenshot and prints where it is.
@@ -185,6 +201,10 @@ int screenshot(App& app, Offscreen& off, const Options& o) {
     const int code = writeScreenshot(off, o);
     if (code != 0) return code;
     if (!o.layoutJson.empty() && !writeLayoutJson(app, o.layoutJson)) return 1;
+    if (!o.textJson.empty() &&
+        !writeText(o.textJson,
+                   screenTextJson(readScreenText(*ImGui::GetDrawData(), *ImGui::GetIO().Fonts))))
+        return 1;
     return 0;
 }
 
@@ -304,6 +324,8 @@ int runOffscreen(const Options& options) {
     if (o.present) setPresentMode(app.view, true);
     app.view.lightTheme = o.theme == "light";
     uiCreateContext(nullptr);
+    // The image's size before the fonts: the classroom's are baked for its height.
+    ImGui::GetIO().DisplaySize = ImVec2(static_cast<float>(o.width), static_cast<float>(o.height));
     uiApplyLook(app.view.uiScale, app.view.labelScale, app.view.lightTheme);
     Offscreen off;
     if (!offscreenInit(off.context, o.width, o.height, &error)) {

@@ -3,6 +3,7 @@
 
 #include "overlay_window.h"
 #include "renderer.h"
+#include "screen_text.h"
 
 #include <imgui.h>
 
@@ -217,6 +218,8 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     handleKeys(app, keys);
     followThrustForNavigation(app);
     app.view.shownWindows.clear();
+    app.view.shownPlots.clear();
+    forgetTextRoles();
     const bool typing = io.WantTextInput || (navigating() && !arrowsPush(app));
     const Vec2 held = arrowsPush(app) && !typing ? heldThrustDirection([&io](int key) {
         return key >= 0 && key < IM_ARRAYSIZE(io.KeysDown) && io.KeysDown[key];

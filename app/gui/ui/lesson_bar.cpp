@@ -18,8 +18,7 @@ void drawLessonCaption(App& app) {
     const LessonStep* step = s.step();
     if (!step) return;
     const ImGuiIO& io = ImGui::GetIO();
-    const float left = app.view.uiVisible && !app.view.presentMode &&
-                               !app.view.layout.sheet
+    const float left = app.view.uiVisible && !app.view.presentMode && !app.view.layout.sheet
                            ? static_cast<float>(panelWidth(app.view.uiScale, io.DisplaySize.x))
                            : 0.0f;
     ImGui::SetNextWindowPos(ImVec2(left, 0.0f), ImGuiCond_Always);
@@ -36,6 +35,7 @@ void drawLessonCaption(App& app) {
         return;
     }
     if (!app.view.presentMode) recordShownWindow(app, "Lesson caption");
+    ImGui::PushFont(uiCaptionFont()); // slide-sized, whatever the UI scale (ui_style.h)
     const std::string heading = lessonHeading(s);
     ImGui::SetWindowFontScale(1.25f);
     ImGui::TextUnformatted(heading.c_str());
@@ -61,6 +61,7 @@ void drawLessonCaption(App& app) {
     if (!s.digits.empty())
         ImGui::TextColored(uiDimColor(), "Go to step %s (Enter)", s.digits.c_str());
     ImGui::PopTextWrapPos();
+    ImGui::PopFont();
     app.view.captionHeight = ImGui::GetWindowHeight();
     ImGui::End();
 }

@@ -29,6 +29,17 @@ std::string nextWindowForKeyboard(const App& app);
 // their labels, the arrows' values: app.ui.takenOnScreen); the spot is then taken too
 // (scene_view.cpp).
 ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size);
+// The font of the scene's labels: the UI's label font, slide-sized in a lesson and in present
+// mode (uiSlideLabelFont). SceneLabelFont pushes it while it lives (overlays drawn over the
+// scene).
+struct ImFont;
+ImFont* sceneLabelFont(const App& app);
+struct SceneLabelFont {
+    explicit SceneLabelFont(const App& app);
+    ~SceneLabelFont();
+    SceneLabelFont(const SceneLabelFont&) = delete;
+    SceneLabelFont& operator=(const SceneLabelFont&) = delete;
+};
 
 // A box of the world (centre and size, m) that a caption over the scene must not cover.
 struct WorldBox {

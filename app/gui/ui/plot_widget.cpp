@@ -110,8 +110,8 @@ std::vector<HeaderItem> layoutHeader(const PlotOptions& o, const std::vector<Plo
 
 } // namespace
 
-void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries>& series,
-              const std::vector<double>& markers) {
+ScreenRect drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries>& series,
+                    const std::vector<double>& markers) {
     const float font = ImGui::GetFontSize();
     ImVec2 size = ImGui::GetContentRegionAvail();
     if (o.height > 0.0f) size.y = o.height;
@@ -173,7 +173,9 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
               yr.hi,
               ImVec2(outerMin.x + labelW + font * 0.6f, outerMin.y + header),
               ImVec2(outerMax.x - font * 0.5f, outerMax.y - font * 1.4f)};
-    if (m.max.x - m.min.x < 10.0f || m.max.y - m.min.y < 10.0f) return;
+    const ScreenRect widget{outerMin.x, outerMin.y, outerMax.x - outerMin.x,
+                            outerMax.y - outerMin.y};
+    if (m.max.x - m.min.x < 10.0f || m.max.y - m.min.y < 10.0f) return widget;
     dl->AddRectFilled(m.min, m.max, frameBg(), 3.0f);
 
     // Grid and tick labels.
@@ -295,4 +297,5 @@ void drawPlot(const char* id, const PlotOptions& o, const std::vector<PlotSeries
             ImGui::EndTooltip();
         }
     }
+    return widget;
 }

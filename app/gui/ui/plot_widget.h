@@ -4,6 +4,7 @@
 // the values under the cursor. Tick and range logic is in plot_logic.h.
 #pragma once
 
+#include "camera.h" // ScreenRect
 #include "plot_logic.h"
 
 #include <imgui.h>
@@ -33,5 +34,6 @@ struct PlotOptions {
 };
 
 // Draws the plot at the cursor, full width. `markers` are x values drawn as vertical lines.
-void drawPlot(const char* id, const PlotOptions& options, const std::vector<PlotSeries>& series,
-              const std::vector<double>& markers = {});
+// Returns the widget's rectangle on screen (title, axes and legend included).
+ScreenRect drawPlot(const char* id, const PlotOptions& options,
+                    const std::vector<PlotSeries>& series, const std::vector<double>& markers = {});

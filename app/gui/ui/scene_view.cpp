@@ -9,6 +9,7 @@
 
 #include "placement.h"
 #include "scene_geometry.h"
+#include "screen_text.h"
 #include "text_format.h"
 #include "ui_style.h"
 
@@ -221,6 +222,9 @@ std::string fitted(const std::string& text, float width) {
 }
 
 void drawBadge(const App& app, ImDrawList* dl) {
+    // The screen-text contract's parts (screen_text.h): the badge is the status, present mode's
+    // one line the caption.
+    const TextRole role(dl, "status");
     const ScreenRect& vp = app.view.camera.viewport();
     const float pad = 8.0f * app.view.uiScale;
     ImVec2 at(static_cast<float>(vp.x) + pad * 1.5f, static_cast<float>(vp.y) + pad);
@@ -229,7 +233,9 @@ void drawBadge(const App& app, ImDrawList* dl) {
     if (app.view.presentMode && app.lesson.active()) {
         // A lesson's caption bar says it all (lesson_bar.cpp): nothing more over the scene.
     } else if (app.view.presentMode) {
-        // The caption: what the scene is, the method and the time, on one line.
+        // The caption: what the scene is, the method and the time, on one line, slide-sized.
+        const TextRole captionRole(dl, "caption");
+        ImGui::PushFont(uiCaptionFont());
         const float room = static_cast<float>(vp.width) - pad * 4.0f;
         std::string caption = presentCaption(app.sim.scene.name, app.sim.scene.description,
                                              app.sim.world().settings.method, app.sim.world().time);
@@ -243,6 +249,7 @@ void drawBadge(const App& app, ImDrawList* dl) {
             caption = fitted(what, room - tailWidth) + tail;
         }
         at.x += plate(dl, at, caption.c_str(), plateBg, plateFg, pad);
+        ImGui::PopFont();
     } else {
         // One count of collisions (the lesson's and sandbox-cli's); the rest rule's resting
         // contacts apart, so a settled pile's count stands still. Those are counted as what
@@ -461,6 +468,18 @@ void handleSceneMouse(App& app) {
     if (inScene && io.MouseWheel != 0.0f) mouseWheel(app.view, mouse, io.MouseWheel);
 }
 
+ImFont* sceneLabelFont(const App& app) {
+    return app.lesson.active() || app.view.presentMode ? uiSlideLabelFont() : uiLabelFont();
+}
+
+SceneLabelFont::SceneLabelFont(const App& app) {
+    ImGui::PushFont(sceneLabelFont(app));
+}
+
+SceneLabelFont::~SceneLabelFont() {
+    ImGui::PopFont();
+}
+
 ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size) {
     const float y = freeSpot(app.ui.takenOnScreen, at.x, at.y, at.y, size, ImGui::GetFontSize());
     app.ui.takenOnScreen.push_back({at.x, y, size.x, size.y});
@@ -469,7 +488,7 @@ ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size) {
 
 void drawSceneDecorations(App& app) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
-    ImGui::PushFont(uiLabelFont()); // the scene's labels have a size of their own
+    ImGui::PushFont(sceneLabelFont(app)); // the scene's labels have a size of their own
     drawAxisNumbers(app, dl);
     drawReferenceLine(app, dl);
     std::vector<ScreenRect>& placed = app.ui.takenOnScreen; // blocks and labels on screen

@@ -21,6 +21,10 @@ bool gLight = false;
 bool gTouch = false;
 ImFont* gLabelFont = nullptr;
 ImFont* gCompactFont = nullptr;
+// The classroom's fonts (slideFontPx), baked for the display's height when the look was applied.
+ImFont* gCaptionFont = nullptr;
+ImFont* gSlideLabelFont = nullptr;
+float gSlideCaptionPx = 0.0f, gSlideLabelPx = 0.0f;
 
 bool fileExists(const char* path) {
     if (std::FILE* f = std::fopen(path, "rb")) {
@@ -129,6 +133,8 @@ void uiCreateContext(const char* iniPath) {
     gScale = 0.0f;
     gLabelFont = nullptr;
     gCompactFont = nullptr;
+    gCaptionFont = gSlideLabelFont = nullptr;
+    gSlideCaptionPx = gSlideLabelPx = 0.0f;
 }
 
 void uiDestroyContext() {
@@ -166,8 +172,18 @@ void applyStyle(float scale, bool light) {
 
 } // namespace
 
+float slideFontPx(double share, float atLeast) {
+    const float height = ImGui::GetIO().DisplaySize.y;
+    const float px = height > 0.0f ? static_cast<float>(std::ceil(share * height)) : 0.0f;
+    return std::fmax(px, std::round(atLeast));
+}
+
 bool uiApplyLook(float scale, float labelScale, bool light) {
-    const bool fonts = scale != gScale || labelScale != gLabelScale || !gLabelFont;
+    // The classroom's text, whatever the UI scale (never smaller than the UI's own).
+    const float captionPx = slideFontPx(kCaptionShare, kBaseFontPx * scale);
+    const float slideLabelPx = slideFontPx(kSceneLabelShare, kBaseFontPx * scale * labelScale);
+    const bool fonts = scale != gScale || labelScale != gLabelScale || !gLabelFont ||
+                       captionPx != gSlideCaptionPx || slideLabelPx != gSlideLabelPx;
     if (!fonts && light == gLight) return false;
     gScale = scale;
     gLabelScale = labelScale;
@@ -181,6 +197,10 @@ bool uiApplyLook(float scale, float labelScale, bool light) {
                                         : addFont(io, std::round(kBaseFontPx * scale * labelScale));
         gCompactFont =
             addFont(io, std::round(kBaseFontPx * scale * static_cast<float>(kCompactFontScale)));
+        gSlideCaptionPx = captionPx;
+        gSlideLabelPx = slideLabelPx;
+        gCaptionFont = addFont(io, captionPx);
+        gSlideLabelFont = addFont(io, slideLabelPx);
         io.Fonts->Build();
     }
     applyStyle(scale, light);
@@ -222,6 +242,19 @@ ImFont* uiCompactFont() {
 
 ImFont* uiLabelFont() {
     return gLabelFont ? gLabelFont : ImGui::GetFont();
+}
+
+ImFont* uiCaptionFont() {
+    return gCaptionFont ? gCaptionFont : ImGui::GetFont();
+}
+
+ImFont* uiSlideLabelFont() {
+    return gSlideLabelFont ? gSlideLabelFont : uiLabelFont();
+}
+
+bool uiSlideFontsStale() {
+    return slideFontPx(kCaptionShare, kBaseFontPx * gScale) != gSlideCaptionPx ||
+           slideFontPx(kSceneLabelShare, kBaseFontPx * gScale * gLabelScale) != gSlideLabelPx;
 }
 
 bool uiLightTheme() {

@@ -8,9 +8,10 @@
 void uiCreateContext(const char* iniPath);
 void uiDestroyContext();
 // Rebuilds the font atlas and style sizes for `scale`, with the scene labels' font at
-// `labelScale` times the UI font, and the dark or light theme. Does only what changed since the
-// last call; true when the fonts changed: the caller then tells the UI renderer
-// (uiRendererFontsChanged), which uploads the new atlas at its next NewFrame.
+// `labelScale` times the UI font, the classroom's fonts for the display's height, and the dark or
+// light theme. Does only what changed since the last call; true when the fonts changed: the caller
+// then tells the UI renderer (uiRendererFontsChanged), which uploads the new atlas at its next
+// NewFrame.
 bool uiApplyLook(float scale, float labelScale, bool light);
 bool uiApplyScale(float scale); // uiApplyLook with the current label scale and theme
 // The scale uiApplyLook last applied.
@@ -30,6 +31,17 @@ bool uiSmallButton(const char* label);
 // The font of the scene's labels (block names, axis numbers, the caption): its own size.
 struct ImFont;
 ImFont* uiLabelFont();
+// The classroom's text (a lesson, present mode): sized by the window's height whatever the UI
+// scale, as a slide's text is (a slide's body text is about 4% of its height): the caption bar's
+// (title, caption, question or answer, method and t) kCaptionShare of it, 36 px at 1080, the
+// scene's labels kSceneLabelShare, 24 px at 1080; never smaller than the UI's own fonts. Baked
+// for the display's height (ImGui's DisplaySize) when the look is applied; uiSlideFontsStale
+// says when the height has changed since (then apply the look again, between frames).
+constexpr double kCaptionShare = 0.033;
+constexpr double kSceneLabelShare = 0.022;
+ImFont* uiCaptionFont();
+ImFont* uiSlideLabelFont();
+bool uiSlideFontsStale();
 // The font of small docked windows (compactWindow in dock_layout.h): kCompactFontScale of the UI
 // font's size.
 ImFont* uiCompactFont();

@@ -183,8 +183,6 @@ ScreenRect worldRectOnScreen(const Camera& camera, const Bounds& bounds) {
     return {x0, y0, std::max(a.x, b.x) - x0, std::max(a.y, b.y) - y0};
 }
 
-namespace {
-
 std::string jsonRect(const ScreenRect& r) {
     char text[128];
     std::snprintf(text, sizeof text, "[%.10g, %.10g, %.10g, %.10g]", r.x, r.y, r.width, r.height);
@@ -209,15 +207,25 @@ std::string jsonString(const std::string& s) {
     return out + "\"";
 }
 
+namespace {
+
+// [{"name": ..., "rect": [...]}, ...]
+std::string namedRects(const std::vector<DockedWindow>& list) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        out += (i ? ", " : "") + std::string("{\"name\": ") + jsonString(list[i].name) +
+               ", \"rect\": " + jsonRect(list[i].rect) + "}";
+    }
+    return out + "]";
+}
+
 } // namespace
 
 std::string layoutJson(const ScreenRect& scene, const ScreenRect& world,
-                       const std::vector<DockedWindow>& windows) {
-    std::string out =
-        "{\"scene\": " + jsonRect(scene) + ", \"world\": " + jsonRect(world) + ", \"windows\": [";
-    for (std::size_t i = 0; i < windows.size(); ++i) {
-        out += (i ? ", " : "") + std::string("{\"name\": ") + jsonString(windows[i].name) +
-               ", \"rect\": " + jsonRect(windows[i].rect) + "}";
-    }
-    return out + "]}\n";
+                       const std::vector<DockedWindow>& windows,
+                       const std::vector<DockedWindow>& blocks,
+                       const std::vector<DockedWindow>& plots) {
+    return "{\"scene\": " + jsonRect(scene) + ", \"world\": " + jsonRect(world) +
+           ", \"windows\": " + namedRects(windows) + ", \"blocks\": " + namedRects(blocks) +
+           ", \"plots\": " + namedRects(plots) + "}\n";
 }

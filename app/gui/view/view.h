@@ -45,6 +45,8 @@ struct View {
     std::vector<std::string> floatingWindows;
     // Every window drawn this frame with its rectangle (for --layout-json), in drawing order.
     std::vector<DockedWindow> shownWindows;
+    // Every plot drawn this frame (its widget's whole rectangle, by name: "velocity"), likewise.
+    std::vector<DockedWindow> shownPlots;
     double captionHeight = 0.0; // px a lesson's caption bar takes at the top of the scene
     bool sheetOpen = false;     // narrow screens: the panel's sheet is open (sheetLayout)
 };
