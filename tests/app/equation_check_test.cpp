@@ -317,7 +317,7 @@ std::vector<std::pair<std::string, Scene>> shippedScenes() {
     if (lesson.lesson) {
         for (std::size_t i = 0; i < lesson.lesson->steps.size(); ++i)
             out.push_back(
-                {"lecture3 step " + std::to_string(i + 1), lesson.lesson->steps[i].scene});
+                {"lecture3 step " + std::to_string(i + 1), *lesson.lesson->steps[i].scene});
     }
     return out;
 }
