@@ -5,6 +5,7 @@
 #include "fixed_step.h"
 #include "options.h"
 #include "scene_library.h"
+#include "test_fixtures.h"
 
 #include <gtest/gtest.h>
 
@@ -27,20 +28,10 @@ fs::path tempDir(const std::string& name) {
 }
 
 Scene twoBlocks() {
-    Scene scene;
-    scene.name = "two";
-    scene.settings.gravity = Vec2{0.0, 0.0};
-    BlockDef a;
-    a.name = "A";
-    a.position = {4, 6};
+    BlockDef a = testBlock("A", {4, 6});
     a.velocity = {6, 0};
     a.color = "#d04040";
-    BlockDef b;
-    b.name = "B";
-    b.position = {12, 6};
-    b.mass = 2.0;
-    scene.blocks = {a, b};
-    return scene;
+    return weightlessScene("two", {a, testBlock("B", {12, 6}, {1, 1}, 2.0)});
 }
 
 TEST(FixedStepClock, RunsOneTickPerDtWhateverTheDisplayRate) {
