@@ -105,7 +105,7 @@ def run_cases(suite):
         with open(path, "w") as f:
             json.dump(scene, f)
         start = run([suite.cli, "run", path, "--steps", "0", "--json"], folder, timeout=60)
-        result = run([suite.cli, "run", path, "--json"] + args, folder, timeout=300,
+        result = run([suite.cli, "run", path, "--json"] + args, folder, timeout=900,
                      mem_mb=2048)
         problems = suite.accepted(start) + suite.accepted(result)
         first, error = finite_json(start)

@@ -353,7 +353,7 @@ def programs(suite, path, cwd, case=""):
     return ways[:2] if case in RUNTIME_CASES else ways
 
 
-def expect_refused(suite, case, folder, path, places, code=1, timeout=60):
+def expect_refused(suite, case, folder, path, places, code=1, timeout=180):
     before = read(path) if os.path.isfile(path) and not os.path.islink(path) else None
     for program, args, echo in programs(suite, path, folder, case):
         result = run_program(args, folder, timeout)
@@ -381,7 +381,7 @@ def run_cases(suite):
         path = os.path.join(folder, "lesson.json")
         write(path, json.dumps(doc))
         for program, args, echo in programs(suite, path, folder):
-            result = run_program(args, folder, 120)
+            result = run_program(args, folder, 600)
             suite.check("%s [%s]" % (case, program), suite.accepted(result, echo), result)
 
     outside = os.path.join(suite.root, "outside.json")
@@ -404,7 +404,7 @@ def run_cases(suite):
                  "loop.json", "gone.json", "bad\x1b[2Jname.json"]:
         case = "lesson file " + name.replace("\x1b", "ESC")
         for program, args, echo in programs(suite, name, folder):
-            result = run_program(args, folder, 30)
+            result = run_program(args, folder, 120)
             places = ["\\x1b"] if "\x1b" in name else [os.path.basename(name)]
             suite.check("%s [%s]" % (case, program), suite.refused(result, places, echo_stdout=echo), result)
 
@@ -415,7 +415,7 @@ def run_cases(suite):
     for step in ["0", "2", "-1", "1.5", "abc", "99999999999999999999", "1e0", ""]:
         args = [suite.offscreen, "--lesson", path, "--step", step, "--screenshot",
                 os.path.join(folder, "s.png")]
-        result = run_program(args, folder, 30)
+        result = run_program(args, folder, 120)
         places = ["lesson.json", "no step 2"] if step == "2" else ["--step"]
         suite.check("--step %r [offscreen]" % step, suite.refused(result, places), result)
     result = run_program([suite.offscreen, "--lesson", path, "--step", "1", "--screenshot",
@@ -427,7 +427,7 @@ def run_cases(suite):
     path = os.path.join(folder, "lesson.json")
     write(path, json.dumps(lesson(step={"scene": "bullet_wall", "pause_at": {"time": 0.1}})))
     for program, args, echo in programs(suite, path, folder):
-        result = run_program(args, folder, 60)
+        result = run_program(args, folder, 300)
         suite.check("shipped scene by name [%s]" % program, suite.accepted(result, echo), result)
 
 

@@ -84,7 +84,7 @@ class Case:
                 os.chown(auth, NOBODY, NOBODY)
                 env["XAUTHORITY"] = auth
         result = run(["sh", "-c", DRIVER, "driver", out, self.suite.window, "--verbose"] +
-                     list(args), self.folder, timeout=60, mem_mb=4096, env=env,
+                     list(args), self.folder, timeout=180, mem_mb=4096, env=env,
                      as_nobody=as_nobody)
         result.out = read(out) if os.path.exists(out) else b""
         problems = self.suite.common(result)
@@ -236,7 +236,7 @@ def run_cases(suite):
     lesson = os.path.join(case.folder, "lesson.json")
     write(lesson, json.dumps({"name": "L", "steps": [{"title": "t", "caption": "c",
                                                       "scene": "/dev/zero"}]}))
-    result = run([suite.window, "--lesson", lesson], case.folder, timeout=60, mem_mb=4096,
+    result = run([suite.window, "--lesson", lesson], case.folder, timeout=180, mem_mb=4096,
                  env=case.env)
     suite.check("window: a lesson naming /dev/zero", suite.refused(
         result, ["lesson.json", "steps[0].scene"], code=1), result)

@@ -93,7 +93,7 @@ def run_cases(suite):
             before = snapshot(base)
             args = [path if a == "OUT" else a for a in command]
             fsize = FULL_DISK_BYTES if case.startswith("a full disk") else None
-            result = run(args, base, timeout=60, mem_mb=2048, fsize=fsize,
+            result = run(args, base, timeout=300, mem_mb=2048, fsize=fsize,
                          as_nobody=as_nobody and os.geteuid() == 0)
             shown = os.path.basename(path) if "\x1b" not in path else "\\x1b"
             problems = suite.refused(result, [shown], code=code)
@@ -157,7 +157,7 @@ def same_file_cases(suite):
         ]
         for what, args, code in cases:
             restore(kept, [(scene, os.path.join(folder, "hard.csv"))])
-            result = run(args, folder, timeout=60, mem_mb=2048)
+            result = run(args, folder, timeout=300, mem_mb=2048)
             problems = suite.refused(result, [], code=code)
             for path, data in kept.items():
                 if read(path) != data:
@@ -177,7 +177,7 @@ def same_file_cases(suite):
     ]
     for what, args, code in others:
         restore(kept, [(scene, os.path.join(folder, "hard.csv"))])
-        result = run(args, folder, timeout=60, mem_mb=2048)
+        result = run(args, folder, timeout=300, mem_mb=2048)
         problems = suite.refused(result, [], code=code)
         for path, data in kept.items():
             if read(path) != data:
@@ -195,13 +195,13 @@ def fifo_cases(suite):
             ("--screenshot", [suite.offscreen, "scene.json", "--screenshot", "pipe"]),
             ("--layout-json", [suite.offscreen, "scene.json", "--screenshot", "ok.png",
                                "--layout-json", "pipe"])]:
-        result = run(args, folder, timeout=30, mem_mb=2048)
+        result = run(args, folder, timeout=120, mem_mb=2048)
         suite.check("%s to a FIFO nobody reads" % what, suite.refused(result, ["pipe"]), result)
     for what, args in [
             ("run --trace", [suite.cli, "run", "scene.json", "--steps", "5", "--trace",
                              "/dev/null"]),
             ("--screenshot", [suite.offscreen, "scene.json", "--screenshot", "/dev/null"])]:
-        result = run(args, folder, timeout=60, mem_mb=2048)
+        result = run(args, folder, timeout=300, mem_mb=2048)
         problems = suite.accepted(result)
         if not os.path.exists("/dev/null") or not os.path.isfile(os.path.join(folder,
                                                                                "scene.json")):
