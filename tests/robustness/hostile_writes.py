@@ -156,18 +156,16 @@ def same_file_cases(suite):
                              out], 2),
         ]
         for what, args, code in cases:
-            restore(kept, [(scene, os.path.join(folder, "hard.csv"))])
-            result = run(args, folder, timeout=300, mem_mb=2048)
-            problems = suite.refused(result, [], code=code)
-            for path, data in kept.items():
-                if read(path) != data:
-                    problems.append("%s changed" % os.path.basename(path))
-            suite.check("%s onto the scene by %s" % (what, how), problems, result)
+            refused_onto_input(suite, "%s onto the scene by %s" % (what, how), args, code,
+                               folder, kept)
     others = [
         ("--screenshot onto the lesson",
          [suite.offscreen, "--lesson", "lesson.json", "--screenshot", "lesson.json"], 2),
         ("--screenshot onto the lesson's scene",
          [suite.offscreen, "--lesson", "lesson.json", "--screenshot", "sub/../scene.json"], 2),
+        ("--text-json onto the lesson's scene",
+         [suite.offscreen, "--lesson", "lesson.json", "--screenshot", "ok.png", "--text-json",
+          "link.csv"], 2),
         ("--screenshot onto the --compare trace",
          [suite.offscreen, "scene.json", "--compare", "trace.csv", "--screenshot", "trace.csv"],
          2),
@@ -176,13 +174,18 @@ def same_file_cases(suite):
           "--layout-json", "./trace.csv"], 2),
     ]
     for what, args, code in others:
-        restore(kept, [(scene, os.path.join(folder, "hard.csv"))])
-        result = run(args, folder, timeout=300, mem_mb=2048)
-        problems = suite.refused(result, [], code=code)
-        for path, data in kept.items():
-            if read(path) != data:
-                problems.append("%s changed" % os.path.basename(path))
-        suite.check(what, problems, result)
+        refused_onto_input(suite, what, args, code, folder, kept)
+
+
+def refused_onto_input(suite, case, args, code, folder, kept):
+    """One run whose output is an input: refused with `code`, every kept file intact."""
+    restore(kept, [(os.path.join(folder, "scene.json"), os.path.join(folder, "hard.csv"))])
+    result = run(args, folder, timeout=300, mem_mb=2048)
+    problems = suite.refused(result, [], code=code)
+    for path, data in kept.items():
+        if read(path) != data:
+            problems.append("%s changed" % os.path.basename(path))
+    suite.check(case, problems, result)
 
 
 def fifo_cases(suite):
