@@ -186,16 +186,8 @@ class Parser {
   public:
     explicit Parser(const std::vector<Token>& tokens) : t_(tokens) {}
 
-    // The longest expression starting at token i (ok false when none).
-    Side expression(std::size_t i) const {
-        Side left = term(i);
-        while (left.ok && isOp(left.end, '+', '-')) {
-            const Side right = term(left.end + 1);
-            if (!right.ok) break;
-            left = combine(left, right, t_[left.end].op);
-        }
-        return left;
-    }
+    // The longest expression starting at token i (ok false when none): terms joined by + -.
+    Side expression(std::size_t i) const { return leftToRight(i, &Parser::term, '+', '-'); }
 
     // A unit after a number (m, kg·m/s, m/s²): the token after it, or i when there is none.
     std::size_t skipUnit(std::size_t i) const {
@@ -263,15 +255,22 @@ class Parser {
         return a;
     }
 
-    Side term(std::size_t i) const {
-        Side left = unary(i);
-        while (left.ok && isOp(left.end, '*', '/')) {
-            const Side right = unary(left.end + 1);
+    // Operands read by `operand` and joined by the operators `a` and `b`, evaluated left to
+    // right (a - b - c is (a - b) - c); it stops before an operator whose right operand does not
+    // parse.
+    Side leftToRight(std::size_t i, Side (Parser::*operand)(std::size_t) const, char a,
+                     char b) const {
+        Side left = (this->*operand)(i);
+        while (left.ok && isOp(left.end, a, b)) {
+            const Side right = (this->*operand)(left.end + 1);
             if (!right.ok) break;
             left = combine(left, right, t_[left.end].op);
         }
         return left;
     }
+
+    // Factors joined by * /.
+    Side term(std::size_t i) const { return leftToRight(i, &Parser::unary, '*', '/'); }
 
     Side unary(std::size_t i) const {
         if (isOp(i, '-', '+')) {

@@ -19,6 +19,8 @@
 // - An expression that evaluates to inf or nan never holds (`inf·0 = nan`).
 #pragma once
 
+#include "text_format.h"
+
 #include <string>
 #include <vector>
 
@@ -41,22 +43,5 @@ EquationReport checkEquations(const std::string& text, double roundedTo = 0.0);
 // True when every chain in `text` holds.
 bool equationsHold(const std::string& text, double roundedTo = 0.0);
 
-// What formatNumber rounds to (3 decimals, trailing zeros dropped): checkEquations' `roundedTo`
-// for the app's own lines.
-constexpr double kFormatNumberUnit = 1e-3;
-
-// The most extra digits a line gets (formatNumberWithDigits): 3 + 14 decimals is all a double
-// carries.
-constexpr int kMostExtraDigits = 14;
-
-// The text `build(extra)` with the fewest extra digits whose chains all hold with the numbers as
-// printed: "1·3.594 + 1000000·0.99999354 = 999997.136", not "... + 1000000·1 = ...". `*used`
-// is raised to the digits taken (the givens beside a formula are then written with as many).
-template <class Build> std::string holdingText(const Build& build, int* used = nullptr) {
-    int extra = 0;
-    std::string text = build(0);
-    while (extra < kMostExtraDigits && !equationsHold(text, kFormatNumberUnit))
-        text = build(++extra);
-    if (used && *used < extra) *used = extra;
-    return text;
-}
+// The app's own lines are checked with `roundedTo` = kFormatNumberUnit (text_format.h): what
+// formatNumber rounds to.

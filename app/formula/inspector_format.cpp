@@ -1,6 +1,6 @@
 #include "inspector_format.h"
 
-#include "equation_check.h"
+#include "printed_formula.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,23 +29,19 @@ namespace {
 // v' = u - C·(v - u), the lecture's formula.
 std::string formulaLine(const std::string& v, double u, double C, double before, double after,
                         int* used) {
-    return holdingText(
-        [&](int x) {
-            return v + "' = " + formatNumberWithDigits(u, x) + " - " + operand(C, x) + "·(" +
-                   formatNumberWithDigits(before, x) + " - " + operand(u, x) +
-                   ") = " + formatNumber(after);
-        },
-        used);
+    const auto formula = [&](int x) {
+        return printed(u, x) -
+               printedOperand(C, x) * parenthesized(printed(before, x) - printedOperand(u, x));
+    };
+    return v + "' = " + equationWithFewestDigits(formula, after, used);
 }
 
 // v' = -C·v: without Newton, each body reverses its own component as off a wall at rest.
 std::string reflectLine(const std::string& v, double C, double before, double after, int* used) {
-    return holdingText(
-        [&](int x) {
-            return v + "' = -C·" + v + " = -" + operand(C, x) + "·" + operand(before, x) + " = " +
-                   formatNumber(after);
-        },
-        used);
+    const auto formula = [&](int x) {
+        return negated(printedOperand(C, x)) * printedOperand(before, x);
+    };
+    return v + "' = -C·" + v + " = " + equationWithFewestDigits(formula, after, used);
 }
 
 // A body of infinite mass: unchanged, or reversed (a kinematic block on a wall, on another
@@ -59,17 +55,17 @@ std::string infiniteLine(const std::string& v, double before, double after) {
 // "p before = 1·6 + 2·0 = 6 kg·m/s" over the finite bodies given as (mass, velocity) pairs.
 std::string momentumLine(const std::string& label,
                          std::initializer_list<std::pair<double, double>> bodies, int* used) {
-    return holdingText(
-        [&](int x) {
-            std::string sum;
-            double total = 0.0;
-            for (const auto& [m, v] : bodies) {
-                sum += (sum.empty() ? "" : " + ") + operand(m, x) + "·" + operand(v, x);
-                total += m * v;
-            }
-            return label + " = " + sum + " = " + formatNumber(total) + " kg·m/s";
-        },
-        used);
+    double total = 0.0;
+    for (const auto& [m, v] : bodies) total += m * v;
+    const auto formula = [&](int x) {
+        Printed sum;
+        for (const auto& [m, v] : bodies) {
+            const Printed momentum = printedOperand(m, x) * printedOperand(v, x);
+            sum = sum.text.empty() ? momentum : sum + momentum;
+        }
+        return sum;
+    };
+    return label + " = " + equationWithFewestDigits(formula, total, used) + " kg·m/s";
 }
 
 // The relative-velocity test along `axis`: `lower` and `upper` name the velocities of the body
@@ -79,11 +75,9 @@ void relativeLine(CollisionFormula& f, char axis, const std::string& lowerName, 
                   const std::string& upperName, double upper) {
     const double closing = lower - upper;
     const std::string shown = formatNumber(closing);
-    const std::string head =
-        std::string("rel. vel. along ") + axis + " = " + lowerName + " - " + upperName + " = ";
-    f.relative = holdingText([&](int x) {
-        return head + formatNumberWithDigits(lower, x) + " - " + operand(upper, x) + " = " + shown;
-    });
+    const auto formula = [&](int x) { return printed(lower, x) - printedOperand(upper, x); };
+    f.relative = std::string("rel. vel. along ") + axis + " = " + lowerName + " - " + upperName +
+                 " = " + equationWithFewestDigits(formula, closing);
     if (shown == "0") {
         f.relative += ": not closing, resolved";
     } else if (closing > 0.0) {
@@ -216,14 +210,13 @@ CollisionFormula collisionFormula(const CollisionRecord& r, const std::string& n
         } else if (r.rule == ResolveRule::Reverse) {
             f.u = "two infinite masses: a moving one reverses, as on a wall";
         } else if (finite1 && finite2 && (!r.rest || restFormula)) {
-            f.u = holdingText(
-                [&](int x) {
-                    return "u = (" + operand(r.m1, x) + "·" + operand(r.v1, x) + " + " +
-                           operand(r.m2, x) + "·" + operand(r.v2, x) + ")/(" +
-                           formatNumberWithDigits(r.m1, x) + " + " +
-                           formatNumberWithDigits(r.m2, x) + ") = " + formatNumber(r.u);
-                },
-                &used);
+            // u = (m1·v1 + m2·v2)/(m1 + m2), the lecture's velocity of the centre of mass.
+            const auto formula = [&](int x) {
+                const Printed m1 = printedOperand(r.m1, x), m2 = printedOperand(r.m2, x);
+                return parenthesized(m1 * printedOperand(r.v1, x) + m2 * printedOperand(r.v2, x)) /
+                       parenthesized(printed(r.m1, x) + printed(r.m2, x));
+            };
+            f.u = "u = " + equationWithFewestDigits(formula, r.u, &used);
         } else if (r.rest && (r.rule != ResolveRule::RestAnchored || (finite1 && finite2))) {
             f.u = restRuleLine(r);
         } else if (!finite2) {

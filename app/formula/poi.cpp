@@ -1,7 +1,7 @@
 #include "poi.h"
 
 #include "collision.h"
-#include "equation_check.h"
+#include "printed_formula.h"
 #include "text_format.h"
 
 #include <cmath>
@@ -74,9 +74,7 @@ PoiView computePoi(const std::vector<Block>& before, const Bounds& bounds,
 
 std::string poiEquation(const PoiView& p) {
     const char axis = p.axis == 0 ? 'x' : 'y';
-    return holdingText([&](int extra) {
-        return "t = a/b = " + formatNumberWithDigits(p.a, extra) + "/" +
-               formatNumberWithDigits(p.b, extra) + " = " + formatNumber(p.t) +
-               " of the frame   (a, b: m along " + axis + ")";
-    });
+    const auto formula = [&](int extra) { return printed(p.a, extra) / printed(p.b, extra); };
+    return "t = a/b = " + equationWithFewestDigits(formula, p.t) +
+           " of the frame   (a, b: m along " + axis + ")";
 }

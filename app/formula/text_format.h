@@ -21,6 +21,11 @@ std::string formatNumber(double value, double scale = 1.0);
 // trillion): what an equation prints when three decimals would not add up
 // (a giant's 0.99999354 is not 1). extra 0 is formatNumber.
 std::string formatNumberWithDigits(double value, int extra, double scale = 1.0);
+// What formatNumber rounds to (3 decimals, trailing zeros dropped): its "1" stands for 1.000.
+constexpr double kFormatNumberUnit = 1e-3;
+// The most extra digits a line gets (formatNumberWithDigits): 3 + 14 decimals is all a double
+// carries.
+constexpr int kMostExtraDigits = 14;
 // formatNumberWithDigits, in parentheses when negative (an operand after an operator: "1·(-2)").
 std::string operand(double value, int extra = 0);
 // formatNumber with a unit: "0.625 s", "6 m/s".

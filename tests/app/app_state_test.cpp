@@ -2,9 +2,11 @@
 #include "app.h"
 #include "app_config.h"
 #include "app_log.h"
+#include "app_setup.h"
 #include "fixed_step.h"
 #include "options.h"
 #include "scene_library.h"
+#include "test_fixtures.h"
 
 #include <gtest/gtest.h>
 
@@ -27,20 +29,10 @@ fs::path tempDir(const std::string& name) {
 }
 
 Scene twoBlocks() {
-    Scene scene;
-    scene.name = "two";
-    scene.settings.gravity = Vec2{0.0, 0.0};
-    BlockDef a;
-    a.name = "A";
-    a.position = {4, 6};
+    BlockDef a = testBlock("A", {4, 6});
     a.velocity = {6, 0};
     a.color = "#d04040";
-    BlockDef b;
-    b.name = "B";
-    b.position = {12, 6};
-    b.mass = 2.0;
-    scene.blocks = {a, b};
-    return scene;
+    return weightlessScene("two", {a, testBlock("B", {12, 6}, {1, 1}, 2.0)});
 }
 
 TEST(FixedStepClock, RunsOneTickPerDtWhateverTheDisplayRate) {
@@ -615,6 +607,45 @@ TEST(Options, RejectsBadValues) {
     EXPECT_FALSE(parseSize("100x100x3", w, h));
     EXPECT_TRUE(parseSize("640x480", w, h));
     EXPECT_EQ(w, 640);
+}
+
+// Issue 28's outside suite: every file a run writes is refused onto an input of the run (exit
+// 2), --text-json included (it once overwrote the scene it was given).
+TEST(Options, NoOutputMayOverwriteTheScene) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("sandbox_outputs_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string scene = (dir / "scene.json").string();
+    const std::string bySpelling = (dir / "." / "scene.json").string();
+    std::ofstream(scene) << "{}";
+    const std::vector<OutputFile> outputs = outputFiles(Options{});
+    EXPECT_EQ(outputs.size(), 4u);
+    for (const OutputFile& output : outputs) {
+        std::vector<const char*> argv = {"sandbox", scene.c_str()};
+        if (std::string(output.flag) != "--screenshot")
+            argv.insert(argv.end(), {"--screenshot", "a.png"});
+        argv.insert(argv.end(), {output.flag, bySpelling.c_str()});
+        const ParsedOptions p = parseOptions(static_cast<int>(argv.size()), argv.data());
+        EXPECT_TRUE(p.exit) << output.flag;
+        EXPECT_EQ(p.exitCode, 2) << output.flag;
+    }
+    fs::remove_all(dir);
+}
+
+// Issue 28's outside suite: a last scene (a saved setting) that is a file but does not load
+// opened the default without a word. The default opens and the panel's message says why.
+TEST(AppState, ALastSceneThatDoesNotLoadOpensTheDefaultAndSaysWhy) {
+    const fs::path bad =
+        fs::temp_directory_path() / ("sandbox_last_scene_" + std::to_string(::getpid()) + ".json");
+    std::ofstream(bad)
+        << R"({"name": "x", "blocks": [{"position": [1, 1], "size": 1, "mass": "heavy"}]})";
+    App app;
+    std::string error;
+    ASSERT_TRUE(setupApp(app, Options{}, bad.string(), &error)) << error;
+    EXPECT_NE(app.sim.scenePath, bad.string());
+    EXPECT_NE(app.ui.messages.error.find("blocks[0].mass"), std::string::npos)
+        << app.ui.messages.error;
+    fs::remove(bad);
 }
 
 // Issue 13: every option error exits 2, as sandbox-cli's bad usage (CLI11's own code for a

@@ -3,6 +3,7 @@
 #include "input_map.h"
 #include "mouse_tool.h"
 #include "placement.h"
+#include "test_fixtures.h"
 
 #include <gtest/gtest.h>
 
@@ -11,32 +12,55 @@
 
 namespace {
 
-TEST(KeyMap, TheLecturesKeys) {
-    EXPECT_EQ(actionForKey(keys::kR, false), Action::Reset);
-    EXPECT_EQ(actionForKey(keys::kP, false), Action::TogglePause);
-    EXPECT_EQ(actionForKey(keys::kSpace, false), Action::ToggleSlowMotion);
-    EXPECT_EQ(actionForKey(keys::kD, false), Action::ToggleTrails);
-    EXPECT_EQ(actionForKey(keys::kC, false), Action::ClearTrails);
-    EXPECT_EQ(actionForKey(keys::kS, false), Action::CycleMethod);
-}
+// A key pressed, with or without Ctrl and Shift, and the action it must give (thrust off).
+struct Press {
+    int key;
+    bool ctrl;
+    bool shift;
+    Action action;
+};
 
-TEST(KeyMap, TheSandboxsKeys) {
-    EXPECT_EQ(actionForKey(keys::kN, false), Action::StepOnce);
-    EXPECT_EQ(actionForKey(keys::kF5, false), Action::TogglePresent);
-    EXPECT_EQ(actionForKey(keys::kTab, false), Action::KeyboardFocus);
-    EXPECT_EQ(actionForKey(keys::kF6, false), Action::NextWindow);
-    EXPECT_EQ(actionForKey(keys::kM, false), Action::ToggleSound);
-    EXPECT_EQ(actionForKey(keys::kR, false, true), Action::ResetToFile);
-    EXPECT_EQ(actionForKey(keys::kP, false, true), Action::TogglePause); // Shift does not matter
-    EXPECT_EQ(actionForKey(keys::kQ, true), Action::Quit);
-    EXPECT_EQ(actionForKey(keys::kF11, false), Action::ToggleFullscreen);
-    EXPECT_EQ(actionForKey(keys::kEqual, true), Action::UiScaleUp);
-    EXPECT_EQ(actionForKey(keys::kMinus, true), Action::UiScaleDown);
-    EXPECT_EQ(actionForKey(keys::kEscape, false), Action::Escape); // never quits at once
-    EXPECT_EQ(actionForKey(keys::kDelete, false), Action::DeleteSelected);
-    EXPECT_EQ(actionForKey(keys::kS, true), Action::Save);
-    EXPECT_EQ(actionForKey(keys::kEqual, false), Action::None); // Ctrl is needed
-    EXPECT_EQ(actionForKey(999, false), Action::None);
+// The lecture's keys, then the sandbox's, then the lesson's.
+const Press kPresses[] = {
+    {keys::kR, false, false, Action::Reset},
+    {keys::kP, false, false, Action::TogglePause},
+    {keys::kSpace, false, false, Action::ToggleSlowMotion},
+    {keys::kD, false, false, Action::ToggleTrails},
+    {keys::kC, false, false, Action::ClearTrails},
+    {keys::kS, false, false, Action::CycleMethod},
+
+    {keys::kN, false, false, Action::StepOnce},
+    {keys::kF5, false, false, Action::TogglePresent},
+    {keys::kTab, false, false, Action::KeyboardFocus},
+    {keys::kF6, false, false, Action::NextWindow},
+    {keys::kM, false, false, Action::ToggleSound},
+    {keys::kR, false, true, Action::ResetToFile},
+    {keys::kP, false, true, Action::TogglePause}, // Shift does not matter
+    {keys::kQ, true, false, Action::Quit},
+    {keys::kF11, false, false, Action::ToggleFullscreen},
+    {keys::kEqual, true, false, Action::UiScaleUp},
+    {keys::kMinus, true, false, Action::UiScaleDown},
+    {keys::kEscape, false, false, Action::Escape}, // never quits at once
+    {keys::kDelete, false, false, Action::DeleteSelected},
+    {keys::kS, true, false, Action::Save},
+    {keys::kEqual, false, false, Action::None}, // Ctrl is needed
+    {999, false, false, Action::None},
+
+    {keys::kPageDown, false, false, Action::LessonNext},
+    {keys::kRight, false, false, Action::LessonNext},
+    {keys::kPageUp, false, false, Action::LessonPrevious},
+    {keys::kLeft, false, false, Action::LessonPrevious},
+    {keys::kHome, false, false, Action::LessonFirst},
+    {keys::kEnd, false, false, Action::LessonLast},
+    {keys::kEnter, false, false, Action::LessonJump},
+    {keys::k0 + 7, false, false, Action::LessonDigit},
+};
+
+TEST(KeyMap, EachKeyGivesItsAction) {
+    for (const Press& p : kPresses) {
+        EXPECT_EQ(actionForKey(p.key, p.ctrl, p.shift), p.action)
+            << "key " << p.key << (p.ctrl ? " with Ctrl" : "") << (p.shift ? " with Shift" : "");
+    }
 }
 
 TEST(KeyMap, NoKeyIsBoundTwiceAndEveryBindingIsDescribed) {
@@ -58,23 +82,9 @@ TEST(KeyMap, NoKeyIsBoundTwiceAndEveryBindingIsDescribed) {
 // An app with a 20 x 12 world seen at 50 px/m in a 1000 x 600 viewport: world (x, y) is at
 // screen (50x, 600 - 50y).
 App makeApp() {
-    Scene scene;
-    scene.name = "test";
-    scene.settings.gravity = Vec2{0.0, 0.0};
-    BlockDef a;
-    a.name = "A";
-    a.position = {5, 5};
-    a.size = {2, 2};
-    BlockDef b;
-    b.name = "B";
-    b.position = {12, 5};
-    b.size = {2, 2};
-    BlockDef floor;
-    floor.name = "floor";
-    floor.position = {10, 0.5};
-    floor.size = {20, 1};
-    floor.kind = BodyKind::Static;
-    scene.blocks = {a, b, floor};
+    const Scene scene =
+        weightlessScene("test", {testBlock("A", {5, 5}, {2, 2}), testBlock("B", {12, 5}, {2, 2}),
+                                 staticBlock("floor", {10, 0.5}, {20, 1})});
     App app;
     setScene(app, scene, "test.json");
     app.view.camera.setViewport({0, 0, 1000, 600});

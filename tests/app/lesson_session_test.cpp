@@ -92,14 +92,7 @@ TEST(LessonSession, KeysWalkThroughTheSteps) {
     const std::size_t n = app.lesson.lesson->steps.size();
     EXPECT_EQ(lessonHeading(app.lesson),
               "1 / " + std::to_string(n) + " \xc2\xb7 " + app.lesson.lesson->steps[0].title);
-    EXPECT_EQ(actionForKey(keys::kPageDown, false), Action::LessonNext);
-    EXPECT_EQ(actionForKey(keys::kRight, false), Action::LessonNext);
-    EXPECT_EQ(actionForKey(keys::kPageUp, false), Action::LessonPrevious);
-    EXPECT_EQ(actionForKey(keys::kLeft, false), Action::LessonPrevious);
-    EXPECT_EQ(actionForKey(keys::kHome, false), Action::LessonFirst);
-    EXPECT_EQ(actionForKey(keys::kEnd, false), Action::LessonLast);
-    EXPECT_EQ(actionForKey(keys::kEnter, false), Action::LessonJump);
-    EXPECT_EQ(actionForKey(keys::k0 + 7, false), Action::LessonDigit);
+    // Which keys give these actions: KeyMap.EachKeyGivesItsAction (input_test.cpp).
     EXPECT_EQ(digitOfKey(keys::kKeypad0 + 3), 3);
     EXPECT_EQ(digitOfKey(keys::kEnter), -1);
 

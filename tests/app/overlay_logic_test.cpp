@@ -8,6 +8,7 @@
 #include "poi.h"
 #include "scene_library.h"
 #include "side_by_side.h"
+#include "test_fixtures.h"
 #include "timeline.h"
 
 #include <gtest/gtest.h>
@@ -37,18 +38,6 @@ const CollisionRecord* firstBlockCollision(App& app, int frames) {
     return nullptr;
 }
 
-TEST(InspectorFormat, NumbersAreShortAndExact) {
-    EXPECT_EQ(formatNumber(2.0), "2");
-    EXPECT_EQ(formatNumber(-2.0), "-2");
-    EXPECT_EQ(formatNumber(0.625), "0.625");
-    EXPECT_EQ(formatNumber(1.0 / 3.0), "0.333");
-    EXPECT_EQ(formatNumber(-0.0), "0");
-    EXPECT_EQ(formatNumber(-1e-12), "0"); // rounding noise
-    EXPECT_EQ(formatNumber(INFINITY), "inf");
-    EXPECT_EQ(operand(-2.0), "(-2)");
-    EXPECT_EQ(operand(4.0), "4");
-}
-
 TEST(InspectorFormat, LectureExampleOneFillsTheFormula) {
     App app = lectureExample();
     const CollisionRecord* r = firstBlockCollision(app, 45);
@@ -68,19 +57,7 @@ TEST(InspectorFormat, LectureExampleOneFillsTheFormula) {
 }
 
 TEST(InspectorFormat, WallCollisionUsesTheWallsVelocity) {
-    CollisionRecord r;
-    r.time = 1.5;
-    r.block = 0;
-    r.other = kWallRight;
-    r.axis = 0;
-    r.m1 = 1.0;
-    r.m2 = INFINITY;
-    r.v1 = 4.0;
-    r.v2 = 0.0;
-    r.u = 0.0;
-    r.C = 0.5;
-    r.v1After = -2.0;
-    const CollisionFormula f = collisionFormula(r, "A", wallName(r.other));
+    const CollisionFormula f = collisionFormula(rightWallHit(0, 1.0), "A", wallName(kWallRight));
     EXPECT_EQ(f.title, "A  hits  right wall  along x at t = 1.5 s");
     EXPECT_EQ(f.u, "u = 0   (the right wall's velocity: infinite mass)");
     EXPECT_EQ(f.v1After, "vA' = 0 - 0.5·(4 - 0) = -2");

@@ -7,6 +7,7 @@
 #include "lesson_session.h"
 #include "save_naming.h"
 #include "scene_geometry.h"
+#include "test_fixtures.h"
 
 #include <gtest/gtest.h>
 
@@ -23,24 +24,8 @@ namespace {
 
 // No gravity, no drag: a 4 kg and a 1 kg block at rest, far apart (nothing collides).
 Scene twoShips() {
-    Scene scene;
-    scene.name = "ships";
-    scene.settings.gravity = Vec2{0.0, 0.0};
-    BlockDef big;
-    big.name = "big";
-    big.position = {4, 4};
-    big.size = {2, 1};
-    big.mass = 4.0;
-    BlockDef small;
-    small.name = "small";
-    small.position = {4, 8};
-    small.mass = 1.0;
-    BlockDef wall;
-    wall.name = "post";
-    wall.position = {16, 6};
-    wall.kind = BodyKind::Static;
-    scene.blocks = {big, small, wall};
-    return scene;
+    return weightlessScene("ships", {testBlock("big", {4, 4}, {2, 1}, 4.0),
+                                     testBlock("small", {4, 8}), staticBlock("post", {16, 6})});
 }
 
 App shipsApp() {

@@ -8,6 +8,7 @@
 #include "save_naming.h"
 #include "scene_geometry.h"
 #include "scene_library.h"
+#include "test_fixtures.h"
 #include "text_format.h"
 #include "timeline.h"
 
@@ -213,42 +214,22 @@ TEST(TextFormat, NamesCarryTheCurrentMass) {
     EXPECT_EQ(formulaSymbol("bullet"), "");
 }
 
-CollisionRecord wallHit() {
-    CollisionRecord r;
-    r.time = 1.5;
-    r.block = 1;
-    r.other = kWallRight;
-    r.axis = 0;
-    r.m1 = 2.0;
-    r.m2 = INFINITY;
-    r.v1 = 4.0;
-    r.u = 0.0;
-    r.C = 0.5;
-    r.v1After = -2.0;
-    return r;
-}
-
 TEST(InspectorNames, AWallHitNamesTheBlockThatHit) {
-    const CollisionFormula f = collisionFormula(wallHit(), "m2 = 2 kg", wallName(kWallRight));
+    const CollisionFormula f =
+        collisionFormula(rightWallHit(1, 2.0), "m2 = 2 kg", wallName(kWallRight));
     EXPECT_EQ(f.title, "m2 = 2 kg  hits  right wall  along x at t = 1.5 s");
     EXPECT_EQ(f.given, "m2 = 2, v2 = 4, C = 0.5; the right wall does not move");
     EXPECT_EQ(f.v1After, "v2' = 0 - 0.5·(4 - 0) = -2");
     EXPECT_EQ(f.momentumBefore, "p2 before = 2·4 = 8 kg·m/s");
     EXPECT_TRUE(f.v2After.empty());
-    const CollisionFormula g = collisionFormula(wallHit(), "bullet", "floor");
+    const CollisionFormula g = collisionFormula(rightWallHit(1, 2.0), "bullet", "floor");
     EXPECT_EQ(g.v1After, "v' = 0 - 0.5·(4 - 0) = -2");
 }
 
 TEST(InspectorNames, SymbolsFollowTheNamesInEitherOrder) {
-    CollisionRecord r;
-    r.block = 1;
-    r.other = 0;
-    r.m1 = 2.0;
-    r.m2 = 1.0;
-    r.v1 = -2.0;
-    r.v2 = 4.0;
-    r.u = 0.0;
-    r.C = 0.0;
+    CollisionRecord r; // block 1 (2 kg at -2 m/s) meets block 0 (1 kg at 4 m/s), C = 0
+    r.block = 1, r.other = 0;
+    r.m1 = 2.0, r.m2 = 1.0, r.v1 = -2.0, r.v2 = 4.0, r.u = 0.0, r.C = 0.0;
     const CollisionFormula f = collisionFormula(r, "m2 = 2 kg", "m1 = 1 kg");
     EXPECT_EQ(f.given, "m2 = 2, m1 = 1, v2 = -2, v1 = 4, C = 0");
     EXPECT_EQ(f.u, "u = (2·(-2) + 1·4)/(2 + 1) = 0");
@@ -281,9 +262,9 @@ TEST(InspectorFormat, StatesTheRelativeVelocityTest) {
     f = collisionFormula(r, "m2 = 2 kg", "m1 = 1 kg");
     EXPECT_EQ(f.relative, "rel. vel. along x = v1 - v2 = 6 - 0 = 6 > 0: approaching, resolved");
     // Walls: the right wall is above the block, the floor below it.
-    EXPECT_EQ(collisionFormula(wallHit(), "m2 = 2 kg", "right wall").relative,
+    EXPECT_EQ(collisionFormula(rightWallHit(1, 2.0), "m2 = 2 kg", "right wall").relative,
               "rel. vel. along x = v2 - 0 = 4 - 0 = 4 > 0: approaching, resolved");
-    CollisionRecord drop = wallHit();
+    CollisionRecord drop = rightWallHit(1, 2.0);
     drop.other = kWallBottom, drop.axis = 1, drop.v1 = -5.0;
     EXPECT_EQ(collisionFormula(drop, "ball", "floor").relative,
               "rel. vel. along y = 0 - v = 0 - (-5) = 5 > 0: approaching, resolved");
@@ -629,7 +610,7 @@ TEST(WrapAtSpaces, BreaksAtSpacesOnly) {
 // Issue 25: the inspector shows the friction rule that acted, |dvt| <= mu·|dvn|, with numbers
 // whose equation holds as printed (the product is that of the digits shown, exact in decimal).
 TEST(InspectorFormat, ShowsTheFrictionRuleWithDigitsThatHold) {
-    CollisionRecord r = wallHit();
+    CollisionRecord r = rightWallHit(1, 2.0);
     EXPECT_EQ(collisionFormula(r, "m2 = 2 kg", "floor").friction, "") << "no friction: no line";
     r.axis = 1;
     r.mu = 0.5, r.dvn = 2.3, r.dvt = 0.5 * 2.3;

@@ -7,6 +7,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -161,4 +163,27 @@ TEST(SettingsFile, LinkToADeviceIsReplacedNotWrittenThrough) {
     struct stat st {};
     ASSERT_EQ(stat("/dev/null", &st), 0);
     EXPECT_TRUE(S_ISCHR(st.st_mode));
+}
+
+// Issue 28's outside suite: a settings.txt linked to a file in another folder was written
+// through on exit. It is replaced: nothing is written outside the settings folder. A link to a
+// file of the folder itself is still followed.
+TEST(SettingsFile, LinkToAFileElsewhereIsReplacedNotWrittenThrough) {
+    ConfigFolder folder("outlink");
+    const fs::path outside = folder.dir.parent_path() / "outside.txt";
+    std::ofstream(outside) << "ui_scale = 2\n";
+    fs::create_symlink(outside, folder.dir / "settings.txt");
+    ASSERT_TRUE(saveAppConfig(folder.dir.string(), AppConfig{}));
+    EXPECT_FALSE(fs::is_symlink(folder.dir / "settings.txt"));
+    EXPECT_TRUE(fs::is_regular_file(folder.file()));
+    std::ifstream in(outside);
+    const std::string kept((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(kept, "ui_scale = 2\n");
+
+    std::ofstream(folder.dir / "mine.txt") << "ui_scale = 2\n";
+    fs::remove(folder.dir / "settings.txt");
+    fs::create_symlink("mine.txt", folder.dir / "settings.txt");
+    ASSERT_TRUE(saveAppConfig(folder.dir.string(), AppConfig{}));
+    EXPECT_TRUE(fs::is_symlink(folder.dir / "settings.txt"));
+    EXPECT_EQ(loadAppConfig(folder.dir.string()).uiScale, AppConfig{}.uiScale);
 }

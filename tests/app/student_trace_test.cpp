@@ -4,6 +4,7 @@
 // command line's --compare.
 #include "app.h"
 #include "options.h"
+#include "test_fixtures.h"
 
 #include <gtest/gtest.h>
 
@@ -112,9 +113,9 @@ TEST(StudentTrace, ABadFileKeepsWhatWasOpenAndSaysWhere) {
 }
 
 TEST(StudentTrace, TheCommandLineOpensATraceInGxpUnits) {
-    const char* ok[] = {"sandbox", "point_of_impact", "--compare", "t.csv",       "--trace-units",
-                        "gxp",     "--px-per-m",      "50",        "--px-origin", "40,30"};
-    const ParsedOptions p = parseOptions(10, ok);
+    const ParsedOptions p =
+        parseCommandLine({"sandbox", "point_of_impact", "--compare", "t.csv", "--trace-units",
+                          "gxp", "--px-per-m", "50", "--px-origin", "40,30"});
     ASSERT_FALSE(p.exit);
     EXPECT_EQ(p.options.compareTrace, "t.csv");
     EXPECT_EQ(p.options.traceUnits.units, TraceUnits::Gxp);

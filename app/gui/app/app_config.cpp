@@ -208,10 +208,17 @@ bool saveAppConfig(const std::string& dir, const AppConfig& config) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) return false;
-    // A settings.txt that is not a regular file (a FIFO, a device node, a link to one, an empty
-    // directory) is replaced, not written through: nothing is written outside this folder.
+    // A settings.txt that is not a regular file of this folder (a FIFO, a device node, a link to
+    // one or to a file in another folder, an empty directory) is replaced, not written through:
+    // nothing is written outside this folder.
     const std::string path = dir + "/settings.txt";
+    std::error_code targetError, dirError;
+    const std::filesystem::path target = std::filesystem::canonical(path, targetError);
+    const bool inside = !targetError &&
+                        target.parent_path() == std::filesystem::canonical(dir, dirError) &&
+                        !dirError;
     struct stat st {};
-    if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) std::filesystem::remove(path, ec);
+    if (::stat(path.c_str(), &st) == 0 && (!S_ISREG(st.st_mode) || !inside))
+        std::filesystem::remove(path, ec);
     return writeFileSafely(path, formatAppConfig(config));
 }

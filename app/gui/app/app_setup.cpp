@@ -46,9 +46,18 @@ bool openFirst(App& app, const Options& options, const std::string& lastScene, s
         }
         return true;
     }
-    if (!lastScene.empty() && loadScene(app, lastScene)) return true;
+    // The last scene (a saved setting) may be a file that no longer loads: the default opens and
+    // the reason stays in the panel's message (the window also prints it as a settings warning).
+    std::string lastSceneError;
+    if (!lastScene.empty()) {
+        if (loadScene(app, lastScene)) return true;
+        lastSceneError = "the last scene does not open, the default does: " + app.ui.messages.error;
+    }
     const std::string fallback = resolveScenePath(kDefaultSceneFile, app.shipped.scenesDir);
-    if (loadScene(app, fallback)) return true;
+    if (loadScene(app, fallback)) {
+        app.ui.messages.error = lastSceneError;
+        return true;
+    }
     // Nothing loads: an empty world, with the reason on screen.
     Scene empty;
     empty.name = "(no scene)";

@@ -22,6 +22,13 @@ bool parseSize(const std::string& text, int& width, int& height) {
     return true;
 }
 
+std::vector<OutputFile> outputFiles(const Options& o) {
+    return {{"--screenshot", &o.screenshot},
+            {"--layout-json", &o.layoutJson},
+            {"--text-json", &o.textJson},
+            {"--audio-wav", &o.audioWav}};
+}
+
 ParsedOptions parseOptions(int argc, const char* const* argv) {
     ParsedOptions result;
     Options& o = result.options;
@@ -164,11 +171,7 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
             throw CLI::ValidationError("--record", "needs --frames N (N > 0)");
         }
         // An output may never overwrite an input it was made from (the input would be lost).
-        const std::pair<const char*, const std::string*> outputs[] = {
-            {"--screenshot", &o.screenshot},
-            {"--layout-json", &o.layoutJson},
-            {"--audio-wav", &o.audioWav}};
-        for (const auto& [flag, output] : outputs)
+        for (const auto& [flag, output] : outputFiles(o))
             for (const std::string* input : {&o.scene, &o.lesson, &o.compareTrace})
                 if (!output->empty() && !input->empty() && sameExistingFile(*output, *input))
                     throw CLI::ValidationError(flag, "'" + *output +

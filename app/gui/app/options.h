@@ -45,6 +45,14 @@ struct Options {
     TraceUnitsSpec traceUnits;
 };
 
+// The files a run writes, by flag: none may be an input of the run (the scene, the lesson, the
+// --compare trace, a lesson's scene file), by any spelling or link.
+struct OutputFile {
+    const char* flag;
+    const std::string* path; // "" when not given
+};
+std::vector<OutputFile> outputFiles(const Options& o);
+
 // Parses "WxH" (each 16..16384); false otherwise.
 bool parseSize(const std::string& text, int& width, int& height);
 

@@ -18,11 +18,6 @@ constexpr std::size_t kDiagramArrowsWithHeads = 40;
 // Segments of the chain drawn at most (a software rasteriser pays for each).
 constexpr std::size_t kDiagramSegments = 200;
 
-ImVec2 toScreen(const App& app, Vec2 p) {
-    const Vec2 s = app.view.camera.worldToScreen(p);
-    return ImVec2(static_cast<float>(s.x), static_cast<float>(s.y));
-}
-
 void arrow(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 color, float width, float head) {
     const float dx = b.x - a.x, dy = b.y - a.y;
     const float len = std::sqrt(dx * dx + dy * dy);

@@ -5,6 +5,7 @@
 // the rule |dvt| <= mu·|dvn| is in resolve.h and the inspector prints its numbers). Marks only,
 // no text: what they mean is the checkbox's tooltip, the numbers are the inspector's.
 #include "app_frame.h"
+#include "overlay_window.h"
 #include "ui_style.h"
 
 #include <imgui.h>
@@ -13,11 +14,6 @@
 #include <cmath>
 
 namespace {
-
-ImVec2 toScreen(const App& app, Vec2 p) {
-    const Vec2 s = app.view.camera.worldToScreen(p);
-    return ImVec2(static_cast<float>(s.x), static_cast<float>(s.y));
-}
 
 // The body `index` names as an axis-aligned box: a block, or a wall (a face of the bounds,
 // extended outward: only its inner face and its span matter here).

@@ -15,11 +15,6 @@
 
 namespace {
 
-ImVec2 toScreen(const App& app, Vec2 p) {
-    const Vec2 s = app.view.camera.worldToScreen(p);
-    return ImVec2(static_cast<float>(s.x), static_cast<float>(s.y));
-}
-
 // How far apart two positions are: the larger difference of the two axes (m).
 double apart(Vec2 a, Vec2 b) {
     return std::max(std::abs(a.x - b.x), std::abs(a.y - b.y));

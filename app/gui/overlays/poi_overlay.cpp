@@ -15,11 +15,6 @@
 
 namespace {
 
-ImVec2 toScreen(const App& app, Vec2 p) {
-    const Vec2 s = app.view.camera.worldToScreen(p);
-    return ImVec2(static_cast<float>(s.x), static_cast<float>(s.y));
-}
-
 void box(const App& app, ImDrawList* dl, Vec2 centre, Vec2 size, Mark mark, float width,
          bool dashed) {
     const ImU32 color = uiMarkColor(mark);

@@ -6,6 +6,7 @@
 #include "app_setup.h"
 #include "audio_out.h"
 #include "options.h"
+#include "printable.h"
 #include "renderer.h"
 #include "scene_library.h"
 #include "ui_renderer_gl.h"
@@ -55,6 +56,10 @@ int runWindow(const Options& options, char** argv, int argc) {
         std::fprintf(stderr, "sandbox: %s\n", error.c_str());
         return 1;
     }
+    if (!config.lastScene.empty() && !app.ui.messages.error.empty()) // it did not load
+        std::fprintf(stderr, "sandbox: %s:%zu: %s\n",
+                     printable(configDir + "/settings.txt", kPrintablePath).c_str(),
+                     config.lastSceneLine, app.ui.messages.error.c_str());
     if (!settingsWarnings.empty() && app.ui.messages.error.empty())
         app.ui.messages.error = settingsWarnings.front();
     setUiScale(app.view, options.uiScale > 0.0f ? options.uiScale : config.uiScale);

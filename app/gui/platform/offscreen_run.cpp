@@ -298,6 +298,20 @@ int benchmark(App& app, Offscreen& off, const Options& o) {
     return o.screenshot.empty() ? 0 : writeScreenshot(off, o);
 }
 
+// A lesson's scene files are inputs of the run too (the scene, the lesson and the --compare
+// trace are refused by parseOptions): the message for an output that is one, or "".
+std::string outputOverLessonScene(const App& app, const Options& o) {
+    if (!app.lesson.active()) return "";
+    for (const auto& [flag, output] : outputFiles(o))
+        for (const LessonStep& step : app.lesson.lesson->steps)
+            if (!output->empty() && !step.sceneSource.empty() &&
+                sameExistingFile(*output, step.sceneSource))
+                return std::string(flag) + ": '" + printable(*output) +
+                       "' is a scene file of the lesson, an input of this run; the output may "
+                       "not overwrite it";
+    return "";
+}
+
 } // namespace
 
 int runOffscreen(const Options& options) {
@@ -311,6 +325,10 @@ int runOffscreen(const Options& options) {
     if (!setupApp(app, o, "", &error)) {
         std::fprintf(stderr, "sandbox: %s\n", error.c_str());
         return 1;
+    }
+    if (const std::string clash = outputOverLessonScene(app, o); !clash.empty()) {
+        std::fprintf(stderr, "sandbox: %s\n", clash.c_str()); // bad usage, as in parseOptions
+        return 2;
     }
     if (o.screenshot.empty() && o.record.empty() && o.benchmarkFrames <= 0 &&
         o.recordSteps.empty()) { // --audio-wav alone: simulate and listen, draw nothing

@@ -10,6 +10,7 @@
 #include <vector>
 
 class SceneRenderer;
+struct ImDrawList;
 
 // Between ImGui::NewFrame() and ImGui::Render(): the key presses since the last frame, the mouse,
 // the simulation (when `runClock`: the window passes real time; the offscreen renderer steps
@@ -43,3 +44,7 @@ void handleSceneMouse(App& app);
 // values) in app.ui.takenOnScreen, for the overlays' labels drawn after it (placeSceneLabel).
 // The overlays themselves (the table in vocabulary.h) are drawOverlays' (overlay_window.h).
 void drawSceneDecorations(App& app);
+// Its status badge in the scene's top left corner (status_badge.cpp): the method, the time and the
+// collisions (in present mode the scene's caption), PAUSED or SLOW MOTION, the frame of reference
+// when it is not the world's, and how to start.
+void drawStatusBadge(const App& app, ImDrawList* dl);

@@ -23,6 +23,11 @@ ScreenRect screenBox(const App& app, Vec2 centre, Vec2 size, double grow) {
 
 } // namespace
 
+ImVec2 toScreen(const App& app, Vec2 p) {
+    const Vec2 s = app.view.camera.worldToScreen(p);
+    return ImVec2(static_cast<float>(s.x), static_cast<float>(s.y));
+}
+
 ImVec2 sceneCaptionPlace(const App& app, float width, float height,
                          const std::vector<WorldBox>& boxes) {
     const double font = ImGui::GetFontSize(), s = app.view.uiScale;

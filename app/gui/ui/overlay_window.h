@@ -24,6 +24,8 @@ void recordShownWindow(App& app, const char* name);
 // F6: the window after the one with the keyboard focus in this frame's drawing order (the panel,
 // the overlay windows, Help), or the first; "" when none is shown.
 std::string nextWindowForKeyboard(const App& app);
+// Where the camera shows the world's point `p` (m) on screen (px), as ImGui draws it.
+ImVec2 toScreen(const App& app, Vec2 p);
 // Where an overlay's label of `size` px wanted at `at` (its top-left) goes over the scene: there,
 // or moved up or down by lines until it overlaps nothing taken on screen this frame (the blocks,
 // their labels, the arrows' values: app.ui.takenOnScreen); the spot is then taken too

@@ -1,15 +1,13 @@
 // The scene's ImGui side: the mouse in the scene (fed to mouse_tool), and what is drawn over the
 // GL scene with ImGui's background draw list, in the scene labels' own font: block labels (with
 // the current mass), axis numbers, the values of arrows too long to draw to scale, the reference
-// line of a resting stack, the status badge with the "P to play" hint (or, in present mode, the
-// caption), a large collision count where the count is the lesson, the fling readout and the
-// hover tooltip.
+// line of a resting stack, the status badge (status_badge.cpp), a large collision count where the
+// count is the lesson, the fling readout and the hover tooltip.
 #include "app_frame.h"
 #include "overlay_window.h"
 
 #include "placement.h"
 #include "scene_geometry.h"
-#include "screen_text.h"
 #include "text_format.h"
 #include "ui_style.h"
 
@@ -196,102 +194,6 @@ void drawAxisNumbers(const App& app, ImDrawList* dl) {
     dl->AddText(
         ImVec2(static_cast<float>(last.x) + ImGui::CalcTextSize(text).x * 0.5f + 4.0f, xRow), color,
         "m");
-}
-
-// A text on a rounded plate; returns its width with the padding.
-float plate(ImDrawList* dl, ImVec2 at, const char* text, ImU32 bg, ImU32 fg, float pad) {
-    const ImVec2 size = ImGui::CalcTextSize(text);
-    dl->AddRectFilled(ImVec2(at.x - pad * 0.5f, at.y - pad * 0.25f),
-                      ImVec2(at.x + size.x + pad * 0.5f, at.y + size.y + pad * 0.25f), bg, 4.0f);
-    dl->AddText(at, fg, text);
-    return size.x + pad * 1.5f;
-}
-
-// `text` cut to `width` pixels with "..." at the end (whole UTF-8 characters).
-std::string fitted(const std::string& text, float width) {
-    if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
-    std::string s = text;
-    while (!s.empty()) {
-        do {
-            s.pop_back();
-        } while (!s.empty() && (static_cast<unsigned char>(s.back()) & 0xC0) == 0x80);
-        if (!s.empty() && (static_cast<unsigned char>(s.back()) & 0x80)) s.pop_back();
-        if (ImGui::CalcTextSize((s + "...").c_str()).x <= width) return s + "...";
-    }
-    return "";
-}
-
-void drawBadge(const App& app, ImDrawList* dl) {
-    // The screen-text contract's parts (screen_text.h): the badge is the status, present mode's
-    // one line the caption.
-    const TextRole role(dl, "status");
-    const ScreenRect& vp = app.view.camera.viewport();
-    const float pad = 8.0f * app.view.uiScale;
-    ImVec2 at(static_cast<float>(vp.x) + pad * 1.5f, static_cast<float>(vp.y) + pad);
-    const ImU32 plateBg = uiLightTheme() ? IM_COL32(235, 236, 240, 230) : IM_COL32(20, 22, 30, 200);
-    const ImU32 plateFg = uiLightTheme() ? IM_COL32(20, 22, 30, 255) : IM_COL32(225, 230, 240, 255);
-    if (app.view.presentMode && app.lesson.active()) {
-        // A lesson's caption bar says it all (lesson_bar.cpp): nothing more over the scene.
-    } else if (app.view.presentMode) {
-        // The caption: what the scene is, the method and the time, on one line, slide-sized.
-        const TextRole captionRole(dl, "caption");
-        ImGui::PushFont(uiCaptionFont());
-        const float room = static_cast<float>(vp.width) - pad * 4.0f;
-        std::string caption = presentCaption(app.sim.scene.name, app.sim.scene.description,
-                                             app.sim.world().settings.method, app.sim.world().time);
-        if (ImGui::CalcTextSize(caption.c_str()).x > room) {
-            const std::string tail = presentCaption("", "", app.sim.world().settings.method,
-                                                    app.sim.world().time, false);
-            const float tailWidth = ImGui::CalcTextSize(tail.c_str()).x;
-            std::string what = app.sim.scene.name;
-            if (!app.sim.scene.description.empty())
-                what += ": " + firstSentence(app.sim.scene.description);
-            caption = fitted(what, room - tailWidth) + tail;
-        }
-        at.x += plate(dl, at, caption.c_str(), plateBg, plateFg, pad);
-        ImGui::PopFont();
-    } else {
-        // One count of collisions (the lesson's and sandbox-cli's); the rest rule's resting
-        // contacts apart, so a settled pile's count stands still. Those are counted as what
-        // they are, each a merge by the rest rule (a block lying on the floor: one per substep),
-        // not as that many things touching.
-        const StepTotals& totals = app.sim.run.totals;
-        char text[200];
-        const int n = std::snprintf(
-            text, sizeof text, "%s   t = %.2f s   %llu collision%s",
-            methodName(app.sim.world().settings.method), app.sim.world().time,
-            static_cast<unsigned long long>(totals.collisions), totals.collisions == 1 ? "" : "s");
-        if (totals.contacts > 0 && n > 0 && n < static_cast<int>(sizeof text)) {
-            std::snprintf(
-                text + n, sizeof text - static_cast<std::size_t>(n), "   %llu rest-rule merge%s",
-                static_cast<unsigned long long>(totals.contacts), totals.contacts == 1 ? "" : "s");
-        }
-        at.x += plate(dl, at, text, plateBg, plateFg, pad);
-    }
-    const char* state = app.sim.paused       ? "PAUSED"
-                        : app.sim.slowMotion ? "SLOW MOTION  5 fps"
-                                             : nullptr;
-    if (state && !app.view.presentMode) {
-        const ImU32 bg = app.sim.paused ? IM_COL32(220, 150, 40, 235) : IM_COL32(60, 130, 220, 235);
-        at.x += plate(dl, at, state, bg, IM_COL32(15, 15, 20, 255), pad);
-    }
-    // The frame of reference, when it is not the world's (the walls drift: that is why).
-    if (app.view.frame == ViewFrame::CentreOfMass && !app.view.presentMode) {
-        const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
-        const std::string text =
-            "centre-of-mass frame, u = " +
-            (isRoundingNoise(u.y, length(u))
-                 ? formatQuantity(u.x, "m/s")
-                 : "(" + formatNumber(u.x) + ", " + formatNumber(u.y) + ") m/s");
-        at.x += plate(dl, at, text.c_str(), IM_COL32(255, 235, 90, 235), IM_COL32(15, 15, 20, 255),
-                      pad);
-    }
-    // Paused at t = 0: how to start (the first time the app runs, with the first keys).
-    const std::string hint =
-        startHint(app.sim.paused, app.sim.world().time, app.ui.firstLaunch, app.ui.touchUi);
-    if (!hint.empty()) {
-        plate(dl, at, hint.c_str(), IM_COL32(60, 150, 90, 235), IM_COL32(10, 16, 12, 255), pad);
-    }
 }
 
 // The collision count, large, in the world's top right corner, where the count is the lesson:
@@ -503,7 +405,7 @@ void drawSceneDecorations(App& app) {
     forces.thrust = app.sim.thrustForce();
     drawForceValues(app, forces, dl);
     drawLargeCount(app, dl);
-    drawBadge(app, dl);
+    drawStatusBadge(app, dl);
     drawFlingReadout(app, dl);
     ImGui::PopFont();
     drawHoverTooltip(app);
