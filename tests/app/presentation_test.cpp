@@ -429,10 +429,17 @@ TEST(Classroom, PresentCaptionSaysWhatTheSceneIsTheMethodAndTheTime) {
 }
 
 TEST(Classroom, PausedAtTheStartSaysPToPlay) {
-    EXPECT_EQ(startHint(true, 0.0, false), "P to play");
-    EXPECT_NE(startHint(true, 0.0, true).find("F1"), std::string::npos);
-    EXPECT_EQ(startHint(false, 0.0, true), "");
-    EXPECT_EQ(startHint(true, 1.0, false), "");
+    EXPECT_EQ(startHint(true, 0.0, false, false), "P to play");
+    EXPECT_NE(startHint(true, 0.0, true, false).find("F1"), std::string::npos);
+    EXPECT_EQ(startHint(false, 0.0, true, false), "");
+    EXPECT_EQ(startHint(true, 1.0, false, false), "");
+    // On a touch screen the hint names the buttons, never a key.
+    for (bool first : {false, true}) {
+        const std::string touch = startHint(true, 0.0, first, true);
+        EXPECT_NE(touch.find("Play"), std::string::npos) << touch;
+        EXPECT_EQ(touch.find("P to"), std::string::npos) << touch;
+        EXPECT_EQ(touch.find("F1"), std::string::npos) << touch;
+    }
 }
 
 TEST(Classroom, TypedValuesAreCheckedAgainstTheInputLimits) {

@@ -329,6 +329,8 @@ def first_frame(page, base):
     # The first visit's hint: there, dismissed, and not there the next time.
     hint = "!document.getElementById('hint').hidden"
     check(page.evaluate(hint), "no first-visit hint")
+    words = page.evaluate("document.getElementById('hint').innerText")
+    check("F1" in words, f"the desktop's hint does not name F1: {words!r}")
     # It lies beside the panel (covering none of its controls), inside the page.
     box = page.evaluate("(() => { const r = document.getElementById('hint')"
                         ".getBoundingClientRect(); return [r.left, r.right, r.bottom]; })()")
@@ -718,6 +720,9 @@ def phone(base):
                              "Math.max(...b.map(e => e.right))]; })()")
         check(hint[0] and 0 <= hint[1] and hint[2] <= 390 and hint[3] >= 44 and
               hint[1] <= hint[4] and hint[5] <= hint[2], f"the first visit's hint: {hint}")
+        # A phone has no F1: the hint names only the button (innerText leaves hidden text out).
+        words = page.evaluate("document.getElementById('hint').innerText")
+        check("F1" not in words and "Help button" in words, f"the phone's hint says {words!r}")
         panel = s["panelOnScreen"]
         page.tap(panel[0] + 40, panel[1] + panel[3] / 2)  # "Controls", the bar's first button
         s = page.status()

@@ -38,8 +38,12 @@ std::string lessonBarStatus(bool presentMode, Method method, double time) {
     return "PageDown next, PageUp back, R restart";
 }
 
-std::string startHint(bool paused, double time, bool firstLaunch) {
+std::string startHint(bool paused, double time, bool firstLaunch, bool touch) {
     if (!paused || time != 0.0) return "";
+    // A finger has no P or F1: it names the bar's buttons instead (the browser on a phone).
+    if (touch)
+        return firstLaunch ? "Tap Play   ·   Step: one step   ·   Help: gestures, overlays"
+                           : "Tap Play";
     if (firstLaunch) return "P to play   ·   N one step   ·   F1 help (keys, overlays)";
     return "P to play";
 }

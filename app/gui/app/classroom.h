@@ -34,7 +34,7 @@ std::string lessonBarStatus(bool presentMode, Method method, double time);
 
 // The hint shown over a paused scene: at t = 0 "P to play" (and, the first time the app runs,
 // the keys to start with); "" while it runs or once it has run.
-std::string startHint(bool paused, double time, bool firstLaunch);
+std::string startHint(bool paused, double time, bool firstLaunch, bool touch);
 
 // A number typed into a field of the controls panel (Ctrl+click on a slider, or a drag field),
 // checked against its limit in engine/input_limits.h, the table that scene files and flags use:

@@ -261,11 +261,16 @@ void viewSection(App& app) {
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
     ImGui::SliderFloat("volume", &app.sim.sound.volume, 0.0f, 1.0f, "%.2f",
                        ImGuiSliderFlags_AlwaysClamp);
-    if (ImGui::Button("Fit view (F)")) applyAction(app, Action::FitView);
+    // The keys in the labels only where there is a keyboard: a phone has no F1 (the "###" keeps
+    // each button's id the same either way).
+    const bool keys = !app.ui.touchUi;
+    if (ImGui::Button(keys ? "Fit view (F)###fit" : "Fit view###fit"))
+        applyAction(app, Action::FitView);
     ImGui::SameLine();
-    if (ImGui::Button("Present (F5)")) applyAction(app, Action::TogglePresent);
+    if (ImGui::Button(keys ? "Present (F5)###present" : "Present###present"))
+        applyAction(app, Action::TogglePresent);
     ImGui::SameLine();
-    if (ImGui::Button("Help (F1)")) app.ui.helpOpen = true;
+    if (ImGui::Button(keys ? "Help (F1)###help" : "Help###help")) app.ui.helpOpen = true;
 }
 
 } // namespace

@@ -105,7 +105,8 @@ void drawStatusBadge(const App& app, ImDrawList* dl) {
                       pad);
     }
     // Paused at t = 0: how to start (the first time the app runs, with the first keys).
-    const std::string hint = startHint(app.sim.paused, app.sim.world().time, app.ui.firstLaunch);
+    const std::string hint =
+        startHint(app.sim.paused, app.sim.world().time, app.ui.firstLaunch, app.ui.touchUi);
     if (!hint.empty()) {
         plate(dl, at, hint.c_str(), IM_COL32(60, 150, 90, 235), IM_COL32(10, 16, 12, 255), pad);
     }
