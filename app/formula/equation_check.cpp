@@ -64,6 +64,21 @@ bool nameChar(char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '\'';
 }
 
+// True when the line starting at `at` continues the chain of the line before: after its
+// indentation it starts with an operator or a relation (a formula wrapped before an operator,
+// wrapFormula: "p before = 1·3.594 + 1000000·0.99999354\n  = 999997.136"); a minus only with a
+// space after it (binary; "-6" starts a line of its own).
+bool continuesChain(const std::string& s, std::size_t at) {
+    while (at < s.size() && s[at] == ' ') ++at;
+    if (at >= s.size()) return false;
+    if (std::strchr("=+*/<>", s[at])) return true;
+    for (const char* op : {"\u00b7", "\u00d7", "\u2264", "\u2265"})
+        if (startsWith(s, at, op)) return true;
+    for (const char* minus : {"- ", "\u2212 "})
+        if (startsWith(s, at, minus)) return true;
+    return false;
+}
+
 std::vector<Token> tokenize(const std::string& s) {
     std::vector<Token> out;
     std::size_t i = 0;
@@ -71,7 +86,7 @@ std::vector<Token> tokenize(const std::string& s) {
         const char c = s[i];
         Token t;
         t.begin = i;
-        if (c == ' ' || c == '\t') {
+        if (c == ' ' || c == '\t' || (c == '\n' && continuesChain(s, i + 1))) {
             ++i;
             continue;
         }

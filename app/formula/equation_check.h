@@ -17,6 +17,9 @@
 //   check itself. A side with a name (`u`, `mu·|dvn|`) is a label: it takes the group's value.
 // - Between groups, < <= > >= hold between the printed values (0.4 < 1.15).
 // - An expression that evaluates to inf or nan never holds (`inf·0 = nan`).
+// - A line break ends a chain, unless the next line starts with an operator or a relation (after
+//   spaces; a minus followed by a space): a formula wrapped before an operator reads as one
+//   chain (text_format.h, wrapFormula).
 #pragma once
 
 #include "text_format.h"

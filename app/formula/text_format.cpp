@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <vector>
 
 bool isRoundingNoise(double value, double scale) {
     if (!std::isfinite(value)) return false;
@@ -162,20 +164,103 @@ void wrapParagraph(const std::string& text, double width,
     out += line;
 }
 
-} // namespace
+using WrapParagraph = void (*)(const std::string&, double,
+                               const std::function<double(const std::string&)>&, std::string&);
 
-std::string wrapAtSpaces(const std::string& text, double width,
-                         const std::function<double(const std::string&)>& measure) {
+// Each paragraph of `text` (its own newlines kept) wrapped by `wrap`.
+std::string wrapParagraphs(const std::string& text, double width,
+                           const std::function<double(const std::string&)>& measure,
+                           WrapParagraph wrap) {
     std::string out;
     std::size_t start = 0;
     while (true) {
         const std::size_t newline = text.find('\n', start);
-        wrapParagraph(
-            text.substr(start, newline == std::string::npos ? std::string::npos : newline - start),
-            width, measure, out);
+        wrap(text.substr(start, newline == std::string::npos ? std::string::npos : newline - start),
+             width, measure, out);
         if (newline == std::string::npos) break;
         out += '\n';
         start = newline + 1;
     }
     return out;
+}
+
+} // namespace
+
+std::string wrapAtSpaces(const std::string& text, double width,
+                         const std::function<double(const std::string&)>& measure) {
+    return wrapParagraphs(text, width, measure, wrapParagraph);
+}
+
+namespace {
+
+bool isOperatorWord(const std::string& w) {
+    static const char* const ops[] = {"=",  "+",  "-",      "*",      "/",      "<",      ">",
+                                      "<=", ">=", "\u2212", "\u00b7", "\u00d7", "\u2264", "\u2265"};
+    for (const char* op : ops)
+        if (w == op) return true;
+    return false;
+}
+
+// The words of `text` between `from` and `to` (a line), indented when it continues a formula.
+std::string lineOf(const std::vector<std::string>& words, std::size_t from, std::size_t to) {
+    std::string line = from > 0 && isOperatorWord(words[from]) ? "  " : "";
+    for (std::size_t k = from; k < to; ++k) line += (k > from ? " " : "") + words[k];
+    return line;
+}
+
+void wrapFormulaParagraph(const std::string& text, double width,
+                          const std::function<double(const std::string&)>& measure,
+                          std::string& out) {
+    std::vector<std::string> words;
+    for (std::size_t i = 0;;) {
+        const std::size_t end = std::min(text.find(' ', i), text.size());
+        words.push_back(text.substr(i, end - i));
+        if (end >= text.size()) break;
+        i = end + 1;
+    }
+    // A line may start at word k when neither k nor the word before it is empty (a double space
+    // stays inside a line) and the word before is not an operator.
+    const auto canStart = [&](std::size_t k) {
+        return k > 0 && !words[k].empty() && !words[k - 1].empty() && !isOperatorWord(words[k - 1]);
+    };
+    std::vector<std::size_t> starts{0};
+    while (true) {
+        const std::size_t from = starts.back();
+        // The last break that fits; the last one between two clauses (after a word ending in
+        // ',', ':' or ';': "v1 = 6, | v2 = 0") instead when that keeps half the line.
+        std::size_t next = words.size(), first = words.size(), clause = words.size();
+        for (std::size_t k = from + 1; k < words.size(); ++k) {
+            if (!canStart(k)) continue;
+            if (first == words.size()) first = k;
+            if (measure(lineOf(words, from, k)) > width) break;
+            next = k; // the line [from, k) fits: break there unless a later one does too
+            if (std::strchr(",:;", words[k - 1].back())) clause = k;
+        }
+        if (measure(lineOf(words, from, words.size())) <= width) break;
+        if (clause != words.size() && measure(lineOf(words, from, clause)) >= 0.5 * width)
+            next = clause;
+        if (next == words.size()) next = first; // nothing fits: the shortest piece overflows
+        if (next == words.size()) break;
+        starts.push_back(next);
+    }
+    // One word alone on the last line: the line before gives it its last piece, if that fits.
+    if (starts.size() >= 2 && starts.back() + 1 == words.size()) {
+        const std::size_t before = starts[starts.size() - 2];
+        for (std::size_t k = starts.back() - 1; k > before; --k) {
+            if (!canStart(k)) continue;
+            if (measure(lineOf(words, k, words.size())) <= width) starts.back() = k;
+            break;
+        }
+    }
+    for (std::size_t i = 0; i < starts.size(); ++i) {
+        if (i > 0) out += '\n';
+        out += lineOf(words, starts[i], i + 1 < starts.size() ? starts[i + 1] : words.size());
+    }
+}
+
+} // namespace
+
+std::string wrapFormula(const std::string& text, double width,
+                        const std::function<double(const std::string&)>& measure) {
+    return wrapParagraphs(text, width, measure, wrapFormulaParagraph);
 }

@@ -36,8 +36,10 @@
       false, nullptr, (DockWish{}), drawnByTheSceneRenderer)                                       \
     X(vectors, "vectors", "arrows (V)", "Velocity (thin) and momentum p = m·v (wide) arrows",      \
       true, nullptr, (DockWish{}), drawnByTheSceneRenderer)                                        \
+    /* Under the panel: the time window and CSV row (115 px at UI scale 1) and three plots of */ \
+    /* 14% of the height each (151 px at 1080p), taken from the panel, not from the scene.     */ \
     X(plots, "plots", "plots", "Velocity, momentum and energy against time",                       \
-      false, "Plots", (DockWish{DockSide::Right, 240.0, 3.0, 400.0}),                              \
+      false, "Plots", (DockWish{DockSide::Panel, 115.0, 3.0, 400.0, 0.42}),                        \
       drawPlotsOverlay)                                                                            \
     X(inspector, "inspector", "inspector", "The last collisions with the lecture's formula filled in", \
       false, "Collision inspector", (DockWish{DockSide::Right, 200.0, 2.0, 430.0}),                \

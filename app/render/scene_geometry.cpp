@@ -18,7 +18,7 @@ double displayedArrowPx(double lengthPx, double kneePx) {
     return std::min(2.0 * kneePx, kneePx * (1.0 + std::log(lengthPx / kneePx)));
 }
 
-ArrowOnScreen arrowOnScreen(const Camera& camera, Vec2 from, Vec2 vector) {
+ArrowOnScreen arrowOnScreen(const Camera& camera, Vec2 from, Vec2 vector, const Bounds* arena) {
     ArrowOnScreen a;
     const double ppm = camera.pixelsPerMetre();
     const double lengthPx = length(vector) * ppm;
@@ -29,10 +29,19 @@ ArrowOnScreen arrowOnScreen(const Camera& camera, Vec2 from, Vec2 vector) {
     const ScreenRect& vp = camera.viewport();
     const double knee = kArrowKneeShare * std::min(vp.width, vp.height);
     double shown = displayedArrowPx(lengthPx, knee);
-    // Cut where the arrow leaves the viewport (the head stays inside it).
+    // Cut where the arrow leaves the viewport or the arena (the head stays inside both).
     const Vec2 s = camera.worldToScreen(from);
     const Vec2 dir{vector.x / length(vector), -vector.y / length(vector)}; // screen, y down
-    const double limits[2][2] = {{vp.x, vp.x + vp.width}, {vp.y, vp.y + vp.height}};
+    double limits[2][2] = {{vp.x, vp.x + vp.width}, {vp.y, vp.y + vp.height}};
+    if (arena) {
+        const Vec2 a = camera.worldToScreen(arena->min), b = camera.worldToScreen(arena->max);
+        const double box[2][2] = {{std::min(a.x, b.x), std::max(a.x, b.x)},
+                                  {std::min(a.y, b.y), std::max(a.y, b.y)}};
+        for (int k = 0; k < 2; ++k) {
+            limits[k][0] = std::max(limits[k][0], box[k][0]);
+            limits[k][1] = std::min(limits[k][1], box[k][1]);
+        }
+    }
     const double start[2] = {s.x, s.y}, d[2] = {dir.x, dir.y};
     for (int k = 0; k < 2; ++k) {
         if (start[k] < limits[k][0] || start[k] > limits[k][1]) continue; // from off screen
@@ -144,12 +153,13 @@ void SceneGeometry::addTrails(const SceneView& view, const Trails& trails) {
 // frame: w = v - u in the centre of mass's.
 void SceneGeometry::addArrows(const SceneView& view) {
     const double px = view.camera->pixelsToMetres(1.0);
+    const Bounds& bounds = view.world->bounds; // arrows end at the arena's walls
     // Forces: wide arrows under the velocity arrows (a thrust along the motion shares their line).
     for (std::size_t i = 0; i < view.world->blocks.size(); ++i) {
         const Vec2 f = shownForce(view, i);
         if (f == Vec2{}) continue;
         const Vec2 from = view.world->blocks[i].position;
-        const Vec2 tip = arrowOnScreen(*view.camera, from, f * kForceArrowScale).tip;
+        const Vec2 tip = arrowOnScreen(*view.camera, from, f * kForceArrowScale, &bounds).tip;
         over.arrow(from, tip, kForceShaftPx * px, kArrowHeadPx * 1.3 * px, view.theme->force);
     }
     if (!view.vectors) return;
@@ -160,7 +170,8 @@ void SceneGeometry::addArrows(const SceneView& view) {
         if (!bl.isDynamic()) continue;
         const Vec2 tip =
             arrowOnScreen(*view.camera, bl.position,
-                          (bl.velocity - view.frameVelocity) * (bl.mass * kMomentumArrowScale))
+                          (bl.velocity - view.frameVelocity) * (bl.mass * kMomentumArrowScale),
+                          &bounds)
                 .tip;
         if (heads)
             momenta.lineArrow(bl.position, tip, kArrowHeadPx * 1.3 * px, view.theme->momentum);
@@ -169,9 +180,10 @@ void SceneGeometry::addArrows(const SceneView& view) {
     }
     for (const Block& bl : view.world->blocks) {
         if (bl.kind == BodyKind::Static) continue;
-        const Vec2 tip = arrowOnScreen(*view.camera, bl.position,
-                                       (bl.velocity - view.frameVelocity) * kVelocityArrowScale)
-                             .tip;
+        const Vec2 tip =
+            arrowOnScreen(*view.camera, bl.position,
+                          (bl.velocity - view.frameVelocity) * kVelocityArrowScale, &bounds)
+                .tip;
         over.lineArrow(bl.position, tip, kArrowHeadPx * px, view.theme->velocity);
     }
 }

@@ -51,7 +51,8 @@ Vec2 shownForce(const SceneView& view, std::size_t index);
 
 // Long arrows keep their heads on screen: up to the knee (a share of the viewport's smaller side)
 // an arrow is drawn to scale; beyond it, its length grows with the logarithm (at most twice the
-// knee), and it is cut at the viewport's edge; the label then gives the value (300 m/s).
+// knee), and it is cut at the viewport's edge and at the arena's walls (it does not leave the
+// arena nor the screen); the label then gives the value (300 m/s, 19.6 kg·m/s).
 constexpr double kArrowKneeShare = 0.22;
 struct ArrowOnScreen {
     Vec2 tip;            // m, where the head is drawn
@@ -59,8 +60,10 @@ struct ArrowOnScreen {
 };
 // The drawn length (px) of an arrow `lengthPx` long to scale, for a knee of `kneePx`.
 double displayedArrowPx(double lengthPx, double kneePx);
-// The arrow from `from` along `vector` (m, to scale) as drawn through `camera`.
-ArrowOnScreen arrowOnScreen(const Camera& camera, Vec2 from, Vec2 vector);
+// The arrow from `from` along `vector` (m, to scale) as drawn through `camera`, its head inside
+// the viewport and, given, inside `arena` (the world's bounds) where `from` is.
+ArrowOnScreen arrowOnScreen(const Camera& camera, Vec2 from, Vec2 vector,
+                            const Bounds* arena = nullptr);
 // Blocks up to this size on screen (pixels) may be drawn as point sprites.
 constexpr double kMaxPointSpritePx = 64.0;
 // With more moving blocks than this, momentum arrows are drawn without heads (the velocity arrow

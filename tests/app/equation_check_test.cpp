@@ -99,6 +99,21 @@ TEST(EquationCheck, ReadsTheNotationOnScreen) {
     });
 }
 
+// A chain wrapped before an operator (the inspector's narrow window, wrapFormula) reads as one;
+// any other line break ends a chain.
+TEST(EquationCheck, AChainWrappedBeforeAnOperatorReadsOn) {
+    const EquationReport r = checkEquations("p before = 1·6 + 2·0\n  = 6 kg·m/s");
+    EXPECT_TRUE(r.holds()) << problems(r);
+    EXPECT_EQ(r.checked, 1);
+    EXPECT_FALSE(equationsHold("p before = 1·6 + 2·0\n  = 7 kg·m/s"));
+    EXPECT_FALSE(equationsHold("u = (1·6\n + 2·0)/(1 + 2) = 0"));
+    EXPECT_TRUE(equationsHold("5 + 1\n  - 1 = 5")); // a binary minus continues the chain
+    EXPECT_EQ(checkEquations("5 + 1\n  - 1 = 5").checked, 1);
+    // A line starting with a number (or a negative one) starts a chain of its own.
+    EXPECT_TRUE(equationsHold("v1' = 2 - 1·4 = -2\n-6 kg·m/s is not here\n1 + 1 = 2"));
+    EXPECT_EQ(checkEquations("a = 1 + 1 = 2\nb = 2 + 2 = 4").checked, 2);
+}
+
 TEST(EquationCheck, ComparisonsHoldAsPrinted) {
     const EquationReport r =
         checkEquations("friction along y: |dvt| = 0.4 < mu·|dvn| = 0.5·2.3 = 1.15 m/s");

@@ -217,6 +217,97 @@ TEST(LayoutJson, ListsEveryBlockAndPlotAsDrawn) {
     }
 }
 
+// The tick labels of a plot's y axis: numbers in the Plots window, right-aligned just left of
+// the plot's area (within the widget's rectangle, in its left quarter, above the x labels).
+int yTickLabels(const nlohmann::json& texts, const Rect& plot) {
+    int n = 0;
+    for (const auto& t : texts) {
+        const std::string text = t.at("text");
+        if (t.at("window") != "Plots" || text.empty() ||
+            text.find_first_not_of("-0123456789.e+") != std::string::npos)
+            continue;
+        // Above the x axis's labels (the last 1.4 line heights of the widget).
+        const Rect r = rectOf(t.at("rect"));
+        const double px = t.at("px").get<double>();
+        n += inside(r, plot) && r.x + r.w < plot.x + plot.w * 0.25 && r.y > plot.y + 10.0 &&
+             r.y + r.h < plot.y + plot.h - 0.6 * px;
+    }
+    return n;
+}
+
+// Issue 23: the plots that prove lecture3's answers (steps 3, 9 and 10, at their moment) are at
+// least 140 px high at 1080p, each labels three values or more on its y axis, and they take room
+// from the panel, not from the scene (they lie in the panel's column, under it). Also at UI scale
+// 1.5 with every overlay on, where the right column squeezed them to about 40 px.
+TEST(LayoutJson, PlotsAre140PxHighWithThreeYLabelsAt1080p) {
+    struct Shot {
+        std::string name, args;
+    };
+    const std::vector<Shot> shots = {
+        {"plots_step3", "--lesson lecture3 --step 3 --size 1920x1080"},
+        {"plots_step9", "--lesson lecture3 --step 9 --size 1920x1080"},
+        {"plots_step10", "--lesson lecture3 --step 10 --size 1920x1080"},
+        {"plots_every_overlay_ui1_5",
+         "bouncing_squares --frames 30 --size 1920x1080 --ui-scale 1.5 --show " + kEveryOverlay},
+    };
+    for (const Shot& shot : shots) {
+        SCOPED_TRACE(shot.name);
+        const Frame f = frameOf(shot.name, shot.args);
+        ASSERT_TRUE(f.layout.is_object());
+        Rect panel, plotsWindow;
+        for (const auto& w : f.layout.at("windows")) {
+            if (w.at("name") == "Controls") panel = rectOf(w.at("rect"));
+            if (w.at("name") == "Plots") plotsWindow = rectOf(w.at("rect"));
+        }
+        EXPECT_EQ(plotsWindow.x, 0.0);
+        EXPECT_EQ(plotsWindow.w, panel.w); // the panel's column
+        EXPECT_GE(plotsWindow.y, panel.y + panel.h);
+        EXPECT_FALSE(overlap(plotsWindow, rectOf(f.layout.at("scene"))));
+        int shown = 0;
+        for (const auto& p : f.layout.at("plots")) {
+            if (p.at("name") == "tradeoff") continue; // the cost window's chart
+            ++shown;
+            const Rect r = rectOf(p.at("rect"));
+            EXPECT_GE(r.h, 140.0) << p.dump();
+            EXPECT_TRUE(inside(r, plotsWindow)) << p.dump();
+            EXPECT_GE(yTickLabels(f.texts, r), 3) << p.dump();
+        }
+        EXPECT_EQ(shown, 3);
+    }
+}
+
+// Issue 23: step 17's inspector printed `p before = 1·1.59369958 + 1000000·0.99999873 = ...` cut
+// at its window's edge; now every line of it wraps (before an operator) and nothing is clipped.
+TEST(TextJson, TheInspectorOfStep17IsNotClipped) {
+    const Frame f = frameOf("inspector_step17", "--lesson lecture3 --step 17 --size 1920x1080");
+    int lines = 0;
+    bool momentum = false;
+    for (const auto& t : f.texts) {
+        if (t.at("window") != "Collision inspector") continue;
+        ++lines;
+        const std::string text = t.at("text");
+        momentum = momentum || text.rfind("p before = ", 0) == 0;
+        EXPECT_FALSE(t.at("clipped").get<bool>()) << t.dump();
+    }
+    EXPECT_GE(lines, 8);
+    EXPECT_TRUE(momentum);
+}
+
+// Issue 23: an arrow too long for the view ends at its edge with its value written there (step 6:
+// the heavy block's momentum, 20 kg at 9.81 m/s, went through the floor and off the screen).
+TEST(TextJson, AnOverLongArrowsValueIsWrittenInsideTheView) {
+    const Frame f = frameOf("arrow_step6", "--lesson lecture3 --step 6 --size 1920x1080");
+    const Rect scene = rectOf(f.layout.at("scene"));
+    bool written = false;
+    for (const auto& t : f.texts) {
+        if (t.at("window") != "scene" || t.at("text") != "196.2 kg·m/s") continue;
+        written = true;
+        EXPECT_TRUE(inside(rectOf(t.at("rect")), scene)) << t.dump();
+        EXPECT_FALSE(t.at("clipped").get<bool>());
+    }
+    EXPECT_TRUE(written) << f.texts.dump(1);
+}
+
 // Texts of `part` ("caption", "scene", ...), their smallest line height; 0 when there are none.
 double smallestPx(const nlohmann::json& texts, const std::string& part) {
     double least = 0.0;

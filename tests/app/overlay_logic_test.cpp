@@ -218,6 +218,24 @@ TEST(PlotLogic, NiceTicks) {
     EXPECT_EQ(decadeLabel(6.0), "1e+06");
 }
 
+// Issue 23: a plot's y axis labels at least three values. Step 9's energy (0 to 18 J, padded to
+// [-1.8, 19.8]) with room for three parts got a step of 10: only 0 and 10.
+TEST(PlotLogic, AxisTickStepLabelsAtLeastThreeValues) {
+    EXPECT_EQ(niceTicks(-1.8, 19.8, 3).size(), 2u); // what the plots drew before
+    const double step = axisTickStep(-1.8, 19.8, 3, 3);
+    EXPECT_DOUBLE_EQ(step, 5.0);
+    EXPECT_EQ(ticksEvery(-1.8, 19.8, step), (std::vector<double>{0, 5, 10, 15}));
+    // Step 9's momentum after the collision: +6 to -6, padded; -5, 0 and 5 at least.
+    EXPECT_GE(ticksEvery(-7.2, 7.2, axisTickStep(-7.2, 7.2, 3, 2)).size(), 3u);
+    // A flat series (paddedRange gives +-1 around it) and a tiny range still get three.
+    for (const PlotRange r : {paddedRange(0.0, 0.0), PlotRange{1e-7, 3e-7}, PlotRange{-2.4, 0.2}}) {
+        EXPECT_GE(ticksEvery(r.lo, r.hi, axisTickStep(r.lo, r.hi, 3, 2)).size(), 3u)
+            << r.lo << " " << r.hi;
+    }
+    // Where enough fit, the step is niceTickStep's.
+    EXPECT_DOUBLE_EQ(axisTickStep(-0.3, 4.1, 3, 5), niceTickStep(4.4, 5));
+}
+
 TEST(PlotLogic, WhileReplayingTheWindowFollowsTheScrubbedTime) {
     // Live (nothing recorded after now): the scrolling window, now at its right edge.
     EXPECT_DOUBLE_EQ(timelineWindow(25.0, 25.0, 10.0).lo, 15.0);

@@ -3,6 +3,7 @@
 #include "app.h"
 #include "classroom.h"
 #include "dock_layout.h"
+#include "equation_check.h"
 #include "inspector_format.h"
 #include "palette.h"
 #include "save_naming.h"
@@ -75,6 +76,47 @@ TEST(DockLayout, EveryWindowAtTheFourClassroomSizes) {
             EXPECT_DOUBLE_EQ(l.scene.x, l.panel.width); // the scene starts where the panel ends
         }
     }
+}
+
+// Issue 23: the plots take room from the panel, not from the scene: under the panel, in its
+// column, three plots of 14% of the height each (151 px at 1080p) whatever the UI scale; without a
+// panel column they go to the right column as before.
+TEST(DockLayout, PanelSideWindowsTakeRoomFromThePanelNotTheScene) {
+    for (float scale : {1.0f, 1.5f}) {
+        LayoutInput in;
+        in.displayWidth = 1920;
+        in.displayHeight = 1080;
+        in.uiScale = scale;
+        in.panelWidth = 350.0 * scale;
+        in.topInset = 257; // a lesson's caption
+        in.windows = {{"Collision inspector", DockSide::Right, 200, 2, 430}};
+        const Layout without = computeLayout(in);
+        in.windows.push_back({"Plots", DockSide::Panel, 115, 3, 400, 0.42});
+        const Layout l = computeLayout(in);
+        SCOPED_TRACE(scale);
+        expectSound(l, 1920, 1080);
+        EXPECT_EQ(l.scene.x, without.scene.x);
+        EXPECT_EQ(l.scene.width, without.scene.width);
+        EXPECT_EQ(l.scene.height, without.scene.height);
+        const ScreenRect* plots = l.find("Plots");
+        ASSERT_NE(plots, nullptr);
+        EXPECT_EQ(plots->x, 0.0);
+        EXPECT_EQ(plots->width, l.panel.width);
+        EXPECT_EQ(plots->y + plots->height, 1080.0); // at the bottom of the column
+        EXPECT_LE(l.panel.y + l.panel.height, plots->y);
+        EXPECT_NEAR(plots->height, 115 * scale + 0.42 * 1080, 2.0);
+        EXPECT_GE(l.panel.height, 1080 * (1 - kMaxPanelDockShare) - 1);
+    }
+    // No panel column (hidden): the right column.
+    LayoutInput bare;
+    bare.displayWidth = 1920;
+    bare.displayHeight = 1080;
+    bare.windows = {{"Plots", DockSide::Panel, 115, 3, 400, 0.42}};
+    const Layout l = computeLayout(bare);
+    ASSERT_NE(l.find("Plots"), nullptr);
+    EXPECT_EQ(l.find("Plots")->x + l.find("Plots")->width, 1920.0);
+    EXPECT_EQ(l.find("Plots")->height, 1080.0);
+    expectSound(l, 1920, 1080);
 }
 
 TEST(DockLayout, ATopInsetKeepsTheSceneAndTheColumnBelowIt) {
@@ -352,6 +394,36 @@ TEST(Arrows, ShortArrowsToScaleLongOnesCompressedWithTheirHeadsOnScreen) {
     EXPECT_TRUE(cam.viewport().contains(cam.worldToScreen(giant.tip)));
 }
 
+// Issue 23: an arrow too long for the view ends at the arena's wall or the view's edge, whichever
+// comes first (lecture3 step 6: the heavy block's momentum went through the floor and off the
+// screen), so its head and the value written there are in sight.
+TEST(Arrows, AnOverLongArrowEndsInsideTheArenaAndTheView) {
+    Camera cam;
+    cam.setViewport({350, 135, 1570, 945});
+    const Bounds arena{{0, 0}, {20, 12}};
+    cam.fit(arena, 36);
+    // 20 kg falling at 9.81 m/s from y = 5: 196.2 kg·m/s, 29 m of arrow to scale.
+    const Vec2 p = Vec2{0, -196.2} * kMomentumArrowScale;
+    const ArrowOnScreen bare = arrowOnScreen(cam, {13, 5}, p);
+    EXPECT_LT(bare.tip.y, arena.min.y); // without the arena: through the floor
+    const ArrowOnScreen a = arrowOnScreen(cam, {13, 5}, p, &arena);
+    EXPECT_FALSE(a.toScale);
+    EXPECT_GE(a.tip.y, arena.min.y);
+    EXPECT_LT(a.tip.y, 1.0); // it does reach down to the floor
+    EXPECT_DOUBLE_EQ(a.tip.x, 13.0);
+    EXPECT_TRUE(cam.viewport().contains(cam.worldToScreen(a.tip)));
+    // A view that shows only part of the arena (a lesson's camera): the view's edge comes first.
+    Camera close;
+    close.setViewport({350, 135, 1570, 945});
+    close.fit(Bounds{{0, 3}, {18, 12}}, 36);
+    const ArrowOnScreen fast = arrowOnScreen(close, {16, 6}, Vec2{300, 0} * 0.25, &arena);
+    EXPECT_FALSE(fast.toScale);
+    EXPECT_TRUE(close.viewport().contains(close.worldToScreen(fast.tip)));
+    EXPECT_LE(fast.tip.x, arena.max.x);
+    // Short arrows are untouched.
+    EXPECT_TRUE(arrowOnScreen(cam, {10, 6}, Vec2{1, 0} * kVelocityArrowScale, &arena).toScale);
+}
+
 TEST(BlockContrast, ADarkBlockOnTheDarkArenaGetsALightOutline) {
     Color bullet;
     ASSERT_TRUE(parseHexColor("#202020", bullet)); // bullet_wall's bullet
@@ -605,6 +677,46 @@ TEST(WrapAtSpaces, BreaksAtSpacesOnly) {
     EXPECT_EQ(wrapAtSpaces("a /very/long/path.json", 8, bytes), "a\n/very/lo\nng/path.\njson");
     const std::string cut = wrapAtSpaces("ééééé", 4, bytes); // 2 bytes each
     EXPECT_EQ(cut, "éé\néé\né");
+}
+
+// Issue 23: the inspector's lines wrap before an operator, never after one, never inside a
+// number, and never leave one word alone on the last line; the wrapped chain still reads as one
+// (equation_check) and holds.
+TEST(WrapFormula, BreaksBeforeOperatorsAndKeepsTheChainReadable) {
+    const std::string p = "p before = 1·1.59369958 + 1000000·0.99999873 = 1000000.324 kg·m/s";
+    const std::string wrapped = wrapFormula(p, 50, bytes);
+    EXPECT_EQ(wrapped, "p before = 1·1.59369958 + 1000000·0.99999873\n  = 1000000.324 kg·m/s");
+    EXPECT_TRUE(equationsHold(wrapped, kFormatNumberUnit));
+    EXPECT_EQ(checkEquations(wrapped).checked, 1);
+    for (double width : {12.0, 20.0, 30.0, 40.0, 60.0}) {
+        const std::string w = wrapFormula(p, width, bytes);
+        std::size_t start = 0;
+        while (start <= w.size()) {
+            const std::size_t end = std::min(w.find('\n', start), w.size());
+            const std::string line = w.substr(start, end - start);
+            const std::string last = line.substr(line.rfind(' ') + 1);
+            // No line ends with an operator; every number is whole (its digits on one line).
+            EXPECT_TRUE(last != "=" && last != "+") << width << ": " << w;
+            start = end + 1;
+        }
+        for (const char* number : {"1·1.59369958", "1000000·0.99999873", "1000000.324"})
+            EXPECT_NE(w.find(number), std::string::npos) << width << ": " << w;
+        EXPECT_EQ(checkEquations(w).checked, 1) << w;
+    }
+    // Prose: at spaces, between clauses first; the last word is not left alone.
+    EXPECT_EQ(wrapFormula("without Newton (reflect): no u, each block reverses its own velocity",
+                          60, bytes),
+              "without Newton (reflect): no u,\neach block reverses its own velocity");
+    EXPECT_EQ(wrapFormula("without Newton (reflect): no u, each block reverses its own velocity",
+                          70, bytes),
+              "without Newton (reflect): no u, each block reverses its own velocity");
+    EXPECT_EQ(wrapFormula("a b c d e f g h i j k l m n o p q r s t u v w x y z lone", 52, bytes),
+              "a b c d e f g h i j k l m n o p q r s t u v w x y\nz lone");
+    EXPECT_EQ(
+        wrapFormula("m1 = 1, m2 = 1000000, v1 = 1.5936995812, v2 = 0.9999987301, C = 1", 45, bytes),
+        "m1 = 1, m2 = 1000000, v1 = 1.5936995812,\nv2 = 0.9999987301, C = 1");
+    EXPECT_EQ(wrapFormula("short = 1", 30, bytes), "short = 1");
+    EXPECT_EQ(wrapFormula("one\ntwo = 2", 30, bytes), "one\ntwo = 2");
 }
 
 // Issue 25: the inspector shows the friction rule that acted, |dvt| <= mu·|dvn|, with numbers

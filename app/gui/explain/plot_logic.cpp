@@ -16,9 +16,24 @@ double niceTickStep(double span, int maxTicks) {
 }
 
 std::vector<double> niceTicks(double lo, double hi, int maxTicks) {
+    return ticksEvery(lo, hi, niceTickStep(hi - lo, maxTicks));
+}
+
+double axisTickStep(double lo, double hi, int minTicks, int maxTicks) {
+    double step = niceTickStep(hi - lo, maxTicks);
+    if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return step;
+    for (int notch = 0; notch < 12 && static_cast<int>(ticksEvery(lo, hi, step).size()) < minTicks;
+         ++notch) {
+        const double power = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+        const double mantissa = step / power; // 1, 2 or 5
+        step = mantissa > 4.0 ? 2.0 * power : mantissa > 1.5 ? power : 0.5 * power;
+    }
+    return step;
+}
+
+std::vector<double> ticksEvery(double lo, double hi, double step) {
     std::vector<double> ticks;
-    if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return ticks;
-    const double step = niceTickStep(hi - lo, maxTicks);
+    if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi) || !(step > 0.0)) return ticks;
     const double first = std::ceil(lo / step - 1e-9);
     for (double k = first; k * step <= hi + step * 1e-9 && ticks.size() < 64; k += 1.0) {
         double v = k * step;

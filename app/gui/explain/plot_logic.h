@@ -16,6 +16,13 @@ struct PlotRange {
 double niceTickStep(double span, int maxTicks);
 // The multiples of niceTickStep(hi - lo, maxTicks) within [lo, hi] (ends included).
 std::vector<double> niceTicks(double lo, double hi, int maxTicks);
+// The multiples of `step` within [lo, hi] (ends included).
+std::vector<double> ticksEvery(double lo, double hi, double step);
+// The step of an axis over [lo, hi] that labels at least `minTicks` values and, where it can, at
+// most `maxTicks` parts: niceTickStep, made one 1-2-5 notch smaller (10 -> 5 -> 2 -> 1) until
+// `minTicks` multiples of it lie within [lo, hi] (a plot's y axis labels three values or more,
+// not just "0").
+double axisTickStep(double lo, double hi, int minTicks, int maxTicks);
 // Powers of ten within [10^lo, 10^hi], as exponents (lo and hi are log10 values); when the range
 // holds fewer than two decades, niceTicks of the exponents instead.
 std::vector<double> decadeTicks(double logLo, double logHi, int maxTicks);

@@ -17,11 +17,11 @@ std::string bodyName(const App& app, int index) {
     return index < 0 ? std::string(wallName(index)) : app.sim.blockDisplayName(index);
 }
 
+// Wrapped before an operator where the window is too narrow (nothing cut at its edge).
 void formulaLine(const std::string& text, bool strong) {
-    if (strong)
-        ImGui::TextColored(uiThemed(ImVec4(1.0f, 0.93f, 0.55f, 1.0f)), "%s", text.c_str());
-    else
-        ImGui::TextUnformatted(text.c_str());
+    if (strong) ImGui::PushStyleColor(ImGuiCol_Text, uiThemed(ImVec4(1.0f, 0.93f, 0.55f, 1.0f)));
+    textWrappedFormula(text);
+    if (strong) ImGui::PopStyleColor();
 }
 
 // A student's trace (docs/compare.md): the reference's collision where the two part, the
@@ -42,7 +42,7 @@ void studentTraceSection(App& app) {
                 collisionFormula(r, bodyName(app, r.block), bodyName(app, r.other));
             dimText(p.inPartingFrame ? "The reference's collision in that frame:"
                                      : "The reference's collision nearest to it:");
-            textWrappedAtSpaces(f.title);
+            textWrappedFormula(f.title);
             formulaLine(f.u, true);
             formulaLine(f.v1After, true);
             formulaLine(f.v2After, true);
@@ -108,7 +108,7 @@ void drawInspectorOverlay(App& app) {
         ImGui::EndCombo();
     }
     ImGui::Separator();
-    textWrappedAtSpaces(f.title);
+    textWrappedFormula(f.title);
     char toi[96];
     std::snprintf(toi, sizeof toi, "time of impact: t = %s of the frame (t = a/b)",
                   formatNumber(r.toi).c_str());
@@ -120,10 +120,10 @@ void drawInspectorOverlay(App& app) {
     // The relative-velocity test decides whether this is a collision at all.
     if (f.separating) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiThemed(ImVec4(1.0f, 0.55f, 0.35f, 1.0f)));
-        textWrappedAtSpaces(f.relative);
+        textWrappedFormula(f.relative);
         ImGui::PopStyleColor();
     } else {
-        textWrappedAtSpaces(f.relative);
+        textWrappedFormula(f.relative);
     }
     ImGui::Spacing();
     formulaLine(f.u, true);
@@ -136,10 +136,10 @@ void drawInspectorOverlay(App& app) {
     ImGui::Spacing();
     formulaLine(f.momentumBefore, false);
     formulaLine(f.momentumAfter, false);
-    if (!f.friction.empty()) textWrappedAtSpaces(f.friction);
+    if (!f.friction.empty()) textWrappedFormula(f.friction);
     if (!f.note.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiThemed(ImVec4(0.62f, 0.66f, 0.74f, 1.0f)));
-        textWrappedAtSpaces(f.note);
+        textWrappedFormula(f.note);
         ImGui::PopStyleColor();
     }
     if (overlay.compact()) pauseSwitch();

@@ -20,12 +20,13 @@ std::vector<double> markersIn(const std::deque<double>& times) {
 }
 
 // Series `channel` of `ts` within [window.lo, window.hi] and [from, to].
-PlotSeries series(const char* label, ImU32 color, Dash dash, const TimeSeries& ts, int channel,
-                  PlotRange window, double from, double to) {
+PlotSeries series(const char* label, ImU32 color, Dash dash, bool band, const TimeSeries& ts,
+                  int channel, PlotRange window, double from, double to) {
     PlotSeries s;
     s.label = label;
     s.color = color;
     s.dash = dash;
+    s.band = band;
     for (std::size_t i = ts.firstAtOrAfter(std::max(window.lo, from)); i < ts.size(); ++i) {
         const double t = ts.time(i);
         if (t > std::min(window.hi, to) + 1e-12) break;
@@ -37,21 +38,23 @@ PlotSeries series(const char* label, ImU32 color, Dash dash, const TimeSeries& t
 
 // A series up to `now` and, while the timeline replays, its recorded future, faded and without
 // a legend entry.
-void addSeries(std::vector<PlotSeries>& out, const char* label, ImU32 color, Dash dash,
+void addSeries(std::vector<PlotSeries>& out, const char* label, ImU32 color, Dash dash, bool band,
                const TimeSeries& ts, int channel, PlotRange window, double now, bool replaying) {
-    out.push_back(series(label, color, dash, ts, channel, window, -INFINITY, now));
+    out.push_back(series(label, color, dash, band, ts, channel, window, -INFINITY, now));
     if (!replaying) return;
     const ImU32 faded = (color & ~IM_COL32_A_MASK) | IM_COL32(0, 0, 0, 70);
-    out.push_back(series("", faded, dash, ts, channel, window, now, INFINITY));
+    out.push_back(series("", faded, dash, band, ts, channel, window, now, INFINITY));
 }
 
 // The three plots, in one table: what each draws and what its CSV button writes. The series of
-// a plot differ by colour (palette.h's marks) and by dash pattern.
+// a plot differ by colour (palette.h's marks) and by dash pattern; the total energy is a band
+// under the others, so the kinetic energy it equals without gravity shows inside it.
 struct PlotChannel {
     const char* label; // in the legend
     Mark mark;
     Dash dash;
     const char* column; // its CSV column, with the unit
+    bool band = false;  // PlotSeries::band
 };
 struct PlotRow {
     const char* name;  // the plot's ImGui id, its CSV button and its file's name
@@ -88,7 +91,7 @@ const std::vector<PlotRow>& plotRows() {
          &Telemetry::collisionTimes,
          {{"kinetic", Mark::Kinetic, Dash::Solid, "kinetic (J)"},
           {"potential", Mark::Potential, Dash::Dashed, "potential (J)"},
-          {"total", Mark::Total, Dash::Dotted, "total (J)"}},
+          {"total", Mark::Total, Dash::Solid, "total (J)", true}},
          false},
     };
     return rows;
@@ -151,8 +154,8 @@ void drawPlotsOverlay(App& app) {
         std::vector<PlotSeries> series;
         for (std::size_t c = 0; c < row.channels.size(); ++c)
             addSeries(series, row.channels[c].label, uiMarkColor(row.channels[c].mark),
-                      row.channels[c].dash, tm.*row.series, static_cast<int>(c), window, now,
-                      replaying);
+                      row.channels[c].dash, row.channels[c].band, tm.*row.series,
+                      static_cast<int>(c), window, now, replaying);
         const std::string id = std::string("##") + row.name;
         app.view.shownPlots.push_back(
             {row.name, drawPlot(id.c_str(), o, series, markersIn(tm.*row.markers))});

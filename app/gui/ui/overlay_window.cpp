@@ -10,8 +10,9 @@
 
 namespace {
 
-// Background alpha: opaque enough that nothing of the scene shows through the text.
-constexpr float kWindowAlpha = 0.97f;
+// Background alpha: opaque, so that nothing of the scene (a grid line, an axis number) shows
+// through.
+constexpr float kWindowAlpha = 1.0f;
 
 // A box of the world on screen, grown by `grow` px on every side (room for its labels).
 ScreenRect screenBox(const App& app, Vec2 centre, Vec2 size, double grow) {
@@ -181,6 +182,6 @@ void dimText(const char* text) {
     const ImVec4 dim =
         uiLightTheme() ? ImVec4(0.32f, 0.35f, 0.42f, 1.0f) : ImVec4(0.62f, 0.66f, 0.74f, 1.0f);
     ImGui::PushStyleColor(ImGuiCol_Text, dim);
-    textWrappedAtSpaces(text); // wrapped: a docked window may be narrow, nothing is cut
+    textWrappedFormula(text); // wrapped: a docked window may be narrow, nothing is cut
     ImGui::PopStyleColor();
 }

@@ -29,6 +29,13 @@ ImU32 cursorColor() {
     return uiThemed(IM_COL32(120, 220, 255, 230));
 }
 constexpr std::size_t kMaxMarkers = 150;
+constexpr float kMinPlotShare = 0.13f;
+// A band (PlotSeries::band): this many line widths wide, in its colour at about half opacity.
+constexpr float kBandWidth = 4.0f;
+ImU32 bandColor(ImU32 color) {
+    const ImU32 alpha = ((color >> IM_COL32_A_SHIFT) & 0xFF) * 5 / 10;
+    return (color & ~IM_COL32_A_MASK) | (alpha << IM_COL32_A_SHIFT);
+}
 
 // A series' line in its dash pattern (dashPieces), the dashes' unit scaled with the line.
 void polyline(ImDrawList* dl, const std::vector<ImVec2>& points, ImU32 color, Dash dash,
@@ -61,14 +68,17 @@ struct Mapping {
     float sy(double y) const { return max.y - float((y - y0) / (y1 - y0)) * (max.y - min.y); }
 };
 
-std::vector<double> ticksFor(double lo, double hi, bool log, int maxTicks) {
-    return log ? decadeTicks(lo, hi, maxTicks) : niceTicks(lo, hi, maxTicks);
+// A linear axis labels at least kMinYTicks values (issue 23: not just "0").
+constexpr int kMinYTicks = 3;
+
+std::vector<double> ticksFor(double lo, double hi, bool log, int minTicks, int maxTicks) {
+    return log ? decadeTicks(lo, hi, maxTicks)
+               : ticksEvery(lo, hi, axisTickStep(lo, hi, minTicks, maxTicks));
 }
 
-std::string labelFor(double v, double lo, double hi, bool log, int maxTicks) {
-    if (log && std::floor(hi) - std::ceil(lo) >= 1.0) return decadeLabel(v);
-    const double step = niceTickStep(hi - lo, maxTicks);
-    return log ? decadeLabel(v) : tickLabel(v, step);
+std::string labelFor(double v, double lo, double hi, bool log, int minTicks, int maxTicks) {
+    if (log) return decadeLabel(v);
+    return tickLabel(v, axisTickStep(lo, hi, minTicks, maxTicks));
 }
 
 // One piece of a plot's header: the title, the unit, or a series' legend entry (line and label).
@@ -116,7 +126,9 @@ ScreenRect drawPlot(const char* id, const PlotOptions& o, const std::vector<Plot
     ImVec2 size = ImGui::GetContentRegionAvail();
     if (o.height > 0.0f) size.y = o.height;
     size.x = std::max(size.x, font * 8.0f);
-    size.y = std::max(size.y, font * 5.0f);
+    // Evidence big enough to see from the back row: at least 13% of the display's height (140 px
+    // at 1080p; the window scrolls if it has less room).
+    size.y = std::max({size.y, font * 5.0f, kMinPlotShare * ImGui::GetIO().DisplaySize.y});
     ImGui::InvisibleButton(id, size);
     const bool hovered = ImGui::IsItemHovered();
     const ImVec2 outerMin = ImGui::GetItemRectMin();
@@ -160,11 +172,12 @@ ScreenRect drawPlot(const char* id, const PlotOptions& o, const std::vector<Plot
         layoutHeader(o, series, outerMin.x + font * 0.2f, outerMax.x, outerMin.y + font * 0.1f);
     const float header = (items.empty() ? 1.0f : float(items.back().line + 1)) * font * 1.35f;
     const int yMaxTicks = std::max(2, int((size.y - header - font * 1.5f) / (font * 1.8f)));
-    const std::vector<double> yTicks = ticksFor(yr.lo, yr.hi, o.logY, yMaxTicks);
+    const int yMinTicks = o.logY ? 1 : kMinYTicks;
+    const std::vector<double> yTicks = ticksFor(yr.lo, yr.hi, o.logY, yMinTicks, yMaxTicks);
     float labelW = ImGui::CalcTextSize("0").x;
     std::vector<std::string> yLabels;
     for (double t : yTicks) {
-        yLabels.push_back(labelFor(t, yr.lo, yr.hi, o.logY, yMaxTicks));
+        yLabels.push_back(labelFor(t, yr.lo, yr.hi, o.logY, yMinTicks, yMaxTicks));
         labelW = std::max(labelW, ImGui::CalcTextSize(yLabels.back().c_str()).x);
     }
     Mapping m{x0,
@@ -188,11 +201,11 @@ ScreenRect drawPlot(const char* id, const PlotOptions& o, const std::vector<Plot
                     yLabels[i].c_str());
     }
     const int xMaxTicks = std::max(2, int((m.max.x - m.min.x) / (font * 4.5f)));
-    const std::vector<double> xTicks = ticksFor(x0, x1, o.logX, xMaxTicks);
+    const std::vector<double> xTicks = ticksFor(x0, x1, o.logX, 1, xMaxTicks);
     for (std::size_t i = 0; i < xTicks.size(); ++i) {
         const float x = m.sx(xTicks[i]);
         dl->AddLine(ImVec2(x, m.min.y), ImVec2(x, m.max.y), gridColor());
-        std::string text = labelFor(xTicks[i], x0, x1, o.logX, xMaxTicks);
+        std::string text = labelFor(xTicks[i], x0, x1, o.logX, 1, xMaxTicks);
         if (i + 1 == xTicks.size() && *o.xUnit) text += std::string(" ") + o.xUnit;
         const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
         float tx = x - ts.x * 0.5f;
@@ -216,10 +229,16 @@ ScreenRect drawPlot(const char* id, const PlotOptions& o, const std::vector<Plot
         dl->AddRectFilled(ImVec2(sx, m.min.y), ImVec2(sx + 1.0f, m.max.y), markerColor());
         ++drawn;
     }
-    // Series.
+    // Series: the bands first, under the lines.
+    std::vector<const PlotSeries*> order;
+    for (const PlotSeries& s : series)
+        if (s.band) order.push_back(&s);
+    for (const PlotSeries& s : series)
+        if (!s.band) order.push_back(&s);
     std::vector<ImVec2> mapped, pts;
     std::vector<float> xs, ys;
-    for (const PlotSeries& s : series) {
+    for (const PlotSeries* sp : order) {
+        const PlotSeries& s = *sp;
         mapped.clear();
         const std::size_t n = std::min(s.x.size(), s.y.size());
         for (std::size_t i = 0; i < n; ++i) {
@@ -239,7 +258,9 @@ ScreenRect drawPlot(const char* id, const PlotOptions& o, const std::vector<Plot
             pts.clear();
             for (std::size_t k : columnExtremes(xs, ys, kColumnPx)) pts.push_back(mapped[k]);
         }
-        if (pts.size() >= 2) polyline(dl, pts, s.color, s.dash, thickness);
+        if (pts.size() >= 2)
+            polyline(dl, pts, s.band ? bandColor(s.color) : s.color, s.dash,
+                     s.band ? thickness * kBandWidth : thickness);
         if (s.points) {
             for (const ImVec2& p : pts) dl->AddCircleFilled(p, thickness * 1.8f, s.color, 8);
         }
@@ -260,8 +281,10 @@ ScreenRect drawPlot(const char* id, const PlotOptions& o, const std::vector<Plot
     for (const HeaderItem& it : items) {
         if (it.series) {
             const float cy = it.y + font * 0.5f;
-            polyline(dl, {ImVec2(it.x, cy), ImVec2(it.x + font * 0.9f, cy)}, it.series->color,
-                     it.series->dash, thickness * 1.5f);
+            const PlotSeries& ps = *it.series;
+            polyline(dl, {ImVec2(it.x, cy), ImVec2(it.x + font * 0.9f, cy)},
+                     ps.band ? bandColor(ps.color) : ps.color, ps.dash,
+                     thickness * (ps.band ? kBandWidth : 1.5f));
             dl->AddText(ImVec2(it.x + font * 1.2f, it.y), uiThemed(IM_COL32(225, 230, 240, 255)),
                         it.text.c_str());
         } else {

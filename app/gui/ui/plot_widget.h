@@ -19,6 +19,9 @@ struct PlotSeries {
     Dash dash = Dash::Solid;
     std::vector<double> x, y;
     bool points = false; // draw a dot at every sample (sparse data: the tradeoff chart)
+    // A wide translucent band under the other lines (drawn first), for a series another may
+    // equal: the total energy, which is the kinetic energy without gravity, shows around it.
+    bool band = false;
 };
 
 struct PlotOptions {

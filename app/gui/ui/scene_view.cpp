@@ -168,32 +168,42 @@ void drawAxisNumbers(const App& app, ImDrawList* dl) {
     const Vec2 corner = cam.worldToScreen(bounds.min);
     const bool floorHidden = corner.y > vp.y + vp.height;
     const bool wallHidden = corner.x < vp.x;
+    // Under the floor, or as low as the view lets it be (closer to the floor than `gap`).
+    const float lowest = static_cast<float>(vp.y + vp.height) - ImGui::GetTextLineHeight();
     const float xRow =
-        floorHidden ? static_cast<float>(vp.y + vp.height) - ImGui::GetTextLineHeight() - 4.0f
-                    : static_cast<float>(corner.y) + gap;
+        floorHidden ? lowest - 4.0f : std::min(static_cast<float>(corner.y) + gap, lowest);
+    // Only numbers wholly inside the view: a docked window or the caption bar hides what is
+    // under it, and nothing drawn for the scene should be there (a number half under the panel).
+    const auto inView = [&vp](float x, float y, ImVec2 size) {
+        return x >= vp.x && y >= vp.y && x + size.x <= vp.x + vp.width &&
+               y + size.y <= vp.y + vp.height;
+    };
     char text[32];
+    float unitX = NAN; // after the last number drawn on the x axis
     for (double x = bounds.min.x; x <= bounds.max.x + 1e-9; x += step) {
         std::snprintf(text, sizeof text, "%g", x);
         const Vec2 s = cam.worldToScreen({x, bounds.min.y});
         const ImVec2 size = ImGui::CalcTextSize(text);
-        dl->AddText(ImVec2(static_cast<float>(s.x) - size.x * 0.5f, xRow), color, text);
+        const float at = static_cast<float>(s.x) - size.x * 0.5f;
+        if (!inView(at, xRow, size)) continue;
+        dl->AddText(ImVec2(at, xRow), color, text);
+        unitX = at + size.x + 4.0f;
     }
     for (double y = bounds.min.y; y <= bounds.max.y + 1e-9; y += step) {
         std::snprintf(text, sizeof text, "%g", y);
         const Vec2 s = cam.worldToScreen({bounds.min.x, y});
         const ImVec2 size = ImGui::CalcTextSize(text);
-        const float x =
-            wallHidden ? static_cast<float>(vp.x) + 4.0f : static_cast<float>(s.x) - size.x - gap;
-        dl->AddText(ImVec2(x, static_cast<float>(s.y) - size.y * 0.5f), color, text);
+        // Left of the wall, closer to it where the margin is narrow (never under the panel).
+        const float x = wallHidden ? static_cast<float>(vp.x) + 4.0f
+                                   : std::max(static_cast<float>(s.x) - size.x - gap,
+                                              static_cast<float>(vp.x) + 2.0f);
+        const float ty = static_cast<float>(s.y) - size.y * 0.5f;
+        if (inView(x, ty, size)) dl->AddText(ImVec2(x, ty), color, text);
     }
     // The unit, after the last number on the x axis.
-    const double lastX =
-        bounds.min.x + std::floor((bounds.max.x - bounds.min.x) / step + 1e-9) * step;
-    std::snprintf(text, sizeof text, "%g", lastX);
-    const Vec2 last = cam.worldToScreen({lastX, bounds.min.y});
-    dl->AddText(
-        ImVec2(static_cast<float>(last.x) + ImGui::CalcTextSize(text).x * 0.5f + 4.0f, xRow), color,
-        "m");
+    const ImVec2 unitSize = ImGui::CalcTextSize("m");
+    if (std::isfinite(unitX) && inView(unitX, xRow, unitSize))
+        dl->AddText(ImVec2(unitX, xRow), color, "m");
 }
 
 // The collision count, large, in the world's top right corner, where the count is the lesson:
@@ -222,6 +232,62 @@ void drawLargeCount(const App& app, ImDrawList* dl) {
     dl->AddText(ImVec2(at.x + ts.x - us.x, at.y + ts.y), packed(theme().axis), unit);
 }
 
+// The row for a text of size `ts` at (x, y): there, or moved down a line at a time (at most
+// six) until it overlaps nothing in `placed`.
+float freeRow(const std::vector<ScreenRect>& placed, float x, float y, ImVec2 ts) {
+    for (int k = 0; k < 6; ++k) {
+        const ScreenRect r = spanning(x - 4.0f, y, x + ts.x + 4.0f, y + ts.y);
+        if (std::none_of(placed.begin(), placed.end(),
+                         [&r](const ScreenRect& p) { return intersects(r, p); }))
+            break;
+        y += ts.y;
+    }
+    return y;
+}
+
+// A value written at the head of an arrow (from `base` to `tip`, m) cut at the view's edge or the
+// arena's wall: over the head (beside a vertical one), kept inside the view, in a free row.
+void drawValueAtTip(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed, Vec2 base,
+                    Vec2 tip, const std::string& text, ImU32 color) {
+    const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
+    const ScreenRect& vp = app.view.camera.viewport();
+    const Vec2 at = app.view.camera.worldToScreen(tip);
+    // Beside the shaft of a vertical arrow (on the side with room), centred over a sideways one.
+    const Vec2 from = app.view.camera.worldToScreen(base);
+    const bool vertical = std::abs(at.y - from.y) > std::abs(at.x - from.x);
+    float x = static_cast<float>(at.x) - ts.x * 0.5f;
+    if (vertical) {
+        x = static_cast<float>(at.x) + 8.0f;
+        if (x + ts.x > vp.x + vp.width) x = static_cast<float>(at.x) - 8.0f - ts.x;
+    }
+    x = std::clamp(x, static_cast<float>(vp.x), static_cast<float>(vp.x + vp.width) - ts.x);
+    const float y =
+        freeRow(placed, x,
+                std::clamp(static_cast<float>(at.y) - ts.y - 6.0f, static_cast<float>(vp.y),
+                           static_cast<float>(vp.y + vp.height) - ts.y),
+                ts);
+    placed.push_back(spanning(x, y, x + ts.x, y + ts.y));
+    shadowText(dl, ImVec2(x, y), color, text.c_str(), packed(theme().textShadow));
+}
+
+// The momentum arrows too long to draw to scale carry their value at their head (p = m·w in
+// the view's frame), in the momentum arrows' colour.
+void drawMomentumValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
+    if (!app.view.show.vectors) return;
+    const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
+    int written = 0;
+    for (const Block& b : app.sim.world().blocks) {
+        if (!b.isDynamic() || written >= kMaxArrowValueLabels) continue;
+        const Vec2 p = (b.velocity - u) * b.mass;
+        const ArrowOnScreen a = arrowOnScreen(app.view.camera, b.position, p * kMomentumArrowScale,
+                                              &app.sim.world().bounds);
+        if (a.toScale) continue;
+        drawValueAtTip(app, dl, placed, b.position, a.tip, formatNumber(length(p)) + " kg·m/s",
+                       packed(theme().momentum.withAlpha(1.0f)));
+        ++written;
+    }
+}
+
 // Arrows too long to draw to scale (compressed and cut at the view's edge) carry their value; in
 // the centre-of-mass frame every arrow does (w1 = 4 m/s: the lecture's numbers), in a scene of
 // few blocks.
@@ -236,7 +302,8 @@ void drawArrowValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>& pl
         const Block& b = app.sim.world().blocks[i];
         if (b.kind == BodyKind::Static || written >= kMaxArrowValueLabels) continue;
         const Vec2 w = b.velocity - u;
-        const ArrowOnScreen a = arrowOnScreen(app.view.camera, b.position, w * kVelocityArrowScale);
+        const ArrowOnScreen a = arrowOnScreen(app.view.camera, b.position, w * kVelocityArrowScale,
+                                              &app.sim.world().bounds);
         if (a.toScale && !labelAll) continue;
         const std::string text =
             relative ? frameVelocityLabel(i < app.sim.labels.size() ? app.sim.labels[i].name : "",
@@ -254,14 +321,7 @@ void drawArrowValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>& pl
         }
         const float x = std::clamp(static_cast<float>(at.x) - ts.x * 0.5f, static_cast<float>(vp.x),
                                    static_cast<float>(vp.x + vp.width) - ts.x);
-        float y = static_cast<float>(at.y);
-        for (int k = 0; k < 6; ++k) {
-            const ScreenRect r = spanning(x - 4.0f, y, x + ts.x + 4.0f, y + ts.y);
-            if (std::none_of(placed.begin(), placed.end(),
-                             [&r](const ScreenRect& p) { return intersects(r, p); }))
-                break;
-            y += ts.y;
-        }
+        const float y = freeRow(placed, x, static_cast<float>(at.y), ts);
         placed.push_back(spanning(x, y, x + ts.x, y + ts.y));
         shadowText(dl, ImVec2(x, y), packed(theme().velocity), text.c_str(),
                    packed(theme().textShadow));
@@ -278,7 +338,8 @@ void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl) {
         const Vec2 f = shownForce(view, i);
         if (f == Vec2{}) continue;
         const Block& b = app.sim.world().blocks[i];
-        const ArrowOnScreen a = arrowOnScreen(app.view.camera, b.position, f * kForceArrowScale);
+        const ArrowOnScreen a = arrowOnScreen(app.view.camera, b.position, f * kForceArrowScale,
+                                              &app.sim.world().bounds);
         char text[80];
         if (f.x == 0.0 || f.y == 0.0) {
             std::snprintf(text, sizeof text, "F = %s N", formatNumber(length(f)).c_str());
@@ -398,6 +459,7 @@ void drawSceneDecorations(App& app) {
     placed.clear();
     drawLabels(app, dl, placed);
     drawArrowValues(app, dl, placed);
+    drawMomentumValues(app, dl, placed);
     SceneView forces; // what the scene renderer draws the force arrows from
     forces.world = &app.sim.world();
     forces.vectors = app.view.show.vectors;

@@ -289,6 +289,14 @@ void textWrappedAtSpaces(const std::string& text) {
     ImGui::TextUnformatted(lines.c_str(), lines.c_str() + lines.size());
 }
 
+void textWrappedFormula(const std::string& text) {
+    const float width = ImGui::GetContentRegionAvail().x;
+    const std::string lines = wrapFormula(text, width, [](const std::string& line) {
+        return static_cast<double>(ImGui::CalcTextSize(line.c_str()).x);
+    });
+    ImGui::TextUnformatted(lines.c_str(), lines.c_str() + lines.size());
+}
+
 ImVec4 uiErrorColor() {
     return uiThemed(ImVec4{1.0f, 0.45f, 0.42f, 1.0f});
 }

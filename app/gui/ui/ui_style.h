@@ -48,6 +48,9 @@ ImFont* uiCompactFont();
 bool uiLightTheme();
 // ImGui::TextWrapped, but broken at spaces only (wrapAtSpaces): "58.152" stays one piece.
 void textWrappedAtSpaces(const std::string& text);
+// A line with equations, wrapped before its operators (wrapFormula): nothing cut at the window's
+// edge, and each chain still reads as one.
+void textWrappedFormula(const std::string& text);
 // A colour chosen for the dark theme (text, lines and marks over a dark background), as the
 // current theme draws it: itself in the dark theme; in the light one a dark tone of the same hue
 // (bright colours deepened, greys and white turned dark), alpha kept, so it reads on light.

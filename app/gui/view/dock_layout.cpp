@@ -75,9 +75,31 @@ Layout computeLayout(const LayoutInput& in) {
     out.panel = panel > 0.0 ? fromEdges(0.0, 0.0, panel, H) : ScreenRect{0.0, 0.0, 0.0, H};
     const double areaX = out.panel.width, areaW = W - areaX;
 
-    std::vector<const DockRequest*> right, bottom;
+    std::vector<const DockRequest*> right, bottom, under;
     for (const DockRequest& r : in.windows) {
-        (r.side == DockSide::Right ? right : bottom).push_back(&r);
+        if (r.side == DockSide::Panel && panel > 0.0)
+            under.push_back(&r);
+        else
+            (r.side == DockSide::Bottom ? bottom : right).push_back(&r);
+    }
+    const double gap = kDockGap * s;
+    // Under the panel, in its column, stacked up from the bottom; the panel keeps the rest.
+    if (!under.empty()) {
+        std::vector<double> heights;
+        double total = 0.0;
+        for (const DockRequest* r : under) {
+            heights.push_back(std::max(0.0, r->minExtent) * s + std::max(0.0, r->heightShare) * H);
+            total += heights.back() + gap;
+        }
+        const double shrink = std::min(1.0, H * kMaxPanelDockShare / total);
+        double y = H - total * shrink;
+        out.panel = fromEdges(0.0, 0.0, panel, y);
+        for (std::size_t i = 0; i < under.size(); ++i) {
+            const double y0 = y + gap * shrink;
+            const double y1 = i + 1 == under.size() ? H : y0 + heights[i] * shrink;
+            out.windows.push_back({under[i]->name, fromEdges(0.0, y0, panel, y1)});
+            y = y1;
+        }
     }
     const double columnW = right.empty()
                                ? 0.0
@@ -88,7 +110,6 @@ Layout computeLayout(const LayoutInput& in) {
                                                     H * kMaxStripShare);
     const double columnX = W - columnW, stripY = H - stripH;
     const double top = std::clamp(in.topInset, 0.0, std::max(0.0, stripY - 1.0));
-    const double gap = kDockGap * s;
 
     // The right column, above the strip, windows stacked top to bottom.
     const double columnH = bottom.empty() ? H : stripY;

@@ -1,8 +1,9 @@
 // The docked layout: where the controls panel, the overlay windows and the scene go on screen.
-// The panel is a column on the left; docked overlay windows stack in a column on the right and
-// side by side in a strip along the bottom (right of the panel, under the column); the scene
-// takes the rectangle that is left, and the
-// camera fits the world into it, so no docked window ever covers the world. Pure logic (no GL,
+// The panel is a column on the left; docked overlay windows stack in a column on the right, side
+// by side in a strip along the bottom (right of the panel, under the column), or at the bottom of
+// the panel's column (taking room from the panel, none from the scene); the scene takes the
+// rectangle that is left, and the camera fits the world into it, so no docked window ever covers
+// the world. Pure logic (no GL,
 // no ImGui): given the display size, the UI scale, the panel and the visible windows with their
 // wishes, it returns rectangles in screen pixels (whole pixels, inside the display, disjoint).
 #pragma once
@@ -12,7 +13,9 @@
 #include <string>
 #include <vector>
 
-enum class DockSide { Right, Bottom };
+// Panel: under the controls panel, in its column (the plots: evidence that costs the scene
+// nothing); in the right column when there is no panel column (hidden, or a narrow screen's sheet).
+enum class DockSide { Right, Bottom, Panel };
 
 // Where a window docks, as the overlay table (overlays.h) states it: the fields of DockRequest
 // without the name.
@@ -21,6 +24,7 @@ struct DockWish {
     double minExtent = 120.0;
     double weight = 1.0;
     double crossExtent = 360.0;
+    double heightShare = 0.0;
 };
 
 // What a window asks of the layout. Sizes are pixels at UI scale 1 (scaled by the UI scale).
@@ -33,6 +37,10 @@ struct DockRequest {
     double weight = 1.0;
     // Across the region (the column's width, the strip's height): what the window would like.
     double crossExtent = 360.0;
+    // Panel side: the window's height is minExtent (scaled) plus this share of the display's
+    // height (content that must be a size on screen whatever the UI scale: plots of 140 px at
+    // 1080p). The windows under the panel take at most kMaxPanelDockShare of the height.
+    double heightShare = 0.0;
 };
 
 // Narrow screens (a phone held upright): below kSheetBelowPx wide (px at UI scale 1) the panel
@@ -74,6 +82,7 @@ constexpr double kMaxColumnShare = 0.42; // of the width right of the panel
 constexpr double kMinColumnShare = 0.30;
 constexpr double kMaxStripShare = 0.38; // of the height
 constexpr double kMinStripShare = 0.15;
+constexpr double kMaxPanelDockShare = 0.7; // of the height: the panel keeps the rest
 // Pixels (at UI scale 1) between neighbouring windows.
 constexpr double kDockGap = 4.0;
 

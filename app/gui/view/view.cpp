@@ -25,7 +25,7 @@ Layout computeAppLayout(const View& view, bool captionBar, double displayWidth,
     for (const OverlayInfo& row : kOverlays) {
         if (!row.title || !(view.show.*row.flag) || isFloating(view, row.title)) continue;
         in.windows.push_back({row.title, row.place.side, row.place.minExtent, row.place.weight,
-                              row.place.crossExtent});
+                              row.place.crossExtent, row.place.heightShare});
     }
     return computeLayout(in);
 }
