@@ -25,10 +25,23 @@ int standsOn(const World& world, int i) {
     return kNothingBelow;
 }
 
+namespace {
+
+bool controllable(const World& world, const PlayerDef& player) {
+    return player.block >= 0 && player.block < static_cast<int>(world.blocks.size()) &&
+           world.blocks[static_cast<size_t>(player.block)].isDynamic();
+}
+
+} // namespace
+
+Vec2 playerPush(const World& world, const PlayerDef& player, PlayerKeys keys) {
+    if (!controllable(world, player)) return {};
+    const double direction = (keys.right ? 1.0 : 0.0) - (keys.left ? 1.0 : 0.0);
+    return {direction * player.force, 0.0};
+}
+
 Vec2 applyPlayerKeys(World& world, const PlayerDef& player, PlayerKeys keys) {
-    if (player.block < 0 || player.block >= static_cast<int>(world.blocks.size()) ||
-        !world.blocks[static_cast<size_t>(player.block)].isDynamic())
-        return {};
+    if (!controllable(world, player)) return {};
     if (keys.up) {
         const int below = standsOn(world, player.block);
         if (below != kNothingBelow) {
@@ -39,8 +52,7 @@ Vec2 applyPlayerKeys(World& world, const PlayerDef& player, PlayerKeys keys) {
             world.blocks[static_cast<size_t>(player.block)].velocity.y = support + player.jump;
         }
     }
-    const double direction = (keys.right ? 1.0 : 0.0) - (keys.left ? 1.0 : 0.0);
-    return {direction * player.force, 0.0};
+    return playerPush(world, player, keys);
 }
 
 StepStats stepWithPlayer(World& world, const PlayerDef& player, PlayerKeys keys,

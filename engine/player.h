@@ -43,6 +43,11 @@ constexpr int kNothingBelow = -1;
 constexpr int kFloorBelow = -2;
 int standsOn(const World& world, int i);
 
+// The push the keys give the player (N, along x): its move force, to the right for right, to the
+// left for left, none for both or neither (or a block that is not dynamic). What
+// applyPlayerKeys returns and the force arrow shows.
+Vec2 playerPush(const World& world, const PlayerDef& player, PlayerKeys keys);
+
 // What the keys do this frame, before the step: the push along x (N, to be added to the block's
 // own force for this frame only: F = m·a) and, when up is held and the player stands on
 // something, the jump: its vertical velocity becomes that body's plus `jump` (in mid-air up does

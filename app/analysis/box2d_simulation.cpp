@@ -1,5 +1,11 @@
-// Box2D 2.4 as a peer on a scene: fixed rotation, zero friction, restitution C, the scene's dt
-// with 8 velocity and 3 position iterations; walls as four static boxes outside the bounds.
+// Box2D 2.4 as a peer on a scene: fixed rotation, the scene's friction, restitution C, the
+// scene's dt with 8 velocity and 3 position iterations; walls as four static boxes outside the
+// bounds.
+//
+// Friction: Box2D mixes a contact's friction as the geometric mean sqrt(f1·f2) of its two
+// fixtures' (b2MixFriction), the rule the engine uses (friction.cpp). So each fixture gets the
+// engine's mu for its face, a block's own "friction" or the world's, the walls the world's, and
+// every pair's mu is the engine's sqrt(mu1·mu2).
 #include "peers.h"
 
 #include <box2d/box2d.h>
@@ -14,8 +20,10 @@ class Box2dSimulation : public PeerSimulation {
   public:
     Box2dSimulation(const Scene& scene, double dt, int substeps)
         : PeerSimulation(scene, dt, substeps), world_(toB2(scene.settings.gravity)) {
-        addWalls();
-        for (const BlockDef& def : scene.blocks) addBlock(def, scene.settings.bounciness);
+        const double world = scene.settings.friction;
+        addWalls(world);
+        for (const BlockDef& def : scene.blocks)
+            addBlock(def, scene.settings.bounciness, def.friction >= 0.0 ? def.friction : world);
         refresh();
     }
 
@@ -30,7 +38,7 @@ class Box2dSimulation : public PeerSimulation {
         return {v.x, v.y};
     }
 
-    void addWalls() {
+    void addWalls(double friction) {
         b2BodyDef def;
         b2Body* walls = world_.CreateBody(&def);
         const Vec2 c = (bounds_.min + bounds_.max) * 0.5, half = (bounds_.max - bounds_.min) * 0.5;
@@ -38,14 +46,17 @@ class Box2dSimulation : public PeerSimulation {
         auto box = [&](double hx, double hy, double cx, double cy) {
             b2PolygonShape shape;
             shape.SetAsBox(static_cast<float>(hx), static_cast<float>(hy), toB2({cx, cy}), 0.0f);
-            walls->CreateFixture(&shape, 0.0f);
+            b2FixtureDef fixture;
+            fixture.shape = &shape;
+            fixture.friction = static_cast<float>(friction);
+            walls->CreateFixture(&fixture);
         };
         box(t, half.y + t, bounds_.min.x - t, c.y);
         box(t, half.y + t, bounds_.max.x + t, c.y);
         box(half.x + t, t, c.x, bounds_.min.y - t);
         box(half.x + t, t, c.x, bounds_.max.y + t);
     }
-    void addBlock(const BlockDef& def, double bounciness) {
+    void addBlock(const BlockDef& def, double bounciness, double friction) {
         b2BodyDef bodyDef;
         bodyDef.type = def.kind == BodyKind::Dynamic     ? b2_dynamicBody
                        : def.kind == BodyKind::Kinematic ? b2_kinematicBody
@@ -59,7 +70,7 @@ class Box2dSimulation : public PeerSimulation {
         b2FixtureDef fixture;
         fixture.shape = &shape;
         fixture.density = static_cast<float>(def.mass / (def.size.x * def.size.y));
-        fixture.friction = 0.0f;
+        fixture.friction = static_cast<float>(friction);
         fixture.restitution = static_cast<float>(bounciness);
         body->CreateFixture(&fixture);
         bodies_.push_back(body);

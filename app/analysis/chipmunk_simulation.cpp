@@ -1,6 +1,11 @@
-// Chipmunk 7 as a peer on a scene: blocks with infinite moment (no rotation), zero friction,
-// restitution C (Chipmunk multiplies the two shapes' elasticities, so each shape gets sqrt(C)),
-// the scene's dt with Chipmunk's default 10 iterations; walls as four static segments.
+// Chipmunk 7 as a peer on a scene: blocks with infinite moment (no rotation), the scene's
+// friction, restitution C (Chipmunk multiplies the two shapes' elasticities, so each shape gets
+// sqrt(C)), the scene's dt with Chipmunk's default 10 iterations; walls as four static segments.
+//
+// Friction: Chipmunk multiplies the two shapes' friction, u = u1·u2, where the engine takes the
+// geometric mean sqrt(mu1·mu2) (friction.cpp). So each shape gets the square root of the
+// engine's mu for its face (a block's own "friction" or the world's, the walls the world's):
+// sqrt(mu1)·sqrt(mu2) = sqrt(mu1·mu2), every pair's mu is the engine's.
 #include "peers.h"
 
 #include <chipmunk/chipmunk.h>
@@ -38,12 +43,14 @@ class ChipmunkSimulation : public PeerSimulation {
         : PeerSimulation(scene, dt, substeps), space_(newSpaceQuietly()) {
         cpSpaceSetGravity(space_, cpv(scene.settings.gravity.x, scene.settings.gravity.y));
         const double elasticity = std::sqrt(scene.settings.bounciness);
+        const double world = scene.settings.friction;
         const Vec2 lo = bounds_.min, hi = bounds_.max;
         const Vec2 corners[] = {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
         for (int k = 0; k < 4; ++k) {
             const Vec2 a = corners[k], b = corners[(k + 1) % 4];
             cpBody* ground = cpSpaceGetStaticBody(space_);
-            addShape(cpSegmentShapeNew(ground, cpv(a.x, a.y), cpv(b.x, b.y), 0.0), elasticity);
+            addShape(cpSegmentShapeNew(ground, cpv(a.x, a.y), cpv(b.x, b.y), 0.0), elasticity,
+                     std::sqrt(world));
         }
         for (const BlockDef& def : scene.blocks) {
             cpBody* body = def.kind == BodyKind::Dynamic     ? cpBodyNew(def.mass, INFINITY)
@@ -53,7 +60,8 @@ class ChipmunkSimulation : public PeerSimulation {
             cpBodySetPosition(body, cpv(def.position.x, def.position.y));
             if (def.kind != BodyKind::Static)
                 cpBodySetVelocity(body, cpv(def.velocity.x, def.velocity.y));
-            addShape(cpBoxShapeNew(body, def.size.x, def.size.y, 0.0), elasticity);
+            addShape(cpBoxShapeNew(body, def.size.x, def.size.y, 0.0), elasticity,
+                     std::sqrt(def.friction >= 0.0 ? def.friction : world));
             bodies_.push_back(body);
         }
         refresh();
@@ -82,9 +90,9 @@ class ChipmunkSimulation : public PeerSimulation {
         const cpVect v = cpBodyGetVelocity(bodies_[i]);
         return {v.x, v.y};
     }
-    void addShape(cpShape* shape, double elasticity) {
+    void addShape(cpShape* shape, double elasticity, double friction) {
         cpShapeSetElasticity(shape, elasticity);
-        cpShapeSetFriction(shape, 0.0);
+        cpShapeSetFriction(shape, friction);
         cpSpaceAddShape(space_, shape);
         shapes_.push_back(shape);
     }

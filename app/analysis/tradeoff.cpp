@@ -92,6 +92,29 @@ class StackDrift : public Measure {
     double worst_ = 0.0;
 };
 
+// A block launched at v0 along the floor with friction mu slides to rest after
+// d = v0^2 / (2·mu·g) (lecture, "Application: Platformer": friction; Coulomb friction decelerates
+// it at mu·g): the distance (m) of its final x from x0 + d. The pair's mu is the geometric mean of
+// the block's and the floor's (the world's), as the engine mixes them (friction.cpp).
+class StoppingDistance : public Measure {
+  public:
+    explicit StoppingDistance(const Scene& s) {
+        const BlockDef& b = s.blocks.at(0);
+        const double world = s.settings.friction;
+        const double mu = std::sqrt((b.friction >= 0.0 ? b.friction : world) * world);
+        const double g = -s.settings.gravity.y, v0 = std::abs(b.velocity.x);
+        stopX_ = b.position.x + std::copysign(v0 * v0 / (2 * mu * g), b.velocity.x);
+        duration = 1.5 * v0 / (mu * g); // at rest for the last third
+    }
+    double finish(Simulation& sim) override {
+        return std::abs(sim.blocks().at(0).position.x - stopX_);
+    }
+    double duration = 0.0;
+
+  private:
+    double stopX_ = 0.0;
+};
+
 // Two blocks on a line, exact: they meet when the gap closes, then move on with the lecture's
 // velocities v' = u - C(v - u).
 std::vector<Vec2> twoBlocksExact(const Scene& s, double t) {
@@ -130,6 +153,7 @@ const Experiment kExperiments[] = {
     {"newtons_cradle", "m, position error", false},
     {"gas_100", "max(relative energy drift, overlap / size)", false},
     {"resting_stack", "m, largest displacement", true},
+    {"friction_slide", "m, stopping-distance error", true},
 };
 
 struct Setup {
@@ -148,6 +172,11 @@ Setup setupFor(const std::string& name, const Scene& s) {
     if (name == "newtons_cradle")
         return {std::make_unique<FinalPositions>(cradleExact(s, 2.0)), 2.0};
     if (name == "gas_100") return {std::make_unique<GasDrift>(s), 5.0};
+    if (name == "friction_slide") {
+        auto m = std::make_unique<StoppingDistance>(s);
+        const double d = m->duration;
+        return {std::move(m), d};
+    }
     return {std::make_unique<StackDrift>(s), 5.0};
 }
 
@@ -200,6 +229,9 @@ std::vector<TradeoffRow> runTradeoff(const TradeoffOptions& options) {
     if (options.quick) rates = {30, 120, 480};
     std::vector<TradeoffRow> rows;
     for (const Experiment& e : kExperiments) {
+        if (!options.scenes.empty() && std::find(options.scenes.begin(), options.scenes.end(),
+                                                 e.scene) == options.scenes.end())
+            continue;
         const std::string path = options.scenesDir + "/" + e.scene + ".json";
         SceneResult loaded = loadSceneFile(path);
         if (!loaded.scene) throw std::runtime_error(loaded.error.text());

@@ -1,6 +1,7 @@
 // Speed versus accuracy: every method (and peer) over a sweep of dt and substeps on scenes whose
 // answer is known, each run giving a cost (ms of stepping per simulated second) and an error.
-// Where gravity makes the integrator matter (the bounce, the stack) the methods run with the
+// Where gravity makes the integrator matter (the bounce, the stack, the
+// block sliding to rest under friction) the methods run with the
 // exact integrator too, as engines named "METHOD, exact".
 #pragma once
 
@@ -20,9 +21,10 @@ struct TradeoffRow {
 };
 
 struct TradeoffOptions {
-    std::string scenesDir; // where the scene files are
-    bool quick = false;    // fewer dt values (for tests)
-    bool peers = true;     // include Box2D when built with it
+    std::string scenesDir;           // where the scene files are
+    bool quick = false;              // fewer dt values (for tests)
+    bool peers = true;               // include Box2D and Chipmunk when built with them
+    std::vector<std::string> scenes; // only these scenes (file stems); empty: all
 };
 
 // Runs the sweep. Throws std::runtime_error naming the file when a scene cannot be loaded.

@@ -71,7 +71,7 @@ int tradeoffCommand(const AnalysisRequest& request, std::ostream& out, std::ostr
 int stabilityCommand(const AnalysisRequest& request, std::ostream& out, std::ostream& err) {
     std::vector<StabilityResult> results;
     try {
-        results = runStability(request.scenesDir);
+        results = runStability(request.scenesDir, request.extremesDir);
     } catch (const std::runtime_error& e) {
         err << printable(e.what(), kPrintablePath) << "\n";
         return kExitBadInput;

@@ -6,9 +6,10 @@
 #include <string>
 
 struct AnalysisRequest {
-    std::string outDir;    // created if missing
-    std::string scenesDir; // where the scene files are
-    bool quick = false;    // tradeoff: three frame rates instead of nine
+    std::string outDir;      // created if missing
+    std::string scenesDir;   // where the scene files are
+    std::string extremesDir; // stability: where the energy extremes are (empty: left out)
+    bool quick = false;      // tradeoff: three frame rates instead of nine
 };
 
 // Writes tradeoff.csv, tradeoff.md and tradeoff.png. Returns an ExitCode.

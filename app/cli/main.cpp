@@ -140,6 +140,13 @@ int main(int argc, char** argv) {
     stabilityCmd->add_option("--scenes", stability.scenesDir, "Directory of the scene files")
         ->type_name("DIR")
         ->capture_default_str();
+    stability.extremesDir = SANDBOX_EXTREMES_DIR;
+    stabilityCmd
+        ->add_option("--extremes", stability.extremesDir,
+                     "Directory of the energy extremes' scenes (issue 28's rows; \"\": "
+                     "left out)")
+        ->type_name("DIR")
+        ->capture_default_str();
 
     CompareRequest compare;
     CLI::App* compareCmd = app.add_subcommand(

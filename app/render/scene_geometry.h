@@ -24,8 +24,8 @@ struct SceneView {
     const Trails* trails = nullptr; // drawn when set
     bool vectors = false;           // velocity, momentum and force arrows
     Vec2 frameVelocity;             // m/s, subtracted from every arrow (the frame moves with it)
-    // The keyboard thrust (N) on block `thrustBlock` this frame (-1: none), added to its own
-    // force; its force arrow is drawn with or without `vectors`.
+    // The keys' push (N) on block `thrustBlock` this frame (-1: none): the thrust or a player's
+    // move force, added to its own force; its force arrow is drawn with or without `vectors`.
     int thrustBlock = -1;
     Vec2 thrust;
     // Other worlds drawn as coloured outlines over this one (the methods side by side).

@@ -32,8 +32,8 @@ TEST(Tradeoff, EveryMethodRunsEveryScene) {
         EXPECT_GE(r.error, 0.0);
         EXPECT_FALSE(r.errorUnit.empty());
     }
-    // 3 methods on 5 scenes, and with the exact integrator on the 2 scenes with gravity.
-    EXPECT_EQ(seen.size(), 3u * 5u + 3u * 2u);
+    // 3 methods on 6 scenes, and with the exact integrator on the 3 scenes with gravity.
+    EXPECT_EQ(seen.size(), 3u * 6u + 3u * 3u);
 }
 
 TEST(Tradeoff, PerfectMethodIsExactWhereTheAnswerIsExact) {
@@ -93,4 +93,48 @@ TEST(Tradeoff, TheExactIntegratorMakesThePerfectBounceExactAtEveryFrameRate) {
         }
     }
     EXPECT_EQ(exactRows, 3); // the quick sweep's three frame rates
+}
+
+// The sliding block (issue 25): launched at v0 = 6 m/s on the floor with mu = 0.5, it stops
+// d = v0^2 / (2·mu·g) = 3.670 m on (lecture, "Application: Platformer": friction).
+TEST(Tradeoff, TheSlidingBlockStopsAtTheExactDistance) {
+    int exact = 0, euler = 0;
+    for (const TradeoffRow& r : quickRows()) {
+        if (r.scene != "friction_slide") continue;
+        EXPECT_EQ(r.errorUnit, "m, stopping-distance error");
+        if (r.integrator == "exact" && r.engine.rfind("move-and-correct", 0) != 0) {
+            // Perfect and turn-based find the stop as an event (a stop within a turn): to
+            // rounding, 1e-9 m over ~100 frames.
+            ++exact;
+            EXPECT_LT(r.error, 1e-9) << r.engine << ", dt " << r.dt;
+        } else if (r.substeps == 1) {
+            // Semi-implicit Euler decelerates in whole steps of mu·g·dt: within one frame's
+            // travel v0·dt of the exact stop (it is about half of it).
+            ++euler;
+            EXPECT_LT(r.error, 6.0 * r.dt) << r.engine << ", dt " << r.dt;
+            EXPECT_GT(r.error, 0.0) << r.engine << ", dt " << r.dt;
+        }
+    }
+    EXPECT_EQ(exact, 2 * 3); // perfect and turn-based at the quick sweep's three rates
+    EXPECT_EQ(euler, 4 * 3); // every method, and move-and-correct with the exact integrator
+}
+
+TEST(Tradeoff, ThePeersSlideWithTheSameFrictionAsTheEngine) {
+    // Box2D mixes friction as sqrt(f1·f2), Chipmunk as u1·u2: each is given its shapes' values so
+    // the pair's mu is the engine's 0.5. With the same mu their semi-implicit stepping stops the
+    // block within one frame's travel v0·dt of the exact distance, as ours does; with Chipmunk's
+    // pair at 0.25 (mu on each shape) it would stop 3.67 m further, with Box2D's pair at 0 never.
+    TradeoffOptions options;
+    options.scenesDir = SANDBOX_SCENES_DIR;
+    options.quick = true;
+    options.scenes = {"friction_slide"};
+    int peerRows = 0;
+    for (const TradeoffRow& r : runTradeoff(options)) {
+        EXPECT_EQ(r.scene, "friction_slide");
+        if (r.engine != "box2d" && r.engine != "chipmunk") continue;
+        ++peerRows;
+        EXPECT_LT(r.error, 6.0 * r.dt)
+            << r.engine << ", dt " << r.dt << ", substeps " << r.substeps;
+    }
+    if (peerRows == 0) GTEST_SKIP() << "built without Box2D and Chipmunk";
 }

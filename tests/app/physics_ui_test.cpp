@@ -273,15 +273,23 @@ TEST(PhysicsSettings, CtrlSSavesThemAndTheBlocksForceButNeverTheHeldThrust) {
     EXPECT_GT(back.scene->blocks[1].velocity.y, 0.0); // ...and it did push
 }
 
-TEST(PhysicsSettings, TheLessonsPlatformerPlaysItsScriptAndTheArrowsDoNotStep) {
-    App app;
+// The app with lecture3 open; returns the index of its platformer step (the steps' count when the
+// lesson does not open or has none).
+static std::size_t openPlatformerLesson(App& app) {
     app.shipped.scenesDir = SANDBOX_SCENES_DIR;
-    ASSERT_TRUE(openLesson(app, std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json"))
-        << app.ui.messages.error;
+    if (!openLesson(app, std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json")) return 0;
     const std::vector<LessonStep>& steps = app.lesson.lesson->steps;
     std::size_t platformer = steps.size();
     for (std::size_t i = 0; i < steps.size(); ++i)
         if (steps[i].title.find("platformer") != std::string::npos) platformer = i;
+    return platformer;
+}
+
+TEST(PhysicsSettings, TheLessonsPlatformerPlaysItsScriptAndTheArrowsDoNotStep) {
+    App app;
+    const std::size_t platformer = openPlatformerLesson(app);
+    ASSERT_TRUE(app.lesson.lesson) << app.ui.messages.error;
+    const std::vector<LessonStep>& steps = app.lesson.lesson->steps;
     ASSERT_LT(platformer + 1, steps.size());
     ASSERT_TRUE(enterStep(app, platformer));
     EXPECT_FALSE(app.sim.thrust.on); // the scene's player, not the thrust
@@ -308,6 +316,30 @@ TEST(PhysicsSettings, TheLessonsPlatformerPlaysItsScriptAndTheArrowsDoNotStep) {
     EXPECT_TRUE(applyLessonAction(app, pageDown)); // the next step
     EXPECT_EQ(app.lesson.current, platformer + 1);
     EXPECT_TRUE(app.sim.script.empty()); // the next step has no script
+}
+
+// The force arrow shows the player's push while a key pushes it, as it shows the thrust: the
+// platformer step's script holds Right from t = 0 (25 N), and the player's keys when no script.
+TEST(ForceArrows, ShowThePlayersPushWhileAKeyPushesIt) {
+    App app;
+    const std::size_t platformer = openPlatformerLesson(app);
+    ASSERT_TRUE(app.lesson.lesson) << app.ui.messages.error;
+    ASSERT_LT(platformer, app.lesson.lesson->steps.size());
+    ASSERT_TRUE(enterStep(app, platformer));
+    ASSERT_TRUE(app.sim.scene.player);
+    const int player = app.sim.scene.player->block;
+    EXPECT_EQ(app.sim.pushedBlock(), player); // the script holds Right at t = 0
+    EXPECT_EQ(app.sim.pushForce(), (Vec2{25.0, 0.0}));
+    EXPECT_EQ(app.sim.appliedForce(player), (Vec2{25.0, 0.0}));
+    app.sim.script.clear(); // the keys held by hand
+    app.sim.playerKeys = {true, false, false};
+    EXPECT_EQ(app.sim.pushForce(), (Vec2{-25.0, 0.0}));
+    app.sim.playerKeys = {true, true, true}; // both: no push (a jump is no force)
+    EXPECT_EQ(app.sim.pushedBlock(), -1);
+    EXPECT_EQ(app.sim.appliedForce(player), Vec2{});
+    app.sim.playerKeys = {};
+    EXPECT_EQ(app.sim.pushedBlock(), -1);
+    EXPECT_EQ(app.sim.pushForce(), Vec2{});
 }
 
 // What the scene renderer draws for forces: a block's own force with the arrows overlay, the

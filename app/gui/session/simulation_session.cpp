@@ -205,10 +205,24 @@ Vec2 SimulationSession::thrustForce() const {
     return thrustedBlock() < 0 ? Vec2{} : thrust.direction * thrust.force;
 }
 
+Vec2 SimulationSession::pushForce() const {
+    if (thrustedBlock() >= 0) return thrustForce();
+    if (!scene.player) return {};
+    const World& w = world();
+    const PlayerKeys keys =
+        script.empty() ? playerKeys : scriptedKeys(script, w.time, w.settings.dt);
+    return playerPush(w, *scene.player, keys);
+}
+
+int SimulationSession::pushedBlock() const {
+    if (thrustedBlock() >= 0) return thrustedBlock();
+    return pushForce() == Vec2{} ? -1 : scene.player->block;
+}
+
 Vec2 SimulationSession::appliedForce(int index) const {
     if (index < 0 || index >= static_cast<int>(world().blocks.size())) return {};
     const Vec2 own = world().blocks[static_cast<std::size_t>(index)].force;
-    return index == thrustedBlock() ? own + thrustForce() : own;
+    return index == pushedBlock() ? own + pushForce() : own;
 }
 
 bool SimulationSession::usesPhysicsSection() const {

@@ -147,7 +147,13 @@ struct SimulationSession {
     int thrustedBlock() const;
     // The thrust's force on it (N): direction · force; zero when thrustedBlock() is -1.
     Vec2 thrustForce() const;
-    // The force on block `index` this frame (N): its own constant force plus the thrust on it.
+    // The block the keys push this frame and their push (N), what the force arrow adds to the
+    // block's own force: the thrust (thrustedBlock), else the scene's player while left or right
+    // is held (its move force, player.h; a lesson's script holds them by the world's time); -1
+    // and zero when the keys push nothing.
+    int pushedBlock() const;
+    Vec2 pushForce() const;
+    // The force on block `index` this frame (N): its own constant force plus the keys' push on it.
     Vec2 appliedForce(int index) const;
     // True when the scene uses what the Physics section sets (a setting of the table's Physics
     // section other than its default, a block's force) or the thrust is on: the section opens.

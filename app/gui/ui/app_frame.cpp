@@ -265,8 +265,8 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
     scene.theme = &sceneTheme(app.view.lightTheme);
     scene.vectors = app.view.show.vectors;
     scene.frameVelocity = frameVelocity(app.sim.world(), app.view.frame);
-    scene.thrustBlock = app.sim.thrustedBlock();
-    scene.thrust = app.sim.thrustForce();
+    scene.thrustBlock = app.sim.pushedBlock(); // the thrust, or the player's push
+    scene.thrust = app.sim.pushForce();
     scene.trails = app.view.show.trails ? &app.sim.run.trails : nullptr;
     if (app.view.show.sideBySide && app.sim.run.methods.running) {
         for (int m = 0; m < static_cast<int>(Method::Count); ++m) {

@@ -463,8 +463,8 @@ void drawSceneDecorations(App& app) {
     SceneView forces; // what the scene renderer draws the force arrows from
     forces.world = &app.sim.world();
     forces.vectors = app.view.show.vectors;
-    forces.thrustBlock = app.sim.thrustedBlock();
-    forces.thrust = app.sim.thrustForce();
+    forces.thrustBlock = app.sim.pushedBlock(); // the thrust, or the player's push
+    forces.thrust = app.sim.pushForce();
     drawForceValues(app, forces, dl);
     drawLargeCount(app, dl);
     drawStatusBadge(app, dl);

@@ -292,7 +292,9 @@ TEST(Windows, EveryShippedSceneGivesTheSameResultsAsThePlainSearch) {
     // 5 s of each (a few scenes collide only later, or never: the thruster's block flies
     // freely), under the perfect method whatever the scene's.
     // A resting stack and a jammed box pass no windows (nothing moves), the thruster's block
-    // meets nothing: the others must do both.
+    // meets nothing: the others must collide. Two slow scenes of one or two moving blocks, the
+    // friction slide (a crate alone on the floor) and the pressed block, pass no
+    // window after the first (measured): the others must do both.
     int scenes = 0, colliding = 0, passing = 0;
     for (const auto& entry : std::filesystem::directory_iterator(SANDBOX_SCENES_DIR)) {
         if (entry.path().extension() != ".json") continue;
@@ -309,7 +311,7 @@ TEST(Windows, EveryShippedSceneGivesTheSameResultsAsThePlainSearch) {
     }
     EXPECT_GE(scenes, 25);
     EXPECT_GE(colliding, scenes - 3);
-    EXPECT_GE(passing, scenes - 3);
+    EXPECT_GE(passing, scenes - 5);
 }
 
 TEST(Windows, GasesGiveTheSameResultsAsThePlainSearch) {
