@@ -331,6 +331,11 @@ def first_frame(page, base):
     check(page.evaluate(hint), "no first-visit hint")
     words = page.evaluate("document.getElementById('hint').innerText")
     check("F1" in words, f"the desktop's hint does not name F1: {words!r}")
+    # Its Help button opens the help (and puts the hint away).
+    page.evaluate("document.getElementById('hint-help').click()")
+    check(page.status()["helpOpen"], "the hint's Help button did not open the help")
+    check(not page.evaluate(hint), "the hint stays after its Help button")
+    page.evaluate("document.getElementById('hint').hidden = false")
     # It lies beside the panel (covering none of its controls), inside the page.
     box = page.evaluate("(() => { const r = document.getElementById('hint')"
                         ".getBoundingClientRect(); return [r.left, r.right, r.bottom]; })()")
@@ -722,7 +727,7 @@ def phone(base):
               hint[1] <= hint[4] and hint[5] <= hint[2], f"the first visit's hint: {hint}")
         # A phone has no F1: the hint names only the button (innerText leaves hidden text out).
         words = page.evaluate("document.getElementById('hint').innerText")
-        check("F1" not in words and "Help button" in words, f"the phone's hint says {words!r}")
+        check("F1" not in words and "Help" in words, f"the phone's hint says {words!r}")
         panel = s["panelOnScreen"]
         page.tap(panel[0] + 40, panel[1] + panel[3] / 2)  # "Controls", the bar's first button
         s = page.status()

@@ -262,6 +262,12 @@ extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_open_lesson() {
     openLesson(gWeb->app, gWeb->app.shipped.lessons.front().path);
 }
 
+// Called by web/index.html's first-visit hint: opens the help (its keys, or on a touch screen its
+// gestures).
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_open_help() {
+    if (gWeb) gWeb->app.ui.helpOpen = true;
+}
+
 // Called by web/index.html when "Copy link" is done: the note, or the error (a link too long).
 extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_link_copied(int chars, int copied) {
     if (!gWeb) return;
@@ -311,6 +317,7 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
            ",\"unsaved\":" + (app.sim.unsavedEdits() ? "true" : "false") +
            ",\"note\":" + quoted(app.ui.messages.note) +
            ",\"fullscreen\":" + (app.view.fullscreen ? "true" : "false") +
+           ",\"helpOpen\":" + (app.ui.helpOpen ? "true" : "false") +
            ",\"traceFirstDifference\":" + // null: no trace open; -1: the same as the reference
            (app.studentTrace.open() ? std::to_string(app.studentTrace.firstDifference())
                                     : std::string("null"));
