@@ -16,6 +16,7 @@ from hostile_outside import NOBODY, changed, read, run, snapshot, write
 # A window that never shows is stopped by the suite's timeout (a hang fails the case).
 DRIVER = r'''
 out=$1; shift
+: >"$out"  # there before the first grep (the background job's redirection may come later)
 "$@" >"$out" &
 pid=$!
 until grep -q "window ready" "$out"; do
