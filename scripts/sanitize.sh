@@ -15,6 +15,9 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # 400-block jam (Jams.JammedBoxOf400Blocks*) checks here. Under ASan they took 135 s of the run's
 # 640 test-seconds (fresh clone, 2 cores) and, started last, held one core 92 s after the other was
 # done. The Release run (scripts/test.sh) runs them; SANITIZE_ALL=1 runs them here too.
-skip=()
-[ "${SANITIZE_ALL:-0}" = 1 ] || skip=(-E 'JammedBox\.TenThousandBlocks')
-ctest --test-dir build-asan --output-on-failure -j"$jobs" "${skip[@]}" "$@"
+# The outside hostile-input suite (hostile_outside.*, issue 28) is never run here: it drives the
+# Release programs (the window and sandbox-offscreen, not built here) under `ulimit -v`, which
+# ASan's shadow memory cannot live with (every case aborted). scripts/test.sh runs it.
+skip='hostile_outside\.'
+[ "${SANITIZE_ALL:-0}" = 1 ] || skip+='|JammedBox\.TenThousandBlocks'
+ctest --test-dir build-asan --output-on-failure -j"$jobs" -E "$skip" "$@"
