@@ -123,7 +123,9 @@ void drawVelocitySpaceOverlay(App& app) {
     ImGui::InvisibleButton("##velocityspace", ImVec2(side, side));
     drawPicture(app, path, lo, side);
     if (beside) ImGui::SameLine();
-    ImGui::BeginChild("##velocityspace-caption", ImVec2(0.0f, 0.0f), false);
+    // Padded: a glyph's left bearing at the child's very edge would be cut.
+    ImGui::BeginChild("##velocityspace-caption", ImVec2(0.0f, 0.0f), false,
+                      ImGuiWindowFlags_AlwaysUseWindowPadding);
     if (uiSmallButton("CSV")) {
         exportCsv(app, "velocity space",
                   velocitySpaceTable(path, app.sim.blockDisplayName(pair.block1),
@@ -133,8 +135,17 @@ void drawVelocitySpaceOverlay(App& app) {
         ImGui::SetTooltip("Write the path (t, v1, v2 and the coordinates) as a CSV file");
     ImGui::SameLine();
     ImGui::TextDisabled("%zu points", path.samples().size());
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(velocitySpaceCaption(pair).c_str());
-    ImGui::PopTextWrapPos();
+    // The whole caption where it fits; else the count (theta and N), the rest on hovering it.
+    const std::string caption = velocitySpaceCaption(pair);
+    const auto width = [](const std::string& line) {
+        return static_cast<double>(ImGui::CalcTextSize(line.c_str()).x);
+    };
+    const std::string wrapped = wrapFormula(caption, ImGui::GetContentRegionAvail().x, width);
+    if (ImGui::CalcTextSize(wrapped.c_str()).y <= ImGui::GetContentRegionAvail().y) {
+        ImGui::TextUnformatted(wrapped.c_str());
+    } else {
+        textWrappedFormula(velocitySpaceCount(pair));
+        wrappedTooltip(caption);
+    }
     ImGui::EndChild();
 }

@@ -42,8 +42,11 @@ ImVec2 sceneCaptionPlace(const App& app, float width, float height,
     for (const Block& b : app.sim.world().blocks)
         avoid.push_back(screenBox(app, b.position, b.size, font));
     for (const WorldBox& b : boxes) avoid.push_back(screenBox(app, b.centre, b.size, font * 1.5));
-    const ScreenRect r = placeCaption(
-        width, height, vp, worldRectOnScreen(app.view.camera, app.sim.world().bounds), avoid, 10.0 * s);
+    // Where it must cover blocks (a box full of them), it hides none of the texts drawn so far
+    // (the axis numbers, the labels: app.ui.takenOnScreen, the blocks too) if it can.
+    const ScreenRect r =
+        placeCaption(width, height, vp, worldRectOnScreen(app.view.camera, app.sim.world().bounds),
+                     avoid, 10.0 * s, app.ui.takenOnScreen);
     return ImVec2(static_cast<float>(r.x), static_cast<float>(r.y));
 }
 

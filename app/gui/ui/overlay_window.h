@@ -9,6 +9,7 @@
 
 #include <imgui.h>
 
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -29,8 +30,10 @@ ImVec2 toScreen(const App& app, Vec2 p);
 // Where an overlay's label of `size` px wanted at `at` (its top-left) goes over the scene: there,
 // or moved up or down by lines until it overlaps nothing taken on screen this frame (the blocks,
 // their labels, the arrows' values: app.ui.takenOnScreen); the spot is then taken too
-// (scene_view.cpp).
+// (scene_view.cpp). With several wishes (right of a mark, else left of it), the first that
+// finds a free spot; where none does, the first wish.
 ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size);
+ImVec2 placeSceneLabel(App& app, std::initializer_list<ImVec2> wishes, ImVec2 size);
 // The font of the scene's labels: the UI's label font, slide-sized in a lesson and in present
 // mode (uiSlideLabelFont). SceneLabelFont pushes it while it lives (overlays drawn over the
 // scene).
@@ -57,7 +60,7 @@ struct CaptionLine {
 };
 // Where a caption of `width` x `height` px goes over the scene (placeCaption): covering no
 // block (grown by its labels), none of `boxes` (grown by one and a half lines), nor the status
-// badge and the axis numbers.
+// badge, the axis numbers and the labels taken on screen so far (app.ui.takenOnScreen).
 ImVec2 sceneCaptionPlace(const App& app, float width, float height,
                          const std::vector<WorldBox>& boxes);
 // Lines of text on a plate over the scene, where sceneCaptionPlace finds room (the point of

@@ -69,11 +69,16 @@ bool intersects(const ScreenRect& a, const ScreenRect& b) {
            b.y < a.y + a.height;
 }
 
+// How many lines a label may move up or down to find a free spot (a crowded scene: a dozen
+// labels around one block).
+constexpr int kFreeSpotLines = 12;
+
 // Moves a label (x, y = top-left, size) up or down in steps of a line until it overlaps none of
-// `placed` (labels already drawn and blocks), trying above first, then below; returns its top.
-float freeSpot(const std::vector<ScreenRect>& placed, float x, float above, float below,
-               ImVec2 size, float line) {
-    for (int k = 0; k < 6; ++k) {
+// `placed` (labels already drawn and blocks), trying above first, then below; returns its top,
+// or nothing when no spot is free.
+std::optional<float> clearSpot(const std::vector<ScreenRect>& placed, float x, float above,
+                               float below, ImVec2 size, float line) {
+    for (int k = 0; k < kFreeSpotLines; ++k) {
         const float candidates[2] = {above - k * line, below + k * line};
         for (float y : candidates) {
             const float gap = line * 0.5f; // labels closer than this read as one
@@ -88,7 +93,13 @@ float freeSpot(const std::vector<ScreenRect>& placed, float x, float above, floa
             if (clear) return y;
         }
     }
-    return above;
+    return std::nullopt;
+}
+
+// clearSpot, or `above` when no spot is free.
+float freeSpot(const std::vector<ScreenRect>& placed, float x, float above, float below,
+               ImVec2 size, float line) {
+    return clearSpot(placed, x, above, below, size, line).value_or(above);
 }
 
 constexpr int kCrowdedScene = 20; // blocks
@@ -136,6 +147,10 @@ void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed)
             const float top = static_cast<float>(c.y) - (twoLines ? lineHeight : lineHeight * 0.5f);
             shadowText(dl, ImVec2(static_cast<float>(c.x) - nameSize.x * 0.5f, top), white,
                        name.c_str());
+            // On its block (taken already): noted too, for the captions, which weigh labels.
+            const float labelW = twoLines ? std::max(nameSize.x, secondSize.x) : nameSize.x;
+            placed.push_back(spanning(c.x - labelW * 0.5, top, c.x + labelW * 0.5,
+                                      top + (twoLines ? 2.0f : 1.0f) * lineHeight));
             if (twoLines) {
                 shadowText(dl,
                            ImVec2(static_cast<float>(c.x) - secondSize.x * 0.5f, top + lineHeight),
@@ -156,8 +171,9 @@ void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed)
 
 // The numbers of the grid along the floor and the left wall; when the camera leaves the floor
 // (or the left wall) out of the view, along the view's bottom (or left) edge, so that a position
-// a step's question names can be read off the screen.
-void drawAxisNumbers(const App& app, ImDrawList* dl) {
+// a step's question names can be read off the screen. Each number drawn is taken in `placed`,
+// for the labels placed after it.
+void drawAxisNumbers(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
     const Camera& cam = app.view.camera;
     const Bounds& bounds = app.sim.world().bounds;
     const ScreenRect& vp = cam.viewport();
@@ -187,6 +203,7 @@ void drawAxisNumbers(const App& app, ImDrawList* dl) {
         const float at = static_cast<float>(s.x) - size.x * 0.5f;
         if (!inView(at, xRow, size)) continue;
         dl->AddText(ImVec2(at, xRow), color, text);
+        placed.push_back({at, xRow, size.x, size.y});
         unitX = at + size.x + 4.0f;
     }
     for (double y = bounds.min.y; y <= bounds.max.y + 1e-9; y += step) {
@@ -198,12 +215,16 @@ void drawAxisNumbers(const App& app, ImDrawList* dl) {
                                    : std::max(static_cast<float>(s.x) - size.x - gap,
                                               static_cast<float>(vp.x) + 2.0f);
         const float ty = static_cast<float>(s.y) - size.y * 0.5f;
-        if (inView(x, ty, size)) dl->AddText(ImVec2(x, ty), color, text);
+        if (!inView(x, ty, size)) continue;
+        dl->AddText(ImVec2(x, ty), color, text);
+        placed.push_back({x, ty, size.x, size.y});
     }
     // The unit, after the last number on the x axis.
     const ImVec2 unitSize = ImGui::CalcTextSize("m");
-    if (std::isfinite(unitX) && inView(unitX, xRow, unitSize))
+    if (std::isfinite(unitX) && inView(unitX, xRow, unitSize)) {
         dl->AddText(ImVec2(unitX, xRow), color, "m");
+        placed.push_back({unitX, xRow, unitSize.x, unitSize.y});
+    }
 }
 
 // The collision count, large, in the world's top right corner, where the count is the lesson:
@@ -232,15 +253,16 @@ void drawLargeCount(const App& app, ImDrawList* dl) {
     dl->AddText(ImVec2(at.x + ts.x - us.x, at.y + ts.y), packed(theme().axis), unit);
 }
 
-// The row for a text of size `ts` at (x, y): there, or moved down a line at a time (at most
-// six) until it overlaps nothing in `placed`.
+// The row for a text of size `ts` at (x, y): there, or moved down (then up) a line at a time
+// until it overlaps nothing in `placed`; where no row is free, there.
 float freeRow(const std::vector<ScreenRect>& placed, float x, float y, ImVec2 ts) {
-    for (int k = 0; k < 6; ++k) {
-        const ScreenRect r = spanning(x - 4.0f, y, x + ts.x + 4.0f, y + ts.y);
-        if (std::none_of(placed.begin(), placed.end(),
-                         [&r](const ScreenRect& p) { return intersects(r, p); }))
-            break;
-        y += ts.y;
+    for (int k = 0; k < kFreeSpotLines; ++k) {
+        for (const float row : {y + k * ts.y, y - k * ts.y}) {
+            const ScreenRect r = spanning(x - 4.0f, row, x + ts.x + 4.0f, row + ts.y);
+            if (std::none_of(placed.begin(), placed.end(),
+                             [&r](const ScreenRect& p) { return intersects(r, p); }))
+                return row;
+        }
     }
     return y;
 }
@@ -366,7 +388,7 @@ void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl) {
 }
 
 // A resting stack's expected top as a dashed line: a method that lets it sink shows the gap.
-void drawReferenceLine(const App& app, ImDrawList* dl) {
+void drawReferenceLine(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
     const std::optional<double> top = restingStackTop(app.sim.scene);
     if (!top) return;
     const Bounds& bounds = app.sim.world().bounds;
@@ -381,8 +403,10 @@ void drawReferenceLine(const App& app, ImDrawList* dl) {
     char text[64];
     std::snprintf(text, sizeof text, "top of the stack at the start: %s m",
                   formatNumber(*top).c_str());
-    shadowText(dl, ImVec2(static_cast<float>(a.x) + 6.0f, y - ImGui::GetFontSize() - 4.0f), color,
-               text, packed(theme().textShadow));
+    const ImVec2 at(static_cast<float>(a.x) + 6.0f, y - ImGui::GetFontSize() - 4.0f);
+    shadowText(dl, at, color, text, packed(theme().textShadow));
+    const ImVec2 size = ImGui::CalcTextSize(text);
+    placed.push_back({at.x, at.y, size.x, size.y});
 }
 
 void drawFlingReadout(const App& app, ImDrawList* dl) {
@@ -444,19 +468,30 @@ SceneLabelFont::~SceneLabelFont() {
     ImGui::PopFont();
 }
 
+ImVec2 placeSceneLabel(App& app, std::initializer_list<ImVec2> wishes, ImVec2 size) {
+    ImVec2 spot = *wishes.begin();
+    for (const ImVec2& at : wishes) {
+        const std::optional<float> y =
+            clearSpot(app.ui.takenOnScreen, at.x, at.y, at.y, size, ImGui::GetFontSize());
+        if (!y) continue;
+        spot = ImVec2(at.x, *y);
+        break;
+    }
+    app.ui.takenOnScreen.push_back({spot.x, spot.y, size.x, size.y});
+    return spot;
+}
+
 ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size) {
-    const float y = freeSpot(app.ui.takenOnScreen, at.x, at.y, at.y, size, ImGui::GetFontSize());
-    app.ui.takenOnScreen.push_back({at.x, y, size.x, size.y});
-    return ImVec2(at.x, y);
+    return placeSceneLabel(app, {at}, size);
 }
 
 void drawSceneDecorations(App& app) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     ImGui::PushFont(sceneLabelFont(app)); // the scene's labels have a size of their own
-    drawAxisNumbers(app, dl);
-    drawReferenceLine(app, dl);
-    std::vector<ScreenRect>& placed = app.ui.takenOnScreen; // blocks and labels on screen
+    std::vector<ScreenRect>& placed = app.ui.takenOnScreen; // axis numbers, blocks and labels
     placed.clear();
+    drawAxisNumbers(app, dl, placed);
+    drawReferenceLine(app, dl, placed);
     drawLabels(app, dl, placed);
     drawArrowValues(app, dl, placed);
     drawMomentumValues(app, dl, placed);

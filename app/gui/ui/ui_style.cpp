@@ -297,6 +297,15 @@ void textWrappedFormula(const std::string& text) {
     ImGui::TextUnformatted(lines.c_str(), lines.c_str() + lines.size());
 }
 
+void wrappedTooltip(const std::string& text) {
+    if (!ImGui::IsItemHovered()) return;
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::TextUnformatted(text.c_str(), text.c_str() + text.size());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
 ImVec4 uiErrorColor() {
     return uiThemed(ImVec4{1.0f, 0.45f, 0.42f, 1.0f});
 }
