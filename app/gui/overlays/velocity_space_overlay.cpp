@@ -113,14 +113,16 @@ void drawVelocitySpaceOverlay(App& app) {
         return;
     }
     const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float font = ImGui::GetFontSize();
     // The square on the left and the caption beside it when the window is wide, else the
     // caption under a smaller square.
     const bool beside = avail.x > avail.y * 1.8f;
-    // Stacked, the picture comes first (the caption under it scrolls).
-    const float side = std::max(40.0f, beside ? avail.y : std::min(avail.x, avail.y - 1.6f * font));
+    // Stacked, the picture comes first, the CSV row under it (the caption where it fits).
+    const float row = ImGui::GetFrameHeightWithSpacing() + 2.0f * ImGui::GetStyle().WindowPadding.y;
+    const float side = std::max(40.0f, beside ? avail.y : std::min(avail.x, avail.y - row));
     const ImVec2 lo = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("##velocityspace", ImVec2(side, side));
+    const std::string caption = velocitySpaceCaption(pair);
+    wrappedTooltip(caption);
     drawPicture(app, path, lo, side);
     if (beside) ImGui::SameLine();
     // Padded: a glyph's left bearing at the child's very edge would be cut.
@@ -135,16 +137,22 @@ void drawVelocitySpaceOverlay(App& app) {
         ImGui::SetTooltip("Write the path (t, v1, v2 and the coordinates) as a CSV file");
     ImGui::SameLine();
     ImGui::TextDisabled("%zu points", path.samples().size());
-    // The whole caption where it fits; else the count (theta and N), the rest on hovering it.
-    const std::string caption = velocitySpaceCaption(pair);
-    const auto width = [](const std::string& line) {
-        return static_cast<double>(ImGui::CalcTextSize(line.c_str()).x);
+    // The whole caption where it fits; else the count (theta and N) where it fits; the whole on
+    // hovering the picture or the count.
+    const ImVec2 room = ImGui::GetContentRegionAvail();
+    const auto wrapped = [&room](const std::string& text) {
+        return wrapFormula(text, room.x, [](const std::string& line) {
+            return static_cast<double>(ImGui::CalcTextSize(line.c_str()).x);
+        });
     };
-    const std::string wrapped = wrapFormula(caption, ImGui::GetContentRegionAvail().x, width);
-    if (ImGui::CalcTextSize(wrapped.c_str()).y <= ImGui::GetContentRegionAvail().y) {
-        ImGui::TextUnformatted(wrapped.c_str());
-    } else {
-        textWrappedFormula(velocitySpaceCount(pair));
+    const auto fits = [&room](const std::string& text) {
+        return ImGui::CalcTextSize(text.c_str()).y <= room.y;
+    };
+    const std::string whole = wrapped(caption), count = wrapped(velocitySpaceCount(pair));
+    if (fits(whole)) {
+        ImGui::TextUnformatted(whole.c_str());
+    } else if (fits(count)) {
+        ImGui::TextUnformatted(count.c_str());
         wrappedTooltip(caption);
     }
     ImGui::EndChild();

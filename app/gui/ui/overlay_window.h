@@ -31,7 +31,7 @@ ImVec2 toScreen(const App& app, Vec2 p);
 // or moved up or down by lines until it overlaps nothing taken on screen this frame (the blocks,
 // their labels, the arrows' values: app.ui.takenOnScreen); the spot is then taken too
 // (scene_view.cpp). With several wishes (right of a mark, else left of it), the first that
-// finds a free spot; where none does, the first wish.
+// finds a free spot; where none does, the spot covering the least (a block, not its label).
 ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size);
 ImVec2 placeSceneLabel(App& app, std::initializer_list<ImVec2> wishes, ImVec2 size);
 // The font of the scene's labels: the UI's label font, slide-sized in a lesson and in present
@@ -64,7 +64,8 @@ struct CaptionLine {
 ImVec2 sceneCaptionPlace(const App& app, float width, float height,
                          const std::vector<WorldBox>& boxes);
 // Lines of text on a plate over the scene, where sceneCaptionPlace finds room (the point of
-// impact's numbers, the student's trace).
+// impact's numbers, the student's trace); where the plate would hide a label there, the lines
+// wrapped narrower (wrapFormula) if that finds a spot hiding none.
 void drawSceneCaption(const App& app, const std::vector<CaptionLine>& lines,
                       const std::vector<WorldBox>& boxes);
 

@@ -64,59 +64,71 @@ ScreenRect spanning(double x0, double y0, double x1, double y1) {
     return {x0, y0, x1 - x0, y1 - y0};
 }
 
-bool intersects(const ScreenRect& a, const ScreenRect& b) {
-    return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height &&
-           b.y < a.y + a.height;
-}
-
 // How many lines a label may move up or down to find a free spot (a crowded scene: a dozen
 // labels around one block).
 constexpr int kFreeSpotLines = 12;
 
+using Taken = UiState::TakenOnScreen;
+
+// The area a label's rectangle `r` has in common with what is taken; a text's counts ten times
+// (over a block, a label still hides less than over another label).
+double coveredArea(const Taken& placed, const ScreenRect& r) {
+    const auto area = [&r](const std::vector<ScreenRect>& list) {
+        double sum = 0.0;
+        for (const ScreenRect& p : list) {
+            const double w = std::min(r.x + r.width, p.x + p.width) - std::max(r.x, p.x);
+            const double h = std::min(r.y + r.height, p.y + p.height) - std::max(r.y, p.y);
+            if (w > 0.0 && h > 0.0) sum += w * h;
+        }
+        return sum;
+    };
+    return area(placed.blocks) + 10.0 * area(placed.texts);
+}
+
+// A label's spot (its top) and what it covers there (0: a free spot).
+struct Spot {
+    float y = 0.0f;
+    double covered = 0.0;
+};
+
 // Moves a label (x, y = top-left, size) up or down in steps of a line until it overlaps none of
-// `placed` (labels already drawn and blocks), trying above first, then below; returns its top,
-// or nothing when no spot is free.
-std::optional<float> clearSpot(const std::vector<ScreenRect>& placed, float x, float above,
-                               float below, ImVec2 size, float line) {
+// `placed` (labels already drawn and blocks), trying above first, then below. Where no spot is
+// free (a box full of blocks), the one covering the least: over a block, not over its label.
+Spot bestSpot(const Taken& placed, float x, float above, float below, ImVec2 size, float line) {
+    Spot best{above, INFINITY};
     for (int k = 0; k < kFreeSpotLines; ++k) {
         const float candidates[2] = {above - k * line, below + k * line};
         for (float y : candidates) {
             const float gap = line * 0.5f; // labels closer than this read as one
-            const ScreenRect r = spanning(x - gap, y, x + size.x + gap, y + size.y);
-            bool clear = true;
-            for (const ScreenRect& p : placed) {
-                if (intersects(r, p)) {
-                    clear = false;
-                    break;
-                }
-            }
-            if (clear) return y;
+            const double covered =
+                coveredArea(placed, spanning(x - gap, y, x + size.x + gap, y + size.y));
+            if (covered == 0.0) return {y, 0.0};
+            if (covered < best.covered) best = {y, covered};
         }
     }
-    return std::nullopt;
+    return best;
 }
 
-// clearSpot, or `above` when no spot is free.
-float freeSpot(const std::vector<ScreenRect>& placed, float x, float above, float below,
-               ImVec2 size, float line) {
-    return clearSpot(placed, x, above, below, size, line).value_or(above);
+float freeSpot(const Taken& placed, float x, float above, float below, ImVec2 size, float line) {
+    return bestSpot(placed, x, above, below, size, line).y;
 }
 
 constexpr int kCrowdedScene = 20; // blocks
 
 // `placed`: the rectangles taken on screen, the blocks and each label (the arrows' values
 // avoid them).
-void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
+void drawLabels(const App& app, ImDrawList* dl, Taken& placed) {
     const int n = static_cast<int>(app.sim.world().blocks.size());
     if (n > kMaxLabelledBlocks) return;
     const float lineHeight = ImGui::GetFontSize();
     // Rectangles already taken on screen: the blocks themselves, then each label placed.
-    placed.reserve(static_cast<std::size_t>(2 * n));
+    placed.blocks.reserve(static_cast<std::size_t>(n));
+    placed.texts.reserve(placed.texts.size() + static_cast<std::size_t>(n));
     for (const Block& b : app.sim.world().blocks) {
         const Vec2 lo = app.view.camera.worldToScreen(b.position - b.size * 0.5);
         const Vec2 hi = app.view.camera.worldToScreen(b.position + b.size * 0.5);
-        placed.push_back(spanning(std::min(lo.x, hi.x), std::min(lo.y, hi.y), std::max(lo.x, hi.x),
-                                  std::max(lo.y, hi.y)));
+        placed.blocks.push_back(spanning(std::min(lo.x, hi.x), std::min(lo.y, hi.y),
+                                         std::max(lo.x, hi.x), std::max(lo.y, hi.y)));
     }
     for (int i = 0; i < n; ++i) {
         const Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
@@ -149,8 +161,8 @@ void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed)
                        name.c_str());
             // On its block (taken already): noted too, for the captions, which weigh labels.
             const float labelW = twoLines ? std::max(nameSize.x, secondSize.x) : nameSize.x;
-            placed.push_back(spanning(c.x - labelW * 0.5, top, c.x + labelW * 0.5,
-                                      top + (twoLines ? 2.0f : 1.0f) * lineHeight));
+            placed.texts.push_back(spanning(c.x - labelW * 0.5, top, c.x + labelW * 0.5,
+                                            top + (twoLines ? 2.0f : 1.0f) * lineHeight));
             if (twoLines) {
                 shadowText(dl,
                            ImVec2(static_cast<float>(c.x) - secondSize.x * 0.5f, top + lineHeight),
@@ -163,7 +175,7 @@ void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed)
             const float above = static_cast<float>(c.y - hPx * 0.5) - lineHeight - 2.0f;
             const float below = static_cast<float>(c.y + hPx * 0.5) + 2.0f;
             const float top = freeSpot(placed, x, above, below, nameSize, lineHeight);
-            placed.push_back(spanning(x, top, x + nameSize.x, top + nameSize.y));
+            placed.texts.push_back(spanning(x, top, x + nameSize.x, top + nameSize.y));
             shadowText(dl, ImVec2(x, top), beside, name.c_str(), packed(theme().textShadow));
         }
     }
@@ -173,7 +185,7 @@ void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed)
 // (or the left wall) out of the view, along the view's bottom (or left) edge, so that a position
 // a step's question names can be read off the screen. Each number drawn is taken in `placed`,
 // for the labels placed after it.
-void drawAxisNumbers(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
+void drawAxisNumbers(const App& app, ImDrawList* dl, Taken& placed) {
     const Camera& cam = app.view.camera;
     const Bounds& bounds = app.sim.world().bounds;
     const ScreenRect& vp = cam.viewport();
@@ -203,7 +215,7 @@ void drawAxisNumbers(const App& app, ImDrawList* dl, std::vector<ScreenRect>& pl
         const float at = static_cast<float>(s.x) - size.x * 0.5f;
         if (!inView(at, xRow, size)) continue;
         dl->AddText(ImVec2(at, xRow), color, text);
-        placed.push_back({at, xRow, size.x, size.y});
+        placed.texts.push_back({at, xRow, size.x, size.y});
         unitX = at + size.x + 4.0f;
     }
     for (double y = bounds.min.y; y <= bounds.max.y + 1e-9; y += step) {
@@ -217,13 +229,13 @@ void drawAxisNumbers(const App& app, ImDrawList* dl, std::vector<ScreenRect>& pl
         const float ty = static_cast<float>(s.y) - size.y * 0.5f;
         if (!inView(x, ty, size)) continue;
         dl->AddText(ImVec2(x, ty), color, text);
-        placed.push_back({x, ty, size.x, size.y});
+        placed.texts.push_back({x, ty, size.x, size.y});
     }
     // The unit, after the last number on the x axis.
     const ImVec2 unitSize = ImGui::CalcTextSize("m");
     if (std::isfinite(unitX) && inView(unitX, xRow, unitSize)) {
         dl->AddText(ImVec2(unitX, xRow), color, "m");
-        placed.push_back({unitX, xRow, unitSize.x, unitSize.y});
+        placed.texts.push_back({unitX, xRow, unitSize.x, unitSize.y});
     }
 }
 
@@ -254,23 +266,24 @@ void drawLargeCount(const App& app, ImDrawList* dl) {
 }
 
 // The row for a text of size `ts` at (x, y): there, or moved down (then up) a line at a time
-// until it overlaps nothing in `placed`; where no row is free, there.
-float freeRow(const std::vector<ScreenRect>& placed, float x, float y, ImVec2 ts) {
+// until it overlaps nothing in `placed`; where no row is free, the one covering the least.
+float freeRow(const Taken& placed, float x, float y, ImVec2 ts) {
+    Spot best{y, INFINITY};
     for (int k = 0; k < kFreeSpotLines; ++k) {
         for (const float row : {y + k * ts.y, y - k * ts.y}) {
-            const ScreenRect r = spanning(x - 4.0f, row, x + ts.x + 4.0f, row + ts.y);
-            if (std::none_of(placed.begin(), placed.end(),
-                             [&r](const ScreenRect& p) { return intersects(r, p); }))
-                return row;
+            const double covered =
+                coveredArea(placed, spanning(x - 4.0f, row, x + ts.x + 4.0f, row + ts.y));
+            if (covered == 0.0) return row;
+            if (covered < best.covered) best = {row, covered};
         }
     }
-    return y;
+    return best.y;
 }
 
 // A value written at the head of an arrow (from `base` to `tip`, m) cut at the view's edge or the
 // arena's wall: over the head (beside a vertical one), kept inside the view, in a free row.
-void drawValueAtTip(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed, Vec2 base,
-                    Vec2 tip, const std::string& text, ImU32 color) {
+void drawValueAtTip(const App& app, ImDrawList* dl, Taken& placed, Vec2 base, Vec2 tip,
+                    const std::string& text, ImU32 color) {
     const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
     const ScreenRect& vp = app.view.camera.viewport();
     const Vec2 at = app.view.camera.worldToScreen(tip);
@@ -288,13 +301,13 @@ void drawValueAtTip(const App& app, ImDrawList* dl, std::vector<ScreenRect>& pla
                 std::clamp(static_cast<float>(at.y) - ts.y - 6.0f, static_cast<float>(vp.y),
                            static_cast<float>(vp.y + vp.height) - ts.y),
                 ts);
-    placed.push_back(spanning(x, y, x + ts.x, y + ts.y));
+    placed.texts.push_back(spanning(x, y, x + ts.x, y + ts.y));
     shadowText(dl, ImVec2(x, y), color, text.c_str(), packed(theme().textShadow));
 }
 
 // The momentum arrows too long to draw to scale carry their value at their head (p = m·w in
 // the view's frame), in the momentum arrows' colour.
-void drawMomentumValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
+void drawMomentumValues(const App& app, ImDrawList* dl, Taken& placed) {
     if (!app.view.show.vectors) return;
     const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
     int written = 0;
@@ -313,7 +326,7 @@ void drawMomentumValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>&
 // Arrows too long to draw to scale (compressed and cut at the view's edge) carry their value; in
 // the centre-of-mass frame every arrow does (w1 = 4 m/s: the lecture's numbers), in a scene of
 // few blocks.
-void drawArrowValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
+void drawArrowValues(const App& app, ImDrawList* dl, Taken& placed) {
     if (!app.view.show.vectors) return;
     const bool relative = app.view.frame != ViewFrame::World;
     const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
@@ -344,7 +357,7 @@ void drawArrowValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>& pl
         const float x = std::clamp(static_cast<float>(at.x) - ts.x * 0.5f, static_cast<float>(vp.x),
                                    static_cast<float>(vp.x + vp.width) - ts.x);
         const float y = freeRow(placed, x, static_cast<float>(at.y), ts);
-        placed.push_back(spanning(x, y, x + ts.x, y + ts.y));
+        placed.texts.push_back(spanning(x, y, x + ts.x, y + ts.y));
         shadowText(dl, ImVec2(x, y), packed(theme().velocity), text.c_str(),
                    packed(theme().textShadow));
         ++written;
@@ -388,7 +401,7 @@ void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl) {
 }
 
 // A resting stack's expected top as a dashed line: a method that lets it sink shows the gap.
-void drawReferenceLine(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
+void drawReferenceLine(const App& app, ImDrawList* dl, Taken& placed) {
     const std::optional<double> top = restingStackTop(app.sim.scene);
     if (!top) return;
     const Bounds& bounds = app.sim.world().bounds;
@@ -406,7 +419,7 @@ void drawReferenceLine(const App& app, ImDrawList* dl, std::vector<ScreenRect>& 
     const ImVec2 at(static_cast<float>(a.x) + 6.0f, y - ImGui::GetFontSize() - 4.0f);
     shadowText(dl, at, color, text, packed(theme().textShadow));
     const ImVec2 size = ImGui::CalcTextSize(text);
-    placed.push_back({at.x, at.y, size.x, size.y});
+    placed.texts.push_back({at.x, at.y, size.x, size.y});
 }
 
 void drawFlingReadout(const App& app, ImDrawList* dl) {
@@ -470,14 +483,15 @@ SceneLabelFont::~SceneLabelFont() {
 
 ImVec2 placeSceneLabel(App& app, std::initializer_list<ImVec2> wishes, ImVec2 size) {
     ImVec2 spot = *wishes.begin();
+    double covered = INFINITY;
     for (const ImVec2& at : wishes) {
-        const std::optional<float> y =
-            clearSpot(app.ui.takenOnScreen, at.x, at.y, at.y, size, ImGui::GetFontSize());
-        if (!y) continue;
-        spot = ImVec2(at.x, *y);
-        break;
+        const Spot s = bestSpot(app.ui.takenOnScreen, at.x, at.y, at.y, size, ImGui::GetFontSize());
+        if (s.covered >= covered) continue;
+        spot = ImVec2(at.x, s.y);
+        covered = s.covered;
+        if (covered == 0.0) break;
     }
-    app.ui.takenOnScreen.push_back({spot.x, spot.y, size.x, size.y});
+    app.ui.takenOnScreen.texts.push_back({spot.x, spot.y, size.x, size.y});
     return spot;
 }
 
@@ -488,8 +502,9 @@ ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size) {
 void drawSceneDecorations(App& app) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     ImGui::PushFont(sceneLabelFont(app)); // the scene's labels have a size of their own
-    std::vector<ScreenRect>& placed = app.ui.takenOnScreen; // axis numbers, blocks and labels
-    placed.clear();
+    Taken& placed = app.ui.takenOnScreen; // blocks, axis numbers and labels
+    placed.blocks.clear();
+    placed.texts.clear();
     drawAxisNumbers(app, dl, placed);
     drawReferenceLine(app, dl, placed);
     drawLabels(app, dl, placed);
