@@ -233,7 +233,13 @@ void uiEndRows() {
 }
 
 bool uiSmallButton(const char* label) {
-    return gTouch ? ImGui::Button(label) : ImGui::SmallButton(label);
+    if (gTouch) return ImGui::Button(label);
+    // ImGui's SmallButton has no vertical padding: its label is clipped to the line, and a
+    // large font's descenders ("velocity", "energy" at UI scale 1.5) were cut. Two pixels more.
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 1.0f));
+    const bool pressed = ImGui::Button(label);
+    ImGui::PopStyleVar();
+    return pressed;
 }
 
 ImFont* uiCompactFont() {
