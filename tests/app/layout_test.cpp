@@ -168,15 +168,23 @@ std::string joined(const std::vector<std::string>& lines) {
 }
 
 // Which checks hold at each size and UI scale: all three at 1920x1080, UI scale 1 (issue 23's
-// Done-when). A check that does not hold yet at a size is not asserted there; the test prints
-// what it finds instead (see the counts in docs/lesson/README.md).
+// Done-when); the plots' height everywhere; at 1920x1080, UI scale 1.5, no text is clipped but in
+// the methods' table (it scrolls sideways: 119 clipped cells over the shipped scenes). What is
+// not asserted is printed (measured: 1920x1080 UI scale 1.5, 11 scene-text overlaps, all the
+// point-of-impact caption in jammed_box and gas_500; 1280x720 UI scale 1, 18 clipped texts in
+// the inspector and the methods' table, 11 overlaps, the same caption; UI scale 1.5 at 1280x720
+// is the crowded case: hundreds of clipped texts in small windows).
 struct Checked {
-    bool unclipped, apart, plotsHigh;
+    bool unclipped = false; // no text clipped...
+    std::string clippedIn;  // ...but in this window (reported there)
+    bool apart = false;     // no two scene texts overlap
+    bool plotsHigh = true;  // every plot >= 13% of the height
 };
 
 Checked checkedAt(const Case& c) {
-    if (c.width == 1920 && c.uiScale == 1.0) return {true, true, true};
-    return {false, false, true};
+    if (c.width == 1920 && c.uiScale == 1.0) return {true, "", true, true};
+    if (c.width == 1920) return {true, "Methods side by side", false, true};
+    return {};
 }
 
 class EveryOverlay : public ::testing::TestWithParam<Case> {};
@@ -208,7 +216,12 @@ TEST_P(EveryOverlay, NoWindowCoversTheWorldAndNoneLeavesTheImage) {
     const Checked checked = checkedAt(c);
     const std::string where = c.name() + ": ";
     if (checked.unclipped) {
-        EXPECT_TRUE(faults.clipped.empty()) << where << joined(faults.clipped);
+        std::vector<std::string> clipped;
+        for (const std::string& t : faults.clipped) {
+            if (checked.clippedIn.empty() || t.rfind("[" + checked.clippedIn + "]", 0) != 0)
+                clipped.push_back(t);
+        }
+        EXPECT_TRUE(clipped.empty()) << where << joined(clipped);
     }
     if (checked.apart) {
         EXPECT_TRUE(faults.overlapping.empty()) << where << joined(faults.overlapping);
