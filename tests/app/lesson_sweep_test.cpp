@@ -32,7 +32,7 @@ namespace fs = std::filesystem;
 const std::string kLecture3 = std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json";
 
 // Issue 23's numbers at 1080p.
-constexpr double kCaptionPx = 36.0;   // 3.3% of the height: a slide's body text
+constexpr double kCaptionPx = 36.0;    // 3.3% of the height: a slide's body text
 constexpr double kSceneLabelPx = 24.0; // 2.2%
 constexpr double kNamedBlockPx = 40.0; // a named block's short side
 constexpr double kPlotPx = 140.0;      // a plot's height
@@ -72,10 +72,10 @@ const std::vector<Shot>& shots() {
         const fs::path dir = fs::path(SANDBOX_SWEEP_OUTPUT_DIR);
         fs::remove_all(dir);
         std::string output;
-        const int code = run(quote(SANDBOX_OFFSCREEN_EXE) +
-                                 " --lesson lecture3 --size 1920x1080 --record-steps " +
-                                 quote(dir.string()),
-                             &output);
+        const int code =
+            run(quote(SANDBOX_OFFSCREEN_EXE) +
+                    " --lesson lecture3 --size 1920x1080 --record-steps " + quote(dir.string()),
+                &output);
         EXPECT_EQ(code, 0) << output;
         std::vector<Shot> out;
         for (std::size_t step = 1; step <= lecture3().steps.size(); ++step) {
