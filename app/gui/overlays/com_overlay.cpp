@@ -129,11 +129,8 @@ void drawComOverlay(App& app) {
         char text[96];
         std::snprintf(text, sizeof text, "centre of mass  u = (%.2f, %.2f) m/s", c.velocity.x,
                       c.velocity.y);
-        // Right of the marker, else left of it (a wall on its right).
-        const ImVec2 ts = ImGui::CalcTextSize(text);
-        const float y = p.y - r - ImGui::GetFontSize();
-        const ImVec2 at =
-            placeSceneLabel(app, {ImVec2(p.x + r + 4.0f, y), ImVec2(p.x - r - 4.0f - ts.x, y)}, ts);
+        const ImVec2 at = placeSceneLabel(
+            app, ImVec2(p.x + r + 4.0f, p.y - r - ImGui::GetFontSize()), ImGui::CalcTextSize(text));
         if (!uiLightTheme()) dl->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 220), text);
         dl->AddText(at, col, text);
     }

@@ -64,15 +64,17 @@ ScreenRect spanning(double x0, double y0, double x1, double y1) {
     return {x0, y0, x1 - x0, y1 - y0};
 }
 
-// How many lines a label may move up or down to find a free spot (a crowded scene: a dozen
-// labels around one block).
-constexpr int kFreeSpotLines = 12;
-
 using Taken = UiState::TakenOnScreen;
 
-// The area a label's rectangle `r` has in common with what is taken; a text's counts ten times
-// (over a block, a label still hides less than over another label).
-double coveredArea(const Taken& placed, const ScreenRect& r) {
+// What a text at (x, y) (top-left) of `size`, widened by `gap` on either side, covers of what is
+// taken: the area in common with the blocks, and ten times that with the texts (over a block, a
+// label hides less than over another label); infinite outside `view`. 0: a free spot.
+double coveredAt(const Taken& placed, const ScreenRect& view, float x, float y, ImVec2 size,
+                 float gap) {
+    if (x < view.x || y < view.y || x + size.x > view.x + view.width ||
+        y + size.y > view.y + view.height)
+        return INFINITY;
+    const ScreenRect r = spanning(x - gap, y, x + size.x + gap, y + size.y);
     const auto area = [&r](const std::vector<ScreenRect>& list) {
         double sum = 0.0;
         for (const ScreenRect& p : list) {
@@ -85,32 +87,31 @@ double coveredArea(const Taken& placed, const ScreenRect& r) {
     return area(placed.blocks) + 10.0 * area(placed.texts);
 }
 
-// A label's spot (its top) and what it covers there (0: a free spot).
-struct Spot {
-    float y = 0.0f;
-    double covered = 0.0;
-};
-
-// Moves a label (x, y = top-left, size) up or down in steps of a line until it overlaps none of
-// `placed` (labels already drawn and blocks), trying above first, then below. Where no spot is
-// free (a box full of blocks), the one covering the least: over a block, not over its label.
-Spot bestSpot(const Taken& placed, float x, float above, float below, ImVec2 size, float line) {
-    Spot best{above, INFINITY};
-    for (int k = 0; k < kFreeSpotLines; ++k) {
-        const float candidates[2] = {above - k * line, below + k * line};
-        for (float y : candidates) {
-            const float gap = line * 0.5f; // labels closer than this read as one
-            const double covered =
-                coveredArea(placed, spanning(x - gap, y, x + size.x + gap, y + size.y));
-            if (covered == 0.0) return {y, 0.0};
-            if (covered < best.covered) best = {y, covered};
+// The top-left of a label of `size` meant for x with its top at `above` or `below`: moved up or
+// down in steps of a line (trying above first) until it lies in `view` and overlaps none of
+// `placed` (labels already drawn and blocks); where no row is free, the same rows half its width
+// to the right, then to the left, and further. Where nothing is free, the spot in `view`
+// covering the least (a block rather than its label), else (x, above).
+ImVec2 freeSpot(const Taken& placed, const ScreenRect& view, float x, float above, float below,
+                ImVec2 size, float line) {
+    const float gap = line * 0.5f; // labels closer than this read as one
+    const float shift = size.x * 0.5f + gap;
+    ImVec2 best(x, above);
+    double least = INFINITY;
+    for (const float dx :
+         {0.0f, shift, -shift, 2.0f * shift, -2.0f * shift, 3.0f * shift, -3.0f * shift}) {
+        for (int k = 0; k < 6; ++k) {
+            for (const float y : {above - k * line, below + k * line}) {
+                const double covered = coveredAt(placed, view, x + dx, y, size, gap);
+                if (covered == 0.0) return ImVec2(x + dx, y);
+                if (covered < least) {
+                    least = covered;
+                    best = ImVec2(x + dx, y);
+                }
+            }
         }
     }
     return best;
-}
-
-float freeSpot(const Taken& placed, float x, float above, float below, ImVec2 size, float line) {
-    return bestSpot(placed, x, above, below, size, line).y;
 }
 
 constexpr int kCrowdedScene = 20; // blocks
@@ -123,7 +124,6 @@ void drawLabels(const App& app, ImDrawList* dl, Taken& placed) {
     const float lineHeight = ImGui::GetFontSize();
     // Rectangles already taken on screen: the blocks themselves, then each label placed.
     placed.blocks.reserve(static_cast<std::size_t>(n));
-    placed.texts.reserve(placed.texts.size() + static_cast<std::size_t>(n));
     for (const Block& b : app.sim.world().blocks) {
         const Vec2 lo = app.view.camera.worldToScreen(b.position - b.size * 0.5);
         const Vec2 hi = app.view.camera.worldToScreen(b.position + b.size * 0.5);
@@ -159,7 +159,7 @@ void drawLabels(const App& app, ImDrawList* dl, Taken& placed) {
             const float top = static_cast<float>(c.y) - (twoLines ? lineHeight : lineHeight * 0.5f);
             shadowText(dl, ImVec2(static_cast<float>(c.x) - nameSize.x * 0.5f, top), white,
                        name.c_str());
-            // On its block (taken already): noted too, for the captions, which weigh labels.
+            // On its block (taken already): noted as a text too, which a caption should not hide.
             const float labelW = twoLines ? std::max(nameSize.x, secondSize.x) : nameSize.x;
             placed.texts.push_back(spanning(c.x - labelW * 0.5, top, c.x + labelW * 0.5,
                                             top + (twoLines ? 2.0f : 1.0f) * lineHeight));
@@ -174,17 +174,18 @@ void drawLabels(const App& app, ImDrawList* dl, Taken& placed) {
             const float x = static_cast<float>(c.x) - nameSize.x * 0.5f;
             const float above = static_cast<float>(c.y - hPx * 0.5) - lineHeight - 2.0f;
             const float below = static_cast<float>(c.y + hPx * 0.5) + 2.0f;
-            const float top = freeSpot(placed, x, above, below, nameSize, lineHeight);
-            placed.texts.push_back(spanning(x, top, x + nameSize.x, top + nameSize.y));
-            shadowText(dl, ImVec2(x, top), beside, name.c_str(), packed(theme().textShadow));
+            const ImVec2 at =
+                freeSpot(placed, app.view.camera.viewport(), x, above, below, nameSize, lineHeight);
+            placed.texts.push_back(spanning(at.x, at.y, at.x + nameSize.x, at.y + nameSize.y));
+            shadowText(dl, at, beside, name.c_str(), packed(theme().textShadow));
         }
     }
 }
 
 // The numbers of the grid along the floor and the left wall; when the camera leaves the floor
 // (or the left wall) out of the view, along the view's bottom (or left) edge, so that a position
-// a step's question names can be read off the screen. Each number drawn is taken in `placed`,
-// for the labels placed after it.
+// a step's question names can be read off the screen.
+// Each number taken is added to `placed`, so that the labels drawn after it go around it.
 void drawAxisNumbers(const App& app, ImDrawList* dl, Taken& placed) {
     const Camera& cam = app.view.camera;
     const Bounds& bounds = app.sim.world().bounds;
@@ -206,6 +207,11 @@ void drawAxisNumbers(const App& app, ImDrawList* dl, Taken& placed) {
         return x >= vp.x && y >= vp.y && x + size.x <= vp.x + vp.width &&
                y + size.y <= vp.y + vp.height;
     };
+    const auto draw = [&](float x, float y, const char* text) {
+        const ImVec2 size = ImGui::CalcTextSize(text);
+        dl->AddText(ImVec2(x, y), color, text);
+        placed.texts.push_back({x, y, size.x, size.y});
+    };
     char text[32];
     float unitX = NAN; // after the last number drawn on the x axis
     for (double x = bounds.min.x; x <= bounds.max.x + 1e-9; x += step) {
@@ -214,8 +220,7 @@ void drawAxisNumbers(const App& app, ImDrawList* dl, Taken& placed) {
         const ImVec2 size = ImGui::CalcTextSize(text);
         const float at = static_cast<float>(s.x) - size.x * 0.5f;
         if (!inView(at, xRow, size)) continue;
-        dl->AddText(ImVec2(at, xRow), color, text);
-        placed.texts.push_back({at, xRow, size.x, size.y});
+        draw(at, xRow, text);
         unitX = at + size.x + 4.0f;
     }
     for (double y = bounds.min.y; y <= bounds.max.y + 1e-9; y += step) {
@@ -227,16 +232,11 @@ void drawAxisNumbers(const App& app, ImDrawList* dl, Taken& placed) {
                                    : std::max(static_cast<float>(s.x) - size.x - gap,
                                               static_cast<float>(vp.x) + 2.0f);
         const float ty = static_cast<float>(s.y) - size.y * 0.5f;
-        if (!inView(x, ty, size)) continue;
-        dl->AddText(ImVec2(x, ty), color, text);
-        placed.texts.push_back({x, ty, size.x, size.y});
+        if (inView(x, ty, size)) draw(x, ty, text);
     }
     // The unit, after the last number on the x axis.
     const ImVec2 unitSize = ImGui::CalcTextSize("m");
-    if (std::isfinite(unitX) && inView(unitX, xRow, unitSize)) {
-        dl->AddText(ImVec2(unitX, xRow), color, "m");
-        placed.texts.push_back({unitX, xRow, unitSize.x, unitSize.y});
-    }
+    if (std::isfinite(unitX) && inView(unitX, xRow, unitSize)) draw(unitX, xRow, "m");
 }
 
 // The collision count, large, in the world's top right corner, where the count is the lesson:
@@ -265,19 +265,23 @@ void drawLargeCount(const App& app, ImDrawList* dl) {
     dl->AddText(ImVec2(at.x + ts.x - us.x, at.y + ts.y), packed(theme().axis), unit);
 }
 
-// The row for a text of size `ts` at (x, y): there, or moved down (then up) a line at a time
-// until it overlaps nothing in `placed`; where no row is free, the one covering the least.
-float freeRow(const Taken& placed, float x, float y, ImVec2 ts) {
-    Spot best{y, INFINITY};
-    for (int k = 0; k < kFreeSpotLines; ++k) {
-        for (const float row : {y + k * ts.y, y - k * ts.y}) {
-            const double covered =
-                coveredArea(placed, spanning(x - 4.0f, row, x + ts.x + 4.0f, row + ts.y));
+// The row for a text of size `ts` at (x, y): there, or moved down a line at a time (at most
+// six) until it overlaps nothing in `placed`; where the rows down leave `view`, up instead.
+float freeRow(const Taken& placed, const ScreenRect& view, float x, float y, ImVec2 ts) {
+    float best = y;
+    double least = INFINITY;
+    for (const float direction : {1.0f, -1.0f}) {
+        for (int k = 0; k < 6; ++k) {
+            const float row = y + direction * static_cast<float>(k) * ts.y;
+            const double covered = coveredAt(placed, view, x, row, ts, 4.0f);
             if (covered == 0.0) return row;
-            if (covered < best.covered) best = {row, covered};
+            if (covered < least) {
+                least = covered;
+                best = row;
+            }
         }
     }
-    return best.y;
+    return best; // none free: the row covering the least
 }
 
 // A value written at the head of an arrow (from `base` to `tip`, m) cut at the view's edge or the
@@ -297,7 +301,7 @@ void drawValueAtTip(const App& app, ImDrawList* dl, Taken& placed, Vec2 base, Ve
     }
     x = std::clamp(x, static_cast<float>(vp.x), static_cast<float>(vp.x + vp.width) - ts.x);
     const float y =
-        freeRow(placed, x,
+        freeRow(placed, vp, x,
                 std::clamp(static_cast<float>(at.y) - ts.y - 6.0f, static_cast<float>(vp.y),
                            static_cast<float>(vp.y + vp.height) - ts.y),
                 ts);
@@ -356,7 +360,7 @@ void drawArrowValues(const App& app, ImDrawList* dl, Taken& placed) {
         }
         const float x = std::clamp(static_cast<float>(at.x) - ts.x * 0.5f, static_cast<float>(vp.x),
                                    static_cast<float>(vp.x + vp.width) - ts.x);
-        const float y = freeRow(placed, x, static_cast<float>(at.y), ts);
+        const float y = freeRow(placed, vp, x, static_cast<float>(at.y), ts);
         placed.texts.push_back(spanning(x, y, x + ts.x, y + ts.y));
         shadowText(dl, ImVec2(x, y), packed(theme().velocity), text.c_str(),
                    packed(theme().textShadow));
@@ -366,7 +370,7 @@ void drawArrowValues(const App& app, ImDrawList* dl, Taken& placed) {
 
 // Force arrows carry their value, "F = 2 N" (or the vector when it is not along an axis), at the
 // head: the arrow's length is to scale only up to the knee.
-void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl) {
+void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl, Taken& placed) {
     int written = 0;
     for (std::size_t i = 0; i < app.sim.world().blocks.size() && written < kMaxArrowValueLabels;
          ++i) {
@@ -394,7 +398,9 @@ void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl) {
             y = ty - ts.y * 0.5f;
         }
         x = std::clamp(x, static_cast<float>(vp.x), static_cast<float>(vp.x + vp.width) - ts.x);
-        shadowText(dl, ImVec2(x, y), sceneTheme(app.view.lightTheme).force.packed(), text,
+        const ImVec2 at = freeSpot(placed, vp, x, y, y, ts, ts.y); // clear of the other texts
+        placed.texts.push_back({at.x, at.y, ts.x, ts.y});
+        shadowText(dl, at, sceneTheme(app.view.lightTheme).force.packed(), text,
                    packed(theme().textShadow));
         ++written;
     }
@@ -416,10 +422,15 @@ void drawReferenceLine(const App& app, ImDrawList* dl, Taken& placed) {
     char text[64];
     std::snprintf(text, sizeof text, "top of the stack at the start: %s m",
                   formatNumber(*top).c_str());
-    const ImVec2 at(static_cast<float>(a.x) + 6.0f, y - ImGui::GetFontSize() - 4.0f);
+    // Its label over the line's right end in the view (the axis numbers are on the left), or
+    // under it where that is taken.
+    const ScreenRect& vp = app.view.camera.viewport();
+    const ImVec2 ts = ImGui::CalcTextSize(text);
+    const float right = std::min(static_cast<float>(b.x), static_cast<float>(vp.x + vp.width));
+    const ImVec2 at = freeSpot(placed, vp, right - ts.x - 6.0f, y - ts.y - 4.0f, y + 4.0f, ts,
+                               ImGui::GetFontSize());
+    placed.texts.push_back({at.x, at.y, ts.x, ts.y});
     shadowText(dl, at, color, text, packed(theme().textShadow));
-    const ImVec2 size = ImGui::CalcTextSize(text);
-    placed.texts.push_back({at.x, at.y, size.x, size.y});
 }
 
 void drawFlingReadout(const App& app, ImDrawList* dl) {
@@ -481,28 +492,17 @@ SceneLabelFont::~SceneLabelFont() {
     ImGui::PopFont();
 }
 
-ImVec2 placeSceneLabel(App& app, std::initializer_list<ImVec2> wishes, ImVec2 size) {
-    ImVec2 spot = *wishes.begin();
-    double covered = INFINITY;
-    for (const ImVec2& at : wishes) {
-        const Spot s = bestSpot(app.ui.takenOnScreen, at.x, at.y, at.y, size, ImGui::GetFontSize());
-        if (s.covered >= covered) continue;
-        spot = ImVec2(at.x, s.y);
-        covered = s.covered;
-        if (covered == 0.0) break;
-    }
-    app.ui.takenOnScreen.texts.push_back({spot.x, spot.y, size.x, size.y});
-    return spot;
-}
-
 ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size) {
-    return placeSceneLabel(app, {at}, size);
+    const ImVec2 free = freeSpot(app.ui.takenOnScreen, app.view.camera.viewport(), at.x, at.y, at.y,
+                                 size, ImGui::GetFontSize());
+    app.ui.takenOnScreen.texts.push_back({free.x, free.y, size.x, size.y});
+    return free;
 }
 
 void drawSceneDecorations(App& app) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     ImGui::PushFont(sceneLabelFont(app)); // the scene's labels have a size of their own
-    Taken& placed = app.ui.takenOnScreen; // blocks, axis numbers and labels
+    Taken& placed = app.ui.takenOnScreen; // blocks and texts on screen
     placed.blocks.clear();
     placed.texts.clear();
     drawAxisNumbers(app, dl, placed);
@@ -515,7 +515,7 @@ void drawSceneDecorations(App& app) {
     forces.vectors = app.view.show.vectors;
     forces.thrustBlock = app.sim.pushedBlock(); // the thrust, or the player's push
     forces.thrust = app.sim.pushForce();
-    drawForceValues(app, forces, dl);
+    drawForceValues(app, forces, dl, placed);
     drawLargeCount(app, dl);
     drawStatusBadge(app, dl);
     drawFlingReadout(app, dl);
