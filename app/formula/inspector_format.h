@@ -32,9 +32,11 @@ struct CollisionFormula {
     std::string friction;
 };
 
-// The formula for `record`; `name1` and `name2` name the bodies (a wall's name for walls). The
-// symbols follow the names: blocks "m1" and "m2" (or "A" and "B") give m1, v1 (mA, vA), other
-// names 1 and 2; a block hitting a wall keeps its own symbol (or none: m, v).
+// The formula for `record`: each quantity (m1, m2, v1, v2, C, u, v1', v2') is written with the
+// same digits in every line, as many as the chains that read it need to hold as printed; `name1`
+// and `name2` name the bodies (a wall's name for walls). The symbols follow the names: blocks "m1"
+// and "m2" (or "A" and "B") give m1, v1 (mA, vA), other names 1 and 2; a block hitting a wall keeps
+// its own symbol (or none: m, v).
 CollisionFormula collisionFormula(const CollisionRecord& record, const std::string& name1,
                                   const std::string& name2);
 // "left wall", "right wall", "floor", "ceiling" for a negative CollisionRecord::other.
