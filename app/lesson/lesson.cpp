@@ -133,7 +133,10 @@ std::string findSceneFile(const std::string& name, const LessonContext& context,
     const bool inside =
         !ec &&
         std::mismatch(folder.begin(), folder.end(), file.begin(), file.end()).first == folder.end();
-    const fs::file_status status = fs::status(base / p, ec);
+    std::error_code statusError;
+    const fs::file_status status = fs::status(base / p, statusError);
+    if (statusError == std::errc::too_many_symbolic_link_levels)
+        throw ValueError{scenePath, quoted(name) + " is " + unfollowablePathWhy(statusError)};
     if (fs::exists(status) && !p.empty()) {
         if (!inside) throw ValueError{scenePath, quoted(name) + " is outside the lesson's folder"};
         if (!fs::is_regular_file(status))
