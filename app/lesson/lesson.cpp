@@ -76,7 +76,8 @@ void loadStepScene(const json& step, const std::string& path, const LessonContex
     const json* root = &inlineRoot;
     if (scene.is_string()) {
         const std::string name = scene.get<std::string>();
-        const std::string file = findSceneFile(name, context, scenePath);
+        const std::string file = findSceneFile(
+            name, SceneFolders{context.scenesDir, context.baseDir, context.lessonFile}, scenePath);
         if (file.empty())
             throw ValueError{scenePath, "no scene " + quoted(name) +
                                             " (neither a file in the lesson's folder nor a "
@@ -337,7 +338,8 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
     loadStepScene(value, path, context, cache, step);
     const Scene& scene = *step.scene;
     if (value.contains("overlays"))
-        step.overlays = overlayList(value["overlays"], keyPath(path, "overlays"), context);
+        step.overlays =
+            overlayList(value["overlays"], keyPath(path, "overlays"), context.overlayNames);
     if (value.contains("select"))
         step.selected = requireBlock(scene, value["select"], keyPath(path, "select"));
     if (value.contains("thrust")) {
@@ -392,7 +394,7 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
         if (!value.contains("question"))
             throw ValueError{keyPath(path, "reveal"), "reveals with the answer: needs a "
                                                       "\"question\""};
-        step.reveal = overlayList(value["reveal"], keyPath(path, "reveal"), context);
+        step.reveal = overlayList(value["reveal"], keyPath(path, "reveal"), context.overlayNames);
     }
     if (value.contains("given")) {
         if (!value.contains("question"))

@@ -66,13 +66,12 @@ int requireBlock(const Scene& scene, const json& value, const std::string& path)
 }
 
 std::vector<std::string> overlayList(const json& value, const std::string& path,
-                                     const LessonContext& context) {
+                                     const std::vector<std::string>& known) {
     if (!value.is_array()) throw ValueError{path, "must be an array of overlay names"};
     std::vector<std::string> names;
     for (std::size_t i = 0; i < value.size(); ++i) {
         const std::string p = indexPath(path, i);
         const std::string name = string(value[i], p);
-        const auto& known = context.overlayNames;
         if (!known.empty() && std::find(known.begin(), known.end(), name) == known.end()) {
             std::string list;
             for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
@@ -83,7 +82,7 @@ std::vector<std::string> overlayList(const json& value, const std::string& path,
     return names;
 }
 
-std::string findSceneFile(const std::string& name, const LessonContext& context,
+std::string findSceneFile(const std::string& name, const SceneFolders& context,
                           const std::string& scenePath) {
     const fs::path p(name);
     if (p.is_absolute())

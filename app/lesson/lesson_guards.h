@@ -4,7 +4,6 @@
 // only.
 #pragma once
 
-#include "lesson.h"
 #include "scene.h"
 
 #include <nlohmann/json_fwd.hpp>
@@ -36,13 +35,20 @@ std::string text(const nlohmann::json& value, const std::string& path, std::size
 int blockIndex(const Scene& scene, const std::string& name);
 // The index of the block `value` names; throws when the step's scene has none of that name.
 int requireBlock(const Scene& scene, const nlohmann::json& value, const std::string& path);
-// An array of overlay names, each known (context.overlayNames, when given), repeats dropped.
+// An array of overlay names, each one of `known` (the overlay table's names; empty: not checked),
+// repeats dropped.
 std::vector<std::string> overlayList(const nlohmann::json& value, const std::string& path,
-                                     const LessonContext& context);
+                                     const std::vector<std::string>& known);
+// Where a step's scene path is looked for (LessonContext's fields of the same names).
+struct SceneFolders {
+    std::string scenesDir;  // shipped scenes, for "scene": "bullet_wall"
+    std::string baseDir;    // scene paths are relative to it ("" = cwd)
+    std::string lessonFile; // the lesson's own file: no step may name it
+};
 // The file a step's "scene" string names: a path relative to the lesson's folder that stays
 // inside it (after "..", "." and links), a regular file and not the lesson itself; else a shipped
 // scene's name (no "/"). "" when there is none; a path that exists but may not be used throws.
-std::string findSceneFile(const std::string& name, const LessonContext& context,
+std::string findSceneFile(const std::string& name, const SceneFolders& context,
                           const std::string& scenePath);
 
 } // namespace lesson_guards
