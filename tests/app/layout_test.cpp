@@ -2,13 +2,12 @@
 // classroom sizes (1280x720 and 1920x1080, UI scale 1 and 1.5) with every overlay on. No window
 // may cover the world's rectangle, every window lies inside the image, and the scene view holds
 // the world. In present mode (--present) there is no window at all.
+#include "frame_json.h"
 #include "overlays.h"
 #include "scene_library.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -27,39 +26,6 @@ const std::string kEveryOverlay = [] {
     for (const std::string& name : overlayNames()) list += (list.empty() ? "" : ",") + name;
     return list;
 }();
-
-struct Rect {
-    double x = 0, y = 0, w = 0, h = 0;
-};
-
-Rect rectOf(const nlohmann::json& j) {
-    return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>(),
-            j.at(3).get<double>()};
-}
-
-bool overlap(const Rect& a, const Rect& b) {
-    return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
-}
-
-bool inside(const Rect& in, const Rect& out) {
-    return in.x >= out.x && in.y >= out.y && in.x + in.w <= out.x + out.w &&
-           in.y + in.h <= out.y + out.h;
-}
-
-std::string quote(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
-int run(const std::string& commandLine, std::string* output) {
-    FILE* pipe = popen(("env -u DISPLAY " + commandLine + " 2>&1").c_str(), "r");
-    if (!pipe) return -1;
-    char buffer[512];
-    while (std::fgets(buffer, sizeof buffer, pipe)) *output += buffer;
-    const int status = pclose(pipe);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 struct Case {
     std::string scene; // file stem

@@ -591,6 +591,11 @@ TEST(Classroom, RestingStackHasAReferenceHeight) {
     Scene floating = *stack.scene;
     floating.blocks[0].position.y += 0.5; // the stack no longer stands on the floor
     EXPECT_FALSE(restingStackTop(floating));
+    // Blocks at rest on the floor and on a static shelf, none on another: no stack.
+    const SceneResult platformer =
+        loadSceneFile(std::string(SANDBOX_SCENES_DIR) + "/platformer.json");
+    ASSERT_TRUE(platformer.scene);
+    EXPECT_FALSE(restingStackTop(*platformer.scene));
 }
 
 World movingWorld() {

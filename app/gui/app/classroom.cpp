@@ -71,8 +71,8 @@ bool TypedWarning::note(const char* name, const TypedValue& check) {
 std::optional<double> restingStackTop(const Scene& scene) {
     const WorldSettings& s = scene.settings;
     if (!(s.gravity.y < 0.0) || s.gravity.x != 0.0) return std::nullopt;
-    constexpr double kTouch = 1e-9; // m: faces this close count as touching
-    bool any = false;
+    constexpr double kTouch = 1e-9;    // m: faces this close count as touching
+    bool any = false, stacked = false; // stacked: a dynamic block stands on another
     double top = 0.0;
     for (const BlockDef& b : scene.blocks) {
         if (b.kind != BodyKind::Dynamic) continue;
@@ -84,13 +84,16 @@ std::optional<double> restingStackTop(const Scene& scene) {
             const bool below = std::abs(o.position.y + o.size.y * 0.5 - bottom) <= kTouch;
             const bool sideBySide =
                 std::abs(o.position.x - b.position.x) < (o.size.x + b.size.x) * 0.5;
-            if (below && sideBySide) supported = true;
+            if (below && sideBySide) {
+                supported = true;
+                stacked = stacked || o.kind == BodyKind::Dynamic;
+            }
         }
         if (!supported) return std::nullopt;
         const double t = b.position.y + b.size.y * 0.5;
         top = any ? std::max(top, t) : t;
         any = true;
     }
-    if (!any) return std::nullopt;
+    if (!any || !stacked) return std::nullopt;
     return top;
 }

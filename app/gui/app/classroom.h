@@ -58,6 +58,8 @@ struct TypedWarning {
 };
 
 // The height (m) the top of a resting stack must keep: when every dynamic block starts at rest
-// under gravity pointing down, supported by the floor or by a block below it, the top of the
-// highest one; std::nullopt otherwise (the scene is not a resting stack).
+// under gravity pointing down, supported by the floor or by a block below it, and one at least
+// stands on another dynamic block, the top of the highest one; std::nullopt otherwise (the scene
+// is not a resting stack: the platformer's player, crate and coin at rest on the floor and a
+// shelf are not).
 std::optional<double> restingStackTop(const Scene& scene);

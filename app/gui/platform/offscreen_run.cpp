@@ -172,6 +172,12 @@ bool writeLayoutJson(const App& app, const std::string& path) {
                                       app.view.shownWindows, blocks, app.view.shownPlots));
 }
 
+// The texts of the frame rendered last (--text-json, screen_text.h).
+bool writeTextJson(const std::string& path) {
+    return writeText(path,
+                     screenTextJson(readScreenText(*ImGui::GetDrawData(), *ImGui::GetIO().Fonts)));
+}
+
 // Writes the frame rendered last to --screenshot and prints where it is.
 int writeScreenshot(Offscreen& off, const Options& o) {
     if (!writeFrame(off, o.screenshot)) return 1;
@@ -201,10 +207,7 @@ int screenshot(App& app, Offscreen& off, const Options& o) {
     const int code = writeScreenshot(off, o);
     if (code != 0) return code;
     if (!o.layoutJson.empty() && !writeLayoutJson(app, o.layoutJson)) return 1;
-    if (!o.textJson.empty() &&
-        !writeText(o.textJson,
-                   screenTextJson(readScreenText(*ImGui::GetDrawData(), *ImGui::GetIO().Fonts))))
-        return 1;
+    if (!o.textJson.empty() && !writeTextJson(o.textJson)) return 1;
     return 0;
 }
 
@@ -253,7 +256,16 @@ int record(App& app, Offscreen& off, const Options& o) {
     return 0;
 }
 
-// One PNG per lesson step, each after its pause point (answers revealed): a handout.
+// The frame rendered last as three files: BASE.png, BASE.layout.json (--layout-json) and
+// BASE.text.json (--text-json).
+bool writeFrameFiles(const App& app, const Offscreen& off, const std::string& base) {
+    return writeFrame(off, base + ".png") && writeLayoutJson(app, base + ".layout.json") &&
+           writeTextJson(base + ".text.json");
+}
+
+// Every lesson step twice, a handout that the lesson sweep (ctest) also reads: at its setup
+// (t = 0, the question asked: DIR/step_NN_setup.*) and at its moment (its pause point, the answer
+// shown: DIR/step_NN_moment.*), each as a PNG with its layout and its texts (writeFrameFiles).
 int recordSteps(App& app, Offscreen& off, const Options& o) {
     if (!makeDirectory(o.recordSteps)) return 1;
     if (!app.lesson.active()) {
@@ -264,11 +276,14 @@ int recordSteps(App& app, Offscreen& off, const Options& o) {
     char name[32];
     for (std::size_t i = 0; i < steps; ++i) {
         enterStep(app, i);
-        lessonShowPausePoint(app);
-        if (app.view.show.cost) app.sim.cost.runSweepNow(quickTradeoffSweep(app.shipped.scenesDir));
-        for (int k = 0; k < kSettleFrames; ++k) renderFrame(app, off);
-        std::snprintf(name, sizeof name, "/step_%02zu.png", i + 1);
-        if (!writeFrame(off, o.recordSteps + name)) return 1;
+        for (const char* at : {"setup", "moment"}) {
+            if (std::string(at) == "moment") lessonShowPausePoint(app);
+            if (app.view.show.cost)
+                app.sim.cost.runSweepNow(quickTradeoffSweep(app.shipped.scenesDir));
+            for (int k = 0; k < kSettleFrames; ++k) renderFrame(app, off);
+            std::snprintf(name, sizeof name, "/step_%02zu_%s", i + 1, at);
+            if (!writeFrameFiles(app, off, o.recordSteps + name)) return 1;
+        }
     }
     std::printf("wrote %zu steps to %s\n", steps, printable(o.recordSteps, kPrintablePath).c_str());
     return 0;

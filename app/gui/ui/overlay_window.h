@@ -27,9 +27,9 @@ std::string nextWindowForKeyboard(const App& app);
 // Where the camera shows the world's point `p` (m) on screen (px), as ImGui draws it.
 ImVec2 toScreen(const App& app, Vec2 p);
 // Where an overlay's label of `size` px wanted at `at` (its top-left) goes over the scene: there,
-// or moved up or down by lines until it overlaps nothing taken on screen this frame (the blocks,
-// their labels, the arrows' values: app.ui.takenOnScreen); the spot is then taken too
-// (scene_view.cpp).
+// or moved up or down by lines (then sideways) until it lies in the scene's view and overlaps
+// nothing taken on screen this frame (the blocks, their labels, the axis numbers, the arrows'
+// values: app.ui.takenOnScreen); the spot is then taken too (scene_view.cpp).
 ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size);
 // The font of the scene's labels: the UI's label font, slide-sized in a lesson and in present
 // mode (uiSlideLabelFont). SceneLabelFont pushes it while it lives (overlays drawn over the

@@ -69,26 +69,35 @@ bool intersects(const ScreenRect& a, const ScreenRect& b) {
            b.y < a.y + a.height;
 }
 
-// Moves a label (x, y = top-left, size) up or down in steps of a line until it overlaps none of
-// `placed` (labels already drawn and blocks), trying above first, then below; returns its top.
-float freeSpot(const std::vector<ScreenRect>& placed, float x, float above, float below,
-               ImVec2 size, float line) {
-    for (int k = 0; k < 6; ++k) {
-        const float candidates[2] = {above - k * line, below + k * line};
-        for (float y : candidates) {
-            const float gap = line * 0.5f; // labels closer than this read as one
-            const ScreenRect r = spanning(x - gap, y, x + size.x + gap, y + size.y);
-            bool clear = true;
-            for (const ScreenRect& p : placed) {
-                if (intersects(r, p)) {
-                    clear = false;
-                    break;
-                }
+// Whether a text at (x, y) (top-left) of `size`, widened by `gap` on either side, lies in `view`
+// and overlaps none of `placed`.
+bool clearAt(const std::vector<ScreenRect>& placed, const ScreenRect& view, float x, float y,
+             ImVec2 size, float gap) {
+    if (x < view.x || y < view.y || x + size.x > view.x + view.width ||
+        y + size.y > view.y + view.height)
+        return false;
+    const ScreenRect r = spanning(x - gap, y, x + size.x + gap, y + size.y);
+    return std::none_of(placed.begin(), placed.end(),
+                        [&r](const ScreenRect& p) { return intersects(r, p); });
+}
+
+// The top-left of a label of `size` meant for x with its top at `above` or `below`: moved up or
+// down in steps of a line (trying above first) until it lies in `view` and overlaps none of
+// `placed` (labels already drawn and blocks); where no row is free, the same rows half its width
+// to the right, then to the left, and further. Where nothing is free, (x, above).
+ImVec2 freeSpot(const std::vector<ScreenRect>& placed, const ScreenRect& view, float x, float above,
+                float below, ImVec2 size, float line) {
+    const float gap = line * 0.5f; // labels closer than this read as one
+    const float shift = size.x * 0.5f + gap;
+    for (const float dx :
+         {0.0f, shift, -shift, 2.0f * shift, -2.0f * shift, 3.0f * shift, -3.0f * shift}) {
+        for (int k = 0; k < 6; ++k) {
+            for (const float y : {above - k * line, below + k * line}) {
+                if (clearAt(placed, view, x + dx, y, size, gap)) return ImVec2(x + dx, y);
             }
-            if (clear) return y;
         }
     }
-    return above;
+    return ImVec2(x, above);
 }
 
 constexpr int kCrowdedScene = 20; // blocks
@@ -147,9 +156,10 @@ void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed)
             const float x = static_cast<float>(c.x) - nameSize.x * 0.5f;
             const float above = static_cast<float>(c.y - hPx * 0.5) - lineHeight - 2.0f;
             const float below = static_cast<float>(c.y + hPx * 0.5) + 2.0f;
-            const float top = freeSpot(placed, x, above, below, nameSize, lineHeight);
-            placed.push_back(spanning(x, top, x + nameSize.x, top + nameSize.y));
-            shadowText(dl, ImVec2(x, top), beside, name.c_str(), packed(theme().textShadow));
+            const ImVec2 at =
+                freeSpot(placed, app.view.camera.viewport(), x, above, below, nameSize, lineHeight);
+            placed.push_back(spanning(at.x, at.y, at.x + nameSize.x, at.y + nameSize.y));
+            shadowText(dl, at, beside, name.c_str(), packed(theme().textShadow));
         }
     }
 }
@@ -157,7 +167,8 @@ void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed)
 // The numbers of the grid along the floor and the left wall; when the camera leaves the floor
 // (or the left wall) out of the view, along the view's bottom (or left) edge, so that a position
 // a step's question names can be read off the screen.
-void drawAxisNumbers(const App& app, ImDrawList* dl) {
+// Each number taken is added to `placed`, so that the labels drawn after it go around it.
+void drawAxisNumbers(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
     const Camera& cam = app.view.camera;
     const Bounds& bounds = app.sim.world().bounds;
     const ScreenRect& vp = cam.viewport();
@@ -178,6 +189,11 @@ void drawAxisNumbers(const App& app, ImDrawList* dl) {
         return x >= vp.x && y >= vp.y && x + size.x <= vp.x + vp.width &&
                y + size.y <= vp.y + vp.height;
     };
+    const auto draw = [&](float x, float y, const char* text) {
+        const ImVec2 size = ImGui::CalcTextSize(text);
+        dl->AddText(ImVec2(x, y), color, text);
+        placed.push_back({x, y, size.x, size.y});
+    };
     char text[32];
     float unitX = NAN; // after the last number drawn on the x axis
     for (double x = bounds.min.x; x <= bounds.max.x + 1e-9; x += step) {
@@ -186,7 +202,7 @@ void drawAxisNumbers(const App& app, ImDrawList* dl) {
         const ImVec2 size = ImGui::CalcTextSize(text);
         const float at = static_cast<float>(s.x) - size.x * 0.5f;
         if (!inView(at, xRow, size)) continue;
-        dl->AddText(ImVec2(at, xRow), color, text);
+        draw(at, xRow, text);
         unitX = at + size.x + 4.0f;
     }
     for (double y = bounds.min.y; y <= bounds.max.y + 1e-9; y += step) {
@@ -198,12 +214,11 @@ void drawAxisNumbers(const App& app, ImDrawList* dl) {
                                    : std::max(static_cast<float>(s.x) - size.x - gap,
                                               static_cast<float>(vp.x) + 2.0f);
         const float ty = static_cast<float>(s.y) - size.y * 0.5f;
-        if (inView(x, ty, size)) dl->AddText(ImVec2(x, ty), color, text);
+        if (inView(x, ty, size)) draw(x, ty, text);
     }
     // The unit, after the last number on the x axis.
     const ImVec2 unitSize = ImGui::CalcTextSize("m");
-    if (std::isfinite(unitX) && inView(unitX, xRow, unitSize))
-        dl->AddText(ImVec2(unitX, xRow), color, "m");
+    if (std::isfinite(unitX) && inView(unitX, xRow, unitSize)) draw(unitX, xRow, "m");
 }
 
 // The collision count, large, in the world's top right corner, where the count is the lesson:
@@ -233,14 +248,14 @@ void drawLargeCount(const App& app, ImDrawList* dl) {
 }
 
 // The row for a text of size `ts` at (x, y): there, or moved down a line at a time (at most
-// six) until it overlaps nothing in `placed`.
-float freeRow(const std::vector<ScreenRect>& placed, float x, float y, ImVec2 ts) {
-    for (int k = 0; k < 6; ++k) {
-        const ScreenRect r = spanning(x - 4.0f, y, x + ts.x + 4.0f, y + ts.y);
-        if (std::none_of(placed.begin(), placed.end(),
-                         [&r](const ScreenRect& p) { return intersects(r, p); }))
-            break;
-        y += ts.y;
+// six) until it overlaps nothing in `placed`; where the rows down leave `view`, up instead.
+float freeRow(const std::vector<ScreenRect>& placed, const ScreenRect& view, float x, float y,
+              ImVec2 ts) {
+    for (const float direction : {1.0f, -1.0f}) {
+        for (int k = 0; k < 6; ++k) {
+            const float row = y + direction * static_cast<float>(k) * ts.y;
+            if (clearAt(placed, view, x, row, ts, 4.0f)) return row;
+        }
     }
     return y;
 }
@@ -262,7 +277,7 @@ void drawValueAtTip(const App& app, ImDrawList* dl, std::vector<ScreenRect>& pla
     }
     x = std::clamp(x, static_cast<float>(vp.x), static_cast<float>(vp.x + vp.width) - ts.x);
     const float y =
-        freeRow(placed, x,
+        freeRow(placed, vp, x,
                 std::clamp(static_cast<float>(at.y) - ts.y - 6.0f, static_cast<float>(vp.y),
                            static_cast<float>(vp.y + vp.height) - ts.y),
                 ts);
@@ -321,7 +336,7 @@ void drawArrowValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>& pl
         }
         const float x = std::clamp(static_cast<float>(at.x) - ts.x * 0.5f, static_cast<float>(vp.x),
                                    static_cast<float>(vp.x + vp.width) - ts.x);
-        const float y = freeRow(placed, x, static_cast<float>(at.y), ts);
+        const float y = freeRow(placed, vp, x, static_cast<float>(at.y), ts);
         placed.push_back(spanning(x, y, x + ts.x, y + ts.y));
         shadowText(dl, ImVec2(x, y), packed(theme().velocity), text.c_str(),
                    packed(theme().textShadow));
@@ -331,7 +346,8 @@ void drawArrowValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>& pl
 
 // Force arrows carry their value, "F = 2 N" (or the vector when it is not along an axis), at the
 // head: the arrow's length is to scale only up to the knee.
-void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl) {
+void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl,
+                     std::vector<ScreenRect>& placed) {
     int written = 0;
     for (std::size_t i = 0; i < app.sim.world().blocks.size() && written < kMaxArrowValueLabels;
          ++i) {
@@ -359,14 +375,16 @@ void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl) {
             y = ty - ts.y * 0.5f;
         }
         x = std::clamp(x, static_cast<float>(vp.x), static_cast<float>(vp.x + vp.width) - ts.x);
-        shadowText(dl, ImVec2(x, y), sceneTheme(app.view.lightTheme).force.packed(), text,
+        const ImVec2 at = freeSpot(placed, vp, x, y, y, ts, ts.y); // clear of the other texts
+        placed.push_back({at.x, at.y, ts.x, ts.y});
+        shadowText(dl, at, sceneTheme(app.view.lightTheme).force.packed(), text,
                    packed(theme().textShadow));
         ++written;
     }
 }
 
 // A resting stack's expected top as a dashed line: a method that lets it sink shows the gap.
-void drawReferenceLine(const App& app, ImDrawList* dl) {
+void drawReferenceLine(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
     const std::optional<double> top = restingStackTop(app.sim.scene);
     if (!top) return;
     const Bounds& bounds = app.sim.world().bounds;
@@ -381,8 +399,15 @@ void drawReferenceLine(const App& app, ImDrawList* dl) {
     char text[64];
     std::snprintf(text, sizeof text, "top of the stack at the start: %s m",
                   formatNumber(*top).c_str());
-    shadowText(dl, ImVec2(static_cast<float>(a.x) + 6.0f, y - ImGui::GetFontSize() - 4.0f), color,
-               text, packed(theme().textShadow));
+    // Its label over the line's right end in the view (the axis numbers are on the left), or
+    // under it where that is taken.
+    const ScreenRect& vp = app.view.camera.viewport();
+    const ImVec2 ts = ImGui::CalcTextSize(text);
+    const float right = std::min(static_cast<float>(b.x), static_cast<float>(vp.x + vp.width));
+    const ImVec2 at = freeSpot(placed, vp, right - ts.x - 6.0f, y - ts.y - 4.0f, y + 4.0f, ts,
+                               ImGui::GetFontSize());
+    placed.push_back({at.x, at.y, ts.x, ts.y});
+    shadowText(dl, at, color, text, packed(theme().textShadow));
 }
 
 void drawFlingReadout(const App& app, ImDrawList* dl) {
@@ -445,18 +470,19 @@ SceneLabelFont::~SceneLabelFont() {
 }
 
 ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size) {
-    const float y = freeSpot(app.ui.takenOnScreen, at.x, at.y, at.y, size, ImGui::GetFontSize());
-    app.ui.takenOnScreen.push_back({at.x, y, size.x, size.y});
-    return ImVec2(at.x, y);
+    const ImVec2 free = freeSpot(app.ui.takenOnScreen, app.view.camera.viewport(), at.x, at.y, at.y,
+                                 size, ImGui::GetFontSize());
+    app.ui.takenOnScreen.push_back({free.x, free.y, size.x, size.y});
+    return free;
 }
 
 void drawSceneDecorations(App& app) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     ImGui::PushFont(sceneLabelFont(app)); // the scene's labels have a size of their own
-    drawAxisNumbers(app, dl);
-    drawReferenceLine(app, dl);
-    std::vector<ScreenRect>& placed = app.ui.takenOnScreen; // blocks and labels on screen
+    std::vector<ScreenRect>& placed = app.ui.takenOnScreen; // texts and blocks on screen
     placed.clear();
+    drawAxisNumbers(app, dl, placed);
+    drawReferenceLine(app, dl, placed);
     drawLabels(app, dl, placed);
     drawArrowValues(app, dl, placed);
     drawMomentumValues(app, dl, placed);
@@ -465,7 +491,7 @@ void drawSceneDecorations(App& app) {
     forces.vectors = app.view.show.vectors;
     forces.thrustBlock = app.sim.pushedBlock(); // the thrust, or the player's push
     forces.thrust = app.sim.pushForce();
-    drawForceValues(app, forces, dl);
+    drawForceValues(app, forces, dl, placed);
     drawLargeCount(app, dl);
     drawStatusBadge(app, dl);
     drawFlingReadout(app, dl);
