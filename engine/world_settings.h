@@ -102,7 +102,7 @@ inline constexpr settings_table::WorldKey kWorldKeys[] = {
       "perfect: events in time order, no overlap\nmove-and-correct: move, then push "
       "apart\nturn-based: one body at a time"},
      {"--method", "M", "Simulation method: perfect, move-and-correct or turn-based", 1},
-     {settings_table::Section::Simulation, 1, "method (S)"}},
+     {settings_table::Section::Simulation, 1, "method"}},
     {{&WorldSettings::dt},
      "dt",
      limits::kDt,

@@ -4,9 +4,9 @@
 #include "lesson.h"
 
 #include "input_limits.h"
+#include "lesson_guards.h"
 #include "lesson_input.h"
 #include "printable.h"
-#include "safe_file.h"
 #include "scene_json.h"
 #include "vocabulary.h"
 
@@ -22,86 +22,12 @@
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 using namespace scene_json;
+using namespace lesson_guards;
 
 namespace {
 
-constexpr std::size_t kMaxSteps = 1000;
-constexpr std::size_t kMaxExpects = 100; // per step
-constexpr std::size_t kMaxCaptionLines = 3;
-constexpr std::size_t kMaxLineChars = 200; // a caption line, a title, a question or an answer
-constexpr double kMaxPauseTime = 600.0;    // s
-constexpr int kMaxPauseCollision = 1000000;
-constexpr double kMaxFrameRate = 10000.0;         // Hz (dt at least 1e-4 s)
-constexpr double kCollisionSearchSeconds = 120.0; // s of simulated time to find a collision
 // Parsed-from-memory scenes are named this; their error places are rewritten to the lesson's.
 const char* const kInline = "\x01";
-
-bool isRegularFile(const fs::path& p) {
-    std::error_code ec;
-    return fs::is_regular_file(p, ec);
-}
-
-// A name echoed in a message, quoted, escaped and cut (printable.h): no raw control bytes reach a
-// terminal, and a 10 MB name is not a 10 MB message.
-std::string quoted(const std::string& s) {
-    return "\"" + printable(s) + "\"";
-}
-
-// A text field: a non-empty string of printable characters (newlines only where allowed), each
-// line at most kMaxLineChars.
-std::string text(const json& value, const std::string& path, std::size_t maxLines,
-                 std::size_t maxLineChars = kMaxLineChars) {
-    const std::string s = string(value, path);
-    if (s.empty()) throw ValueError{path, "must not be empty"};
-    std::size_t lines = 1, lineChars = 0;
-    for (const char c : s) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (c == '\n') {
-            if (++lines > maxLines)
-                throw ValueError{path, maxLines == 1 ? "must be one line"
-                                                     : "must be at most " +
-                                                           std::to_string(maxLines) + " lines"};
-            lineChars = 0;
-            continue;
-        }
-        if (byte < 0x20 || byte == 0x7f) throw ValueError{path, "has a control character"};
-        if ((byte & 0xc0) != 0x80 && ++lineChars > maxLineChars) // count UTF-8 characters
-            throw ValueError{path, "has a line longer than " + std::to_string(maxLineChars) +
-                                       " characters"};
-    }
-    return s;
-}
-
-int blockIndex(const Scene& scene, const std::string& name) {
-    for (std::size_t i = 0; i < scene.blocks.size(); ++i)
-        if (scene.blocks[i].name == name) return static_cast<int>(i);
-    return -1;
-}
-
-int requireBlock(const Scene& scene, const json& value, const std::string& path) {
-    const std::string name = string(value, path);
-    const int i = blockIndex(scene, name);
-    if (i < 0) throw ValueError{path, "no block named " + quoted(name) + " in the step's scene"};
-    return i;
-}
-
-std::vector<std::string> overlayList(const json& value, const std::string& path,
-                                     const LessonContext& context) {
-    if (!value.is_array()) throw ValueError{path, "must be an array of overlay names"};
-    std::vector<std::string> names;
-    for (std::size_t i = 0; i < value.size(); ++i) {
-        const std::string p = indexPath(path, i);
-        const std::string name = string(value[i], p);
-        const auto& known = context.overlayNames;
-        if (!known.empty() && std::find(known.begin(), known.end(), name) == known.end()) {
-            std::string list;
-            for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-            throw ValueError{p, "unknown overlay " + quoted(name) + " (expected " + list + ")"};
-        }
-        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-    }
-    return names;
-}
 
 // ---- The step's scene ----
 
@@ -115,42 +41,6 @@ ValueError sceneError(const SceneError& e, const std::string& scenePath) {
         return ValueError{scenePath + "." + e.where.substr(inlinePrefix.size()), e.message};
     if (e.where == inlineName) return ValueError{scenePath, e.message};
     return ValueError{scenePath, e.text()};
-}
-
-// The file a step's "scene" string names: a path relative to the lesson's folder that stays
-// inside it (after "..", "." and links), a regular file and not the lesson itself; else a shipped
-// scene's name (no "/"). "" when there is none; a path that exists but may not be used throws.
-std::string findSceneFile(const std::string& name, const LessonContext& context,
-                          const std::string& scenePath) {
-    const fs::path p(name);
-    if (p.is_absolute())
-        throw ValueError{scenePath, quoted(name) + " is an absolute path: a lesson names its "
-                                                   "scenes relative to its own folder"};
-    const fs::path base = context.baseDir.empty() ? fs::path(".") : fs::path(context.baseDir);
-    std::error_code ec;
-    const fs::path folder = fs::weakly_canonical(base, ec);
-    const fs::path file = fs::weakly_canonical(base / p, ec);
-    const bool inside =
-        !ec &&
-        std::mismatch(folder.begin(), folder.end(), file.begin(), file.end()).first == folder.end();
-    const fs::file_status status = fs::status(base / p, ec);
-    if (fs::exists(status) && !p.empty()) {
-        if (!inside) throw ValueError{scenePath, quoted(name) + " is outside the lesson's folder"};
-        if (!fs::is_regular_file(status))
-            throw ValueError{scenePath, quoted(name) + " is not a regular file (a directory, a "
-                                                       "device or a FIFO)"};
-        if (!context.lessonFile.empty() && sameExistingFile(file.string(), context.lessonFile))
-            throw ValueError{scenePath, quoted(name) + " is the lesson file itself"};
-        return (base / p).lexically_normal().string();
-    }
-    if (!inside) throw ValueError{scenePath, quoted(name) + " is outside the lesson's folder"};
-    if (context.scenesDir.empty() || name.empty() || name.find('/') != std::string::npos ||
-        name == "." || name == "..")
-        return "";
-    for (const fs::path& c :
-         {fs::path(context.scenesDir) / p, fs::path(context.scenesDir) / (name + ".json")})
-        if (isRegularFile(c)) return c.lexically_normal().string();
-    return "";
 }
 
 // Scenes already loaded in this lesson, by file (and overrides): a scene named by many steps is
@@ -186,7 +76,8 @@ void loadStepScene(const json& step, const std::string& path, const LessonContex
     const json* root = &inlineRoot;
     if (scene.is_string()) {
         const std::string name = scene.get<std::string>();
-        const std::string file = findSceneFile(name, context, scenePath);
+        const std::string file = findSceneFile(
+            name, SceneFolders{context.scenesDir, context.baseDir, context.lessonFile}, scenePath);
         if (file.empty())
             throw ValueError{scenePath, "no scene " + quoted(name) +
                                             " (neither a file in the lesson's folder nor a "
@@ -447,7 +338,8 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
     loadStepScene(value, path, context, cache, step);
     const Scene& scene = *step.scene;
     if (value.contains("overlays"))
-        step.overlays = overlayList(value["overlays"], keyPath(path, "overlays"), context);
+        step.overlays =
+            overlayList(value["overlays"], keyPath(path, "overlays"), context.overlayNames);
     if (value.contains("select"))
         step.selected = requireBlock(scene, value["select"], keyPath(path, "select"));
     if (value.contains("thrust")) {
@@ -502,7 +394,7 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
         if (!value.contains("question"))
             throw ValueError{keyPath(path, "reveal"), "reveals with the answer: needs a "
                                                       "\"question\""};
-        step.reveal = overlayList(value["reveal"], keyPath(path, "reveal"), context);
+        step.reveal = overlayList(value["reveal"], keyPath(path, "reveal"), context.overlayNames);
     }
     if (value.contains("given")) {
         if (!value.contains("question"))

@@ -19,7 +19,8 @@
 // Columns of X(member, name, label, tooltip, on, title, place, draw):
 //   member   its flag in Overlays (app.show.member)
 //   name     its --show name (the only column read outside the app: overlayNames() below)
-//   label    the checkbox's label; tooltip the checkbox's tooltip
+//   label    the checkbox's label (the panel adds the key of the action with the row's name:
+//            keyedLabel, input_map.h); tooltip the checkbox's tooltip
 //   on       shown by default (before a scene or --show chooses)
 //   title    the window's title, or nullptr for what is drawn over the scene only
 //   place    where the window docks: its side of the scene and its share (DockWish, in
@@ -32,9 +33,9 @@
 // window's contents (the window is open); one without a title draws over the scene.
 // clang-format off
 #define SANDBOX_OVERLAYS(X)                                                                        \
-    X(trails, "trails", "trails (D)", "Trajectories fading with age; C clears them",               \
+    X(trails, "trails", "trails", "Trajectories fading with age; C clears them",                   \
       false, nullptr, (DockWish{}), drawnByTheSceneRenderer)                                       \
-    X(vectors, "vectors", "arrows (V)", "Velocity (thin) and momentum p = m·v (wide) arrows",      \
+    X(vectors, "vectors", "arrows", "Velocity (thin) and momentum p = m·v (wide) arrows",          \
       true, nullptr, (DockWish{}), drawnByTheSceneRenderer)                                        \
     /* Under the panel: the time window and CSV row (115 px at UI scale 1) and three plots of */ \
     /* 14% of the height each (151 px at 1080p), taken from the panel, not from the scene.     */ \

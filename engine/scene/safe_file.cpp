@@ -190,3 +190,9 @@ bool sameExistingFile(const std::string& a, const std::string& b) {
     return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
            sa.st_ino == sb.st_ino;
 }
+
+std::string unfollowablePathWhy(const std::error_code& error) {
+    if (error == std::errc::too_many_symbolic_link_levels)
+        return "a loop of symbolic links (a link that leads back to itself): it names no file";
+    return "cannot open the file: " + error.message();
+}

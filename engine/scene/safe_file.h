@@ -11,6 +11,7 @@
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <system_error>
 
 class SafeFile {
   public:
@@ -40,3 +41,9 @@ bool writeFileSafely(const std::string& path, std::string_view bytes, std::strin
 // True when both paths name one existing file (same device and inode, after links): an output
 // that would overwrite the input it was made from is refused by its caller.
 bool sameExistingFile(const std::string& a, const std::string& b);
+
+// Why a path whose lookup failed with `error` cannot be followed, as a message says it: "a loop
+// of symbolic links (a link that leads back to itself): it names no file" for ELOOP (the system's
+// "Too many levels of symbolic links" reads as if the file were there), else "cannot open the
+// file: " and the system's words.
+std::string unfollowablePathWhy(const std::error_code& error);

@@ -5,6 +5,7 @@
 #include "scene_json.h"
 
 #include "printable.h"
+#include "safe_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -290,7 +291,7 @@ std::optional<SceneError> regularFileError(const std::string& path) {
     const std::filesystem::file_status status = std::filesystem::status(path, ec);
     if (status.type() == std::filesystem::file_type::not_found)
         return sceneError(path, "no such file");
-    if (ec) return sceneError(path, "cannot open the file: " + ec.message());
+    if (ec) return sceneError(path, unfollowablePathWhy(ec));
     if (!std::filesystem::is_regular_file(status)) return sceneError(path, "not a regular file");
     return std::nullopt;
 }

@@ -98,6 +98,34 @@ Vec2 screenOf(const App& app, Vec2 world) {
     return app.view.camera.worldToScreen(world);
 }
 
+// A button's or checkbox's label shows the key of its action from the key table, and leaves it
+// out on a touch screen; ImGui's id (after "###") is the same either way.
+TEST(KeyMap, LabelsShowTheTablesKeyExceptOnTouchScreens) {
+    EXPECT_EQ(keyedLabel("Play", Action::TogglePause, false), "Play (P)###Play");
+    EXPECT_EQ(keyedLabel("Play", Action::TogglePause, true), "Play###Play");
+    EXPECT_EQ(keyedLabel("Slow motion", Action::ToggleSlowMotion, false),
+              "Slow motion (Space)###Slow motion");
+    EXPECT_EQ(keyedLabel("Slow motion", Action::ToggleSlowMotion, true),
+              "Slow motion###Slow motion");
+    EXPECT_EQ(keyedLabel("Save as...", Action::Save, false), "Save as... (Ctrl+S)###Save as...");
+    EXPECT_EQ(keyedLabel("Cancel", Action::Escape, false), "Cancel (Esc)###Cancel");
+    EXPECT_EQ(keyedLabel("Present", Action::TogglePresent, true), "Present###Present");
+    // Rows of tables (the settings' method, the overlays) find their action by name.
+    EXPECT_EQ(keyedLabel("method", actionOfControl("method"), false), "method (S)###method");
+    EXPECT_EQ(keyedLabel("method", actionOfControl("method"), true), "method###method");
+    EXPECT_EQ(actionOfControl("trails"), Action::ToggleTrails);
+    EXPECT_EQ(keyedLabel("arrows", actionOfControl("vectors"), false), "arrows (V)###arrows");
+    EXPECT_EQ(actionOfControl("plots"), Action::None); // no key toggles the plots
+    EXPECT_EQ(keyedLabel("plots", Action::None, false), "plots###plots");
+    // The key is the table's: its first binding of the action.
+    for (const KeyBinding& b : keyBindings()) {
+        if (b.action == Action::Navigate) continue;
+        const std::string key = keyNameOf(b.action);
+        EXPECT_FALSE(key.empty()) << actionName(b.action);
+        EXPECT_EQ(keyedLabel("x", b.action, false), "x (" + key + ")###x");
+    }
+}
+
 TEST(Mouse, ClickSelectsAndClickOnEmptySpaceDeselects) {
     App app = makeApp();
     mousePress(app.mouse, app.sim, app.view, MouseButton::Left, screenOf(app, {12.5, 5.5}), false);

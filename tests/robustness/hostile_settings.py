@@ -178,7 +178,7 @@ def run_cases(suite):
     file_case("last scene relative", "last_scene = good.json\n", ["settings.txt:1"])
     file_case("last scene a link loop", "last_scene = %s\n" % os.path.join(suite.root,
                                                                           "loop.json"),
-              ["settings.txt:1"])
+              ["settings.txt:1", "is a loop of symbolic links"])
     file_case("last scene a control-byte path", "last_scene = /no/\x1b[31mx.json\n",
               ["settings.txt:1", "\\x1b"])
     file_case("last scene a bad scene file", "last_scene = %s\n" % bad_scene, ["bad.json"])

@@ -156,7 +156,10 @@ AppConfig loadAppConfig(const std::string& dir, std::vector<std::string>* warnin
     // kMaxSettingsBytes of it: a device (/dev/zero) or a directory is refused before a byte.
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) {
-        if (errno != ENOENT) warn(std::string("cannot read (") + std::strerror(errno) + ")");
+        if (errno == ELOOP)
+            warn(unfollowablePathWhy(std::error_code(errno, std::generic_category())));
+        else if (errno != ENOENT)
+            warn(std::string("cannot read (") + std::strerror(errno) + ")");
         return {};
     }
     struct stat st {};
@@ -184,14 +187,16 @@ AppConfig loadAppConfig(const std::string& dir, std::vector<std::string>* warnin
     // nor gone) and absolute (a relative one means another folder from another start).
     if (!config.lastScene.empty()) {
         struct stat scene {};
-        const char* why = nullptr;
+        std::string why;
         if (config.lastScene[0] != '/')
             why = "is not an absolute path";
         else if (::stat(config.lastScene.c_str(), &scene) != 0)
-            why = "is gone";
+            why = errno == ELOOP
+                      ? "is " + unfollowablePathWhy(std::error_code(errno, std::generic_category()))
+                      : "is gone";
         else if (!S_ISREG(scene.st_mode))
             why = "is not a regular file";
-        if (why) {
+        if (!why.empty()) {
             if (warnings)
                 warnings->push_back(printable(path, kPrintablePath) + ":" +
                                     std::to_string(config.lastSceneLine) + ": last_scene " +

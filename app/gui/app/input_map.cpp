@@ -210,3 +210,22 @@ const char* actionName(Action action) {
     }
     return "none";
 }
+
+std::string keyNameOf(Action action) {
+    if (action == Action::None) return "";
+    for (const KeyBinding& b : keyBindings())
+        if (b.action == action) return b.keyName;
+    return "";
+}
+
+std::string keyedLabel(const std::string& text, Action action, bool touch) {
+    const std::string key = touch ? std::string() : keyNameOf(action);
+    return (key.empty() ? text : text + " (" + key + ")") + "###" + text;
+}
+
+Action actionOfControl(const std::string& name) {
+    if (name == "method") return Action::CycleMethod; // actionName: "cycle-method"
+    for (int a = static_cast<int>(Action::None) + 1; a <= static_cast<int>(Action::ThrustUp); ++a)
+        if (name == actionName(static_cast<Action>(a))) return static_cast<Action>(a);
+    return Action::None;
+}

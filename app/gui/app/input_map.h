@@ -5,6 +5,7 @@
 #include "vec2.h"
 
 #include <functional>
+#include <string>
 #include <vector>
 
 // Key codes are GLFW's: ImGui 1.86 with its GLFW backend indexes io.KeysDown by them, and the
@@ -134,3 +135,13 @@ Vec2 heldThrustDirection(const std::function<bool(int key)>& isDown);
 int digitOfKey(int key);
 // A short name for logs ("reset", "pause", ...).
 const char* actionName(Action action);
+// The key that does `action`, as Help names it ("P", "Space", "F5", "Ctrl+S"): its first binding
+// in the table; "" when no key does it.
+std::string keyNameOf(Action action);
+// A button's or checkbox's label with the key that does the same: "Play (P)", "method (S)"; on a
+// touch screen (`touch`: app.ui.touchUi) the label alone, "Play": a phone has no P. ImGui's id
+// (after "###") is `text` either way, so the control stays the same control.
+std::string keyedLabel(const std::string& text, Action action, bool touch);
+// The action a panel control also does by key, by the control's name: an overlay's toggle by its
+// --show name ("trails", "vectors": actionName's), the method's list ("method"); None otherwise.
+Action actionOfControl(const std::string& name);

@@ -81,7 +81,8 @@ void lessonSection(App& app) {
         applyAction(app, Action::LessonNext);
     tooltip("PageDown (or Right, with thrust off)");
     ImGui::SameLine();
-    if (ImGui::Button("Restart (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
+    if (ImGui::Button(keyedLabel("Restart", Action::Reset, app.ui.touchUi).c_str(), ImVec2(w, 0)))
+        applyAction(app, Action::Reset);
     tooltip("R: the step again from its setup, keeping the method and settings you changed; "
             "Shift+R: the step as written");
     const float rows = std::min<float>(8.0f, static_cast<float>(s.lesson->steps.size()));
@@ -114,7 +115,8 @@ void fileSection(App& app) {
     ImGui::InputTextWithHint("##open", "path/to/scene.json", &app.ui.openPath);
     ImGui::SameLine();
     if (ImGui::Button("Open") && !app.ui.openPath.empty()) loadScene(app, app.ui.openPath);
-    if (ImGui::Button("Save as... (Ctrl+S)")) applyAction(app, Action::Save);
+    if (ImGui::Button(keyedLabel("Save as...", Action::Save, app.ui.touchUi).c_str()))
+        applyAction(app, Action::Save);
     tooltip("Save the current state as a scene file (format v1): asks for a name");
 }
 
@@ -169,16 +171,22 @@ void runSection(App& app) {
     if (!app.view.layout.sheet) { // the sheet has them in its bar
         const float w =
             (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
-        if (ImGui::Button(app.sim.paused ? "Play  (P)" : "Pause (P)", ImVec2(w, 0))) {
+        const bool touch = app.ui.touchUi;
+        if (ImGui::Button(
+                keyedLabel(app.sim.paused ? "Play" : "Pause", Action::TogglePause, touch).c_str(),
+                ImVec2(w, 0))) {
             applyAction(app, Action::TogglePause);
         }
         ImGui::SameLine();
-        if (ImGui::Button("Step (N)", ImVec2(w, 0))) applyAction(app, Action::StepOnce);
+        if (ImGui::Button(keyedLabel("Step", Action::StepOnce, touch).c_str(), ImVec2(w, 0)))
+            applyAction(app, Action::StepOnce);
         ImGui::SameLine();
-        if (ImGui::Button("Reset (R)", ImVec2(w, 0))) applyAction(app, Action::Reset);
+        if (ImGui::Button(keyedLabel("Reset", Action::Reset, touch).c_str(), ImVec2(w, 0)))
+            applyAction(app, Action::Reset);
         tooltip("Blocks and time back to the start; keeps the method, C, g, frame rate, substeps");
     }
-    ImGui::Checkbox("Slow motion (Space)", &app.sim.slowMotion);
+    ImGui::Checkbox(keyedLabel("Slow motion", Action::ToggleSlowMotion, app.ui.touchUi).c_str(),
+                    &app.sim.slowMotion);
     tooltip("5 simulation frames per second, as in the lecture's demo");
     ImGui::SameLine();
     if (ImGui::Button("Reset to file")) applyAction(app, Action::ResetToFile);
@@ -208,12 +216,13 @@ void statisticsSection(const Run& run, const UiState& ui) {
     ImGui::EndTable();
 }
 
-void overlaysSection(Overlays& o) {
+void overlaysSection(Overlays& o, bool touch) {
     if (!ImGui::CollapsingHeader("Overlays", ImGuiTreeNodeFlags_DefaultOpen)) return;
     if (!ImGui::BeginTable("overlays", 2, ImGuiTableFlags_SizingStretchSame)) return;
     for (const OverlayInfo& info : kOverlays) {
         ImGui::TableNextColumn();
-        ImGui::Checkbox(info.label, &(o.*info.flag));
+        ImGui::Checkbox(keyedLabel(info.label, actionOfControl(info.name), touch).c_str(),
+                        &(o.*info.flag));
         tooltip(info.tooltip);
     }
     ImGui::EndTable();
@@ -222,11 +231,13 @@ void overlaysSection(Overlays& o) {
 void viewSection(App& app) {
     if (!ImGui::CollapsingHeader("View")) return;
     bool com = app.view.frame == ViewFrame::CentreOfMass;
-    if (ImGui::Checkbox("centre-of-mass frame (U)", &com))
+    if (ImGui::Checkbox(
+            keyedLabel("centre-of-mass frame", Action::ToggleFrame, app.ui.touchUi).c_str(), &com))
         setViewFrame(app.view, com ? ViewFrame::CentreOfMass : ViewFrame::World);
     tooltip("The view moves with the centre of mass's velocity u and the arrows show w = v - u "
             "(the walls drift across the view: they move at -u in this frame)");
-    if (uiSmallButton("clear trails (C)")) applyAction(app, Action::ClearTrails);
+    if (uiSmallButton(keyedLabel("clear trails", Action::ClearTrails, app.ui.touchUi).c_str()))
+        applyAction(app, Action::ClearTrails);
     float scale = app.view.uiScale;
     if (ImGui::SliderFloat("UI scale", &scale, 0.75f, 3.0f, "%.2f")) {
         // Applied when released: rebuilding the font under the cursor would fight the slider.
@@ -255,23 +266,23 @@ void viewSection(App& app) {
     tooltip("Dark text on a light scene and panels: a projector in a lit room washes dark "
             "themes out");
     bool sound = soundOn(app.sim.sound, app.lesson.active());
-    if (ImGui::Checkbox("sound (M)", &sound)) applyAction(app, Action::ToggleSound);
+    if (ImGui::Checkbox(keyedLabel("sound", Action::ToggleSound, app.ui.touchUi).c_str(), &sound))
+        applyAction(app, Action::ToggleSound);
     tooltip("A knock at each collision: louder for a larger impulse, higher for a smaller block, "
             "lower on a wall; at most 20 a second (a gas hums). Off by default outside lessons");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
     ImGui::SliderFloat("volume", &app.sim.sound.volume, 0.0f, 1.0f, "%.2f",
                        ImGuiSliderFlags_AlwaysClamp);
-    // The keys in the labels only where there is a keyboard: a phone has no F1 (the "###" keeps
-    // each button's id the same either way).
-    const bool keys = !app.ui.touchUi;
-    if (ImGui::Button(keys ? "Fit view (F)###fit" : "Fit view###fit"))
+    const bool touch = app.ui.touchUi;
+    if (ImGui::Button(keyedLabel("Fit view", Action::FitView, touch).c_str()))
         applyAction(app, Action::FitView);
     ImGui::SameLine();
-    if (ImGui::Button(keys ? "Present (F5)###present" : "Present###present"))
+    if (ImGui::Button(keyedLabel("Present", Action::TogglePresent, touch).c_str()))
         applyAction(app, Action::TogglePresent);
     ImGui::SameLine();
-    if (ImGui::Button(keys ? "Help (F1)###help" : "Help###help")) app.ui.helpOpen = true;
+    if (ImGui::Button(keyedLabel("Help", Action::ToggleHelp, touch).c_str()))
+        app.ui.helpOpen = true;
 }
 
 // The scene's description, dim: whole where it fits in `maxLines` lines, else its first
@@ -382,7 +393,7 @@ void drawControlsPanel(App& app) {
     ImGui::PushItemWidth(width * 0.52f);
     simulationSection(app);
     physicsSection(app);
-    overlaysSection(app.view.show);
+    overlaysSection(app.view.show, app.ui.touchUi);
     selectedSection(app);
     statisticsSection(app.sim.run, app.ui);
     viewSection(app);

@@ -39,7 +39,8 @@ void quitDialog(App& app) {
     ImGui::SameLine();
     if (ImGui::Button("Quit without saving")) app.ui.quitRequested = true;
     ImGui::SameLine();
-    if (ImGui::Button("Cancel (Esc)")) app.ui.quitDialogOpen = false;
+    if (ImGui::Button(keyedLabel("Cancel", Action::Escape, app.ui.touchUi).c_str()))
+        app.ui.quitDialogOpen = false;
     if (!app.ui.quitDialogOpen) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
 }
@@ -77,7 +78,8 @@ void saveDialog(App& app) {
         }
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel (Esc)")) app.ui.saveDialogOpen = false;
+    if (ImGui::Button(keyedLabel("Cancel", Action::Escape, app.ui.touchUi).c_str()))
+        app.ui.saveDialogOpen = false;
     if (!app.ui.saveDialogOpen) {
         gQuitAfterSave = false;
         ImGui::CloseCurrentPopup();

@@ -2,6 +2,7 @@
 #include "settings_sections.h"
 
 #include "app.h"
+#include "input_map.h"
 #include "settings_table.h"
 #include "typed_field.h"
 #include "ui_style.h"
@@ -17,9 +18,10 @@ namespace {
 
 using settings_table::WorldKey;
 
-void choiceCombo(const WorldKey& row, WorldSettings& s) {
+void choiceCombo(const WorldKey& row, WorldSettings& s, bool touch) {
     const int current = row.getChoice(s);
-    if (ImGui::BeginCombo(row.panel.label, row.names.name(current))) {
+    const std::string label = keyedLabel(row.panel.label, actionOfControl(row.key), touch);
+    if (ImGui::BeginCombo(label.c_str(), row.names.name(current))) {
         uiBeginRows();
         for (int i = 0; i < row.names.count; ++i) {
             if (ImGui::Selectable(row.names.name(i), i == current) && i != current)
@@ -101,7 +103,7 @@ void settingWidget(App& app, const WorldKey& row) {
     using settings_table::Kind;
     switch (row.kind) {
     case Kind::Choice:
-        choiceCombo(row, s);
+        choiceCombo(row, s, app.ui.touchUi);
         break;
     case Kind::Number:
         numberSlider(app, row, s);
