@@ -71,9 +71,10 @@
       "collisions reflections (why high_mass_ratio counts pi)",                                    \
       false, "Velocity space", (DockWish{DockSide::Bottom, 300.0, 1.5, 185.0}),                    \
       drawVelocitySpaceOverlay)                                                                    \
-    /* The chart needs height: the right column, under the plots and the inspector. */             \
+    /* The chart needs height: the right column, under the inspector, which takes most of the */   \
+    /* rest; its rows (240 px at UI scale 1) and the chart: 13% of the height (140 at 1080p). */   \
     X(cost, "cost", "cost", "Cost per step under each method and the speed-vs-accuracy chart",     \
-      false, "Speed versus accuracy", (DockWish{DockSide::Right, 200.0, 1.0, 400.0}),              \
+      false, "Speed versus accuracy", (DockWish{DockSide::Right, 240.0, 0.25, 400.0, 0.13}),       \
       drawCostOverlay)
 // clang-format on
 

@@ -60,31 +60,105 @@ fs::path outputDir() {
     return dir;
 }
 
-nlohmann::json layoutOf(const Case& c, const std::string& extra) {
-    const fs::path png = outputDir() / (c.name() + extra.substr(0, extra.find(' ')) + ".png");
-    const fs::path json = outputDir() / (c.name() + extra.substr(0, extra.find(' ')) + ".json");
-    fs::remove(json);
+// One offscreen frame's two JSON files: --layout-json and --text-json.
+struct Frame {
+    nlohmann::json layout, texts;
+};
+
+// Runs sandbox-offscreen with `args` and reads back both files (written next to `base`.png).
+Frame render(const fs::path& base, const std::string& args) {
+    const std::string png = base.string() + ".png", layout = base.string() + ".layout.json",
+                      texts = base.string() + ".text.json";
+    fs::remove(layout);
+    fs::remove(texts);
+    std::string output;
+    const int code = run(quote(SANDBOX_OFFSCREEN_EXE) + " " + args + " --screenshot " + quote(png) +
+                             " --layout-json " + quote(layout) + " --text-json " + quote(texts),
+                         &output);
+    EXPECT_EQ(code, 0) << output;
+    Frame f;
+    std::ifstream l(layout), t(texts);
+    EXPECT_TRUE(l.good() && t.good()) << output;
+    if (l && t) {
+        f.layout = nlohmann::json::parse(l);
+        f.texts = nlohmann::json::parse(t).at("texts");
+    }
+    return f;
+}
+
+// The case's scene with every overlay on, at its size and UI scale (`extra`: more flags).
+Frame everyOverlay(const Case& c, const std::string& extra) {
     char size[32];
     std::snprintf(size, sizeof size, "%dx%d", c.width, c.height);
-    std::string output;
-    const int code =
-        run(quote(SANDBOX_OFFSCREEN_EXE) + " " + quote(c.scene) + " --frames 30 --show " +
-                kEveryOverlay + " --size " + size + " --ui-scale " + std::to_string(c.uiScale) +
-                " " + extra + " --screenshot " + quote(png.string()) + " --layout-json " +
-                quote(json.string()),
-            &output);
-    EXPECT_EQ(code, 0) << output;
-    std::ifstream in(json);
-    EXPECT_TRUE(in.good()) << "no " << json << "\n" << output;
-    if (!in) return {};
-    return nlohmann::json::parse(in);
+    return render(outputDir() / (c.name() + extra.substr(0, extra.find(' '))),
+                  quote(c.scene) + " --frames 30 --show " + kEveryOverlay + " --size " + size +
+                      " --ui-scale " + std::to_string(c.uiScale) + " " + extra);
+}
+
+// A text as a failure message names it: its window, its characters and its rectangle.
+std::string describe(const nlohmann::json& t) {
+    return "[" + t.at("window").get<std::string>() + "] '" + t.at("text").get<std::string>() +
+           "' at " + t.at("rect").dump();
+}
+
+// What issue 23's Done-when checks on a shipped scene with every overlay on, as a person would
+// by eye: texts cut at an edge, scene texts over each other (a positive area in common), plots
+// lower than 13% of the image's height (140 px at 1080p).
+struct ScreenFaults {
+    std::vector<std::string> clipped, overlapping, lowPlots;
+};
+
+ScreenFaults screenFaults(const Frame& f, double imageHeight) {
+    ScreenFaults out;
+    std::vector<const nlohmann::json*> scene;
+    for (const auto& t : f.texts) {
+        if (t.at("clipped").get<bool>()) out.clipped.push_back(describe(t));
+        if (t.at("window") == "scene") scene.push_back(&t);
+    }
+    for (std::size_t i = 0; i < scene.size(); ++i) {
+        for (std::size_t j = i + 1; j < scene.size(); ++j) {
+            if (overlap(rectOf(scene[i]->at("rect")), rectOf(scene[j]->at("rect"))))
+                out.overlapping.push_back(describe(*scene[i]) + " and " + describe(*scene[j]));
+        }
+    }
+    for (const auto& p : f.layout.at("plots")) {
+        if (rectOf(p.at("rect")).h < 0.13 * imageHeight - 0.5) out.lowPlots.push_back(p.dump());
+    }
+    return out;
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+    std::string out;
+    for (const std::string& l : lines) out += "\n  " + l;
+    return out;
+}
+
+// Which checks hold at each size and UI scale: all three at 1920x1080, UI scale 1 (issue 23's
+// Done-when); the plots' height everywhere; at 1920x1080, UI scale 1.5, no text is clipped but in
+// the methods' table (it scrolls sideways: 119 clipped cells over the shipped scenes). What is
+// not asserted is printed (measured: 1920x1080 UI scale 1.5, 11 scene-text overlaps, all the
+// point-of-impact caption in jammed_box and gas_500; 1280x720 UI scale 1, 18 clipped texts in
+// the inspector and the methods' table, 11 overlaps, the same caption; UI scale 1.5 at 1280x720
+// is the crowded case: hundreds of clipped texts in small windows).
+struct Checked {
+    bool unclipped = false; // no text clipped...
+    std::string clippedIn;  // ...but in this window (reported there)
+    bool apart = false;     // no two scene texts overlap
+    bool plotsHigh = true;  // every plot >= 13% of the height
+};
+
+Checked checkedAt(const Case& c) {
+    if (c.width == 1920 && c.uiScale == 1.0) return {true, "", true, true};
+    if (c.width == 1920) return {true, "Methods side by side", false, true};
+    return {};
 }
 
 class EveryOverlay : public ::testing::TestWithParam<Case> {};
 
 TEST_P(EveryOverlay, NoWindowCoversTheWorldAndNoneLeavesTheImage) {
     const Case& c = GetParam();
-    const nlohmann::json j = layoutOf(c, "");
+    const Frame f = everyOverlay(c, "");
+    const nlohmann::json& j = f.layout;
     ASSERT_TRUE(j.is_object());
     const Rect image{0, 0, double(c.width), double(c.height)};
     const Rect scene = rectOf(j.at("scene"));
@@ -103,6 +177,27 @@ TEST_P(EveryOverlay, NoWindowCoversTheWorldAndNoneLeavesTheImage) {
         EXPECT_GT(r.w, 0.0) << name;
         EXPECT_GT(r.h, 0.0) << name;
     }
+    // Issue 23: nothing cut, no scene text over another, plots big enough to see.
+    const ScreenFaults faults = screenFaults(f, c.height);
+    const Checked checked = checkedAt(c);
+    const std::string where = c.name() + ": ";
+    if (checked.unclipped) {
+        std::vector<std::string> clipped;
+        for (const std::string& t : faults.clipped) {
+            if (checked.clippedIn.empty() || t.rfind("[" + checked.clippedIn + "]", 0) != 0)
+                clipped.push_back(t);
+        }
+        EXPECT_TRUE(clipped.empty()) << where << joined(clipped);
+    }
+    if (checked.apart) {
+        EXPECT_TRUE(faults.overlapping.empty()) << where << joined(faults.overlapping);
+    }
+    if (checked.plotsHigh) {
+        EXPECT_TRUE(faults.lowPlots.empty()) << where << joined(faults.lowPlots);
+    }
+    std::printf("screen check %s: %zu texts, %zu clipped, %zu scene-text overlaps, %zu low plots\n",
+                c.name().c_str(), f.texts.size(), faults.clipped.size(), faults.overlapping.size(),
+                faults.lowPlots.size());
 }
 
 INSTANTIATE_TEST_SUITE_P(Shipped, EveryOverlay, ::testing::ValuesIn(cases()),
@@ -113,7 +208,7 @@ INSTANTIATE_TEST_SUITE_P(Shipped, EveryOverlay, ::testing::ValuesIn(cases()),
 TEST(PresentMode, LeavesNoWindowAndTheWholeImageToTheScene) {
     for (double scale : {1.0, 1.5}) {
         const Case c{"lecture_example_1", 1920, 1080, scale};
-        const nlohmann::json j = layoutOf(c, "--present");
+        const nlohmann::json j = everyOverlay(c, "--present").layout;
         ASSERT_TRUE(j.is_object());
         EXPECT_TRUE(j.at("windows").empty()) << j.dump();
         const Rect scene = rectOf(j.at("scene"));
@@ -123,30 +218,8 @@ TEST(PresentMode, LeavesNoWindowAndTheWholeImageToTheScene) {
     }
 }
 
-// One offscreen frame's two JSON files: --layout-json and --text-json.
-struct Frame {
-    nlohmann::json layout, texts;
-};
-
 Frame frameOf(const std::string& name, const std::string& args) {
-    const fs::path base = outputDir() / name;
-    const std::string png = base.string() + ".png", layout = base.string() + ".layout.json",
-                      texts = base.string() + ".text.json";
-    fs::remove(layout);
-    fs::remove(texts);
-    std::string output;
-    const int code = run(quote(SANDBOX_OFFSCREEN_EXE) + " " + args + " --screenshot " + quote(png) +
-                             " --layout-json " + quote(layout) + " --text-json " + quote(texts),
-                         &output);
-    EXPECT_EQ(code, 0) << output;
-    Frame f;
-    std::ifstream l(layout), t(texts);
-    EXPECT_TRUE(l.good() && t.good()) << output;
-    if (l && t) {
-        f.layout = nlohmann::json::parse(l);
-        f.texts = nlohmann::json::parse(t).at("texts");
-    }
-    return f;
+    return render(outputDir() / name, args);
 }
 
 TEST(LayoutJson, ListsEveryBlockAndPlotAsDrawn) {

@@ -332,6 +332,13 @@ TEST(CaptionPlacement, NeverCoversABlock) {
     // No free spot at all: the least covered one, still inside the scene.
     const ScreenRect full = placeCaption(400, 120, scene, world, {scene}, 10);
     EXPECT_TRUE(rectInside(full, scene));
+    // Blocks everywhere (a jammed box): it hides no label, though the top left corner (half in
+    // the margin) would cover the least of the blocks.
+    const std::vector<ScreenRect> labels = {
+        {425, 125, 60, 30}, {600, 500, 60, 40}, {1300, 860, 40, 16}};
+    EXPECT_TRUE(rectsOverlap(placeCaption(400, 120, scene, world, {world}, 10), labels[0]));
+    const ScreenRect packed = placeCaption(400, 120, scene, world, {world}, 10, labels);
+    for (const ScreenRect& l : labels) EXPECT_FALSE(rectsOverlap(packed, l)) << packed.y;
 }
 
 TEST(SaveNaming, OffersANameFromTheSceneAndNeverAnExistingFile) {

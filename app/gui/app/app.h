@@ -38,9 +38,12 @@ struct UiState {
     // The docked window whose title bar the left button went down on (one at a time): dragging
     // on from there pulls it out of the layout.
     std::string titlePressed;
-    // This frame, what the scene's labels took on screen (px): the blocks, their labels, the
-    // arrows' values; the overlays' labels (point of impact, centre of mass) avoid them.
-    std::vector<ScreenRect> takenOnScreen;
+    // This frame, what the scene took on screen (px): the blocks, and the texts drawn over it
+    // (axis numbers, labels, the arrows' values); the overlays' labels (point of impact, centre
+    // of mass) avoid both, and a caption that must cover blocks hides no text if it can.
+    struct TakenOnScreen {
+        std::vector<ScreenRect> blocks, texts;
+    } takenOnScreen;
     std::string physicsFollowedScene; // the scene the "Physics" header last opened or closed for
     // The window the keyboard focus goes to this frame (Tab: the panel, F6: the next window);
     // "" when none. recordShownWindow moves ImGui's navigation there as the window is drawn.

@@ -72,17 +72,21 @@ long long predictedCollisions(const VelocitySpacePair& pair) {
     return static_cast<long long>(std::ceil(kPi / reflectionAngle(pair))) - 1;
 }
 
+std::string velocitySpaceCount(const VelocitySpacePair& pair) {
+    if (!pair.valid()) return pair.why;
+    return "The reflection lines meet at theta = atan(sqrt(m_light/m_heavy)) = " +
+           formatNumber(reflectionAngle(pair)) +
+           " rad: a light block between a wall and the heavy one makes ceil(pi/theta) - 1 = " +
+           std::to_string(predictedCollisions(pair)) + " collisions (C = 1).";
+}
+
 std::string velocitySpaceCaption(const VelocitySpacePair& pair) {
     if (!pair.valid()) return pair.why;
-    const double theta = reflectionAngle(pair);
     return "Axes x = sqrt(m1)·v1, y = sqrt(m2)·v2 (along x). Circle: kinetic energy "
            "(2·KE = r²). Line: momentum (sqrt(m1)·x + sqrt(m2)·y = p). "
            "Each collision reflects the point: block on block across the dashed line along "
-           "(sqrt(m1), sqrt(m2)) (C < 1 pulls it in toward it), a wall flips one axis. The two "
-           "lines meet at theta = atan(sqrt(m_light/m_heavy)) = " +
-           formatNumber(theta) + " rad: a light block between a wall and the heavy one makes " +
-           "ceil(pi/theta) - 1 = " + std::to_string(predictedCollisions(pair)) +
-           " collisions (C = 1), the digits of pi for mass ratios 100^k.";
+           "(sqrt(m1), sqrt(m2)) (C < 1 pulls it in toward it), a wall flips one axis. " +
+           velocitySpaceCount(pair) + " For mass ratios 100^k, the digits of pi.";
 }
 
 void VelocitySpacePath::clear() {

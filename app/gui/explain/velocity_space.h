@@ -51,6 +51,8 @@ double reflectionAngle(const VelocitySpacePair& pair);
 long long predictedCollisions(const VelocitySpacePair& pair);
 // The caption under the picture: what the lines are and, for the count, theta and N.
 std::string velocitySpaceCaption(const VelocitySpacePair& pair);
+// Its last sentence alone, the count: theta and N (what a small window shows).
+std::string velocitySpaceCount(const VelocitySpacePair& pair);
 
 // One sample of the path: the time (s) and the two velocities (m/s along x).
 struct VelocitySpaceSample {

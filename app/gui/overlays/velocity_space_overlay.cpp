@@ -113,17 +113,21 @@ void drawVelocitySpaceOverlay(App& app) {
         return;
     }
     const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float font = ImGui::GetFontSize();
     // The square on the left and the caption beside it when the window is wide, else the
     // caption under a smaller square.
     const bool beside = avail.x > avail.y * 1.8f;
-    // Stacked, the picture comes first (the caption under it scrolls).
-    const float side = std::max(40.0f, beside ? avail.y : std::min(avail.x, avail.y - 1.6f * font));
+    // Stacked, the picture comes first, the CSV row under it (the caption where it fits).
+    const float row = ImGui::GetFrameHeightWithSpacing() + 2.0f * ImGui::GetStyle().WindowPadding.y;
+    const float side = std::max(40.0f, beside ? avail.y : std::min(avail.x, avail.y - row));
     const ImVec2 lo = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("##velocityspace", ImVec2(side, side));
+    const std::string caption = velocitySpaceCaption(pair);
+    wrappedTooltip(caption);
     drawPicture(app, path, lo, side);
     if (beside) ImGui::SameLine();
-    ImGui::BeginChild("##velocityspace-caption", ImVec2(0.0f, 0.0f), false);
+    // Padded: a glyph's left bearing at the child's very edge would be cut.
+    ImGui::BeginChild("##velocityspace-caption", ImVec2(0.0f, 0.0f), false,
+                      ImGuiWindowFlags_AlwaysUseWindowPadding);
     if (uiSmallButton("CSV")) {
         exportCsv(app, "velocity space",
                   velocitySpaceTable(path, app.sim.blockDisplayName(pair.block1),
@@ -133,8 +137,23 @@ void drawVelocitySpaceOverlay(App& app) {
         ImGui::SetTooltip("Write the path (t, v1, v2 and the coordinates) as a CSV file");
     ImGui::SameLine();
     ImGui::TextDisabled("%zu points", path.samples().size());
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(velocitySpaceCaption(pair).c_str());
-    ImGui::PopTextWrapPos();
+    // The whole caption where it fits; else the count (theta and N) where it fits; the whole on
+    // hovering the picture or the count.
+    const ImVec2 room = ImGui::GetContentRegionAvail();
+    const auto wrapped = [&room](const std::string& text) {
+        return wrapFormula(text, room.x, [](const std::string& line) {
+            return static_cast<double>(ImGui::CalcTextSize(line.c_str()).x);
+        });
+    };
+    const auto fits = [&room](const std::string& text) {
+        return ImGui::CalcTextSize(text.c_str()).y <= room.y;
+    };
+    const std::string whole = wrapped(caption), count = wrapped(velocitySpaceCount(pair));
+    if (fits(whole)) {
+        ImGui::TextUnformatted(whole.c_str());
+    } else if (fits(count)) {
+        ImGui::TextUnformatted(count.c_str());
+        wrappedTooltip(caption);
+    }
     ImGui::EndChild();
 }

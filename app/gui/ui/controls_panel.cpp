@@ -6,6 +6,7 @@
 #include "overlay_window.h"
 #include "save_naming.h"
 #include "settings_sections.h"
+#include "text_format.h"
 #include "typed_field.h"
 #include "ui_style.h"
 
@@ -284,6 +285,32 @@ void viewSection(App& app) {
         app.ui.helpOpen = true;
 }
 
+// The scene's description, dim: whole where it fits in `maxLines` lines, else its first
+// sentences that do with "(more)" after them, the whole on hovering it. Nothing is cut at an
+// edge, and nothing scrolls.
+void sceneDescription(const std::string& text, int maxLines) {
+    const float width = ImGui::GetContentRegionAvail().x;
+    const auto lineCount = [width](const std::string& t) {
+        const std::string wrapped = wrapAtSpaces(t, width, [](const std::string& line) {
+            return static_cast<double>(ImGui::CalcTextSize(line.c_str()).x);
+        });
+        return 1 + static_cast<int>(std::count(wrapped.begin(), wrapped.end(), '\n'));
+    };
+    const char* more = " (more)";
+    std::string shown = text;
+    bool cut = false;
+    while (lineCount(shown + (cut ? more : "")) > maxLines && shown.size() > 2) {
+        const std::size_t end = shown.rfind(". ", shown.size() - 2); // the last sentence's start
+        if (end == std::string::npos) break;
+        shown.resize(end + 1);
+        cut = true;
+    }
+    ImGui::PushStyleColor(ImGuiCol_Text, uiDimColor());
+    textWrappedAtSpaces(cut ? shown + more : shown);
+    ImGui::PopStyleColor();
+    if (cut) wrappedTooltip(text);
+}
+
 } // namespace
 
 // A narrow screen's sheet: its bar (open or close it, play, step, reset, help) always shows.
@@ -338,16 +365,11 @@ void drawControlsPanel(App& app) {
     ImGui::PushItemWidth(width * 0.52f);
     scenePicker(app);
     if (!app.sim.scene.description.empty()) {
-        // At most three lines; the rest scrolls (the panel itself must not, at 720p).
-        const float lines = ImGui::GetTextLineHeightWithSpacing() * 3.0f;
-        const float wrap = ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ScrollbarSize;
-        const float needed =
-            ImGui::CalcTextSize(app.sim.scene.description.c_str(), nullptr, false, wrap).y;
-        ImGui::BeginChild("##description", ImVec2(0.0f, std::min(lines, needed + 2.0f)));
-        ImGui::PushStyleColor(ImGuiCol_Text, uiDimColor());
-        textWrappedAtSpaces(app.sim.scene.description);
-        ImGui::PopStyleColor();
-        ImGui::EndChild();
+        // A third of the panel's height, three lines at least (the panel itself must not scroll
+        // at 720p).
+        const int lines = std::max(
+            3, static_cast<int>(ImGui::GetContentRegionAvail().y / 3.0f / ImGui::GetFontSize()));
+        sceneDescription(app.sim.scene.description, lines);
     }
     if (!app.ui.messages.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiErrorColor());
@@ -364,7 +386,10 @@ void drawControlsPanel(App& app) {
     runSection(app);
     // Play, Step and Reset stay in view: the sections below scroll on their own.
     // Flattened: the arrow keys go on from Reset into the sections (no Space to enter them).
-    ImGui::BeginChild("##sections", ImVec2(0.0f, 0.0f), false, ImGuiWindowFlags_NavFlattened);
+    // A whole number of rows high, so that the row at its bottom is not cut in half.
+    const float row = ImGui::GetFrameHeightWithSpacing();
+    const float rows = std::max(1.0f, std::floor(ImGui::GetContentRegionAvail().y / row));
+    ImGui::BeginChild("##sections", ImVec2(0.0f, rows * row), false, ImGuiWindowFlags_NavFlattened);
     ImGui::PushItemWidth(width * 0.52f);
     simulationSection(app);
     physicsSection(app);

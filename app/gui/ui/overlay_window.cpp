@@ -1,5 +1,6 @@
 #include "overlay_window.h"
 
+#include "text_format.h"
 #include "ui_style.h"
 
 #include <imgui_internal.h>
@@ -42,30 +43,83 @@ ImVec2 sceneCaptionPlace(const App& app, float width, float height,
     for (const Block& b : app.sim.world().blocks)
         avoid.push_back(screenBox(app, b.position, b.size, font));
     for (const WorldBox& b : boxes) avoid.push_back(screenBox(app, b.centre, b.size, font * 1.5));
-    const ScreenRect r = placeCaption(
-        width, height, vp, worldRectOnScreen(app.view.camera, app.sim.world().bounds), avoid, 10.0 * s);
+    // Where it must cover blocks (a box full of them), it hides none of the texts drawn so far
+    // (the axis numbers, the labels: app.ui.takenOnScreen) if it can.
+    const ScreenRect r =
+        placeCaption(width, height, vp, worldRectOnScreen(app.view.camera, app.sim.world().bounds),
+                     avoid, 10.0 * s, app.ui.takenOnScreen.texts);
     return ImVec2(static_cast<float>(r.x), static_cast<float>(r.y));
 }
+
+namespace {
+
+// The caption's lines wrapped `width` px wide (wrapFormula: never inside a number), each piece
+// in its line's colour; and the widest piece.
+std::vector<CaptionLine> wrappedCaption(const std::vector<CaptionLine>& lines, float width,
+                                        float& widest) {
+    std::vector<CaptionLine> out;
+    widest = 0.0f;
+    for (const CaptionLine& l : lines) {
+        const std::string text = wrapFormula(l.text, width, [](const std::string& piece) {
+            return static_cast<double>(ImGui::CalcTextSize(piece.c_str()).x);
+        });
+        std::size_t start = 0;
+        while (start <= text.size()) {
+            const std::size_t end = std::min(text.find('\n', start), text.size());
+            out.push_back({text.substr(start, end - start), l.color, l.themed});
+            widest = std::max(widest, ImGui::CalcTextSize(out.back().text.c_str()).x);
+            start = end + 1;
+        }
+    }
+    return out;
+}
+
+bool hidesText(const App& app, ImVec2 at, ImVec2 size) {
+    const ScreenRect plate{at.x, at.y, size.x, size.y};
+    const std::vector<ScreenRect>& texts = app.ui.takenOnScreen.texts;
+    return std::any_of(texts.begin(), texts.end(),
+                       [&plate](const ScreenRect& t) { return rectsOverlap(plate, t); });
+}
+
+} // namespace
 
 void drawSceneCaption(const App& app, const std::vector<CaptionLine>& lines,
                       const std::vector<WorldBox>& boxes) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     const float font = ImGui::GetFontSize();
     const float s = app.view.uiScale;
-    float width = 0.0f;
+    float natural = 0.0f;
     for (const CaptionLine& l : lines)
-        width = std::max(width, ImGui::CalcTextSize(l.text.c_str()).x);
-    const float n = static_cast<float>(lines.size());
-    // The plate is 6 px (x UI scale) wider than the text on each side, 4 px taller.
-    const ImVec2 plate = sceneCaptionPlace(app, width + 12.0f * s, n * font + 8.0f * s, boxes);
+        natural = std::max(natural, ImGui::CalcTextSize(l.text.c_str()).x);
+    // As it is; where that hides a text (a box full of labelled blocks), narrower and taller
+    // (the scene's margin beside the world may hold it).
+    std::vector<CaptionLine> shown;
+    float width = 0.0f;
+    ImVec2 plate;
+    for (const float share : {1.0f, 0.6f, 0.4f, 0.25f}) {
+        float widest = natural;
+        std::vector<CaptionLine> tried =
+            share < 1.0f ? wrappedCaption(lines, natural * share, widest) : lines;
+        // The plate is 6 px (x UI scale) wider than the text on each side, 4 px taller.
+        const ImVec2 size(widest + 12.0f * s, static_cast<float>(tried.size()) * font + 8.0f * s);
+        const ImVec2 at = sceneCaptionPlace(app, size.x, size.y, boxes);
+        const bool hides = hidesText(app, at, size);
+        if (share == 1.0f || !hides) { // as it is, unless a narrower one hides nothing
+            shown = std::move(tried);
+            width = widest;
+            plate = at;
+        }
+        if (!hides) break;
+    }
+    const float n = static_cast<float>(shown.size());
     const ImVec2 at(plate.x + 6.0f * s, plate.y + 4.0f * s);
     dl->AddRectFilled(
         ImVec2(at.x - 6 * s, at.y - 4 * s), ImVec2(at.x + width + 6 * s, at.y + n * font + 4 * s),
         uiLightTheme() ? IM_COL32(250, 250, 252, 230) : IM_COL32(16, 18, 26, 215), 4.0f);
-    for (std::size_t i = 0; i < lines.size(); ++i)
+    for (std::size_t i = 0; i < shown.size(); ++i)
         dl->AddText(ImVec2(at.x, at.y + static_cast<float>(i) * font),
-                    lines[i].themed ? lines[i].color : uiThemed(lines[i].color),
-                    lines[i].text.c_str());
+                    shown[i].themed ? shown[i].color : uiThemed(shown[i].color),
+                    shown[i].text.c_str());
 }
 
 void recordShownWindow(App& app, const char* name) {

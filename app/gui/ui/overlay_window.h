@@ -57,11 +57,12 @@ struct CaptionLine {
 };
 // Where a caption of `width` x `height` px goes over the scene (placeCaption): covering no
 // block (grown by its labels), none of `boxes` (grown by one and a half lines), nor the status
-// badge and the axis numbers.
+// badge, the axis numbers and the labels taken on screen so far (app.ui.takenOnScreen).
 ImVec2 sceneCaptionPlace(const App& app, float width, float height,
                          const std::vector<WorldBox>& boxes);
 // Lines of text on a plate over the scene, where sceneCaptionPlace finds room (the point of
-// impact's numbers, the student's trace).
+// impact's numbers, the student's trace); where the plate would hide a label there, the lines
+// wrapped narrower (wrapFormula) if that finds a spot hiding none.
 void drawSceneCaption(const App& app, const std::vector<CaptionLine>& lines,
                       const std::vector<WorldBox>& boxes);
 

@@ -64,57 +64,71 @@ ScreenRect spanning(double x0, double y0, double x1, double y1) {
     return {x0, y0, x1 - x0, y1 - y0};
 }
 
-bool intersects(const ScreenRect& a, const ScreenRect& b) {
-    return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height &&
-           b.y < a.y + a.height;
-}
+using Taken = UiState::TakenOnScreen;
 
-// Whether a text at (x, y) (top-left) of `size`, widened by `gap` on either side, lies in `view`
-// and overlaps none of `placed`.
-bool clearAt(const std::vector<ScreenRect>& placed, const ScreenRect& view, float x, float y,
-             ImVec2 size, float gap) {
+// What a text at (x, y) (top-left) of `size`, widened by `gap` on either side, covers of what is
+// taken: the area in common with the blocks, and ten times that with the texts (over a block, a
+// label hides less than over another label); infinite outside `view`. 0: a free spot.
+double coveredAt(const Taken& placed, const ScreenRect& view, float x, float y, ImVec2 size,
+                 float gap) {
     if (x < view.x || y < view.y || x + size.x > view.x + view.width ||
         y + size.y > view.y + view.height)
-        return false;
+        return INFINITY;
     const ScreenRect r = spanning(x - gap, y, x + size.x + gap, y + size.y);
-    return std::none_of(placed.begin(), placed.end(),
-                        [&r](const ScreenRect& p) { return intersects(r, p); });
+    const auto area = [&r](const std::vector<ScreenRect>& list) {
+        double sum = 0.0;
+        for (const ScreenRect& p : list) {
+            const double w = std::min(r.x + r.width, p.x + p.width) - std::max(r.x, p.x);
+            const double h = std::min(r.y + r.height, p.y + p.height) - std::max(r.y, p.y);
+            if (w > 0.0 && h > 0.0) sum += w * h;
+        }
+        return sum;
+    };
+    return area(placed.blocks) + 10.0 * area(placed.texts);
 }
 
 // The top-left of a label of `size` meant for x with its top at `above` or `below`: moved up or
 // down in steps of a line (trying above first) until it lies in `view` and overlaps none of
 // `placed` (labels already drawn and blocks); where no row is free, the same rows half its width
-// to the right, then to the left, and further. Where nothing is free, (x, above).
-ImVec2 freeSpot(const std::vector<ScreenRect>& placed, const ScreenRect& view, float x, float above,
-                float below, ImVec2 size, float line) {
+// to the right, then to the left, and further. Where nothing is free, the spot in `view`
+// covering the least (a block rather than its label), else (x, above).
+ImVec2 freeSpot(const Taken& placed, const ScreenRect& view, float x, float above, float below,
+                ImVec2 size, float line) {
     const float gap = line * 0.5f; // labels closer than this read as one
     const float shift = size.x * 0.5f + gap;
+    ImVec2 best(x, above);
+    double least = INFINITY;
     for (const float dx :
          {0.0f, shift, -shift, 2.0f * shift, -2.0f * shift, 3.0f * shift, -3.0f * shift}) {
         for (int k = 0; k < 6; ++k) {
             for (const float y : {above - k * line, below + k * line}) {
-                if (clearAt(placed, view, x + dx, y, size, gap)) return ImVec2(x + dx, y);
+                const double covered = coveredAt(placed, view, x + dx, y, size, gap);
+                if (covered == 0.0) return ImVec2(x + dx, y);
+                if (covered < least) {
+                    least = covered;
+                    best = ImVec2(x + dx, y);
+                }
             }
         }
     }
-    return ImVec2(x, above);
+    return best;
 }
 
 constexpr int kCrowdedScene = 20; // blocks
 
 // `placed`: the rectangles taken on screen, the blocks and each label (the arrows' values
 // avoid them).
-void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
+void drawLabels(const App& app, ImDrawList* dl, Taken& placed) {
     const int n = static_cast<int>(app.sim.world().blocks.size());
     if (n > kMaxLabelledBlocks) return;
     const float lineHeight = ImGui::GetFontSize();
     // Rectangles already taken on screen: the blocks themselves, then each label placed.
-    placed.reserve(static_cast<std::size_t>(2 * n));
+    placed.blocks.reserve(static_cast<std::size_t>(n));
     for (const Block& b : app.sim.world().blocks) {
         const Vec2 lo = app.view.camera.worldToScreen(b.position - b.size * 0.5);
         const Vec2 hi = app.view.camera.worldToScreen(b.position + b.size * 0.5);
-        placed.push_back(spanning(std::min(lo.x, hi.x), std::min(lo.y, hi.y), std::max(lo.x, hi.x),
-                                  std::max(lo.y, hi.y)));
+        placed.blocks.push_back(spanning(std::min(lo.x, hi.x), std::min(lo.y, hi.y),
+                                         std::max(lo.x, hi.x), std::max(lo.y, hi.y)));
     }
     for (int i = 0; i < n; ++i) {
         const Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
@@ -145,6 +159,10 @@ void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed)
             const float top = static_cast<float>(c.y) - (twoLines ? lineHeight : lineHeight * 0.5f);
             shadowText(dl, ImVec2(static_cast<float>(c.x) - nameSize.x * 0.5f, top), white,
                        name.c_str());
+            // On its block (taken already): noted as a text too, which a caption should not hide.
+            const float labelW = twoLines ? std::max(nameSize.x, secondSize.x) : nameSize.x;
+            placed.texts.push_back(spanning(c.x - labelW * 0.5, top, c.x + labelW * 0.5,
+                                            top + (twoLines ? 2.0f : 1.0f) * lineHeight));
             if (twoLines) {
                 shadowText(dl,
                            ImVec2(static_cast<float>(c.x) - secondSize.x * 0.5f, top + lineHeight),
@@ -158,7 +176,7 @@ void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed)
             const float below = static_cast<float>(c.y + hPx * 0.5) + 2.0f;
             const ImVec2 at =
                 freeSpot(placed, app.view.camera.viewport(), x, above, below, nameSize, lineHeight);
-            placed.push_back(spanning(at.x, at.y, at.x + nameSize.x, at.y + nameSize.y));
+            placed.texts.push_back(spanning(at.x, at.y, at.x + nameSize.x, at.y + nameSize.y));
             shadowText(dl, at, beside, name.c_str(), packed(theme().textShadow));
         }
     }
@@ -168,7 +186,7 @@ void drawLabels(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed)
 // (or the left wall) out of the view, along the view's bottom (or left) edge, so that a position
 // a step's question names can be read off the screen.
 // Each number taken is added to `placed`, so that the labels drawn after it go around it.
-void drawAxisNumbers(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
+void drawAxisNumbers(const App& app, ImDrawList* dl, Taken& placed) {
     const Camera& cam = app.view.camera;
     const Bounds& bounds = app.sim.world().bounds;
     const ScreenRect& vp = cam.viewport();
@@ -192,7 +210,7 @@ void drawAxisNumbers(const App& app, ImDrawList* dl, std::vector<ScreenRect>& pl
     const auto draw = [&](float x, float y, const char* text) {
         const ImVec2 size = ImGui::CalcTextSize(text);
         dl->AddText(ImVec2(x, y), color, text);
-        placed.push_back({x, y, size.x, size.y});
+        placed.texts.push_back({x, y, size.x, size.y});
     };
     char text[32];
     float unitX = NAN; // after the last number drawn on the x axis
@@ -249,21 +267,27 @@ void drawLargeCount(const App& app, ImDrawList* dl) {
 
 // The row for a text of size `ts` at (x, y): there, or moved down a line at a time (at most
 // six) until it overlaps nothing in `placed`; where the rows down leave `view`, up instead.
-float freeRow(const std::vector<ScreenRect>& placed, const ScreenRect& view, float x, float y,
-              ImVec2 ts) {
+float freeRow(const Taken& placed, const ScreenRect& view, float x, float y, ImVec2 ts) {
+    float best = y;
+    double least = INFINITY;
     for (const float direction : {1.0f, -1.0f}) {
         for (int k = 0; k < 6; ++k) {
             const float row = y + direction * static_cast<float>(k) * ts.y;
-            if (clearAt(placed, view, x, row, ts, 4.0f)) return row;
+            const double covered = coveredAt(placed, view, x, row, ts, 4.0f);
+            if (covered == 0.0) return row;
+            if (covered < least) {
+                least = covered;
+                best = row;
+            }
         }
     }
-    return y;
+    return best; // none free: the row covering the least
 }
 
 // A value written at the head of an arrow (from `base` to `tip`, m) cut at the view's edge or the
 // arena's wall: over the head (beside a vertical one), kept inside the view, in a free row.
-void drawValueAtTip(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed, Vec2 base,
-                    Vec2 tip, const std::string& text, ImU32 color) {
+void drawValueAtTip(const App& app, ImDrawList* dl, Taken& placed, Vec2 base, Vec2 tip,
+                    const std::string& text, ImU32 color) {
     const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
     const ScreenRect& vp = app.view.camera.viewport();
     const Vec2 at = app.view.camera.worldToScreen(tip);
@@ -281,13 +305,13 @@ void drawValueAtTip(const App& app, ImDrawList* dl, std::vector<ScreenRect>& pla
                 std::clamp(static_cast<float>(at.y) - ts.y - 6.0f, static_cast<float>(vp.y),
                            static_cast<float>(vp.y + vp.height) - ts.y),
                 ts);
-    placed.push_back(spanning(x, y, x + ts.x, y + ts.y));
+    placed.texts.push_back(spanning(x, y, x + ts.x, y + ts.y));
     shadowText(dl, ImVec2(x, y), color, text.c_str(), packed(theme().textShadow));
 }
 
 // The momentum arrows too long to draw to scale carry their value at their head (p = m·w in
 // the view's frame), in the momentum arrows' colour.
-void drawMomentumValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
+void drawMomentumValues(const App& app, ImDrawList* dl, Taken& placed) {
     if (!app.view.show.vectors) return;
     const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
     int written = 0;
@@ -306,7 +330,7 @@ void drawMomentumValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>&
 // Arrows too long to draw to scale (compressed and cut at the view's edge) carry their value; in
 // the centre-of-mass frame every arrow does (w1 = 4 m/s: the lecture's numbers), in a scene of
 // few blocks.
-void drawArrowValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
+void drawArrowValues(const App& app, ImDrawList* dl, Taken& placed) {
     if (!app.view.show.vectors) return;
     const bool relative = app.view.frame != ViewFrame::World;
     const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
@@ -337,7 +361,7 @@ void drawArrowValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>& pl
         const float x = std::clamp(static_cast<float>(at.x) - ts.x * 0.5f, static_cast<float>(vp.x),
                                    static_cast<float>(vp.x + vp.width) - ts.x);
         const float y = freeRow(placed, vp, x, static_cast<float>(at.y), ts);
-        placed.push_back(spanning(x, y, x + ts.x, y + ts.y));
+        placed.texts.push_back(spanning(x, y, x + ts.x, y + ts.y));
         shadowText(dl, ImVec2(x, y), packed(theme().velocity), text.c_str(),
                    packed(theme().textShadow));
         ++written;
@@ -346,8 +370,7 @@ void drawArrowValues(const App& app, ImDrawList* dl, std::vector<ScreenRect>& pl
 
 // Force arrows carry their value, "F = 2 N" (or the vector when it is not along an axis), at the
 // head: the arrow's length is to scale only up to the knee.
-void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl,
-                     std::vector<ScreenRect>& placed) {
+void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl, Taken& placed) {
     int written = 0;
     for (std::size_t i = 0; i < app.sim.world().blocks.size() && written < kMaxArrowValueLabels;
          ++i) {
@@ -376,7 +399,7 @@ void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl,
         }
         x = std::clamp(x, static_cast<float>(vp.x), static_cast<float>(vp.x + vp.width) - ts.x);
         const ImVec2 at = freeSpot(placed, vp, x, y, y, ts, ts.y); // clear of the other texts
-        placed.push_back({at.x, at.y, ts.x, ts.y});
+        placed.texts.push_back({at.x, at.y, ts.x, ts.y});
         shadowText(dl, at, sceneTheme(app.view.lightTheme).force.packed(), text,
                    packed(theme().textShadow));
         ++written;
@@ -384,7 +407,7 @@ void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl,
 }
 
 // A resting stack's expected top as a dashed line: a method that lets it sink shows the gap.
-void drawReferenceLine(const App& app, ImDrawList* dl, std::vector<ScreenRect>& placed) {
+void drawReferenceLine(const App& app, ImDrawList* dl, Taken& placed) {
     const std::optional<double> top = restingStackTop(app.sim.scene);
     if (!top) return;
     const Bounds& bounds = app.sim.world().bounds;
@@ -406,7 +429,7 @@ void drawReferenceLine(const App& app, ImDrawList* dl, std::vector<ScreenRect>& 
     const float right = std::min(static_cast<float>(b.x), static_cast<float>(vp.x + vp.width));
     const ImVec2 at = freeSpot(placed, vp, right - ts.x - 6.0f, y - ts.y - 4.0f, y + 4.0f, ts,
                                ImGui::GetFontSize());
-    placed.push_back({at.x, at.y, ts.x, ts.y});
+    placed.texts.push_back({at.x, at.y, ts.x, ts.y});
     shadowText(dl, at, color, text, packed(theme().textShadow));
 }
 
@@ -472,15 +495,16 @@ SceneLabelFont::~SceneLabelFont() {
 ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size) {
     const ImVec2 free = freeSpot(app.ui.takenOnScreen, app.view.camera.viewport(), at.x, at.y, at.y,
                                  size, ImGui::GetFontSize());
-    app.ui.takenOnScreen.push_back({free.x, free.y, size.x, size.y});
+    app.ui.takenOnScreen.texts.push_back({free.x, free.y, size.x, size.y});
     return free;
 }
 
 void drawSceneDecorations(App& app) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     ImGui::PushFont(sceneLabelFont(app)); // the scene's labels have a size of their own
-    std::vector<ScreenRect>& placed = app.ui.takenOnScreen; // texts and blocks on screen
-    placed.clear();
+    Taken& placed = app.ui.takenOnScreen; // blocks and texts on screen
+    placed.blocks.clear();
+    placed.texts.clear();
     drawAxisNumbers(app, dl, placed);
     drawReferenceLine(app, dl, placed);
     drawLabels(app, dl, placed);

@@ -233,7 +233,13 @@ void uiEndRows() {
 }
 
 bool uiSmallButton(const char* label) {
-    return gTouch ? ImGui::Button(label) : ImGui::SmallButton(label);
+    if (gTouch) return ImGui::Button(label);
+    // ImGui's SmallButton has no vertical padding: its label is clipped to the line, and a
+    // large font's descenders ("velocity", "energy" at UI scale 1.5) were cut. Two pixels more.
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 1.0f));
+    const bool pressed = ImGui::Button(label);
+    ImGui::PopStyleVar();
+    return pressed;
 }
 
 ImFont* uiCompactFont() {
@@ -295,6 +301,15 @@ void textWrappedFormula(const std::string& text) {
         return static_cast<double>(ImGui::CalcTextSize(line.c_str()).x);
     });
     ImGui::TextUnformatted(lines.c_str(), lines.c_str() + lines.size());
+}
+
+void wrappedTooltip(const std::string& text) {
+    if (!ImGui::IsItemHovered()) return;
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::TextUnformatted(text.c_str(), text.c_str() + text.size());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
 }
 
 ImVec4 uiErrorColor() {

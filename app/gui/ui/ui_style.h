@@ -51,6 +51,9 @@ void textWrappedAtSpaces(const std::string& text);
 // A line with equations, wrapped before its operators (wrapFormula): nothing cut at the window's
 // edge, and each chain still reads as one.
 void textWrappedFormula(const std::string& text);
+// The last item's tooltip while it is hovered: `text`, wrapped 30 font sizes wide (the whole of
+// what the item shows shortened).
+void wrappedTooltip(const std::string& text);
 // A colour chosen for the dark theme (text, lines and marks over a dark background), as the
 // current theme draws it: itself in the dark theme; in the light one a dark tone of the same hue
 // (bright colours deepened, greys and white turned dark), alpha kept, so it reads on light.

@@ -13,16 +13,22 @@ ScreenRect fromEdges(double x0, double y0, double x1, double y1) {
     return {l, t, r - l, b - t};
 }
 
-// Splits `length` pixels among `items` along a stack: each gets its minimum (all minimums
-// shrunk alike when they do not fit), then what is left by weight. Returns the extents.
+// The least extent of a window along its stack: its minimum at the UI scale, and in a column
+// its share of the display's height (`displayH`; 0 along the strip, where extents are widths).
+double leastExtent(const DockRequest& r, double scale, double displayH) {
+    return std::max(0.0, r.minExtent) * scale + std::max(0.0, r.heightShare) * displayH;
+}
+
+// Splits `length` pixels among `items` along a stack: each gets its least extent (all shrunk
+// alike when they do not fit), then what is left by weight. Returns the extents.
 std::vector<double> share(const std::vector<const DockRequest*>& items, double length, double gap,
-                          double scale) {
+                          double scale, double displayH) {
     std::vector<double> out(items.size(), 0.0);
     if (items.empty()) return out;
     const double usable = std::max(0.0, length - gap * static_cast<double>(items.size() - 1));
     double mins = 0.0, weights = 0.0;
     for (const DockRequest* r : items) {
-        mins += std::max(0.0, r->minExtent) * scale;
+        mins += leastExtent(*r, scale, displayH);
         weights += std::max(0.0, r->weight);
     }
     const double shrink = mins > usable && mins > 0.0 ? usable / mins : 1.0;
@@ -31,7 +37,7 @@ std::vector<double> share(const std::vector<const DockRequest*>& items, double l
         const double w = std::max(0.0, items[i]->weight);
         const double extra =
             weights > 0.0 ? left * w / weights : left / static_cast<double>(items.size());
-        out[i] = std::max(0.0, items[i]->minExtent) * scale * shrink + extra;
+        out[i] = leastExtent(*items[i], scale, displayH) * shrink + extra;
     }
     return out;
 }
@@ -88,7 +94,7 @@ Layout computeLayout(const LayoutInput& in) {
         std::vector<double> heights;
         double total = 0.0;
         for (const DockRequest* r : under) {
-            heights.push_back(std::max(0.0, r->minExtent) * s + std::max(0.0, r->heightShare) * H);
+            heights.push_back(leastExtent(*r, s, H));
             total += heights.back() + gap;
         }
         const double shrink = std::min(1.0, H * kMaxPanelDockShare / total);
@@ -113,7 +119,7 @@ Layout computeLayout(const LayoutInput& in) {
 
     // The right column, above the strip, windows stacked top to bottom.
     const double columnH = bottom.empty() ? H : stripY;
-    const std::vector<double> heights = share(right, columnH - top, gap, s);
+    const std::vector<double> heights = share(right, columnH - top, gap, s, H);
     double y = top;
     for (std::size_t i = 0; i < right.size(); ++i) {
         const double y1 = i + 1 == right.size() ? columnH : y + heights[i];
@@ -122,7 +128,7 @@ Layout computeLayout(const LayoutInput& in) {
     }
     // The bottom strip, from the panel to the right edge (under the column), left to right.
     const double stripX0 = areaX + (panel > 0.0 ? gap : 0.0);
-    const std::vector<double> widths = share(bottom, W - stripX0, gap, s);
+    const std::vector<double> widths = share(bottom, W - stripX0, gap, s, 0.0);
     double x = stripX0;
     for (std::size_t i = 0; i < bottom.size(); ++i) {
         const double x1 = i + 1 == bottom.size() ? W : x + widths[i];
@@ -159,8 +165,8 @@ double overlapArea(const ScreenRect& a, const ScreenRect& b) {
 } // namespace
 
 ScreenRect placeCaption(double width, double height, const ScreenRect& scene,
-                        const ScreenRect& world, const std::vector<ScreenRect>& avoid,
-                        double inset) {
+                        const ScreenRect& world, const std::vector<ScreenRect>& avoid, double inset,
+                        const std::vector<ScreenRect>& texts) {
     const double x0 = scene.x + inset, x1 = scene.x + scene.width - inset - width;
     const double y0 = scene.y + inset, y1 = scene.y + scene.height - inset - height;
     // Candidate corners: along the scene's and the world's edges, and a grid between them.
@@ -176,23 +182,27 @@ ScreenRect placeCaption(double width, double height, const ScreenRect& scene,
     const ScreenRect inner{world.x + inset, world.y + inset, world.width - 2.0 * inset,
                            world.height - 2.0 * inset};
     ScreenRect best{x0, y0, width, height};
-    // (covered area, tier, y, x): the smallest wins.
-    double bestCovered = INFINITY, bestTier = INFINITY, bestY = INFINITY, bestX = INFINITY;
+    // (texts covered, area covered, tier, y, x): the smallest wins.
+    double bestHidden = INFINITY, bestCovered = INFINITY, bestTier = INFINITY, bestY = INFINITY,
+           bestX = INFINITY;
     for (double y : ys) {
         for (double x : xs) {
             if (x < x0 - 1e-9 || x > x1 + 1e-9 || y < y0 - 1e-9 || y > y1 + 1e-9) continue;
             const ScreenRect r{std::round(x), std::round(y), width, height};
-            double covered = 0.0;
+            double covered = 0.0, hidden = 0.0;
             for (const ScreenRect& a : avoid) covered += overlapArea(r, a);
+            for (const ScreenRect& t : texts) hidden += overlapArea(r, t);
             const double tier = !rectsOverlap(r, world) ? 0.0 : rectInside(r, inner) ? 1.0 : 2.0;
             const bool better =
-                covered < bestCovered ||
-                (covered == bestCovered &&
-                 (tier < bestTier ||
-                  (tier == bestTier && (r.y < bestY || (r.y == bestY && r.x < bestX)))));
+                hidden < bestHidden ||
+                (hidden == bestHidden &&
+                 (covered < bestCovered ||
+                  (covered == bestCovered &&
+                   (tier < bestTier ||
+                    (tier == bestTier && (r.y < bestY || (r.y == bestY && r.x < bestX)))))));
             if (!better) continue;
             best = r;
-            bestCovered = covered, bestTier = tier, bestY = r.y, bestX = r.x;
+            bestHidden = hidden, bestCovered = covered, bestTier = tier, bestY = r.y, bestX = r.x;
         }
     }
     return best;

@@ -37,9 +37,10 @@ struct DockRequest {
     double weight = 1.0;
     // Across the region (the column's width, the strip's height): what the window would like.
     double crossExtent = 360.0;
-    // Panel side: the window's height is minExtent (scaled) plus this share of the display's
-    // height (content that must be a size on screen whatever the UI scale: plots of 140 px at
-    // 1080p). The windows under the panel take at most kMaxPanelDockShare of the height.
+    // Panel side and right column: the window's least height is minExtent (scaled) plus this
+    // share of the display's height (content that must be a size on screen whatever the UI
+    // scale: plots of 140 px at 1080p). The windows under the panel take at most
+    // kMaxPanelDockShare of the height.
     double heightShare = 0.0;
 };
 
@@ -102,10 +103,11 @@ bool rectInside(const ScreenRect& inner, const ScreenRect& outer);
 // overlay's numbers): inside `scene` (`inset` px from its edges), covering none of `avoid` (the
 // blocks on screen, grown by their labels). Preferred, in this order: wholly in the scene's
 // margin outside `world`, wholly inside `world` (`inset` from its walls), anywhere else; the top
-// first, then the left. When every spot covers something, the one covering the least area.
+// first, then the left. When every spot covers something, the one covering the least of
+// `texts` (labels and numbers drawn there: covering one hides it), then the least area.
 ScreenRect placeCaption(double width, double height, const ScreenRect& scene,
-                        const ScreenRect& world, const std::vector<ScreenRect>& avoid,
-                        double inset);
+                        const ScreenRect& world, const std::vector<ScreenRect>& avoid, double inset,
+                        const std::vector<ScreenRect>& texts = {});
 // The world's bounds on screen through `camera` (top-left corner and size, y down).
 ScreenRect worldRectOnScreen(const Camera& camera, const Bounds& bounds);
 
