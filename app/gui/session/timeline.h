@@ -55,6 +55,7 @@ class WorldHistory {
 
   private:
     bool sameAsLast(const World& world) const;
+    World recycledCopy(const World& world); // a copy of world, in the oldest's storage if due
     std::uint64_t capacity_;
     int every_;
     std::size_t maxBytes_;
