@@ -312,6 +312,31 @@ TEST(LessonSweep, ABlocksSpeedAndMomentumHoldAsPrinted) {
     EXPECT_GE(pairs, 3) << "steps 4, 8 and 27 write a block's speed and momentum";
 }
 
+// The x axis is read off the screen (a question's "x = 3 m", an answer's 6.67 m): every view
+// writes at least two numbers along it and its unit, on one row. Step 25's close camera
+// (x = 2..8 m) wrote only "5"; steps 11, 16, 17 and 24 wrote no "m" where a window stood after
+// the last number.
+TEST(LessonSweep, EveryViewNumbersItsXAxis) {
+    for (const Shot& s : shots()) {
+        const nlohmann::json* unit = nullptr;
+        for (const auto& t : s.texts)
+            if (isPart(t, "scene") && t.at("text") == "m") unit = &t;
+        if (unit == nullptr) {
+            ADD_FAILURE() << s.name() << ": no unit 'm' on the x axis";
+            continue;
+        }
+        const double row = rectOf(unit->at("rect")).y;
+        int numbers = 0;
+        for (const auto& t : s.texts) {
+            const std::string text = t.at("text");
+            if (isPart(t, "scene") && rectOf(t.at("rect")).y == row && !text.empty() &&
+                text.find_first_not_of("0123456789.-") == std::string::npos)
+                ++numbers;
+        }
+        EXPECT_GE(numbers, 2) << s.name() << ": " << numbers << " number on the x axis";
+    }
+}
+
 TEST(LessonSweep, TheBlocksAStepNamesAreAtLeast40Px) {
     for (const Shot& s : shots()) {
         const std::set<std::string> named = namedBlocks(lecture3().steps.at(s.step - 1));
