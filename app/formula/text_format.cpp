@@ -67,11 +67,20 @@ std::string trimmed(const std::string& s) {
     return s.substr(a, b - a);
 }
 
-// True when `text` is a number followed by "kg" (spaces allowed around both).
+// True when `text` ends in the unit g (grams), not kg.
+bool inGrams(const std::string& text) {
+    const std::string t = trimmed(text);
+    return t.size() >= 2 && t.back() == 'g' && t[t.size() - 2] != 'k';
+}
+
+// True when `text` is a number followed by "kg" or "g" (spaces allowed around both): "4 kg",
+// "50 g" (the feather's).
 bool isMassText(const std::string& text) {
     const std::string t = trimmed(text);
-    if (t.size() < 3 || t.compare(t.size() - 2, 2, "kg") != 0) return false;
-    const std::string number = trimmed(t.substr(0, t.size() - 2));
+    const std::size_t unit = inGrams(t) ? 1 : 2;
+    if (t.size() < unit + 1 || t.compare(t.size() - unit, unit, unit == 1 ? "g" : "kg") != 0)
+        return false;
+    const std::string number = trimmed(t.substr(0, t.size() - unit));
     if (number.empty()) return false;
     char* end = nullptr;
     std::strtod(number.c_str(), &end);
@@ -108,7 +117,12 @@ std::string nameWithMass(const std::string& name, double mass) {
     const std::size_t at = massPart(name);
     if (at == std::string::npos) return name;
     const std::string base = trimmed(name.substr(0, at));
-    const std::string m = std::isfinite(mass) ? formatNumber(mass) + " kg" : "infinite mass";
+    // In the unit the name states it in: "feather, 50 g" stays in grams.
+    const bool grams =
+        inGrams(name[at] == '(' ? name.substr(at + 1, name.size() - at - 2) : name.substr(at + 1));
+    const std::string m = !std::isfinite(mass) ? "infinite mass"
+                          : grams              ? formatNumber(mass * 1000.0) + " g"
+                                               : formatNumber(mass) + " kg";
     if (name[at] == ',') return base + ", " + m;
     return name[at] == '=' ? base + " = " + m : base + " (" + m + ")";
 }

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -262,6 +263,78 @@ TEST(LessonSweep, TheGiantsMomentumArrowReadsAsTheInspectorsVelocity) {
     // 1000000·v2' has six decimals fewer than v2': the arrow prints them all (none dropped).
     EXPECT_NEAR(std::stod(arrow), 1e6 * std::stod(v2After), 1e-7) << arrow << " vs " << v2After;
     EXPECT_GE(decimals, 7u) << v2After;
+}
+
+// A block whose velocity and momentum arrows both carry their value prints one quantity twice:
+// p = m·|v| must hold with the digits shown (step 27's green block, 4 kg, wrote 8.366 m/s and
+// 33.465 kg·m/s: 4·8.366 = 33.464; step 8's stone 8.405 and 16.809). A speed and a momentum on
+// screen are taken as one block's when a mass of the step's scene makes them agree to 1%.
+TEST(LessonSweep, ABlocksSpeedAndMomentumHoldAsPrinted) {
+    const auto number = [](const std::string& text, const std::string& unit) -> std::string {
+        if (text.size() <= unit.size() ||
+            text.compare(text.size() - unit.size(), unit.size(), unit) != 0)
+            return "";
+        const std::string n = text.substr(0, text.size() - unit.size());
+        return n.find_first_not_of("0123456789.") == std::string::npos ? n : "";
+    };
+    int pairs = 0;
+    for (const Shot& s : shots()) {
+        const LessonStep& step = lecture3().steps.at(s.step - 1);
+        if (!step.scene) continue;
+        std::vector<std::string> speeds, momenta;
+        for (const auto& t : s.texts) {
+            if (!isPart(t, "scene")) continue;
+            const std::string text = t.at("text");
+            const std::string p = number(text, " kg·m/s"), v = number(text, " m/s");
+            if (!p.empty())
+                momenta.push_back(p);
+            else if (!v.empty())
+                speeds.push_back(v);
+        }
+        for (const std::string& p : momenta) {
+            const std::size_t point = p.find('.');
+            const int decimals =
+                point == std::string::npos ? 0 : static_cast<int>(p.size() - point - 1);
+            const double halfUnit = 0.5 * std::pow(10.0, -decimals) * (1.0 + 1e-9);
+            for (const std::string& v : speeds) {
+                for (const BlockDef& b : step.scene->blocks) {
+                    const double m = b.mass, product = m * std::stod(v), shown = std::stod(p);
+                    if (b.kind != BodyKind::Dynamic || std::abs(product - shown) > 0.01 * shown)
+                        continue;
+                    ++pairs;
+                    EXPECT_LE(std::abs(product - shown), halfUnit)
+                        << s.name() << ": " << b.name << " (" << m << " kg) at " << v
+                        << " m/s prints " << p << " kg·m/s";
+                }
+            }
+        }
+    }
+    EXPECT_GE(pairs, 3) << "steps 4, 8 and 27 write a block's speed and momentum";
+}
+
+// The x axis is read off the screen (a question's "x = 3 m", an answer's 6.67 m): every view
+// writes at least two numbers along it and its unit, on one row. Step 25's close camera
+// (x = 2..8 m) wrote only "5"; steps 11, 16, 17 and 24 wrote no "m" where a window stood after
+// the last number.
+TEST(LessonSweep, EveryViewNumbersItsXAxis) {
+    for (const Shot& s : shots()) {
+        const nlohmann::json* unit = nullptr;
+        for (const auto& t : s.texts)
+            if (isPart(t, "scene") && t.at("text") == "m") unit = &t;
+        if (unit == nullptr) {
+            ADD_FAILURE() << s.name() << ": no unit 'm' on the x axis";
+            continue;
+        }
+        const double row = rectOf(unit->at("rect")).y;
+        int numbers = 0;
+        for (const auto& t : s.texts) {
+            const std::string text = t.at("text");
+            if (isPart(t, "scene") && rectOf(t.at("rect")).y == row && !text.empty() &&
+                text.find_first_not_of("0123456789.-") == std::string::npos)
+                ++numbers;
+        }
+        EXPECT_GE(numbers, 2) << s.name() << ": " << numbers << " number on the x axis";
+    }
 }
 
 TEST(LessonSweep, TheBlocksAStepNamesAreAtLeast40Px) {

@@ -254,6 +254,11 @@ TEST(TextFormat, NamesCarryTheCurrentMass) {
     EXPECT_EQ(nameWithMass("big ship, 4 kg", 8.0), "big ship, 8 kg");
     EXPECT_EQ(nameWithMass("big ship, 4 kg", 4.0), "big ship, 4 kg");
     EXPECT_FALSE(nameStatesMass("red, blue")); // a comma alone states no mass
+    // Step 8: "feather, 50 g" drew "0.05 kg" under its name; a name in grams stays in grams.
+    EXPECT_TRUE(nameStatesMass("feather, 50 g"));
+    EXPECT_EQ(nameWithMass("feather, 50 g", 0.05), "feather, 50 g");
+    EXPECT_EQ(nameWithMass("feather, 50 g", 0.2), "feather, 200 g");
+    EXPECT_FALSE(nameStatesMass("x = g")); // no number
     EXPECT_EQ(nameWithMass("m1 = 1 kg", 3.0), "m1 = 3 kg");
     EXPECT_EQ(nameWithMass("heavy (5 kg)", 0.5), "heavy (0.5 kg)");
     EXPECT_EQ(nameWithMass("m1 = 1 kg", INFINITY), "m1 = infinite mass");
