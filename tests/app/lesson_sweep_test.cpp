@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <set>
 #include <string>
 #include <vector>
@@ -38,6 +39,7 @@ constexpr double kSceneLabelPx = 24.0; // 2.2%
 constexpr double kNamedBlockPx = 40.0; // a named block's short side
 constexpr double kPlotPx = 140.0;      // a plot's height
 constexpr double kWorldKept = 0.85;    // the world's area at the answer over its area at the setup
+constexpr double kEffectPx = 12.0;     // issue 24: an effect a step asks about, in pixels
 
 // One rendered state of one step.
 struct Shot {
@@ -130,6 +132,105 @@ std::set<std::string> namedBlocks(const LessonStep& step) {
     for (const LessonExpect& e : step.expect)
         if (!e.blockName.empty()) names.insert(e.blockName);
     return names;
+}
+
+// The shot of step `step` (1-based) at its setup or its moment.
+const Shot& shotOf(std::size_t step, bool moment) {
+    return shots().at(2 * (step - 1) + (moment ? 1 : 0));
+}
+
+// Block `name` as drawn in `s` (an empty rectangle, and a failure, when it is not there).
+Rect blockIn(const Shot& s, const std::string& name) {
+    for (const auto& b : s.layout.at("blocks"))
+        if (b.at("name") == name) return rectOf(b.at("rect"));
+    ADD_FAILURE() << s.name() << ": no block '" << name << "' in the layout";
+    return {};
+}
+
+// Where the moment's view draws a rectangle that the setup's view drew at `r`: the view may move
+// and scale between the two (the answer's caption is taller than the question's), so both are
+// read against the world's rectangle, which each view draws.
+Rect inMomentView(const Rect& r, const Shot& setup, const Shot& moment) {
+    const Rect from = rectOf(setup.layout.at("world")), to = rectOf(moment.layout.at("world"));
+    const double kx = to.w / from.w, ky = to.h / from.h;
+    return {to.x + (r.x - from.x) * kx, to.y + (r.y - from.y) * ky, r.w * kx, r.h * ky};
+}
+
+// The gap from the right side of `left` to the left side of `right` at the moment, in pixels.
+double gapAtTheMoment(std::size_t step, const std::string& left, const std::string& right) {
+    const Shot& m = shotOf(step, true);
+    const Rect a = blockIn(m, left), b = blockIn(m, right);
+    return b.x - (a.x + a.w);
+}
+
+// How far right block `name` moved from the setup to the moment, in the moment's pixels.
+double movedRight(std::size_t step, const std::string& name) {
+    const Shot &setup = shotOf(step, false), &moment = shotOf(step, true);
+    return blockIn(moment, name).x - inMomentView(blockIn(setup, name), setup, moment).x;
+}
+
+// How far block `name` sank from the setup to the moment (its top), in the moment's pixels.
+double sank(std::size_t step, const std::string& name) {
+    const Shot &setup = shotOf(step, false), &moment = shotOf(step, true);
+    return blockIn(moment, name).y - inMomentView(blockIn(setup, name), setup, moment).y;
+}
+
+// A block that moves in a straight line down onto the top of `ground`: how far right of where
+// it touched (its setup rectangle moved along its velocity in the scene until its bottom meets
+// the ground's top) its left side is at the moment.
+double rightOfWhereItTouched(std::size_t step, const std::string& mover,
+                             const std::string& ground) {
+    const Shot &setup = shotOf(step, false), &moment = shotOf(step, true);
+    const Rect start = inMomentView(blockIn(setup, mover), setup, moment);
+    const Rect under = blockIn(moment, ground);
+    Vec2 v;
+    for (const BlockDef& b : lecture3().steps.at(step - 1).scene->blocks)
+        if (b.name == mover) v = b.velocity;
+    if (v.y >= 0.0) {
+        ADD_FAILURE() << "step " << step << ": '" << mover << "' does not move down";
+        return 0.0;
+    }
+    const double drop = under.y - (start.y + start.h); // px down to the ground's top
+    const double touchedX = start.x + drop * v.x / -v.y;
+    return blockIn(moment, mover).x - touchedX;
+}
+
+// The effect a step asks the class to see (issue 24: its question and answer, or step 22's
+// caption), in words, and how it is measured: in the pixels of the step's moment at 1920x1080,
+// from the blocks' rectangles in the layout JSON, between blocks at the moment or a block at
+// the moment against itself at the setup (read in the moment's view). An answer that is a
+// velocity alone (steps 3, 9, 10, 12 to 15) is shown by its arrow and its printed value instead.
+struct Effect {
+    std::size_t step;
+    const char* what;
+    std::function<double()> pixels;
+};
+
+const std::vector<Effect>& effects() {
+    static const std::vector<Effect> table = {
+        {2, "how far past the wall the bullet is (it tunnelled)",
+         [] { return gapAtTheMoment(2, "wall", "bullet"); }},
+        {4,
+         "the point of impact (x = 8.75 m) to the mover at the moment (x = 10 m, where moving "
+         "back along y would have put it)",
+         [] { return rightOfWhereItTouched(4, "mover", "floor step"); }},
+        {5, "the gap between the mover and the left face it bounced off",
+         [] { return gapAtTheMoment(5, "mover", "other"); }},
+        {7, "how much further the small ship went than the big one (4 m and 1 m)",
+         [] { return movedRight(7, "small ship, 1 kg") - movedRight(7, "big ship, 4 kg"); }},
+        {18, "how far the top of the stack sank from where it started",
+         [] { return sank(18, "top"); }},
+        {19, "the order asymmetry, |gap(A, B) - gap(B, C)|",
+         [] { return std::abs(gapAtTheMoment(19, "A", "B") - gapAtTheMoment(19, "B", "C")); }},
+        {20, "how far short of D A is reset (no overlap)",
+         [] { return gapAtTheMoment(20, "A", "D"); }},
+        {22, "where the mover touched the step to where it was put (the crooked result)",
+         [] { return rightOfWhereItTouched(22, "mover", "floor step"); }},
+        {23, "the gap the top pair opens (they part: no collision)",
+         [] { return gapAtTheMoment(23, "m1", "m2"); }},
+        {25, "how far the crate slid (3.67 m)", [] { return movedRight(25, "crate"); }},
+    };
+    return table;
 }
 
 TEST(LessonSweep, RendersEveryStepAtItsSetupAndItsMoment) {
@@ -368,6 +469,17 @@ TEST(LessonSweep, TheAnswerKeepsAtLeast85PercentOfTheWorld) {
         EXPECT_GE(moment.w * moment.h, kWorldKept * setup.w * setup.h)
             << "step " << all[i].step << ": the world " << printed(setup) << " at the setup, "
             << printed(moment) << " at the moment";
+    }
+}
+
+TEST(LessonSweep, EveryEffectAStepAsksAboutIsAtLeast12Px) {
+    for (const Effect& e : effects()) {
+        const double px = e.pixels();
+        char figure[32];
+        std::snprintf(figure, sizeof figure, "%.1f px", px);
+        EXPECT_GE(px, kEffectPx) << "step " << e.step << ": " << e.what << " is " << figure
+                                 << " at 1920x1080, less than " << kEffectPx << " px";
+        std::printf("step %zu: %s: %s\n", e.step, e.what, figure);
     }
 }
 
