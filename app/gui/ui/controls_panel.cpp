@@ -400,9 +400,10 @@ void drawControlsPanel(App& app) {
     const WorldSettings before = app.sim.world().settings;
     ImGui::PushItemWidth(width * 0.52f);
     scenePicker(app);
-    // The panel's own height is shared so that it does not scroll: under the lesson, Play, Step
-    // and Reset and a few rows of the sections that scroll; the step list gets 3 rows at least,
-    // the scene's description what is left, a third of the panel at most.
+    // The panel's own height is shared so that it need not scroll: under the lesson, Play, Step
+    // and Reset and 4 rows of the sections that scroll; the scene's description leaves room for
+    // 3 rows of the step list (a third of the panel at most, 2 lines at least), and the list
+    // shows the rows that fit (the current step at least).
     const float row = ImGui::GetFrameHeightWithSpacing();
     constexpr int kLeastSectionRows = 4, kLeastStepRows = 3;
     const float under = ImGui::GetStyle().ItemSpacing.y + 1.0f + (2 + kLeastSectionRows) * row;
