@@ -65,20 +65,25 @@ void WholeRows::end() {
         cmds.insert(cmds.begin() + cmdStart_ + 1, rest);
     }
     const float top = window->InnerClipRect.Min.y, bottom = window->InnerClipRect.Max.y;
-    // Every triangle drawn, as the span of heights it covers; a tall one (a background) is no row.
+    // Every triangle drawn, as the span of heights it covers; a tall one (a background) is no row,
+    // nor the keyboard's focus ring (its colour is no control's): it reaches into the gaps between
+    // rows and would join the focused row to the next, hiding it with a row cut under it.
+    const ImU32 ring = ImGui::GetColorU32(ImGuiCol_NavHighlight) & ~IM_COL32_A_MASK;
     std::vector<Span> spans;
     for (int c = cmdStart_; c < cmds.Size; ++c) {
         const ImDrawCmd& cmd = cmds[c];
         if (cmd.UserCallback || cmd.IdxOffset < start) continue;
         for (unsigned k = 0; k + 3 <= cmd.ElemCount; k += 3) {
             float y0 = 1e30f, y1 = -1e30f;
+            bool focusRing = false;
             for (unsigned v = 0; v < 3; ++v) {
                 const ImDrawIdx i = list_->IdxBuffer[static_cast<int>(cmd.IdxOffset + k + v)];
-                const float y = list_->VtxBuffer[static_cast<int>(cmd.VtxOffset + i)].pos.y;
-                y0 = std::min(y0, y);
-                y1 = std::max(y1, y);
+                const ImDrawVert& vert = list_->VtxBuffer[static_cast<int>(cmd.VtxOffset + i)];
+                y0 = std::min(y0, vert.pos.y);
+                y1 = std::max(y1, vert.pos.y);
+                focusRing = focusRing || (vert.col & ~IM_COL32_A_MASK) == ring;
             }
-            if (y1 - y0 < 0.5f * (bottom - top)) spans.push_back({y0, y1});
+            if (!focusRing && y1 - y0 < 0.5f * (bottom - top)) spans.push_back({y0, y1});
         }
     }
     std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) { return a.y0 < b.y0; });
