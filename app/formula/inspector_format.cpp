@@ -315,8 +315,21 @@ CollisionFormula collisionFormula(const CollisionRecord& r, const std::string& n
     for (;;) {
         writer.wanted.clear();
         CollisionFormula f = writer.lines(name1, name2);
-        if (writer.wanted.empty()) return f;
+        if (writer.wanted.empty()) {
+            f.m1Text = writer.text(kM1);
+            f.m2Text = writer.text(kM2);
+            f.v1AfterText = writer.text(kV1After);
+            f.v2AfterText = writer.text(kV2After);
+            return f;
+        }
         for (Quantity q : writer.wanted)
             writer.digits[q] = std::min(writer.digits[q] + 1, kMostExtraDigits);
     }
+}
+
+std::string productAsPrinted(const std::string& a, const std::string& b) {
+    const auto magnitude = [](const std::string& x) {
+        return !x.empty() && x[0] == '-' ? x.substr(1) : x;
+    };
+    return exactProduct(magnitude(a), magnitude(b));
 }

@@ -30,7 +30,16 @@ struct CollisionFormula {
     // "... |dvt| = mu·|dvn| = 0.5·2.3 = 1.15 m/s (kinetic: still sliding)". The product is that
     // of the digits shown (exact), so the equation holds as printed.
     std::string friction;
+    // The masses and the velocities after as its lines print them ("1000000", "0.9999999175"):
+    // what another text about the same quantity (a momentum arrow's value) writes them as.
+    std::string m1Text, m2Text, v1AfterText, v2AfterText;
 };
+
+// The product of two numbers as printed ("1000000" and "0.9999999175"), exact in decimal
+// ("999999.9175"), of their magnitudes (signs dropped): the value a momentum m·v takes from the
+// digits a formula shows for m and v, so that it never prints other digits for the same
+// quantity; "" when either is not a plain decimal (an exponent, inf) or the digits are too many.
+std::string productAsPrinted(const std::string& a, const std::string& b);
 
 // The formula for `record`: each quantity (m1, m2, v1, v2, C, u, v1', v2') is written with the
 // same digits in every line, as many as the chains that read it need to hold as printed; `name1`

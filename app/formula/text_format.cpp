@@ -78,10 +78,13 @@ bool isMassText(const std::string& text) {
     return end && *end == '\0';
 }
 
-// Where the mass part of `name` starts ("m1 = 1 kg": at " = "; "A (2 kg)": at " ("), or npos.
+// Where the mass part of `name` starts ("m1 = 1 kg": at " = "; "A (2 kg)": at " ("; "big ship,
+// 4 kg": at ","), or npos.
 std::size_t massPart(const std::string& name) {
     const std::size_t eq = name.rfind('=');
     if (eq != std::string::npos && eq > 0 && isMassText(name.substr(eq + 1))) return eq;
+    const std::size_t comma = name.rfind(',');
+    if (comma != std::string::npos && comma > 0 && isMassText(name.substr(comma + 1))) return comma;
     const std::size_t open = name.rfind('(');
     if (open != std::string::npos && open > 0 && !name.empty() && name.back() == ')' &&
         isMassText(name.substr(open + 1, name.size() - open - 2))) {
@@ -106,6 +109,7 @@ std::string nameWithMass(const std::string& name, double mass) {
     if (at == std::string::npos) return name;
     const std::string base = trimmed(name.substr(0, at));
     const std::string m = std::isfinite(mass) ? formatNumber(mass) + " kg" : "infinite mass";
+    if (name[at] == ',') return base + ", " + m;
     return name[at] == '=' ? base + " = " + m : base + " (" + m + ")";
 }
 

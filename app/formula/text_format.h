@@ -34,7 +34,8 @@ std::string formatQuantity(double value, const char* unit);
 // A block's name without a mass written into it: "m1 = 1 kg" -> "m1", "heavy (5 kg)" -> "heavy";
 // other names unchanged.
 std::string baseBlockName(const std::string& name);
-// True when the scene's name for a block states its mass ("m1 = 1 kg", "A (2 kg)").
+// True when the scene's name for a block states its mass ("m1 = 1 kg", "A (2 kg)", "big ship,
+// 4 kg").
 bool nameStatesMass(const std::string& name);
 // The name to show for a block of `mass` (kg; infinite for static and kinematic blocks): a name
 // that states a mass states this one ("m1 = 3 kg"); others are shown as they are.

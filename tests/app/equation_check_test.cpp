@@ -159,6 +159,30 @@ TEST(EquationCheck, AGiantsVelocityGetsTheDigitsItsProductNeeds) {
     }
 }
 
+// The momentum arrow beside the inspector (lecture3 step 17) writes the giant's p = m2·v2' from
+// the inspector's own digits: the same quantity, the same digits, and the product holds as
+// printed. formatNumber alone wrote the arrow's 999999.917 against the inspector's
+// 1000000·0.9999999175 = 999999.9175.
+TEST(EquationCheck, AMomentumArrowWritesTheInspectorsDigits) {
+    CollisionRecord r; // the pi scene's last collision: the giant leaves at 0.9999999175 m/s
+    r.other = 1;
+    r.m1 = 1.0, r.m2 = 1e6, r.v1 = 1.5937, r.v2 = 0.99999873006, r.C = 1.0;
+    r.u = (r.m1 * r.v1 + r.m2 * r.v2) / (r.m1 + r.m2);
+    r.v1After = r.u - (r.v1 - r.u), r.v2After = r.u - (r.v2 - r.u);
+    const CollisionFormula f = collisionFormula(r, "small", "giant");
+    EXPECT_EQ(f.m2Text, "1000000");
+    EXPECT_NE(f.v2After.find(" = " + f.v2AfterText), std::string::npos) << f.v2After;
+    const std::string p2 = productAsPrinted(f.m2Text, f.v2AfterText);
+    ASSERT_FALSE(p2.empty());
+    EXPECT_NE(p2, formatNumber(r.m2 * r.v2After)); // three decimals would not be the product
+    const std::string arrow = f.m2Text + "·" + f.v2AfterText + " = " + p2;
+    EXPECT_TRUE(equationsHold(arrow)) << arrow; // exact: only the digits printed count
+    // and true of the momentum itself, to half a unit of its last digit (4 decimals here)
+    EXPECT_NEAR(std::stod(p2), r.m2 * r.v2After, 0.5e-4) << p2;
+    EXPECT_EQ(productAsPrinted("-2", "1.5"), "3"); // magnitudes: an arrow's length
+    EXPECT_EQ(productAsPrinted("1e+15", "2"), ""); // no plain decimal, no product
+}
+
 TEST(EquationCheck, InfiniteMassesPrintNoInfiniteMomentum) {
     CollisionRecord r; // a platform (kinematic) reverses on a wall
     r.other = kWallRight;

@@ -196,6 +196,72 @@ TEST(LessonSweep, NoSceneTextCoversABlockItDoesNotBelongTo) {
     }
 }
 
+// The status badge (method, t, collisions, PAUSED) is drawn over the scene's top left: a label
+// or an axis number under it was hidden (steps 3, 8 and 23 before the badge was placed first).
+TEST(LessonSweep, NoSceneTextIsUnderTheStatusBadge) {
+    for (const Shot& s : shots()) {
+        for (const auto& badge : s.texts) {
+            if (!isPart(badge, "status")) continue;
+            for (const auto& t : s.texts) {
+                if (isPart(t, "scene") && overlap(rectOf(t.at("rect")), rectOf(badge.at("rect"))))
+                    ADD_FAILURE() << s.name() << ": " << said(t) << " under the badge's "
+                                  << said(badge);
+            }
+        }
+    }
+}
+
+// An overlay's marks (the point of impact's boxes old, new, POI and moved back: the layout's
+// "marks") are the picture's point: no scene text covers one, the marks' own labels included
+// (steps 4 and 20 wrote "moved back" over its own box). A text wholly inside a block is that
+// block's and stays where it is.
+TEST(LessonSweep, NoSceneTextCoversAnOverlaysMark) {
+    int marks = 0;
+    for (const Shot& s : shots()) {
+        const auto& blocks = s.layout.at("blocks");
+        for (const auto& m : s.layout.at("marks")) {
+            ++marks;
+            const Rect mark = rectOf(m.at("rect"));
+            for (const auto& t : s.texts) {
+                if (!isPart(t, "scene")) continue;
+                const Rect r = rectOf(t.at("rect"));
+                if (std::any_of(blocks.begin(), blocks.end(),
+                                [&r](const auto& b) { return inside(r, rectOf(b.at("rect"))); }))
+                    continue;
+                if (overlap(r, mark))
+                    ADD_FAILURE() << s.name() << ": " << said(t) << " over the mark '"
+                                  << m.at("name").get<std::string>() << "' at " << printed(mark);
+            }
+        }
+    }
+    EXPECT_GE(marks, 4 * 4) << "steps 4, 5, 20 and 22 show the point of impact at their moment";
+}
+
+// Step 17's giant: its momentum arrow's value and the inspector's v2' are one quantity, p = m2·v2',
+// and print the same digits: the arrow's number is 1000000 times the inspector's v2' as printed
+// (999999.9175 for 0.9999999175; formatNumber alone wrote 999999.917).
+TEST(LessonSweep, TheGiantsMomentumArrowReadsAsTheInspectorsVelocity) {
+    const Shot& s = shots().at(2 * (17 - 1) + 1);
+    ASSERT_TRUE(s.moment && s.step == 17);
+    std::string v2After, arrow;
+    for (const auto& t : s.texts) {
+        const std::string text = t.at("text");
+        if (isPart(t, "Collision inspector") && text.rfind("v2' = ", 0) == 0)
+            v2After = oneLine(text).substr(oneLine(text).rfind(" = ") + 3);
+        const std::string unit = " kg·m/s";
+        if (isPart(t, "scene") && text.size() > unit.size() &&
+            text.compare(text.size() - unit.size(), unit.size(), unit) == 0)
+            arrow = text.substr(0, text.size() - unit.size());
+    }
+    ASSERT_FALSE(v2After.empty()) << "no v2' in the inspector";
+    ASSERT_FALSE(arrow.empty()) << "no momentum value at the giant's arrow";
+    const std::size_t point = v2After.find('.');
+    const std::size_t decimals = point == std::string::npos ? 0 : v2After.size() - point - 1;
+    // 1000000·v2' has six decimals fewer than v2': the arrow prints them all (none dropped).
+    EXPECT_NEAR(std::stod(arrow), 1e6 * std::stod(v2After), 1e-7) << arrow << " vs " << v2After;
+    EXPECT_GE(decimals, 7u) << v2After;
+}
+
 TEST(LessonSweep, TheBlocksAStepNamesAreAtLeast40Px) {
     for (const Shot& s : shots()) {
         const std::set<std::string> named = namedBlocks(lecture3().steps.at(s.step - 1));

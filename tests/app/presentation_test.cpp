@@ -205,12 +205,13 @@ TEST(DockLayout, LayoutJsonIsTheSpecsDocument) {
     EXPECT_EQ(json, "{\"scene\": [350, 0, 600, 500], \"world\": [386, 70, 528, 316.8], "
                     "\"windows\": [{\"name\": \"Plots\", \"rect\": [954, 0, 326, 300]}, "
                     "{\"name\": \"a \\\"b\\\"\\u000a\", \"rect\": [0, 0, 1, 1]}], "
-                    "\"blocks\": [], \"plots\": []}\n");
+                    "\"blocks\": [], \"plots\": [], \"marks\": []}\n");
     EXPECT_EQ(layoutJson({0, 0, 1280, 720}, {36, 36, 10, 10}, {}, {{"m1", {100, 200, 50, 50}}},
-                         {{"velocity", {900, 10, 300, 150}}}),
+                         {{"velocity", {900, 10, 300, 150}}}, {{"POI", {400, 300, 60, 60}}}),
               "{\"scene\": [0, 0, 1280, 720], \"world\": [36, 36, 10, 10], \"windows\": [], "
               "\"blocks\": [{\"name\": \"m1\", \"rect\": [100, 200, 50, 50]}], "
-              "\"plots\": [{\"name\": \"velocity\", \"rect\": [900, 10, 300, 150]}]}\n");
+              "\"plots\": [{\"name\": \"velocity\", \"rect\": [900, 10, 300, 150]}], "
+              "\"marks\": [{\"name\": \"POI\", \"rect\": [400, 300, 60, 60]}]}\n");
 }
 
 TEST(TextFormat, RoundingNoiseReadsAsZero) {
@@ -247,6 +248,12 @@ TEST(TextFormat, NamesCarryTheCurrentMass) {
     EXPECT_EQ(baseBlockName("x = 3"), "x = 3"); // not a mass
     EXPECT_TRUE(nameStatesMass("m2 = 2 kg"));
     EXPECT_FALSE(nameStatesMass("giant"));
+    // lecture3's step 7: "big ship, 4 kg" drew a second line "4 kg" under its name.
+    EXPECT_TRUE(nameStatesMass("big ship, 4 kg"));
+    EXPECT_EQ(baseBlockName("big ship, 4 kg"), "big ship");
+    EXPECT_EQ(nameWithMass("big ship, 4 kg", 8.0), "big ship, 8 kg");
+    EXPECT_EQ(nameWithMass("big ship, 4 kg", 4.0), "big ship, 4 kg");
+    EXPECT_FALSE(nameStatesMass("red, blue")); // a comma alone states no mass
     EXPECT_EQ(nameWithMass("m1 = 1 kg", 3.0), "m1 = 3 kg");
     EXPECT_EQ(nameWithMass("heavy (5 kg)", 0.5), "heavy (0.5 kg)");
     EXPECT_EQ(nameWithMass("m1 = 1 kg", INFINITY), "m1 = infinite mass");

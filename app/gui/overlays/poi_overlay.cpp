@@ -66,23 +66,48 @@ void drawPoiOverlay(App& app) {
     box(app, dl, p.newPosition, p.size, Mark::PoiNew, w, true);
     box(app, dl, p.crooked, p.size, Mark::PoiMovedBack, w, false);
     box(app, dl, p.ghost, p.size, Mark::PoiContact, w * 1.3f, false);
-    // Each label on its own side of its box: old above, new right, POI left, moved back below.
+    // The four boxes are taken on screen: no label (theirs, the arrows' values drawn before, the
+    // overlays' after) goes over one (a label over its own box hid the box: steps 4 and 20 of
+    // lecture3). Each label beside its own box, on the first free side of its order (old above,
+    // new right, POI left, moved back right or below), else where placeSceneLabel finds room.
+    struct Marked {
+        Vec2 centre;
+        const char* text;
+        Mark mark;
+        int sides[4]; // 0 above, 1 right, 2 left, 3 below
+    };
+    const bool movedBack = length(p.crooked - p.ghost) > 1e-9;
+    const Marked marks[4] = {{p.oldPosition, "old", Mark::PoiOld, {0, 2, 1, 3}},
+                             {p.ghost, "POI", Mark::PoiContact, {2, 0, 3, 1}},
+                             {p.crooked, "moved back", Mark::PoiMovedBack, {1, 3, 0, 2}},
+                             {p.newPosition, "new", Mark::PoiNew, {1, 3, 2, 0}}};
+    for (const Marked& m : marks) {
+        if (m.mark == Mark::PoiMovedBack && !movedBack) continue;
+        const ImVec2 a = toScreen(app, m.centre - p.size * 0.5),
+                     b = toScreen(app, m.centre + p.size * 0.5);
+        const ScreenRect r{std::min(a.x, b.x), std::min(a.y, b.y), std::abs(b.x - a.x),
+                           std::abs(b.y - a.y)};
+        app.ui.takenOnScreen.blocks.push_back(r);
+        app.view.shownMarks.push_back({m.text, r});
+    }
     const float hw = static_cast<float>(app.view.camera.metresToPixels(p.size.x * 0.5));
     const float hh = static_cast<float>(app.view.camera.metresToPixels(p.size.y * 0.5));
-    auto place = [&](Vec2 c, const char* text, Mark mark, int side) {
-        const ImVec2 sc = toScreen(app, c);
-        const ImVec2 ts = ImGui::CalcTextSize(text);
-        const float g = 4.0f * s;
-        const ImVec2 at = side == 0   ? ImVec2(sc.x - ts.x * 0.5f, sc.y - hh - ts.y - g)
-                          : side == 1 ? ImVec2(sc.x + hw + g, sc.y - ts.y * 0.5f)
-                          : side == 2 ? ImVec2(sc.x - hw - g - ts.x, sc.y - ts.y * 0.5f)
-                                      : ImVec2(sc.x - ts.x * 0.5f, sc.y + hh + g);
-        label(dl, placeSceneLabel(app, at, ts), mark, text);
-    };
-    place(p.oldPosition, "old", Mark::PoiOld, 0);
-    place(p.newPosition, "new", Mark::PoiNew, 1);
-    place(p.ghost, "POI", Mark::PoiContact, 2);
-    if (length(p.crooked - p.ghost) > 1e-9) place(p.crooked, "moved back", Mark::PoiMovedBack, 3);
+    for (const Marked& m : marks) {
+        if (m.mark == Mark::PoiMovedBack && !movedBack) continue;
+        const ImVec2 sc = toScreen(app, m.centre);
+        const ImVec2 ts = ImGui::CalcTextSize(m.text);
+        // Above and below 4 px (x UI scale) off the box; beside it, past the half line that
+        // keeps a label apart from what it is not (placeSceneLabelAtOneOf, freeSpot).
+        const float g = 4.0f * s, beside = ImGui::GetFontSize() * 0.5f + g;
+        std::vector<ImVec2> tries;
+        for (const int side : m.sides) {
+            tries.push_back(side == 0   ? ImVec2(sc.x - ts.x * 0.5f, sc.y - hh - ts.y - g)
+                            : side == 1 ? ImVec2(sc.x + hw + beside, sc.y - ts.y * 0.5f)
+                            : side == 2 ? ImVec2(sc.x - hw - beside - ts.x, sc.y - ts.y * 0.5f)
+                                        : ImVec2(sc.x - ts.x * 0.5f, sc.y + hh + g));
+        }
+        label(dl, placeSceneLabelAtOneOf(app, tries, ts), m.mark, m.text);
+    }
 
     // The caption: the numbers of t = a/b.
     const char axis = p.axis == 0 ? 'x' : 'y';

@@ -219,6 +219,7 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     followThrustForNavigation(app);
     app.view.shownWindows.clear();
     app.view.shownPlots.clear();
+    app.view.shownMarks.clear();
     forgetTextRoles();
     const bool typing = io.WantTextInput || (navigating() && !arrowsPush(app));
     const Vec2 held = arrowsPush(app) && !typing ? heldThrustDirection([&io](int key) {

@@ -46,5 +46,6 @@ void handleSceneMouse(App& app);
 void drawSceneDecorations(App& app);
 // Its status badge in the scene's top left corner (status_badge.cpp): the method, the time and the
 // collisions (in present mode the scene's caption), PAUSED or SLOW MOTION, the frame of reference
-// when it is not the world's, and how to start.
-void drawStatusBadge(const App& app, ImDrawList* dl);
+// when it is not the world's, and how to start. Returns the rectangle its plates cover (empty
+// when nothing is drawn): the scene's labels and axis numbers are placed around it.
+ScreenRect drawStatusBadge(const App& app, ImDrawList* dl);

@@ -40,9 +40,15 @@ void drawLessonCaption(App& app) {
     ImGui::SetWindowFontScale(1.25f);
     ImGui::TextUnformatted(heading.c_str());
     ImGui::SetWindowFontScale(1.0f);
-    ImGui::SameLine();
     const std::string status = lessonBarStatus(
         app.view.presentMode, app.sim.world().settings.method, app.sim.world().time);
+    // Beside the heading where it fits, else on a line of its own: never cut at the bar's edge
+    // (a long title left "PageDown next, PageUp back, R res" at 1920x1080).
+    const float headingRight = ImGui::GetItemRectMax().x;
+    const float statusWidth = ImGui::CalcTextSize(("   " + status).c_str()).x;
+    if (headingRight + ImGui::GetStyle().ItemSpacing.x + statusWidth <=
+        ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x)
+        ImGui::SameLine();
     if (app.view.presentMode)
         ImGui::Text("   %s", status.c_str());
     else

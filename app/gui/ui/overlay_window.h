@@ -31,6 +31,10 @@ ImVec2 toScreen(const App& app, Vec2 p);
 // nothing taken on screen this frame (the blocks, their labels, the axis numbers, the arrows'
 // values: app.ui.takenOnScreen); the spot is then taken too (scene_view.cpp).
 ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size);
+// The first of `tries` (top-left corners, in order of preference: a mark's label beside each of
+// its sides) where the label lies in the view and overlaps nothing taken on screen; where none
+// is free, placeSceneLabel from the first. The spot is then taken.
+ImVec2 placeSceneLabelAtOneOf(App& app, const std::vector<ImVec2>& tries, ImVec2 size);
 // The font of the scene's labels: the UI's label font, slide-sized in a lesson and in present
 // mode (uiSlideLabelFont). SceneLabelFont pushes it while it lives (overlays drawn over the
 // scene).

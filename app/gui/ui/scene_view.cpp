@@ -6,6 +6,7 @@
 #include "app_frame.h"
 #include "overlay_window.h"
 
+#include "inspector_format.h"
 #include "placement.h"
 #include "scene_geometry.h"
 #include "text_format.h"
@@ -207,10 +208,16 @@ void drawAxisNumbers(const App& app, ImDrawList* dl, Taken& placed) {
         return x >= vp.x && y >= vp.y && x + size.x <= vp.x + vp.width &&
                y + size.y <= vp.y + vp.height;
     };
+    // Not under the status badge (taken before them): a number it would hide is left out.
+    const std::vector<ScreenRect> under = placed.texts;
     const auto draw = [&](float x, float y, const char* text) {
         const ImVec2 size = ImGui::CalcTextSize(text);
+        const ScreenRect r{x, y, size.x, size.y};
+        if (std::any_of(under.begin(), under.end(),
+                        [&r](const ScreenRect& t) { return rectsOverlap(r, t); }))
+            return;
         dl->AddText(ImVec2(x, y), color, text);
-        placed.texts.push_back({x, y, size.x, size.y});
+        placed.texts.push_back(r);
     };
     char text[32];
     float unitX = NAN; // after the last number drawn on the x axis
@@ -309,19 +316,50 @@ void drawValueAtTip(const App& app, ImDrawList* dl, Taken& placed, Vec2 base, Ve
     shadowText(dl, ImVec2(x, y), color, text.c_str(), packed(theme().textShadow));
 }
 
+// The momentum of block `i` as the collision inspector's numbers give it, "" when they do not:
+// the inspector is shown, the collision it shows is the block's and left it with the velocity
+// it has now (along that axis, none across), seen in the world's frame. Then m·v' with m and v'
+// as the inspector prints them (productAsPrinted), so that the arrow and the inspector never
+// write different digits for one quantity (the giant of high_mass_ratio: 1000000·0.9999999175 =
+// 999999.9175, where formatNumber alone wrote 999999.917).
+std::string momentumAsInspected(const App& app, std::size_t i) {
+    const auto& recent = app.sim.telemetry.recent;
+    if (!app.view.show.inspector || recent.empty() || app.view.frame != ViewFrame::World) return "";
+    const int count = static_cast<int>(recent.size());
+    const int picked = app.ui.inspectorPicked < count ? app.ui.inspectorPicked : 0;
+    const CollisionRecord& r = recent[static_cast<std::size_t>(count - 1 - picked)];
+    const int index = static_cast<int>(i);
+    if (index != r.block && index != r.other) return "";
+    const Block& b = app.sim.world().blocks[i];
+    const double along = r.axis == 0 ? b.velocity.x : b.velocity.y;
+    const double across = r.axis == 0 ? b.velocity.y : b.velocity.x;
+    const double after = index == r.block ? r.v1After : r.v2After;
+    if (along != after || across != 0.0) return "";
+    const auto name = [&app](int k) {
+        return k < 0 ? std::string(wallName(k)) : app.sim.blockDisplayName(k);
+    };
+    const CollisionFormula f = collisionFormula(r, name(r.block), name(r.other));
+    return index == r.block ? productAsPrinted(f.m1Text, f.v1AfterText)
+                            : productAsPrinted(f.m2Text, f.v2AfterText);
+}
+
 // The momentum arrows too long to draw to scale carry their value at their head (p = m·w in
-// the view's frame), in the momentum arrows' colour.
+// the view's frame), in the momentum arrows' colour; with the inspector's digits where it shows
+// the block's last collision (momentumAsInspected).
 void drawMomentumValues(const App& app, ImDrawList* dl, Taken& placed) {
     if (!app.view.show.vectors) return;
     const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
     int written = 0;
-    for (const Block& b : app.sim.world().blocks) {
+    for (std::size_t i = 0; i < app.sim.world().blocks.size(); ++i) {
+        const Block& b = app.sim.world().blocks[i];
         if (!b.isDynamic() || written >= kMaxArrowValueLabels) continue;
         const Vec2 p = (b.velocity - u) * b.mass;
         const ArrowOnScreen a = arrowOnScreen(app.view.camera, b.position, p * kMomentumArrowScale,
                                               &app.sim.world().bounds);
         if (a.toScale) continue;
-        drawValueAtTip(app, dl, placed, b.position, a.tip, formatNumber(length(p)) + " kg·m/s",
+        const std::string inspected = momentumAsInspected(app, i);
+        drawValueAtTip(app, dl, placed, b.position, a.tip,
+                       (inspected.empty() ? formatNumber(length(p)) : inspected) + " kg·m/s",
                        packed(theme().momentum.withAlpha(1.0f)));
         ++written;
     }
@@ -499,12 +537,29 @@ ImVec2 placeSceneLabel(App& app, ImVec2 at, ImVec2 size) {
     return free;
 }
 
+ImVec2 placeSceneLabelAtOneOf(App& app, const std::vector<ImVec2>& tries, ImVec2 size) {
+    if (tries.empty()) return ImVec2(0.0f, 0.0f);
+    const float gap = ImGui::GetFontSize() * 0.5f; // as freeSpot keeps labels apart
+    for (const ImVec2& at : tries) {
+        if (coveredAt(app.ui.takenOnScreen, app.view.camera.viewport(), at.x, at.y, size, gap) ==
+            0.0) {
+            app.ui.takenOnScreen.texts.push_back({at.x, at.y, size.x, size.y});
+            return at;
+        }
+    }
+    return placeSceneLabel(app, tries.front(), size);
+}
+
 void drawSceneDecorations(App& app) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     ImGui::PushFont(sceneLabelFont(app)); // the scene's labels have a size of their own
     Taken& placed = app.ui.takenOnScreen; // blocks and texts on screen
     placed.blocks.clear();
     placed.texts.clear();
+    // The badge first: the axis numbers and the labels go around it (a label or a number under
+    // it was hidden: lecture3 steps 3, 8 and 23).
+    const ScreenRect badge = drawStatusBadge(app, dl);
+    if (badge.width > 0.0) placed.texts.push_back(badge);
     drawAxisNumbers(app, dl, placed);
     drawReferenceLine(app, dl, placed);
     drawLabels(app, dl, placed);
@@ -517,7 +572,6 @@ void drawSceneDecorations(App& app) {
     forces.thrust = app.sim.pushForce();
     drawForceValues(app, forces, dl, placed);
     drawLargeCount(app, dl);
-    drawStatusBadge(app, dl);
     drawFlingReadout(app, dl);
     ImGui::PopFont();
     drawHoverTooltip(app);

@@ -9,17 +9,30 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
 namespace {
 
-// A text on a rounded plate; returns its width with the padding.
-float plate(ImDrawList* dl, ImVec2 at, const char* text, ImU32 bg, ImU32 fg, float pad) {
+// A text on a rounded plate; returns its width with the padding. `extent` grows to hold it.
+float plate(ImDrawList* dl, ImVec2 at, const char* text, ImU32 bg, ImU32 fg, float pad,
+            ScreenRect& extent) {
     const ImVec2 size = ImGui::CalcTextSize(text);
-    dl->AddRectFilled(ImVec2(at.x - pad * 0.5f, at.y - pad * 0.25f),
-                      ImVec2(at.x + size.x + pad * 0.5f, at.y + size.y + pad * 0.25f), bg, 4.0f);
+    const ImVec2 lo(at.x - pad * 0.5f, at.y - pad * 0.25f),
+        hi(at.x + size.x + pad * 0.5f, at.y + size.y + pad * 0.25f);
+    dl->AddRectFilled(lo, hi, bg, 4.0f);
     dl->AddText(at, fg, text);
+    if (extent.width <= 0.0) {
+        extent = {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+    } else {
+        const double x1 = std::max<double>(extent.x + extent.width, hi.x);
+        const double y1 = std::max<double>(extent.y + extent.height, hi.y);
+        extent.x = std::min<double>(extent.x, lo.x);
+        extent.y = std::min<double>(extent.y, lo.y);
+        extent.width = x1 - extent.x;
+        extent.height = y1 - extent.y;
+    }
     return size.x + pad * 1.5f;
 }
 
@@ -39,7 +52,8 @@ std::string fitted(const std::string& text, float width) {
 
 } // namespace
 
-void drawStatusBadge(const App& app, ImDrawList* dl) {
+ScreenRect drawStatusBadge(const App& app, ImDrawList* dl) {
+    ScreenRect extent{0.0, 0.0, 0.0, 0.0};
     // The screen-text contract's parts (screen_text.h): the badge is the status, present mode's
     // one line the caption.
     const TextRole role(dl, "status");
@@ -66,7 +80,7 @@ void drawStatusBadge(const App& app, ImDrawList* dl) {
                 what += ": " + firstSentence(app.sim.scene.description);
             caption = fitted(what, room - tailWidth) + tail;
         }
-        at.x += plate(dl, at, caption.c_str(), plateBg, plateFg, pad);
+        at.x += plate(dl, at, caption.c_str(), plateBg, plateFg, pad, extent);
         ImGui::PopFont();
     } else {
         // One count of collisions (the lesson's and sandbox-cli's); the rest rule's resting
@@ -84,14 +98,14 @@ void drawStatusBadge(const App& app, ImDrawList* dl) {
                 text + n, sizeof text - static_cast<std::size_t>(n), "   %llu rest-rule merge%s",
                 static_cast<unsigned long long>(totals.contacts), totals.contacts == 1 ? "" : "s");
         }
-        at.x += plate(dl, at, text, plateBg, plateFg, pad);
+        at.x += plate(dl, at, text, plateBg, plateFg, pad, extent);
     }
     const char* state = app.sim.paused       ? "PAUSED"
                         : app.sim.slowMotion ? "SLOW MOTION  5 fps"
                                              : nullptr;
     if (state && !app.view.presentMode) {
         const ImU32 bg = app.sim.paused ? IM_COL32(220, 150, 40, 235) : IM_COL32(60, 130, 220, 235);
-        at.x += plate(dl, at, state, bg, IM_COL32(15, 15, 20, 255), pad);
+        at.x += plate(dl, at, state, bg, IM_COL32(15, 15, 20, 255), pad, extent);
     }
     // The frame of reference, when it is not the world's (the walls drift: that is why).
     if (app.view.frame == ViewFrame::CentreOfMass && !app.view.presentMode) {
@@ -102,12 +116,14 @@ void drawStatusBadge(const App& app, ImDrawList* dl) {
                  ? formatQuantity(u.x, "m/s")
                  : "(" + formatNumber(u.x) + ", " + formatNumber(u.y) + ") m/s");
         at.x += plate(dl, at, text.c_str(), IM_COL32(255, 235, 90, 235), IM_COL32(15, 15, 20, 255),
-                      pad);
+                      pad, extent);
     }
     // Paused at t = 0: how to start (the first time the app runs, with the first keys).
     const std::string hint =
         startHint(app.sim.paused, app.sim.world().time, app.ui.firstLaunch, app.ui.touchUi);
     if (!hint.empty()) {
-        plate(dl, at, hint.c_str(), IM_COL32(60, 150, 90, 235), IM_COL32(10, 16, 12, 255), pad);
+        plate(dl, at, hint.c_str(), IM_COL32(60, 150, 90, 235), IM_COL32(10, 16, 12, 255), pad,
+              extent);
     }
+    return extent;
 }

@@ -255,8 +255,9 @@ std::string namedRects(const std::vector<DockedWindow>& list) {
 std::string layoutJson(const ScreenRect& scene, const ScreenRect& world,
                        const std::vector<DockedWindow>& windows,
                        const std::vector<DockedWindow>& blocks,
-                       const std::vector<DockedWindow>& plots) {
+                       const std::vector<DockedWindow>& plots,
+                       const std::vector<DockedWindow>& marks) {
     return "{\"scene\": " + jsonRect(scene) + ", \"world\": " + jsonRect(world) +
            ", \"windows\": " + namedRects(windows) + ", \"blocks\": " + namedRects(blocks) +
-           ", \"plots\": " + namedRects(plots) + "}\n";
+           ", \"plots\": " + namedRects(plots) + ", \"marks\": " + namedRects(marks) + "}\n";
 }

@@ -113,11 +113,13 @@ ScreenRect worldRectOnScreen(const Camera& camera, const Bounds& bounds);
 
 // The --layout-json document (docs/cli.md): rectangles as [x, y, w, h] in image pixels,
 //   {"scene": [...], "world": [...], "windows": [{"name": "Plots", "rect": [...]}, ...],
-//    "blocks": [{"name": "m1", "rect": [...]}, ...], "plots": [{"name": "velocity", ...}, ...]}
+//    "blocks": [{"name": "m1", "rect": [...]}, ...], "plots": [{"name": "velocity", ...}, ...],
+//    "marks": [{"name": "moved back", "rect": [...]}, ...]}
 std::string layoutJson(const ScreenRect& scene, const ScreenRect& world,
                        const std::vector<DockedWindow>& windows,
                        const std::vector<DockedWindow>& blocks = {},
-                       const std::vector<DockedWindow>& plots = {});
+                       const std::vector<DockedWindow>& plots = {},
+                       const std::vector<DockedWindow>& marks = {});
 // JSON pieces of the documents the app writes: a string (quoted, escaped) and [x, y, w, h].
 std::string jsonString(const std::string& s);
 std::string jsonRect(const ScreenRect& r);

@@ -47,6 +47,9 @@ struct View {
     std::vector<DockedWindow> shownWindows;
     // Every plot drawn this frame (its widget's whole rectangle, by name: "velocity"), likewise.
     std::vector<DockedWindow> shownPlots;
+    // Every mark an overlay drew over the scene this frame (the point of impact's boxes: "old",
+    // "new", "POI", "moved back"), its rectangle on screen, by the label it carries.
+    std::vector<DockedWindow> shownMarks;
     double captionHeight = 0.0; // px a lesson's caption bar takes at the top of the scene
     bool sheetOpen = false;     // narrow screens: the panel's sheet is open (sheetLayout)
 };
