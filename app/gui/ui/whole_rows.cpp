@@ -89,7 +89,7 @@ void WholeRows::end() {
     std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) { return a.y0 < b.y0; });
     // Rows: spans merged where they overlap or touch (a rounded frame is drawn as a fan of
     // triangles that meet at a corner's height).
-    constexpr float kSlack = 0.5f; // px
+    constexpr float kSlack = 0.5f, kEdge = 1.0f; // px
     std::vector<Span> rows;
     for (const Span& s : spans) {
         if (!rows.empty() && s.y0 <= rows.back().y1 + kSlack)
@@ -99,9 +99,10 @@ void WholeRows::end() {
     }
     float keptTop = top, keptBottom = bottom;
     for (const Span& r : rows) {
-        if (r.y0 < top - kSlack && r.y1 > top + kSlack) keptTop = std::max(keptTop, r.y1);
-        if (r.y0 < bottom - kSlack && r.y1 > bottom + kSlack)
-            keptBottom = std::min(keptBottom, r.y0);
+        // Cut: more than a pixel over the edge (ImGui's keyboard navigation takes a row a pixel
+        // over as in view and does not scroll to it; a pixel of a frame's edge cuts no text).
+        if (r.y0 < top - kEdge && r.y1 > top) keptTop = std::max(keptTop, r.y1);
+        if (r.y0 < bottom && r.y1 > bottom + kEdge) keptBottom = std::min(keptBottom, r.y0);
     }
     if (keptTop >= keptBottom) { // a row taller than the region: leave it cut
         gHidden.erase(id_);
