@@ -28,9 +28,9 @@
 //            docks every shown window, the scene takes the rest
 //   draw     void draw(App&), defined in app/gui/overlays/ (the ImGui layer; this header only
 //            names it); drawnByTheSceneRenderer when the scene renderer draws it (trails, arrows)
-// The columns other than `name` are expanded by the app only (app/gui/app/overlays.h), where
-// DockWish and the draw functions exist. The draw function of a row with a title draws the
-// window's contents (the window is open); one without a title draws over the scene.
+// The columns other than `name` are expanded by the app only (app/gui/view/overlays.h), where
+// DockWish, kMinPlotShare and the draw functions exist. The draw function of a row with a title
+// draws the window's contents (the window is open); one without a title draws over the scene.
 // clang-format off
 #define SANDBOX_OVERLAYS(X)                                                                        \
     X(trails, "trails", "trails", "Trajectories fading with age; C clears them",                   \
@@ -72,10 +72,11 @@
       false, "Velocity space", (DockWish{DockSide::Bottom, 300.0, 1.5, 185.0}),                    \
       drawVelocitySpaceOverlay)                                                                    \
     /* The chart needs height: the right column, under the inspector, which takes most of the */   \
-    /* rest; its rows (240 px at UI scale 1) and the chart: 13% of the height (140 at 1080p). */   \
+    /* rest; its rows (240 px at UI scale 1) and the chart: every plot's least share of the    */ \
+    /* height (kMinPlotShare, dock_layout.h: 13%, 140 px at 1080p).                             */ \
     X(cost, "cost", "cost", "Cost per step under each method and the speed-vs-accuracy chart",     \
-      false, "Speed versus accuracy", (DockWish{DockSide::Right, 240.0, 0.25, 400.0, 0.13}),       \
-      drawCostOverlay)
+      false, "Speed versus accuracy",                                                              \
+      (DockWish{DockSide::Right, 240.0, 0.25, 400.0, kMinPlotShare}), drawCostOverlay)
 // clang-format on
 
 // The overlay names, in the table's order (what --show and lesson files may name).

@@ -1,5 +1,6 @@
 #include "plot_widget.h"
 
+#include "dock_layout.h" // kMinPlotShare
 #include "palette.h"
 #include "ui_style.h"
 
@@ -29,7 +30,6 @@ ImU32 cursorColor() {
     return uiThemed(IM_COL32(120, 220, 255, 230));
 }
 constexpr std::size_t kMaxMarkers = 150;
-constexpr float kMinPlotShare = 0.13f;
 // A band (PlotSeries::band): this many line widths wide, in its colour at about half opacity.
 constexpr float kBandWidth = 4.0f;
 ImU32 bandColor(ImU32 color) {
@@ -128,7 +128,8 @@ ScreenRect drawPlot(const char* id, const PlotOptions& o, const std::vector<Plot
     size.x = std::max(size.x, font * 8.0f);
     // Evidence big enough to see from the back row: at least 13% of the display's height (140 px
     // at 1080p; the window scrolls if it has less room).
-    size.y = std::max({size.y, font * 5.0f, kMinPlotShare * ImGui::GetIO().DisplaySize.y});
+    size.y = std::max(
+        {size.y, font * 5.0f, static_cast<float>(kMinPlotShare) * ImGui::GetIO().DisplaySize.y});
     ImGui::InvisibleButton(id, size);
     const bool hovered = ImGui::IsItemHovered();
     const ImVec2 outerMin = ImGui::GetItemRectMin();

@@ -84,6 +84,10 @@ constexpr double kMinColumnShare = 0.30;
 constexpr double kMaxStripShare = 0.38; // of the height
 constexpr double kMinStripShare = 0.15;
 constexpr double kMaxPanelDockShare = 0.7; // of the height: the panel keeps the rest
+// Every plot is at least this share of the display's height (140 px at 1080p: evidence seen from
+// the back row), whatever the UI scale: the plot widget keeps to it (plot_widget.cpp) and the
+// cost window's row in the overlay table asks for it as its heightShare.
+constexpr double kMinPlotShare = 0.13;
 // Pixels (at UI scale 1) between neighbouring windows.
 constexpr double kDockGap = 4.0;
 
