@@ -2,6 +2,7 @@
 // from the draw data, with its rectangle, size, window and clipping. ImGui's own default font (no
 // file needed); no GL: only the draw data is looked at.
 #include "screen_text.h"
+#include "whole_rows.h"
 
 #include <gtest/gtest.h>
 #include <imgui.h>
@@ -99,6 +100,51 @@ TEST(TextJson, NamesTheWindowAndSaysWhatItsEdgeCuts) {
     const ScreenText* status = find(texts, "PAUSED");
     ASSERT_TRUE(status);
     EXPECT_EQ(status->window, "status");
+}
+
+// A text wholly outside its window's clip rectangle has no pixel drawn: it is not listed (ImGui
+// still emits the glyphs of a line that starts exactly at the window's bottom edge).
+TEST(TextJson, ListsNoTextWithNoPixelDrawn) {
+    const auto texts = textsOf([] {
+        ImGui::SetNextWindowPos(ImVec2(100, 100));
+        ImGui::SetNextWindowSize(ImVec2(300, 200));
+        ImGui::Begin("Controls");
+        ImGui::TextUnformatted("shown");
+        ImGui::GetWindowDrawList()->AddText(ImVec2(120, 400), IM_COL32_WHITE, "under the edge");
+        ImGui::End();
+    });
+    EXPECT_TRUE(find(texts, "shown"));
+    EXPECT_FALSE(find(texts, "under the edge"));
+}
+
+// A scroll region showing whole rows (WholeRows): the row its bottom edge cuts is hidden, not
+// cut; so is the row its top edge cuts when it is scrolled. The rows here are 13 px lines 4 px
+// apart (ImGui's default font and spacing): 17 px a row, in a child 60 px high.
+TEST(WholeRows, HidesTheRowsItsEdgesWouldCut) {
+    for (const float scroll : {0.0f, 8.0f}) {
+        const auto texts = textsOf([scroll] {
+            ImGui::SetNextWindowPos(ImVec2(0, 0));
+            ImGui::SetNextWindowSize(ImVec2(300, 300));
+            ImGui::Begin("Controls");
+            ImGui::BeginChild("##rows", ImVec2(0.0f, 60.0f));
+            WholeRows whole;
+            ImGui::SetCursorPosY(-scroll); // the content `scroll` px up, as if scrolled
+            for (int i = 0; i < 10; ++i) ImGui::Text("row %d", i);
+            whole.end();
+            ImGui::EndChild();
+            ImGui::End();
+        });
+        int listed = 0;
+        for (const ScreenText& t : texts) {
+            EXPECT_FALSE(t.clipped) << t.text << " at scroll " << scroll;
+            listed += t.text.rfind("row ", 0) == 0 ? 1 : 0;
+        }
+        // Scroll 0: rows 0 to 2 whole (0 to 47 px), row 3 (51 to 64) cut: hidden. Scroll 8: row
+        // 0 (-8 to 5) cut at the top, rows 1 to 3 whole (9 to 56), row 4 (60 to 73) hidden.
+        EXPECT_EQ(listed, 3) << "at scroll " << scroll;
+        EXPECT_TRUE(find(texts, scroll == 0.0f ? "row 0" : "row 1"));
+        EXPECT_FALSE(find(texts, scroll == 0.0f ? "row 3" : "row 0"));
+    }
 }
 
 TEST(TextJson, IsTheDocumentedJson) {

@@ -34,6 +34,8 @@ struct UiState {
     int inspectorPicked = 0;          // the inspector's collision: 0 the newest, 1 the one before
     std::string inspectorLoggedTitle; // --verbose prints the formula once per collision shown
     int panelFollowedSelection = -2;  // the selection the "Selected block" header last followed
+    int stepListFollowed = -1;        // the lesson step the panel's step list last scrolled to
+    int stepListRows = 0;             // and how many rows it showed then
     TypedWarning typedWarning;        // a refused typed value, shown under its field
     // The docked window whose title bar the left button went down on (one at a time): dragging
     // on from there pulls it out of the layout.

@@ -9,6 +9,7 @@
 #include "text_format.h"
 #include "typed_field.h"
 #include "ui_style.h"
+#include "whole_rows.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -67,8 +68,22 @@ void scenePicker(App& app) {
             "method, the overlays, the frame, the lesson's step. The address bar follows too.");
 }
 
-// The open lesson's steps: click one to go there.
-void lessonSection(App& app) {
+// The height the lesson section takes above its step list: its header, the lesson's name, the
+// Prev / Next / Restart row and the "close lesson" button under the list.
+float lessonFrameHeight(const App& app) {
+    const LessonSession& s = app.lesson;
+    if (!s.active()) return 0.0f;
+    const float row = ImGui::GetFrameHeightWithSpacing();
+    const float name = ImGui::CalcTextSize(s.lesson->name.c_str(), nullptr, false,
+                                           ImGui::GetContentRegionAvail().x)
+                           .y +
+                       ImGui::GetStyle().ItemSpacing.y;
+    return 3.0f * row + name;
+}
+
+// The open lesson's steps: click one to go there. At most `maxRows` rows of the list show, whole:
+// its scroll follows the current step (with the steps around it) and stops on whole rows.
+void lessonSection(App& app, int maxRows) {
     LessonSession& s = app.lesson;
     if (!s.active()) return;
     if (!ImGui::CollapsingHeader("Lesson", ImGuiTreeNodeFlags_DefaultOpen)) return;
@@ -85,16 +100,36 @@ void lessonSection(App& app) {
         applyAction(app, Action::Reset);
     tooltip("R: the step again from its setup, keeping the method and settings you changed; "
             "Shift+R: the step as written");
-    const float rows = std::min<float>(8.0f, static_cast<float>(s.lesson->steps.size()));
+    const int steps = static_cast<int>(s.lesson->steps.size());
+    const int rows = std::max(1, std::min({maxRows, 8, steps}));
     uiBeginRows();
-    ImGui::BeginChild("##steps", ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing()));
-    for (std::size_t i = 0; i < s.lesson->steps.size(); ++i) {
-        const std::string label =
-            std::to_string(i + 1) + ". " + s.lesson->steps[i].title + "##step" + std::to_string(i);
-        const bool current = i == s.current;
-        if (ImGui::Selectable(label.c_str(), current)) enterStep(app, i);
-        if (current && ImGui::IsWindowAppearing()) ImGui::SetScrollHereY();
+    const float rowHeight = std::round(ImGui::GetTextLineHeightWithSpacing());
+    ImGui::BeginChild("##steps", ImVec2(0.0f, static_cast<float>(rows) * rowHeight));
+    WholeRows whole;
+    const int current = static_cast<int>(s.current);
+    if (current != app.ui.stepListFollowed || rows != app.ui.stepListRows ||
+        ImGui::IsWindowAppearing()) {
+        // The current step in the middle (one more row after it than before when even).
+        const int first = std::clamp(current - (rows - 1) / 2, 0, std::max(0, steps - rows));
+        ImGui::SetScrollY(static_cast<float>(first) * rowHeight);
+        app.ui.stepListFollowed = current;
+        app.ui.stepListRows = rows;
+    } else if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+        // The wheel or the keyboard scrolled it: on to the nearest whole row.
+        const float y = ImGui::GetScrollY();
+        const float snapped = std::round(y / rowHeight) * rowHeight;
+        if (std::fabs(snapped - y) >= 0.5f) ImGui::SetScrollY(snapped);
     }
+    for (int i = 0; i < steps; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        const std::string label =
+            std::to_string(i + 1) + ". " + s.lesson->steps[k].title + "##step" + std::to_string(i);
+        if (ImGui::Selectable(label.c_str(), i == current)) enterStep(app, k);
+    }
+    // The list's height a whole number of rows (the last row's spacing too), so that scrolled to
+    // its end it shows whole rows.
+    ImGui::Dummy(ImVec2(0.0f, 0.0f));
+    whole.end();
     ImGui::EndChild();
     uiEndRows();
     if (uiSmallButton("close lesson")) closeLesson(app);
@@ -361,15 +396,27 @@ void drawControlsPanel(App& app) {
             return;
         }
     }
+    WholeRows whole;
     const WorldSettings before = app.sim.world().settings;
     ImGui::PushItemWidth(width * 0.52f);
     scenePicker(app);
+    // The panel's own height is shared so that it need not scroll: under the lesson, Play, Step
+    // and Reset and 4 rows of the sections that scroll; the scene's description leaves room for
+    // 3 rows of the step list (a third of the panel at most, 2 lines at least), and the list
+    // shows the rows that fit (the current step at least).
+    const float row = ImGui::GetFrameHeightWithSpacing();
+    constexpr int kLeastSectionRows = 4, kLeastStepRows = 3;
+    const float under = ImGui::GetStyle().ItemSpacing.y + 1.0f + (2 + kLeastSectionRows) * row;
+    const float lessonFrame = lessonFrameHeight(app);
+    const float stepRow = ImGui::GetTextLineHeightWithSpacing();
     if (!app.sim.scene.description.empty()) {
-        // A third of the panel's height, three lines at least (the panel itself must not scroll
-        // at 720p).
-        const int lines = std::max(
-            3, static_cast<int>(ImGui::GetContentRegionAvail().y / 3.0f / ImGui::GetFontSize()));
-        sceneDescription(app.sim.scene.description, lines);
+        const float avail = ImGui::GetContentRegionAvail().y;
+        const float room = app.lesson.active()
+                               ? avail - under - lessonFrame - kLeastStepRows * stepRow
+                               : avail - under;
+        const float height = std::min(avail / 3.0f, room);
+        sceneDescription(app.sim.scene.description,
+                         std::max(2, static_cast<int>(height / ImGui::GetFontSize())));
     }
     if (!app.ui.messages.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, uiErrorColor());
@@ -381,15 +428,16 @@ void drawControlsPanel(App& app) {
         textWrappedAtSpaces(app.ui.messages.note);
         ImGui::PopStyleColor();
     }
-    lessonSection(app);
+    lessonSection(
+        app, static_cast<int>((ImGui::GetContentRegionAvail().y - under - lessonFrame) / stepRow));
     ImGui::Separator();
     runSection(app);
     // Play, Step and Reset stay in view: the sections below scroll on their own.
     // Flattened: the arrow keys go on from Reset into the sections (no Space to enter them).
-    // A whole number of rows high, so that the row at its bottom is not cut in half.
-    const float row = ImGui::GetFrameHeightWithSpacing();
+    // It shows whole rows only (WholeRows): a row its bottom edge would cut is hidden.
     const float rows = std::max(1.0f, std::floor(ImGui::GetContentRegionAvail().y / row));
     ImGui::BeginChild("##sections", ImVec2(0.0f, rows * row), false, ImGuiWindowFlags_NavFlattened);
+    WholeRows wholeSections;
     ImGui::PushItemWidth(width * 0.52f);
     simulationSection(app);
     physicsSection(app);
@@ -400,8 +448,10 @@ void drawControlsPanel(App& app) {
     fileSection(app);
     compareSection(app);
     ImGui::PopItemWidth();
+    wholeSections.end();
     ImGui::EndChild();
     ImGui::PopItemWidth();
+    whole.end();
     ImGui::End();
     if (settingsDiffer(before, app.sim.world().settings)) app.sim.noteEdit(false);
 }

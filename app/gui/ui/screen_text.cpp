@@ -80,6 +80,7 @@ struct DrawnGlyph {
     GlyphRef ref;
     double penX = 0.0, lineTop = 0.0, scale = 1.0;
     bool clipped = false;
+    bool hidden = false; // wholly outside its clip rectangle: no pixel of it is drawn
 };
 
 // The quad at `idx` (6 indices: two triangles of a rectangle) as a glyph, if it is one.
@@ -111,6 +112,8 @@ bool readGlyph(const ImDrawVert* vtx, const ImDrawIdx* idx, const ImVec4& clip,
     out.clipped = fu0 > 1e-6 || fu1 < 1.0 - 1e-6 || fv0 > 1e-6 || fv1 < 1.0 - 1e-6 ||
                   x0 < clip.x - kSlack || y0 < clip.y - kSlack || x0 + width > clip.z + kSlack ||
                   y0 + height > clip.w + kSlack;
+    out.hidden = q.pos.x <= clip.x + kSlack || p.pos.x >= clip.z - kSlack ||
+                 q.pos.y <= clip.y + kSlack || p.pos.y >= clip.w - kSlack;
     return true;
 }
 
@@ -133,6 +136,7 @@ struct Run {
     const ImFont* font = nullptr;
     double scale = 1.0, startX = 0.0, lineTop = 0.0, penEnd = 0.0, right = 0.0;
     int lines = 0;
+    int shown = 0; // glyphs with pixels drawn
     std::string role;
 };
 
@@ -169,6 +173,10 @@ bool continues(Run& run, const DrawnGlyph& g, const std::string& role) {
 
 void finish(Run& run, std::vector<ScreenText>& texts) {
     if (!run.font) return;
+    if (run.shown == 0) { // wholly outside its window (scrolled away, a hidden row): not drawn
+        run = Run{};
+        return;
+    }
     ScreenText& t = run.out;
     const double lineHeight = run.font->FontSize * run.scale;
     t.rect = {run.startX, run.lineTop - (run.lines - 1) * lineHeight, run.right - run.startX,
@@ -217,6 +225,7 @@ void readList(const ImDrawList& list, const ImTextureID fontTexture, const Glyph
             }
             appendUtf8(run.out.text, g.ref.glyph->Codepoint);
             run.out.clipped = run.out.clipped || g.clipped;
+            run.shown += g.hidden ? 0 : 1;
             run.penEnd = g.penX + g.ref.glyph->AdvanceX * g.scale;
             run.right = std::fmax(run.right, run.penEnd);
             k += 6;
