@@ -336,31 +336,43 @@ void drawValueAtTip(const App& app, ImDrawList* dl, Taken& placed, Vec2 base, Ve
     shadowText(dl, ImVec2(x, y), color, text.c_str(), packed(theme().textShadow));
 }
 
-// The momentum of block `i` as the collision inspector's numbers give it, "" when they do not:
-// the inspector is shown, the collision it shows is the block's and left it with the velocity
-// it has now (along that axis, none across), seen in the world's frame. Then m·v' with m and v'
-// as the inspector prints them (productAsPrinted), so that the arrow and the inspector never
-// write different digits for one quantity (the giant of high_mass_ratio: 1000000·0.9999999175 =
-// 999999.9175, where formatNumber alone wrote 999999.917).
-std::string momentumAsInspected(const App& app, std::size_t i) {
+// Block `i`'s velocity and mass as the collision inspector prints them, when they are what the
+// block has now: the inspector is shown, the collision it shows is the block's and left it with
+// the velocity it has now (along that axis, none across), seen in the world's frame. Otherwise
+// empty texts.
+struct InspectedBlock {
+    std::string massText, velocityText; // as printed, the velocity with its sign
+};
+
+InspectedBlock inspectedBlock(const App& app, std::size_t i) {
     const auto& recent = app.sim.telemetry.recent;
-    if (!app.view.show.inspector || recent.empty() || app.view.frame != ViewFrame::World) return "";
+    if (!app.view.show.inspector || recent.empty() || app.view.frame != ViewFrame::World) return {};
     const int count = static_cast<int>(recent.size());
     const int picked = app.ui.inspectorPicked < count ? app.ui.inspectorPicked : 0;
     const CollisionRecord& r = recent[static_cast<std::size_t>(count - 1 - picked)];
     const int index = static_cast<int>(i);
-    if (index != r.block && index != r.other) return "";
+    if (index != r.block && index != r.other) return {};
     const Block& b = app.sim.world().blocks[i];
     const double along = r.axis == 0 ? b.velocity.x : b.velocity.y;
     const double across = r.axis == 0 ? b.velocity.y : b.velocity.x;
     const double after = index == r.block ? r.v1After : r.v2After;
-    if (along != after || across != 0.0) return "";
+    if (along != after || across != 0.0) return {};
     const auto name = [&app](int k) {
         return k < 0 ? std::string(wallName(k)) : app.sim.blockDisplayName(k);
     };
     const CollisionFormula f = collisionFormula(r, name(r.block), name(r.other));
-    return index == r.block ? productAsPrinted(f.m1Text, f.v1AfterText)
-                            : productAsPrinted(f.m2Text, f.v2AfterText);
+    return index == r.block ? InspectedBlock{f.m1Text, f.v1AfterText}
+                            : InspectedBlock{f.m2Text, f.v2AfterText};
+}
+
+// The momentum of block `i` as the inspector's numbers give it (inspectedBlock), "" when they do
+// not: m·v' with m and v' as the inspector prints them (productAsPrinted), so that the arrow and
+// the inspector never write different digits for one quantity (the giant of high_mass_ratio:
+// 1000000·0.9999999175 = 999999.9175, where formatNumber alone wrote 999999.917).
+std::string momentumAsInspected(const App& app, std::size_t i) {
+    const InspectedBlock inspected = inspectedBlock(app, i);
+    if (inspected.velocityText.empty()) return "";
+    return productAsPrinted(inspected.massText, inspected.velocityText);
 }
 
 // True when block `i`'s momentum arrow carries its value (drawMomentumValues): too long to draw
@@ -381,21 +393,12 @@ bool momentumValueShown(const App& app, std::size_t i) {
 // the momentum is written from them (momentumAsInspected).
 std::string speedText(const App& app, std::size_t i, double speed) {
     if (!momentumValueShown(app, i)) return formatNumber(speed);
-    const std::string inspected = momentumAsInspected(app, i);
-    const Block& b = app.sim.world().blocks[i];
-    if (!inspected.empty()) {
-        const auto& recent = app.sim.telemetry.recent;
-        const int count = static_cast<int>(recent.size());
-        const int picked = app.ui.inspectorPicked < count ? app.ui.inspectorPicked : 0;
-        const CollisionRecord& r = recent[static_cast<std::size_t>(count - 1 - picked)];
-        const auto name = [&app](int k) {
-            return k < 0 ? std::string(wallName(k)) : app.sim.blockDisplayName(k);
-        };
-        const CollisionFormula f = collisionFormula(r, name(r.block), name(r.other));
-        std::string v = static_cast<int>(i) == r.block ? f.v1AfterText : f.v2AfterText;
-        if (!v.empty() && v[0] == '-') v.erase(0, 1);
-        return v;
+    const InspectedBlock inspected = inspectedBlock(app, i);
+    if (!productAsPrinted(inspected.massText, inspected.velocityText).empty()) {
+        const std::string& v = inspected.velocityText; // the momentum is written from it
+        return v[0] == '-' ? v.substr(1) : v;
     }
+    const Block& b = app.sim.world().blocks[i];
     const std::string momentum = formatNumber(b.mass * speed);
     int extra = 0;
     while (extra < kMostExtraDigits &&
