@@ -54,12 +54,14 @@ struct SubstepContext {
     // m/s^2 per block over this substep: the exact integrator's constant accelerations (the rest
     // rule zeroes them for supported blocks). Null for the Euler integrators: motion is linear.
     std::vector<Vec2>* acceleration = nullptr;
+    // The exact integrator: each block's forces' acceleration at the substep's start (what moves
+    // it when nothing holds it; null for the Euler integrators).
+    const std::vector<Vec2>* forces = nullptr;
     // Friction (friction.cpp): some μ > 0 (else no friction code runs: the results are those
-    // without it, bit for bit). With the exact integrator also each block's forces' acceleration
-    // at the substep's start and its slides (2 per block: x, y).
+    // without it, bit for bit). With the exact integrator also each block's slides (2 per block:
+    // x, y).
     bool friction = false;
     double maxFriction = 0.0; // the largest μ of the world and its blocks
-    const std::vector<Vec2>* forces = nullptr;
     std::vector<Slide>* slides = nullptr;
 
     // How blocks move within the substep and where the methods detect impacts: the methods call
@@ -170,6 +172,7 @@ class Resolver {
     void record(int a, int b, int axis, double m1, double v1, double m2, double v2, double u,
                 double C, double v1After, double v2After, ResolveRule rule);
     void setVelocity(int i, int axis, double v);
+    void bounce(int i, int axis, double v);
     void findNear(const Aabb& box);
     // Friction (friction.cpp).
     double frictionOf(int body) const;
@@ -179,6 +182,7 @@ class Resolver {
     double frictionImpulse(int a, int b, int tangent, double mu, double jn);
     void contactFriction(int a, int b, int axis, double dvn);
     void slideFriction(int i, int tangent);
+    void releaseSlides(int i, int axis);
     void touch(int i, const Aabb& box, int j, int axis);
     double freeClusterAcceleration(int axis, double u, double withoutFriction);
     void clusterFriction(int axis, bool anchoredBelow, bool anchoredAbove, int seedA,
