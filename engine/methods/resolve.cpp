@@ -404,7 +404,7 @@ Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) 
         }
         for (int j : queue_) setAcceleration(j, axis, a);
     }
-    if (ctx_.friction) {
+    if (ctx_.friction && !repeated_) {
         bool below = staticBelow, above = staticAbove;
         for (const Anchor& k : kinematics_) below |= k.below, above |= k.above;
         clusterFriction(axis, below, above, seedA, seedB >= 0 ? seedB : seedWall);

@@ -145,6 +145,15 @@ class Resolver {
 
     // The time (s since the substep start) at which contacts are being resolved.
     void setNow(double now) { now_ = now; }
+    // The contact about to be resolved, of two blocks, has met more often at this instant than
+    // the method resolves as it comes (perfect.cpp: the collapse and trap rules). A rest-rule
+    // merge of it then carries no friction: each merge's friction changes both blocks' velocities
+    // along the other axis by up to μ·Δv_n, which closes a neighbouring contact along that axis
+    // again, whose merge's friction closes this one again; with μ ≥ 1 that never shrinks, and the
+    // event cap ended the substep with the forces' g·h given and no time passed (energy in piles
+    // with μ = 2: docs/physics.md, "Energy in piles"). Against an infinite mass friction only
+    // slows the block toward it, which closes nothing again.
+    void setRepeated(bool repeated) { repeated_ = repeated; }
 
     // Blocks a and b touch along `axis` (0 = x, 1 = y); resolves if they approach.
     Resolution resolvePair(int a, int b, int axis, RestRule rest = RestRule::WhenSlow);
@@ -196,6 +205,7 @@ class Resolver {
     ResolveHooks* hooks_;
     double now_ = 0.0;
     bool forceRest_ = false; // the contact being resolved: RestRule::Always
+    bool repeated_ = false;  // setRepeated
     std::vector<int> changed_;
     // The friction of the contact being resolved, for its record.
     struct FrictionNote {
