@@ -34,6 +34,11 @@ class PollSession {
     std::optional<PollRound> close();
     bool revote();
     void clear(); // the lesson left the step: nothing asked
+    // A vote as if a phone had sent it (sandbox-offscreen's --poll-votes, tests): the same
+    // count, no network.
+    PollState::Vote castVote(const std::string& device, int choice) {
+        return state_.vote(device, choice);
+    }
     PollSnapshot snapshot() const { return state_.snapshot(); }
     std::vector<PollRound> results() const { return state_.results(); }
     // The question of a step, as open() would ask it (the projector shows its choices).

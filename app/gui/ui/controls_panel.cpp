@@ -447,6 +447,7 @@ void drawControlsPanel(App& app) {
     viewSection(app);
     fileSection(app);
     compareSection(app);
+    pollSection(app);
     ImGui::PopItemWidth();
     wholeSections.end();
     ImGui::EndChild();

@@ -60,14 +60,15 @@
         const l = document.createElement("span");
         l.className = "letter";
         l.textContent = letter(i);
-        l.setAttribute("aria-hidden", "true");
+        const stop = document.createElement("span"); // "A. Stops" to a screen reader
+        stop.className = "visually-hidden";
+        stop.textContent = ". ";
         const t = document.createElement("span");
         t.className = "text";
         t.textContent = text;
         const m = document.createElement("span");
         m.className = "mark";
-        button.append(l, t, m);
-        button.setAttribute("aria-label", letter(i) + ": " + text);
+        button.append(l, stop, t, m);
         button.addEventListener("click", () => vote(i));
         return button;
       }));
