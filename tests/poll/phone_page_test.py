@@ -56,7 +56,7 @@ def run(cli, lesson):
         check([c[0][0] for c in shown] == ["A", "B", "C"], "letters: %s" % shown)
         check("Moves back" in shown[1][0], "choice B: %s" % shown)
         check(page.evaluate("document.getElementById('question').textContent").startswith(
-            "Two equal blocks"), "the question")
+            "m1 = 1 kg at 6 m/s"), "the question")
         found = web.axe_violations(page)
         check(not found, "axe-core on the phone page:\n" + "\n".join(found))
         heights = page.evaluate("Array.from(document.querySelectorAll('.choice'))"

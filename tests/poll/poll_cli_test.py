@@ -114,7 +114,7 @@ def votes_check(server):
             rows = f.read().splitlines()
     check(rows[0] == "step,round,choice,text,count,voters,proved,question", rows[0])
     check(len(rows) == 1 + 3 * CHOICES, rows)
-    check(rows[2].startswith('2,1,B,"Moves back at 6 m/s",%d,270,yes,' % expected[1]), rows[2])
+    check(rows[2].startswith('2,1,B,"Moves back at 2 m/s",%d,270,yes,' % expected[1]), rows[2])
     check(rows[4].startswith('2,2,A,"Stops",0,0,no,'), rows[4])
     check(rows[7].startswith('2,3,A,"Stops",10,30,no,'), rows[7])
 

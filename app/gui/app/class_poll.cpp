@@ -57,8 +57,7 @@ bool startPoll(ClassPoll& poll, const LessonSession& lesson, const std::string& 
         poll.error = "Open a lesson first: the poll asks its steps' questions.";
         return false;
     }
-    std::optional<PollQuestions> questions =
-        lessonPollQuestions(lesson.lesson->path, &poll.error);
+    std::optional<PollQuestions> questions = lessonPollQuestions(lesson.lesson->path, &poll.error);
     if (!questions) return false;
     if (poll.addresses.empty()) listPollAddresses(poll);
     const std::string at = address.empty() ? poll.addresses[poll.address] : address;
@@ -95,8 +94,7 @@ void followLesson(ClassPoll& poll, const LessonSession& lesson, bool simPaused) 
         if (!poll.session->open(static_cast<int>(lesson.current) + 1, &poll.note)) {
             // "lesson.json: step 1 asks nothing": the window names no file.
             const std::string prefix = poll.lessonPath + ": ";
-            if (poll.note.compare(0, prefix.size(), prefix) == 0)
-                poll.note.erase(0, prefix.size());
+            if (poll.note.compare(0, prefix.size(), prefix) == 0) poll.note.erase(0, prefix.size());
         }
     }
     // Whatever plays the step closes its vote: P, the bar's Play, PageDown.
@@ -145,8 +143,7 @@ PollScreen pollScreen(const ClassPoll& poll, const LessonSession& lesson) {
     s.proved = snap.current.proved;
     for (const PollRound& r : snap.rounds) s.rounds.push_back(r.counts);
     // The counts stay hidden until the vote is closed and the class has seen the moment.
-    s.histogram = !snap.open && !s.rounds.empty() &&
-                  lesson.phase == LessonSession::Phase::Moment;
+    s.histogram = !snap.open && !s.rounds.empty() && lesson.phase == LessonSession::Phase::Moment;
     return s;
 }
 

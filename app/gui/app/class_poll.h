@@ -17,12 +17,12 @@ class PollSession;
 // What the projector's poll window shows, copied each frame.
 struct PollScreen {
     bool on = false;
-    bool asking = false; // the step's question is on the phones (open or closed)
-    bool open = false;   // votes are taken
+    bool asking = false;    // the step's question is on the phones (open or closed)
+    bool open = false;      // votes are taken
     bool histogram = false; // the counts show (the vote is closed and the step at its moment)
     std::string url;
-    int qrSize = 0;             // QR modules per side
-    std::vector<bool> qrDark;   // qrSize x qrSize, row by row
+    int qrSize = 0;           // QR modules per side
+    std::vector<bool> qrDark; // qrSize x qrSize, row by row
     int joined = 0, voted = 0;
     int step = 0;
     std::string question;
@@ -43,10 +43,10 @@ struct ClassPoll {
     std::size_t address = 0;              // the one picked
     std::string error;                    // the last start's failure
     std::size_t followedStep = static_cast<std::size_t>(-1); // the step the poll follows
-    bool asked = false; // its question was put to the phones (at its setup)
-    std::string lessonPath;                                   // the lesson it asks from
-    std::string note;                                         // why this step is not polled
-    int qrSize = 0;                                           // the URL's QR code
+    bool asked = false;     // its question was put to the phones (at its setup)
+    std::string lessonPath; // the lesson it asks from
+    std::string note;       // why this step is not polled
+    int qrSize = 0;         // the URL's QR code
     std::vector<bool> qrDark;
 
     bool on() const { return session != nullptr; }

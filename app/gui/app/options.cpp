@@ -172,7 +172,8 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         }
         o.atSetup = at == "setup";
         if (!pollVotes.empty()) {
-            if (o.pollAddress.empty()) throw CLI::ValidationError("--poll-votes", "needs --poll ADDR");
+            if (o.pollAddress.empty())
+                throw CLI::ValidationError("--poll-votes", "needs --poll ADDR");
             if (!parsePollVotes(pollVotes, o.pollVotes))
                 throw CLI::ValidationError("--poll-votes", "expected counts such as 3,17,4 or "
                                                            "3,17,4/1,22,1 (each 0 to 1000), got '" +

@@ -13,6 +13,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <string>
 
@@ -48,7 +49,10 @@ void drawHistogram(const PollScreen& s, float width) {
         std::string legend;
         for (std::size_t r = 0; r < rounds; ++r)
             legend += (r ? "   " : "") + std::string("vote ") + std::to_string(r + 1) + ": " +
-                      (r == 0 ? "upper" : r == 1 ? "lower" : "next") + " bar";
+                      (r == 0   ? "upper"
+                       : r == 1 ? "lower"
+                                : "next") +
+                      " bar";
         ImGui::PushStyleColor(ImGuiCol_Text, uiDimColor());
         ImGui::TextUnformatted(legend.c_str());
         ImGui::PopStyleColor();
@@ -67,6 +71,7 @@ void drawHistogram(const PollScreen& s, float width) {
     const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
     const ImU32 barColors[2] = {uiThemed(IM_COL32(120, 170, 255, 255)),
                                 uiThemed(IM_COL32(255, 190, 90, 255))};
+    const float left = ImGui::GetCursorPosX();
     for (std::size_t c = 0; c < s.choices.size(); ++c) {
         const bool proved = static_cast<int>(c) == s.proved;
         const ImVec2 top = ImGui::GetCursorScreenPos();
@@ -74,7 +79,10 @@ void drawHistogram(const PollScreen& s, float width) {
         ImGui::TextUnformatted(letter);
         for (std::size_t r = 0; r < rounds; ++r) {
             const int count = c < s.rounds[r].size() ? s.rounds[r][c] : 0;
-            ImGui::SameLine(letterWidth);
+            if (r == 0)
+                ImGui::SameLine(left + letterWidth);
+            else
+                ImGui::SetCursorPosX(left + letterWidth); // the next round's bar under it
             const ImVec2 at = ImGui::GetCursorScreenPos();
             const float share = totals[r] ? static_cast<float>(count) / totals[r] : 0.0f;
             const float barWidth = std::max(2.0f, share * barMax);
@@ -82,15 +90,21 @@ void drawHistogram(const PollScreen& s, float width) {
                                 ImVec2(at.x + barWidth, at.y + line * 0.88f), barColors[r % 2]);
             ImGui::Dummy(ImVec2(barWidth + line * 0.3f, line));
             ImGui::SameLine();
-            const std::string label = std::to_string(count) + " (" + percent(count, totals[r]) + ")";
+            const std::string label =
+                std::to_string(count) + " (" + percent(count, totals[r]) + ")";
             ImGui::TextUnformatted(label.c_str());
         }
         if (proved) {
-            ImGui::SameLine(letterWidth);
-            ImGui::NewLine();
-            ImGui::Indent(letterWidth);
-            ImGui::TextUnformatted("\xE2\x9C\x93 proved by the run");
-            ImGui::Unindent(letterWidth);
+            // A check mark drawn (the font may have no glyph for it), then the words.
+            ImGui::SetCursorPosX(left + letterWidth);
+            const ImVec2 at = ImGui::GetCursorScreenPos();
+            const ImVec2 tick[3] = {ImVec2(at.x + line * 0.1f, at.y + line * 0.55f),
+                                    ImVec2(at.x + line * 0.35f, at.y + line * 0.8f),
+                                    ImVec2(at.x + line * 0.85f, at.y + line * 0.2f)};
+            list->AddPolyline(tick, 3, text, 0, std::max(2.0f, line * 0.12f));
+            ImGui::Dummy(ImVec2(line, line));
+            ImGui::SameLine();
+            ImGui::TextUnformatted("proved by the run");
             const ImVec2 bottom = ImGui::GetItemRectMax();
             list->AddRect(ImVec2(top.x - line * 0.2f, top.y - line * 0.1f),
                           ImVec2(top.x + width, bottom.y + line * 0.1f), text, line * 0.15f, 0,
@@ -111,12 +125,13 @@ void drawPollWindow(App& app) {
     const ImGuiIO& io = ImGui::GetIO();
     const ScreenRect& scene = app.view.layout.scene;
     const float height = io.DisplaySize.y;
-    ImGui::PushFont(uiCaptionFont()); // the classroom's size, whatever the UI scale
-    const float line = ImGui::GetTextLineHeight();
+    ImFont* font = uiCaptionFont(); // the classroom's size, whatever the UI scale
+    const float line = font->FontSize;
     // QR modules of at least 3 px, about a third of the screen's height in all.
-    const float module = std::max(3.0f, std::floor(height * 0.3f / static_cast<float>(s.qrSize + 8)));
-    const float width = std::max(static_cast<float>(s.qrSize + 8) * module,
-                                 ImGui::CalcTextSize(s.url.c_str()).x) +
+    const float module =
+        std::max(3.0f, std::floor(height * 0.3f / static_cast<float>(s.qrSize + 8)));
+    const float urlWidth = font->CalcTextSizeA(line, FLT_MAX, 0.0f, s.url.c_str()).x;
+    const float width = std::max(static_cast<float>(s.qrSize + 8) * module, urlWidth) +
                         2.0f * ImGui::GetStyle().WindowPadding.x;
     const float histogramWidth = std::max(width, line * 16.0f);
     const float w = s.histogram ? histogramWidth : width;
@@ -132,10 +147,10 @@ void drawPollWindow(App& app) {
                                    ImGuiWindowFlags_NoFocusOnAppearing;
     if (!ImGui::Begin("Class poll", nullptr, flags)) {
         ImGui::End();
-        ImGui::PopFont();
         return;
     }
     recordShownWindow(app, "Class poll");
+    ImGui::PushFont(font);
     if (!s.asking) {
         ImGui::TextUnformatted("Join the poll:");
         drawQr(s, module);
