@@ -42,7 +42,7 @@ void numberSlider(App& app, const WorldKey& row, WorldSettings& s) {
     if (ImGui::SliderFloat(row.panel.label, &typed, row.panel.min, row.panel.max, row.panel.format,
                            row.panel.logarithmic ? ImGuiSliderFlags_Logarithmic : 0)) {
         double taken = shown;
-        if (acceptTyped(app, row.panel.label, typed, shown,
+        if (acceptTyped(app, row.panel.label, typed, row.panel.format, shown,
                         row.shown.asRate ? row.shown.rateRange : row.range, taken))
             value = row.shown.asRate ? 1.0 / taken : taken;
     }
@@ -60,7 +60,7 @@ void wholeSlider(App& app, const WorldKey& row, WorldSettings& s) {
     if (ImGui::SliderInt(row.panel.label, &typed, static_cast<int>(row.panel.min),
                          static_cast<int>(row.panel.max), row.panel.format)) {
         double k = s.*row.whole;
-        if (acceptTyped(app, row.panel.label, typed, k, row.range, k))
+        if (acceptTyped(app, row.panel.label, typed, row.panel.format, k, row.range, k))
             s.*row.whole = static_cast<int>(k);
     }
 }
@@ -72,7 +72,7 @@ void pairSlider(App& app, const WorldKey& row, WorldSettings& s) {
     if (ImGui::SliderFloat2(("##" + std::string(row.key)).c_str(), typed, row.panel.min,
                             row.panel.max, row.panel.format)) {
         // Ctrl+click types a value beyond the slider: any within the limits is taken.
-        acceptTyped2(app, row.panel.label, typed, value, row.range, value);
+        acceptTyped2(app, row.panel.label, typed, row.panel.format, value, row.range, value);
     }
     tooltip(row.shown.tooltip);
     ImGui::SameLine();
@@ -137,7 +137,7 @@ void blockForceField(App& app, Block& b) {
     float f[2] = {static_cast<float>(b.force.x), static_cast<float>(b.force.y)};
     Vec2 force = b.force;
     if (ImGui::DragFloat2(row.label, f, 0.05f, -1000.0f, 1000.0f, row.sliderFormat) &&
-        acceptTyped2(app, row.label, f, b.force, row.range, force) &&
+        acceptTyped2(app, row.label, f, row.sliderFormat, b.force, row.range, force) &&
         acceptAcceleration(app, row.label, force, b.mass)) {
         b.force = force;
         app.sim.noteEdit(true);
@@ -155,7 +155,7 @@ void simulationSection(App& app) {
     float scale = static_cast<float>(app.sim.timeScale);
     if (ImGui::SliderFloat("time scale", &scale, 0.05f, 4.0f, "%.2fx",
                            ImGuiSliderFlags_Logarithmic)) {
-        acceptTyped(app, "time scale", scale, app.sim.timeScale, limits::kTimeScale,
+        acceptTyped(app, "time scale", scale, "%.2fx", app.sim.timeScale, limits::kTimeScale,
                     app.sim.timeScale);
     }
     typedWarning(app, "time scale");
@@ -178,7 +178,7 @@ void physicsSection(App& app) {
     float thrust = static_cast<float>(app.sim.thrust.force);
     if (ImGui::SliderFloat("thrust force", &thrust, 0.1f, 1000.0f, "%.3g N",
                            ImGuiSliderFlags_Logarithmic)) {
-        acceptTyped(app, "thrust force", thrust, app.sim.thrust.force, limits::kThrust,
+        acceptTyped(app, "thrust force", thrust, "%.3g N", app.sim.thrust.force, limits::kThrust,
                     app.sim.thrust.force);
     }
     tooltip("F in N: the same force gives a heavy block a small acceleration a = F/m, a light one "
@@ -220,7 +220,8 @@ void selectedSection(App& app) {
         double newMass = b.mass;
         if (ImGui::SliderFloat(massRow.label, &mass, 0.01f, 1000.0f, massRow.sliderFormat,
                                ImGuiSliderFlags_Logarithmic) &&
-            acceptTyped(app, massRow.label, mass, b.mass, massRow.range, newMass) &&
+            acceptTyped(app, massRow.label, mass, massRow.sliderFormat, b.mass, massRow.range,
+                        newMass) &&
             acceptAcceleration(app, massRow.label, b.force, newMass)) {
             b.mass = newMass;
             app.sim.noteEdit(true);
@@ -234,7 +235,8 @@ void selectedSection(App& app) {
     float size[2] = {static_cast<float>(b.size.x), static_cast<float>(b.size.y)};
     if (ImGui::DragFloat2(sizeRow.label, size, 0.02f, 0.05f, 50.0f, sizeRow.sliderFormat)) {
         Vec2 wanted = b.size;
-        if (acceptTyped2(app, sizeRow.label, size, b.size, sizeRow.range, wanted) &&
+        if (acceptTyped2(app, sizeRow.label, size, sizeRow.sliderFormat, b.size, sizeRow.range,
+                         wanted) &&
             !app.sim.setBlockSize(i, wanted)) {
             app.ui.typedWarning.note(
                 sizeRow.label,
@@ -247,7 +249,8 @@ void selectedSection(App& app) {
         float v[2] = {static_cast<float>(b.velocity.x), static_cast<float>(b.velocity.y)};
         if (ImGui::DragFloat2(velocityRow.label, v, 0.05f, -1000.0f, 1000.0f,
                               velocityRow.sliderFormat) &&
-            acceptTyped2(app, velocityRow.label, v, b.velocity, velocityRow.range, b.velocity)) {
+            acceptTyped2(app, velocityRow.label, v, velocityRow.sliderFormat, b.velocity,
+                         velocityRow.range, b.velocity)) {
             app.sim.noteEdit(true);
         }
         typedWarning(app, velocityRow.label);
