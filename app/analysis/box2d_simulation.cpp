@@ -1,11 +1,11 @@
-// Box2D 2.4 as a peer on a scene: fixed rotation, the scene's friction, restitution C, the
-// scene's dt with 8 velocity and 3 position iterations; walls as four static boxes outside the
-// bounds.
+// Box2D 2.4 as a peer on a scene: fixed rotation, the scene's settings as the peers take them
+// (PeerUse, peers.h: gravity, friction, restitution C), the scene's dt with 8 velocity and 3
+// position iterations; walls as four static boxes outside the bounds.
 //
 // Friction: Box2D mixes a contact's friction as the geometric mean sqrt(f1·f2) of its two
-// fixtures' (b2MixFriction), the rule the engine uses (friction.cpp). So each fixture gets the
-// engine's mu for its face, a block's own "friction" or the world's, the walls the world's, and
-// every pair's mu is the engine's sqrt(mu1·mu2).
+// fixtures' (b2MixFriction), the engine's rule (mixedFriction, world.h). So each fixture gets the
+// engine's mu for its face (faceFriction: a block's own or the world's, the walls the world's),
+// and every pair's mu is the engine's.
 #include "peers.h"
 
 #include <box2d/box2d.h>
@@ -19,11 +19,11 @@ b2Vec2 toB2(Vec2 v) {
 class Box2dSimulation : public PeerSimulation {
   public:
     Box2dSimulation(const Scene& scene, double dt, int substeps)
-        : PeerSimulation(scene, dt, substeps), world_(toB2(scene.settings.gravity)) {
-        const double world = scene.settings.friction;
+        : PeerSimulation(scene, dt, substeps), world_(toB2(settings().gravity)) {
+        const double world = settings().friction;
         addWalls(world);
         for (const BlockDef& def : scene.blocks)
-            addBlock(def, scene.settings.bounciness, def.friction >= 0.0 ? def.friction : world);
+            addBlock(def, settings().bounciness, faceFriction(def.friction, world));
         refresh();
     }
 

@@ -1,11 +1,11 @@
 // Chipmunk 7 as a peer on a scene: blocks with infinite moment (no rotation), the scene's
-// friction, restitution C (Chipmunk multiplies the two shapes' elasticities, so each shape gets
-// sqrt(C)), the scene's dt with Chipmunk's default 10 iterations; walls as four static segments.
+// settings as the peers take them (PeerUse, peers.h: gravity, friction, restitution C, where
+// Chipmunk multiplies the two shapes' elasticities, so each shape gets sqrt(C)), the scene's dt
+// with Chipmunk's default 10 iterations; walls as four static segments.
 //
-// Friction: Chipmunk multiplies the two shapes' friction, u = u1·u2, where the engine takes the
-// geometric mean sqrt(mu1·mu2) (friction.cpp). So each shape gets the square root of the
-// engine's mu for its face (a block's own "friction" or the world's, the walls the world's):
-// sqrt(mu1)·sqrt(mu2) = sqrt(mu1·mu2), every pair's mu is the engine's.
+// Friction: Chipmunk multiplies the two shapes' friction, u = u1·u2. So each shape gets its face's
+// factor (frictionFactor, world.h) of the engine's mu for its face (faceFriction: a block's own or
+// the world's, the walls the world's), and every pair's mu is the engine's mixedFriction.
 #include "peers.h"
 
 #include <chipmunk/chipmunk.h>
@@ -41,16 +41,16 @@ class ChipmunkSimulation : public PeerSimulation {
   public:
     ChipmunkSimulation(const Scene& scene, double dt, int substeps)
         : PeerSimulation(scene, dt, substeps), space_(newSpaceQuietly()) {
-        cpSpaceSetGravity(space_, cpv(scene.settings.gravity.x, scene.settings.gravity.y));
-        const double elasticity = std::sqrt(scene.settings.bounciness);
-        const double world = scene.settings.friction;
+        cpSpaceSetGravity(space_, cpv(settings().gravity.x, settings().gravity.y));
+        const double elasticity = std::sqrt(settings().bounciness);
+        const double world = settings().friction;
         const Vec2 lo = bounds_.min, hi = bounds_.max;
         const Vec2 corners[] = {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
         for (int k = 0; k < 4; ++k) {
             const Vec2 a = corners[k], b = corners[(k + 1) % 4];
             cpBody* ground = cpSpaceGetStaticBody(space_);
             addShape(cpSegmentShapeNew(ground, cpv(a.x, a.y), cpv(b.x, b.y), 0.0), elasticity,
-                     std::sqrt(world));
+                     frictionFactor(world));
         }
         for (const BlockDef& def : scene.blocks) {
             cpBody* body = def.kind == BodyKind::Dynamic     ? cpBodyNew(def.mass, INFINITY)
@@ -61,7 +61,7 @@ class ChipmunkSimulation : public PeerSimulation {
             if (def.kind != BodyKind::Static)
                 cpBodySetVelocity(body, cpv(def.velocity.x, def.velocity.y));
             addShape(cpBoxShapeNew(body, def.size.x, def.size.y, 0.0), elasticity,
-                     std::sqrt(def.friction >= 0.0 ? def.friction : world));
+                     frictionFactor(faceFriction(def.friction, world)));
             bodies_.push_back(body);
         }
         refresh();

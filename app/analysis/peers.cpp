@@ -2,9 +2,52 @@
 #include "peers.h"
 
 #include "collision.h"
+#include "input_limits.h"
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
+
+namespace {
+
+// Every world key and what the peers make of it (PeerUse). A new key goes here too.
+struct PeerKey {
+    const char* key;
+    PeerUse use;
+};
+const PeerKey kPeerKeys[] = {
+    {"gravity", PeerUse::Set},
+    {"bounciness", PeerUse::Set},
+    {"friction", PeerUse::Set},
+    {"dt", PeerUse::Caller},
+    {"substeps", PeerUse::Caller},
+    {"method", PeerUse::OwnSolver},
+    {"resolve", PeerUse::OwnSolver},
+    {"integrator", PeerUse::OwnSolver},
+    {"mistakes", PeerUse::OwnSolver},
+    {"drag", PeerUse::Lacks},
+    {"rest_speed", PeerUse::OwnSolver},
+    {"event_cap", PeerUse::OwnSolver},
+    {"measure_overlap", PeerUse::OwnSolver},
+};
+
+} // namespace
+
+std::optional<PeerUse> peerUse(const settings_table::WorldKey& row) {
+    for (const PeerKey& k : kPeerKeys)
+        if (std::string(k.key) == row.key) return k.use;
+    return std::nullopt;
+}
+
+std::vector<std::string> settingsPeersLack(const WorldSettings& s) {
+    const WorldSettings defaults = defaultWorldSettings();
+    std::vector<std::string> lacked;
+    for (const settings_table::WorldKey& row : settings_table::worldKeys())
+        if (peerUse(row) == PeerUse::Lacks && !settings_table::same(row, s, defaults))
+            lacked.push_back(std::string(row.key) + " " +
+                             settings_table::shownValue(row, s, limits::formatNumber));
+    return lacked;
+}
 
 std::vector<std::string> peerNames() {
     std::vector<std::string> names;
@@ -30,7 +73,15 @@ std::unique_ptr<Simulation> makePeerSimulation(const std::string& peer, const Sc
 }
 
 PeerSimulation::PeerSimulation(const Scene& scene, double dt, int substeps)
-    : bounds_(scene.bounds), dt_(dt), substeps_(substeps) {
+    : bounds_(scene.bounds), settings_(defaultWorldSettings()), dt_(dt), substeps_(substeps) {
+    for (const settings_table::WorldKey& row : settings_table::worldKeys()) {
+        const std::optional<PeerUse> use = peerUse(row);
+        if (!use)
+            throw std::logic_error(std::string("the peers do not say what they make of the world "
+                                               "key \"") +
+                                   row.key + "\" (app/analysis/peers.cpp)");
+        if (*use == PeerUse::Set) settings_table::copy(row, scene.settings, settings_);
+    }
     for (const BlockDef& def : scene.blocks) {
         Block b;
         b.size = def.size;

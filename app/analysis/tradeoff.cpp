@@ -1,6 +1,7 @@
 #include "tradeoff.h"
 
 #include "chart.h"
+#include "peers.h"
 #include "simulation.h"
 
 #include <algorithm>
@@ -94,14 +95,14 @@ class StackDrift : public Measure {
 
 // A block launched at v0 along the floor with friction mu slides to rest after
 // d = v0^2 / (2·mu·g) (lecture, "Application: Platformer": friction; Coulomb friction decelerates
-// it at mu·g): the distance (m) of its final x from x0 + d. The pair's mu is the geometric mean of
-// the block's and the floor's (the world's), as the engine mixes them (friction.cpp).
+// it at mu·g): the distance (m) of its final x from x0 + d. The pair's mu mixes the block's face
+// and the floor's (the world's) as the engine does (mixedFriction, world.h).
 class StoppingDistance : public Measure {
   public:
     explicit StoppingDistance(const Scene& s) {
         const BlockDef& b = s.blocks.at(0);
         const double world = s.settings.friction;
-        const double mu = std::sqrt((b.friction >= 0.0 ? b.friction : world) * world);
+        const double mu = mixedFriction(faceFriction(b.friction, world), world);
         const double g = -s.settings.gravity.y, v0 = std::abs(b.velocity.x);
         stopX_ = b.position.x + std::copysign(v0 * v0 / (2 * mu * g), b.velocity.x);
         duration = 1.5 * v0 / (mu * g); // at rest for the last third
@@ -186,7 +187,8 @@ TradeoffRow runOne(const std::string& engine, const std::string& sceneName, cons
                    double dt, int substeps, const char* unit, Integrator integrator) {
     std::unique_ptr<Simulation> sim;
     Method method;
-    if (parseMethod(engine.c_str(), method)) {
+    const bool peer = !parseMethod(engine.c_str(), method);
+    if (!peer) {
         Scene s = scene;
         s.settings.integrator = integrator;
         sim = makeEngineSimulation(s, method, dt, substeps);
@@ -213,6 +215,7 @@ TradeoffRow runOne(const std::string& engine, const std::string& sceneName, cons
     row.msPerSimulatedSecond = ms / (frames * dt);
     row.error = setup.measure->finish(*sim);
     row.errorUnit = unit;
+    if (peer) row.lacks = settingsPeersLack(scene.settings);
     return row;
 }
 
@@ -297,6 +300,13 @@ void writeTradeoffMarkdown(std::ostream& out, const std::vector<TradeoffRow>& ro
             }
             out << "\n";
         }
+        for (const TradeoffRow* r : list)
+            if (!r->lacks.empty()) {
+                out << "\nThe peers ran without";
+                for (const std::string& l : r->lacks) out << " " << l;
+                out << " (they have nothing for it).\n";
+                break;
+            }
     }
 }
 

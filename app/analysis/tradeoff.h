@@ -18,6 +18,7 @@ struct TradeoffRow {
     double error = 0.0;                // the scene's error measure (see errorUnit)
     std::string errorUnit;             // what the error means, e.g. "m" or "relative energy"
     std::string integrator = "semi-implicit-euler"; // the engine's (peers: their own)
+    std::vector<std::string> lacks; // a peer's row: the scene's settings it ran without
 };
 
 struct TradeoffOptions {

@@ -3,6 +3,8 @@
 #include "input_limits.h"
 #include "inspector_format.h"
 #include "printable.h"
+#include "scene_json.h"
+#include "settings_table.h"
 #include "text_format.h"
 
 #include <nlohmann/json.hpp>
@@ -72,17 +74,29 @@ Json vecJson(Vec2 v) {
     return Json::array({v.x, v.y});
 }
 
+// Every world key of the settings table, as sandbox-cli run --json writes them (its order and
+// values), so a new key is in the report without a word here.
 Json settingsJson(const WorldSettings& s) {
     Json j;
-    j["method"] = methodName(s.method);
-    Json mistakes = Json::array();
-    for (int m = 0; m < static_cast<int>(Mistake::Count); ++m)
-        if (s.has(static_cast<Mistake>(m)))
-            mistakes.push_back(mistakeName(static_cast<Mistake>(m)));
-    j["mistakes"] = mistakes;
-    j["resolve"] = resolveName(s.resolve);
-    j["integrator"] = integratorName(s.integrator);
+    for (const settings_table::WorldKey* row : settings_table::cliOrder())
+        j[row->key] = settingJson(*row, s);
     return j;
+}
+
+// The same as text: "method perfect, dt 0.1 s, substeps 1, bounciness 1, gravity (0, 0) m/s², ...",
+// each value as people read it (the panel's words), dt as seconds.
+std::string settingsText(const WorldSettings& s) {
+    std::string out;
+    for (const settings_table::WorldKey* row : settings_table::cliOrder()) {
+        settings_table::WorldKey plain = *row;
+        plain.shown.asRate = false; // dt in seconds, as the trace's frames count them
+        std::string value =
+            settings_table::shownValue(plain, s, [](double v) { return formatNumber(v); });
+        if (settings_table::isNone(*row, s) && row->kind == settings_table::Kind::NameSet)
+            value = "none";
+        out += (out.empty() ? "" : ", ") + std::string(row->key) + " " + value;
+    }
+    return out;
 }
 
 Json fitJson(const VariantFit& f) {
@@ -165,11 +179,7 @@ std::string reportText(const TraceComparison& c, const ReportContext& ctx) {
     std::string out;
     auto line = [&](const std::string& text) { out += text + "\n"; };
     line("scene      " + printable(scene.name) + " (" + printable(ctx.scenePath, 200) + ")");
-    line("reference  " + std::string(methodName(s.method)) + ", dt " + formatQuantity(s.dt, "s") +
-         ", " + std::to_string(s.substeps) + (s.substeps == 1 ? " substep" : " substeps") +
-         ", C = " + formatNumber(s.bounciness) + ", gravity (" + formatNumber(s.gravity.x) + ", " +
-         formatNumber(s.gravity.y) + ") m/s², resolve " + resolveName(s.resolve) + ", integrator " +
-         integratorName(s.integrator));
+    line("reference  " + settingsText(s));
     std::string blocks;
     for (std::size_t i = 0; i < trace.blocks.size() && i < 8; ++i)
         blocks += (i ? ", " : "") + nameOf(scene, trace.blocks[i]);
@@ -260,12 +270,7 @@ std::string reportJson(const TraceComparison& c, const ReportContext& ctx) {
     j["result"] = c.same() ? "same" : "different";
     j["scene"] = scene.name;
     j["scene_file"] = ctx.scenePath;
-    Json ref = settingsJson(s);
-    ref["dt"] = s.dt;
-    ref["substeps"] = s.substeps;
-    ref["bounciness"] = s.bounciness;
-    ref["gravity"] = vecJson(s.gravity);
-    j["reference"] = ref;
+    j["reference"] = settingsJson(s);
     Json t;
     t["file"] = trace.source;
     t["frames"] = c.frames;

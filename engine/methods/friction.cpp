@@ -11,8 +11,8 @@
 //   J_t = min(μ·J_n, |v_t,rel| / (1/m1 + 1/m2)),   v_t' = v_t ∓ J_t/m for each body,
 // so momentum is kept and the relative sliding only slows: friction never makes energy. Walls,
 // static and kinematic blocks have infinite mass (1/m = 0): they are the reference, and what
-// rests on a moving platform is carried. A pair's μ is sqrt(μ1·μ2) (Box2D's mixing rule), a
-// block's its own "friction" or the world's, a wall's the world's.
+// rests on a moving platform is carried. A pair's μ mixes its two faces' (mixedFriction and
+// faceFriction in world.h, where the rule is written: sqrt(μ1·μ2), a block's own or the world's).
 //
 // Resting contacts (the rest rule) give friction too: what the contact absorbed along its axis
 // is the normal change (with the Euler integrators g·h per substep for a block on the floor, so
@@ -32,9 +32,7 @@
 
 double Resolver::frictionOf(int body) const {
     const double world = ctx_.world.settings.friction;
-    if (body < 0) return world;
-    const double own = ctx_.world.blocks[body].friction;
-    return own >= 0.0 ? own : world;
+    return body < 0 ? world : faceFriction(ctx_.world.blocks[body].friction, world);
 }
 
 double Resolver::inverseMass(int body) const {

@@ -185,7 +185,7 @@ class Resolver {
     void findNear(const Aabb& box);
     // Friction (friction.cpp).
     double frictionOf(int body) const;
-    double frictionOf(int a, int b) const { return std::sqrt(frictionOf(a) * frictionOf(b)); }
+    double frictionOf(int a, int b) const { return mixedFriction(frictionOf(a), frictionOf(b)); }
     double inverseMass(int body) const;
     double velocityOf(int body, int axis) const;
     double frictionImpulse(int a, int b, int tangent, double mu, double jn);

@@ -6,6 +6,7 @@
 #include "vec2.h"
 #include "world_settings.h"
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -25,11 +26,27 @@ struct Block {
     double mass = 1.0; // kg; kInfiniteMass for static and kinematic blocks
     Vec2 force;        // N, a constant force on a dynamic block (a thruster): a = F/m
     BodyKind kind = BodyKind::Dynamic;
-    double friction = -1.0; // μ of this block's faces (>= 0), or < 0: the world's (resolve.h)
+    double friction = -1.0; // μ of this block's faces (>= 0), or < 0: the world's (faceFriction)
 
     bool isDynamic() const { return kind == BodyKind::Dynamic; }
     Vec2 halfSize() const { return size * 0.5; }
 };
+
+// Coulomb friction's μ (docs/physics.md, "Friction"; friction.cpp), the one place the rule is
+// written: a face has its block's own `friction`, or the world's when the block has none (< 0);
+// a wall's faces are the world's. A contact mixes its two faces' μ as sqrt(μ1·μ2) (Box2D's rule,
+// b2MixFriction): a frictionless face makes a frictionless contact, two equal faces keep theirs.
+inline double faceFriction(double own, double world) {
+    return own >= 0.0 ? own : world;
+}
+inline double mixedFriction(double mu1, double mu2) {
+    return std::sqrt(mu1 * mu2);
+}
+// A face's factor for a peer engine that multiplies its two shapes' values (Chipmunk): sqrt(μ),
+// so that the product of a contact's two factors is mixedFriction of its faces.
+inline double frictionFactor(double mu) {
+    return std::sqrt(mu);
+}
 
 // The world's closed bounds: four walls of infinite mass.
 struct Bounds {

@@ -3,8 +3,11 @@
 // the default tolerance is a thousandth of the smallest block, and variants are told apart.
 #include "compare.h"
 #include "report.h"
+#include "scene_json.h"
+#include "settings_table.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 namespace {
 
@@ -169,4 +172,29 @@ TEST(Compare, NothingExplainsAnInventedTrace) {
     bool plain = false;
     for (const std::string& l : lines) plain |= l.find("Nothing the sandbox models") == 0;
     EXPECT_TRUE(plain);
+}
+
+TEST(Compare, TheReportNamesEveryWorldKeyOfTheSettingsTable) {
+    // The reference's settings are the table's rows (settings_table::cliOrder), in the text and
+    // in the JSON as sandbox-cli run --json writes them: a new world key is in the report too.
+    Scene scene = loadScene("friction_slide");
+    scene.settings.drag = 0.25;
+    const WorldSettings ref = referenceSettings(scene, std::nullopt);
+    const Trace trace = traceOf(scene, ref, 30);
+    const TraceComparison c = compareTrace(scene, ref, trace, traceTolerance(scene, ref.dt));
+    const ReportContext context{"friction_slide.json", &scene, &trace};
+    const std::string text = reportText(c, context);
+    const std::string reference = text.substr(text.find("reference  "));
+    const std::string line = reference.substr(0, reference.find('\n'));
+    const nlohmann::json json = nlohmann::json::parse(reportJson(c, context));
+    for (const settings_table::WorldKey* row : settings_table::cliOrder()) {
+        EXPECT_NE(line.find(std::string(row->key) + " "), std::string::npos)
+            << row->key << ": " << line;
+        ASSERT_TRUE(json["reference"].contains(row->key)) << row->key;
+        EXPECT_EQ(json["reference"][row->key], settingJson(*row, ref)) << row->key;
+    }
+    EXPECT_NE(line.find("friction 0.5"), std::string::npos) << line;
+    EXPECT_NE(line.find("drag 0.25"), std::string::npos) << line;
+    EXPECT_NE(line.find("dt 0.017 s"), std::string::npos) << line; // seconds, not a rate
+    EXPECT_NE(line.find("mistakes none"), std::string::npos) << line;
 }

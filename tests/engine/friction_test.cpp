@@ -199,6 +199,26 @@ TEST(Friction, ABlocksOwnFrictionIsASceneKey) {
     EXPECT_NE(bad.error.text().find("blocks[0].friction"), std::string::npos) << bad.error.text();
 }
 
+// The mixing rule, written once (world.h) and read by the engine, the tradeoff's answer and the
+// peers: a face's μ is its block's own or the world's; a contact's, sqrt(μ1·μ2); a peer that
+// multiplies its shapes' values gets sqrt(μ) per face. Exact to rounding (1e-15 on numbers near 1).
+TEST(Friction, TheMixingRule) {
+    EXPECT_EQ(faceFriction(-1.0, 0.3), 0.3); // none of its own: the world's
+    EXPECT_EQ(faceFriction(0.0, 0.3), 0.0);  // its own, even 0
+    EXPECT_EQ(faceFriction(0.8, 0.3), 0.8);
+    EXPECT_NEAR(mixedFriction(0.5, 0.5), 0.5, 1e-15);
+    EXPECT_NEAR(mixedFriction(0.25, 1.0), 0.5, 1e-15);
+    EXPECT_EQ(mixedFriction(0.0, 2.0), 0.0);
+    EXPECT_NEAR(frictionFactor(0.25) * frictionFactor(1.0), mixedFriction(0.25, 1.0), 1e-15);
+    // The engine's contact uses it: a block of μ 0.25 on a floor of the world's 1.0 slides at
+    // mixedFriction(0.25, 1) = 0.5 (decelerates at 0.5·g, exact integrator).
+    World world = slideWorld(Method::Perfect, Integrator::Exact, 1.0, 5.0);
+    world.blocks[0].friction = 0.25;
+    for (int f = 0; f < 30; ++f) world.step();
+    EXPECT_NEAR(world.blocks[0].velocity.x, 5.0 - mixedFriction(0.25, 1.0) * kG * world.time,
+                kExact);
+}
+
 double totalEnergy(const World& world) {
     return kineticEnergy(world) + potentialEnergy(world);
 }
