@@ -79,12 +79,12 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_flag("--present", o.present,
                  "Start in present mode: only the scene and a one-line caption (Tab toggles)");
     app.add_option("--layout-json", o.layoutJson,
-                   "Offscreen (with --screenshot): write the scene's, the world's and every "
-                   "window's rectangle in image pixels to this JSON file");
+                   "Offscreen: write the scene's, the world's and every window's rectangle in "
+                   "image pixels to this JSON file (without --screenshot no image is rendered)");
     app.add_option("--text-json", o.textJson,
-                   "Offscreen (with --screenshot): write every text drawn in the last frame "
-                   "(its text, rectangle in image pixels, line height, window, clipped) to this "
-                   "JSON file");
+                   "Offscreen: write every text drawn in the last frame (its text, rectangle in "
+                   "image pixels, line height, window, clipped) to this JSON file (without "
+                   "--screenshot no image is rendered)");
     std::string frame;
     app.add_option("--frame", frame,
                    "Start in this frame of reference: world, or com (the view moves with the "
@@ -98,8 +98,13 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
                    "Offscreen, with --lesson: setup (the step at t = 0, its question asked) or "
                    "moment (its pause point, the answer shown; the default)")
         ->check(CLI::IsMember({"setup", "moment"}));
-    app.add_option("--record-steps", o.recordSteps,
-                   "Offscreen: write one PNG per lesson step (after its pause point) here");
+    CLI::Option* recordSteps = app.add_option(
+        "--record-steps", o.recordSteps,
+        "Offscreen: write every lesson step at its setup and its moment here (PNG and JSON)");
+    app.add_flag("--every-size", o.everySize,
+                 "With --record-steps: at every classroom screen size and UI scale, each into "
+                 "DIR/WxH_uiS/, the layout and text JSON only (nothing rasterised)")
+        ->needs(recordSteps);
     app.add_option("--theme", o.theme,
                    "dark or light (bright rooms); the window's default is the saved setting")
         ->check(CLI::IsMember({"dark", "light"}));
@@ -138,11 +143,17 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
             if (!o.frame)
                 throw CLI::ValidationError("--frame", "expected world or com, got '" + frame + "'");
         }
-        if (!o.layoutJson.empty() && o.screenshot.empty()) {
-            throw CLI::ValidationError("--layout-json", "needs --screenshot FILE");
+        // The JSON of one frame: the screenshot's, or alone (no image); not of a recording.
+        const bool otherOutput = o.screenshot.empty() &&
+                                 (!o.record.empty() || !o.recordSteps.empty() ||
+                                  o.benchmarkFrames > 0 || !o.audioWav.empty());
+        if (!o.layoutJson.empty() && otherOutput) {
+            throw CLI::ValidationError("--layout-json", "needs --screenshot FILE, or no other "
+                                                        "output (then no image is rendered)");
         }
-        if (!o.textJson.empty() && o.screenshot.empty()) {
-            throw CLI::ValidationError("--text-json", "needs --screenshot FILE");
+        if (!o.textJson.empty() && otherOutput) {
+            throw CLI::ValidationError("--text-json", "needs --screenshot FILE, or no other "
+                                                      "output (then no image is rendered)");
         }
         o.atSetup = at == "setup";
         if (!o.recordSteps.empty() && o.lesson.empty() && o.scene.empty()) {

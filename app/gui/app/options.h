@@ -35,6 +35,7 @@ struct Options {
     bool atSetup = false;    // offscreen --at setup: the step at t = 0 with its question (else
                              // --at moment, the default: at its pause point with the answer)
     std::string recordSteps; // offscreen: one PNG per lesson step into this directory
+    bool everySize = false;  // --record-steps at every classroom screen (view.h), JSON only
     std::optional<ViewFrame> frame; // --frame: start in this frame (a lesson's steps choose theirs)
     std::string theme;              // --theme dark|light; "": the saved setting (window) or dark
     long long timelineFrame = -1;   // offscreen: after --frames, back to this frame (the timeline)
@@ -68,5 +69,6 @@ ParsedOptions parseOptions(int argc, const char* const* argv);
 // True when the run renders offscreen rather than opening a window.
 inline bool wantsOffscreen(const Options& o) {
     return !o.screenshot.empty() || !o.record.empty() || o.benchmarkFrames > 0 ||
-           !o.recordSteps.empty() || !o.audioWav.empty();
+           !o.recordSteps.empty() || !o.audioWav.empty() || !o.layoutJson.empty() ||
+           !o.textJson.empty();
 }

@@ -379,10 +379,11 @@ void drawControlsPanel(App& app) {
         ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(r.height)));
         flags |= ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar;
     } else {
-        // The column's top: windows docked under the panel (the plots) take its bottom.
+        // The column's top, under a lesson's caption bar: windows docked under the panel (the
+        // plots) take its bottom.
         const ScreenRect& r = app.view.layout.panel;
         const float height = r.height > 0.0 ? static_cast<float>(r.height) : io.DisplaySize.y;
-        ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+        ImGui::SetNextWindowPos(ImVec2(0, static_cast<float>(r.y)), ImGuiCond_Always);
         ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
     }
     if (!ImGui::Begin("Controls", nullptr, flags)) {
