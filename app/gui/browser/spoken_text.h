@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 struct App;
 
@@ -16,7 +17,15 @@ struct SpokenScreen {
     std::string question;    // the step's question, while it waits for its answer
     std::string answer;      // the answer, once revealed
     std::string status;      // "perfect method, t = 0.62 s, paused, 1 collision"
+    std::string error;       // the error the app shows, "" for none
     bool operator==(const SpokenScreen& o) const;
     bool operator!=(const SpokenScreen& o) const { return !(*this == o); }
 };
 SpokenScreen spokenScreen(const App& app);
+
+// What the live region says when the screen changes from `before` to `now` (issue 38: a screen
+// reader hears every step change, the answer at the moment and every error): a step entered
+// ("Step 3 of 27: title. Question: ... A. ... B. ..."), its answer once revealed ("Answer: ..."
+// or "No answer: ..."), an error when one appears ("Error: ..."). One line each, in that order;
+// none when nothing of that changed.
+std::vector<std::string> spokenChanges(const SpokenScreen& before, const SpokenScreen& now);

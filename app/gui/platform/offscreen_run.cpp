@@ -204,6 +204,14 @@ int writeScreenshot(Offscreen& off, const Options& o) {
 int screenshot(App& app, Offscreen& off, const Options& o) {
     // The step's moment (its pause point, the answer shown), or with --at setup the step as it
     // opens: t = 0, the question asked.
+    // The class poll's votes (--poll-votes), as phones would send them: a round per group.
+    for (std::size_t r = 0; r < o.pollVotes.size(); ++r) {
+        if (r > 0) {
+            closePollVote(app.poll);
+            pollVoteAgain(app.poll);
+        }
+        castDemoVotes(app.poll, o.pollVotes[r]);
+    }
     if (app.lesson.active() && !o.atSetup) lessonShowPausePoint(app);
     // --frames N simulates N frames, as if P had been pressed (the badge then shows no PAUSED).
     AudioTrack track = startTrack(app, o, o.frames);
@@ -372,8 +380,7 @@ std::string outputOverLessonScene(const App& app, const Options& o) {
 int runOffscreen(const Options& options) {
     Options o = options;
     if (o.screenshot.empty() && o.record.empty() && o.benchmarkFrames <= 0 &&
-        o.recordSteps.empty() && o.audioWav.empty() && o.layoutJson.empty() &&
-        o.textJson.empty()) {
+        o.recordSteps.empty() && o.audioWav.empty() && o.layoutJson.empty() && o.textJson.empty()) {
         o.screenshot = "sandbox-screenshot.png";
     }
     App app;
@@ -387,7 +394,8 @@ int runOffscreen(const Options& options) {
         return 2;
     }
     if (o.screenshot.empty() && o.record.empty() && o.benchmarkFrames <= 0 &&
-        o.recordSteps.empty() && o.layoutJson.empty() && o.textJson.empty()) { // --audio-wav alone: simulate and listen, draw nothing
+        o.recordSteps.empty() && o.layoutJson.empty() &&
+        o.textJson.empty()) { // --audio-wav alone: simulate and listen, draw nothing
         if (app.lesson.active()) lessonShowPausePoint(app);
         AudioTrack track = startTrack(app, o, o.frames);
         if (track.tooLong) return 1;
@@ -409,7 +417,8 @@ int runOffscreen(const Options& options) {
                                   o.benchmarkFrames > 0 || !o.recordSteps.empty());
     if (!off.pixels) {
         ImGui::GetIO().Fonts->Build(); // ImGui lays text out with the atlas (never uploaded)
-        const int code = !o.recordSteps.empty() ? recordSteps(app, off, o) : screenshot(app, off, o);
+        const int code =
+            !o.recordSteps.empty() ? recordSteps(app, off, o) : screenshot(app, off, o);
         uiDestroyContext();
         return code;
     }
