@@ -11,9 +11,9 @@
 // one size while the step is asked, played and answered, and at most kMaxCaptionShare of the
 // screen's height: the question or answer is always whole, the caption shows the lines that fit
 // ("... (more)", the whole on hovering it or a click), and where even that does not fit a smaller
-// font is tried. The plan's height is app.view.captionHeight, which the layout keeps free above
-// the panel, the windows and the scene. In present mode the bar is the scene's caption, not a
-// window: --layout-json lists no window there.
+// font is tried, then half the padding. The plan's height is app.view.captionHeight, which the
+// layout keeps free above the panel, the windows and the scene. In present mode the bar is the
+// scene's caption, not a window: --layout-json lists no window there.
 #include "app_frame.h"
 #include "lesson_prompt.h"
 #include "overlay_window.h"
@@ -33,7 +33,8 @@ namespace {
 constexpr float kHeadingScale = 1.25f;
 
 // A text of the bar under its heading: wrapped at the bar's width (wrapFormula); `beside`: on the
-// previous text's row where it fits whole (a choice after a short question, or another choice).
+// previous text's row where that row is one line and it fits there whole (a choice after a short
+// question, or after another choice).
 struct Piece {
     std::string text;
     ImVec4 color;
@@ -73,7 +74,10 @@ float flow(const std::vector<Piece>& pieces, float width, std::vector<Placed>* o
         if (p.text.empty()) continue;
         const float width1 = static_cast<float>(measured(p.text));
         Placed placed{p.text, p.color, ImVec2(0.0f, 0.0f)};
-        if (!first && p.beside && p.text.find('\n') == std::string::npos &&
+        // Beside a one-line row only: after a wrapped question it would sit at its first line's
+        // end, in the middle of the sentence.
+        const bool oneLine = rowBottom - rowTop <= line + 0.5f;
+        if (!first && p.beside && oneLine && p.text.find('\n') == std::string::npos &&
             right + gapX + width1 <= width) {
             placed.at = ImVec2(right + gapX, rowTop);
             right += gapX + width1;
@@ -110,6 +114,7 @@ struct BarPlan {
     ImFont* font = nullptr;
     std::string caption; // the step's caption as shown: whole, or the lines that fit and "..."
     bool captionCut = false;
+    bool tight = false;  // half the padding and spacing (pushTight): the last resort
     float height = 0.0f; // px: the most the setup's and the moment's texts take
 };
 BarPlan gPlan;
@@ -117,15 +122,30 @@ bool gCaptionOpen = false; // "(more)" clicked: the whole caption, over the scen
 
 constexpr const char* kMore = " (more)";
 
-// The first words of `text` that take at most `lines` lines `width` px wide followed by "..."
-// and kMore ("" when not even a word fits).
+// The bar's padding and the spacing between its rows halved, when `tight`.
+void pushTight(bool tight) {
+    if (!tight) return;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding,
+                        ImVec2(style.WindowPadding.x, 0.5f * style.WindowPadding.y));
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing,
+                        ImVec2(style.ItemSpacing.x, 0.5f * style.ItemSpacing.y));
+}
+void popTight(bool tight) {
+    if (tight) ImGui::PopStyleVar(2);
+}
+
+// The first words of `text` that take at most `lines` lines `width` px wide, followed by "..."
+// (unless they end a sentence) and kMore ("" when not even a word fits).
 std::string firstLines(const std::string& text, float width, int lines) {
     const float most = static_cast<float>(lines) * ImGui::GetTextLineHeight() + 0.5f;
     std::string best;
     std::size_t end = 0;
     while (end != std::string::npos) {
         end = text.find_first_of(" \n", end + 1);
-        const std::string tried = text.substr(0, end) + "...";
+        std::string tried = text.substr(0, end);
+        if (tried.back() != '.') tried += "..."; // a whole sentence ends as it is
+
         if (flow({{tried + kMore, ImVec4()}}, width, nullptr) > most) break;
         best = tried;
     }
@@ -184,8 +204,16 @@ BarPlan planBar(const StepTexts& t, const std::string& key, float width, float s
     missed.missed = !t.now.missed.empty() ? t.now.missed : t.missedAsWritten;
     BarPlan plan;
     plan.key = key;
-    for (ImFont* font : {uiCaptionFont(), ImGui::GetFont(), uiCompactFont()}) {
-        ImGui::PushFont(font);
+    const struct {
+        ImFont* font;
+        bool tight;
+    } tries[] = {{uiCaptionFont(), false},
+                 {ImGui::GetFont(), false},
+                 {uiCompactFont(), false},
+                 {uiCompactFont(), true}};
+    for (const auto& tried : tries) {
+        ImGui::PushFont(tried.font);
+        pushTight(tried.tight);
         const float line = ImGui::GetTextLineHeight(), gap = style.ItemSpacing.y;
         float askedHeight = flow(askedPieces(asked, false), wrap, nullptr);
         if (!t.now.question.empty()) {
@@ -200,16 +228,19 @@ BarPlan planBar(const StepTexts& t, const std::string& key, float width, float s
                             static_cast<float>(headingRows) * line * kHeadingScale +
                             (askedHeight > 0.0f ? gap + askedHeight : 0.0f);
         const float caption = flow({{t.now.caption, ImVec4()}}, wrap, nullptr);
-        plan.font = font;
+        plan.font = tried.font;
+        plan.tight = tried.tight;
         plan.caption = t.now.caption;
         plan.captionCut = false;
         plan.height = fixed + (caption > 0.0f ? gap + caption : 0.0f);
         const int room = static_cast<int>(std::floor((most - fixed - gap) / line));
-        if (plan.height > most && room >= 1) { // the caption's first lines, "... (more)"
-            plan.caption = firstLines(t.now.caption, wrap, room);
+        if (plan.height > most) { // the caption's first lines, "... (more)", or "... (more)"
+            plan.caption = room >= 1 ? firstLines(t.now.caption, wrap, room) : "";
+            if (plan.caption.empty()) plan.caption = "...";
             plan.captionCut = true;
             plan.height = fixed + gap + flow({{plan.caption + kMore, ImVec4()}}, wrap, nullptr);
         }
+        popTight(tried.tight);
         ImGui::PopFont();
         if (plan.height <= most) break;
     }
@@ -251,8 +282,10 @@ void drawLessonCaption(App& app) {
         ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
         ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus;
     if (gCaptionOpen) flags |= ImGuiWindowFlags_AlwaysAutoResize;
+    pushTight(gPlan.tight);
     if (!ImGui::Begin("Lesson caption", nullptr, flags)) {
         ImGui::End();
+        popTight(gPlan.tight);
         return;
     }
     if (!app.view.presentMode) recordShownWindow(app, "Lesson caption");
@@ -317,4 +350,5 @@ void drawLessonCaption(App& app) {
         gCaptionOpen = false; // a click on the open bar folds it again
     ImGui::PopFont();
     ImGui::End();
+    popTight(gPlan.tight);
 }
