@@ -4,8 +4,7 @@
 #include <cstdio>
 
 double panelWidth(float uiScale, double displayWidth) {
-    return std::min(kPanelPxAtScale1 * static_cast<double>(uiScale),
-                    displayWidth * kMaxPanelShare);
+    return std::min(kPanelPxAtScale1 * static_cast<double>(uiScale), displayWidth * kMaxPanelShare);
 }
 
 bool panelFits(float uiScale, double displayWidth) {
@@ -46,7 +45,9 @@ Layout computeAppLayout(const View& view, bool captionBar, double displayWidth,
         in.panelWidth = panelWidth(view.uiScale, displayWidth);
     }
     for (const OverlayInfo& row : kOverlays) {
-        if (!row.title || !(view.show.*row.flag) || isFloating(view, row.title)) continue;
+        // Shown, or (in a lesson) opened at the step's moment: its room kept from the setup on.
+        const bool kept = view.show.*row.flag || (captionBar && view.reserved.*row.flag);
+        if (!row.title || !kept || isFloating(view, row.title)) continue;
         in.windows.push_back({row.title, row.place.side, row.place.minExtent, row.place.weight,
                               row.place.crossExtent, row.place.heightShare});
     }

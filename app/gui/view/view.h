@@ -30,6 +30,10 @@ struct View {
     ViewFrame frame = ViewFrame::World;
     FrameCamera frameCamera;
     Overlays show;
+    // A lesson step's overlays that open at its moment (its "reveal"): their docked windows' room
+    // is kept from the setup on (computeAppLayout, with a caption bar), so the scene keeps its size
+    // at the answer.
+    Overlays reserved = ShowSet::noOverlays();
     bool overlaysChosen = false; // --show given: scenes no longer pick the default overlays
     bool uiVisible = true;
     float uiScale = 1.0f;
@@ -66,7 +70,7 @@ bool panelFits(float uiScale, double displayWidth);
 
 // The screens a lecture hall may have (issue 39), each at the UI scales 1, 1.25, 1.5 and 2 where
 // the panel fits: what the lesson sweep checks (sandbox-offscreen --record-steps DIR
-// --every-size writes each into DIR/name()).
+// --screens all writes each into DIR/name()).
 struct ClassroomScreen {
     int width = 0, height = 0;
     float uiScale = 1.0f;
