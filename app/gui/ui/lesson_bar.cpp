@@ -10,8 +10,8 @@
 // what the setup and the moment need (the answer as written included), so the scene below keeps
 // one size while the step is asked, played and answered, and at most kMaxCaptionShare of the
 // screen's height: the question or answer is always whole, the caption shows the lines that fit
-// ("... (more)", the whole on hovering it or a click), and where even that does not fit a smaller
-// font is tried, then half the padding. The plan's height is app.view.captionHeight, which the
+// ("... (more)", the whole on hovering it or a click), and where even that does not fit half the
+// padding is tried, then a smaller font. The plan's height is app.view.captionHeight, which the
 // layout keeps free above the panel, the windows and the scene. In present mode the bar is the
 // scene's caption, not a window: --layout-json lists no window there.
 #include "app_frame.h"
@@ -188,9 +188,9 @@ std::string planKey(const LessonSession& s, const StepTexts& t, float width, flo
     return key;
 }
 
-// The bar for the open step on a `width` x `screenHeight` screen, in the first font (the
-// slide-sized caption font, then the UI's, then the compact one) in which the heading and the
-// question or answer leave room for a line of the caption within kMaxCaptionShare of the height.
+// The bar for the open step on a `width` x `screenHeight` screen, in the first font and padding
+// (the slide-sized caption font, then with half the padding, then the UI's font, then the compact
+// one, then with half the padding) in which it fits within kMaxCaptionShare of the height.
 BarPlan planBar(const StepTexts& t, const std::string& key, float width, float screenHeight) {
     const ImGuiStyle& style = ImGui::GetStyle();
     const float wrap = width - 2.0f * style.WindowPadding.x;
@@ -208,6 +208,7 @@ BarPlan planBar(const StepTexts& t, const std::string& key, float width, float s
         ImFont* font;
         bool tight;
     } tries[] = {{uiCaptionFont(), false},
+                 {uiCaptionFont(), true},
                  {ImGui::GetFont(), false},
                  {uiCompactFont(), false},
                  {uiCompactFont(), true}};
