@@ -7,7 +7,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <utility>
 
@@ -19,6 +21,33 @@ bool parseSize(const std::string& text, int& width, int& height) {
     if (w < 16 || h < 16 || w > 16384 || h > 16384) return false;
     width = w;
     height = h;
+    return true;
+}
+
+bool parseScreens(const std::string& text, std::vector<ClassroomScreen>& out, std::string* error) {
+    out.clear();
+    if (text == "all") {
+        out = classroomScreens();
+        return true;
+    }
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = std::min(text.find(',', start), text.size());
+        const std::string item = text.substr(start, end - start);
+        const std::size_t at = item.find('@');
+        ClassroomScreen screen;
+        char* rest = nullptr;
+        const std::string scale = at == std::string::npos ? "" : item.substr(at + 1);
+        screen.uiScale = std::strtof(scale.c_str(), &rest);
+        if (at == std::string::npos ||
+            !parseSize(item.substr(0, at), screen.width, screen.height) || scale.empty() ||
+            *rest != '\0' || !(screen.uiScale >= kMinUiScale) || !(screen.uiScale <= kMaxUiScale)) {
+            *error = "expected all or WxH@S,... (e.g. 1280x800@1.5), got '" + item + "'";
+            return false;
+        }
+        out.push_back(screen);
+        start = end + 1;
+    }
     return true;
 }
 
@@ -118,10 +147,13 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     CLI::Option* recordSteps = app.add_option(
         "--record-steps", o.recordSteps,
         "Offscreen: write every lesson step at its setup and its moment here (PNG and JSON)");
-    app.add_flag("--every-size", o.everySize,
-                 "With --record-steps: at every classroom screen size and UI scale, each into "
-                 "DIR/WxH_uiS/, the layout and text JSON only (nothing rasterised)")
-        ->needs(recordSteps);
+    std::string screens;
+    app.add_option("--screens", screens,
+                   "With --record-steps: at each of these screen sizes and UI scales (all: every "
+                   "classroom screen, or WxH@S,... e.g. 1280x800@1.5,1024x768@1), each into "
+                   "DIR/WxH_uiS/, the layout and text JSON only (nothing rasterised)")
+        ->needs(recordSteps)
+        ->type_name("LIST");
     app.add_option("--theme", o.theme,
                    "dark or light (bright rooms); the window's default is the saved setting")
         ->check(CLI::IsMember({"dark", "light"}));
@@ -158,6 +190,11 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         app.parse(argc, argv);
         if (!size.empty() && !parseSize(size, o.width, o.height)) {
             throw CLI::ValidationError("--size", "expected WxH, e.g. 1280x720, got '" + size + "'");
+        }
+        if (!screens.empty()) {
+            std::string error;
+            if (!parseScreens(screens, o.screens, &error))
+                throw CLI::ValidationError("--screens", error);
         }
         if (!show.empty()) {
             std::string error;

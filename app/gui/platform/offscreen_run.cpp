@@ -33,7 +33,7 @@ constexpr double kFrameSeconds = 1.0 / 60.0;
 constexpr int kSettleFrames = 3;
 
 // What a run draws into: an OSMesa context and the scene's renderer, or, with `pixels` false
-// (--layout-json / --text-json without an image, --every-size), nothing: the frame's UI and
+// (--layout-json / --text-json without an image, --screens), nothing: the frame's UI and
 // layout are built and read back as JSON, no pixel rasterised.
 struct Offscreen {
     bool pixels = true;
@@ -306,8 +306,8 @@ bool recordStepsInto(App& app, Offscreen& off, const std::string& dir) {
 }
 
 // A handout that the lesson sweep (ctest) also reads: every step's setup and moment as PNGs with
-// their JSON (recordStepsInto); with --every-size, at every classroom screen and UI scale
-// (kClassroomScreens, where the panel fits), each into DIR/WxH_uiS/, as JSON only.
+// their JSON (recordStepsInto); with --screens, at each of those screens and UI scales
+// (--screens all: classroomScreens), each into DIR/WxH_uiS/, as JSON only.
 int recordSteps(App& app, Offscreen& off, const Options& o) {
     if (!makeDirectory(o.recordSteps)) return 1;
     if (!app.lesson.active()) {
@@ -315,14 +315,14 @@ int recordSteps(App& app, Offscreen& off, const Options& o) {
         return 1;
     }
     const std::size_t steps = app.lesson.lesson->steps.size();
-    if (!o.everySize) {
+    if (o.screens.empty()) {
         if (!recordStepsInto(app, off, o.recordSteps)) return 1;
         std::printf("wrote %zu steps to %s\n", steps,
                     printable(o.recordSteps, kPrintablePath).c_str());
         return 0;
     }
     int screens = 0;
-    for (const ClassroomScreen& screen : classroomScreens()) {
+    for (const ClassroomScreen& screen : o.screens) {
         off.width = screen.width;
         off.height = screen.height;
         ImGui::GetIO().DisplaySize =
@@ -413,8 +413,8 @@ int runOffscreen(const Options& options) {
     off.width = o.width;
     off.height = o.height;
     // No image asked for (the JSON alone, or every size's): nothing is rasterised.
-    off.pixels = !o.everySize && (!o.screenshot.empty() || !o.record.empty() ||
-                                  o.benchmarkFrames > 0 || !o.recordSteps.empty());
+    off.pixels = o.screens.empty() && (!o.screenshot.empty() || !o.record.empty() ||
+                                       o.benchmarkFrames > 0 || !o.recordSteps.empty());
     if (!off.pixels) {
         ImGui::GetIO().Fonts->Build(); // ImGui lays text out with the atlas (never uploaded)
         const int code =
