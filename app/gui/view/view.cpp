@@ -45,8 +45,11 @@ Layout computeAppLayout(const View& view, bool captionBar, double displayWidth,
         in.panelWidth = panelWidth(view.uiScale, displayWidth);
     }
     for (const OverlayInfo& row : kOverlays) {
-        // Shown, or (in a lesson) opened at the step's moment: its room kept from the setup on.
-        const bool kept = view.show.*row.flag || (captionBar && view.reserved.*row.flag);
+        // Shown, or (in a lesson) opened at the step's moment: its room kept from the setup on,
+        // unless it docks under the panel (it takes that room from the panel, not the scene).
+        const bool underPanel = row.place.side == DockSide::Panel && in.panelWidth > 0.0;
+        const bool kept =
+            view.show.*row.flag || (captionBar && !underPanel && view.reserved.*row.flag);
         if (!row.title || !kept || isFloating(view, row.title)) continue;
         in.windows.push_back({row.title, row.place.side, row.place.minExtent, row.place.weight,
                               row.place.crossExtent, row.place.heightShare});

@@ -31,8 +31,8 @@ struct View {
     FrameCamera frameCamera;
     Overlays show;
     // A lesson step's overlays that open at its moment (its "reveal"): their docked windows' room
-    // is kept from the setup on (computeAppLayout, with a caption bar), so the scene keeps its size
-    // at the answer.
+    // is kept from the setup on (computeAppLayout, with a caption bar; not of those under the
+    // panel, which take the panel's room), so the scene keeps its size at the answer.
     Overlays reserved = ShowSet::noOverlays();
     bool overlaysChosen = false; // --show given: scenes no longer pick the default overlays
     bool uiVisible = true;
