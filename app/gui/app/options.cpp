@@ -7,7 +7,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <utility>
 
@@ -19,6 +21,33 @@ bool parseSize(const std::string& text, int& width, int& height) {
     if (w < 16 || h < 16 || w > 16384 || h > 16384) return false;
     width = w;
     height = h;
+    return true;
+}
+
+bool parseScreens(const std::string& text, std::vector<ClassroomScreen>& out, std::string* error) {
+    out.clear();
+    if (text == "all") {
+        out = classroomScreens();
+        return true;
+    }
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = std::min(text.find(',', start), text.size());
+        const std::string item = text.substr(start, end - start);
+        const std::size_t at = item.find('@');
+        ClassroomScreen screen;
+        char* rest = nullptr;
+        const std::string scale = at == std::string::npos ? "" : item.substr(at + 1);
+        screen.uiScale = std::strtof(scale.c_str(), &rest);
+        if (at == std::string::npos ||
+            !parseSize(item.substr(0, at), screen.width, screen.height) || scale.empty() ||
+            *rest != '\0' || !(screen.uiScale >= kMinUiScale) || !(screen.uiScale <= kMaxUiScale)) {
+            *error = "expected all or WxH@S,... (e.g. 1280x800@1.5), got '" + item + "'";
+            return false;
+        }
+        out.push_back(screen);
+        start = end + 1;
+    }
     return true;
 }
 
@@ -96,12 +125,12 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_flag("--present", o.present,
                  "Start in present mode: only the scene and a one-line caption (Tab toggles)");
     app.add_option("--layout-json", o.layoutJson,
-                   "Offscreen (with --screenshot): write the scene's, the world's and every "
-                   "window's rectangle in image pixels to this JSON file");
+                   "Offscreen: write the scene's, the world's and every window's rectangle in "
+                   "image pixels to this JSON file (without --screenshot no image is rendered)");
     app.add_option("--text-json", o.textJson,
-                   "Offscreen (with --screenshot): write every text drawn in the last frame "
-                   "(its text, rectangle in image pixels, line height, window, clipped) to this "
-                   "JSON file");
+                   "Offscreen: write every text drawn in the last frame (its text, rectangle in "
+                   "image pixels, line height, window, clipped) to this JSON file (without "
+                   "--screenshot no image is rendered)");
     std::string frame;
     app.add_option("--frame", frame,
                    "Start in this frame of reference: world, or com (the view moves with the "
@@ -115,8 +144,16 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
                    "Offscreen, with --lesson: setup (the step at t = 0, its question asked) or "
                    "moment (its pause point, the answer shown; the default)")
         ->check(CLI::IsMember({"setup", "moment"}));
-    app.add_option("--record-steps", o.recordSteps,
-                   "Offscreen: write one PNG per lesson step (after its pause point) here");
+    CLI::Option* recordSteps = app.add_option(
+        "--record-steps", o.recordSteps,
+        "Offscreen: write every lesson step at its setup and its moment here (PNG and JSON)");
+    std::string screens;
+    app.add_option("--screens", screens,
+                   "With --record-steps: at each of these screen sizes and UI scales (all: every "
+                   "classroom screen, or WxH@S,... e.g. 1280x800@1.5,1024x768@1), each into "
+                   "DIR/WxH_uiS/, the layout and text JSON only (nothing rasterised)")
+        ->needs(recordSteps)
+        ->type_name("LIST");
     app.add_option("--theme", o.theme,
                    "dark or light (bright rooms); the window's default is the saved setting")
         ->check(CLI::IsMember({"dark", "light"}));
@@ -154,6 +191,11 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         if (!size.empty() && !parseSize(size, o.width, o.height)) {
             throw CLI::ValidationError("--size", "expected WxH, e.g. 1280x720, got '" + size + "'");
         }
+        if (!screens.empty()) {
+            std::string error;
+            if (!parseScreens(screens, o.screens, &error))
+                throw CLI::ValidationError("--screens", error);
+        }
         if (!show.empty()) {
             std::string error;
             if (!parseShowList(show, o.show, &error)) throw CLI::ValidationError("--show", error);
@@ -164,11 +206,17 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
             if (!o.frame)
                 throw CLI::ValidationError("--frame", "expected world or com, got '" + frame + "'");
         }
-        if (!o.layoutJson.empty() && o.screenshot.empty()) {
-            throw CLI::ValidationError("--layout-json", "needs --screenshot FILE");
+        // The JSON of one frame: the screenshot's, or alone (no image); not of a recording.
+        const bool otherOutput =
+            o.screenshot.empty() && (!o.record.empty() || !o.recordSteps.empty() ||
+                                     o.benchmarkFrames > 0 || !o.audioWav.empty());
+        if (!o.layoutJson.empty() && otherOutput) {
+            throw CLI::ValidationError("--layout-json", "needs --screenshot FILE, or no other "
+                                                        "output (then no image is rendered)");
         }
-        if (!o.textJson.empty() && o.screenshot.empty()) {
-            throw CLI::ValidationError("--text-json", "needs --screenshot FILE");
+        if (!o.textJson.empty() && otherOutput) {
+            throw CLI::ValidationError("--text-json", "needs --screenshot FILE, or no other "
+                                                      "output (then no image is rendered)");
         }
         o.atSetup = at == "setup";
         if (!pollVotes.empty()) {

@@ -9,6 +9,7 @@
 
 #include "overlays.h"
 #include "trace.h"
+#include "view.h"
 #include "view_frame.h"
 
 #include <optional>
@@ -35,6 +36,8 @@ struct Options {
     bool atSetup = false;    // offscreen --at setup: the step at t = 0 with its question (else
                              // --at moment, the default: at its pause point with the answer)
     std::string recordSteps; // offscreen: one PNG per lesson step into this directory
+    // --screens: --record-steps at each of these screens and UI scales, JSON only (view.h)
+    std::vector<ClassroomScreen> screens;
     std::optional<ViewFrame> frame; // --frame: start in this frame (a lesson's steps choose theirs)
     std::string theme;              // --theme dark|light; "": the saved setting (window) or dark
     long long timelineFrame = -1;   // offscreen: after --frames, back to this frame (the timeline)
@@ -62,6 +65,9 @@ std::vector<OutputFile> outputFiles(const Options& o);
 bool parsePollVotes(const std::string& text, std::vector<std::vector<int>>& rounds);
 // Parses "WxH" (each 16..16384); false otherwise.
 bool parseSize(const std::string& text, int& width, int& height);
+// --screens: "all" (classroomScreens) or "WxH@S,...", e.g. "1280x800@1.5,1024x768@1"; false
+// with `error` set when malformed.
+bool parseScreens(const std::string& text, std::vector<ClassroomScreen>& out, std::string* error);
 
 struct ParsedOptions {
     Options options;
@@ -75,5 +81,6 @@ ParsedOptions parseOptions(int argc, const char* const* argv);
 // True when the run renders offscreen rather than opening a window.
 inline bool wantsOffscreen(const Options& o) {
     return !o.screenshot.empty() || !o.record.empty() || o.benchmarkFrames > 0 ||
-           !o.recordSteps.empty() || !o.audioWav.empty();
+           !o.recordSteps.empty() || !o.audioWav.empty() || !o.layoutJson.empty() ||
+           !o.textJson.empty();
 }

@@ -134,6 +134,7 @@ void closeLesson(LessonSession& s, SimulationSession& sim, View& view) {
     sim.script.clear();
     sim.pauseAtSceneEnd = true; // the scene's own end again
     view.fitBounds.reset();
+    view.reserved = ShowSet::noOverlays();
     setViewFrame(view, ViewFrame::World); // a step's frame ends with the lesson
 }
 
@@ -149,6 +150,10 @@ bool enterStep(LessonSession& s, SimulationSession& sim, View& view, Messages& m
     Overlays shown = ShowSet::noOverlays();
     for (const std::string& name : step.overlays) setOverlay(shown, name, true);
     view.show = shown;
+    // The windows its moment opens keep their room from the setup on: the scene keeps one size
+    // while the step is asked, played and answered (issue 39).
+    view.reserved = ShowSet::noOverlays();
+    for (const std::string& name : step.reveal) setOverlay(view.reserved, name, true);
     view.fitBounds = step.camera;
     view.autoFit = true;
     setViewFrame(view, step.frame);

@@ -17,6 +17,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cfloat>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -31,7 +32,12 @@ constexpr double kFrameSeconds = 1.0 / 60.0;
 // ImGui settles window sizes and tables over a couple of frames; render these before capturing.
 constexpr int kSettleFrames = 3;
 
+// What a run draws into: an OSMesa context and the scene's renderer, or, with `pixels` false
+// (--layout-json / --text-json without an image, --screens), nothing: the frame's UI and
+// layout are built and read back as JSON, no pixel rasterised.
 struct Offscreen {
+    bool pixels = true;
+    int width = 0, height = 0; // the image's size (its context's, with pixels)
     OffscreenOsmesa context;
     SceneRenderer renderer;
 };
@@ -93,10 +99,18 @@ int writeTrack(const AudioTrack& track, const Options& o) {
 }
 
 void renderFrame(App& app, Offscreen& off) {
-    offscreenNewFrame(off.context, kFrameSeconds);
+    if (off.pixels) {
+        offscreenNewFrame(off.context, kFrameSeconds);
+    } else { // the frame's input as offscreenNewFrame gives it, and no renderer
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = ImVec2(static_cast<float>(off.width), static_cast<float>(off.height));
+        io.DeltaTime = static_cast<float>(kFrameSeconds);
+        io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+    }
     ImGui::NewFrame();
     appFrame(app, {}, kFrameSeconds, false);
     ImGui::Render();
+    if (!off.pixels) return;
     appRender(app, off.renderer, off.context.width, off.context.height);
     uiRendererRender(ImGui::GetDrawData());
     offscreenFinish(off.context);
@@ -212,7 +226,7 @@ int screenshot(App& app, Offscreen& off, const Options& o) {
     if (app.view.show.cost)
         app.sim.cost.runSweepNow(quickTradeoffSweep(app.shipped.scenesDir)); // the chart
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off);
-    const int code = writeScreenshot(off, o);
+    const int code = off.pixels ? writeScreenshot(off, o) : 0;
     if (code != 0) return code;
     if (!o.layoutJson.empty() && !writeLayoutJson(app, o.layoutJson)) return 1;
     if (!o.textJson.empty() && !writeTextJson(o.textJson)) return 1;
@@ -264,25 +278,20 @@ int record(App& app, Offscreen& off, const Options& o) {
     return 0;
 }
 
-// The frame rendered last as three files: BASE.png, BASE.layout.json (--layout-json) and
-// BASE.text.json (--text-json).
+// The frame rendered last as three files: BASE.png (with pixels), BASE.layout.json
+// (--layout-json) and BASE.text.json (--text-json).
 bool writeFrameFiles(const App& app, const Offscreen& off, const std::string& base) {
-    return writeFrame(off, base + ".png") && writeLayoutJson(app, base + ".layout.json") &&
-           writeTextJson(base + ".text.json");
+    return (!off.pixels || writeFrame(off, base + ".png")) &&
+           writeLayoutJson(app, base + ".layout.json") && writeTextJson(base + ".text.json");
 }
 
-// Every lesson step twice, a handout that the lesson sweep (ctest) also reads: at its setup
-// (t = 0, the question asked: DIR/step_NN_setup.*) and at its moment (its pause point, the answer
-// shown: DIR/step_NN_moment.*), each as a PNG with its layout and its texts (writeFrameFiles).
-int recordSteps(App& app, Offscreen& off, const Options& o) {
-    if (!makeDirectory(o.recordSteps)) return 1;
-    if (!app.lesson.active()) {
-        std::fprintf(stderr, "sandbox: --record-steps needs a lesson\n");
-        return 1;
-    }
-    const std::size_t steps = app.lesson.lesson->steps.size();
+// Every lesson step twice into `dir`: at its setup (t = 0, the question asked: DIR/step_NN_setup.*)
+// and at its moment (its pause point, the answer shown: DIR/step_NN_moment.*), each with its
+// layout and its texts (writeFrameFiles).
+bool recordStepsInto(App& app, Offscreen& off, const std::string& dir) {
+    if (!makeDirectory(dir)) return false;
     char name[32];
-    for (std::size_t i = 0; i < steps; ++i) {
+    for (std::size_t i = 0; i < app.lesson.lesson->steps.size(); ++i) {
         enterStep(app, i);
         for (const char* at : {"setup", "moment"}) {
             if (std::string(at) == "moment") lessonShowPausePoint(app);
@@ -290,10 +299,41 @@ int recordSteps(App& app, Offscreen& off, const Options& o) {
                 app.sim.cost.runSweepNow(quickTradeoffSweep(app.shipped.scenesDir));
             for (int k = 0; k < kSettleFrames; ++k) renderFrame(app, off);
             std::snprintf(name, sizeof name, "/step_%02zu_%s", i + 1, at);
-            if (!writeFrameFiles(app, off, o.recordSteps + name)) return 1;
+            if (!writeFrameFiles(app, off, dir + name)) return false;
         }
     }
-    std::printf("wrote %zu steps to %s\n", steps, printable(o.recordSteps, kPrintablePath).c_str());
+    return true;
+}
+
+// A handout that the lesson sweep (ctest) also reads: every step's setup and moment as PNGs with
+// their JSON (recordStepsInto); with --screens, at each of those screens and UI scales
+// (--screens all: classroomScreens), each into DIR/WxH_uiS/, as JSON only.
+int recordSteps(App& app, Offscreen& off, const Options& o) {
+    if (!makeDirectory(o.recordSteps)) return 1;
+    if (!app.lesson.active()) {
+        std::fprintf(stderr, "sandbox: --record-steps needs a lesson\n");
+        return 1;
+    }
+    const std::size_t steps = app.lesson.lesson->steps.size();
+    if (o.screens.empty()) {
+        if (!recordStepsInto(app, off, o.recordSteps)) return 1;
+        std::printf("wrote %zu steps to %s\n", steps,
+                    printable(o.recordSteps, kPrintablePath).c_str());
+        return 0;
+    }
+    int screens = 0;
+    for (const ClassroomScreen& screen : o.screens) {
+        off.width = screen.width;
+        off.height = screen.height;
+        ImGui::GetIO().DisplaySize =
+            ImVec2(static_cast<float>(screen.width), static_cast<float>(screen.height));
+        setUiScale(app.view, screen.uiScale);
+        uiApplyLook(app.view.uiScale, app.view.labelScale, app.view.lightTheme); // for its height
+        if (!recordStepsInto(app, off, o.recordSteps + "/" + screen.name())) return 1;
+        ++screens;
+    }
+    std::printf("wrote %zu steps at %d screens to %s\n", steps, screens,
+                printable(o.recordSteps, kPrintablePath).c_str());
     return 0;
 }
 
@@ -340,7 +380,7 @@ std::string outputOverLessonScene(const App& app, const Options& o) {
 int runOffscreen(const Options& options) {
     Options o = options;
     if (o.screenshot.empty() && o.record.empty() && o.benchmarkFrames <= 0 &&
-        o.recordSteps.empty() && o.audioWav.empty()) {
+        o.recordSteps.empty() && o.audioWav.empty() && o.layoutJson.empty() && o.textJson.empty()) {
         o.screenshot = "sandbox-screenshot.png";
     }
     App app;
@@ -354,7 +394,8 @@ int runOffscreen(const Options& options) {
         return 2;
     }
     if (o.screenshot.empty() && o.record.empty() && o.benchmarkFrames <= 0 &&
-        o.recordSteps.empty()) { // --audio-wav alone: simulate and listen, draw nothing
+        o.recordSteps.empty() && o.layoutJson.empty() &&
+        o.textJson.empty()) { // --audio-wav alone: simulate and listen, draw nothing
         if (app.lesson.active()) lessonShowPausePoint(app);
         AudioTrack track = startTrack(app, o, o.frames);
         if (track.tooLong) return 1;
@@ -369,6 +410,18 @@ int runOffscreen(const Options& options) {
     ImGui::GetIO().DisplaySize = ImVec2(static_cast<float>(o.width), static_cast<float>(o.height));
     uiApplyLook(app.view.uiScale, app.view.labelScale, app.view.lightTheme);
     Offscreen off;
+    off.width = o.width;
+    off.height = o.height;
+    // No image asked for (the JSON alone, or every size's): nothing is rasterised.
+    off.pixels = o.screens.empty() && (!o.screenshot.empty() || !o.record.empty() ||
+                                       o.benchmarkFrames > 0 || !o.recordSteps.empty());
+    if (!off.pixels) {
+        ImGui::GetIO().Fonts->Build(); // ImGui lays text out with the atlas (never uploaded)
+        const int code =
+            !o.recordSteps.empty() ? recordSteps(app, off, o) : screenshot(app, off, o);
+        uiDestroyContext();
+        return code;
+    }
     if (!offscreenInit(off.context, o.width, o.height, &error)) {
         std::fprintf(stderr, "sandbox: %s\n", error.c_str());
         uiDestroyContext();

@@ -206,7 +206,10 @@ void logStateChanges(App& app) {
 
 void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, bool runClock) {
     const ImGuiIO& io = ImGui::GetIO();
-    const auto layOut = [&app, &io] { updateCamera(app, io.DisplaySize.x, io.DisplaySize.y); };
+    const auto layOut = [&app, &io] {
+        planLessonCaption(app); // the bar's height for the step shown (a key may change it)
+        updateCamera(app, io.DisplaySize.x, io.DisplaySize.y);
+    };
     layOut();
     // Input: the keys pressed (F6 reads the windows the last frame drew), the thrust's arrow keys
     // held (not while typing into a field or moving the keyboard's focus ring), the mouse in the

@@ -32,7 +32,10 @@ void pollSection(App& app);
 void drawHelpWindow(App& app);
 // The quit dialog (unsaved edits) and the Save dialog (a name; overwriting asks), when open.
 void drawDialogs(App& app);
-// The lesson's caption bar over the top of the scene ("n / N · title", caption, question).
+// The lesson's caption bar across the top ("n / N · title", caption, question): its height for
+// the open step on this screen (app.view.captionHeight, before the frame is laid out; planned
+// once a step and screen), then drawn.
+void planLessonCaption(App& app);
 void drawLessonCaption(App& app);
 // The mouse in the scene (mouse_tool.h): select, drag, fling, pan, zoom.
 void handleSceneMouse(App& app);

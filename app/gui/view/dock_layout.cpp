@@ -61,8 +61,28 @@ bool sheetLayout(double displayWidth, float uiScale) {
     return displayWidth < kSheetBelowPx * static_cast<double>(uiScale > 0.0f ? uiScale : 1.0f);
 }
 
+namespace {
+
+void shiftDown(ScreenRect& r, double dy) {
+    r.y += dy;
+}
+
+} // namespace
+
 Layout computeLayout(const LayoutInput& in) {
     const double W = std::max(1.0, in.displayWidth), H = std::max(1.0, in.displayHeight);
+    if (in.topInset > 0.0) { // the caption bar across the top: the rest laid out below it
+        const double top = std::round(std::clamp(in.topInset, 0.0, H - 1.0));
+        LayoutInput below = in;
+        below.displayHeight = H - top;
+        below.topInset = 0.0;
+        below.shareHeight = in.shareHeight > 0.0 ? in.shareHeight : H;
+        Layout out = computeLayout(below);
+        shiftDown(out.panel, top);
+        shiftDown(out.scene, top);
+        for (DockedWindow& w : out.windows) shiftDown(w.rect, top);
+        return out;
+    }
     if (in.panelHeight > 0.0) { // a sheet: the rest is laid out above it, windows in the strip
         const double top = std::round(H - std::clamp(in.panelHeight, 1.0, H - 1.0));
         LayoutInput above = in;
@@ -77,6 +97,7 @@ Layout computeLayout(const LayoutInput& in) {
     }
     Layout out;
     const double s = in.uiScale > 0.0f ? static_cast<double>(in.uiScale) : 1.0;
+    const double shareH = in.shareHeight > 0.0 ? in.shareHeight : H; // what heightShare is of
     const double panel = std::clamp(in.panelWidth, 0.0, W * 0.5);
     out.panel = panel > 0.0 ? fromEdges(0.0, 0.0, panel, H) : ScreenRect{0.0, 0.0, 0.0, H};
     const double areaX = out.panel.width, areaW = W - areaX;
@@ -94,7 +115,7 @@ Layout computeLayout(const LayoutInput& in) {
         std::vector<double> heights;
         double total = 0.0;
         for (const DockRequest* r : under) {
-            heights.push_back(leastExtent(*r, s, H));
+            heights.push_back(leastExtent(*r, s, shareH));
             total += heights.back() + gap;
         }
         const double shrink = std::min(1.0, H * kMaxPanelDockShare / total);
@@ -115,12 +136,10 @@ Layout computeLayout(const LayoutInput& in) {
                                          : std::min(std::max(wanted(bottom, s), H * kMinStripShare),
                                                     H * kMaxStripShare);
     const double columnX = W - columnW, stripY = H - stripH;
-    const double top = std::clamp(in.topInset, 0.0, std::max(0.0, stripY - 1.0));
-
     // The right column, above the strip, windows stacked top to bottom.
     const double columnH = bottom.empty() ? H : stripY;
-    const std::vector<double> heights = share(right, columnH - top, gap, s, H);
-    double y = top;
+    const std::vector<double> heights = share(right, columnH, gap, s, shareH);
+    double y = 0.0;
     for (std::size_t i = 0; i < right.size(); ++i) {
         const double y1 = i + 1 == right.size() ? columnH : y + heights[i];
         out.windows.push_back({right[i]->name, fromEdges(columnX + gap, y, W, y1)});
@@ -135,7 +154,7 @@ Layout computeLayout(const LayoutInput& in) {
         out.windows.push_back({bottom[i]->name, fromEdges(x, stripY + gap, x1, H)});
         x = x1 + gap;
     }
-    out.scene = fromEdges(areaX, top, std::max(areaX + 1.0, columnX), std::max(top + 1.0, stripY));
+    out.scene = fromEdges(areaX, 0.0, std::max(areaX + 1.0, columnX), std::max(1.0, stripY));
     return out;
 }
 

@@ -59,7 +59,12 @@ struct LayoutInput {
     float uiScale = 1.0f;
     double panelWidth = 0.0;  // 0: no panel (hidden, or present mode)
     double panelHeight = 0.0; // > 0: the panel is a sheet this high along the bottom
-    double topInset = 0.0;    // px right of the panel kept free at the top (a lesson's caption)
+    // px kept free across the whole width at the top (a lesson's caption bar): the panel, the
+    // windows and the scene share what is below it.
+    double topInset = 0.0;
+    // The height the windows' heightShare is of (0: displayHeight): the image's, also below a
+    // caption bar (a plot is 13% of the screen's height wherever it is).
+    double shareHeight = 0.0;
     std::vector<DockRequest> windows;
 };
 

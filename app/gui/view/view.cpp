@@ -1,9 +1,31 @@
 #include "view.h"
 
 #include <algorithm>
+#include <cstdio>
 
 double panelWidth(float uiScale, double displayWidth) {
-    return std::min(350.0 * static_cast<double>(uiScale), displayWidth * 0.45);
+    return std::min(kPanelPxAtScale1 * static_cast<double>(uiScale), displayWidth * kMaxPanelShare);
+}
+
+bool panelFits(float uiScale, double displayWidth) {
+    return kPanelPxAtScale1 * static_cast<double>(uiScale) <= displayWidth * kMaxPanelShare;
+}
+
+std::string ClassroomScreen::name() const {
+    char text[64];
+    std::snprintf(text, sizeof text, "%dx%d_ui%g", width, height, static_cast<double>(uiScale));
+    return text;
+}
+
+std::vector<ClassroomScreen> classroomScreens() {
+    constexpr int kSizes[][2] = {{1024, 768},  {1280, 720},  {1280, 800}, {1366, 768},
+                                 {1920, 1080}, {1920, 1200}, {3840, 2160}};
+    constexpr float kScales[] = {1.0f, 1.25f, 1.5f, 2.0f};
+    std::vector<ClassroomScreen> out;
+    for (const auto& size : kSizes)
+        for (const float scale : kScales)
+            if (panelFits(scale, size[0])) out.push_back({size[0], size[1], scale});
+    return out;
 }
 
 Layout computeAppLayout(const View& view, bool captionBar, double displayWidth,
@@ -23,7 +45,12 @@ Layout computeAppLayout(const View& view, bool captionBar, double displayWidth,
         in.panelWidth = panelWidth(view.uiScale, displayWidth);
     }
     for (const OverlayInfo& row : kOverlays) {
-        if (!row.title || !(view.show.*row.flag) || isFloating(view, row.title)) continue;
+        // Shown, or (in a lesson) opened at the step's moment: its room kept from the setup on,
+        // unless it docks under the panel (it takes that room from the panel, not the scene).
+        const bool underPanel = row.place.side == DockSide::Panel && in.panelWidth > 0.0;
+        const bool kept =
+            view.show.*row.flag || (captionBar && !underPanel && view.reserved.*row.flag);
+        if (!row.title || !kept || isFloating(view, row.title)) continue;
         in.windows.push_back({row.title, row.place.side, row.place.minExtent, row.place.weight,
                               row.place.crossExtent, row.place.heightShare});
     }

@@ -30,6 +30,10 @@ struct View {
     ViewFrame frame = ViewFrame::World;
     FrameCamera frameCamera;
     Overlays show;
+    // A lesson step's overlays that open at its moment (its "reveal"): their docked windows' room
+    // is kept from the setup on (computeAppLayout, with a caption bar; not of those under the
+    // panel, which take the panel's room), so the scene keeps its size at the answer.
+    Overlays reserved = ShowSet::noOverlays();
     bool overlaysChosen = false; // --show given: scenes no longer pick the default overlays
     bool uiVisible = true;
     float uiScale = 1.0f;
@@ -50,12 +54,29 @@ struct View {
     // Every mark an overlay drew over the scene this frame (the point of impact's boxes: "old",
     // "new", "POI", "moved back"), its rectangle on screen, by the label it carries.
     std::vector<DockedWindow> shownMarks;
-    double captionHeight = 0.0; // px a lesson's caption bar takes at the top of the scene
+    double captionHeight = 0.0; // px a lesson's caption bar takes across the top
     bool sheetOpen = false;     // narrow screens: the panel's sheet is open (sheetLayout)
 };
 
+// A lesson's caption bar takes at most this share of the screen's height (lesson_bar.cpp).
+constexpr double kMaxCaptionShare = 0.30;
 // Width of the controls panel in pixels for a UI scale and window width.
 double panelWidth(float uiScale, double displayWidth);
+// The panel fits beside the scene: its width at this UI scale (350 px at 1) is at most
+// kMaxPanelShare of the display's width (beyond it, panelWidth squeezes it).
+constexpr double kPanelPxAtScale1 = 350.0;
+constexpr double kMaxPanelShare = 0.45;
+bool panelFits(float uiScale, double displayWidth);
+
+// The screens a lecture hall may have (issue 39), each at the UI scales 1, 1.25, 1.5 and 2 where
+// the panel fits: what the lesson sweep checks (sandbox-offscreen --record-steps DIR
+// --screens all writes each into DIR/name()).
+struct ClassroomScreen {
+    int width = 0, height = 0;
+    float uiScale = 1.0f;
+    std::string name() const; // "1280x800_ui1.5"
+};
+std::vector<ClassroomScreen> classroomScreens();
 // This frame's layout: the panel (unless hidden), the shown overlay windows that are not floating
 // docked around the scene (none in present mode), and the scene's rectangle; `captionBar`: a
 // lesson's caption bar (captionHeight) takes the top of the scene.

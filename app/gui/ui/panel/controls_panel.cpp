@@ -367,6 +367,29 @@ void sheetBar(App& app) {
     if (ImGui::Button("Help", ImVec2(-1.0f, 0))) app.ui.helpOpen = !app.ui.helpOpen;
 }
 
+namespace {
+
+// The sections below Play, Step and Reset, `height` px high, scrolling on their own.
+void sectionsChild(App& app, float width, float height) {
+    ImGui::BeginChild("##sections", ImVec2(0.0f, height), false, imgui_ext::flattenedNavigation());
+    WholeRows wholeSections;
+    ImGui::PushItemWidth(width * 0.52f);
+    simulationSection(app);
+    physicsSection(app);
+    overlaysSection(app.view.show, app.ui.touchUi);
+    selectedSection(app);
+    statisticsSection(app.sim.run, app.ui);
+    viewSection(app);
+    fileSection(app);
+    compareSection(app);
+    pollSection(app);
+    ImGui::PopItemWidth();
+    wholeSections.end();
+    ImGui::EndChild();
+}
+
+} // namespace
+
 void drawControlsPanel(App& app) {
     const ImGuiIO& io = ImGui::GetIO();
     float width = static_cast<float>(panelWidth(app.view.uiScale, io.DisplaySize.x));
@@ -380,10 +403,11 @@ void drawControlsPanel(App& app) {
         ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(r.height)));
         flags |= ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar;
     } else {
-        // The column's top: windows docked under the panel (the plots) take its bottom.
+        // The column's top, under a lesson's caption bar: windows docked under the panel (the
+        // plots) take its bottom.
         const ScreenRect& r = app.view.layout.panel;
         const float height = r.height > 0.0 ? static_cast<float>(r.height) : io.DisplaySize.y;
-        ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+        ImGui::SetNextWindowPos(ImVec2(0, static_cast<float>(r.y)), ImGuiCond_Always);
         ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
     }
     if (!ImGui::Begin("Controls", nullptr, flags)) {
@@ -436,24 +460,10 @@ void drawControlsPanel(App& app) {
     runSection(app);
     // Play, Step and Reset stay in view: the sections below scroll on their own.
     // Flattened: the arrow keys go on from Reset into the sections (no Space to enter them).
-    // It shows whole rows only (WholeRows): a row its bottom edge would cut is hidden.
-    const float rows = std::max(1.0f, std::floor(ImGui::GetContentRegionAvail().y / row));
-    ImGui::BeginChild("##sections", ImVec2(0.0f, rows * row), false,
-                      imgui_ext::flattenedNavigation());
-    WholeRows wholeSections;
-    ImGui::PushItemWidth(width * 0.52f);
-    simulationSection(app);
-    physicsSection(app);
-    overlaysSection(app.view.show, app.ui.touchUi);
-    selectedSection(app);
-    statisticsSection(app.sim.run, app.ui);
-    viewSection(app);
-    fileSection(app);
-    compareSection(app);
-    pollSection(app);
-    ImGui::PopItemWidth();
-    wholeSections.end();
-    ImGui::EndChild();
+    // It shows whole rows only (WholeRows): a row its bottom edge would cut is hidden, and with
+    // no room for one row (a short panel over a lesson's plots) the sections are not drawn.
+    const float rows = std::floor(ImGui::GetContentRegionAvail().y / row);
+    if (rows >= 1.0f) sectionsChild(app, width, rows * row);
     ImGui::PopItemWidth();
     whole.end();
     ImGui::End();
