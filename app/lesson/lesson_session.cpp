@@ -112,7 +112,8 @@ bool enterStep(LessonSession& s, SimulationSession& sim, View& view, Messages& m
 
 void replayStep(LessonSession& s, SimulationSession& sim, View& view, Messages& messages) {
     if (!s.step()) return;
-    sim.reset(); // the lecturer's method and settings stay, as R outside lessons
+    sim.reset();                  // the lecturer's method and settings stay, as R outside lessons
+    sim.script = s.step()->input; // its player's keys played again (the arrows may have taken it)
     followNewRun(view, sim.world());
     LessonStep asRun = *s.step(); // where the step now pauses, with those settings
     Scene withSettings = *asRun.scene;
