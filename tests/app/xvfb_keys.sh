@@ -150,19 +150,23 @@ echo "ok: F5 while typing is present mode (and back)"
 # PageDown while typing: the lesson's next (step 1 plays), the field left with its 0.8.
 type_into_slider 0 period 8
 wait_after "^bounciness: 0.8$"
+start=$(count_lines)
 press Next "^key PageDown: lesson-next$" "^resumed$"
 lecture_keys_only
 echo "ok: PageDown while typing steps the lesson"
+# The step plays to its moment and pauses there by itself (2.5 s of its run).
+wait_after "^paused$"
 
-# Right three times with the slider last worked: step 1 shows its moment, step 2, it plays.
-press Right "^key Right: lesson-next$" "^paused$"
-lecture_keys_only
+# Right three times with the slider last worked: step 2, it plays, then its moment (Right while
+# it runs) or step 3 (when it has paused there by itself already).
 press Right "^key Right: lesson-next$" "^lesson step 2 / 27 "
 lecture_keys_only
 press Right "^key Right: lesson-next$" "^resumed$"
 lecture_keys_only
+press Right "^key Right: lesson-next$" "^\(paused\|lesson step 3 / 27 .*\)$"
+lecture_keys_only
 no_ring right3
-echo "ok: Right three times steps the lesson (moment, step 2, play); no focus ring"
+echo "ok: Right three times steps the lesson (step 2, play, its moment or step 3); no focus ring"
 
 # Space: slow motion, and nothing else (the bug ticked the no-approach-test mistake).
 press space "^key Space: slow-motion$" "^slow motion: on$"
