@@ -40,5 +40,6 @@ std::string sceneToJson(const Scene& scene);
 bool saveSceneFile(const Scene& scene, const std::string& path, std::string* error);
 
 World makeWorld(const Scene& scene);
-// The current state of `world` as a scene, keeping names and colours from `original`.
+// The current state of `world` as a scene, keeping from `original` what a world does not hold:
+// the name, description and duration, the blocks' names and colours, and the player.
 Scene sceneFromWorld(const World& world, const Scene& original);

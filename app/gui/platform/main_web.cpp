@@ -13,6 +13,7 @@
 #include "options.h"
 #include "page_controls.h"
 #include "renderer.h"
+#include "spoken_text.h"
 #include "touch_input.h"
 #include "ui_renderer_gl.h"
 #include "ui_style.h"
@@ -50,6 +51,7 @@ struct WebApp {
     long long frames = 0;
     double realTime = 0.0;  // s since the first frame (the live region's pace)
     std::string shownState; // pageStateJson() as the page last got it
+    SpokenScreen spoken;    // the screen as the live region last told it (spoken_text.h)
     double stateAt = -1e9;  // realTime when the page's text was last made
     double linkAt = -1e9;   // the page's clock (s) when the link was last looked at
 };
@@ -174,7 +176,8 @@ void answerRequests(WebApp& w) {
 constexpr double kPageTextSeconds = 0.25;
 
 // The page's text for a screen reader, kept in step with the canvas (within kPageTextSeconds),
-// and the collisions through its live region (at most about one a second).
+// and through its live region each step entered, its answer, every error (spokenChanges) and the
+// collisions (at most about one a second).
 void tellPage(WebApp& w, double realSeconds) {
     w.realTime += realSeconds;
     if (w.realTime - w.stateAt >= kPageTextSeconds) {
@@ -182,6 +185,9 @@ void tellPage(WebApp& w, double realSeconds) {
         std::string state = pageStateJson(w.app);
         if (state != w.shownState) pageShowState(state);
         w.shownState = std::move(state);
+        SpokenScreen spoken = spokenScreen(w.app);
+        for (const std::string& line : spokenChanges(w.spoken, spoken)) pageAnnounce(line);
+        w.spoken = std::move(spoken);
     }
     const std::string said = w.app.sim.announcer.announce(
         w.realTime, [&](int i) { return w.app.sim.blockDisplayName(i); });
