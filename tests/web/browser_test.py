@@ -43,8 +43,18 @@ DevTools protocol (python3-websocket). One check per run:
   hidden-control  the page's hidden C control sets the world's C; a refused value is said
   sound         M turns the sound on and lecture_example_1's collision plays a knock through
                 emscripten's OpenAL (a source of its Web Audio context has played)
-  keyboard      Tab, then the arrow keys, walk through at least 15 of the panel's controls, each
+  keyboard      F6, then the arrow keys, walk through at least 15 of the panel's controls, each
                 with the focus ring shown around it (keyboard_focus.png is written for looking)
+  keys          the lecture's keys whatever has the focus, as SandboxWindowXvfbKeys in the window,
+                checked through the --verbose log (the page's console): on lecture3, the C slider
+                clicked, then typed into (the digits and Enter the field's; Esc undoes; F5 and
+                PageDown act and leave the field), then Right three
+                times, Space, 1 3 Enter, S, Shift+R step the lesson, slow down, jump, change the
+                method and restore the step, and nothing else (no focus ring, the keyboard the
+                scene's); F5 is present mode and never reloads the page; F6 gives the panel the
+                keyboard (the ring shows), Esc gives it back; Tab leaves the canvas for the page's
+                own controls (the app never sees it) and Shift+Tab comes back; on step 26 the
+                arrows drive the player
   shots DIR     writes screenshots into DIR to look at (docs/web/): 390x844 (a phone, the panel
                 closed and open), 1024x768 (a tablet), 1366x768 (a laptop), 1280x720 and
                 1920x1080 (projectors)
@@ -61,6 +71,7 @@ import http.server
 import io
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -121,6 +132,7 @@ class Page:
         self.ws = websocket.create_connection(page["webSocketDebuggerUrl"], timeout=HANG_GUARD_S)
         self.next_id = 0
         self.errors = []
+        self.logs = []  # the page's console.log lines (the app's stdout: --verbose)
         self.dialogs = []  # the types of the dialogs the page opened (accepted)
         self.call("Runtime.enable")
         self.call("Log.enable")
@@ -156,6 +168,9 @@ class Page:
             self.next_id += 1
             self.ws.send(json.dumps({"id": self.next_id, "method": "Page.handleJavaScriptDialog",
                                      "params": {"accept": True}}))
+        if method == "Runtime.consoleAPICalled" and params.get("type") == "log":
+            self.logs.extend(" ".join(str(a.get("value", "")) for a in params["args"])
+                             .split("\n"))
         if method == "Runtime.consoleAPICalled" and params.get("type") in ("error", "assert"):
             text = " ".join(str(a.get("value", a.get("description", ""))) for a in params["args"])
             self.errors.append(f"console.error: {text}")
@@ -207,16 +222,26 @@ class Page:
         data = self.call("Page.captureScreenshot", format="png")["data"]
         return base64.b64decode(data)
 
-    def key(self, key, code, key_code, ctrl=False):
-        # Emscripten's GLFW knows Ctrl from the Control key's own press, as a keyboard sends it.
+    def key(self, key, code, key_code, ctrl=False, shift=False, kinds=("keyDown", "keyUp"),
+            text=None):
+        # Emscripten's GLFW knows Ctrl and Shift from their own keys' presses, as a keyboard
+        # sends them. `text`: the character the key types (a keypress: a text field's input).
         control = dict(key="Control", code="ControlLeft", windowsVirtualKeyCode=17,
                        nativeVirtualKeyCode=17)
+        shift_key = dict(key="Shift", code="ShiftLeft", windowsVirtualKeyCode=16,
+                         nativeVirtualKeyCode=16)
+        modifiers = (2 if ctrl else 0) | (8 if shift else 0)
         if ctrl:
             self.call("Input.dispatchKeyEvent", type="rawKeyDown", modifiers=2, **control)
-        for kind in ("keyDown", "keyUp"):
+        if shift:
+            self.call("Input.dispatchKeyEvent", type="rawKeyDown", modifiers=modifiers, **shift_key)
+        for kind in kinds:
+            typed = dict(text=text) if text and kind == "keyDown" else {}
             self.call("Input.dispatchKeyEvent", type=kind, key=key, code=code,
-                      modifiers=2 if ctrl else 0, windowsVirtualKeyCode=key_code,
-                      nativeVirtualKeyCode=key_code)
+                      modifiers=modifiers, windowsVirtualKeyCode=key_code,
+                      nativeVirtualKeyCode=key_code, **typed)
+        if shift:
+            self.call("Input.dispatchKeyEvent", type="keyUp", modifiers=modifiers & 2, **shift_key)
         if ctrl:
             self.call("Input.dispatchKeyEvent", type="keyUp", **control)
 
@@ -671,10 +696,10 @@ def focus_ring_shown(img, rect):
 
 def keyboard(page, base):
     page.open(base)
-    page.key("Tab", "Tab", 9)
+    page.key("F6", "F6", 117)
     page.wait_frames(3)
     s = page.status()
-    check(s["navVisible"], f"Tab did not show the focus ring: {s}")
+    check(s["navVisible"], f"F6 did not show the focus ring: {s}")
     seen, unringed = {}, []
     for _ in range(40):
         s = page.status()
@@ -691,8 +716,189 @@ def keyboard(page, base):
         page.wait_frames(2)
     check(len(seen) >= 15, f"the arrows reached only {len(seen)} controls")
     check(not unringed, f"no focus ring seen around {unringed}")
-    print(f"Tab and the arrows walked through {len(seen)} controls, each with its focus ring "
+    print(f"F6 and the arrows walked through {len(seen)} controls, each with its focus ring "
           f"(keyboard_focus.png: the 15th)")
+
+
+def keys(page, base):
+    page.open(base + "?lesson=lecture3")
+    page.wait_frames(3)
+    page.evaluate("Module._sandbox_web_verbose(1)")
+    canvas_focused = "document.activeElement === canvas"
+    check(page.evaluate(canvas_focused), "the canvas does not have the focus at first")
+
+    def press(key, code, key_code, want, shift=False, kinds=("keyDown", "keyUp"), text=None):
+        """The key, then each line of `want` (regular expressions) in the log; then 10 frames for
+        anything else it would do. Returns the lines it caused."""
+        start = len(page.logs)
+        page.key(key, code, key_code, shift=shift, kinds=kinds, text=text)
+        for w in want:
+            def seen():
+                page.status()  # the console's lines arrive with the page's answers
+                return any(re.search(w, line) for line in page.logs[start:])
+            page.wait(seen, f"{w!r} in the log after {key} (log: {page.logs[start:]})")
+        page.wait_frames(10)
+        page.status()
+        return page.logs[start:]
+
+    def only(said, *patterns):
+        for line in said:
+            check(any(re.search(p, line) for p in patterns), f"unexpected {line!r} in {said}")
+
+    def lecture_keys_only(said):
+        for bad in ("keyboard navigation", "^keyboard:", "^mistakes"):
+            check(not any(re.search(bad, line) for line in said), f"{bad!r} in {said}")
+        s = page.status()
+        check(not s["navVisible"] and s["keyboardWindow"] == "", f"a focus ring or a window "
+              f"has the keyboard: {s['navVisible']}, {s['keyboardWindow']!r}")
+
+    # The panel's C slider: a click sets C and leaves the keyboard to the scene.
+    slider = page.status()["bouncinessSlider"]
+    y = slider[1] + slider[3] / 2
+
+    def click_slider(x, ctrl=False):
+        control = dict(key="Control", code="ControlLeft", windowsVirtualKeyCode=17,
+                       nativeVirtualKeyCode=17)
+        if ctrl:
+            page.call("Input.dispatchKeyEvent", type="rawKeyDown", modifiers=2, **control)
+        page.mouse("mouseMoved", x, y)
+        page.wait_frames(1)
+        page.mouse("mousePressed", x, y, buttons=1, modifiers=2 if ctrl else 0)
+        page.wait_frames(2)
+        page.mouse("mouseReleased", x, y, modifiers=2 if ctrl else 0)
+        page.wait_frames(2)
+        if ctrl:
+            page.call("Input.dispatchKeyEvent", type="keyUp", **control)
+        page.mouse("mouseMoved", 1270, 715)  # the pointer off the panel (no tooltip)
+        page.wait_frames(2)
+
+    def type_into_slider(*digits):
+        """A Ctrl+click on the slider (a text field, all selected), then the digits, each the
+        field's ("key N: typing")."""
+        click_slider(slider[0] + slider[2] / 4, ctrl=True)
+        page.wait(lambda: page.status()["typing"], "the Ctrl+click to open the slider for typing")
+        said = []
+        for d in digits:
+            if d == ".":
+                said += press(".", "Period", 190, [], text=".")
+            else:
+                said += press(d, f"Digit{d}", 48 + int(d), [rf"^key {d}: typing$"], text=d)
+        for bad in ("lesson-digit", "lesson step typed"):
+            check(not any(bad in line for line in said), f"{bad!r} while typing: {said}")
+        return said
+
+    # (The slider's rectangle holds its label too: 0.3 of it is about the middle of its bar.)
+    start = len(page.logs)
+    was = page.status()["bounciness"]
+    click_slider(slider[0] + slider[2] * 0.3)
+    s = page.status()
+    check(0.2 <= s["bounciness"] <= 0.7 and s["bounciness"] != was,
+          f"the click on the C slider: C = {s['bounciness']} (was {was})")
+    lecture_keys_only(page.logs[start:])
+    type_into_slider("0", ".", "7")
+    said = press("Enter", "Enter", 13, [r"^key Enter: typing$"])
+    check(not any("lesson-jump" in line for line in said), f"Enter: {said}")
+    s = page.status()
+    check(abs(s["bounciness"] - 0.7) < 1e-6 and not s["typing"],
+          f"typed 0.7 and Enter: C = {s['bounciness']}, typing {s['typing']}")
+    lecture_keys_only(said)
+    type_into_slider("0", ".", "3")
+    said = press("Escape", "Escape", 27, [r"^key Esc: escape$", r"^escape: the field left$",
+                                           r"^bounciness: 0.7$"])
+    only(said, r"^key Esc: escape$", r"^escape: the field left$", r"^bounciness: 0.7$")
+    check(not page.status()["typing"], "Esc did not leave the field")
+    type_into_slider("0", ".", "6")
+    said = press("F5", "F5", 116, [r"^key F5: present$", r"^present mode: on$"])
+    only(said, r"^key F5: present$", r"^present mode: on$", r"^bounciness: 0.6$")
+    press("F5", "F5", 116, [r"^present mode: off$"])
+    check(not page.status()["typing"], "F5 did not leave the field")
+    type_into_slider("0", ".", "8")
+    said = press("PageDown", "PageDown", 34, [r"^key PageDown: lesson-next$", r"^resumed$",
+                                              r"^paused$"])  # its moment, by itself (2.5 s)
+    lecture_keys_only(said)
+    check(abs(page.status()["bounciness"] - 0.8) < 1e-6, "the field's 8 was lost")
+    print("the C slider clicked, then typed into: the digits and Enter went to the field, Esc "
+          "undid the typing, F5 and PageDown acted and left the field")
+
+    # Right three times, the slider the last control worked: step 2, it plays, then its moment
+    # (Right while it runs) or step 3 (when it has paused there by itself already).
+    lecture_keys_only(press("ArrowRight", "ArrowRight", 39, [r"^key Right: lesson-next$",
+                                                                r"^lesson step 2 / 27 "]))
+    lecture_keys_only(press("ArrowRight", "ArrowRight", 39, [r"^key Right: lesson-next$",
+                                                                r"^resumed$"]))
+    lecture_keys_only(press("ArrowRight", "ArrowRight", 39, [r"^key Right: lesson-next$",
+                                                                r"^(paused|lesson step 3 / 27 .*)$"]))
+    said = press(" ", "Space", 32, [r"^key Space: slow-motion$", r"^slow motion: on$"])
+    only(said, r"^key Space: slow-motion$", r"^slow motion: on$")
+    lecture_keys_only(said)
+    press("1", "Digit1", 49, [r"^key 1: lesson-digit$"])
+    press("3", "Digit3", 51, [r"^key 3: lesson-digit$", r"^lesson step typed: 13$"])
+    lecture_keys_only(press("Enter", "Enter", 13, [r"^key Enter: lesson-jump$",
+                                                     r"^lesson step 13 / 27 "]))
+    check(page.status()["lessonStep"] == 13, f"1 3 Enter: step {page.status()['lessonStep']}")
+    said = press("s", "KeyS", 83, [r"^key S: cycle-method$", r"^method: move-and-correct$"])
+    only(said, r"^key S: cycle-method$", r"^method: move-and-correct$")
+    said = press("R", "KeyR", 82, [r"^key Shift\+R: reset-to-file$",
+                                   r"^lesson step as written 13$", r"^method: perfect$"],
+                 shift=True)
+    lecture_keys_only(said)
+    print("Right x3, Space, 1 3 Enter, S and Shift+R did what the key table says, and nothing "
+          "else (no focus ring, the keyboard the scene's)")
+
+    # F5: present mode, never a reload. Headless Chromium reloads on no synthetic F5 (tried: not
+    # even on a form control), so what is checked is what stops a browser's reload: the key
+    # event's default is prevented (seen by a listener after the page's), and the page is still
+    # the same page.
+    page.evaluate("window.sandboxNotReloaded = true; window.addEventListener('keydown', e => { "
+                  "if (e.key === 'F5') window.sandboxF5Prevented = e.defaultPrevented; })")
+    said = press("F5", "F5", 116, [r"^key F5: present$", r"^present mode: on$"])
+    only(said, r"^key F5: present$", r"^present mode: on$")
+    check(page.evaluate("window.sandboxF5Prevented") is True, "F5's default (reload) was not "
+          f"prevented: {page.evaluate('window.sandboxF5Prevented')}")
+    check(page.evaluate("window.sandboxNotReloaded === true"), "F5 reloaded the page")
+    check(page.status()["presentMode"], "F5: not in present mode")
+    press("F5", "F5", 116, [r"^present mode: off$"])
+    check(page.evaluate("window.sandboxNotReloaded === true"), "F5 reloaded the page")
+    print("F5 toggled present mode twice; its default (a reload) was prevented, the page stayed")
+
+    # F6: the panel has the keyboard (its ring shows); Down moves the ring; Esc gives it back.
+    press("F6", "F6", 117, [r"^keyboard: Controls$"])
+    page.wait_frames(3)
+    check(page.status()["navVisible"], "F6 showed no focus ring")
+    said = press("ArrowDown", "ArrowDown", 40, [r"^key Down: keyboard navigation$"])
+    check(not any(line.startswith("lesson step") for line in said), f"Down: {said}")
+    press("Escape", "Escape", 27, [r"^keyboard: scene$"])
+    check(not page.status()["navVisible"], "the focus ring stays after Esc")
+    print("F6 gave the panel the keyboard with its ring, Esc gave it back")
+
+    # Tab leaves the canvas for the page's first control (the app sees no Tab); Shift+Tab comes
+    # back, and the keys are the sandbox's again.
+    start = len(page.logs)
+    page.key("Tab", "Tab", 9)
+    page.wait(lambda: page.evaluate("document.activeElement.id") == "c-scene",
+              "Tab to move the focus to the page's scene control")
+    page.wait_frames(5)
+    page.status()
+    check(not any(line.startswith("key Tab") for line in page.logs[start:]),
+          f"the app saw the Tab: {page.logs[start:]}")
+    check(page.status()["keyboardWindow"] == "", "Tab gave a window the keyboard")
+    page.key("Tab", "Tab", 9, shift=True)
+    page.wait(lambda: page.evaluate(canvas_focused), "Shift+Tab to come back to the canvas")
+    lecture_keys_only(press("ArrowRight", "ArrowRight", 39, [r"^key Right: lesson-next$"]))
+    print("Tab left the canvas for the page's controls (the app saw no Tab); Shift+Tab came back")
+
+    # Step 26 plays its player's keys itself: Left (which it never presses) takes the player.
+    press("2", "Digit2", 50, [r"^key 2: lesson-digit$"])
+    press("6", "Digit6", 54, [r"^key 6: lesson-digit$"])
+    press("Enter", "Enter", 13, [r"^lesson step 26 / 27 "])
+    press("PageDown", "PageDown", 34, [r"^key PageDown: lesson-next$", r"^resumed$"])
+    said = press("ArrowLeft", "ArrowLeft", 37, [r"^key Left: thrust-left$",
+                                               r"^player: the arrow keys drive it",
+                                               r"^player keys: left$"], kinds=("keyDown",))
+    said += press("ArrowLeft", "ArrowLeft", 37, [r"^player keys: none$"], kinds=("keyUp",))
+    check(not any(line.startswith("lesson step") for line in said), f"Left stepped: {said}")
+    check(page.status()["lessonStep"] == 26, "the arrows stepped the lesson")
+    print("on step 26 Left drove the player (the step's own input stopped)")
 
 
 def phone(base):
@@ -863,7 +1069,7 @@ def main():
               "url-lesson": url_lesson, "url-bad": url_bad, "open-file": open_file,
               "wheel": wheel, "trackers": trackers, "unsaved": unsaved, "link": link,
               "axe": axe, "live-region": live_region, "hidden-control": hidden_control,
-              "keyboard": keyboard, "sound": sound}
+              "keyboard": keyboard, "keys": keys, "sound": sound}
     try:
         if what == "shots":
             shots(base, sys.argv[3])

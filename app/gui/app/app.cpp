@@ -166,7 +166,7 @@ void requestQuit(App& app) {
     app.ui.quitDialogOpen = true;
 }
 
-EscapeEffect pressEscape(App& app) {
+EscapeEffect pressEscape(App& app, bool keyboardBack) {
     UiState& ui = app.ui;
     const EscapeEffect e = escapeEffect(ui.quitDialogOpen || ui.saveDialogOpen, ui.helpOpen,
                                         app.view.presentMode, app.view.fullscreen);
@@ -185,6 +185,7 @@ EscapeEffect pressEscape(App& app) {
         ui.fullscreenRequested = true;
         break;
     case EscapeEffect::Nothing:
+        if (keyboardBack) break; // that was its effect
         ui.messages.note = ui.inBrowser
                                ? "Esc closes windows and leaves present mode or full screen."
                                : "Esc closes windows and leaves present mode or fullscreen; "

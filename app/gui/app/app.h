@@ -51,6 +51,14 @@ struct UiState {
     // The window the keyboard focus goes to this frame (Tab: the panel, F6: the next window);
     // "" when none. recordShownWindow moves ImGui's navigation there as the window is drawn.
     std::string keyboardFocus;
+    // Who has the keyboard: "" the scene (every key is the key table's: the lecture's keys always
+    // work and no focus ring shows; a slider dragged or a field clicked leaves it so), else the
+    // window given it (F6, Tab; then a click in another window moves it there; ImGui's keyboard
+    // navigation takes the arrows: input_map.h's routeKey) until Esc, a click in the scene or the
+    // window going away gives it back (app_frame.cpp).
+    std::string keyboardWindow;
+    // The window a mouse button was pressed in this frame ("" none: the scene, or no press).
+    std::string clickedWindow;
     bool helpOpen = false;
     bool firstLaunch = false; // no settings file yet: the start hint names the first keys
     // Dialogs: quit with unsaved edits, and Save (a name, and whether to overwrite).
@@ -145,8 +153,9 @@ void noteFrameShown(UiState& ui, double realSeconds);
 // Ctrl+Q or the window's close button: quits, or opens the quit dialog when there are unsaved
 // edits (a second request while it is open quits).
 void requestQuit(App& app);
-// Esc (see escapeEffect): returns what it did.
-EscapeEffect pressEscape(App& app);
+// Esc (see escapeEffect): returns what it did. `keyboardBack`: it also gives the keyboard back to
+// the scene (app_frame.cpp), so that doing nothing else needs no note.
+EscapeEffect pressEscape(App& app, bool keyboardBack = false);
 
 // Saves the current state to `path` (made absolute), which then is the current scene's file;
 // sets the note or the error.

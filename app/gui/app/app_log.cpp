@@ -3,6 +3,7 @@
 #include "settings_table.h"
 
 #include <cstdio>
+#include <utility>
 
 namespace {
 
@@ -28,6 +29,10 @@ LoggedState snapshotForLog(const SimulationSession& sim, const View& view,
     const Vec2 pushing = sim.thrustForce();
     s.thrustX = pushing.x;
     s.thrustY = pushing.y;
+    for (const auto& [held, name] :
+         {std::pair{sim.playerKeys.left, "left"}, std::pair{sim.playerKeys.right, "right"},
+          std::pair{sim.playerKeys.up, "up"}})
+        if (held) s.playerKeys += (s.playerKeys.empty() ? "" : "+") + std::string(name);
     s.timeScale = sim.timeScale;
     s.uiScale = view.uiScale;
     s.blocks = static_cast<int>(sim.world().blocks.size());
@@ -61,6 +66,8 @@ std::vector<std::string> describeChanges(const LoggedState& a, const LoggedState
                           ? std::string("thrust released")
                           : "thrust held: " + number(b.thrustX) + "," + number(b.thrustY) + " N");
     }
+    if (a.playerKeys != b.playerKeys)
+        out.push_back("player keys: " + (b.playerKeys.empty() ? "none" : b.playerKeys));
     if (a.timeScale != b.timeScale) out.push_back("time scale: " + number(b.timeScale));
     if (a.uiScale != b.uiScale) out.push_back("ui scale: " + number(b.uiScale));
     if (a.blocks != b.blocks) out.push_back("blocks: " + std::to_string(b.blocks));

@@ -21,6 +21,7 @@ struct LoggedState {
     WorldSettings settings; // each scene key of settings_table.h: "method: turn-based"
     bool thrust = false;
     double thrustX = 0.0, thrustY = 0.0; // N, the held thrust this frame (zero: none)
+    std::string playerKeys; // the player's keys the arrows hold ("left+up"; "" none or scripted)
     double timeScale = 0.0;
     float uiScale = 0.0f;
     int blocks = 0;

@@ -1,6 +1,7 @@
 #include "input_map.h"
 
 #include <cmath>
+#include <utility>
 
 const std::vector<KeyBinding>& keyBindings() {
     static const std::vector<KeyBinding> bindings{
@@ -25,14 +26,22 @@ const std::vector<KeyBinding>& keyBindings() {
         {keys::kF5, false, Action::TogglePresent, "F5",
          "Present mode: only the scene and a caption (again: all back)"},
         {keys::kTab, false, Action::KeyboardFocus, "Tab",
-         "Keyboard: the focus ring on the panel's first control; then Tab and Shift+Tab go "
-         "from field to field (type a value, Enter), the arrows from control to control"},
-        {-1, false, Action::Navigate, "Arrows, Space, Enter, Esc",
-         "Keyboard, with the focus ring shown: the arrows move to a control; Space presses a "
-         "button, ticks a box, opens a section or a list; Enter types into a slider; Esc leaves "
-         "the controls (the arrows, Space and Enter act on the scene and the lesson again)"},
+         "Keyboard: the panel takes it, the focus ring on its first control; then Tab and "
+         "Shift+Tab go from field to field (type a value, Enter), the arrows from control to "
+         "control",
+         true, false, KeyWhen::Always,
+         "The page's own controls (the keyboard leaves the sandbox; Shift+Tab comes back)"},
         {keys::kF6, false, Action::NextWindow, "F6",
-         "Keyboard: the focus ring on the next window (the panel, each overlay window, Help)"},
+         "Keyboard: the panel takes it (again: the next window, each overlay window, Help), the "
+         "focus ring on its first control (a slider dragged or a field clicked leaves the "
+         "keyboard to these keys)"},
+        {-1, false, Action::Navigate, "Arrows, Space, Enter",
+         "Keyboard, while a window has it: the arrows move the focus ring from control to "
+         "control; Space presses a button, ticks a box, opens a section or a list; Enter types "
+         "into a slider. Esc or a click in the scene gives the keyboard back to the scene and "
+         "the lesson; the other keys here work either way. Typing into a field (Ctrl+click on "
+         "a slider): the keys type, except Esc (undo and leave), F1, F5, F6, F11, PageDown, "
+         "PageUp and Ctrl+Q (the field is left with what was typed)"},
         {keys::kF11, false, Action::ToggleFullscreen, "F11", "Fullscreen"},
         {keys::kF1, false, Action::ToggleHelp, "F1", "This help"},
         {keys::kA, false, Action::TogglePoll, "A",
@@ -49,7 +58,8 @@ const std::vector<KeyBinding>& keyBindings() {
          "Save the current state as a scene (the browser downloads it)"},
         {keys::kDelete, false, Action::DeleteSelected, "Delete", "Remove the selected block"},
         {keys::kEscape, false, Action::Escape, "Esc",
-         "Close Help or a dialog; leave present mode or fullscreen"},
+         "Close Help or a dialog; leave present mode or fullscreen; the keyboard back to the "
+         "scene"},
         {keys::kQ, true, Action::Quit, "Ctrl+Q", "Quit (asks when there are unsaved edits)", true,
          false, KeyWhen::Always, ""}, // a tab is closed by the browser (which asks, on edits)
         {keys::kPageDown, false, Action::LessonNext, "PageDown",
@@ -88,13 +98,62 @@ const std::vector<KeyBinding>& keyBindings() {
     return withDigits;
 }
 
-bool navigationKey(int key) {
-    static const int kNavigationKeys[] = {keys::kLeft,        keys::kRight, keys::kUp,
-                                          keys::kDown,        keys::kSpace, keys::kEnter,
-                                          keys::kKeypadEnter, keys::kTab,   keys::kEscape};
-    for (int k : kNavigationKeys)
-        if (k == key) return true;
-    return false;
+bool keepsWhileTyping(int key, Action action) {
+    // A function key, PageUp and PageDown type nothing; Esc leaves the field; Ctrl+Q quits.
+    const bool functionKey = key >= keys::kF1 && key <= keys::kF1 + 24;
+    return functionKey || key == keys::kPageUp || key == keys::kPageDown ||
+           action == Action::Escape || action == Action::Quit;
+}
+
+KeyRoute routeKey(int key, bool ctrl, Action action, bool typing, bool navigation, bool ring) {
+    if (typing) return keepsWhileTyping(key, action) ? KeyRoute::Table : KeyRoute::Typing;
+    if (!navigation || ctrl) return KeyRoute::Table;
+    switch (key) {
+    case keys::kLeft:
+    case keys::kRight:
+    case keys::kUp:
+    case keys::kDown:
+    case keys::kTab:
+    case keys::kHome:
+    case keys::kEnd:
+        return KeyRoute::Navigation;
+    case keys::kSpace:
+    case keys::kEnter:
+    case keys::kKeypadEnter:
+        return ring ? KeyRoute::Navigation : KeyRoute::Table;
+    default:
+        return KeyRoute::Table;
+    }
+}
+
+std::string keyName(int key, bool ctrl, bool shift) {
+    static const std::pair<int, const char*> kNames[] = {{keys::kSpace, "Space"},
+                                                         {keys::kMinus, "-"},
+                                                         {keys::kEqual, "="},
+                                                         {keys::kEscape, "Esc"},
+                                                         {keys::kEnter, "Enter"},
+                                                         {keys::kTab, "Tab"},
+                                                         {keys::kDelete, "Delete"},
+                                                         {keys::kRight, "Right"},
+                                                         {keys::kLeft, "Left"},
+                                                         {keys::kDown, "Down"},
+                                                         {keys::kUp, "Up"},
+                                                         {keys::kPageUp, "PageUp"},
+                                                         {keys::kPageDown, "PageDown"},
+                                                         {keys::kHome, "Home"},
+                                                         {keys::kEnd, "End"},
+                                                         {keys::kKeypadEnter, "Keypad Enter"},
+                                                         {keys::kKeypadAdd, "Keypad +"},
+                                                         {keys::kKeypadSubtract, "Keypad -"}};
+    std::string name;
+    if (key >= 'A' && key <= 'Z') name = std::string(1, static_cast<char>(key));
+    if (const int d = digitOfKey(key); d >= 0)
+        name = (key >= keys::kKeypad0 ? "Keypad " : "") + std::to_string(d);
+    if (key >= keys::kF1 && key <= keys::kF1 + 24) name = "F" + std::to_string(key - keys::kF1 + 1);
+    for (const auto& [code, text] : kNames)
+        if (code == key) name = text;
+    if (name.empty()) return "";
+    return std::string(ctrl ? "Ctrl+" : "") + (shift ? "Shift+" : "") + name;
 }
 
 int digitOfKey(int key) {

@@ -66,9 +66,9 @@ enum class Action {
     FitView,          // F: show the whole world
     ToggleSound,      // M: a knock at each collision (off by default outside lessons)
     TogglePresent,    // F5: present mode (the scene and a caption only), as slides start
-    KeyboardFocus,    // Tab: keyboard focus on the panel (ImGui's navigation, a focus ring)
-    NextWindow,       // F6: keyboard focus on the next window (panel, overlays, Help)
-    Navigate, // arrows, Space, Enter, Esc with the focus ring shown: ImGui's (navigationKey)
+    KeyboardFocus,    // Tab: the panel takes the keyboard (ImGui's navigation, a focus ring)
+    NextWindow,       // F6: the next window takes the keyboard (panel, overlays, Help)
+    Navigate,         // arrows, Space, Enter while a window has the keyboard: ImGui's (routeKey)
     ToggleFullscreen, // F11
     ToggleHelp,       // F1
     UiScaleUp,        // Ctrl+=
@@ -120,10 +120,26 @@ struct KeyBinding {
 
 // Every binding, in the order the Help window lists them.
 const std::vector<KeyBinding>& keyBindings();
-// The keys ImGui's keyboard navigation uses (arrows, Space, Enter, Tab, Esc): while its focus
-// ring is shown they move, press and leave the panel's controls, and no binding above applies
-// (the arrows step a lesson or push a thrust again once Esc has hidden the ring).
-bool navigationKey(int key);
+// Where a key press goes. The scene has the keyboard until a window is asked to take it (F6, or
+// Tab in the window); a click on a slider or a field works it with the mouse and leaves the
+// keyboard to the scene. While a window has the keyboard, ImGui's keyboard navigation is on
+// (`navigation`) and takes the keys that move its focus ring (arrows, Tab, Home, End), and Space
+// and Enter while the ring shows (`ring`: they press or type into the control it is on).
+// Everything else is the table's, whatever has the keyboard: PageDown, PageUp, the digits, P, R,
+// S, F5, Esc (which gives the keyboard back to the scene) and the rest. While a text field takes
+// typing (`typing`: a Ctrl+click on a slider, a file name), the keys that type or edit text
+// (letters, digits, Space, Enter, the arrows, Home, End, Delete, Tab) are the field's and the
+// keys that cannot type are the table's (keepsWhileTyping).
+enum class KeyRoute { Table, Navigation, Typing };
+KeyRoute routeKey(int key, bool ctrl, Action action, bool typing, bool navigation, bool ring);
+// The keys that act while a text field is typed into: Esc (the field undoes the typing and
+// leaves, nothing else; a dialog's field: the dialog closes), the function keys (F1 help, F5
+// present, F6 the next window, F11), PageDown and PageUp (the lesson) and Ctrl+Q; each but Esc
+// leaves the field with what was typed.
+bool keepsWhileTyping(int key, Action action);
+// The key's name as the --verbose log writes it ("Shift+R", "Ctrl+S", "Right", "1", "F5"); "" for
+// a key the table does not know (a modifier alone).
+std::string keyName(int key, bool ctrl, bool shift);
 // The action for `key` pressed with (or without) Ctrl and Shift, with thrust on or off;
 // Action::None when unbound. A key bound without Shift also answers with Shift held when it has
 // no Shift binding of its own. In the browser (`browser`), keys the browser keeps answer None.

@@ -2,6 +2,7 @@
 
 #include "app_config.h"
 #include "input_limits.h"
+#include "input_map.h"
 #include "printable.h"
 #include "safe_file.h"
 
@@ -121,9 +122,13 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
                 return limits::textViolation(text, uiScale, x);
             },
             "S"));
-    app.add_flag("--verbose", o.verbose, "Print state changes (pause, method, sliders) to stdout");
+    app.add_flag("--verbose", o.verbose,
+                 "Print to stdout, one line each: every key pressed and what it did, every lesson "
+                 "step, setting and toggle changed (pause, method, sliders, the keyboard's owner)");
+    // The keys named here come from the key table (input_map.h), so the help cannot drift.
     app.add_flag("--present", o.present,
-                 "Start in present mode: only the scene and a one-line caption (Tab toggles)");
+                 "Start in present mode: only the scene and a one-line caption (" +
+                     keyNameOf(Action::TogglePresent) + " toggles)");
     app.add_option("--layout-json", o.layoutJson,
                    "Offscreen: write the scene's, the world's and every window's rectangle in "
                    "image pixels to this JSON file (without --screenshot no image is rendered)");
@@ -134,7 +139,8 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     std::string frame;
     app.add_option("--frame", frame,
                    "Start in this frame of reference: world, or com (the view moves with the "
-                   "centre of mass, arrows show w = v - u; U toggles)");
+                   "centre of mass, arrows show w = v - u; " +
+                       keyNameOf(Action::ToggleFrame) + " toggles)");
     app.add_option("--lesson", o.lesson,
                    "Open a lesson: a shipped lesson's name (lecture3) or a lesson file");
     app.add_option("--step", o.step, "Start the lesson at step N (1 is the first)")

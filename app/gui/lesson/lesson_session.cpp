@@ -176,7 +176,8 @@ bool enterStep(LessonSession& s, SimulationSession& sim, View& view, Messages& m
 
 void replayStep(LessonSession& s, SimulationSession& sim, View& view, Messages& messages) {
     if (!s.step()) return;
-    sim.reset(); // the lecturer's method and settings stay, as R outside lessons
+    sim.reset();                  // the lecturer's method and settings stay, as R outside lessons
+    sim.script = s.step()->input; // its player's keys played again (the arrows may have taken it)
     followNewRun(view, sim.world());
     showSetup(s, sim); // played again, it watches for its event in the world as it now is
     if (pausesAtItsSetup(*s.step())) lessonShowPausePoint(s, sim, view);

@@ -28,7 +28,7 @@ void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
     if (!gCanvas) return;
     CanvasWeb& c = *gCanvas;
     if (action == GLFW_PRESS) {
-        c.keyPresses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0});
+        c.keyPresses.push_back({key, (mods & GLFW_MOD_CONTROL) != 0, (mods & GLFW_MOD_SHIFT) != 0});
         c.keysSinceFrame.push_back(key);
     } else if (action == GLFW_RELEASE && std::find(c.keysSinceFrame.begin(), c.keysSinceFrame.end(),
                                                    key) != c.keysSinceFrame.end()) {

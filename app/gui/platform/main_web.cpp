@@ -251,6 +251,11 @@ extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_open_lesson() {
     openLesson(gWeb->app, gWeb->app.shipped.lessons.front().path);
 }
 
+// For the browser tests: the --verbose log on (1) or off, printed to the page's console.
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_verbose(int on) {
+    if (gWeb) gWeb->app.log.verbose = on != 0;
+}
+
 // Called by web/index.html's first-visit hint: opens the help (its keys, or on a touch screen its
 // gestures).
 extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_open_help() {
@@ -307,6 +312,9 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
            ",\"note\":" + quoted(app.ui.messages.note) +
            ",\"fullscreen\":" + (app.view.fullscreen ? "true" : "false") +
            ",\"helpOpen\":" + (app.ui.helpOpen ? "true" : "false") +
+           ",\"slowMotion\":" + (app.sim.slowMotion ? "true" : "false") +
+           ",\"presentMode\":" + (app.view.presentMode ? "true" : "false") +
+           ",\"keyboardWindow\":" + quoted(app.ui.keyboardWindow) +
            ",\"traceFirstDifference\":" + // null: no trace open; -1: the same as the reference
            (app.studentTrace.open() ? std::to_string(app.studentTrace.firstDifference())
                                     : std::string("null"));

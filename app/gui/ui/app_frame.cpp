@@ -8,51 +8,99 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <string>
 
 namespace {
-
-// True while ImGui's keyboard navigation shows its focus ring: the navigation keys are its.
-bool navigating() {
-    const ImGuiIO& io = ImGui::GetIO();
-    return io.NavActive && io.NavVisible;
-}
 
 // The arrow keys push: the thrust (on) or the scene's player (player.h).
 bool arrowsPush(const App& app) {
     return app.sim.thrust.on || app.sim.scene.player.has_value();
 }
 
-// While a lesson step's thrust is on (or the scene has a player) the arrow keys are the thrust, so
-// ImGui's keyboard navigation (Tab and the arrows) is off; in every other state it is on.
-void followThrustForNavigation(const App& app) {
-    ImGuiIO& io = ImGui::GetIO();
-    if (arrowsPush(app))
-        io.ConfigFlags &= ~ImGuiConfigFlags_NavEnableKeyboard;
-    else
-        io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
-}
-
-void handleKeys(App& app, const std::vector<KeyPress>& keys) {
-    // Typing into a text field (a file name) must not trigger hotkeys; Esc still closes dialogs.
-    const bool typing = ImGui::GetIO().WantTextInput;
-    const bool keyboardNavigation = navigating() && !arrowsPush(app);
-    for (const KeyPress& k : keys) {
-        const Action action =
-            actionForKey(k.key, k.ctrl, k.shift, arrowsPush(app), app.ui.inBrowser);
-        if (typing && action != Action::Escape) continue;
-        if (keyboardNavigation && !k.ctrl && navigationKey(k.key)) continue;
-        if (action == Action::LessonDigit)
-            lessonTypeDigit(app.lesson, digitOfKey(k.key));
-        else
-            applyAction(app, action);
-    }
-}
-
-void logEvent(const App& app, const char* text) {
+void logEvent(const App& app, const std::string& text) {
     if (!app.log.verbose) return;
     std::printf("%s\n", printable(text, kPrintablePath).c_str()); // names come from files
     std::fflush(stdout);
+}
+
+// The keyboard to `window` ("": back to the scene), said in the --verbose log when it changes.
+void giveKeyboard(App& app, const std::string& window) {
+    if (app.ui.keyboardWindow == window) return;
+    app.ui.keyboardWindow = window;
+    logEvent(app, "keyboard: " + (window.empty() ? std::string("scene") : window));
+}
+
+void handleKeys(App& app, const std::vector<KeyPress>& keys) {
+    const ImGuiIO& io = ImGui::GetIO();
+    // As ImGui took this frame's keys: its navigation on or off (followKeyboard, last frame), its
+    // focus ring shown, a text field typed into (a file name, a value: no key is a hotkey then).
+    const bool typing = io.WantTextInput;
+    const bool navigation = (io.ConfigFlags & ImGuiConfigFlags_NavEnableKeyboard) != 0;
+    const bool ring = io.NavActive && io.NavVisible;
+    for (const KeyPress& k : keys) {
+        const Action action =
+            actionForKey(k.key, k.ctrl, k.shift, arrowsPush(app), app.ui.inBrowser);
+        const KeyRoute route = routeKey(k.key, k.ctrl, action, typing, navigation, ring);
+        if (app.log.verbose) {
+            const std::string name = keyName(k.key, k.ctrl, k.shift);
+            if (!name.empty())
+                logEvent(app,
+                         "key " + name + ": " +
+                             (route == KeyRoute::Navigation ? std::string("keyboard navigation")
+                              : route == KeyRoute::Typing   ? std::string("typing")
+                                                            : std::string(actionName(action))));
+        }
+        if (route != KeyRoute::Table) continue;
+        const bool dialog = app.ui.quitDialogOpen || app.ui.saveDialogOpen;
+        if (typing && action == Action::Escape && !dialog) {
+            // The panel's field undoes the typing and leaves (ImGui's); nothing else closes.
+            logEvent(app, "escape: the field left");
+            giveKeyboard(app, "");
+            continue;
+        }
+        // A key that acts while a field is typed into leaves the field, with what was typed (as
+        // a click elsewhere would); a dialog's Esc closes it.
+        if (typing && action != Action::Escape) imgui_ext::stopTyping();
+        if (action == Action::LessonDigit) {
+            lessonTypeDigit(app.lesson, digitOfKey(k.key));
+            if (app.lesson.active()) logEvent(app, "lesson step typed: " + app.lesson.digits);
+        } else {
+            applyAction(app, action);
+        }
+    }
+}
+
+// After the frame's windows: who has the keyboard now. While a window has it (F6, Tab), a press
+// in another window with controls (the panel, an overlay window, Help, a dialog) gives it that
+// window; a press in the scene gives it back, and so does the window's going away (present mode,
+// Help closed). A press in a window while the scene has the keyboard (a slider dragged, a field
+// clicked) leaves it the scene's: the lecture's keys keep working after the mouse has set a value.
+// ImGui's keyboard navigation is on only while a window has the keyboard or a dialog is open (and
+// never while the arrows push a thrust or a player): the focus ring is never on a control nobody
+// picked.
+void followKeyboard(App& app) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool pressed = ImGui::IsMouseClicked(ImGuiMouseButton_Left) ||
+                         ImGui::IsMouseClicked(ImGuiMouseButton_Right) ||
+                         ImGui::IsMouseClicked(ImGuiMouseButton_Middle);
+    if (pressed && !app.ui.clickedWindow.empty() && app.ui.clickedWindow != "Lesson caption") {
+        if (!app.ui.keyboardWindow.empty()) giveKeyboard(app, app.ui.clickedWindow);
+    } else if (pressed && !io.WantCaptureMouse)
+        giveKeyboard(app, "");
+    app.ui.clickedWindow.clear();
+    const std::vector<DockedWindow>& shown = app.view.shownWindows;
+    if (std::none_of(shown.begin(), shown.end(),
+                     [&app](const DockedWindow& w) { return w.name == app.ui.keyboardWindow; }))
+        giveKeyboard(app, "");
+    const bool dialog = app.ui.quitDialogOpen || app.ui.saveDialogOpen;
+    const bool on = (!app.ui.keyboardWindow.empty() || dialog) && !arrowsPush(app);
+    ImGuiIO& config = ImGui::GetIO();
+    if (on)
+        config.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
+    else
+        config.ConfigFlags &= ~ImGuiConfigFlags_NavEnableKeyboard;
 }
 
 } // namespace
@@ -109,9 +157,11 @@ void applyAction(App& app, Action action) {
     case Action::KeyboardFocus:
         app.ui.keyboardFocus = "Controls";
         if (!app.view.uiVisible || app.view.presentMode) app.ui.keyboardFocus.clear();
+        if (!app.ui.keyboardFocus.empty()) giveKeyboard(app, app.ui.keyboardFocus);
         break;
     case Action::NextWindow:
         app.ui.keyboardFocus = nextWindowForKeyboard(app);
+        if (!app.ui.keyboardFocus.empty()) giveKeyboard(app, app.ui.keyboardFocus);
         break;
     case Action::Navigate: // a row of the Help window: ImGui's navigation does it (no key)
         break;
@@ -122,6 +172,7 @@ void applyAction(App& app, Action action) {
     case Action::FitView:
         app.view.autoFit = true;
         app.view.frameCamera.anchored = false; // the whole world now, followed from here
+        logEvent(app, "fit view");
         break;
     case Action::TogglePresent:
         setPresentMode(app.view, !app.view.presentMode);
@@ -129,9 +180,11 @@ void applyAction(App& app, Action action) {
         break;
     case Action::ToggleFullscreen:
         app.ui.fullscreenRequested = true;
+        logEvent(app, app.view.fullscreen ? "fullscreen: off" : "fullscreen: on");
         break;
     case Action::ToggleHelp:
         app.ui.helpOpen = !app.ui.helpOpen;
+        logEvent(app, app.ui.helpOpen ? "help: on" : "help: off");
         break;
     case Action::TogglePoll:
         if (app.poll.on()) {
@@ -153,12 +206,15 @@ void applyAction(App& app, Action action) {
         deleteSelected(app);
         break;
     case Action::Escape: {
-        const EscapeEffect e = pressEscape(app);
+        const bool keyboard = !app.ui.keyboardWindow.empty();
+        const EscapeEffect e = pressEscape(app, keyboard);
         logEvent(app, e == EscapeEffect::CloseDialog       ? "escape: dialog closed"
                       : e == EscapeEffect::CloseHelp       ? "escape: help closed"
                       : e == EscapeEffect::LeavePresent    ? "escape: present mode off"
                       : e == EscapeEffect::LeaveFullscreen ? "escape: fullscreen off"
+                      : keyboard                           ? "escape: the keyboard to the scene"
                                                            : "escape: nothing to close");
+        giveKeyboard(app, ""); // whatever else it did
         break;
     }
     case Action::Quit:
@@ -188,6 +244,12 @@ void applyAction(App& app, Action action) {
     case Action::ThrustRight:
     case Action::ThrustDown:
     case Action::ThrustUp:
+        // A step that plays its player's keys itself (a lesson's "input") hands the player over
+        // to the keys at the first arrow pressed: from then on the arrows drive it.
+        if (app.sim.scene.player && !app.sim.thrust.on && !app.sim.script.empty()) {
+            app.sim.script.clear();
+            logEvent(app, "player: the arrow keys drive it (the step's own input stops)");
+        }
         break;
     }
 }
@@ -215,13 +277,12 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     // held (not while typing into a field or moving the keyboard's focus ring), the mouse in the
     // scene.
     handleKeys(app, keys);
-    followThrustForNavigation(app);
     app.view.shownWindows.clear();
     app.view.shownPlots.clear();
     app.view.shownMarks.clear();
     forgetTextRoles();
-    const bool typing = io.WantTextInput || (navigating() && !arrowsPush(app));
-    const Vec2 held = arrowsPush(app) && !typing ? heldThrustDirection(imgui_ext::keyDown) : Vec2{};
+    const Vec2 held =
+        arrowsPush(app) && !io.WantTextInput ? heldThrustDirection(imgui_ext::keyDown) : Vec2{};
     // With thrust on the arrows push the selected block; else they are the player's keys (a
     // lesson step's script, when it has one, plays them instead: lesson_session.cpp).
     app.sim.thrust.direction = app.sim.thrust.on ? held : Vec2{};
@@ -248,6 +309,7 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
         if (app.ui.helpOpen) drawHelpWindow(app);
     }
     drawDialogs(app);
+    followKeyboard(app);
     logStateChanges(app);
 }
 

@@ -6,6 +6,8 @@
 
 #include <imgui.h>
 
+#include <string>
+
 namespace {
 
 void row(const char* a, const char* b) {
@@ -31,11 +33,16 @@ void drawHelpWindow(App& app) {
         return;
     }
     recordShownWindow(app, "Help");
-    ImGui::TextUnformatted(
-        app.ui.inBrowser ? "Esc closes this window.  F5: present mode.  Tab: keyboard focus on the "
-                           "panel.  Close the tab to quit."
-                         : "Esc closes this window.  F5: present mode.  Tab: keyboard focus on the "
-                           "panel.  Ctrl+Q quits.");
+    // The keys named from the key table (input_map.h), as the browser or the window has them.
+    const std::string panelKey =
+        keyNameOf(app.ui.inBrowser ? Action::NextWindow : Action::KeyboardFocus);
+    const std::string intro = keyNameOf(Action::Escape) + " closes this window.  " +
+                              keyNameOf(Action::TogglePresent) + ": present mode.  " + panelKey +
+                              ": the keyboard to the panel (" + keyNameOf(Action::Escape) +
+                              " gives it back).  " +
+                              (app.ui.inBrowser ? std::string("Close the tab to quit.")
+                                                : keyNameOf(Action::Quit) + " quits.");
+    ImGui::TextUnformatted(intro.c_str());
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
     if (ImGui::BeginTabBar("help")) {
         if (ImGui::BeginTabItem("Keys")) {

@@ -17,16 +17,17 @@ namespace imgui_ext {
 void mapKeys() {
     ImGuiIO& io = ImGui::GetIO();
     // As ImGui's GLFW backend maps them (the offscreen renderer has no backend: 1.86 asserts
-    // without Space).
+    // without Space). PageUp and PageDown stay unmapped: ImGui's navigation would move its focus
+    // with them, and they are the lesson's keys whatever has the keyboard.
     const int map[][2] = {
-        {ImGuiKey_Tab, keys::kTab},           {ImGuiKey_LeftArrow, keys::kLeft},
-        {ImGuiKey_RightArrow, keys::kRight},  {ImGuiKey_UpArrow, keys::kUp},
-        {ImGuiKey_DownArrow, keys::kDown},    {ImGuiKey_PageUp, keys::kPageUp},
-        {ImGuiKey_PageDown, keys::kPageDown}, {ImGuiKey_Home, keys::kHome},
-        {ImGuiKey_End, keys::kEnd},           {ImGuiKey_Delete, keys::kDelete},
-        {ImGuiKey_Space, keys::kSpace},       {ImGuiKey_Enter, keys::kEnter},
-        {ImGuiKey_Escape, keys::kEscape},     {ImGuiKey_KeyPadEnter, keys::kKeypadEnter}};
+        {ImGuiKey_Tab, keys::kTab},          {ImGuiKey_LeftArrow, keys::kLeft},
+        {ImGuiKey_RightArrow, keys::kRight}, {ImGuiKey_UpArrow, keys::kUp},
+        {ImGuiKey_DownArrow, keys::kDown},   {ImGuiKey_Home, keys::kHome},
+        {ImGuiKey_End, keys::kEnd},          {ImGuiKey_Delete, keys::kDelete},
+        {ImGuiKey_Space, keys::kSpace},      {ImGuiKey_Enter, keys::kEnter},
+        {ImGuiKey_Escape, keys::kEscape},    {ImGuiKey_KeyPadEnter, keys::kKeypadEnter}};
     for (const auto& k : map) io.KeyMap[k[0]] = k[1];
+    io.KeyMap[ImGuiKey_PageUp] = io.KeyMap[ImGuiKey_PageDown] = -1;
 }
 
 namespace {
@@ -73,9 +74,8 @@ void focusCurrentWindowForKeyboard() {
     g.NavDisableMouseHover = true;
 }
 
-std::string keyboardWindowName() {
-    const ImGuiContext& g = *ImGui::GetCurrentContext();
-    return g.NavWindow ? g.NavWindow->RootWindow->Name : "";
+void stopTyping() {
+    if (ImGui::GetIO().WantTextInput) ImGui::ClearActiveID();
 }
 
 KeyboardFocus keyboardFocus() {

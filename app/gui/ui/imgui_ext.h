@@ -20,8 +20,8 @@ namespace imgui_ext {
 // --- Keys and pointer (legacy input) ---
 
 // ImGui's navigation and text fields read the keys by GLFW's codes (input_map.h's keys::), as
-// its GLFW backend writes them: arrows, Tab, Space, Enter, Esc, PageUp, PageDown, Home, End,
-// Delete.
+// its GLFW backend writes them: arrows, Tab, Space, Enter, Esc, Home, End, Delete; not PageUp
+// and PageDown, which are the lesson's and never move ImGui's focus.
 void mapKeys();
 // Whether ImGui sees the key (a GLFW key code) held in this frame.
 bool keyDown(int key);
@@ -42,9 +42,9 @@ void setPointer(bool onScreen, ImVec2 pos, bool down, bool ctrl);
 // and its first control, with the focus ring shown (as after an arrow key) and the mouse's hover
 // off until the mouse moves.
 void focusCurrentWindowForKeyboard();
-// The title of the window that has ImGui's keyboard focus (its top window, for a child's), as
-// ImGui names it ("title##id" included); "" when none.
-std::string keyboardWindowName();
+// Ends the typing into the active text field (a Ctrl+clicked slider, a file name), keeping what
+// was typed (as a click elsewhere does).
+void stopTyping();
 // Where the keyboard's focus is: the control's id (0: none), whether its ring shows and its
 // rectangle (screen pixels, where the ring is drawn).
 struct KeyboardFocus {

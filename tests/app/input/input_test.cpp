@@ -2,6 +2,7 @@
 #include "app.h"
 #include "input_map.h"
 #include "mouse_tool.h"
+#include "options.h"
 #include "placement.h"
 #include "test_fixtures.h"
 
@@ -125,6 +126,67 @@ TEST(KeyMap, LabelsShowTheTablesKeyExceptOnTouchScreens) {
         EXPECT_FALSE(key.empty()) << actionName(b.action);
         EXPECT_EQ(keyedLabel("x", b.action, false), "x (" + key + ")###x");
     }
+}
+
+// Where a key goes (issue 38): the table's while the scene has the keyboard, whatever ImGui's focus
+// was; while a window has it, ImGui's navigation takes the keys that move its ring, and Space and
+// Enter only while the ring shows; the lesson's other keys stay the table's.
+TEST(KeyRouting, TheLecturesKeysAreTheTablesUnlessAWindowWasGivenTheKeyboard) {
+    const auto route = [](int key, bool navigation, bool ring, bool ctrl = false) {
+        return routeKey(key, ctrl, actionForKey(key, ctrl), false, navigation, ring);
+    };
+    for (const int key : {keys::kRight, keys::kLeft, keys::kSpace, keys::kEnter, keys::kTab,
+                          keys::kPageDown, keys::kP, keys::k0 + 1})
+        EXPECT_EQ(route(key, false, false), KeyRoute::Table) << keyName(key, false, false);
+    for (const int key :
+         {keys::kRight, keys::kLeft, keys::kUp, keys::kDown, keys::kTab, keys::kHome, keys::kEnd})
+        EXPECT_EQ(route(key, true, false), KeyRoute::Navigation) << keyName(key, false, false);
+    EXPECT_EQ(route(keys::kSpace, true, false), KeyRoute::Table); // no ring: nothing to press
+    EXPECT_EQ(route(keys::kSpace, true, true), KeyRoute::Navigation);
+    EXPECT_EQ(route(keys::kEnter, true, true), KeyRoute::Navigation);
+    for (const int key : {keys::kPageDown, keys::kPageUp, keys::kP, keys::kR, keys::kS, keys::kF5,
+                          keys::kEscape, keys::k0 + 3})
+        EXPECT_EQ(route(key, true, true), KeyRoute::Table) << keyName(key, false, false);
+    EXPECT_EQ(route(keys::kRight, true, true, true), KeyRoute::Table); // Ctrl+Right
+    // Typing into a field: the keys that type or edit are the field's, the ones that cannot
+    // type are the table's.
+    const auto typed = [](int key, bool ctrl = false) {
+        return routeKey(key, ctrl, actionForKey(key, ctrl), true, false, false);
+    };
+    for (const int key : {keys::k0 + 1, keys::kKeypad0 + 3, keys::kR, keys::kS, keys::kP,
+                          keys::kSpace, keys::kEnter, keys::kRight, keys::kLeft, keys::kHome,
+                          keys::kEnd, keys::kDelete, keys::kTab, keys::kMinus})
+        EXPECT_EQ(typed(key), KeyRoute::Typing) << keyName(key, false, false);
+    for (const int key : {keys::kEscape, keys::kPageDown, keys::kPageUp, keys::kF1, keys::kF5,
+                          keys::kF6, keys::kF11})
+        EXPECT_EQ(typed(key), KeyRoute::Table) << keyName(key, false, false);
+    EXPECT_EQ(typed(keys::kQ, true), KeyRoute::Table);  // Ctrl+Q quits
+    EXPECT_EQ(typed(keys::kS, true), KeyRoute::Typing); // Ctrl+S: the field's
+    EXPECT_EQ(routeKey(keys::kEscape, false, Action::Escape, true, true, true), KeyRoute::Table);
+}
+
+TEST(KeyRouting, TheLogNamesEachKey) {
+    EXPECT_EQ(keyName(keys::kR, false, true), "Shift+R");
+    EXPECT_EQ(keyName(keys::kS, true, false), "Ctrl+S");
+    EXPECT_EQ(keyName(keys::kRight, false, false), "Right");
+    EXPECT_EQ(keyName(keys::k0 + 1, false, false), "1");
+    EXPECT_EQ(keyName(keys::kKeypad0 + 3, false, false), "Keypad 3");
+    EXPECT_EQ(keyName(keys::kF5, false, false), "F5");
+    EXPECT_EQ(keyName(keys::kSpace, false, false), "Space");
+    EXPECT_EQ(keyName(keys::kLeftControl, false, false), ""); // a modifier alone
+}
+
+// `sandbox --help` names its keys from the key table: present mode is F5's (it said Tab).
+TEST(KeyMap, TheHelpNamesTheTablesKeys) {
+    const char* help[] = {"sandbox", "--help"};
+    testing::internal::CaptureStdout();
+    EXPECT_EQ(parseOptions(2, help).exitCode, 0);
+    const std::string text = testing::internal::GetCapturedStdout();
+    EXPECT_NE(text.find("(" + keyNameOf(Action::TogglePresent) + " toggles)"), std::string::npos)
+        << text;
+    EXPECT_EQ(keyNameOf(Action::TogglePresent), "F5");
+    EXPECT_EQ(text.find("Tab toggles"), std::string::npos) << text;
+    EXPECT_NE(text.find("; " + keyNameOf(Action::ToggleFrame) + " toggles)"), std::string::npos);
 }
 
 TEST(Mouse, ClickSelectsAndClickOnEmptySpaceDeselects) {

@@ -43,9 +43,10 @@ done
 echo "Xvfb on $DISPLAY"
 export XDG_CONFIG_HOME=$work/config
 
-# start_app ARGS...: the app with --verbose into the log, at 1280x720, in the background.
+# start_app ARGS...: the app with --verbose into the log, at 1280x720, in the background, for at
+# most $app_timeout s (150 unless the caller sets it).
 start_app() {
-    timeout 150 "$sandbox" "$@" --verbose --size 1280x720 >"$log" 2>&1 &
+    timeout "${app_timeout:-150}" "$sandbox" "$@" --verbose --size 1280x720 >"$log" 2>&1 &
     app_pid=$!
 }
 

@@ -124,22 +124,26 @@ void drawSceneCaption(const App& app, const std::vector<CaptionLine>& lines,
 void recordShownWindow(App& app, const char* name) {
     const ImVec2 p = ImGui::GetWindowPos(), s = ImGui::GetWindowSize();
     app.view.shownWindows.push_back({name, {p.x, p.y, s.x, s.y}});
+    // A press in it (or in its child windows): the keyboard moves to it from another window that
+    // has it (app_frame.cpp's followKeyboard).
+    for (int button = 0; button < 3; ++button)
+        if (ImGui::IsMouseClicked(button) && ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows))
+            app.ui.clickedWindow = name;
     if (app.ui.keyboardFocus != name) return;
     app.ui.keyboardFocus.clear();
     imgui_ext::focusCurrentWindowForKeyboard();
 }
 
 std::string nextWindowForKeyboard(const App& app) {
-    const std::string focused = imgui_ext::keyboardWindowName();
-    const std::vector<DockedWindow>& shown = app.view.shownWindows;
-    if (shown.empty()) return "";
-    for (std::size_t i = 0; !focused.empty() && i < shown.size(); ++i) {
-        const std::string& title = shown[i].name;
-        // ImGui names a window by its title, "title##id" included.
-        if (title == focused || focused.rfind(title + "##", 0) == 0)
-            return shown[(i + 1) % shown.size()].name;
-    }
-    return shown.front().name;
+    // The windows with controls, in this frame's drawing order (the lesson's caption has none).
+    std::vector<std::string> windows;
+    for (const DockedWindow& w : app.view.shownWindows)
+        if (w.name != "Lesson caption") windows.push_back(w.name);
+    if (windows.empty()) return "";
+    const auto has = std::find(windows.begin(), windows.end(), app.ui.keyboardWindow);
+    if (has != windows.end()) return *(has + 1 == windows.end() ? windows.begin() : has + 1);
+    const auto panel = std::find(windows.begin(), windows.end(), "Controls");
+    return panel != windows.end() ? *panel : windows.front();
 }
 
 bool beginOverlayWindow(App& app, OverlayId id) {

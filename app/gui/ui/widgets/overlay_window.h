@@ -17,12 +17,14 @@
 // the row's flag. The one placement function: every overlay window goes through it (through
 // OverlayWindow).
 bool beginOverlayWindow(App& app, OverlayId id);
-// Notes the current window (between Begin and End) in app.view.shownWindows, for --layout-json;
-// when the keyboard focus was asked for it (app.ui.keyboardFocus), moves ImGui's navigation
-// there, its focus ring on the window's first control.
+// Notes the current window (between Begin and End) in app.view.shownWindows, for --layout-json,
+// and a mouse button pressed in it (app.ui.clickedWindow: the keyboard goes to it from another
+// window); when the keyboard focus was asked for it (app.ui.keyboardFocus), moves ImGui's
+// navigation there, its focus ring on the window's first control.
 void recordShownWindow(App& app, const char* name);
-// F6: the window after the one with the keyboard focus in this frame's drawing order (the panel,
-// the overlay windows, Help), or the first; "" when none is shown.
+// F6: the window after the one that has the keyboard (app.ui.keyboardWindow), in the last frame's
+// drawing order of the windows with controls (the overlay windows, the panel, Help, a dialog);
+// the panel when the scene has it (else the first); "" when none is shown.
 std::string nextWindowForKeyboard(const App& app);
 // Where the camera shows the world's point `p` (m) on screen (px), as ImGui draws it.
 ImVec2 toScreen(const App& app, Vec2 p);

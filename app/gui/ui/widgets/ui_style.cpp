@@ -115,9 +115,10 @@ void uiCreateContext(const char* iniPath) {
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = iniPath;
-    // Every control reachable from the keyboard: the arrows move ImGui's focus ring (once Tab or
-    // F6 put it in a window), Space presses, Enter types into a field (input_map.h's Tab row).
-    io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
+    // Every control reachable from the keyboard once a window has it (F6, Tab or a click in it):
+    // the arrows move ImGui's focus ring, Space presses, Enter types into a field. Until then the
+    // scene has the keyboard and the navigation is off (app_frame.cpp's followKeyboard).
+    io.ConfigFlags &= ~ImGuiConfigFlags_NavEnableKeyboard;
     imgui_ext::mapKeys(); // the navigation's keys
     setTheme(ImGui::GetStyle());
     gScale = 0.0f;
