@@ -396,7 +396,7 @@ def url_bad(page, base):
     page.open(base + "?scene=no_such_scene&method=fastest")
     s = page.status()
     check(s["scene"].endswith("/bouncing_squares.json"), f"the default scene was not kept: {s}")
-    check("URL parameter method: unknown method 'fastest'" in s["error"], f"no method error: {s}")
+    check("URL parameter method: 'fastest' must be perfect" in s["error"], f"no method error: {s}")
     check("no scene 'no_such_scene'" in s["error"], f"no scene error: {s}")
     check(s["method"] == "perfect", f"method changed: {s}")
     print(f"bad URL parameters shown: {s['error']!r}")

@@ -54,7 +54,7 @@ struct UrlParams {
     // The scene a link carries in its fragment (#scene=..., link.h): the page decodes it into
     // this file before the app starts; "" when there is none. Not parsed from the query.
     std::string linkScene;
-    // One message per bad parameter, naming it ("URL parameter method: unknown 'x' ..."), at most
+    // One message per bad parameter, naming it ("URL parameter method: 'x' must be ..."), at most
     // kMaxUrlErrors of them (then one line counting the rest); unknown parameters share one line
     // at the end.
     std::vector<std::string> errors;
