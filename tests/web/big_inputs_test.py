@@ -129,7 +129,13 @@ def big_files(base):
             took = time.monotonic() - started
             how, s = outcome
             progress = page.evaluate("window.sandboxProgressLog")
-            live = page.evaluate("document.getElementById('reader-live').textContent")
+            # The live region says a refusal on the next frames (the app's message, when it
+            # changes, is announced as the page's state is sent).
+            def live_text():
+                return page.evaluate("document.getElementById('reader-live').textContent")
+            if how == "refused":
+                wait_for(lambda: s["error"][:60] in live_text(), 10)
+            live = live_text()
             # The page still answers: F1 opens the help.
             page.key("F1", "F1", 112)
             answered = wait_for(lambda: page.status()["helpOpen"])
