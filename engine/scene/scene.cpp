@@ -35,6 +35,14 @@ void checkLength(double length, double magnitude, const std::string& path,
         throw ValueError{path, problem};
 }
 
+// A string of at most `maxChars` characters (names, the description).
+std::string text(const json& value, const std::string& path, std::size_t maxChars) {
+    std::string s = string(value, path);
+    if (std::string problem = limits::textLengthViolation(s, maxChars); !problem.empty())
+        throw ValueError{path, problem};
+    return s;
+}
+
 bool isColor(const std::string& s) {
     return s.size() == 7 && s[0] == '#' && std::all_of(s.begin() + 1, s.end(), [](char c) {
                return std::isxdigit(static_cast<unsigned char>(c)) != 0;
@@ -122,7 +130,7 @@ void readBlockField(const settings_table::BlockKey& row, const json& value, cons
     using settings_table::BlockKind;
     switch (row.kind) {
     case BlockKind::Text:
-        b.*row.text = string(value, path);
+        b.*row.text = text(value, path, limits::kMaxNameChars);
         return;
     case BlockKind::Color:
         b.*row.text = string(value, path);
@@ -265,9 +273,10 @@ Scene parseValue(const json& root) {
     checkKeys(root, "", {"name", "description", "duration", "world", "blocks", "player"});
     Scene scene;
     if (!root.contains("name")) throw ValueError{"(top level)", "missing \"name\""};
-    scene.name = string(root["name"], "name");
+    scene.name = text(root["name"], "name", limits::kMaxNameChars);
     if (root.contains("description"))
-        scene.description = string(root["description"], "description");
+        scene.description =
+            text(root["description"], "description", limits::kMaxDescriptionChars);
     if (root.contains("duration"))
         scene.duration = number(root["duration"], "duration", limits::kDuration);
     if (root.contains("world")) parseWorld(root["world"], scene);

@@ -45,6 +45,20 @@ std::string violation(const Range& range, double value) {
     return "must be " + describe(range) + ", not " + formatNumber(value);
 }
 
+std::size_t characterCount(std::string_view text) {
+    std::size_t count = 0;
+    for (const char c : text) count += (static_cast<unsigned char>(c) & 0xc0) != 0x80;
+    return count;
+}
+
+std::string textLengthViolation(std::string_view text, std::size_t maxChars) {
+    if (text.size() <= maxChars) return ""; // fewer bytes, fewer characters
+    const std::size_t count = characterCount(text);
+    if (count <= maxChars) return "";
+    return "must be at most " + std::to_string(maxChars) + " characters, not " +
+           std::to_string(count);
+}
+
 std::string accelerationViolation(double force, double mass) {
     const double a = force / mass;
     if (a <= kGravity.max) return "";

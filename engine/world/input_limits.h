@@ -16,6 +16,7 @@
 //   46 hours at 60 frames per second), so a typo cannot start a run of years.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -54,11 +55,21 @@ inline constexpr Range kTime{0.0, kFrames.max* kDt.max, "s"};        // simulate
 inline constexpr Range kDuration{1e-6, kTime.max, "s"};              // a scene's "duration"
 // A length must be at least this fraction of the magnitude of the coordinates it sits at.
 inline constexpr double kResolution = 1e-9;
+// Text in a scene file, in UTF-8 characters: a name (the scene's, a block's) is one line on
+// screen, the description what a lecturer reads aloud. Every frame that draws a text pays for
+// its length: a 10 MB description cost the browser 1.5 s a frame and a 20 MB name stopped it.
+inline constexpr std::size_t kMaxNameChars = 200; // a lesson's titles and caption lines too
+inline constexpr std::size_t kMaxDescriptionChars = 10000;
 
 // "from 1e-6 to 1 s", or "a whole number from 1 to 1000".
 std::string describe(const Range& range);
 // "" when `value` is in `range`; otherwise "must be <describe(range)>, not <value>".
 std::string violation(const Range& range, double value);
+// The characters of UTF-8 text (its bytes that do not continue a character).
+std::size_t characterCount(std::string_view text);
+// "" when `text` has at most `maxChars` characters; otherwise "must be at most 200 characters,
+// not 20971520".
+std::string textLengthViolation(std::string_view text, std::size_t maxChars);
 // A flag's text: "" when it is a decimal number (parseNumber()) in `range`, stored in `value`;
 // otherwise why not ("must be a decimal number from 1e-6 to 1 s", or violation()'s message).
 // sandbox-cli and the app's options both check their numbers with it: the same messages.

@@ -421,7 +421,7 @@ def url_bad(page, base):
     page.open(base + "?scene=no_such_scene&method=fastest")
     s = page.status()
     check(s["scene"].endswith("/bouncing_squares.json"), f"the default scene was not kept: {s}")
-    check("URL parameter method: unknown method 'fastest'" in s["error"], f"no method error: {s}")
+    check("URL parameter method: 'fastest' must be perfect" in s["error"], f"no method error: {s}")
     check("no scene 'no_such_scene'" in s["error"], f"no scene error: {s}")
     check(s["method"] == "perfect", f"method changed: {s}")
     print(f"bad URL parameters shown: {s['error']!r}")
@@ -663,6 +663,25 @@ def hidden_control(page, base):
     error = page.evaluate("document.getElementById('c-error').textContent")
     check("must be from 0 to 1" in error, f"the refused C is not said: {error!r}")
     print(f"the hidden C control sets C (0.25); a refused value is said: {error!r}")
+    # Every world key of the settings table has a labelled control (page_world_controls.h).
+    keys = ["method", "bounciness", "gravity", "dt", "substeps", "resolve", "integrator",
+            "mistakes", "drag", "friction"]
+    unlabelled = page.evaluate("""[...document.querySelectorAll('#c-world input, #c-world select')]
+        .filter(c => !c.labels || c.labels.length === 0).map(c => c.id).join(' ')""")
+    check(unlabelled == "", f"controls without a label: {unlabelled}")
+    for key in keys:
+        check(page.evaluate(f"!!document.getElementById('c-{key}') || "
+                            f"!!document.getElementById('c-{key}-x')"), f"no control for {key}")
+    page.evaluate("(function () { var c = document.getElementById('c-friction'); c.value = '0.6'; "
+                  "c.dispatchEvent(new Event('change', {bubbles: true})); })()")
+    page.wait_frames(20)
+    check(page.evaluate("document.getElementById('c-error').textContent") == "",
+          "the friction control's value was refused")
+    check(page.evaluate("document.getElementById('c-friction').value") == "0.6",
+          "the friction control does not show the world's friction")
+    shown = page.evaluate("document.querySelectorAll('#c-world label').length")
+    print(f"{shown} labels; a labelled control for each of {len(keys)} world keys ({', '.join(keys)}); "
+          "friction set to 0.6 through its control")
 
 
 def sound(page, base):

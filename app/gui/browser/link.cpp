@@ -76,3 +76,13 @@ std::string linkTooLongMessage(std::size_t chars) {
            " characters; browsers take about " + std::to_string(kMaxLinkChars) +
            "): Save (download) it and share the file. The link without it names the rest.";
 }
+
+bool linkSceneTooLarge(const App& app) {
+    return linkCarriesScene(app) && app.sim.world().blocks.size() > kMaxLinkBlocks;
+}
+
+std::string linkTooManyBlocksMessage(std::size_t blocks) {
+    return "This scene is too large for a link (" + std::to_string(blocks) +
+           " blocks; a link carries at most " + std::to_string(kMaxLinkBlocks) +
+           "): Save (download) it and share the file. The link without it names the rest.";
+}

@@ -5,9 +5,10 @@
 // The query names a shipped scene or lesson and what differs from opening it plainly (the
 // parameters of url_params.h). When the scene on screen is not a shipped one as it starts (its
 // blocks or settings were edited, it came from a file, or it has run on), the link carries the
-// scene itself in its fragment: the page compresses sceneToJson(app.sim.currentScene()) (deflate-raw,
-// base64url) into #scene=..., and opening the link restores exactly those blocks and settings
-// (at t = 0). Pure logic: the web main asks it every frame and tells the page what changed.
+// scene itself in its fragment: the page compresses sceneToJson(app.sim.currentScene())
+// (deflate-raw, base64url) into #scene=..., and opening the link restores exactly those blocks and
+// settings (at t = 0). Pure logic: the web main asks it every frame and tells the page what
+// changed.
 #pragma once
 
 #include <cstddef>
@@ -25,3 +26,11 @@ inline constexpr const char* kLinkSceneKey = "scene";
 inline constexpr std::size_t kMaxLinkChars = 32000;
 // The message when a link with the scene would be longer than kMaxLinkChars.
 std::string linkTooLongMessage(std::size_t chars);
+// A scene of more blocks than this is not put in a link at all: it would never fit in
+// kMaxLinkChars (gas_500 in motion takes 24,000 characters), and writing and compressing its JSON
+// every half second would take the page's frames (200,000 blocks: 16 MB each time). The link
+// then names the rest, and "Copy link" says why (linkTooManyBlocksMessage).
+inline constexpr std::size_t kMaxLinkBlocks = 2000;
+// True when the link must carry the scene and it has more than kMaxLinkBlocks blocks.
+bool linkSceneTooLarge(const App& app);
+std::string linkTooManyBlocksMessage(std::size_t blocks);

@@ -2,6 +2,7 @@
 
 #include "app.h"
 #include "input_limits.h"
+#include "page_world_controls.h"
 #include "spoken_text.h"
 
 #include <nlohmann/json.hpp>
@@ -19,25 +20,6 @@ int massBlock(const App& app) {
     return app.sim.world().blocks[static_cast<std::size_t>(i)].isDynamic() ? i : -1;
 }
 
-// A typed number checked as the panel checks it (classroom.h): taken into `out`, or refused with
-// the panel's warning under `field`.
-bool acceptNumber(App& app, const char* field, const std::string& text, double current,
-                  const limits::Range& range, double& out, std::string& error) {
-    double typed = 0.0;
-    if (!limits::parseNumber(text, typed)) {
-        error = std::string(field) + ": not a number";
-        app.ui.typedWarning.note(field, TypedValue{false, current, error});
-        return false;
-    }
-    const TypedValue check = checkTypedValue(field, typed, current, range);
-    if (!app.ui.typedWarning.note(field, check)) {
-        error = check.message;
-        return false;
-    }
-    out = check.value;
-    return true;
-}
-
 } // namespace
 
 std::string pageStateJson(const App& app) {
@@ -47,26 +29,25 @@ std::string pageStateJson(const App& app) {
                    {"status", s.status}};
     json scenes = json::array();
     for (const SceneEntry& e : app.shipped.scenes) scenes.push_back({e.path, e.title});
-    json methods = json::array();
-    for (int k = 0; k < static_cast<int>(Method::Count); ++k)
-        methods.push_back(methodName(static_cast<Method>(k)));
+    // [index, name] of the first kListedBlocks blocks and of the selected one (a page of 200,000
+    // options, made again every quarter second, would take the page's frames); blockCount says
+    // how many there are.
     json blocks = json::array();
-    for (int i = 0; i < static_cast<int>(app.sim.world().blocks.size()); ++i)
-        blocks.push_back(app.sim.blockDisplayName(i));
-    const WorldSettings& w = app.sim.world().settings;
+    const int count = static_cast<int>(app.sim.world().blocks.size());
+    for (int i = 0; i < count; ++i) {
+        if (i < static_cast<int>(kListedBlocks) || i == app.sim.selected)
+            blocks.push_back({i, app.sim.blockDisplayName(i)});
+    }
     const int m = massBlock(app);
     json controls = {
         {"scene", app.sim.scenePath},
         {"scenes", scenes},
         {"lesson", app.lesson.active()},
         {"paused", app.sim.paused},
-        {"method", methodName(w.method)},
-        {"methods", methods},
-        {"bounciness", w.bounciness},
-        {"gravity-x", w.gravity.x},
-        {"gravity-y", w.gravity.y},
+        {"world", worldControlsJson(app.sim.world().settings)},
         {"block", app.sim.selected},
         {"blocks", blocks},
+        {"blockCount", count},
         {"mass", m >= 0 ? json(app.sim.world().blocks[static_cast<std::size_t>(m)].mass) : json()},
     };
     // Invalid UTF-8 in a scene's text becomes U+FFFD rather than an exception.
@@ -77,8 +58,9 @@ std::string pageStateJson(const App& app) {
 PageControlOutcome applyPageControl(App& app, const std::string& control,
                                     const std::string& value) {
     PageControlOutcome out;
-    WorldSettings& w = app.sim.world().settings;
-    if (control == "scene") {
+    if (applyWorldControl(app, control, value, out.error)) {
+        // a world key's control (page_world_controls.h)
+    } else if (control == "scene") {
         if (!loadScene(app, value)) out.error = app.ui.messages.error;
     } else if (control == "lesson-previous") {
         out.action = Action::LessonPrevious;
@@ -90,14 +72,6 @@ PageControlOutcome applyPageControl(App& app, const std::string& control,
         out.action = Action::StepOnce;
     } else if (control == "reset") {
         out.action = Action::Reset;
-    } else if (control == "method") {
-        if (!parseMethod(value.c_str(), w.method)) out.error = "method: unknown '" + value + "'";
-    } else if (control == "bounciness") {
-        acceptNumber(app, "bounciness C", value, w.bounciness, limits::kBounciness, w.bounciness,
-                     out.error);
-    } else if (control == "gravity-x" || control == "gravity-y") {
-        double& g = control == "gravity-x" ? w.gravity.x : w.gravity.y;
-        acceptNumber(app, "gravity", value, g, limits::kGravity, g, out.error);
     } else if (control == "block") {
         double index = -1.0;
         const int n = static_cast<int>(app.sim.world().blocks.size());
@@ -114,7 +88,7 @@ PageControlOutcome applyPageControl(App& app, const std::string& control,
         } else {
             Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
             double mass = b.mass;
-            if (acceptNumber(app, "mass", value, b.mass, limits::kMass, mass, out.error)) {
+            if (acceptTypedNumber(app, "mass", value, b.mass, limits::kMass, mass, out.error)) {
                 const std::string problem = limits::accelerationViolation(length(b.force), mass);
                 if (problem.empty()) {
                     b.mass = mass;

@@ -2,6 +2,7 @@
 
 #include "app.h"
 #include "lesson_session.h"
+#include "page_world_controls.h"
 #include "printable.h"
 #include "scene_library.h"
 
@@ -13,7 +14,6 @@
 namespace {
 
 constexpr std::size_t kMaxEchoed = 40; // characters of a bad value quoted back
-constexpr int kMaxStep = 10000;        // a step number beyond any lesson's
 
 int hexDigit(char c) {
     if (c >= '0' && c <= '9') return c - '0';
@@ -57,6 +57,8 @@ std::string knownNames() {
     std::string names;
     for (const UrlParamInfo& info : kUrlParams)
         names += (names.empty() ? "" : ", ") + std::string(info.name);
+    for (const settings_table::WorldKey* row : settings_table::shownOrder())
+        names += ", " + std::string(row->key);
     return names;
 }
 
@@ -104,8 +106,11 @@ UrlParams parseUrlParams(const std::string& query) {
         const std::string value = eq == std::string::npos ? "" : percentDecode(pair.substr(eq + 1));
         const std::string where = "URL parameter " + printable(key);
         if (isTrackerParam(key)) continue;
-        const bool known = std::any_of(std::begin(kUrlParams), std::end(kUrlParams),
-                                       [&key](const UrlParamInfo& i) { return key == i.name; });
+        const settings_table::WorldKey* worldKey = settings_table::findWorldKey(key);
+        if (worldKey && !worldKey->inScene) worldKey = nullptr;
+        const bool known =
+            worldKey || std::any_of(std::begin(kUrlParams), std::end(kUrlParams),
+                                    [&key](const UrlParamInfo& i) { return key == i.name; });
         if (!known) {
             unknown.push_back(key);
             continue;
@@ -114,18 +119,19 @@ UrlParams parseUrlParams(const std::string& query) {
             p.errors.push_back(where + ": given twice (the first one counts)");
             continue;
         }
-        if (key == "scene") {
+        if (worldKey) {
+            const settings_table::FlagProblem problem = readWorldValue(*worldKey, value, p.world);
+            if (problem.expected.empty())
+                p.worldGiven.push_back(worldKey);
+            else
+                p.errors.push_back(where + ": " + echo(problem.text) + " " + problem.expected +
+                                   ": not applied");
+        } else if (key == "scene") {
             if (isSceneName(value))
                 p.scene = value;
             else
                 p.errors.push_back(where + ": " + echo(value) +
                                    " is not a scene name (letters, digits, _ and -)");
-        } else if (key == "method") {
-            if (parseMethod(value.c_str(), p.method))
-                p.methodGiven = true;
-            else
-                p.errors.push_back(where + ": unknown method " + echo(value) +
-                                   " (perfect, move-and-correct, turn-based)");
         } else if (key == "show" && value.empty()) { // a link's way to say: no overlay
             p.show = ShowSet{};
             p.showGiven = true;
@@ -148,18 +154,14 @@ UrlParams parseUrlParams(const std::string& query) {
             else
                 p.errors.push_back(where + ": " + echo(value) +
                                    " is not a lesson name (letters, digits, _ and -)");
-        } else if (key == "step") {
-            const bool digits = !value.empty() && value.size() <= 5 &&
+        } else if (key == "step") { // its range is the lesson's: applyUrlParams checks it
+            const bool digits = !value.empty() && value.size() <= 9 &&
                                 value.find_first_not_of("0123456789") == std::string::npos;
-            const int step = digits ? std::stoi(value) : 0;
-            if (step >= 1 && step <= kMaxStep)
-                p.step = step;
-            else
-                p.errors.push_back(where + ": " + echo(value) +
-                                   " is not a step number (1, 2, ...)");
+            p.step = digits && std::stoi(value) > 0 ? std::stoi(value) : -1;
+            p.stepText = value;
         }
     }
-    if (p.step > 0 && p.lesson.empty()) {
+    if (p.step != 0 && p.lesson.empty()) {
         p.errors.push_back("URL parameter step: needs a lesson (lesson=NAME)");
         p.step = 0;
     }
@@ -181,11 +183,16 @@ void applyUrlParams(App& app, const UrlParams& params) {
         const std::string path = app.shipped.lessonsDir + "/" + params.lesson + ".json";
         bool shipped = false;
         for (const SceneEntry& s : app.shipped.lessons) shipped = shipped || s.path == path;
-        const std::size_t first = params.step > 0 ? static_cast<std::size_t>(params.step - 1) : 0;
         if (!shipped)
             add("URL parameter lesson: no lesson " + echo(params.lesson) + " is shipped");
-        else if (!openLesson(app, path, first))
+        else if (!openLesson(app, path, 0))
             add(app.ui.messages.error);
+        else if (const int steps = static_cast<int>(app.lesson.lesson->steps.size());
+                 params.step >= 2 && params.step <= steps)
+            openLesson(app, path, static_cast<std::size_t>(params.step - 1));
+        else if (params.step != 0 && params.step != 1)
+            add("URL parameter step: " + echo(params.stepText) + " is not a step of " +
+                echo(params.lesson) + " (1 to " + std::to_string(steps) + "): it opens at step 1");
     }
     if (!params.linkScene.empty() && params.lesson.empty()) {
         if (!loadScene(app, params.linkScene))
@@ -199,7 +206,8 @@ void applyUrlParams(App& app, const UrlParams& params) {
         else if (!loadScene(app, path))
             add(app.ui.messages.error);
     }
-    if (params.methodGiven) app.sim.world().settings.method = params.method;
+    for (const settings_table::WorldKey* row : params.worldGiven)
+        settings_table::copy(*row, params.world, app.sim.world().settings);
     if (params.showGiven) applyShowSet(app.view, params.show);
     if (params.frame) setViewFrame(app.view, *params.frame);
     app.ui.messages.error = errors;

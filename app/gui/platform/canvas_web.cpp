@@ -99,6 +99,7 @@ EM_JS(void, page_first_frame_shown, (), { window.sandboxPage.firstFrameShown(); 
 EM_JS(void, page_set_typing, (int typing), { window.sandboxPage.setTyping(!!typing); });
 EM_JS(void, page_show_state, (const char* json), { window.sandboxPage.showState(UTF8ToString(json)); });
 EM_JS(void, page_announce, (const char* text), { window.sandboxPage.announce(UTF8ToString(text)); });
+EM_JS(void, page_show_progress, (const char* text), { window.sandboxPage.showProgress(UTF8ToString(text)); });
 EM_JS(void, page_set_unsaved_edits, (int unsaved), { window.sandboxPage.setUnsavedEdits(!!unsaved); });
 EM_JS(void, page_set_link, (const char* query, const char* scene), {
     window.sandboxPage.setLink(UTF8ToString(query), UTF8ToString(scene));
@@ -273,6 +274,10 @@ void pageShowState(const std::string& json) {
 
 void pageAnnounce(const std::string& text) {
     page_announce(text.c_str());
+}
+
+void pageShowProgress(const std::string& text) {
+    page_show_progress(text.c_str());
 }
 
 void pageSetUnsavedEdits(bool unsaved) {

@@ -75,6 +75,9 @@ void pageSetTyping(bool typing);
 // pageStateJson(), and one sentence for the polite live region.
 void pageShowState(const std::string& json);
 void pageAnnounce(const std::string& text);
+// What the app is busy with ("Opening big.json (3.9 MB)..."), over the canvas and in a status
+// region; "" hides it.
+void pageShowProgress(const std::string& text);
 // With unsaved edits, the browser asks before the tab is closed or reloaded (beforeunload).
 void pageSetUnsavedEdits(bool unsaved);
 // The address bar shows this link (link.h: the query, and the scene it carries or ""); the page

@@ -6,12 +6,14 @@
 #include "app_frame.h"
 #include "app_setup.h"
 #include "audio_out.h"
+#include "browser_limits.h"
 #include "canvas_web.h"
 #include "imgui_ext.h"
 #include "link.h"
 #include "mouse_tool.h"
 #include "options.h"
 #include "page_controls.h"
+#include "printable.h"
 #include "renderer.h"
 #include "spoken_text.h"
 #include "touch_input.h"
@@ -24,6 +26,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <deque>
+#include <exception>
 #include <filesystem>
 #include <string>
 
@@ -54,6 +58,11 @@ struct WebApp {
     SpokenScreen spoken;    // the screen as the live region last told it (spoken_text.h)
     double stateAt = -1e9;  // realTime when the page's text was last made
     double linkAt = -1e9;   // the page's clock (s) when the link was last looked at
+    // Files dropped or picked, opened in turn, each a frame after the page says "Opening ..."
+    // (openFilesInTurn); `openingShown`: the page says it for the first one.
+    std::deque<std::string> opening;
+    bool openingShown = false;
+    std::string saidMessage; // the app's error or note as the page's live region last said it
 };
 
 WebApp* gWeb = nullptr;
@@ -99,7 +108,7 @@ void followLink(WebApp& w, double now) {
     w.linkAt = now;
     const App& app = w.app;
     std::string scene = w.linkScene;
-    if (!linkCarriesScene(app)) {
+    if (!linkCarriesScene(app) || linkSceneTooLarge(app)) {
         scene.clear();
     } else if (scene.empty() || (app.sim.paused && now - w.linkSceneAt >= kLinkRefreshSeconds)) {
         scene = sceneToJson(app.sim.currentScene());
@@ -157,7 +166,9 @@ void answerRequests(WebApp& w) {
     app.ui.savedFile.clear();
     if (app.ui.filePickerRequested) pageOpenFilePicker();
     app.ui.filePickerRequested = false;
-    if (app.ui.copyLinkRequested) // the scene as it is now, running or not
+    if (app.ui.copyLinkRequested && linkSceneTooLarge(app)) // no link can carry it
+        app.ui.messages.error = linkTooManyBlocksMessage(app.sim.world().blocks.size());
+    else if (app.ui.copyLinkRequested) // the scene as it is now, running or not
         pageCopyLink(linkQuery(app),
                      linkCarriesScene(app) ? sceneToJson(app.sim.currentScene()) : "");
     app.ui.copyLinkRequested = false;
@@ -192,10 +203,42 @@ void tellPage(WebApp& w, double realSeconds) {
     const std::string said = w.app.sim.announcer.announce(
         w.realTime, [&](int i) { return w.app.sim.blockDisplayName(i); });
     if (!said.empty()) pageAnnounce(said);
+    // The panel's error or note, when it changes, is said too (a refused file, a bad link).
+    const Messages& m = w.app.ui.messages;
+    const std::string& message = m.error.empty() ? m.note : m.error;
+    if (message != w.saidMessage && !message.empty()) pageAnnounce(message);
+    w.saidMessage = message;
 }
 
-void frame(void* arg) {
-    WebApp& w = *static_cast<WebApp*>(arg);
+// Files dropped or picked open one at a time: one refused at once when it is larger than the
+// browser opens (browser_limits.h: the message names the limit, and the file leaves the
+// browser's memory); otherwise the page says "Opening NAME (SIZE)..." for a frame (drawn before
+// the work starts, which holds the page's one thread), then it opens.
+void openFilesInTurn(WebApp& w) {
+    for (std::string& path : canvasTakeOpenedFiles(w.canvas)) w.opening.push_back(std::move(path));
+    if (w.opening.empty()) return;
+    const std::string path = w.opening.front();
+    std::error_code ec;
+    const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+    const std::string refusal = ec ? std::string() : browserOpenRefusal(path, bytes);
+    if (!refusal.empty()) {
+        w.app.ui.messages.error = refusal;
+        std::filesystem::remove(path, ec);
+        w.opening.pop_front();
+        return;
+    }
+    if (!w.openingShown) {
+        pageShowProgress(openingMessage(path, ec ? 0 : bytes));
+        w.openingShown = true;
+        return;
+    }
+    openFile(w.app, path);
+    pageShowProgress("");
+    w.openingShown = false;
+    w.opening.pop_front();
+}
+
+void runFrame(WebApp& w) {
     App& app = w.app;
     double realSeconds = 0.0;
     canvasNewFrame(w.canvas, &realSeconds);
@@ -206,7 +249,7 @@ void frame(void* arg) {
         uiRendererFontsChanged();
         uiRendererNewFrame(); // uploads the new atlas before this frame uses it
     }
-    for (const std::string& path : canvasTakeOpenedFiles(w.canvas)) openFile(app, path);
+    openFilesInTurn(w);
     for (const TouchGesture& g : canvasTakeGestures(w.canvas))
         touchPanZoom(app.view, g.from, g.to, g.spreadRatio);
     app.ui.touchUi = app.ui.touchUi || w.canvas.touchScreen || w.touch.active();
@@ -224,6 +267,31 @@ void frame(void* arg) {
     followTyping(w);
     followLink(w, emscripten_get_now() / 1000.0);
     saveSettings(w);
+    if (w.frames++ == 0) pageFirstFrameShown();
+}
+
+// Every exception reaches the page as a message (the panel's error and the live region), and the
+// next frame goes on: an ImGui frame left open by it is closed first.
+void frame(void* arg) {
+    WebApp& w = *static_cast<WebApp*>(arg);
+    std::string what;
+    try {
+        runFrame(w);
+        return;
+    } catch (const std::exception& e) {
+        what = e.what();
+    } catch (...) {
+        what = "an unknown exception";
+    }
+    if (ImGui::GetCurrentContext()->WithinFrameScope) {
+        ImGui::ErrorCheckEndFrameRecover(nullptr);
+        ImGui::EndFrame();
+    }
+    w.app.ui.messages.error = "The sandbox met an error and goes on: " + printable(what);
+    std::fprintf(stderr, "sandbox: %s\n", w.app.ui.messages.error.c_str());
+    pageShowProgress("");
+    w.opening.clear();
+    w.openingShown = false;
     if (w.frames++ == 0) pageFirstFrameShown();
 }
 
@@ -260,6 +328,25 @@ extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_verbose(int on) {
 // gestures).
 extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_open_help() {
     if (gWeb) gWeb->app.ui.helpOpen = true;
+}
+
+// Called by web/index.html before it reads a picked file: 1 when the browser does not open a
+// file of that name and size (browser_limits.h; the panel and the live region then say why and
+// the page never reads it), else 0.
+extern "C" EMSCRIPTEN_KEEPALIVE int sandbox_web_refuse_file(const char* name, double bytes) {
+    if (!gWeb || !name) return 0;
+    const std::string refusal =
+        browserOpenRefusal(name, bytes > 0.0 ? static_cast<std::uintmax_t>(bytes) : 0u);
+    if (refusal.empty()) return 0;
+    gWeb->app.ui.messages.error = refusal;
+    return 1;
+}
+
+// Called by web/index.html for an error of the page's own (an uncaught exception or rejection):
+// the panel and the live region say it.
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_page_error(const char* text) {
+    if (gWeb && text)
+        gWeb->app.ui.messages.error = "The page met an error: " + printable(text, 300);
 }
 
 // Called by web/index.html when "Copy link" is done: the note, or the error (a link too long).

@@ -1,5 +1,6 @@
 #include "save_naming.h"
 
+#include "input_limits.h"
 #include "settings_table.h"
 #include "text_format.h"
 
@@ -89,5 +90,8 @@ std::string savedDescription(const std::string& description, const WorldSettings
     if (note.empty()) return description;
     std::string text = description;
     while (!text.empty() && (text.back() == ' ' || text.back() == '\n')) text.pop_back();
-    return text.empty() ? note : text + " " + note;
+    text = text.empty() ? note : text + " " + note;
+    // A description at its limit keeps its own words: the file must load again.
+    return limits::textLengthViolation(text, limits::kMaxDescriptionChars).empty() ? text
+                                                                                   : description;
 }

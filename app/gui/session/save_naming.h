@@ -28,7 +28,8 @@ bool pathExists(const std::string& path);
 // "Saved with changed settings: gravity (0, -9.81) m/s², method turn-based."
 std::string changedSettingsNote(const WorldSettings& original, const WorldSettings& now);
 // The description to save: the original text and, when the settings changed, the note after it
-// (the text itself is never rewritten: it may state what no longer holds, the note says why).
+// (the text itself is never rewritten: it may state what no longer holds, the note says why);
+// the original alone when the note would take it past the format's limit (input_limits.h).
 std::string savedDescription(const std::string& description, const WorldSettings& original,
                              const WorldSettings& now);
 // True when the two settings differ in what changedSettingsNote() names.

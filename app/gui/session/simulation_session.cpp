@@ -1,5 +1,6 @@
 #include "simulation_session.h"
 
+#include "input_limits.h"
 #include "placement.h"
 #include "save_naming.h"
 #include "settings_table.h"
@@ -317,6 +318,9 @@ Scene SimulationSession::currentScene() const {
         BlockDef def;
         def.name = i < world().blocks.size() ? nameWithMass(labels[i].name, world().blocks[i].mass)
                                              : labels[i].name;
+        // A name whose new mass takes it past the format's limit is saved as it was read.
+        if (!limits::textLengthViolation(def.name, limits::kMaxNameChars).empty())
+            def.name = labels[i].name;
         def.color = labels[i].color;
         original.blocks.push_back(def);
     }

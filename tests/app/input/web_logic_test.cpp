@@ -3,10 +3,13 @@
 #include "app.h"
 #include "app_setup.h"
 #include "browser_input.h"
+#include "browser_limits.h"
 #include "input_map.h"
 #include "link.h"
 #include "mouse_tool.h"
+#include "settings_table.h"
 #include "shape_batch.h"
+#include "test_fixtures.h"
 #include "touch_input.h"
 #include "url_params.h"
 
@@ -32,12 +35,50 @@ TEST(UrlParams, TheLecturersLink) {
         parseUrlParams("?scene=newtons_cradle&method=turn-based&show=plots,inspector");
     EXPECT_TRUE(p.errors.empty());
     EXPECT_EQ(p.scene, "newtons_cradle");
-    ASSERT_TRUE(p.methodGiven);
-    EXPECT_EQ(p.method, Method::TurnBased);
+    ASSERT_EQ(p.worldGiven.size(), 1u);
+    EXPECT_STREQ(p.worldGiven[0]->key, "method");
+    EXPECT_EQ(p.world.method, Method::TurnBased);
     ASSERT_TRUE(p.showGiven);
     EXPECT_TRUE(p.show.overlays.plots);
     EXPECT_TRUE(p.show.overlays.inspector);
     EXPECT_FALSE(p.show.overlays.cost);
+}
+
+TEST(UrlParams, EveryWorldKeyOfTheSettingsTableIsAParameter) {
+    // Issue 37: a link sets any world key as a scene file has it; one out of its range is not
+    // applied, said with its range, and the rest opens.
+    App app = setUpApp();
+    applyUrlParams(app,
+                   parseUrlParams("?scene=friction_slide&friction=0.8&drag=1.2&dt=0.01&"
+                                  "substeps=4&integrator=exact&resolve=reflect&"
+                                  "mistakes=discrete,move-back&gravity=0,-1.62&bounciness=0.44"));
+    EXPECT_EQ(app.ui.messages.error, "");
+    const WorldSettings& w = app.sim.world().settings;
+    EXPECT_NE(app.sim.scenePath.find("friction_slide"), std::string::npos);
+    EXPECT_EQ(w.friction, 0.8);
+    EXPECT_EQ(w.drag, 1.2);
+    EXPECT_EQ(w.dt, 0.01);
+    EXPECT_EQ(w.substeps, 4);
+    EXPECT_EQ(w.integrator, Integrator::Exact);
+    EXPECT_EQ(w.resolve, Resolve::Reflect);
+    EXPECT_TRUE(w.has(Mistake::Discrete) && w.has(Mistake::MoveBack));
+    EXPECT_EQ(w.gravity.x, 0.0);
+    EXPECT_EQ(w.gravity.y, -1.62);
+    EXPECT_EQ(w.bounciness, 0.44);
+    for (const settings_table::WorldKey& row : settings_table::worldKeys()) {
+        // Every key of a scene file is a parameter: a bad value is refused for its value.
+        const UrlParams p = parseUrlParams(std::string("?") + row.key + "=%3F");
+        ASSERT_EQ(p.errors.size(), 1u) << row.key;
+        EXPECT_EQ(p.errors[0].find("URL parameter " + std::string(row.key) + ": '?' must be"),
+                  row.inScene ? 0u : std::string::npos)
+            << p.errors[0];
+    }
+    App bad = setUpApp();
+    applyUrlParams(bad, parseUrlParams("?scene=friction_slide&friction=5000&substeps=2"));
+    EXPECT_EQ(bad.ui.messages.error,
+              "URL parameter friction: '5000' must be from 0 to 1000, not 5000: not applied");
+    EXPECT_EQ(bad.sim.world().settings.friction, bad.sim.scene.settings.friction);
+    EXPECT_EQ(bad.sim.world().settings.substeps, 2);
 }
 
 TEST(UrlParams, EmptyAndPercentEncoded) {
@@ -46,21 +87,23 @@ TEST(UrlParams, EmptyAndPercentEncoded) {
     const UrlParams p = parseUrlParams("show=plots%2Ccom&&method=move%2Dand%2Dcorrect");
     EXPECT_TRUE(p.errors.empty()) << p.errors.front();
     EXPECT_TRUE(p.show.overlays.plots && p.show.overlays.com);
-    EXPECT_EQ(p.method, Method::MoveAndCorrect);
+    EXPECT_EQ(p.world.method, Method::MoveAndCorrect);
 }
 
 TEST(UrlParams, EachBadParameterIsNamedAndTheGoodOnesStillCount) {
     const UrlParams p =
         parseUrlParams("?method=fast&scene=../etc/passwd&show=plots,bogus&zoom=2&scene=x");
     ASSERT_EQ(p.errors.size(), 5u);
-    EXPECT_NE(p.errors[0].find("URL parameter method: unknown method 'fast'"), std::string::npos);
+    EXPECT_EQ(p.errors[0], "URL parameter method: 'fast' must be perfect, move-and-correct or "
+                           "turn-based: not applied");
     EXPECT_NE(p.errors[1].find("URL parameter scene: '../etc/passwd' is not a scene name"),
               std::string::npos);
     EXPECT_NE(p.errors[2].find("URL parameter show"), std::string::npos);
     EXPECT_NE(p.errors[3].find("URL parameter scene: given twice"), std::string::npos);
     EXPECT_EQ(p.errors[4], "unknown URL parameter 'zoom' ignored (known: scene, lesson, step, "
-                           "method, show, frame)");
-    EXPECT_FALSE(p.methodGiven);
+                           "show, frame, method, bounciness, gravity, dt, substeps, resolve, "
+                           "integrator, drag, friction, mistakes)");
+    EXPECT_TRUE(p.worldGiven.empty());
     EXPECT_TRUE(p.scene.empty());
 }
 
@@ -80,7 +123,8 @@ TEST(UrlParams, ThousandsOfUnknownParametersTakeOneShortLine) {
     const UrlParams p = parseUrlParams(query);
     ASSERT_EQ(p.errors.size(), 1u);
     EXPECT_EQ(p.errors[0], "5000 unknown URL parameters ignored: 'p0', 'p1', 'p2', ... (known: "
-                           "scene, lesson, step, method, show, frame)");
+                           "scene, lesson, step, show, frame, method, bounciness, gravity, dt, "
+                           "substeps, resolve, integrator, drag, friction, mistakes)");
     EXPECT_EQ(p.scene, "newtons_cradle"); // the known one still counts
 }
 
@@ -89,7 +133,7 @@ TEST(UrlParams, ThousandsOfBadValuesTakeAFewLines) {
     for (int i = 0; i < 5000; ++i) query += "&method=x" + std::to_string(i);
     const UrlParams p = parseUrlParams(query);
     ASSERT_EQ(p.errors.size(), kMaxUrlErrors + 1);
-    EXPECT_NE(p.errors[0].find("unknown method 'x0'"), std::string::npos);
+    EXPECT_NE(p.errors[0].find("URL parameter method: 'x0' must be"), std::string::npos);
     EXPECT_EQ(p.errors.back(), "... and 4995 more problems in the URL");
 }
 
@@ -161,14 +205,26 @@ TEST(UrlParams, BadLessonParameters) {
     ASSERT_EQ(p.errors.size(), 1u);
     EXPECT_NE(p.errors[0].find("URL parameter step: needs a lesson"), std::string::npos);
     EXPECT_EQ(p.step, 0);
-    EXPECT_EQ(parseUrlParams("?lesson=lecture3&step=0").errors.size(), 1u);
-    EXPECT_EQ(parseUrlParams("?lesson=lecture3&step=-2").errors.size(), 1u);
-    EXPECT_EQ(parseUrlParams("?lesson=lecture3&step=99999999999").errors.size(), 1u);
+    // One rule for a value out of its range: not applied, said with the range, the rest opens
+    // (the lesson at its first step), whether the step is one past the last or has 17 digits.
+    for (const char* step : {"1000", "0", "-2", "99999999999", "five", ""}) {
+        SCOPED_TRACE(step);
+        App app = setUpApp();
+        applyUrlParams(app, parseUrlParams(std::string("?lesson=lecture3&step=") + step));
+        ASSERT_TRUE(app.lesson.active());
+        EXPECT_EQ(app.lesson.current, 0u);
+        const std::size_t steps = app.lesson.lesson->steps.size();
+        EXPECT_EQ(app.ui.messages.error, "URL parameter step: '" + std::string(step) +
+                                             "' is not a step of 'lecture3' (1 to " +
+                                             std::to_string(steps) + "): it opens at step 1");
+    }
     App app = setUpApp();
-    const std::string before = app.sim.scenePath;
-    applyUrlParams(app, parseUrlParams("?lesson=lecture3&step=999"));
-    EXPECT_FALSE(app.ui.messages.error.empty()); // no step 999: the current scene stays
-    EXPECT_EQ(app.sim.scenePath, before);
+    applyUrlParams(app, parseUrlParams("?lesson=lecture3&step=2"));
+    const std::size_t last = app.lesson.lesson->steps.size();
+    applyUrlParams(app, parseUrlParams("?lesson=lecture3&step=" + std::to_string(last)));
+    EXPECT_EQ(app.ui.messages.error, "");
+    EXPECT_EQ(app.lesson.current, last - 1);
+    app = setUpApp();
     applyUrlParams(app, parseUrlParams("?lesson=no_such_lesson"));
     EXPECT_NE(app.ui.messages.error.find("no lesson 'no_such_lesson' is shipped"),
               std::string::npos);
@@ -404,6 +460,44 @@ TEST(TouchGesture, PansByTheMidpointAndZoomsAboutIt) {
     const double ppm = app.view.camera.pixelsPerMetre();
     touchPanZoom(app.view, {0, 0}, {0, 0}, std::nan(""));
     EXPECT_EQ(app.view.camera.pixelsPerMetre(), ppm);
+}
+
+TEST(BrowserLimits, LargeFilesAreRefusedAtOnceNamingTheLimit) {
+    EXPECT_EQ(browserOpenRefusal("/opened/cradle.json", kMaxBrowserSceneBytes), "");
+    EXPECT_EQ(browserOpenRefusal("/opened/my_trace.csv", kMaxBrowserTraceBytes), "");
+    EXPECT_EQ(browserOpenRefusal("/opened/big.json", 20u << 20),
+              "big.json is 20.0 MB: the browser opens scene files of up to " +
+                  byteSize(kMaxBrowserSceneBytes) +
+                  " (it has one thread, which the page's keys would wait for). Open it in the "
+                  "sandbox's window or with sandbox-cli run, which take larger files.");
+    const std::string trace = browserOpenRefusal("/opened/run.CSV", kMaxBrowserTraceBytes + 1);
+    EXPECT_NE(trace.find("the browser opens traces of up to " + byteSize(kMaxBrowserTraceBytes)),
+              std::string::npos)
+        << trace;
+    EXPECT_NE(trace.find("sandbox-cli compare"), std::string::npos) << trace;
+    // The file's name is echoed printable.
+    EXPECT_EQ(browserOpenRefusal("/opened/\x1b]0;x\x07.json", 1u << 30).find('\x1b'),
+              std::string::npos);
+    EXPECT_EQ(openingMessage("/opened/gas_500.json", 94208), "Opening gas_500.json (92 KB)...");
+    EXPECT_EQ(byteSize(812), "812 bytes");
+    EXPECT_EQ(byteSize(20u << 20), "20.0 MB");
+}
+
+TEST(Link, AScenesOfManyBlocksIsNotCarried) {
+    App app = setUpApp();
+    std::vector<BlockDef> blocks;
+    for (std::size_t i = 0; i <= kMaxLinkBlocks; ++i)
+        blocks.push_back(
+            testBlock("", {0.5 + static_cast<double>(i % 100), 0.5 + static_cast<double>(i / 100)},
+                      {0.5, 0.5}));
+    Scene scene = weightlessScene("many", blocks);
+    scene.bounds = Bounds{{0, 0}, {100, 100}};
+    setScene(app, scene, "/opened/many.json");
+    EXPECT_TRUE(linkCarriesScene(app));
+    EXPECT_TRUE(linkSceneTooLarge(app));
+    EXPECT_NE(linkTooManyBlocksMessage(kMaxLinkBlocks + 1).find("2001 blocks"), std::string::npos);
+    app.sim.world().blocks.pop_back();
+    EXPECT_FALSE(linkSceneTooLarge(app));
 }
 
 TEST(WideLineQuads, AsOpenGLRasterisesAWideLine) {

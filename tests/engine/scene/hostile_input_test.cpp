@@ -28,6 +28,19 @@ TEST(InputLimits, NumbersAreWrittenShortAndExact) {
     EXPECT_EQ(limits::describe(limits::kSubsteps), "a whole number from 1 to 1000");
 }
 
+TEST(InputLimits, TextIsCountedInCharacters) {
+    EXPECT_EQ(limits::characterCount("m1 = 1 kg"), 9u);
+    EXPECT_EQ(limits::characterCount("µ = 0.4 · é"), 11u); // UTF-8: µ, · and é are one each
+    EXPECT_EQ(limits::textLengthViolation(std::string(200, 'a'), 200), "");
+    EXPECT_EQ(limits::textLengthViolation(std::string(100, 'a') + std::string(50, '\xc3'), 100),
+              "must be at most 100 characters, not 150");
+    std::string accents;
+    for (int i = 0; i < 200; ++i) accents += "é"; // 400 bytes, 200 characters
+    EXPECT_EQ(limits::textLengthViolation(accents, 200), "");
+    EXPECT_EQ(limits::textLengthViolation(accents + "é", 200),
+              "must be at most 200 characters, not 201");
+}
+
 TEST(InputLimits, ViolationsNameTheLimit) {
     EXPECT_EQ(limits::violation(limits::kDt, 1.0 / 60.0), "");
     EXPECT_EQ(limits::violation(limits::kDt, 5e-324), "must be from 1e-6 to 1 s, not 5e-324");
@@ -192,12 +205,19 @@ TEST(HostileScenes, EchoedTextHasNoControlBytes) {
 
 TEST(HostileScenes, LongNamesAndNumbersAreCutInMessages) {
     const std::string name(10'000'000, 'A');
-    const SceneResult r = parse(blocks(R"({"name": ")" + name +
+    // A name at the limit (200 characters) is quoted cut in an overlap's message.
+    const SceneResult r = parse(blocks(R"({"name": ")" + name.substr(0, 200) +
                                        R"(", "position": [5, 5], "size": 1},
                                           {"position": [5.5, 5], "size": 1})"));
     ASSERT_FALSE(r.scene);
     EXPECT_LT(r.error.text().size(), 1000u) << r.error.text().substr(0, 300);
-    EXPECT_NE(r.error.message.find("...(10000000 bytes)"), std::string::npos);
+    EXPECT_NE(r.error.message.find("...(200 bytes)"), std::string::npos) << r.error.message;
+    // A longer one is refused for its length, the length said, nothing quoted.
+    const SceneResult longer =
+        parse(blocks(R"({"name": ")" + name + R"(", "position": [5, 5], "size": 1})"));
+    ASSERT_FALSE(longer.scene);
+    EXPECT_EQ(longer.error.text(),
+              "t.json: blocks[0].name: must be at most 200 characters, not 10000000");
     const SceneResult n =
         parse(blocks(R"({"position": [5, )" + std::string(300'000, '9') + R"(], "size": 1})"));
     ASSERT_FALSE(n.scene);
@@ -206,6 +226,21 @@ TEST(HostileScenes, LongNamesAndNumbersAreCutInMessages) {
     const SceneResult key = parse(R"({"name": "t", "blocks": [], ")" + name + R"(": 1})");
     ASSERT_FALSE(key.scene);
     EXPECT_LT(key.error.text().size(), 1000u);
+}
+
+TEST(HostileScenes, NamesAndTheDescriptionHaveTheirLengths) {
+    // Each at its limit is taken; one character more is refused, naming the field and the limit.
+    const std::string name(limits::kMaxNameChars, 'n');
+    const std::string description(limits::kMaxDescriptionChars, 'd');
+    const std::string scene =
+        R"({"name": ")" + name + R"(", "description": ")" + description + R"(", "blocks": []})";
+    ASSERT_TRUE(parse(scene).scene) << parse(scene).error.text();
+    expectRefused(R"({"name": ")" + name + R"(n", "blocks": []})", "t.json: name",
+                  "must be at most 200 characters, not 201");
+    expectRefused(R"({"name": "t", "description": ")" + description + R"(d", "blocks": []})",
+                  "t.json: description", "must be at most 10000 characters, not 10001");
+    expectRefused(R"({"name": ")" + std::string(20 << 20, 'A') + R"(", "blocks": []})",
+                  "t.json: name", "must be at most 200 characters, not 20971520");
 }
 
 TEST(HostileScenes, ASymlinkLoopSaysSo) {

@@ -1,0 +1,210 @@
+#!/usr/bin/python3
+"""The browser never hangs silently (issue 41): input past its limits is refused with a message
+on the page, long work shows progress and keeps the page answering keys. Driven like
+browser_test.py (headless Chromium over the DevTools protocol, its Page); one check per run:
+
+  big-files   a scene whose name is 20 MB, a scene of 200,000 blocks, a 20 MB trace of the
+              student's engine and a scene with a 10 MB description, each given to the page's
+              file picker: each either opens with its progress shown on the page, or is refused
+              with a message on the page (the panel's error and the page's live region); no
+              uncaught exception; while it opens, a key is sent every 0.2 s and the time the
+              page takes to take it is measured (reported, not checked: no test reads a clock
+              to pass or fail); after it, F1 still opens the help
+  url-range   a URL value out of its range (?lesson=lecture3&step=1000, step=99999999) is refused
+              with a message naming the parameter and the range, and the rest opens (the lesson
+              at its first step)
+
+Exit 0: passed; 1: failed; 77: skipped (as browser_test.py).
+
+usage: big_inputs_test.py SITE_DIR CHECK
+"""
+import functools
+import http.server
+import json
+import os
+import re
+import statistics
+import sys
+import threading
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import browser_test as bt  # noqa: E402 (its Page, its server, its skip rules)
+import websocket  # noqa: E402 (python3-websocket: browser_test.py skipped without it)
+
+check = bt.check
+
+# Each input as the page makes it (JavaScript that returns the file's text), its file name, and
+# the shipped scene the page shows first (a trace is opened on the scene it traces).
+TWENTY_MB = 20 << 20
+INPUTS = [
+    ("a 20 MB name", "name_20mb.json", "",
+     f"'{{\"name\": \"' + 'A'.repeat({TWENTY_MB}) + "
+     "'\", \"blocks\": [{\"position\": [5, 5], \"size\": 1}]}'"),
+    ("200,000 blocks", "blocks_200000.json", "",
+     "(() => { const b = []; for (let i = 0; i < 200000; ++i) b.push('{\"position\": [' + "
+     "(i % 500 + 0.5) + ', ' + (Math.floor(i / 500) + 0.5) + '], \"size\": 0.5, \"velocity\": [' "
+     "+ (i % 7 - 3) + ', ' + (i % 5 - 2) + ']}'); return '{\"name\": \"200000 blocks\", "
+     "\"world\": {\"bounds\": [0, 0, 500, 400], \"gravity\": [0, 0]}, \"blocks\": [' + b.join(',\\n') "
+     "+ ']}'; })()"),
+    ("a 20 MB trace", "trace_20mb.csv", "?scene=lecture_example_1",
+     # lecture_example_1's blocks (m1 at 6 m/s, m2 at rest) frame by frame until 20 MB.
+     f"(() => {{ const rows = ['t,m1_x,m1_y,m1_vx,m1_vy,m2_x,m2_y,m2_vx,m2_vy']; let n = 0; "
+     f"for (let k = 1; n < {TWENTY_MB}; ++k) {{ const t = k / 60; const r = t.toFixed(6) + ',' + "
+     "(4 + 6 * t).toFixed(9) + ',6,6,0,8.75,6,0,0'; rows.push(r); n += r.length + 1; } "
+     "return rows.join('\\n') + '\\n'; })()"),
+    ("a 10 MB description", "description_10mb.json", "",
+     f"'{{\"name\": \"long\", \"description\": \"' + 'word '.repeat({10 << 20} / 5) + "
+     "'\", \"blocks\": [{\"position\": [5, 5], \"size\": 1}]}'"),
+]
+
+
+def make_file(page, name, make_js):
+    """The file made in the page (window.bigFile), before anything is measured."""
+    page.evaluate(f"window.bigFile = new File([{make_js}], '{name}'); 0")
+
+
+def pick_file(page):
+    """window.bigFile handed to the page's file picker, as a user's pick would be."""
+    page.evaluate("""(() => {
+        const list = new DataTransfer();
+        list.items.add(window.bigFile);
+        const input = document.getElementById('file');
+        input.files = list.files;
+        input.dispatchEvent(new Event('change'));
+    })()""")
+
+
+def key_latency(page):
+    """Seconds the page takes to take one key (Shift, which does nothing): Chromium answers
+    Input.dispatchKeyEvent once the page's main thread has handled the event."""
+    start = time.monotonic()
+    for kind in ("rawKeyDown", "keyUp"):
+        page.call("Input.dispatchKeyEvent", type=kind, key="Shift", code="ShiftLeft",
+                  windowsVirtualKeyCode=16, nativeVirtualKeyCode=16)
+    return (time.monotonic() - start) / 2
+
+
+def wait_for(condition, seconds=30):
+    """True once `condition()` holds, False after `seconds` (a page that no longer answers)."""
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        if condition():
+            return True
+        time.sleep(0.1)
+    return False
+
+
+def settled(page, name):
+    """The open's outcome once it is over: ("opened", status) or ("refused", status); None while
+    it goes on."""
+    s = page.status()
+    if s is None or s.get("loading"):
+        return None
+    if s["scene"].endswith("/" + name) or (name.endswith(".csv") and
+                                          s["traceFirstDifference"] is not None):
+        return "opened", s
+    if name in s["error"] or "20 MB" in s["error"] or "MB" in s["error"]:
+        return "refused", s
+    return None
+
+
+def big_files(base):
+    failures = []
+    for what, name, query, make_js in INPUTS:
+        page = bt.Page(1280, 720)
+        try:
+            page.open(base + query)
+            page.evaluate("window.sandboxProgressLog = []")
+            make_file(page, name, make_js)
+            started = time.monotonic()
+            pick_file(page)
+            latencies, outcome = [], None
+            deadline = started + bt.HANG_GUARD_S * 3
+            while outcome is None:
+                check(time.monotonic() < deadline, f"{what}: neither opened nor refused")
+                latencies.append(key_latency(page))
+                outcome = settled(page, name)
+                time.sleep(0.2)
+            took = time.monotonic() - started
+            how, s = outcome
+            progress = page.evaluate("window.sandboxProgressLog")
+            # The live region says a refusal on the next frames (the app's message, when it
+            # changes, is announced as the page's state is sent).
+            def live_text():
+                return page.evaluate("document.getElementById('reader-live').textContent")
+            if how == "refused":
+                wait_for(lambda: s["error"][:60] in live_text(), 10)
+            live = live_text()
+            # The page still answers: F1 opens the help.
+            page.key("F1", "F1", 112)
+            answered = wait_for(lambda: page.status()["helpOpen"])
+            page.wait_frames(2)
+            said = f"progress shown {len(progress)} times" if how == "opened" else repr(s["error"][:160])
+            print(f"{what}: {how} after {took:.1f} s ({said}); the page took a key in "
+                  f"{statistics.median(latencies) * 1000:.0f} ms median, "
+                  f"{max(latencies) * 1000:.0f} ms at most ({len(latencies)} keys; reported, "
+                  f"not checked); F1 {'opened' if answered else 'did not open'} the help after",
+                  flush=True)
+            if how == "opened":
+                check(progress, f"{what}: opened with no progress shown on the page")
+            else:
+                check(s["error"] and s["error"][:60] in live,
+                      f"{what}: refused, but the page's live region does not say it: {live!r}")
+            check(answered, f"{what}: F1 did not open the help after it")
+            check(not page.errors, f"{what}: the console has errors:\n" + "\n".join(page.errors))
+        except AssertionError as e:  # every input is tried and reported
+            print(f"FAILED: {e}", flush=True)
+            failures.append(str(e))
+        except websocket.WebSocketTimeoutException:
+            took = time.monotonic() - started
+            print(f"FAILED: {what}: the page answered nothing for {bt.HANG_GUARD_S} s "
+                  f"({took:.0f} s after the file was given)", flush=True)
+            failures.append(f"{what}: hung")
+        finally:
+            page.close()
+    check(not failures, f"{len(failures)} of {len(INPUTS)} inputs failed")
+
+
+def url_range(base):
+    page = bt.Page(1280, 720)
+    try:
+        for step in ("1000", "99999999"):
+            page.open(base + f"?lesson=lecture3&step={step}")
+            s = page.status()
+            check(s["lessonStep"] == 1, f"step={step}: the lesson is not open at its first step: {s}")
+            check(re.search(r"URL parameter step: '\d+' is not a step of 'lecture3' \(1 to \d+\)",
+                            s["error"]),
+                  f"step={step}: the message does not name the parameter and its range: {s['error']!r}")
+            print(f"?lesson=lecture3&step={step}: the lesson at step 1, and {s['error']!r}")
+        check(not page.errors, "the console has errors:\n" + "\n".join(page.errors))
+    finally:
+        page.close()
+
+
+def main():
+    if len(sys.argv) < 3:
+        print(__doc__)
+        return 2
+    site, what = sys.argv[1], sys.argv[2]
+    if not os.path.exists(bt.CHROMIUM):
+        bt.skip("chromium is not installed (scripts/web.sh deps installs it)")
+    if not os.path.exists(os.path.join(site, "index.html")):
+        bt.skip(f"{site}/index.html is missing: build the browser build with scripts/web.sh build")
+    server = http.server.ThreadingHTTPServer(
+        ("127.0.0.1", 0), functools.partial(bt.QuietHandler, directory=site))
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    base = f"http://127.0.0.1:{server.server_address[1]}/index.html"
+    try:
+        {"big-files": big_files, "url-range": url_range}[what](base)
+    except AssertionError as e:
+        print(f"FAILED: {e}")
+        return 1
+    finally:
+        server.shutdown()
+    print("passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
