@@ -138,7 +138,7 @@ bool playDueEdits(EditedWorld& w, std::ostream& err) {
             error = w.history.apply(w.target(), e.edit, w.world.frame, e.continues).error;
         }
         if (error.empty()) continue;
-        err << logLineError(w.log->log(), *line, error).text() << "\n";
+        err << logLineError(*line, error).text() << "\n";
         return false;
     }
     return true;

@@ -44,6 +44,8 @@ class EditHistory {
     // The last edit undone (redo: the last undone done again), journaled at `frame`.
     UndoResult undo(EditTarget target, std::uint64_t frame);
     UndoResult redo(EditTarget target, std::uint64_t frame);
+    // The next continuing edit begins a new undo step (a new gesture).
+    void endGesture() { joinable_ = false; }
     bool canUndo() const { return !undo_.empty(); }
     bool canRedo() const { return !redo_.empty(); }
     // The edit the next undo (redo) would undo (do again); null when none.

@@ -140,51 +140,59 @@ SceneError lineError(const std::string& source, std::size_t line, const std::str
     return sceneError(source + ":" + std::to_string(line), message);
 }
 
-// One line's object; throws scene_json::ValueError naming the key at fault.
-JournalEntry readEntry(const json& object) {
+// One line's object, at `path` ("" for a line of a file: its keys are named alone); throws
+// scene_json::ValueError naming the key at fault.
+JournalEntry readEntry(const json& object, const std::string& path, std::uint64_t lastFrame) {
     using namespace scene_json;
-    requireObject(object, "(line)");
-    checkKeys(object, "", {"frame", "set", "value", "continues", "add", "remove", "undo", "redo"});
-    if (!object.contains("frame")) throw ValueError{"(line)", "missing \"frame\""};
+    const std::string line = path.empty() ? "(line)" : path;
+    const auto at = [&path](const char* key) { return keyPath(path, key); };
+    requireObject(object, line);
+    checkKeys(object, path,
+              {"frame", "set", "value", "continues", "add", "remove", "undo", "redo"});
+    if (!object.contains("frame")) throw ValueError{line, "missing \"frame\""};
     JournalEntry entry;
-    entry.frame = static_cast<std::uint64_t>(number(object["frame"], "frame", limits::kFrames));
+    entry.frame = static_cast<std::uint64_t>(number(object["frame"], at("frame"), limits::kFrames));
+    if (entry.frame < lastFrame)
+        throw ValueError{at("frame"), std::to_string(entry.frame) + " comes after frame " +
+                                          std::to_string(lastFrame) +
+                                          ": a log lists its edits in the order they apply"};
     int kinds = 0;
     for (const char* what : {"set", "add", "remove", "undo", "redo"})
         kinds += object.contains(what) ? 1 : 0;
     if (kinds != 1)
-        throw ValueError{"(line)", "must have one of \"set\", \"add\", \"remove\", \"undo\" or "
-                                   "\"redo\""};
+        throw ValueError{line, "must have one of \"set\", \"add\", \"remove\", \"undo\" or "
+                               "\"redo\""};
     if (object.contains("value") && !object.contains("set"))
-        throw ValueError{"value", "only a \"set\" has a value"};
+        throw ValueError{at("value"), "only a \"set\" has a value"};
     if (object.contains("continues") && !object.contains("set"))
-        throw ValueError{"continues", "only a \"set\" continues the edit before it"};
+        throw ValueError{at("continues"), "only a \"set\" continues the edit before it"};
     for (const char* what : {"undo", "redo"}) {
         if (!object.contains(what)) continue;
-        if (object[what] != true) throw ValueError{what, "must be true"};
+        if (object[what] != true) throw ValueError{at(what), "must be true"};
         entry.what = what[0] == 'u' ? JournalEntry::What::Undo : JournalEntry::What::Redo;
         return entry;
     }
     if (object.contains("add")) {
-        requireObject(object["add"], "add");
+        requireObject(object["add"], at("add"));
         entry.edit = Edit::add(object["add"]);
         return entry;
     }
     if (object.contains("remove")) {
-        const std::string block = string(object["remove"], "remove");
-        if (block.empty()) throw ValueError{"remove", "must name a block"};
+        const std::string block = string(object["remove"], at("remove"));
+        if (block.empty()) throw ValueError{at("remove"), "must name a block"};
         entry.edit = Edit::remove(parseRef(block));
         return entry;
     }
-    const std::string key = string(object["set"], "set");
-    if (!object.contains("value")) throw ValueError{keyPath("", key), "missing \"value\""};
+    const std::string key = string(object["set"], at("set"));
+    if (!object.contains("value")) throw ValueError{keyPath(path, key), "missing \"value\""};
     if (object.contains("continues")) {
         if (!object["continues"].is_boolean())
-            throw ValueError{"continues", "must be true or false"};
+            throw ValueError{at("continues"), "must be true or false"};
         entry.continues = object["continues"].get<bool>();
     }
     EditError error;
     std::optional<Edit> edit = setEdit(key, object["value"], error);
-    if (!edit) throw ValueError{error.key, error.message};
+    if (!edit) throw ValueError{path.empty() ? error.key : path + "." + error.key, error.message};
     entry.edit = std::move(*edit);
     return entry;
 }
@@ -253,14 +261,9 @@ EditLogResult parseEditLog(const std::string& text, const std::string& source) {
             return result;
         }
         try {
-            JournalEntry entry = readEntry(object);
-            if (entry.frame < lastFrame)
-                throw scene_json::ValueError{"frame",
-                                             std::to_string(entry.frame) + " comes after frame " +
-                                                 std::to_string(lastFrame) +
-                                                 ": a log lists its edits in the order they apply"};
+            JournalEntry entry = readEntry(object, "", lastFrame);
             lastFrame = entry.frame;
-            log.lines.push_back({std::move(entry), lineNumber});
+            log.lines.push_back({std::move(entry), source + ":" + std::to_string(lineNumber)});
         } catch (const scene_json::ValueError& e) {
             result.error = lineError(source, lineNumber, e.path + ": " + e.message);
             return result;
@@ -280,8 +283,24 @@ EditLogResult readEditLog(const std::string& path) {
     return parseEditLog(text, path);
 }
 
-SceneError logLineError(const EditLog& log, const LogLine& line, const EditError& error) {
-    return lineError(log.source, line.line, error.text());
+EditLog editLogOf(const nlohmann::json& lines, const std::string& path) {
+    if (!lines.is_array()) throw scene_json::ValueError{path, "must be an array of edits"};
+    if (lines.size() > kMaxLogLines)
+        throw scene_json::ValueError{path, "more than " + std::to_string(kMaxLogLines) + " edits"};
+    EditLog log;
+    log.source = path;
+    std::uint64_t lastFrame = 0;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const std::string at = scene_json::indexPath(path, i);
+        JournalEntry entry = readEntry(lines[i], at, lastFrame);
+        lastFrame = entry.frame;
+        log.lines.push_back({std::move(entry), at});
+    }
+    return log;
+}
+
+SceneError logLineError(const LogLine& line, const EditError& error) {
+    return sceneError(line.place, error.text());
 }
 
 std::string logLineText(const JournalEntry& entry) {

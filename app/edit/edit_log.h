@@ -20,10 +20,11 @@
 // A log holds at most this many lines (blank ones aside), as a session's journal does.
 inline constexpr std::size_t kMaxLogLines = kMaxJournal;
 
-// One line of a log: what it does and its line number (for messages).
+// One line of a log: what it does and where it was read, for messages ("demo.jsonl:3", or
+// "lesson.json: steps[2].edits[0]" for a lesson step's edits).
 struct LogLine {
     JournalEntry entry;
-    std::size_t line = 0;
+    std::string place;
 };
 
 struct EditLog {
@@ -42,9 +43,13 @@ struct EditLogResult {
 // of the table); a value is checked when it is applied (applyEdit: the limits, the block named).
 EditLogResult parseEditLog(const std::string& text, const std::string& source);
 EditLogResult readEditLog(const std::string& path);
+// The same lines as a JSON array of those objects (a lesson step's "edits", `path` its place:
+// "lesson.json: steps[2].edits"); throws scene_json::ValueError naming the line and key
+// ("steps[2].edits[0].frame").
+EditLog editLogOf(const nlohmann::json& lines, const std::string& path);
 
 // An edit applied from a log refused: "edits.jsonl:3: m2.mass: must be ...".
-SceneError logLineError(const EditLog& log, const LogLine& line, const EditError& error);
+SceneError logLineError(const LogLine& line, const EditError& error);
 
 // The edit a log's "set" names: a world key ("bounciness") or BLOCK.FIELD, the block by its
 // name or its place ("m2.mass", "blocks[1].mass"; the field is after the last '.', so a name

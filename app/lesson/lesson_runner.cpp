@@ -1,5 +1,7 @@
 #include "lesson_runner.h"
 
+#include "edit_history.h"
+
 #include "printable.h"
 #include "scene_json.h"
 
@@ -49,17 +51,52 @@ bool countFrame(const LessonPause& pause, const World& world, const StepStats& s
     return false;
 }
 
+namespace {
+
+// A step's world and its edits (docs/edits.md), played at their frames as the app plays them.
+struct EditedStep {
+    World& world;
+    std::vector<BlockLabel> labels;
+    EditHistory history;
+    LogPlayer player;
+    EditedStep(World& w, const LessonStep& step) : world(w), player(step.edits) {
+        for (const BlockDef& def : step.scene->blocks) labels.push_back({def.name, def.color});
+    }
+    // The lines due at the world's frame; the first refusal, or "".
+    std::string playDue() {
+        while (const LogLine* line = player.next(world.frame)) {
+            const JournalEntry& e = line->entry;
+            const EditTarget target{world, labels};
+            EditError error;
+            if (e.what == JournalEntry::What::Undo)
+                error = history.undo(target, world.frame).error;
+            else if (e.what == JournalEntry::What::Redo)
+                error = history.redo(target, world.frame).error;
+            else
+                error = history.apply(target, e.edit, world.frame, e.continues).error;
+            if (!error.empty()) return logLineError(*line, error).text();
+        }
+        return "";
+    }
+};
+
+} // namespace
+
 World stepStartWorld(const LessonStep& step) {
-    return makeWorld(*step.scene);
+    World world = makeWorld(*step.scene);
+    EditedStep(world, step).playDue();
+    return world;
 }
 
 StepRun runStepToPause(const LessonStep& step) {
     StepRun run;
-    run.world = stepStartWorld(step);
+    run.world = makeWorld(*step.scene);
+    EditedStep edited(run.world, step);
+    run.editError = edited.playDue();
     if (step.pause.kind == LessonPause::Kind::None || pausesAtStart(step.pause)) return run;
     const int limit = maxStepFrames(step);
     std::vector<CollisionRecord> log;
-    while (run.progress.frames < limit) {
+    while (run.progress.frames < limit && run.editError.empty()) {
         log.clear();
         const StepStats stats =
             step.scene->player
@@ -67,6 +104,7 @@ StepRun runStepToPause(const LessonStep& step) {
                                  scriptedKeys(step.input, run.world.time, run.world.settings.dt),
                                  &log)
                 : run.world.step(&log);
+        run.editError = edited.playDue();
         if (countFrame(step.pause, run.world, stats, log, run.progress)) return run;
     }
     run.reached = false;
@@ -149,13 +187,17 @@ void checkExpects(const std::vector<LessonExpect>& expects, const StepRun& run, 
 
 std::vector<std::string> checkSetup(const LessonStep& step) {
     std::vector<std::string> failures;
-    StepRun setup{stepStartWorld(step), StepProgress{}, true};
+    StepRun setup{stepStartWorld(step), StepProgress{}, true, ""};
     checkExpects(step.given, setup, true, failures);
     return failures;
 }
 
 std::vector<std::string> checkStep(const LessonStep& step, const StepRun& run) {
     std::vector<std::string> failures = checkSetup(step);
+    if (!run.editError.empty()) { // its run stopped there
+        failures.push_back(run.editError);
+        return failures;
+    }
     if (!run.reached) {
         // Where it gave up: the collision search's end, or the step's budget of block-steps.
         const double searched = static_cast<double>(run.progress.frames);

@@ -29,9 +29,12 @@ struct StepRun {
     World world; // at the pause point (or where the runner gave up)
     StepProgress progress;
     bool reached = true; // false: the pause point never came within maxStepFrames()
+    std::string
+        editError; // a step's edit refused on the way ("lesson.json: steps[2].edits[0]: ...")
 };
 
-// The world exactly as the step states it (the same every time the step is entered).
+// The world exactly as the step states it (the same every time the step is entered): its scene
+// with its edits at frame 0.
 World stepStartWorld(const LessonStep& step);
 // Runs the step from its start to its pause point (no pause point: stays at the start).
 StepRun runStepToPause(const LessonStep& step);

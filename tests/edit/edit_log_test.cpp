@@ -89,7 +89,7 @@ TEST(EditLogText, ReadsEveryKindOfLine) {
                               "{\"frame\": 61, \"redo\": true}");
     ASSERT_EQ(log.lines.size(), 6u);
     EXPECT_EQ(log.lines[0].entry.frame, 30u);
-    EXPECT_EQ(log.lines[1].line, 3u);
+    EXPECT_EQ(log.lines[1].place, "demo.jsonl:3");
     EXPECT_EQ(log.lines[1].entry.edit.block.name, "m2");
     EXPECT_EQ(log.lines[2].entry.edit.kind, Edit::Kind::Add);
     EXPECT_EQ(log.lines[3].entry.edit.block.index, 2);

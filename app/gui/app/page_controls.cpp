@@ -60,6 +60,8 @@ std::string pageStateJson(const App& app) {
         {"scenes", scenes},
         {"lesson", app.lesson.active()},
         {"paused", app.sim.paused},
+        {"undo", app.sim.edits.canUndo()},
+        {"redo", app.sim.edits.canRedo()},
         {"method", methodName(w.method)},
         {"methods", methods},
         {"bounciness", w.bounciness},
@@ -74,10 +76,23 @@ std::string pageStateJson(const App& app) {
                                                                  json::error_handler_t::replace);
 }
 
+namespace {
+
+// An edit from the page (the one door); a refusal is the control's error, under the panel's
+// field too.
+void applyFromPage(App& app, const Edit& edit, const char* field, std::string& error) {
+    const EditError refused = app.sim.apply(edit);
+    if (refused.empty()) return;
+    error = refused.text();
+    app.ui.typedWarning.note(field, TypedValue{false, 0.0, error});
+}
+
+} // namespace
+
 PageControlOutcome applyPageControl(App& app, const std::string& control,
                                     const std::string& value) {
     PageControlOutcome out;
-    WorldSettings& w = app.sim.world().settings;
+    const WorldSettings& w = app.sim.world().settings;
     if (control == "scene") {
         if (!loadScene(app, value)) out.error = app.ui.messages.error;
     } else if (control == "lesson-previous") {
@@ -90,14 +105,26 @@ PageControlOutcome applyPageControl(App& app, const std::string& control,
         out.action = Action::StepOnce;
     } else if (control == "reset") {
         out.action = Action::Reset;
+    } else if (control == "undo") {
+        out.action = Action::Undo;
+    } else if (control == "redo") {
+        out.action = Action::Redo;
     } else if (control == "method") {
-        if (!parseMethod(value.c_str(), w.method)) out.error = "method: unknown '" + value + "'";
+        Method method = w.method;
+        if (!parseMethod(value.c_str(), method))
+            out.error = "method: unknown '" + value + "'";
+        else
+            applyFromPage(app, Edit::setWorld("method", methodName(method)), "method", out.error);
     } else if (control == "bounciness") {
-        acceptNumber(app, "bounciness C", value, w.bounciness, limits::kBounciness, w.bounciness,
-                     out.error);
+        double c = w.bounciness;
+        if (acceptNumber(app, "bounciness C", value, w.bounciness, limits::kBounciness, c,
+                         out.error))
+            applyFromPage(app, Edit::setWorld("bounciness", c), "bounciness C", out.error);
     } else if (control == "gravity-x" || control == "gravity-y") {
-        double& g = control == "gravity-x" ? w.gravity.x : w.gravity.y;
-        acceptNumber(app, "gravity", value, g, limits::kGravity, g, out.error);
+        Vec2 g = w.gravity;
+        double& axis = control == "gravity-x" ? g.x : g.y;
+        if (acceptNumber(app, "gravity", value, axis, limits::kGravity, axis, out.error))
+            applyFromPage(app, Edit::setWorld("gravity", {g.x, g.y}), "gravity", out.error);
     } else if (control == "block") {
         double index = -1.0;
         const int n = static_cast<int>(app.sim.world().blocks.size());
@@ -112,13 +139,12 @@ PageControlOutcome applyPageControl(App& app, const std::string& control,
         if (i < 0) {
             out.error = "mass: select a dynamic block first";
         } else {
-            Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
+            const Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
             double mass = b.mass;
             if (acceptNumber(app, "mass", value, b.mass, limits::kMass, mass, out.error)) {
                 const std::string problem = limits::accelerationViolation(length(b.force), mass);
                 if (problem.empty()) {
-                    b.mass = mass;
-                    app.sim.noteEdit(true);
+                    applyFromPage(app, Edit::setBlock({i, ""}, "mass", mass), "mass", out.error);
                 } else {
                     out.error = "mass: " + problem;
                     app.ui.typedWarning.note("mass", TypedValue{false, b.mass, out.error});

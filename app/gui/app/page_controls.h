@@ -1,8 +1,8 @@
 // The browser page's own text and form controls, for a screen reader or a switch device: beside
 // the canvas, the page keeps real DOM text in step with what the canvas shows (spoken_text.h)
 // and native, labelled, visually hidden controls (scene, lesson next/previous, play/pause,
-// step, reset, method, C, gravity, the selected block and its mass) that drive the same state
-// as the panel. This is the logic both ways, with no browser: tested in tests/app; the page
+// step, reset, undo, redo, method, C, gravity, the selected block and its mass) that drive the same
+// state as the panel. This is the logic both ways, with no browser: tested in tests/app; the page
 // (platform/web/index.html) draws it, main_web.cpp carries it.
 #pragma once
 
@@ -17,11 +17,12 @@ struct App;
 std::string pageStateJson(const App& app);
 
 // One of the page's controls was set. `control` is the form control's name ("scene",
-// "lesson-previous", "lesson-next", "play", "step", "reset", "method", "bounciness",
-// "gravity-x", "gravity-y", "block", "mass"), `value` its value (a number as typed, a scene's path,
-// a method's name, a block's index; "" for a button). A value the panel would refuse is refused the
-// same way (its warning shows under the panel's field and is returned); a button's effect is an
-// Action for the caller to apply (app_frame.h's applyAction), so it does exactly what the key does.
+// "lesson-previous", "lesson-next", "play", "step", "reset", "undo", "redo", "method",
+// "bounciness", "gravity-x", "gravity-y", "block", "mass"), `value` its value (a number as typed, a
+// scene's path, a method's name, a block's index; "" for a button). A value the panel would refuse
+// is refused the same way (its warning shows under the panel's field and is returned); a button's
+// effect is an Action for the caller to apply (app_frame.h's applyAction), so it does exactly what
+// the key does.
 struct PageControlOutcome {
     Action action = Action::None;
     std::string error; // "" when taken

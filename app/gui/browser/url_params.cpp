@@ -199,7 +199,7 @@ void applyUrlParams(App& app, const UrlParams& params) {
         else if (!loadScene(app, path))
             add(app.ui.messages.error);
     }
-    if (params.methodGiven) app.sim.world().settings.method = params.method;
+    if (params.methodGiven) app.sim.apply(Edit::setWorld("method", methodName(params.method)));
     if (params.showGiven) applyShowSet(app.view, params.show);
     if (params.frame) setViewFrame(app.view, *params.frame);
     app.ui.messages.error = errors;
