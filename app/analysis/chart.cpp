@@ -60,7 +60,7 @@ class Font {
         const int offset = data_.size() < 12 ? -1 : stbtt_GetFontOffsetForIndex(bytes, 0);
         if (offset < 0 || !stbtt_InitFont(&info_, bytes, offset)) {
             if (error)
-                *error = "cannot read the chart's font " + path +
+                *error = "cannot read the chart's font " + printable(path, kPrintablePath) +
                          " (a TrueType file; Debian package fonts-dejavu-core)";
             return false;
         }

@@ -38,6 +38,12 @@ template <class Write> bool writeFile(const std::string& path, std::ostream& err
     return true;
 }
 
+// "wrote PATH" on a line, the path as printable() shows it (a folder's name may hold control
+// bytes).
+std::string wrote(const std::string& path) {
+    return "wrote " + printable(path, kPrintablePath) + "\n";
+}
+
 } // namespace
 
 // Both commands run first and create the output directory only then: a run that fails (a scenes
@@ -63,8 +69,8 @@ int tradeoffCommand(const AnalysisRequest& request, std::ostream& out, std::ostr
         err << chartError << "\n";
         return kExitBadInput;
     }
-    out << rows.size() << " runs\nwrote " << base << ".csv\nwrote " << base << ".md\nwrote " << base
-        << ".png\n";
+    out << rows.size() << " runs\n";
+    for (const char* extension : {".csv", ".md", ".png"}) out << wrote(base + extension);
     return kExitOk;
 }
 
@@ -82,6 +88,6 @@ int stabilityCommand(const AnalysisRequest& request, std::ostream& out, std::ost
         !writeFile(base + ".md", err, [&](std::ostream& f) { writeStabilityMarkdown(f, results); }))
         return kExitBadInput;
     writeStabilityMarkdown(out, results);
-    out << "\nwrote " << base << ".csv\nwrote " << base << ".md\n";
+    out << "\n" << wrote(base + ".csv") << wrote(base + ".md");
     return kExitOk;
 }

@@ -40,7 +40,8 @@ std::string sceneToJson(const Scene& scene);
 bool saveSceneFile(const Scene& scene, const std::string& path, std::string* error);
 
 World makeWorld(const Scene& scene);
-// The current state of `world` as a scene, keeping names and colours from `original`.
+// The current state of `world` as a scene, keeping from `original` what a world does not hold:
+// the name, description and duration, the blocks' names and colours, and the player.
 Scene sceneFromWorld(const World& world, const Scene& original);
 // One block of the world from its file form (a static block still, a kinematic one and a static
 // one of infinite mass), and back (without its name and colour, which the world does not hold).

@@ -173,6 +173,7 @@ Scene sceneFromWorld(const World& world, const Scene& original) {
     Scene scene;
     scene.name = original.name;
     scene.description = original.description;
+    scene.duration = original.duration; // not the world's: how long the scene is watched
     scene.bounds = world.bounds;
     scene.settings = world.settings;
     scene.blocks.reserve(world.blocks.size());

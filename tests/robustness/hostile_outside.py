@@ -5,7 +5,8 @@ not from the project's own tests.
 
     tests/robustness/hostile_outside.py BUILD_DIR CLASS
 
-CLASS is one of: lessons, settings, writes, memory, energy (the cases are in hostile_CLASS.py).
+CLASS is one of: lessons, settings, writes, memory, energy, echoes (the cases are in
+hostile_CLASS.py).
 Every case runs its program under
 `timeout` (a hang fails the case) with an address-space limit (ulimit -v: a blow-up fails the
 case, not the machine) and no core files, and checks what the contract promises: the exit code,
@@ -189,7 +190,7 @@ def changed(before, after):
 if __name__ == "__main__":
     import importlib
 
-    CLASSES = ("lessons", "settings", "writes", "memory", "energy")
+    CLASSES = ("lessons", "settings", "writes", "memory", "energy", "echoes")
     if len(sys.argv) != 3 or sys.argv[2] not in CLASSES:
         sys.exit("usage: hostile_outside.py BUILD_DIR CLASS (one of %s)" % ", ".join(CLASSES))
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))

@@ -4,8 +4,11 @@
 #include "text_format.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 
 EscapeEffect escapeEffect(bool dialogOpen, bool helpOpen, bool presentMode, bool fullscreen) {
     if (dialogOpen) return EscapeEffect::CloseDialog;
@@ -56,6 +59,27 @@ TypedValue checkTypedValue(const char* field, double typed, double current,
     out.value = out.ok ? typed : current;
     if (!out.ok) out.message = std::string(field) + ": " + problem;
     return out;
+}
+
+double shownNumber(double value, const char* format) {
+    // The format's first conversion: its precision and letter (flags and width change no digit).
+    const char* at = std::strchr(format, '%');
+    while (at && at[1] == '%') at = std::strchr(at + 2, '%');
+    if (!at || !std::isfinite(value)) return value;
+    const char* p = at + 1;
+    while (*p && std::strchr("-+ #0", *p)) ++p;
+    while (std::isdigit(static_cast<unsigned char>(*p))) ++p;
+    int precision = 6; // printf's default
+    if (*p == '.') {
+        precision = std::atoi(p + 1);
+        for (++p; std::isdigit(static_cast<unsigned char>(*p));) ++p;
+    }
+    const char letter = *p;
+    if (!letter || !std::strchr("fFeEgG", letter)) return value;
+    const char conversion[] = {'%', '.', '*', letter, '\0'};
+    char text[512]; // %f of 1e300 has 301 digits
+    std::snprintf(text, sizeof text, conversion, std::min(precision, 17), value);
+    return std::strtod(text, nullptr);
 }
 
 bool TypedWarning::note(const char* name, const TypedValue& check) {

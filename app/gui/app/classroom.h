@@ -47,6 +47,11 @@ struct TypedValue {
 };
 TypedValue checkTypedValue(const char* field, double typed, double current,
                            const limits::Range& range);
+// The number a panel field shows for `value` under its printf `format` ("%.2f", "%.3g kg/m³",
+// "%.0f Hz"), read back: a value set with a slider, a drag or Ctrl+click (a float: 0.44f is
+// 0.4399999976158142) is kept as the panel showed it (0.44), so the scene saves and links what
+// the user saw. A format without a floating-point conversion (%d) leaves `value` as it is.
+double shownNumber(double value, const char* format);
 // The panel's one warning about a typed value (shown under its field in the warning colour):
 // set by a refused value, cleared by the next good value of the same field or by a new scene.
 struct TypedWarning {

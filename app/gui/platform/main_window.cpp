@@ -41,7 +41,8 @@ int execOffscreen(int argc, char** argv, bool addDefaultScreenshot) {
     std::fflush(stdout);
     std::fflush(stderr);
     execv(path.c_str(), cargs.data());
-    std::fprintf(stderr, "sandbox: cannot run %s: %s\n", path.c_str(), std::strerror(errno));
+    std::fprintf(stderr, "sandbox: cannot run %s: %s\n", printable(path, kPrintablePath).c_str(),
+                 std::strerror(errno));
     return 1;
 }
 
@@ -142,7 +143,8 @@ int runWindow(const Options& options, char** argv, int argc) {
     config.volume = app.sim.sound.volume;
     windowSize(window, &config.windowWidth, &config.windowHeight);
     if (!saveAppConfig(configDir, config) && !configDir.empty()) {
-        std::fprintf(stderr, "sandbox: cannot save settings in %s\n", configDir.c_str());
+        std::fprintf(stderr, "sandbox: cannot save settings in %s\n",
+                     printable(configDir, kPrintablePath).c_str());
     }
     renderer.shutdown();
     windowShutdown(window);

@@ -317,7 +317,7 @@ void viewSection(App& app) {
     constexpr limits::Range kUiScaleRange{kMinUiScale, kMaxUiScale, ""};
     double applied = app.view.uiScale;
     if (ImGui::IsItemDeactivatedAfterEdit() &&
-        acceptTyped(app, "UI scale", scale, app.view.uiScale, kUiScaleRange, applied)) {
+        acceptTyped(app, "UI scale", scale, "%.2f", app.view.uiScale, kUiScaleRange, applied)) {
         setUiScale(app.view, static_cast<float>(applied));
     }
     typedWarning(app, "UI scale");
@@ -329,7 +329,8 @@ void viewSection(App& app) {
     constexpr limits::Range kLabelRange{kMinLabelScale, kMaxLabelScale, ""};
     double labelScale = app.view.labelScale;
     if (ImGui::IsItemDeactivatedAfterEdit() &&
-        acceptTyped(app, "scene labels", labels, app.view.labelScale, kLabelRange, labelScale)) {
+        acceptTyped(app, "scene labels", labels, "%.2fx", app.view.labelScale, kLabelRange,
+                    labelScale)) {
         app.view.labelScale = static_cast<float>(labelScale);
     }
     typedWarning(app, "scene labels");

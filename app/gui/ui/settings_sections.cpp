@@ -67,7 +67,7 @@ void numberSlider(App& app, const WorldKey& row, const WorldSettings& s) {
                                     row.panel.format,
                                     row.panel.logarithmic ? ImGuiSliderFlags_Logarithmic : 0))) {
         double taken = shown;
-        if (acceptTyped(app, row.panel.label, typed, shown,
+        if (acceptTyped(app, row.panel.label, typed, row.panel.format, shown,
                         row.shown.asRate ? row.shown.rateRange : row.range, taken)) {
             WorldSettings next = s;
             next.*row.number = row.shown.asRate ? 1.0 / taken : taken;
@@ -90,7 +90,7 @@ void wholeSlider(App& app, const WorldKey& row, const WorldSettings& s) {
                       ImGui::SliderInt(row.panel.label, &typed, static_cast<int>(row.panel.min),
                                        static_cast<int>(row.panel.max), row.panel.format))) {
         double k = s.*row.whole;
-        if (acceptTyped(app, row.panel.label, typed, k, row.range, k)) {
+        if (acceptTyped(app, row.panel.label, typed, row.panel.format, k, row.range, k)) {
             WorldSettings next = s;
             next.*row.whole = static_cast<int>(k);
             applyRow(app, row, next);
@@ -106,7 +106,8 @@ void pairSlider(App& app, const WorldKey& row, const WorldSettings& s) {
     // Ctrl+click types a value beyond the slider: any within the limits is taken.
     if (widgetChanged(app, ImGui::SliderFloat2(("##" + std::string(row.key)).c_str(), typed,
                                                row.panel.min, row.panel.max, row.panel.format)) &&
-        acceptTyped2(app, row.panel.label, typed, value, row.range, next.*row.pair))
+        acceptTyped2(app, row.panel.label, typed, row.panel.format, value, row.range,
+                     next.*row.pair))
         applyRow(app, row, next);
     tooltip(row.shown.tooltip);
     const std::pair<const char*, Vec2> presets[] = {
@@ -196,7 +197,7 @@ void blockForceField(App& app, int i, const Block& b) {
     Vec2 force = b.force;
     if (widgetChanged(
             app, ImGui::DragFloat2(row.label, f, 0.05f, -1000.0f, 1000.0f, row.sliderFormat)) &&
-        acceptTyped2(app, row.label, f, b.force, row.range, force) &&
+        acceptTyped2(app, row.label, f, row.sliderFormat, b.force, row.range, force) &&
         acceptAcceleration(app, row.label, force, b.mass))
         applyField(app, i, row.key, {force.x, force.y}, row.label);
     tooltip(row.tooltip);
@@ -212,7 +213,7 @@ void simulationSection(App& app) {
     float scale = static_cast<float>(app.sim.timeScale);
     if (ImGui::SliderFloat("time scale", &scale, 0.05f, 4.0f, "%.2fx",
                            ImGuiSliderFlags_Logarithmic)) {
-        acceptTyped(app, "time scale", scale, app.sim.timeScale, limits::kTimeScale,
+        acceptTyped(app, "time scale", scale, "%.2fx", app.sim.timeScale, limits::kTimeScale,
                     app.sim.timeScale);
     }
     typedWarning(app, "time scale");
@@ -235,7 +236,7 @@ void physicsSection(App& app) {
     float thrust = static_cast<float>(app.sim.thrust.force);
     if (ImGui::SliderFloat("thrust force", &thrust, 0.1f, 1000.0f, "%.3g N",
                            ImGuiSliderFlags_Logarithmic)) {
-        acceptTyped(app, "thrust force", thrust, app.sim.thrust.force, limits::kThrust,
+        acceptTyped(app, "thrust force", thrust, "%.3g N", app.sim.thrust.force, limits::kThrust,
                     app.sim.thrust.force);
     }
     tooltip("F in N: the same force gives a heavy block a small acceleration a = F/m, a light one "
@@ -281,7 +282,8 @@ void selectedSection(App& app) {
         if (widgetChanged(app,
                           ImGui::SliderFloat(massRow.label, &mass, 0.01f, 1000.0f,
                                              massRow.sliderFormat, ImGuiSliderFlags_Logarithmic)) &&
-            acceptTyped(app, massRow.label, mass, b.mass, massRow.range, newMass) &&
+            acceptTyped(app, massRow.label, mass, massRow.sliderFormat, b.mass, massRow.range,
+                        newMass) &&
             acceptAcceleration(app, massRow.label, b.force, newMass))
             applyField(app, i, massRow.key, newMass, massRow.label);
         typedWarning(app, massRow.label);
@@ -294,7 +296,8 @@ void selectedSection(App& app) {
     Vec2 wanted = b.size;
     if (widgetChanged(app, ImGui::DragFloat2(sizeRow.label, size, 0.02f, 0.05f, 50.0f,
                                              sizeRow.sliderFormat)) &&
-        acceptTyped2(app, sizeRow.label, size, b.size, sizeRow.range, wanted))
+        acceptTyped2(app, sizeRow.label, size, sizeRow.sliderFormat, b.size, sizeRow.range,
+                     wanted))
         applyField(app, i, sizeRow.key, {wanted.x, wanted.y}, sizeRow.label);
     typedWarning(app, sizeRow.label);
     if (b.kind != BodyKind::Static) {
@@ -303,7 +306,8 @@ void selectedSection(App& app) {
         Vec2 velocity = b.velocity;
         if (widgetChanged(app, ImGui::DragFloat2(velocityRow.label, v, 0.05f, -1000.0f, 1000.0f,
                                                  velocityRow.sliderFormat)) &&
-            acceptTyped2(app, velocityRow.label, v, b.velocity, velocityRow.range, velocity))
+            acceptTyped2(app, velocityRow.label, v, velocityRow.sliderFormat, b.velocity,
+                         velocityRow.range, velocity))
             applyField(app, i, velocityRow.key, {velocity.x, velocity.y}, velocityRow.label);
         typedWarning(app, velocityRow.label);
     }

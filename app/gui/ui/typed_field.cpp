@@ -12,26 +12,27 @@ void tooltip(const char* text) {
     if (*text && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
 }
 
-// A value typed into `field` (Ctrl+click on a slider, or a drag field) checked against its limit
-// (checkTypedValue, engine/input_limits.h): true and `out` set when it is good; otherwise the
-// field keeps `current` and the panel warns under it until a good value comes.
-bool acceptTyped(App& app, const char* field, double typed, double current,
+// A value set in `field` (Ctrl+click on a slider, a slide or a drag), read as the field shows it
+// (shownNumber) and checked against its limit (checkTypedValue, engine/input_limits.h): true and
+// `out` set when it is good; otherwise the field keeps `current` and the panel warns under it
+// until a good value comes.
+bool acceptTyped(App& app, const char* field, double typed, const char* format, double current,
                  const limits::Range& range, double& out) {
-    const TypedValue check = checkTypedValue(field, typed, current, range);
+    const TypedValue check = checkTypedValue(field, shownNumber(typed, format), current, range);
     out = check.value;
     return app.ui.typedWarning.note(field, check);
 }
 
 // The same for a pair (x, y) from a 2-component field: each component that changed is checked,
 // and both are taken or neither. The one that did not change keeps its double value.
-bool acceptTyped2(App& app, const char* field, const float typed[2], Vec2 current,
-                  const limits::Range& range, Vec2& out) {
+bool acceptTyped2(App& app, const char* field, const float typed[2], const char* format,
+                  Vec2 current, const limits::Range& range, Vec2& out) {
     const double now[2] = {current.x, current.y};
     double wanted[2] = {current.x, current.y};
     TypedValue check;
     for (int k = 0; k < 2 && check.ok; ++k) {
         if (typed[k] == static_cast<float>(now[k])) continue;
-        check = checkTypedValue(field, typed[k], now[k], range);
+        check = checkTypedValue(field, shownNumber(typed[k], format), now[k], range);
         wanted[k] = check.value;
     }
     if (check.ok) out = Vec2{wanted[0], wanted[1]};
