@@ -47,25 +47,26 @@ ApplyResult EditHistory::apply(EditTarget target, const Edit& edit, std::uint64_
 }
 
 UndoResult EditHistory::undo(EditTarget target, std::uint64_t frame) {
-    joinable_ = false;
-    if (undo_.empty()) return {};
-    const EditError error = undoEdit(target, undo_.back());
-    if (!error.empty()) return {nullptr, error};
-    redo_.push_back(std::move(undo_.back()));
-    undo_.pop_back();
-    record({JournalEntry::What::Undo, frame, {}, false});
-    return {&redo_.back(), {}};
+    return move(target, frame, true);
 }
 
 UndoResult EditHistory::redo(EditTarget target, std::uint64_t frame) {
+    return move(target, frame, false);
+}
+
+UndoResult EditHistory::move(EditTarget target, std::uint64_t frame, bool back) {
     joinable_ = false;
-    if (redo_.empty()) return {};
-    const EditError error = redoEdit(target, redo_.back());
+    // Undo moves the last edit from the undo stack to the redo stack, redo the other way.
+    auto& from = back ? undo_ : redo_;
+    auto& to = back ? redo_ : undo_;
+    if (from.empty()) return {};
+    const EditError error = back ? undoEdit(target, from.back()) : redoEdit(target, from.back());
     if (!error.empty()) return {nullptr, error};
-    undo_.push_back(std::move(redo_.back()));
-    redo_.pop_back();
-    record({JournalEntry::What::Redo, frame, {}, false});
-    return {&undo_.back(), {}};
+    to.push_back(std::move(from.back()));
+    from.pop_back();
+    if (undo_.size() > kMaxUndo) undo_.pop_front();
+    record({back ? JournalEntry::What::Undo : JournalEntry::What::Redo, frame, {}, false});
+    return {&to.back(), {}};
 }
 
 void EditHistory::clear() {

@@ -60,8 +60,9 @@ class EditHistory {
 
   private:
     void record(JournalEntry entry);
+    UndoResult move(EditTarget target, std::uint64_t frame, bool back); // undo or redo
     std::deque<AppliedEdit> undo_;
-    std::vector<AppliedEdit> redo_;
+    std::deque<AppliedEdit> redo_;
     std::vector<JournalEntry> journal_;
     bool journalFull_ = false;
     bool joinable_ = false; // the top of the undo stack may take a continuing edit

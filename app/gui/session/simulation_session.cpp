@@ -200,7 +200,6 @@ FrameOutcome SimulationSession::step(bool sideBySide) {
     for (auto it = ownForces.rbegin(); it != ownForces.rend(); ++it)
         w.blocks[static_cast<std::size_t>(it->first)].force = it->second;
     history.afterStep(w);
-    playEditLog(); // the log's lines at the frame reached
     // The timeline rebuilds frames by stepping keyframes, which knows nothing of the keys held:
     // a thrust or player frame's result is kept as a keyframe of its own (replays stay bit for
     // bit).
@@ -239,6 +238,7 @@ FrameOutcome SimulationSession::step(bool sideBySide) {
         stopAtFrame.reset();
         out.reachedStop = true;
     }
+    playEditLog(); // the log's lines at the frame reached, after what the frame recorded
     return out;
 }
 

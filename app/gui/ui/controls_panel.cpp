@@ -442,7 +442,8 @@ void drawControlsPanel(App& app) {
     // shows the rows that fit (the current step at least).
     const float row = ImGui::GetFrameHeightWithSpacing();
     constexpr int kLeastSectionRows = 4, kLeastStepRows = 3;
-    const float under = ImGui::GetStyle().ItemSpacing.y + 1.0f + (2 + kLeastSectionRows) * row;
+    // Under the lesson: Play, Step and Reset; Slow motion; Undo and Redo; then the sections.
+    const float under = ImGui::GetStyle().ItemSpacing.y + 1.0f + (3 + kLeastSectionRows) * row;
     const float lessonFrame = lessonFrameHeight(app);
     const float stepRow = ImGui::GetTextLineHeightWithSpacing();
     if (!app.sim.scene.description.empty()) {
