@@ -239,6 +239,11 @@ FrameOutcome SimulationSession::step(bool sideBySide) {
         out.reachedStop = true;
     }
     playEditLog(); // the log's lines at the frame reached, after what the frame recorded
+    // (before the lesson's watch sees the frame: lesson_runner plays a step's edits so)
+    if (stopWhen && stopWhen(w, run.stats, run.lastLog)) {
+        paused = true;
+        out.reachedStop = true;
+    }
     return out;
 }
 

@@ -1,10 +1,10 @@
 // The lesson's caption bar: across the top of the scene, "n / N · title" large, the keys (in
 // present mode the method and t: lessonBarStatus) beside it, the caption under it, then the
-// question ("Predict: ...", at the setup and while the step plays; its answer at the moment) and
-// the key to press next. The one caption of a lesson, presenting or
-// not (present mode's one-line caption is for scenes). Opaque, so nothing shows through; its
-// height is kept in app.view.captionHeight and the scene's viewport starts below it. In present
-// mode it is the scene's caption, not a window: --layout-json lists no window there.
+// question ("Predict: ...", with its choices lettered A-D, at the setup and while the step plays;
+// its answer at the moment, or why there is none) and the key to press next. The one caption of a
+// lesson, presenting or not (present mode's one-line caption is for scenes). Opaque, so nothing
+// shows through; its height is kept in app.view.captionHeight and the scene's viewport starts below
+// it. In present mode it is the scene's caption, not a window: --layout-json lists no window there.
 #include "app_frame.h"
 #include "overlay_window.h"
 #include "ui_style.h"
@@ -53,20 +53,35 @@ void drawLessonCaption(App& app) {
         ImGui::Text("   %s", status.c_str());
     else
         ImGui::TextColored(uiDimColor(), "   %s", status.c_str());
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(step->caption.c_str());
-    if (!step->question.empty()) {
-        if (s.revealed) {
-            ImGui::TextColored(uiNoteColor(), "Answer: %s", step->answer.c_str());
-        } else {
-            ImGui::TextColored(uiQuestionColor(), "Predict: %s", step->question.c_str());
+    // Computed from the world as it is (lesson_prompt.h): true after any change of the lecturer's.
+    // Wrapped at spaces and never inside an equation's number (wrapFormula: "0.\n5" is not 0.5).
+    const LessonTexts texts = lessonTexts(s, app.sim);
+    const auto said = [](const ImVec4& color, const std::string& text) {
+        ImGui::PushStyleColor(ImGuiCol_Text, color);
+        textWrappedFormula(text);
+        ImGui::PopStyleColor();
+    };
+    textWrappedFormula(texts.caption);
+    if (!texts.missed.empty()) {
+        said(uiNoteColor(), "No answer: " + texts.missed);
+    } else if (s.revealed) {
+        said(uiNoteColor(), "Answer: " + texts.answer);
+    } else if (!texts.question.empty()) {
+        said(uiQuestionColor(), "Predict: " + texts.question);
+        // The choices after the question and side by side where they fit (a short question and
+        // its choices take one line), each whole.
+        const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+        const float gap = ImGui::CalcTextSize("    ").x;
+        for (const std::string& choice : texts.choices) {
+            const float width = ImGui::CalcTextSize(choice.c_str()).x;
+            if (ImGui::GetItemRectMax().x + gap + width <= right) ImGui::SameLine(0.0f, gap);
+            said(uiQuestionColor(), choice);
         }
     }
     const std::string hint = lessonHint(s);
     if (!hint.empty()) ImGui::TextColored(uiDimColor(), "%s", hint.c_str());
     if (!s.digits.empty())
         ImGui::TextColored(uiDimColor(), "Go to step %s (Enter)", s.digits.c_str());
-    ImGui::PopTextWrapPos();
     ImGui::PopFont();
     app.view.captionHeight = ImGui::GetWindowHeight();
     ImGui::End();

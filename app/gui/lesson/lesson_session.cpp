@@ -1,0 +1,309 @@
+#include "lesson_session.h"
+
+#include "lesson_runner.h"
+#include "overlays.h"
+#include "save_naming.h"
+
+#include <algorithm>
+
+#ifndef SANDBOX_LESSONS_DIR
+#define SANDBOX_LESSONS_DIR ""
+#endif
+
+namespace {
+
+constexpr std::size_t kMaxDigits = 6;
+
+std::vector<std::string> labelNames(const SimulationSession& sim) {
+    std::vector<std::string> names;
+    for (const BlockLabel& l : sim.labels) names.push_back(l.name);
+    return names;
+}
+
+// True when `now` is not the step's setup as written: its blocks (where, how fast, how heavy,
+// how big, how many) or its settings differ.
+bool differsFromWritten(const World& now, const World& written) {
+    if (now.blocks.size() != written.blocks.size() || stateHash(now) != stateHash(written) ||
+        settingsDiffer(now.settings, written.settings))
+        return true;
+    for (std::size_t i = 0; i < now.blocks.size(); ++i)
+        if (now.blocks[i].mass != written.blocks[i].mass ||
+            now.blocks[i].size.x != written.blocks[i].size.x ||
+            now.blocks[i].size.y != written.blocks[i].size.y)
+            return true;
+    return false;
+}
+
+// The moment: the answer shows, with the overlays that prove it (nothing is claimed when the
+// event did not come).
+void reveal(LessonSession& s, View& view) {
+    s.phase = LessonSession::Phase::Moment;
+    if (s.step()->question.empty() || s.revealed) return;
+    if (s.watch && s.watch->state() == LessonWatch::State::Missed) return;
+    s.revealed = true;
+    for (const std::string& name : s.step()->reveal) setOverlay(view.show, name, true);
+}
+
+// Paused at the setup (t = 0), the question asked; nothing watched yet.
+void showSetup(LessonSession& s, SimulationSession& sim) {
+    s.revealed = false;
+    s.phase = LessonSession::Phase::Setup;
+    s.watch.reset();
+    s.playedFrom.reset();
+    sim.pauseAtSceneEnd = false; // the step stops where it says
+    sim.paused = true;
+    sim.stopAtFrame.reset();
+    sim.stopWhen = nullptr;
+}
+
+// The press that plays the step: from the world as it is now (the lecturer's changes included)
+// its event is watched frame by frame (SimulationSession::stopWhen). False when the step pauses
+// at once (a time of 0, an event about a block that is gone).
+bool startPlaying(LessonSession& s, SimulationSession& sim) {
+    const LessonStep& step = *s.step();
+    s.phase = LessonSession::Phase::Playing;
+    s.playedFrom = sim.world();
+    if (step.pause.kind == LessonPause::Kind::None) {
+        sim.paused = false;
+        return true;
+    }
+    const double within = s.written ? liveWithin(step, *s.written) : 1.0;
+    s.watch.emplace(step, liveBlockIndex(*step.scene, labelNames(sim)), within,
+                    step.pause.watch * sim.timeScale);
+    if (s.watch->atStart(sim.world())) return false;
+    LessonWatch* watch = &*s.watch;
+    sim.stopWhen = [watch](const World& w, const StepStats& stats,
+                           const std::vector<CollisionRecord>& log) {
+        return watch->afterFrame(w, stats, log);
+    };
+    sim.paused = false;
+    return true;
+}
+
+// Runs the frames up to the moment (or to where the event is given up) and pauses there.
+void runToPausePoint(LessonSession& s, SimulationSession& sim, const View& view) {
+    if (s.phase == LessonSession::Phase::Setup && !startPlaying(s, sim)) return;
+    if (!s.watch) return;
+    const LessonStep& step = *s.step();
+    const int limit =
+        frameLimit(step, *s.playedFrom, s.watch->within(), step.pause.watch * sim.timeScale);
+    while (!s.watch->paused()) {
+        if (s.watch->progress().frames >= limit) {
+            s.watch->giveUp(sim.world(), "");
+            break;
+        }
+        sim.step(lessonRunsSideBySide(s, view));
+    }
+    sim.stopWhen = nullptr;
+    sim.paused = true;
+}
+
+} // namespace
+
+std::string builtInLessonsDirectory() {
+    return SANDBOX_LESSONS_DIR;
+}
+
+LessonContext appLessonContext(const std::string& scenesDir) {
+    LessonContext c;
+    c.scenesDir = scenesDir;
+    c.overlayNames = overlayNames();
+    return c;
+}
+
+bool openLesson(LessonSession& s, SimulationSession& sim, View& view, Messages& messages,
+                const std::string& path, const std::string& scenesDir, std::size_t first) {
+    LessonResult r = loadLessonFile(path, appLessonContext(scenesDir));
+    if (!r.lesson) {
+        messages.error = r.error.text();
+        return false;
+    }
+    std::string error;
+    if (!stepIndex(*r.lesson, static_cast<long long>(first) + 1, &error)) {
+        messages.error = error;
+        return false;
+    }
+    s = LessonSession{};
+    s.lesson = std::move(*r.lesson);
+    return enterStep(s, sim, view, messages, first);
+}
+
+void closeLesson(LessonSession& s, SimulationSession& sim, View& view) {
+    s = LessonSession{};
+    sim.stopAtFrame.reset();
+    sim.script.clear();
+    sim.pauseAtSceneEnd = true; // the scene's own end again
+    view.fitBounds.reset();
+    setViewFrame(view, ViewFrame::World); // a step's frame ends with the lesson
+}
+
+bool enterStep(LessonSession& s, SimulationSession& sim, View& view, Messages& messages,
+               std::size_t index) {
+    if (!s.lesson || index >= s.lesson->steps.size()) return false;
+    const LessonStep& step = s.lesson->steps[index];
+    s.current = index;
+    s.revealed = false;
+    s.digits.clear();
+    // The world the step states, seen as it says; its edits play at their frames (reset below
+    // plays those of frame 0, and R plays them again).
+    sim.setScene(*step.scene, step.sceneSource);
+    sim.editLog = LogPlayer(step.edits);
+    Overlays shown = ShowSet::noOverlays();
+    for (const std::string& name : step.overlays) setOverlay(shown, name, true);
+    view.show = shown;
+    view.fitBounds = step.camera;
+    view.autoFit = true;
+    setViewFrame(view, step.frame);
+    sim.timeScale = step.timeScale;
+    sim.slowMotion = false;
+    sim.pauseOnCollision = false;
+    sim.selected = step.selected;
+    sim.thrust.on = step.thrust.has_value(); // the step states it, like its overlays
+    if (step.thrust) sim.thrust.force = *step.thrust;
+    sim.script = step.input; // the step plays its player's keys itself
+    sim.reset(); // again, with the selection: the plots and the point of impact follow it
+    followNewRun(view, sim.world());
+    s.written =
+        runStepToPause(step); // as written: for a changed run's time and the answer beside it
+    showSetup(s, sim);
+    if (pausesAtItsSetup(step)) lessonShowPausePoint(s, sim, view);
+    messages.clear();
+    return true;
+}
+
+void replayStep(LessonSession& s, SimulationSession& sim, View& view, Messages& messages) {
+    if (!s.step()) return;
+    sim.reset(); // the lecturer's method and settings stay, as R outside lessons
+    followNewRun(view, sim.world());
+    showSetup(s, sim); // played again, it watches for its event in the world as it now is
+    if (pausesAtItsSetup(*s.step())) lessonShowPausePoint(s, sim, view);
+    messages.clear();
+}
+
+void lessonNext(LessonSession& s, SimulationSession& sim, View& view, Messages& messages) {
+    if (!s.active()) return;
+    switch (s.phase) {
+    case LessonSession::Phase::Setup: // play toward the moment
+        if (!startPlaying(s, sim)) lessonShowPausePoint(s, sim, view);
+        return;
+    case LessonSession::Phase::Playing: // the moment at once
+        if (s.pauses()) {
+            lessonShowPausePoint(s, sim, view);
+            return;
+        }
+        break; // no moment: the next step
+    case LessonSession::Phase::Moment:
+        break;
+    }
+    if (s.current + 1 < s.lesson->steps.size()) enterStep(s, sim, view, messages, s.current + 1);
+}
+
+bool lessonJump(LessonSession& s, SimulationSession& sim, View& view, Messages& messages) {
+    if (!s.active() || s.digits.empty()) return false;
+    const long long number = std::stoll(s.digits);
+    s.digits.clear();
+    std::string error;
+    const auto index = stepIndex(*s.lesson, number, &error);
+    if (!index) {
+        messages.error = error;
+        return false;
+    }
+    return enterStep(s, sim, view, messages, *index);
+}
+
+void lessonPrevious(LessonSession& s, SimulationSession& sim, View& view, Messages& messages) {
+    if (s.active() && s.current > 0) enterStep(s, sim, view, messages, s.current - 1);
+}
+
+void lessonTypeDigit(LessonSession& s, int digit) {
+    if (!s.active() || digit < 0 || digit > 9 || s.digits.size() >= kMaxDigits) return;
+    s.digits += static_cast<char>('0' + digit);
+}
+
+void lessonShowPausePoint(LessonSession& s, SimulationSession& sim, View& view) {
+    if (!s.step()) return;
+    runToPausePoint(s, sim, view);
+    reveal(s, view);
+}
+
+bool lessonRunsSideBySide(const LessonSession& s, const View& view) {
+    if (view.show.sideBySide) return true;
+    const LessonStep* step = s.step();
+    return step &&
+           std::find(step->reveal.begin(), step->reveal.end(), "sidebyside") != step->reveal.end();
+}
+
+void lessonAfterFrames(LessonSession& s, SimulationSession& sim, View& view) {
+    if (s.phase != LessonSession::Phase::Playing || !s.watch || !s.watch->paused()) return;
+    sim.stopWhen = nullptr;
+    sim.paused = true;
+    reveal(s, view);
+}
+
+std::string lessonHeading(const LessonSession& session) {
+    const LessonStep* step = session.step();
+    if (!step) return "";
+    return std::to_string(session.current + 1) + " / " +
+           std::to_string(session.lesson->steps.size()) + " \xc2\xb7 " + step->title;
+}
+
+std::string lessonHint(const LessonSession& session) {
+    if (!session.step()) return "";
+    switch (session.phase) {
+    case LessonSession::Phase::Setup:
+        return session.pauses() ? "PageDown: play" : "";
+    case LessonSession::Phase::Playing:
+        return "PageDown: the moment at once";
+    case LessonSession::Phase::Moment:
+        return "";
+    }
+    return "";
+}
+
+std::vector<std::string> lessonChanges(const LessonSession& s, const SimulationSession& sim) {
+    const LessonStep* step = s.step();
+    if (!step || !s.written) return {};
+    const World& setup = s.playedFrom ? *s.playedFrom : sim.world();
+    if (setup.time != 0.0 || !differsFromWritten(setup, s.written->setup)) return {};
+    return {"your changes"};
+}
+
+LessonTexts lessonTexts(const LessonSession& s, const SimulationSession& sim) {
+    LessonTexts t;
+    const LessonStep* step = s.step();
+    if (!step) return t;
+    // The question reads the world it is asked of: the one on screen at the setup (the lecturer's
+    // changes show at once), the one the step was played from after that.
+    const World& setup = s.playedFrom ? *s.playedFrom : sim.world();
+    const std::vector<int> blocks = liveBlockIndex(*step->scene, labelNames(sim));
+    const std::vector<std::string> changes = lessonChanges(s, sim);
+    const StepPrompt prompt = stepPrompt(*step, setup, blocks, changes.empty());
+    t.caption = prompt.caption;
+    t.question = prompt.question;
+    for (std::size_t i = 0; i < prompt.choices.size(); ++i)
+        t.choices.push_back(choiceLetter(i) + ". " + prompt.choices[i]);
+    if (s.phase != LessonSession::Phase::Moment || !s.watch) return t;
+    const StepRun run = watchedRun(*s.watch, setup, sim.world());
+    const StepAnswer answer = stepAnswer(*step, run, changes, s.written ? &*s.written : nullptr);
+    t.missed = answer.missed;
+    if (s.revealed) t.answer = answer.text;
+    return t;
+}
+
+std::string lessonCaption(const LessonSession& session, const SimulationSession& sim) {
+    if (!session.step()) return "";
+    const LessonTexts t = lessonTexts(session, sim);
+    std::string text = t.caption;
+    if (!t.missed.empty()) {
+        text += "\nNo answer: " + t.missed;
+    } else if (session.revealed) {
+        text += "\nAnswer: " + t.answer;
+    } else if (!t.question.empty()) {
+        text += "\nPredict: " + t.question;
+        for (const std::string& c : t.choices) text += "\n" + c;
+    }
+    const std::string hint = lessonHint(session);
+    if (!hint.empty()) text += "\n" + hint;
+    if (!session.digits.empty()) text += "\nGo to step " + session.digits + " (Enter)";
+    return text;
+}

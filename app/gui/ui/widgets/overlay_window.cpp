@@ -1,0 +1,232 @@
+#include "overlay_window.h"
+
+#include "imgui_ext.h"
+#include "text_format.h"
+#include "ui_style.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace {
+
+// Background alpha: opaque, so that nothing of the scene (a grid line, an axis number) shows
+// through.
+constexpr float kWindowAlpha = 1.0f;
+
+// A box of the world on screen, grown by `grow` px on every side (room for its labels).
+ScreenRect screenBox(const App& app, Vec2 centre, Vec2 size, double grow) {
+    const Vec2 a = app.view.camera.worldToScreen(centre - size * 0.5);
+    const Vec2 b = app.view.camera.worldToScreen(centre + size * 0.5);
+    const double x = std::min(a.x, b.x) - grow, y = std::min(a.y, b.y) - grow;
+    return {x, y, std::abs(b.x - a.x) + 2.0 * grow, std::abs(b.y - a.y) + 2.0 * grow};
+}
+
+} // namespace
+
+ImVec2 toScreen(const App& app, Vec2 p) {
+    const Vec2 s = app.view.camera.worldToScreen(p);
+    return ImVec2(static_cast<float>(s.x), static_cast<float>(s.y));
+}
+
+ImVec2 sceneCaptionPlace(const App& app, float width, float height,
+                         const std::vector<WorldBox>& boxes) {
+    const double font = ImGui::GetFontSize(), s = app.view.uiScale;
+    const ScreenRect& vp = app.view.camera.viewport();
+    // The status badge along the top of the scene (method, t, PAUSED, the start hint).
+    std::vector<ScreenRect> avoid = {{vp.x, vp.y, vp.width, font + 24.0 * s}};
+    // The axis numbers under the world and left of it.
+    const ScreenRect w = worldRectOnScreen(app.view.camera, app.sim.world().bounds);
+    avoid.push_back({w.x - font, w.y + w.height, w.width + 4.0 * font, 1.6 * font});
+    avoid.push_back({w.x - 4.0 * font, w.y - font, 4.0 * font, w.height + 2.0 * font});
+    for (const Block& b : app.sim.world().blocks)
+        avoid.push_back(screenBox(app, b.position, b.size, font));
+    for (const WorldBox& b : boxes) avoid.push_back(screenBox(app, b.centre, b.size, font * 1.5));
+    // Where it must cover blocks (a box full of them), it hides none of the texts drawn so far
+    // (the axis numbers, the labels: app.ui.takenOnScreen) if it can.
+    const ScreenRect r =
+        placeCaption(width, height, vp, worldRectOnScreen(app.view.camera, app.sim.world().bounds),
+                     avoid, 10.0 * s, app.ui.takenOnScreen.texts);
+    return ImVec2(static_cast<float>(r.x), static_cast<float>(r.y));
+}
+
+namespace {
+
+// The caption's lines wrapped `width` px wide (wrapFormula: never inside a number), each piece
+// in its line's colour; and the widest piece.
+std::vector<CaptionLine> wrappedCaption(const std::vector<CaptionLine>& lines, float width,
+                                        float& widest) {
+    std::vector<CaptionLine> out;
+    widest = 0.0f;
+    for (const CaptionLine& l : lines) {
+        const std::string text = wrapFormula(l.text, width, [](const std::string& piece) {
+            return static_cast<double>(ImGui::CalcTextSize(piece.c_str()).x);
+        });
+        std::size_t start = 0;
+        while (start <= text.size()) {
+            const std::size_t end = std::min(text.find('\n', start), text.size());
+            out.push_back({text.substr(start, end - start), l.color, l.themed});
+            widest = std::max(widest, ImGui::CalcTextSize(out.back().text.c_str()).x);
+            start = end + 1;
+        }
+    }
+    return out;
+}
+
+bool hidesText(const App& app, ImVec2 at, ImVec2 size) {
+    const ScreenRect plate{at.x, at.y, size.x, size.y};
+    const std::vector<ScreenRect>& texts = app.ui.takenOnScreen.texts;
+    return std::any_of(texts.begin(), texts.end(),
+                       [&plate](const ScreenRect& t) { return rectsOverlap(plate, t); });
+}
+
+} // namespace
+
+void drawSceneCaption(const App& app, const std::vector<CaptionLine>& lines,
+                      const std::vector<WorldBox>& boxes) {
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    const float font = ImGui::GetFontSize();
+    const float s = app.view.uiScale;
+    float natural = 0.0f;
+    for (const CaptionLine& l : lines)
+        natural = std::max(natural, ImGui::CalcTextSize(l.text.c_str()).x);
+    // As it is; where that hides a text (a box full of labelled blocks), narrower and taller
+    // (the scene's margin beside the world may hold it).
+    std::vector<CaptionLine> shown;
+    float width = 0.0f;
+    ImVec2 plate;
+    for (const float share : {1.0f, 0.6f, 0.4f, 0.25f}) {
+        float widest = natural;
+        std::vector<CaptionLine> tried =
+            share < 1.0f ? wrappedCaption(lines, natural * share, widest) : lines;
+        // The plate is 6 px (x UI scale) wider than the text on each side, 4 px taller.
+        const ImVec2 size(widest + 12.0f * s, static_cast<float>(tried.size()) * font + 8.0f * s);
+        const ImVec2 at = sceneCaptionPlace(app, size.x, size.y, boxes);
+        const bool hides = hidesText(app, at, size);
+        if (share == 1.0f || !hides) { // as it is, unless a narrower one hides nothing
+            shown = std::move(tried);
+            width = widest;
+            plate = at;
+        }
+        if (!hides) break;
+    }
+    const float n = static_cast<float>(shown.size());
+    const ImVec2 at(plate.x + 6.0f * s, plate.y + 4.0f * s);
+    dl->AddRectFilled(
+        ImVec2(at.x - 6 * s, at.y - 4 * s), ImVec2(at.x + width + 6 * s, at.y + n * font + 4 * s),
+        uiLightTheme() ? IM_COL32(250, 250, 252, 230) : IM_COL32(16, 18, 26, 215), 4.0f);
+    for (std::size_t i = 0; i < shown.size(); ++i)
+        dl->AddText(ImVec2(at.x, at.y + static_cast<float>(i) * font),
+                    shown[i].themed ? shown[i].color : uiThemed(shown[i].color),
+                    shown[i].text.c_str());
+}
+
+void recordShownWindow(App& app, const char* name) {
+    const ImVec2 p = ImGui::GetWindowPos(), s = ImGui::GetWindowSize();
+    app.view.shownWindows.push_back({name, {p.x, p.y, s.x, s.y}});
+    if (app.ui.keyboardFocus != name) return;
+    app.ui.keyboardFocus.clear();
+    imgui_ext::focusCurrentWindowForKeyboard();
+}
+
+std::string nextWindowForKeyboard(const App& app) {
+    const std::string focused = imgui_ext::keyboardWindowName();
+    const std::vector<DockedWindow>& shown = app.view.shownWindows;
+    if (shown.empty()) return "";
+    for (std::size_t i = 0; !focused.empty() && i < shown.size(); ++i) {
+        const std::string& title = shown[i].name;
+        // ImGui names a window by its title, "title##id" included.
+        if (title == focused || focused.rfind(title + "##", 0) == 0)
+            return shown[(i + 1) % shown.size()].name;
+    }
+    return shown.front().name;
+}
+
+bool beginOverlayWindow(App& app, OverlayId id) {
+    const OverlayInfo& info = overlayInfo(id);
+    const char* title = info.title;
+    bool* open = &(app.view.show.*info.flag);
+    const ScreenRect* docked = app.view.layout.find(title);
+    ImGuiWindowFlags flags = ImGuiWindowFlags_NoSavedSettings;
+    if (docked) {
+        ImGui::SetNextWindowPos(
+            ImVec2(static_cast<float>(docked->x), static_cast<float>(docked->y)), ImGuiCond_Always);
+        ImGui::SetNextWindowSize(
+            ImVec2(static_cast<float>(docked->width), static_cast<float>(docked->height)),
+            ImGuiCond_Always);
+        ImGui::SetNextWindowCollapsed(false, ImGuiCond_Always);
+        flags |= ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+    }
+    ImGui::SetNextWindowBgAlpha(kWindowAlpha);
+    const bool visible = ImGui::Begin(title, open, flags);
+    recordShownWindow(app, title);
+    const ImGuiIO& io = ImGui::GetIO();
+    const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    if (docked) {
+        // A press on the title bar, then a drag: the window floats from here on (ImGui moves it
+        // with the mouse from the next frame, when the layout no longer places it).
+        const bool onTitle =
+            io.MousePos.y >= pos.y && io.MousePos.y < pos.y + ImGui::GetFrameHeight();
+        std::string& pressed = app.ui.titlePressed;
+        if (ImGui::IsWindowHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && onTitle)
+            pressed = title;
+        if (pressed == title &&
+            ImGui::IsMouseDragging(ImGuiMouseButton_Left, 8.0f * app.view.uiScale)) {
+            setFloating(app.view, title, true);
+            pressed.clear();
+        }
+        if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) pressed.clear();
+    } else {
+        // Floating: kept on screen, and a button to put it back.
+        const ImVec2 display = io.DisplaySize;
+        const float keep = 40.0f * app.view.uiScale;
+        ImVec2 p = pos;
+        p.x = std::clamp(p.x, keep - size.x, display.x - keep);
+        p.y = std::clamp(p.y, 0.0f, display.y - ImGui::GetFrameHeight());
+        if (p.x != pos.x || p.y != pos.y) ImGui::SetWindowPos(p);
+        if (visible) {
+            if (uiSmallButton("dock")) setFloating(app.view, title, false);
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("Put the window back beside the scene");
+        }
+    }
+    return visible;
+}
+
+OverlayWindow::OverlayWindow(App& app, OverlayId id) {
+    if (app.view.presentMode) return; // present mode: the scene only
+    begun_ = true;
+    open_ = beginOverlayWindow(app, id);
+    // A small docked window (every overlay on at 1280x720) draws its contents in the compact
+    // font, baked at its own size (a scaled font would be blurred).
+    const ScreenRect* docked = app.view.layout.find(overlayInfo(id).title);
+    if (open_ && docked && compactWindow(docked->width, docked->height, ImGui::GetFontSize())) {
+        ImGui::PushFont(uiCompactFont());
+        font_ = true;
+    }
+}
+
+OverlayWindow::~OverlayWindow() {
+    if (font_) ImGui::PopFont();
+    if (begun_) ImGui::End();
+}
+
+void drawnByTheSceneRenderer(App&) {}
+
+void drawOverlays(App& app) {
+    using Draw = void (*)(App&);
+#define SANDBOX_OVERLAY_DRAW(member, name, label, tooltip, on, title, place, draw) draw,
+    static constexpr Draw kDraw[] = {SANDBOX_OVERLAYS(SANDBOX_OVERLAY_DRAW)};
+#undef SANDBOX_OVERLAY_DRAW
+    static_assert(sizeof kDraw / sizeof kDraw[0] == kOverlayCount, "one draw function a row");
+    for (std::size_t i = 0; i < kOverlayCount; ++i) {
+        if (app.view.show.*kOverlays[i].flag) kDraw[i](app);
+    }
+}
+
+void dimText(const char* text) {
+    const ImVec4 dim =
+        uiLightTheme() ? ImVec4(0.32f, 0.35f, 0.42f, 1.0f) : ImVec4(0.62f, 0.66f, 0.74f, 1.0f);
+    ImGui::PushStyleColor(ImGuiCol_Text, dim);
+    textWrappedFormula(text); // wrapped: a docked window may be narrow, nothing is cut
+    ImGui::PopStyleColor();
+}

@@ -1,0 +1,328 @@
+#include "ui_style.h"
+
+#include "dock_layout.h"
+#include "imgui_ext.h"
+#include "palette.h"
+#include "text_format.h"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+
+namespace {
+
+constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+constexpr float kBaseFontPx = 16.0f;
+float gScale = 0.0f;
+float gLabelScale = 1.0f;
+bool gLight = false;
+bool gTouch = false;
+ImFont* gLabelFont = nullptr;
+ImFont* gCompactFont = nullptr;
+// The classroom's fonts (slideFontPx), baked for the display's height when the look was applied.
+ImFont* gCaptionFont = nullptr;
+ImFont* gSlideLabelFont = nullptr;
+float gSlideCaptionPx = 0.0f, gSlideLabelPx = 0.0f;
+
+bool fileExists(const char* path) {
+    if (std::FILE* f = std::fopen(path, "rb")) {
+        std::fclose(f);
+        return true;
+    }
+    return false;
+}
+
+// The light theme: ImGui's light colours, windows opaque, the title bars in the same blue.
+void setLightColors(ImGuiStyle& style) {
+    ImGui::StyleColorsLight(&style);
+    ImVec4* c = style.Colors;
+    const Color bg = windowBackground(true);
+    c[ImGuiCol_WindowBg] = ImVec4(bg.r, bg.g, bg.b, bg.a);
+    c[ImGuiCol_PopupBg] = ImVec4(0.98f, 0.98f, 0.97f, 0.99f);
+    c[ImGuiCol_TitleBg] = ImVec4(0.30f, 0.45f, 0.68f, 1.0f);
+    c[ImGuiCol_TitleBgActive] = ImVec4(0.30f, 0.45f, 0.68f, 1.0f);
+    c[ImGuiCol_TitleBgCollapsed] = ImVec4(0.30f, 0.45f, 0.68f, 1.0f);
+    c[ImGuiCol_Text] = ImVec4(0.05f, 0.05f, 0.08f, 1.0f);
+    c[ImGuiCol_FrameBg] = ImVec4(0.86f, 0.87f, 0.90f, 1.0f);
+    c[ImGuiCol_Button] = ImVec4(0.62f, 0.74f, 0.92f, 1.0f);
+    c[ImGuiCol_Header] = ImVec4(0.80f, 0.84f, 0.91f, 1.0f);
+}
+
+void setTheme(ImGuiStyle& style, bool light) {
+    if (light)
+        setLightColors(style);
+    else
+        ImGui::StyleColorsDark(&style);
+    style.WindowRounding = 6.0f;
+    style.FrameRounding = 4.0f;
+    style.GrabRounding = 4.0f;
+    style.TabRounding = 4.0f;
+    style.WindowBorderSize = 0.0f;
+    style.FrameBorderSize = 0.0f;
+    style.WindowPadding = ImVec2(12.0f, 10.0f);
+    style.FramePadding = ImVec2(8.0f, 4.0f);
+    style.ItemSpacing = ImVec2(8.0f, 6.0f);
+    style.GrabMinSize = 12.0f;
+    // No anti-aliased fringe around filled shapes: it doubled the triangles of the panel, and
+    // every thin triangle costs a software rasteriser; rounded corners stay smooth enough.
+    style.AntiAliasedFill = false;
+    // The keyboard's focus ring: a colour no control has, plainly seen on either theme.
+    style.Colors[ImGuiCol_NavHighlight] =
+        light ? ImVec4(0.80f, 0.10f, 0.55f, 1.0f) : ImVec4(1.0f, 0.85f, 0.25f, 1.0f);
+    if (light) return;
+    ImVec4* c = style.Colors;
+    const Color bg = windowBackground(false);
+    c[ImGuiCol_WindowBg] = ImVec4(bg.r, bg.g, bg.b, bg.a);
+    c[ImGuiCol_PopupBg] = ImVec4(0.12f, 0.13f, 0.16f, 0.98f);
+    c[ImGuiCol_TitleBg] = ImVec4(0.16f, 0.29f, 0.48f, 1.0f);
+    c[ImGuiCol_TitleBgActive] = ImVec4(0.16f, 0.29f, 0.48f, 1.0f);
+    c[ImGuiCol_TitleBgCollapsed] = ImVec4(0.16f, 0.29f, 0.48f, 1.0f);
+    c[ImGuiCol_Header] = ImVec4(0.20f, 0.25f, 0.33f, 1.0f);
+    c[ImGuiCol_HeaderHovered] = ImVec4(0.26f, 0.36f, 0.50f, 1.0f);
+    c[ImGuiCol_HeaderActive] = ImVec4(0.30f, 0.42f, 0.60f, 1.0f);
+    c[ImGuiCol_FrameBg] = ImVec4(0.17f, 0.19f, 0.24f, 1.0f);
+    c[ImGuiCol_FrameBgHovered] = ImVec4(0.22f, 0.25f, 0.32f, 1.0f);
+    c[ImGuiCol_FrameBgActive] = ImVec4(0.26f, 0.30f, 0.40f, 1.0f);
+    c[ImGuiCol_Button] = ImVec4(0.22f, 0.34f, 0.52f, 1.0f);
+    c[ImGuiCol_ButtonHovered] = ImVec4(0.28f, 0.43f, 0.65f, 1.0f);
+    c[ImGuiCol_ButtonActive] = ImVec4(0.33f, 0.50f, 0.75f, 1.0f);
+    c[ImGuiCol_SliderGrab] = ImVec4(0.45f, 0.65f, 0.95f, 1.0f);
+    c[ImGuiCol_SliderGrabActive] = ImVec4(0.60f, 0.78f, 1.0f, 1.0f);
+    c[ImGuiCol_CheckMark] = ImVec4(0.60f, 0.80f, 1.0f, 1.0f);
+    c[ImGuiCol_Separator] = ImVec4(0.28f, 0.30f, 0.36f, 1.0f);
+}
+
+void setTheme(ImGuiStyle& style) {
+    setTheme(style, gLight);
+}
+
+// Touch sizes at UI scale 1: a frame kTouchTargetPx high around the 16 px font, a slider's grab
+// a fingertip wide, a thin scroll bar (a swipe scrolls).
+void setTouchSizes(ImGuiStyle& style) {
+    style.FramePadding = ImVec2(10.0f, (kTouchTargetPx - kBaseFontPx) * 0.5f);
+    style.ItemSpacing = ImVec2(10.0f, 8.0f);
+    style.ItemInnerSpacing = ImVec2(8.0f, 6.0f);
+    style.GrabMinSize = 28.0f;
+    style.ScrollbarSize = 8.0f;
+}
+
+} // namespace
+
+void uiCreateContext(const char* iniPath) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = iniPath;
+    // Every control reachable from the keyboard: the arrows move ImGui's focus ring (once Tab or
+    // F6 put it in a window), Space presses, Enter types into a field (input_map.h's Tab row).
+    io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
+    imgui_ext::mapKeys(); // the navigation's keys
+    setTheme(ImGui::GetStyle());
+    gScale = 0.0f;
+    gLabelFont = nullptr;
+    gCompactFont = nullptr;
+    gCaptionFont = gSlideLabelFont = nullptr;
+    gSlideCaptionPx = gSlideLabelPx = 0.0f;
+}
+
+void uiDestroyContext() {
+    ImGui::DestroyContext();
+}
+
+float uiCurrentScale() {
+    return gScale;
+}
+
+ImFont* addFont(ImGuiIO& io, float px) {
+    if (fileExists(kFontPath)) {
+        // Glyphs baked at their screen size and snapped to whole pixels: the atlas maps 1:1 onto
+        // the screen, so it can be sampled with the nearest texel (see ui_renderer_gl.cpp).
+        ImFontConfig config;
+        config.OversampleH = 1;
+        config.OversampleV = 1;
+        config.PixelSnapH = true;
+        return io.Fonts->AddFontFromFileTTF(kFontPath, px, &config);
+    }
+    ImFontConfig config;
+    config.SizePixels = px * 13.0f / kBaseFontPx;
+    return io.Fonts->AddFontDefault(&config);
+}
+
+namespace {
+
+void applyStyle(float scale, bool light) {
+    ImGuiStyle style;
+    setTheme(style, light);
+    if (gTouch) setTouchSizes(style);
+    style.ScaleAllSizes(scale);
+    ImGui::GetStyle() = style;
+}
+
+} // namespace
+
+float slideFontPx(double share, float atLeast) {
+    const float height = ImGui::GetIO().DisplaySize.y;
+    const float px = height > 0.0f ? static_cast<float>(std::ceil(share * height)) : 0.0f;
+    return std::fmax(px, std::round(atLeast));
+}
+
+bool uiApplyLook(float scale, float labelScale, bool light) {
+    // The classroom's text, whatever the UI scale (never smaller than the UI's own).
+    const float captionPx = slideFontPx(kCaptionShare, kBaseFontPx * scale);
+    const float slideLabelPx = slideFontPx(kSceneLabelShare, kBaseFontPx * scale * labelScale);
+    const bool fonts = scale != gScale || labelScale != gLabelScale || !gLabelFont ||
+                       captionPx != gSlideCaptionPx || slideLabelPx != gSlideLabelPx;
+    if (!fonts && light == gLight) return false;
+    gScale = scale;
+    gLabelScale = labelScale;
+    gLight = light;
+    if (fonts) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.Fonts->Clear();
+        addFont(io, kBaseFontPx * scale); // the first font is ImGui's default: the UI's
+        // The scene's labels: a font of their own size (a scaled UI font would be blurred).
+        gLabelFont = labelScale == 1.0f ? io.Fonts->Fonts[0]
+                                        : addFont(io, std::round(kBaseFontPx * scale * labelScale));
+        gCompactFont =
+            addFont(io, std::round(kBaseFontPx * scale * static_cast<float>(kCompactFontScale)));
+        gSlideCaptionPx = captionPx;
+        gSlideLabelPx = slideLabelPx;
+        gCaptionFont = addFont(io, captionPx);
+        gSlideLabelFont = addFont(io, slideLabelPx);
+        io.Fonts->Build();
+    }
+    applyStyle(scale, light);
+    return fonts;
+}
+
+bool uiApplyScale(float scale) {
+    return uiApplyLook(scale, gLabelScale, gLight);
+}
+
+void uiSetTouch(bool touch) {
+    if (touch == gTouch) return;
+    gTouch = touch;
+    applyStyle(gScale > 0.0f ? gScale : 1.0f, gLight);
+}
+
+bool uiTouch() {
+    return gTouch;
+}
+
+void uiBeginRows() {
+    const float row = kTouchTargetPx * gScale - ImGui::GetTextLineHeight();
+    const ImVec2 spacing = ImGui::GetStyle().ItemSpacing;
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing,
+                        gTouch ? ImVec2(spacing.x, std::fmax(spacing.y, row)) : spacing);
+}
+
+void uiEndRows() {
+    ImGui::PopStyleVar();
+}
+
+bool uiSmallButton(const char* label) {
+    if (gTouch) return ImGui::Button(label);
+    // ImGui's SmallButton has no vertical padding: its label is clipped to the line, and a
+    // large font's descenders ("velocity", "energy" at UI scale 1.5) were cut. Two pixels more.
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 1.0f));
+    const bool pressed = ImGui::Button(label);
+    ImGui::PopStyleVar();
+    return pressed;
+}
+
+ImFont* uiCompactFont() {
+    return gCompactFont ? gCompactFont : ImGui::GetFont();
+}
+
+ImFont* uiLabelFont() {
+    return gLabelFont ? gLabelFont : ImGui::GetFont();
+}
+
+ImFont* uiCaptionFont() {
+    return gCaptionFont ? gCaptionFont : ImGui::GetFont();
+}
+
+ImFont* uiSlideLabelFont() {
+    return gSlideLabelFont ? gSlideLabelFont : uiLabelFont();
+}
+
+bool uiSlideFontsStale() {
+    return slideFontPx(kCaptionShare, kBaseFontPx * gScale) != gSlideCaptionPx ||
+           slideFontPx(kSceneLabelShare, kBaseFontPx * gScale * gLabelScale) != gSlideLabelPx;
+}
+
+bool uiLightTheme() {
+    return gLight;
+}
+
+ImVec4 uiThemed(const ImVec4& c) {
+    if (!gLight) return c;
+    float h = 0.0f, s = 0.0f, v = 0.0f;
+    ImGui::ColorConvertRGBtoHSV(c.x, c.y, c.z, h, s, v);
+    if (s < 0.25f) {
+        v = std::fmin(0.45f, std::fmax(0.08f, 1.05f - v)); // white near black, grey darker
+    } else {
+        s = std::fmax(s, 0.7f);
+        v = std::fmin(v, 0.6f);
+    }
+    ImVec4 out(0.0f, 0.0f, 0.0f, c.w);
+    ImGui::ColorConvertHSVtoRGB(h, s, v, out.x, out.y, out.z);
+    return out;
+}
+
+ImU32 uiThemed(ImU32 c) {
+    if (!gLight) return c;
+    return ImGui::ColorConvertFloat4ToU32(uiThemed(ImGui::ColorConvertU32ToFloat4(c)));
+}
+
+void textWrappedAtSpaces(const std::string& text) {
+    const float width = ImGui::GetContentRegionAvail().x;
+    const std::string lines = wrapAtSpaces(text, width, [](const std::string& line) {
+        return static_cast<double>(ImGui::CalcTextSize(line.c_str()).x);
+    });
+    ImGui::TextUnformatted(lines.c_str(), lines.c_str() + lines.size());
+}
+
+void textWrappedFormula(const std::string& text) {
+    const float width = ImGui::GetContentRegionAvail().x;
+    const std::string lines = wrapFormula(text, width, [](const std::string& line) {
+        return static_cast<double>(ImGui::CalcTextSize(line.c_str()).x);
+    });
+    ImGui::TextUnformatted(lines.c_str(), lines.c_str() + lines.size());
+}
+
+void wrappedTooltip(const std::string& text) {
+    if (!ImGui::IsItemHovered()) return;
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::TextUnformatted(text.c_str(), text.c_str() + text.size());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
+ImVec4 uiErrorColor() {
+    return uiThemed(ImVec4{1.0f, 0.45f, 0.42f, 1.0f});
+}
+ImVec4 uiWarningColor() {
+    return uiThemed(ImVec4{1.0f, 0.76f, 0.28f, 1.0f});
+}
+ImVec4 uiNoteColor() {
+    return uiThemed(ImVec4{0.55f, 0.85f, 0.60f, 1.0f});
+}
+ImVec4 uiDimColor() {
+    return uiThemed(ImVec4{0.62f, 0.66f, 0.74f, 1.0f});
+}
+ImVec4 uiQuestionColor() {
+    return uiThemed(ImVec4{1.0f, 0.82f, 0.40f, 1.0f});
+}
+
+ImVec4 uiMarkColorVec(Mark mark) {
+    const Color c = markColor(mark, gLight);
+    return ImVec4(c.r, c.g, c.b, c.a);
+}
+
+ImU32 uiMarkColor(Mark mark) {
+    return markColor(mark, gLight).packed();
+}

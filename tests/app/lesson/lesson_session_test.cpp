@@ -1,0 +1,266 @@
+// The lesson in the app: entering a step gives exactly the state the headless runner checks, the
+// keys walk through the steps and their questions, R restarts, a bad lesson keeps the current one.
+#include "app.h"
+#include "input_map.h"
+#include "inspector_format.h"
+#include "lesson_prompt.h"
+#include "lesson_runner.h"
+#include "lesson_session.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace {
+
+const std::string kLecture3 = std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json";
+const std::string kBadLessons = std::string(SANDBOX_TEST_DATA_DIR) + "/bad_lessons";
+
+App lessonApp() {
+    App app;
+    app.shipped.scenesDir = SANDBOX_SCENES_DIR;
+    EXPECT_TRUE(openLesson(app, kLecture3)) << app.ui.messages.error;
+    return app;
+}
+
+// Plays frame by frame as the window does, until the step pauses itself (or a bound).
+void playUntilPaused(App& app) {
+    for (int i = 0; i < 100000 && !app.sim.paused; ++i) stepSimulation(app);
+}
+
+} // namespace
+
+TEST(LessonSession, EveryStepShowsWhatTheRunnerChecks) {
+    App app = lessonApp();
+    const Lesson& lesson = *app.lesson.lesson;
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+        ASSERT_TRUE(enterStep(app, i));
+        EXPECT_EQ(stateHash(app.sim.world()), stateHash(stepStartWorld(lesson.steps[i])));
+        EXPECT_EQ(app.sim.world().frame, 0u);
+        lessonShowPausePoint(app);
+        const StepRun run = runStepToPause(lesson.steps[i]);
+        EXPECT_EQ(stateHash(app.sim.world()), stateHash(run.world)) << lesson.steps[i].title;
+        EXPECT_TRUE(app.sim.paused);
+        // One count of collisions: the badge's (the run's totals) is sandbox-cli lesson's, and
+        // the rest rule's resting contacts are counted apart in both.
+        EXPECT_EQ(app.sim.run.totals.collisions, run.progress.collisions) << lesson.steps[i].title;
+        EXPECT_EQ(app.sim.run.totals.contacts, run.progress.contacts) << lesson.steps[i].title;
+    }
+}
+
+// Predict, then observe (issue 24): every step opens paused at its setup (t = 0) with its
+// question; the next press plays it, at its time scale, through the window's clock to its
+// moment, where it pauses by itself and shows the answer (the runner's state, bit for bit).
+TEST(LessonSession, EveryStepOpensAtItsSetupAndPlaysToItsMoment) {
+    App app = lessonApp();
+    const Lesson& lesson = *app.lesson.lesson;
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+        const LessonStep& step = lesson.steps[i];
+        enterStep(app, i);
+        EXPECT_EQ(app.sim.world().time, 0.0) << step.title;
+        EXPECT_TRUE(app.sim.paused) << step.title;
+        EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Setup) << step.title;
+        if (!step.question.empty()) {
+            const std::string caption = lessonCaption(app.lesson, app.sim);
+            EXPECT_NE(caption.find("Predict: " + stepPrompt(step).question), std::string::npos)
+                << step.title;
+            EXPECT_NE(caption.find("\nA. " + stepPrompt(step).choices.at(0) + "\nB. "),
+                      std::string::npos)
+                << caption;
+            EXPECT_EQ(caption.find("Answer: "), std::string::npos);
+        }
+        if (step.pause.kind == LessonPause::Kind::None) continue;
+        const StepRun run = runStepToPause(step);
+        const std::uint64_t frames = static_cast<std::uint64_t>(run.progress.frames);
+        applyLessonAction(app, Action::LessonNext); // play
+        EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Playing) << step.title;
+        // The window's clock, 60 displayed frames a second, at the step's time scale.
+        for (int k = 0; k < 100000 && !app.sim.paused; ++k) advanceSimulation(app, 1.0 / 60.0);
+        EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Moment) << step.title;
+        EXPECT_EQ(app.sim.world().frame, frames) << step.title;
+        EXPECT_EQ(stateHash(app.sim.world()), stateHash(run.world)) << step.title;
+        EXPECT_EQ(app.lesson.current, i); // still this step
+        if (!step.question.empty()) {
+            const std::string answer = stepAnswer(step, run, {}, nullptr).text;
+            EXPECT_NE(lessonCaption(app.lesson, app.sim).find("Answer: " + answer),
+                      std::string::npos)
+                << step.title << "\n"
+                << lessonCaption(app.lesson, app.sim);
+        }
+        // Playing on does not stop again.
+        app.sim.paused = false;
+        advanceSimulation(app, 1.0 / 60.0);
+        EXPECT_FALSE(app.sim.paused) << step.title;
+    }
+}
+
+TEST(LessonSession, KeysWalkThroughTheSteps) {
+    App app = lessonApp();
+    const std::size_t n = app.lesson.lesson->steps.size();
+    EXPECT_EQ(lessonHeading(app.lesson),
+              "1 / " + std::to_string(n) + " \xc2\xb7 " + app.lesson.lesson->steps[0].title);
+    // Which keys give these actions: KeyMap.EachKeyGivesItsAction (input_test.cpp).
+    EXPECT_EQ(digitOfKey(keys::kKeypad0 + 3), 3);
+    EXPECT_EQ(digitOfKey(keys::kEnter), -1);
+
+    applyLessonAction(app, Action::LessonNext); // step 1 plays from its setup
+    EXPECT_EQ(app.lesson.current, 0u);
+    EXPECT_FALSE(app.sim.paused);
+    applyLessonAction(app, Action::LessonNext); // its moment at once
+    EXPECT_EQ(app.lesson.current, 0u);
+    EXPECT_TRUE(app.sim.paused);
+    EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Moment);
+    applyLessonAction(app, Action::LessonNext); // step 2
+    EXPECT_EQ(app.lesson.current, 1u);
+    applyLessonAction(app, Action::LessonPrevious);
+    EXPECT_EQ(app.lesson.current, 0u);
+    applyLessonAction(app, Action::LessonPrevious); // stays at the first
+    EXPECT_EQ(app.lesson.current, 0u);
+    applyLessonAction(app, Action::LessonLast);
+    EXPECT_EQ(app.lesson.current, n - 1);
+    applyLessonAction(app, Action::LessonNext); // stays at the last
+    EXPECT_EQ(app.lesson.current, n - 1);
+    applyLessonAction(app, Action::LessonFirst);
+    EXPECT_EQ(app.lesson.current, 0u);
+
+    lessonTypeDigit(app.lesson, 1);
+    lessonTypeDigit(app.lesson, 2);
+    EXPECT_NE(lessonCaption(app.lesson, app.sim).find("Go to step 12"), std::string::npos);
+    applyLessonAction(app, Action::LessonJump);
+    EXPECT_EQ(app.lesson.current, 11u);
+    lessonTypeDigit(app.lesson, 9);
+    lessonTypeDigit(app.lesson, 9);
+    applyLessonAction(app, Action::LessonJump); // no step 99: an error, and the step stays
+    EXPECT_EQ(app.lesson.current, 11u);
+    EXPECT_NE(app.ui.messages.error.find("no step 99"), std::string::npos) << app.ui.messages.error;
+}
+
+TEST(LessonSession, LeavingAndComingBackGivesTheSameState) {
+    App app = lessonApp();
+    enterStep(app, 3);
+    const std::uint64_t start = stateHash(app.sim.world());
+    const Overlays shown = app.view.show;
+    applyLessonAction(app, Action::LessonNext); // play (step 4 asks)
+    playUntilPaused(app);
+    lessonAfterFrames(app.lesson, app.sim, app.view); // the moment: the answer
+    EXPECT_FALSE(app.lesson.asking());
+    applyLessonAction(app, Action::LessonNext); // step 5
+    EXPECT_EQ(app.lesson.current, 4u);
+    applyLessonAction(app, Action::LessonPrevious);
+    EXPECT_EQ(app.lesson.current, 3u);
+    EXPECT_EQ(stateHash(app.sim.world()), start);
+    EXPECT_EQ(app.sim.world().time, 0.0);
+    EXPECT_EQ(app.view.show.poi, shown.poi);
+    EXPECT_EQ(app.view.show.inspector, shown.inspector); // the reveal's overlays are off again
+    EXPECT_TRUE(app.lesson.asking());
+}
+
+// R replays the step from its setup keeping what the lecturer changed, as R does outside lessons
+// (issue 24: step 2's answer says "S stops it"; after S, R must not bring the step's method
+// back); Shift+R restores the step as written.
+TEST(LessonSession, RReplaysWithTheLecturersChangesShiftRAsWritten) {
+    App app = lessonApp();
+    enterStep(app, 1); // the bullet: move-and-correct tunnels
+    const std::uint64_t start = stateHash(app.sim.world());
+    const int selected = app.sim.selected;
+    applyLessonAction(app, Action::LessonNext);
+    for (int i = 0; i < 5; ++i) stepSimulation(app);
+    app.sim.world().settings.method = Method::Perfect; // S
+    applyLessonAction(app, Action::Reset);
+    EXPECT_EQ(app.lesson.current, 1u);
+    EXPECT_EQ(app.sim.world().time, 0.0);
+    EXPECT_EQ(app.sim.world().settings.method, Method::Perfect); // kept
+    EXPECT_EQ(app.sim.selected, selected);
+    EXPECT_TRUE(app.sim.paused); // at the setup again
+    EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Setup);
+    // Played to its moment, the perfect method stops the bullet at the wall.
+    applyLessonAction(app, Action::LessonNext);
+    playUntilPaused(app);
+    lessonAfterFrames(app.lesson, app.sim, app.view);
+    EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Moment);
+    const Block& bullet = app.sim.world().blocks[static_cast<std::size_t>(selected)];
+    EXPECT_LT(bullet.position.x, 12.0);          // in front of the wall (at x = 12 m), not past it
+    applyLessonAction(app, Action::ResetToFile); // Shift+R
+    EXPECT_EQ(app.sim.world().settings.method, app.lesson.step()->scene->settings.method);
+    EXPECT_EQ(stateHash(app.sim.world()), start);
+    EXPECT_TRUE(app.sim.paused);
+}
+
+TEST(LessonSession, StepSettingsAreApplied) {
+    App app = lessonApp();
+    for (std::size_t i = 0; i < app.lesson.lesson->steps.size(); ++i) {
+        enterStep(app, i);
+        const LessonStep& step = *app.lesson.step();
+        EXPECT_EQ(app.sim.selected, step.selected);
+        EXPECT_EQ(app.sim.world().settings.method, step.scene->settings.method);
+        EXPECT_EQ(app.sim.timeScale, step.timeScale);
+        EXPECT_EQ(app.view.show.vectors, std::find(step.overlays.begin(), step.overlays.end(),
+                                                   "vectors") != step.overlays.end());
+        EXPECT_EQ(app.view.fitBounds.has_value(), step.camera.has_value());
+    }
+}
+
+TEST(LessonSession, AMalformedLessonKeepsTheCurrentOne) {
+    App app = lessonApp();
+    enterStep(app, 4);
+    const std::uint64_t hash = stateHash(app.sim.world());
+    for (const char* bad : {"unknown_overlay.json", "scene_fails.json", "bad_expectation.json",
+                            "syntax.json", "no_such_lesson.json"}) {
+        EXPECT_FALSE(openLesson(app, kBadLessons + "/" + bad));
+        EXPECT_NE(app.ui.messages.error.find(bad), std::string::npos) << app.ui.messages.error;
+        ASSERT_TRUE(app.lesson.active());
+        EXPECT_EQ(app.lesson.lesson->path, kLecture3);
+        EXPECT_EQ(app.lesson.current, 4u);
+        EXPECT_EQ(stateHash(app.sim.world()), hash);
+    }
+    EXPECT_FALSE(openLesson(app, kLecture3, 99)); // a bad step index
+    EXPECT_NE(app.ui.messages.error.find("no step 100"), std::string::npos)
+        << app.ui.messages.error;
+    EXPECT_EQ(app.lesson.current, 4u);
+}
+
+TEST(LessonSession, LoadingASceneLeavesTheLesson) {
+    App app = lessonApp();
+    ASSERT_TRUE(loadScene(app, std::string(SANDBOX_SCENES_DIR) + "/single_bounce.json"));
+    EXPECT_FALSE(app.lesson.active());
+    EXPECT_FALSE(app.view.fitBounds.has_value());
+    applyLessonAction(app, Action::LessonNext); // nothing happens without a lesson
+    EXPECT_EQ(app.sim.scene.name, "Single bounce");
+}
+
+// Issue 18: in present mode a lesson keeps one caption bar ("n / N · title", the caption, and
+// the method and t beside the heading, since the status badge is hidden), the scene below it,
+// and no window.
+TEST(LessonSession, PresentModeKeepsTheOneCaptionBar) {
+    App app = lessonApp();
+    app.view.captionHeight = 120.0; // what the bar measured last frame
+    app.view.show.plots = true;
+    setPresentMode(app.view, true);
+    const Layout layout = computeAppLayout(app.view, app.lesson.active(), 1920, 1080);
+    EXPECT_TRUE(layout.windows.empty());
+    EXPECT_EQ(layout.panel.width, 0.0);
+    EXPECT_GE(layout.scene.y, 120.0); // the world is fitted below the bar
+    EXPECT_EQ(lessonBarStatus(true, Method::Perfect, 0.625), "perfect   ·   t = 0.62 s");
+    EXPECT_EQ(lessonBarStatus(false, Method::Perfect, 0.625),
+              "PageDown next, PageUp back, R restart");
+    EXPECT_EQ(lessonHeading(app.lesson).rfind("1 / ", 0), 0u) << lessonHeading(app.lesson);
+}
+
+// Issue 18: step 24 ("collisions that are not really collisions") waits for the collision the
+// relative-velocity test refuses, and the inspector says so as the Tips slide does; the watch
+// after it shows the real collision it causes in the next frame.
+TEST(LessonSession, TheNotACollisionStepShowsTheRelativeVelocityTest) {
+    App app = lessonApp();
+    ASSERT_TRUE(enterStep(app, 23)) << app.ui.messages.error;
+    ASSERT_EQ(app.lesson.step()->title, "Tips: BAD, a collision that is not a collision");
+    lessonShowPausePoint(app);
+    ASSERT_EQ(app.sim.telemetry.recent.size(), 2u);
+    EXPECT_FALSE(collisionFormula(app.sim.telemetry.recent.back(), "red", "blue").separating);
+    const CollisionRecord& r = app.sim.telemetry.recent.front();
+    EXPECT_TRUE(r.firstBelow); // red is behind (left of) blue
+    const CollisionFormula f =
+        collisionFormula(r, app.sim.blockDisplayName(r.block), app.sim.blockDisplayName(r.other));
+    EXPECT_TRUE(f.separating);
+    EXPECT_EQ(f.relative.rfind("rel. vel. along x = v1 - v2 = 3 - 4 = -1 < 0: separating", 0), 0u)
+        << f.relative;
+}
