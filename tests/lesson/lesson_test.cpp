@@ -538,8 +538,14 @@ TEST(LessonEdits, AStepsEditsApplyAtTheirFrames) {
     ASSERT_TRUE(run.reached);
     EXPECT_TRUE(run.editError.empty()) << run.editError;
     // Perfectly inelastic: both at u = (1·6 + 4·0) / 5 = 1.2 m/s (to rounding in the formula).
-    EXPECT_NEAR(run.world.blocks[0].velocity.x, 1.2, 1e-12);
-    EXPECT_NEAR(run.world.blocks[1].velocity.x, 1.2, 1e-12);
+    EXPECT_NEAR(run.event.blocks[0].velocity.x, 1.2, 1e-12);
+    EXPECT_NEAR(run.event.blocks[1].velocity.x, 1.2, 1e-12);
+    // Run from the setup as the window runs it (runStepFrom): the frame-10 edit plays there too,
+    // and the frame-0 one is not played twice.
+    const StepRun live = runStepFrom(step, stepStartWorld(step), {"m1", "m2"}, 120.0, 1.0);
+    ASSERT_TRUE(live.reached);
+    EXPECT_EQ(live.event.frame, run.event.frame);
+    EXPECT_EQ(live.event.blocks[1].velocity.x, run.event.blocks[1].velocity.x);
     // A refused edit is the step's failure, with its place and key.
     const LessonStep bad = onlyStep(lessonWith(
         R"("pause_at": {"collision": 1}, "edits": [{"frame": 3, "set": "m3.mass", "value": 2}])"));
