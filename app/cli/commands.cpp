@@ -2,6 +2,7 @@
 #include "commands.h"
 
 #include "csv.h"
+#include "edit_log.h"
 
 #include "input_limits.h"
 #include "lesson_prompt.h"
@@ -66,16 +67,21 @@ bool stopAtTime(double t, const WorldSettings& s, const char* what, const std::s
     return true;
 }
 
-// Applies the command-line overrides to the scene's settings. Returns false and writes a message
-// naming the option and the limit on a bad value.
-bool applyOptions(const RunRequest& r, std::optional<double> duration, WorldSettings& s,
-                  StopRule& stop, std::ostream& err) {
+// Applies the settings' flags to the scene's settings. Returns false and writes a message naming
+// the flag and the limit on a bad value.
+bool applyFlags(const RunRequest& r, WorldSettings& s, std::ostream& err) {
     for (const SettingFlag& flag : r.settings) {
         const settings_table::FlagProblem problem =
             settings_table::readFlag(*flag.row, flag.text, s);
         if (!problem.expected.empty())
             return refuse(err, flag.row->cli.flag, problem.text, problem.expected);
     }
+    return true;
+}
+
+// How long the run is (--steps, --time, else the scene's duration), at the world's dt.
+bool stopRule(const RunRequest& r, std::optional<double> duration, const WorldSettings& s,
+              StopRule& stop, std::ostream& err) {
     if (r.steps) {
         double n = 0.0;
         if (!numberOption("--steps", *r.steps, limits::kFrames, n, err)) return false;
@@ -93,13 +99,59 @@ bool applyOptions(const RunRequest& r, std::optional<double> duration, WorldSett
     return true;
 }
 
+// ---- Edits (docs/edits.md): --set at frame 0, the --edits log's lines at their frames ----
+
+// The world run and its blocks' names, changed only through `history` (app/edit).
+struct EditedWorld {
+    World world;
+    std::vector<BlockLabel> labels;
+    EditHistory history;
+    std::optional<LogPlayer> log;
+    bool fixedBlocks = false; // --trace: its columns are the blocks at the start
+    EditTarget target() { return {world, labels}; }
+};
+
+bool applySets(const RunRequest& r, EditedWorld& w, std::ostream& err) {
+    for (const std::string& text : r.sets) {
+        EditError error;
+        std::optional<Edit> edit = parseSet(text, error);
+        if (edit) error = w.history.apply(w.target(), *edit, w.world.frame).error;
+        if (!error.empty()) return refuse(err, "--set", text, printable(error.text()));
+    }
+    return true;
+}
+
+// The log's lines due at the world's frame; false with the line's place and why on a refusal.
+bool playDueEdits(EditedWorld& w, std::ostream& err) {
+    if (!w.log) return true;
+    while (const LogLine* line = w.log->next(w.world.frame)) {
+        const JournalEntry& e = line->entry;
+        EditError error;
+        if (e.what == JournalEntry::What::Undo) {
+            error = w.history.undo(w.target(), w.world.frame).error;
+        } else if (e.what == JournalEntry::What::Redo) {
+            error = w.history.redo(w.target(), w.world.frame).error;
+        } else if (w.fixedBlocks &&
+                   (e.edit.kind == Edit::Kind::Add || e.edit.kind == Edit::Kind::Remove)) {
+            error = {editKey(e.edit), "--trace writes the blocks of the start: a block may not be "
+                                      "added or removed"};
+        } else {
+            error = w.history.apply(w.target(), e.edit, w.world.frame, e.continues).error;
+        }
+        if (error.empty()) continue;
+        err << logLineError(*line, error).text() << "\n";
+        return false;
+    }
+    return true;
+}
+
 // ---- --trace: one CSV row per frame, for a spreadsheet ----
 
-void writeTraceHeader(std::ostream& out, const Scene& scene) {
+void writeTraceHeader(std::ostream& out, const std::vector<BlockLabel>& labels) {
     out << "t";
-    for (std::size_t i = 0; i < scene.blocks.size(); ++i) {
-        const std::string name = scene.blocks[i].name.empty() ? "blocks[" + std::to_string(i) + "]"
-                                                              : scene.blocks[i].name;
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        const std::string name =
+            labels[i].name.empty() ? "blocks[" + std::to_string(i) + "]" : labels[i].name;
         for (const char* column : {" x", " y", " vx", " vy"}) out << ',' << csvField(name + column);
     }
     out << ",momentum_x,momentum_y,kinetic_energy,potential_energy\n";
@@ -115,10 +167,12 @@ void writeTraceRow(std::ostream& out, const World& world, const StepStats& s) {
         << s.potentialEnergy << '\n';
 }
 
-// What a run adds up over its steps, and whether SIGINT stopped it before its end.
+// What a run adds up over its steps, whether SIGINT stopped it before its end, and whether an
+// edit of the log was refused (the message is out).
 struct RunTotals {
     StepTotals steps;
     bool interrupted = false;
+    bool refused = false;
 };
 
 // Progress on stderr for runs longer than a second: a line rewritten in place on a terminal,
@@ -151,8 +205,9 @@ class Progress {
     std::chrono::steady_clock::time_point next_;
 };
 
-RunTotals simulate(World& world, const StopRule& stop, const RunRequest& request,
+RunTotals simulate(EditedWorld& edited, const StopRule& stop, const RunRequest& request,
                    std::ostream* trace, std::ostream& err) {
+    World& world = edited.world;
     RunTotals totals;
     Progress progress(request, stop.frames, err);
     // --time stops once the world time is within a tiny fraction of a frame of T, so rounding in
@@ -165,10 +220,16 @@ RunTotals simulate(World& world, const StopRule& stop, const RunRequest& request
             break;
         }
         progress.update(totals.steps.steps, world.time);
+        if (!playDueEdits(edited, err)) {
+            totals.refused = true;
+            return totals;
+        }
         const StepStats s = world.step();
         if (trace) writeTraceRow(*trace, world, s);
         addStep(totals.steps, s);
     }
+    // The lines of the last frame too (they show in the summary).
+    totals.refused = !playDueEdits(edited, err);
     return totals;
 }
 
@@ -195,8 +256,8 @@ nlohmann::ordered_json vecJson(Vec2 v) {
     return {v.x, v.y};
 }
 
-void printJson(const Scene& scene, const World& world, const StepTotals& t, bool interrupted,
-               std::ostream& out) {
+void printJson(const Scene& scene, const World& world, const std::vector<BlockLabel>& labels,
+               const StepTotals& t, bool interrupted, std::ostream& out) {
     nlohmann::ordered_json j;
     const WorldSettings& s = world.settings;
     j["scene"] = scene.name; // dump() below escapes every control character
@@ -216,7 +277,7 @@ void printJson(const Scene& scene, const World& world, const StepTotals& t, bool
     nlohmann::ordered_json blocks = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < world.blocks.size(); ++i) {
         nlohmann::ordered_json b;
-        b["name"] = i < scene.blocks.size() ? scene.blocks[i].name : std::string();
+        b["name"] = i < labels.size() ? labels[i].name : std::string();
         b["position"] = vecJson(world.blocks[i].position);
         b["velocity"] = vecJson(world.blocks[i].velocity);
         blocks.push_back(std::move(b));
@@ -230,8 +291,8 @@ std::ostream& operator<<(std::ostream& out, Vec2 v) {
     return out << "(" << v.x << ", " << v.y << ")";
 }
 
-void printText(const Scene& scene, const World& world, const StepTotals& t, bool interrupted,
-               std::ostream& out) {
+void printText(const Scene& scene, const World& world, const std::vector<BlockLabel>& labels,
+               const StepTotals& t, bool interrupted, std::ostream& out) {
     const WorldSettings& s = world.settings;
     const std::ios::fmtflags flags = out.flags();
     const std::streamsize precision = out.precision(6);
@@ -254,7 +315,7 @@ void printText(const Scene& scene, const World& world, const StepTotals& t, bool
     out.precision(6);
     if (world.blocks.size() <= 20) {
         for (std::size_t i = 0; i < world.blocks.size(); ++i) {
-            const std::string name = printable(scene.blocks[i].name, 40);
+            const std::string name = printable(i < labels.size() ? labels[i].name : "", 40);
             out << "  " << std::left << std::setw(16)
                 << (name.empty() ? "blocks[" + std::to_string(i) + "]" : name) << std::right
                 << " position " << world.blocks[i].position << "  velocity "
@@ -276,9 +337,22 @@ int runCommand(const RunRequest& request, std::ostream& out, std::ostream& err) 
         return kExitBadInput;
     }
     Scene scene = *loaded.scene;
+    if (!applyFlags(request, scene.settings, err)) return kExitBadInput;
+    EditedWorld edited;
+    edited.world = makeWorld(scene);
+    for (const BlockDef& def : scene.blocks) edited.labels.push_back({def.name, def.color});
+    if (!applySets(request, edited, err)) return kExitBadInput;
+    if (request.edits) {
+        EditLogResult log = readEditLog(*request.edits);
+        if (!log.log) {
+            err << log.error.text() << "\n";
+            return kExitBadInput;
+        }
+        edited.log.emplace(std::move(*log.log));
+    }
+    World& world = edited.world;
     StopRule stop;
-    if (!applyOptions(request, scene.duration, scene.settings, stop, err)) return kExitBadInput;
-    World world = makeWorld(scene);
+    if (!stopRule(request, scene.duration, world.settings, stop, err)) return kExitBadInput;
     std::optional<SafeFile> trace;
     if (request.trace) {
         // Written beside its target and renamed over it when complete: never onto the scene read.
@@ -294,20 +368,26 @@ int runCommand(const RunRequest& request, std::ostream& out, std::ostream& err) 
             return kExitBadInput;
         }
         trace->stream() << std::setprecision(17);
-        writeTraceHeader(trace->stream(), scene);
+        writeTraceHeader(trace->stream(), edited.labels);
+        edited.fixedBlocks = true;
     }
     const double energyBefore = kineticEnergy(world) + potentialEnergy(world);
-    const RunTotals run = simulate(world, stop, request, trace ? &trace->stream() : nullptr, err);
-    warnEnergyGrowth(world, energyBefore, err);
+    const RunTotals run = simulate(edited, stop, request, trace ? &trace->stream() : nullptr, err);
+    if (run.refused) return kExitBadInput; // the trace is not written: its run did not end
+    if (edited.log && edited.log->remaining() > 0)
+        err << "sandbox-cli run: --edits " << printable(*request.edits, kPrintablePath) << ": "
+            << edited.log->remaining() << " line(s) after the run's last frame (" << world.frame
+            << ") not applied\n";
+    if (!edited.log) warnEnergyGrowth(world, energyBefore, err); // a log's edits may add energy
     std::string error;
     if (trace && !trace->commit(&error)) {
         err << "sandbox-cli run: --trace " << error << "\n";
         return kExitBadInput;
     }
     if (request.json)
-        printJson(scene, world, run.steps, run.interrupted, out);
+        printJson(scene, world, edited.labels, run.steps, run.interrupted, out);
     else
-        printText(scene, world, run.steps, run.interrupted, out);
+        printText(scene, world, edited.labels, run.steps, run.interrupted, out);
     return run.interrupted ? kExitInterrupted : kExitOk;
 }
 

@@ -35,7 +35,11 @@ struct RunRequest {
     std::optional<std::string> steps; // frames to simulate, >= 0
     std::optional<std::string> time;  // s of simulated time to reach, >= 0
     std::optional<std::string> trace; // CSV file: a header and one row per frame
-    bool json = false;                // print one JSON object instead of a summary
+    // Edits (docs/edits.md): --set KEY=VALUE at frame 0 (after the flags above), in the order
+    // given, then the lines of the --edits log at their frames.
+    std::vector<std::string> sets;
+    std::optional<std::string> edits;
+    bool json = false; // print one JSON object instead of a summary
     ProgressLines progress = ProgressLines::Off;
     // Set (by a SIGINT handler) to stop the run after the current frame; the summary of the
     // frames done is printed and runCommand returns kExitInterrupted. Null: never stops early.

@@ -90,12 +90,23 @@ int main(int argc, char** argv) {
         "--trace", trace,
         "Write a CSV file: a header and one row per frame (t, each block's x, y, vx, vy, total "
         "momentum, kinetic and potential energy)");
+    CLI::Option* setOpt = runCmd->add_option(
+        "--set", run.sets,
+        "Set a world key or a block's field before the first frame (repeatable, after the "
+        "flags above): bounciness=0.5, m2.mass=4, blocks[1].velocity=3,0 (docs/edits.md)");
+    std::string edits;
+    CLI::Option* editsOpt = runCmd->add_option(
+        "--edits", edits,
+        "Replay an edit log: JSON lines, each an edit (set, add, remove), undo or redo with the "
+        "frame it applies at (docs/edits.md)");
     runCmd->add_flag("--json", run.json,
                      "Print one JSON object: sim_time, steps, collisions, max_penetration, "
                      "momentum, kinetic_energy, potential_energy, event_cap_hits, wall_ms, blocks");
     stepsOpt->type_name("N");
     timeOpt->type_name("T");
     traceOpt->type_name("FILE.csv");
+    setOpt->type_name("KEY=VALUE")->allow_extra_args(false); // one value per --set
+    editsOpt->type_name("FILE.jsonl");
 
     std::string validatePath;
     CLI::App* validateCmd = app.add_subcommand(
@@ -238,6 +249,7 @@ int main(int argc, char** argv) {
         run.interrupted = &interrupted;
         stopOnInterrupt();
         run.trace = given(traceOpt, trace);
+        run.edits = given(editsOpt, edits);
         return runCommand(run, std::cout, std::cerr);
     } catch (const std::exception& e) { // e.g. out of memory on a huge scene
         std::cerr << "sandbox-cli: " << e.what() << "\n";

@@ -303,7 +303,7 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
     checkKeys(value, path,
               {"title", "caption", "scene", "overrides", "overlays", "select", "thrust", "camera",
                "frame", "pause_at", "values", "question", "choices", "answer", "reveal", "given",
-               "expect", "input"});
+               "expect", "input", "edits"});
     LessonStep step;
     step.place = source + ": " + path;
     if (!value.contains("title")) throw ValueError{path, "missing \"title\""};
@@ -330,6 +330,10 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
     }
     if (value.contains("input"))
         step.input = parseLessonInput(value["input"], keyPath(path, "input"), scene);
+    if (value.contains("edits")) { // applied at their frames (docs/edits.md), named by the file
+        step.edits = editLogOf(value["edits"], keyPath(path, "edits"));
+        for (LogLine& line : step.edits.lines) line.place = source + ": " + line.place;
+    }
     if (value.contains("camera"))
         step.camera = parseCamera(value["camera"], keyPath(path, "camera"));
     if (value.contains("frame")) {

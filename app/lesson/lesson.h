@@ -4,6 +4,7 @@
 // `steps[3].overlays[0]`). No GL, no ImGui: the app, sandbox-cli and the tests share it.
 #pragma once
 
+#include "edit_log.h"
 #include "lesson_text.h"
 #include "scene.h"
 #include "vocabulary.h"
@@ -120,6 +121,9 @@ struct LessonStep {
     // The scene's player's keys over time (lesson_input.h): the step plays itself. Empty: the
     // arrow keys.
     std::vector<ScriptedKeys> input;
+    // Edits at their frames (docs/edits.md: the edit log's lines as a JSON array), applied by the
+    // app and by the runner alike; those at frame 0 are part of the setup.
+    EditLog edits;
     std::optional<Bounds> camera;       // world rectangle to fit into the view; none: the bounds
     ViewFrame frame = ViewFrame::World; // "frame": "com": seen moving with the centre of mass
     LessonPause pause;

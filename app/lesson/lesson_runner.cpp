@@ -1,5 +1,6 @@
 #include "lesson_runner.h"
 
+#include "edit_history.h"
 #include "lesson_guards.h"
 #include "printable.h"
 #include "scene_json.h"
@@ -244,16 +245,77 @@ bool pausesAtItsSetup(const LessonStep& step) {
     return step.pause.kind == LessonPause::Kind::Time && step.pause.time <= kTimeSlack;
 }
 
+namespace {
+
+// A step's edits (docs/edits.md), played at their frames as the app plays them: through the one
+// door, with their own undo history (a step's "undo" lines), the blocks named by `names`.
+class StepEdits {
+  public:
+    StepEdits(const LessonStep& step, const std::vector<std::string>& names) : player_(step.edits) {
+        for (const std::string& name : names) labels_.push_back({name, ""});
+    }
+    // Passes over the lines at or before `frame` unplayed (a world that is already past them).
+    void skipTo(std::uint64_t frame) {
+        while (player_.next(frame)) {
+        }
+    }
+    // Plays the lines due at the world's frame; the first refusal, with its place, or "".
+    std::string playDue(World& world) {
+        while (const LogLine* line = player_.next(world.frame)) {
+            const JournalEntry& e = line->entry;
+            const EditTarget target{world, labels_};
+            EditError error;
+            if (e.what == JournalEntry::What::Undo)
+                error = history_.undo(target, world.frame).error;
+            else if (e.what == JournalEntry::What::Redo)
+                error = history_.redo(target, world.frame).error;
+            else
+                error = history_.apply(target, e.edit, world.frame, e.continues).error;
+            if (!error.empty()) return logLineError(*line, error).text();
+        }
+        return "";
+    }
+    std::vector<std::string> names() const {
+        std::vector<std::string> out;
+        for (const BlockLabel& label : labels_) out.push_back(label.name);
+        return out;
+    }
+
+  private:
+    LogPlayer player_;
+    std::vector<BlockLabel> labels_;
+    EditHistory history_;
+};
+
+std::vector<std::string> sceneNames(const Scene& scene) {
+    std::vector<std::string> names;
+    for (const BlockDef& b : scene.blocks) names.push_back(b.name);
+    return names;
+}
+
+// The step's scene with its edits at frame 0 played (`edits` goes on from there); `refused`: the
+// first of them refused, or "".
+World startWithEdits(const LessonStep& step, StepEdits& edits, std::string& refused) {
+    World world = makeWorld(*step.scene);
+    refused = edits.playDue(world);
+    return world;
+}
+
+} // namespace
+
 World stepStartWorld(const LessonStep& step) {
-    return makeWorld(*step.scene);
+    StepEdits edits(step, sceneNames(*step.scene));
+    std::string refused;
+    return startWithEdits(step, edits, refused);
 }
 
 namespace {
 
-StepRun runWatched(const LessonStep& step, World start, LessonWatch watch, int limit) {
+StepRun runWatched(const LessonStep& step, World start, LessonWatch watch, int limit,
+                   StepEdits& edits, std::string editError) {
     const World setup = start;
     World world = std::move(start);
-    if (!watch.atStart(world) && step.pause.kind != LessonPause::Kind::None) {
+    if (editError.empty() && !watch.atStart(world) && step.pause.kind != LessonPause::Kind::None) {
         std::vector<CollisionRecord> log;
         while (!watch.paused()) {
             if (watch.progress().frames >= limit) {
@@ -266,33 +328,41 @@ StepRun runWatched(const LessonStep& step, World start, LessonWatch watch, int l
                     ? stepWithPlayer(world, *step.scene->player,
                                      scriptedKeys(step.input, world.time, world.settings.dt), &log)
                     : world.step(&log);
+            // The edits due at the frame reached, after what it did (as the app's session).
+            editError = edits.playDue(world);
+            if (!editError.empty()) break; // the run stops at a refused edit
             watch.afterFrame(world, stats, log);
         }
     }
     StepRun run = watchedRun(watch, setup, world);
     if (step.pause.kind == LessonPause::Kind::None) run.reached = true; // it stays at its start
+    run.editError = std::move(editError);
     return run;
 }
 
-std::vector<std::string> sceneNames(const Scene& scene) {
-    std::vector<std::string> names;
-    for (const BlockDef& b : scene.blocks) names.push_back(b.name);
-    return names;
+StepRun runEdited(const LessonStep& step, World start, StepEdits& edits, std::string editError,
+                  double within, double timeScale) {
+    LessonWatch watch(step, liveBlockIndex(*step.scene, edits.names()), within,
+                      step.pause.watch * timeScale);
+    const int limit = frameLimit(step, start, within, timeScale);
+    return runWatched(step, std::move(start), std::move(watch), limit, edits, std::move(editError));
 }
 
 } // namespace
 
 StepRun runStepToPause(const LessonStep& step) {
     const double within = step.pause.within.value_or(lesson_guards::kCollisionSearchSeconds);
-    return runStepFrom(step, stepStartWorld(step), sceneNames(*step.scene), within, step.timeScale);
+    StepEdits edits(step, sceneNames(*step.scene));
+    std::string refused;
+    World start = startWithEdits(step, edits, refused);
+    return runEdited(step, std::move(start), edits, std::move(refused), within, step.timeScale);
 }
 
 StepRun runStepFrom(const LessonStep& step, World start, const std::vector<std::string>& names,
                     double within, double timeScale) {
-    LessonWatch watch(step, liveBlockIndex(*step.scene, names), within,
-                      step.pause.watch * timeScale);
-    const int limit = frameLimit(step, start, within, timeScale);
-    return runWatched(step, std::move(start), std::move(watch), limit);
+    StepEdits edits(step, names);
+    edits.skipTo(start.frame); // those up to the start are in it
+    return runEdited(step, std::move(start), edits, "", within, timeScale);
 }
 
 int frameLimit(const LessonStep& step, const World& start, double within, double timeScale) {
@@ -450,6 +520,10 @@ std::vector<std::string> checkSetup(const LessonStep& step) {
 
 std::vector<std::string> checkStep(const LessonStep& step, const StepRun& run) {
     std::vector<std::string> failures = checkSetup(step);
+    if (!run.editError.empty()) { // its run stopped there
+        failures.push_back(run.editError);
+        return failures;
+    }
     const std::string place = printable(step.place, kPrintablePath);
     if (!run.reached) {
         // Where it gave up: the search's end, or the step's budget of block-steps.

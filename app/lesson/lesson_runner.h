@@ -88,18 +88,22 @@ struct StepRun {
     std::optional<CollisionRecord> hit; // the event's collision (LessonWatch::hit)
     std::string missed;
     std::vector<int> blocks; // liveBlockIndex of the run's world
+    // A step's edit refused on the way ("lesson.json: steps[2].edits[0]: ..."): the run stopped.
+    std::string editError;
 };
 
 // True when the step's moment is its setup (a time of 0): it pauses before any frame.
 bool pausesAtItsSetup(const LessonStep& step);
 
-// The world exactly as the step states it (the same every time the step is entered).
+// The world exactly as the step states it (the same every time the step is entered): its scene
+// with its edits at frame 0.
 World stepStartWorld(const LessonStep& step);
 // Runs the step as written from its start to its pause point (an event is searched for within
 // its `within`, else 120 s). No pause point: stays at the start.
 StepRun runStepToPause(const LessonStep& step);
 // Runs the step from `start`, the world the lecturer made of it (`names`: its blocks' names), the
-// event searched for within `within` s, watched for `watch` s at `timeScale`.
+// event searched for within `within` s, watched for `watch` s at `timeScale`; the step's edits
+// after `start`'s frame play at their frames, as the app plays them.
 StepRun runStepFrom(const LessonStep& step, World start, const std::vector<std::string>& names,
                     double within, double timeScale);
 // The frames a run from `start` may take before it gives up: the event's search (`within`) and the

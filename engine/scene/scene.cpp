@@ -49,7 +49,8 @@ bool isColor(const std::string& s) {
            });
 }
 
-// A world setting's value (settings_table.h), by its kind; errors name `path`.
+} // namespace
+
 void readSetting(const settings_table::WorldKey& row, const json& value, const std::string& path,
                  WorldSettings& s) {
     using settings_table::Kind;
@@ -97,6 +98,8 @@ void readSetting(const settings_table::WorldKey& row, const json& value, const s
     }
     }
 }
+
+namespace {
 
 void parseWorld(const json& world, Scene& scene) {
     requireObject(world, "world");
@@ -181,6 +184,8 @@ void readBlockField(const settings_table::BlockKey& row, const json& value, cons
     }
 }
 
+} // namespace
+
 BlockDef parseBlock(const json& value, const std::string& path) {
     requireObject(value, path);
     std::vector<const char*> known;
@@ -197,16 +202,25 @@ BlockDef parseBlock(const json& value, const std::string& path) {
     return b;
 }
 
+namespace {
+
 // ---- Placement: bounds and overlaps ----
 
 // A block's extent on one axis, shrunk by the touch tolerance so that touching is not overlap.
 struct Span {
     double lo, hi;
 };
+Span span(Vec2 position, Vec2 size, int axis) {
+    const double half = size[axis] * 0.5;
+    const double shrink = std::min(0.5 * kTouchTolerance, 0.25 * size[axis]);
+    return {position[axis] - half + shrink, position[axis] + half - shrink};
+}
 Span span(const BlockDef& b, int axis) {
-    const double half = b.size[axis] * 0.5;
-    const double shrink = std::min(0.5 * kTouchTolerance, 0.25 * b.size[axis]);
-    return {b.position[axis] - half + shrink, b.position[axis] + half - shrink};
+    return span(b.position, b.size, axis);
+}
+
+bool outside(const Bounds& b, Span x, Span y) {
+    return x.lo < b.min.x || x.hi > b.max.x || y.lo < b.min.y || y.hi > b.max.y;
 }
 
 std::string blockLabel(const std::vector<BlockDef>& blocks, std::size_t i) {
@@ -222,8 +236,7 @@ std::string blockSubject(const std::vector<BlockDef>& blocks, std::size_t i) {
 void checkInBounds(const Scene& scene) {
     const Bounds& b = scene.bounds;
     for (std::size_t i = 0; i < scene.blocks.size(); ++i) {
-        const Span x = span(scene.blocks[i], 0), y = span(scene.blocks[i], 1);
-        if (x.lo < b.min.x || x.hi > b.max.x || y.lo < b.min.y || y.hi > b.max.y)
+        if (outside(b, span(scene.blocks[i], 0), span(scene.blocks[i], 1)))
             throw ValueError{indexPath("blocks", i),
                              blockSubject(scene.blocks, i) + " sticks out of the world bounds " +
                                  numberList({b.min.x, b.min.y, b.max.x, b.max.y})};
@@ -301,6 +314,25 @@ SceneResult failure(const std::string& where, const std::string& message) {
 }
 
 } // namespace
+
+std::string placementProblem(const World& world, std::size_t index) {
+    const Block& block = world.blocks[index];
+    const Span x = span(block.position, block.size, 0), y = span(block.position, block.size, 1);
+    if (outside(world.bounds, x, y))
+        return "sticks out of the world bounds " +
+               numberList({world.bounds.min.x, world.bounds.min.y, world.bounds.max.x,
+                           world.bounds.max.y});
+    for (std::size_t i = 0; i < world.blocks.size(); ++i) {
+        const Block& other = world.blocks[i];
+        if (i == index || (block.kind == BodyKind::Static && other.kind == BodyKind::Static))
+            continue;
+        const Span ox = span(other.position, other.size, 0);
+        const Span oy = span(other.position, other.size, 1);
+        if (x.lo < ox.hi && ox.lo < x.hi && y.lo < oy.hi && oy.lo < y.hi)
+            return "overlaps " + indexPath("blocks", i);
+    }
+    return "";
+}
 
 SceneResult parseScene(const std::string& text, const std::string& sourceName) {
     json root;

@@ -43,3 +43,11 @@ World makeWorld(const Scene& scene);
 // The current state of `world` as a scene, keeping from `original` what a world does not hold:
 // the name, description and duration, the blocks' names and colours, and the player.
 Scene sceneFromWorld(const World& world, const Scene& original);
+// One block of the world from its file form (a static block still, a kinematic one and a static
+// one of infinite mass), and back (without its name and colour, which the world does not hold).
+Block makeBlock(const BlockDef& def);
+BlockDef blockDefOf(const Block& block);
+// Why block `index` of the world may not stand where it is, as a scene file would refuse it
+// ("sticks out of the world bounds [...]", "overlaps blocks[2]": touching is fine, static blocks
+// may overlap each other); "" when it may.
+std::string placementProblem(const World& world, std::size_t index);

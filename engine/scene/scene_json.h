@@ -60,9 +60,19 @@ Vec2 vec2(const nlohmann::json& value, const std::string& path);
 namespace settings_table {
 struct WorldKey;
 }
+struct BlockDef;
 struct WorldSettings;
 // A world setting's value as JSON (a scene file's "world" and sandbox-cli run --json).
 nlohmann::json settingJson(const settings_table::WorldKey& row, const WorldSettings& s);
+// Reads a world setting's value as a scene file's "world" holds it into `s`, within the row's
+// limits; throws scene_json::ValueError naming `path` (scene.cpp; the edits of app/edit too).
+void readSetting(const settings_table::WorldKey& row, const nlohmann::json& value,
+                 const std::string& path, WorldSettings& s);
+// A block as a scene file holds it, every field within its limits (a size long enough for its
+// position, a force for its mass); throws scene_json::ValueError naming `path` or its fields.
+BlockDef parseBlock(const nlohmann::json& value, const std::string& path);
+// A block as a scene file writes it (the object parseBlock reads back to the same block).
+nlohmann::json blockJson(const BlockDef& block);
 
 // Why `path` cannot be read as a regular file (missing, a directory, a FIFO that could block
 // forever), or nothing: the check of every file the sandbox reads (scenes, lessons, traces).

@@ -59,6 +59,10 @@ std::string blockText(const BlockDef& b) {
 
 } // namespace
 
+nlohmann::json blockJson(const BlockDef& block) {
+    return json::parse(blockText(block));
+}
+
 nlohmann::json settingJson(const settings_table::WorldKey& row, const WorldSettings& s) {
     using settings_table::Kind;
     switch (row.kind) {
@@ -138,18 +142,31 @@ World makeWorld(const Scene& scene) {
     world.settings = scene.settings;
     world.bounds = scene.bounds;
     world.blocks.reserve(scene.blocks.size());
-    for (const BlockDef& def : scene.blocks) {
-        Block b;
-        b.position = def.position;
-        b.size = def.size;
-        b.kind = def.kind;
-        b.velocity = def.kind == BodyKind::Static ? Vec2{} : def.velocity;
-        b.mass = def.kind == BodyKind::Dynamic ? def.mass : kInfiniteMass;
-        b.force = def.kind == BodyKind::Dynamic ? def.force : Vec2{};
-        b.friction = def.friction;
-        world.blocks.push_back(b);
-    }
+    for (const BlockDef& def : scene.blocks) world.blocks.push_back(makeBlock(def));
     return world;
+}
+
+Block makeBlock(const BlockDef& def) {
+    Block b;
+    b.position = def.position;
+    b.size = def.size;
+    b.kind = def.kind;
+    b.velocity = def.kind == BodyKind::Static ? Vec2{} : def.velocity;
+    b.mass = def.kind == BodyKind::Dynamic ? def.mass : kInfiniteMass;
+    b.force = def.kind == BodyKind::Dynamic ? def.force : Vec2{};
+    b.friction = def.friction;
+    return b;
+}
+
+BlockDef blockDefOf(const Block& b) {
+    BlockDef def;
+    def.position = b.position;
+    def.size = b.size;
+    def.velocity = b.velocity;
+    def.kind = b.kind;
+    def.friction = b.friction;
+    if (b.kind == BodyKind::Dynamic) def.mass = b.mass, def.force = b.force;
+    return def;
 }
 
 Scene sceneFromWorld(const World& world, const Scene& original) {
@@ -161,18 +178,11 @@ Scene sceneFromWorld(const World& world, const Scene& original) {
     scene.settings = world.settings;
     scene.blocks.reserve(world.blocks.size());
     for (std::size_t i = 0; i < world.blocks.size(); ++i) {
-        const Block& b = world.blocks[i];
-        BlockDef def;
+        BlockDef def = blockDefOf(world.blocks[i]);
         if (i < original.blocks.size()) {
             def.name = original.blocks[i].name;
             def.color = original.blocks[i].color;
         }
-        def.position = b.position;
-        def.size = b.size;
-        def.velocity = b.velocity;
-        def.kind = b.kind;
-        def.friction = b.friction;
-        if (b.kind == BodyKind::Dynamic) def.mass = b.mass, def.force = b.force;
         scene.blocks.push_back(def);
     }
     // The player while its block is still there, dynamic and named (a file names it).

@@ -525,3 +525,39 @@ TEST(Lesson, LessonsAreToldApartFromScenesByTheirSteps) {
     EXPECT_TRUE(isLessonFile(std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json"));
     EXPECT_FALSE(isLessonFile(std::string(SANDBOX_SCENES_DIR) + "/single_bounce.json"));
 }
+
+// A step's "edits" (docs/edits.md) apply at their frames in the runner as in a log: m2 made
+// 4 kg at frame 0 (the setup shows it) and C set to 0 at frame 10, before the collision.
+TEST(LessonEdits, AStepsEditsApplyAtTheirFrames) {
+    const LessonStep step = onlyStep(lessonWith(
+        R"("pause_at": {"collision": 1}, "edits": [{"frame": 0, "set": "m2.mass", "value": 4},
+             {"frame": 10, "set": "bounciness", "value": 0}])"));
+    ASSERT_EQ(step.edits.lines.size(), 2u);
+    EXPECT_EQ(stepStartWorld(step).blocks[1].mass, 4.0);
+    const StepRun run = runStepToPause(step);
+    ASSERT_TRUE(run.reached);
+    EXPECT_TRUE(run.editError.empty()) << run.editError;
+    // Perfectly inelastic: both at u = (1·6 + 4·0) / 5 = 1.2 m/s (to rounding in the formula).
+    EXPECT_NEAR(run.event.blocks[0].velocity.x, 1.2, 1e-12);
+    EXPECT_NEAR(run.event.blocks[1].velocity.x, 1.2, 1e-12);
+    // Run from the setup as the window runs it (runStepFrom): the frame-10 edit plays there too,
+    // and the frame-0 one is not played twice.
+    const StepRun live = runStepFrom(step, stepStartWorld(step), {"m1", "m2"}, 120.0, 1.0);
+    ASSERT_TRUE(live.reached);
+    EXPECT_EQ(live.event.frame, run.event.frame);
+    EXPECT_EQ(live.event.blocks[1].velocity.x, run.event.blocks[1].velocity.x);
+    // A refused edit is the step's failure, with its place and key.
+    const LessonStep bad = onlyStep(lessonWith(
+        R"("pause_at": {"collision": 1}, "edits": [{"frame": 3, "set": "m3.mass", "value": 2}])"));
+    const std::vector<std::string> failures = checkStep(bad, runStepToPause(bad));
+    ASSERT_EQ(failures.size(), 1u);
+    EXPECT_EQ(failures[0], "test.json: steps[0].edits[0]: m3.mass: no block is named \"m3\"");
+    // A malformed one is refused when the lesson is read.
+    const LessonResult r =
+        parseLesson(lessonWith(R"("edits": [{"frame": 3, "set": "bouncyness", "value": 2}])"),
+                    "t.json", context());
+    ASSERT_FALSE(r.lesson);
+    EXPECT_EQ(r.error.text().rfind("t.json: steps[0].edits[0].bouncyness: no such world key", 0),
+              0u)
+        << r.error.text();
+}

@@ -41,6 +41,9 @@ DevTools protocol (python3-websocket). One check per run:
                 collision leaves the live region saying it in the inspector's words; the page's
                 text names the scene and the lesson's step
   hidden-control  the page's hidden C control sets the world's C; a refused value is said
+  undo          the page's hidden Undo and Redo buttons take C back and set it again (the note
+                says "undo: bounciness 0.25 -> 1.00"); a block dragged on the canvas is one edit:
+                Ctrl+Z puts it back where it was, bit for bit, Ctrl+Y moves it again
   sound         M turns the sound on and lecture_example_1's collision plays a knock through
                 emscripten's OpenAL (a source of its Web Audio context has played)
   keyboard      F6, then the arrow keys, walk through at least 15 of the panel's controls, each
@@ -645,15 +648,17 @@ def live_region(page, base):
     print(f"live region: {said!r}")
 
 
+def set_c(page, value):
+    """Types `value` into the page's hidden C control."""
+    page.evaluate("(function () { var c = document.getElementById('c-bounciness'); "
+                  f"c.value = '{value}'; c.dispatchEvent(new Event('change', {{bubbles: true}})); }})()")
+    page.wait_frames(2)
+
+
 def hidden_control(page, base):
     page.open(base + "?scene=lecture_example_1")
     check(page.status()["bounciness"] == 1.0, f"C is not 1 at first: {page.status()}")
-
-    def set_c(value):
-        page.evaluate("(function () { var c = document.getElementById('c-bounciness'); "
-                      f"c.value = '{value}'; c.dispatchEvent(new Event('change', {{bubbles: true}})); }})()")
-        page.wait_frames(2)
-
+    set_c = functools.partial(globals()["set_c"], page)
     set_c("0.25")
     check(page.status()["bounciness"] == 0.25, f"the hidden C control did not set C: {page.status()}")
     check(page.evaluate("document.getElementById('c-bounciness').value") == "0.25",
@@ -682,6 +687,42 @@ def hidden_control(page, base):
     shown = page.evaluate("document.querySelectorAll('#c-world label').length")
     print(f"{shown} labels; a labelled control for each of {len(keys)} world keys ({', '.join(keys)}); "
           "friction set to 0.6 through its control")
+
+
+def undo(page, base):
+    page.open(base + "?scene=lecture_example_1")
+    click = lambda id: (page.evaluate(f"document.getElementById('{id}').click()"),
+                        page.wait_frames(2))
+    disabled = lambda id: page.evaluate(f"document.getElementById('{id}').disabled")
+    check(disabled("c-undo") and disabled("c-redo"), "Undo or Redo enabled with nothing done")
+    set_c(page, "0.25")
+    check(not disabled("c-undo"), "Undo disabled after an edit")
+    click("c-undo")
+    s = page.status()
+    check(s["bounciness"] == 1.0, f"Undo did not take C back: {s}")
+    check(s["note"] == "undo: bounciness 0.25 -> 1.00", f"the note: {s['note']!r}")
+    click("c-redo")
+    check(page.status()["bounciness"] == 0.25, "Redo did not set C again")
+    # A block dragged (several moves) is one edit: Ctrl+Z puts it back exactly, Ctrl+Y moves it.
+    before = page.status()["blocks"][0]
+    block = page.status()["blocksOnScreen"][0]
+    x, y = block[0] + block[2] / 2, block[1] + block[3] / 2
+    page.drag(x, y, x + 80, y - 40, steps=6)
+    moved = page.status()["blocks"][0]
+    check(moved[:2] != before[:2], f"the drag did not move the block: {moved}")
+    page.evaluate("document.getElementById('canvas').focus()")
+    page.key("z", "KeyZ", 90, ctrl=True)
+    page.wait_frames(2)
+    check(page.status()["blocks"][0][:2] == before[:2],
+          f"Ctrl+Z did not put the block back: {page.status()['blocks'][0]} != {before}")
+    page.key("y", "KeyY", 89, ctrl=True)
+    page.wait_frames(2)
+    check(page.status()["blocks"][0][:2] == moved[:2], "Ctrl+Y did not move it again")
+    page.key("z", "KeyZ", 90, ctrl=True)
+    page.key("z", "KeyZ", 90, ctrl=True)
+    page.wait_frames(2)
+    check(page.status()["bounciness"] == 1.0, "two Ctrl+Z did not take back the drag and C")
+    print(f"Undo and Redo set C back and again; a drag is one edit ({page.status()['note']!r})")
 
 
 def sound(page, base):
@@ -1088,6 +1129,7 @@ def main():
               "url-lesson": url_lesson, "url-bad": url_bad, "open-file": open_file,
               "wheel": wheel, "trackers": trackers, "unsaved": unsaved, "link": link,
               "axe": axe, "live-region": live_region, "hidden-control": hidden_control,
+              "undo": undo,
               "keyboard": keyboard, "keys": keys, "sound": sound}
     try:
         if what == "shots":

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace {
 
@@ -70,7 +71,7 @@ bool openTrace(App& app, const std::string& path) {
     app.ui.messages.error.clear();
     app.ui.tracePath = path;
     // The reference runs from the scene's start, without the Tips' mistakes.
-    app.sim.world().settings = app.studentTrace.comparison->reference;
+    app.sim.applySettings(app.studentTrace.comparison->reference);
     resetScene(app);
     app.view.show.ghost = app.view.show.timeline = app.view.show.inspector = true;
     goToFirstDifference(app);
@@ -137,6 +138,14 @@ bool scrubTo(App& app, std::uint64_t frame) {
 void deleteSelected(App& app) {
     app.sim.deleteSelected();
     app.mouse = MouseTool{};
+}
+
+void undoOrRedo(App& app, bool undo) {
+    app.mouse = MouseTool{};
+    if (undo)
+        app.sim.undo();
+    else
+        app.sim.redo();
 }
 
 void updateCamera(App& app, double displayWidth, double displayHeight) {
@@ -236,21 +245,42 @@ std::string browserDownloadPath(const App& app) {
     return std::string(kBrowserDownloads) + "/" + sceneFileStem(app.sim.scene.name) + ".json";
 }
 
-std::string exportCsv(App& app, const std::string& plot, const CsvTable& table) {
-    // From the scene's and the plot's names, never an existing file.
+namespace {
+
+// Writes `text` in saveDirectory(), named from the scene's name and `what` (never an existing
+// file); the note says "Wrote `counted` to PATH" (the browser offers it as a download), or the
+// error why not. Returns the path, or "".
+std::string writeBeside(App& app, const std::string& what, const std::string& extension,
+                        const std::string& text, const std::string& counted) {
     const std::string path =
-        suggestSavePath(app.sim.scene.name + " " + plot, saveDirectory(app), pathExists, ".csv");
-    SafeFile out(path);
-    writeCsv(out.stream(), table);
+        suggestSavePath(app.sim.scene.name + " " + what, saveDirectory(app), pathExists, extension);
     std::string error;
-    if (!out.commit(&error)) {
+    if (!writeFileSafely(path, text, &error)) {
         app.ui.messages.error = "Export failed: " + error;
         return "";
     }
     app.ui.messages.error.clear();
-    app.ui.messages.note = "Wrote " + std::to_string(table.rows.size()) + " rows to " + path;
+    app.ui.messages.note = "Wrote " + counted + " to " + path;
     app.ui.savedFile = path;
     return path;
+}
+
+} // namespace
+
+std::string saveEditLog(App& app) {
+    const std::vector<JournalEntry>& journal = app.sim.editsSinceLoad();
+    const std::string path = writeBeside(app, "edits", ".jsonl", logText(journal),
+                                         std::to_string(journal.size()) + " edits");
+    if (!path.empty() && app.sim.edits.journalFull())
+        app.ui.messages.note +=
+            " (the first " + std::to_string(kMaxJournal) + " only: the session has done more)";
+    return path;
+}
+
+std::string exportCsv(App& app, const std::string& plot, const CsvTable& table) {
+    std::ostringstream csv;
+    writeCsv(csv, table);
+    return writeBeside(app, plot, ".csv", csv.str(), std::to_string(table.rows.size()) + " rows");
 }
 
 bool openLesson(App& app, const std::string& path, std::size_t first) {

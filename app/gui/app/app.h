@@ -142,6 +142,9 @@ int advanceSimulation(App& app, double realSeconds);
 bool scrubTo(App& app, std::uint64_t frame);
 // Removes the selected block (if any); the mouse lets go.
 void deleteSelected(App& app);
+// Ctrl+Z (`undo`) or Ctrl+Y: SimulationSession::undo or redo; the mouse lets go, the note says
+// what was undone.
+void undoOrRedo(App& app, bool undo);
 // Lays out the frame for a display of this size and points the camera (view.h's updateCamera,
 // with the lesson's caption bar when a lesson is open).
 void updateCamera(App& app, double displayWidth, double displayHeight);
@@ -171,6 +174,11 @@ std::string suggestedSavePath(const App& app);
 inline constexpr const char* kBrowserDownloads = "/downloads";
 std::string browserDownloadPath(const App& app);
 
+// Writes the session's journal (editsSinceLoad) as an edit log (docs/edits.md) in
+// saveDirectory(), named after the scene (lecture_example_1-edits.jsonl, then -2, ...: never an
+// existing file); the note names the file and the browser offers it as a download. Returns the
+// path, or "".
+std::string saveEditLog(App& app);
 // Writes a plot's table (csv_export.h) in saveDirectory(), named after the scene and the plot
 // (lecture_example_1-momentum.csv, then -2, ...: never an existing file); the note
 // names the file ("Wrote 120 rows to /path/x-momentum.csv") and the browser offers it as a

@@ -1,7 +1,5 @@
 #include "app_log.h"
 
-#include "settings_table.h"
-
 #include <cstdio>
 #include <utility>
 
@@ -17,14 +15,12 @@ std::string number(double v) {
 
 LoggedState snapshotForLog(const SimulationSession& sim, const View& view,
                            const LessonSession& lesson) {
-    const WorldSettings& settings = sim.world().settings;
     LoggedState s;
     s.scene = sim.scenePath;
     s.paused = sim.paused;
     s.slowMotion = sim.slowMotion;
     s.overlays = view.show;
     s.uiVisible = view.uiVisible;
-    s.settings = settings;
     s.thrust = sim.thrust.on;
     const Vec2 pushing = sim.thrustForce();
     s.thrustX = pushing.x;
@@ -35,7 +31,6 @@ LoggedState snapshotForLog(const SimulationSession& sim, const View& view,
         if (held) s.playerKeys += (s.playerKeys.empty() ? "" : "+") + std::string(name);
     s.timeScale = sim.timeScale;
     s.uiScale = view.uiScale;
-    s.blocks = static_cast<int>(sim.world().blocks.size());
     s.selected = sim.selected;
     s.trailLength = sim.run.trails.length();
     if (lesson.active()) s.lesson = lessonHeading(lesson) + (lesson.revealed ? " (answer)" : "");
@@ -55,11 +50,6 @@ std::vector<std::string> describeChanges(const LoggedState& a, const LoggedState
     }
     if (a.trailLength > 0 && b.trailLength == 0) out.push_back("trails cleared");
     if (a.uiVisible != b.uiVisible) out.push_back("ui: " + onOff(b.uiVisible));
-    for (const settings_table::WorldKey* row : settings_table::shownOrder()) {
-        if (!settings_table::same(*row, a.settings, b.settings))
-            out.push_back(row->key + std::string(": ") +
-                          settings_table::logValue(*row, b.settings));
-    }
     if (a.thrust != b.thrust) out.push_back("thrust: " + onOff(b.thrust));
     if (a.thrustX != b.thrustX || a.thrustY != b.thrustY) {
         out.push_back(b.thrustX == 0.0 && b.thrustY == 0.0
@@ -70,7 +60,6 @@ std::vector<std::string> describeChanges(const LoggedState& a, const LoggedState
         out.push_back("player keys: " + (b.playerKeys.empty() ? "none" : b.playerKeys));
     if (a.timeScale != b.timeScale) out.push_back("time scale: " + number(b.timeScale));
     if (a.uiScale != b.uiScale) out.push_back("ui scale: " + number(b.uiScale));
-    if (a.blocks != b.blocks) out.push_back("blocks: " + std::to_string(b.blocks));
     if (a.selected != b.selected) out.push_back("selected: " + std::to_string(b.selected));
     return out;
 }

@@ -1,6 +1,8 @@
-// The --verbose log: one stdout line per observable state change (pause, method, sliders, ...),
-// found by comparing snapshots between frames. It lets the end-to-end test check that a key or
-// a slider acted, and lets a lecturer keep a record of a session.
+// The --verbose log: one stdout line per observable state change of the view and the run
+// (pause, overlays, thrust, selection, ...), found by comparing snapshots between frames; the
+// edits of the world print their own line where they are applied (SimulationSession::apply). It
+// lets the end-to-end test check that a key or a slider acted, and lets a lecturer keep a record of
+// a session.
 #pragma once
 
 #include "lesson_session.h"
@@ -18,13 +20,11 @@ struct LoggedState {
     bool slowMotion = false;
     Overlays overlays;
     bool uiVisible = true;
-    WorldSettings settings; // each scene key of settings_table.h: "method: turn-based"
     bool thrust = false;
     double thrustX = 0.0, thrustY = 0.0; // N, the held thrust this frame (zero: none)
     std::string playerKeys; // the player's keys the arrows hold ("left+up"; "" none or scripted)
     double timeScale = 0.0;
     float uiScale = 0.0f;
-    int blocks = 0;
     int selected = -1;
     int trailLength = 0;
     std::string lesson; // "3 / 20 · title", with " (answer)" once revealed

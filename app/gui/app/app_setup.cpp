@@ -1,5 +1,7 @@
 #include "app_setup.h"
 
+#include "printable.h"
+
 #ifndef SANDBOX_SCENES_DIR
 #define SANDBOX_SCENES_DIR ""
 #endif
@@ -75,6 +77,29 @@ bool openFirst(App& app, const Options& options, const std::string& lastScene, s
     return true;
 }
 
+// --set's edits at the start, then --edits's log (its lines at frame 0 at once).
+bool startEdits(App& app, const Options& options, std::string* error) {
+    for (const std::string& text : options.sets) {
+        EditError refused;
+        const std::optional<Edit> edit = parseSet(text, refused);
+        if (edit) refused = app.sim.apply(*edit);
+        if (refused.empty()) continue;
+        if (error) *error = printable("--set " + text + ": " + refused.text());
+        return false;
+    }
+    if (options.edits.empty()) return true;
+    EditLogResult log = readEditLog(options.edits);
+    if (!log.log) {
+        if (error) *error = log.error.text();
+        return false;
+    }
+    app.sim.editLog = LogPlayer(std::move(*log.log));
+    app.sim.playEditLog();
+    if (app.sim.editLogError.empty()) return true;
+    if (error) *error = app.sim.editLogError;
+    return false;
+}
+
 } // namespace
 
 bool setupApp(App& app, const Options& options, const std::string& lastScene, std::string* error) {
@@ -84,8 +109,10 @@ bool setupApp(App& app, const Options& options, const std::string& lastScene, st
         findDataDirectory(executableDirectory(), builtInLessonsDirectory(), "lessons");
     app.shipped.lessons = listScenes(app.shipped.lessonsDir);
     app.log.verbose = options.verbose;
+    app.sim.verbose = options.verbose;
     if (options.showGiven) applyShowSet(app.view, options.show);
     if (!openFirst(app, options, lastScene, error)) return false;
+    if (!startEdits(app, options, error)) return false;
     // --compare: the trace opened on that scene, at its first difference.
     app.studentTrace.units = options.traceUnits;
     if (!options.compareTrace.empty() && !openTrace(app, options.compareTrace)) {

@@ -56,6 +56,11 @@ const std::vector<KeyBinding>& keyBindings() {
          false, KeyWhen::Always, "The browser's zoom: a smaller UI"},
         {keys::kS, true, Action::Save, "Ctrl+S",
          "Save the current state as a scene (the browser downloads it)"},
+        {keys::kZ, true, Action::Undo, "Ctrl+Z",
+         "Undo the last change (a setting, a block moved, flung, added or removed, a field); a "
+         "slider or a block dragged is one change"},
+        {keys::kY, true, Action::Redo, "Ctrl+Y", "Redo the last change undone"},
+        {keys::kZ, true, Action::Redo, "Ctrl+Shift+Z", "Redo the last change undone", true, true},
         {keys::kDelete, false, Action::DeleteSelected, "Delete", "Remove the selected block"},
         {keys::kEscape, false, Action::Escape, "Esc",
          "Close Help or a dialog; leave present mode or fullscreen; the keyboard back to the "
@@ -250,6 +255,10 @@ const char* actionName(Action action) {
         return "quit";
     case Action::Save:
         return "save";
+    case Action::Undo:
+        return "undo";
+    case Action::Redo:
+        return "redo";
     case Action::LessonNext:
         return "lesson-next";
     case Action::LessonPrevious:

@@ -26,6 +26,8 @@ constexpr int kR = 82;
 constexpr int kS = 83;
 constexpr int kU = 85;
 constexpr int kV = 86;
+constexpr int kY = 89;
+constexpr int kZ = 90;
 constexpr int k0 = 48; // k0 + d for the digit d
 constexpr int kEscape = 256;
 constexpr int kEnter = 257;
@@ -77,6 +79,8 @@ enum class Action {
     Escape,           // Esc: closes a dialog or Help, leaves present mode or fullscreen
     Quit,             // Ctrl+Q (asks when there are unsaved edits)
     Save,             // Ctrl+S: save the current state as a scene (asks for a name)
+    Undo,             // Ctrl+Z: the last edit taken back (docs/edits.md)
+    Redo,             // Ctrl+Shift+Z, Ctrl+Y: the last undone edit done again
     LessonNext,       // PageDown, Right: the answer, or the next step of the lesson
     LessonPrevious,   // PageUp, Left
     LessonFirst,      // Home

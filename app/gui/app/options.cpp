@@ -171,6 +171,15 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
                    "Offscreen: write what would be heard of the frames simulated (--frames N, or "
                    "--record's) to this WAV file (mono, 16 bit, 44.1 kHz; sound on at full "
                    "volume); alone, nothing is rendered");
+    app.add_option("--set", o.sets,
+                   "Set a world key or a block's field at the start (repeatable): "
+                   "bounciness=0.5, m2.mass=4, blocks[1].velocity=3,0 (docs/edits.md)")
+        ->type_name("KEY=VALUE")
+        ->allow_extra_args(false);
+    app.add_option("--edits", o.edits,
+                   "Replay an edit log: JSON lines, each an edit, undo or redo with the frame it "
+                   "applies at (docs/edits.md); R and Shift+R play it again")
+        ->type_name("FILE.jsonl");
     std::string traceUnits, pxPerM, pxOrigin;
     app.add_option("--compare", o.compareTrace,
                    "Open a trace your engine printed (CSV: t, then NAME_x, NAME_y, NAME_vx, "
@@ -260,7 +269,7 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         }
         // An output may never overwrite an input it was made from (the input would be lost).
         for (const auto& [flag, output] : outputFiles(o))
-            for (const std::string* input : {&o.scene, &o.lesson, &o.compareTrace})
+            for (const std::string* input : {&o.scene, &o.lesson, &o.compareTrace, &o.edits})
                 if (!output->empty() && !input->empty() && sameExistingFile(*output, *input))
                     throw CLI::ValidationError(flag, "'" + *output +
                                                          "' is an input file of this run; the "

@@ -2,7 +2,7 @@
 //   sandbox [SCENE] [--screenshot FILE] [--frames N] [--size WxH] [--show LIST]
 //           [--record DIR] [--benchmark-frames N] [--ui-scale S] [--verbose] [--present]
 //           [--layout-json FILE] [--text-json FILE] [--frame world|com] [--theme dark|light]
-//           [--timeline-frame N]
+//           [--timeline-frame N] [--set KEY=VALUE ...] [--edits FILE]
 //           [--audio-wav FILE]
 //           [--compare TRACE.csv [--trace-units si|gxp --px-per-m N --px-origin X,Y]]
 #pragma once
@@ -46,6 +46,10 @@ struct Options {
     // --trace-units (si, or gxp with --px-per-m and --px-origin).
     std::string compareTrace;
     TraceUnitsSpec traceUnits;
+    // Edits (docs/edits.md): --set KEY=VALUE at the start, in order, then --edits FILE's lines
+    // at their frames.
+    std::vector<std::string> sets;
+    std::string edits;
     // --poll ADDR: the class poll on for the lesson, served on ADDR (docs/poll.md).
     std::string pollAddress;
     // Offscreen --poll-votes A,B,C[/A,B,C...]: votes for each choice as if phones had sent them,

@@ -45,6 +45,8 @@ std::string pageStateJson(const App& app) {
         {"lesson", app.lesson.active()},
         {"paused", app.sim.paused},
         {"world", worldControlsJson(app.sim.world().settings)},
+        {"undo", app.sim.edits.canUndo()},
+        {"redo", app.sim.edits.canRedo()},
         {"block", app.sim.selected},
         {"blocks", blocks},
         {"blockCount", count},
@@ -54,6 +56,19 @@ std::string pageStateJson(const App& app) {
     return json{{"screen", screen}, {"controls", controls}}.dump(-1, ' ', false,
                                                                  json::error_handler_t::replace);
 }
+
+namespace {
+
+// An edit from the page (the one door); a refusal is the control's error, under the panel's
+// field too.
+void applyFromPage(App& app, const Edit& edit, const char* field, std::string& error) {
+    const EditError refused = app.sim.apply(edit);
+    if (refused.empty()) return;
+    error = refused.text();
+    app.ui.typedWarning.note(field, TypedValue{false, 0.0, error});
+}
+
+} // namespace
 
 PageControlOutcome applyPageControl(App& app, const std::string& control,
                                     const std::string& value) {
@@ -72,6 +87,10 @@ PageControlOutcome applyPageControl(App& app, const std::string& control,
         out.action = Action::StepOnce;
     } else if (control == "reset") {
         out.action = Action::Reset;
+    } else if (control == "undo") {
+        out.action = Action::Undo;
+    } else if (control == "redo") {
+        out.action = Action::Redo;
     } else if (control == "block") {
         double index = -1.0;
         const int n = static_cast<int>(app.sim.world().blocks.size());
@@ -86,13 +105,12 @@ PageControlOutcome applyPageControl(App& app, const std::string& control,
         if (i < 0) {
             out.error = "mass: select a dynamic block first";
         } else {
-            Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
+            const Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
             double mass = b.mass;
             if (acceptTypedNumber(app, "mass", value, b.mass, limits::kMass, mass, out.error)) {
                 const std::string problem = limits::accelerationViolation(length(b.force), mass);
                 if (problem.empty()) {
-                    b.mass = mass;
-                    app.sim.noteEdit(true);
+                    applyFromPage(app, Edit::setBlock({i, ""}, "mass", mass), "mass", out.error);
                 } else {
                     out.error = "mass: " + problem;
                     app.ui.typedWarning.note("mass", TypedValue{false, b.mass, out.error});

@@ -1,7 +1,7 @@
 // The browser page's own text and form controls, for a screen reader or a switch device: beside
 // the canvas, the page keeps real DOM text in step with what the canvas shows (spoken_text.h)
 // and native, labelled, visually hidden controls (scene, lesson next/previous, play/pause,
-// step, reset, one for every world key of the settings table (page_world_controls.h), the
+// step, reset, undo, redo, one for every world key of the settings table (page_world_controls.h), the
 // selected block and its mass) that drive the same state as the panel. This is the logic both ways,
 // with no browser: tested in tests/app; the page (platform/web/index.html) draws it, main_web.cpp
 // carries it.

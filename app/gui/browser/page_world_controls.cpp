@@ -1,7 +1,9 @@
 #include "page_world_controls.h"
 
 #include "app.h"
+#include "edit.h"
 #include "printable.h"
+#include "scene_json.h"
 #include "settings_table.h"
 
 #include <cctype>
@@ -124,9 +126,13 @@ json worldControlsJson(const WorldSettings& s) {
     return rows;
 }
 
+// The value is read into a copy of the world's settings; a change goes through the one door
+// (SimulationSession::apply) as the key's value in a scene file's words, so it is undone, logged
+// and kept on the timeline as the panel's change is.
 bool applyWorldControl(App& app, const std::string& control, const std::string& value,
                        std::string& error) {
-    WorldSettings& s = app.sim.world().settings;
+    const WorldSettings& current = app.sim.world().settings;
+    WorldSettings s = current;
     for (const WorldKey* row : settings_table::shownOrder()) {
         const std::string key = row->key;
         int axis = -1;
@@ -134,31 +140,39 @@ bool applyWorldControl(App& app, const std::string& control, const std::string& 
         if (row->kind == Kind::Pair && control == key + "-y") axis = 1;
         if (control != key && axis < 0) continue;
         const std::string field = warningField(*row);
+        bool taken = false;
         switch (row->kind) {
         case Kind::Number:
-            acceptTypedNumber(app, field.c_str(), value, s.*row->number, row->range, s.*row->number,
-                              error);
-            return true;
+            taken = acceptTypedNumber(app, field.c_str(), value, s.*row->number, row->range,
+                                      s.*row->number, error);
+            break;
         case Kind::Whole: {
             double v = s.*row->whole;
-            if (acceptTypedNumber(app, field.c_str(), value, v, row->range, v, error))
-                s.*row->whole = static_cast<int>(v);
-            return true;
+            taken = acceptTypedNumber(app, field.c_str(), value, v, row->range, v, error);
+            if (taken) s.*row->whole = static_cast<int>(v);
+            break;
         }
         case Kind::Pair:
-            if (axis < 0) break; // the pair's controls are its axes
-            acceptTypedNumber(app, field.c_str(), value, axis ? (s.*row->pair).y : (s.*row->pair).x,
-                              row->range, axis ? (s.*row->pair).y : (s.*row->pair).x, error);
-            return true;
+            if (axis < 0) continue; // the pair's controls are its axes
+            taken = acceptTypedNumber(app, field.c_str(), value,
+                                      axis ? (s.*row->pair).y : (s.*row->pair).x, row->range,
+                                      axis ? (s.*row->pair).y : (s.*row->pair).x, error);
+            break;
         case Kind::Choice:
         case Kind::Flag:
         case Kind::NameSet: {
             const settings_table::FlagProblem p = readWorldValue(*row, value, s);
             if (!p.expected.empty())
                 error = key + ": '" + printable(p.text, 40) + "' " + p.expected;
-            return true;
+            taken = p.expected.empty();
+            break;
         }
         }
+        if (taken && !settings_table::same(*row, s, current)) {
+            const EditError refused = app.sim.apply(Edit::setWorld(key, settingJson(*row, s)));
+            if (!refused.empty()) error = refused.text();
+        }
+        return true;
     }
     return false;
 }

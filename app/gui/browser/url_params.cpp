@@ -1,9 +1,11 @@
 #include "url_params.h"
 
 #include "app.h"
+#include "edit.h"
 #include "lesson_session.h"
 #include "page_world_controls.h"
 #include "printable.h"
+#include "scene_json.h"
 #include "scene_library.h"
 
 #include <algorithm>
@@ -207,7 +209,10 @@ void applyUrlParams(App& app, const UrlParams& params) {
             add(app.ui.messages.error);
     }
     for (const settings_table::WorldKey* row : params.worldGiven)
-        settings_table::copy(*row, params.world, app.sim.world().settings);
+        if (const EditError refused =
+                app.sim.apply(Edit::setWorld(row->key, settingJson(*row, params.world)));
+            !refused.empty())
+            add("URL parameter " + refused.text());
     if (params.showGiven) applyShowSet(app.view, params.show);
     if (params.frame) setViewFrame(app.view, *params.frame);
     app.ui.messages.error = errors;

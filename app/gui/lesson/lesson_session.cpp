@@ -145,8 +145,10 @@ bool enterStep(LessonSession& s, SimulationSession& sim, View& view, Messages& m
     s.current = index;
     s.revealed = false;
     s.digits.clear();
-    // The world the step states, seen as it says.
+    // The world the step states, seen as it says; its edits play at their frames (reset below
+    // plays those of frame 0, and R plays them again).
     sim.setScene(*step.scene, step.sceneSource);
+    sim.editLog = LogPlayer(step.edits);
     Overlays shown = ShowSet::noOverlays();
     for (const std::string& name : step.overlays) setOverlay(shown, name, true);
     view.show = shown;

@@ -157,6 +157,11 @@ int runWindow(const Options& options, char** argv, int argc) {
         }
         std::printf("quit\n");
     }
+    // An edit log refused on the way (it stopped there; the panel's note said so).
+    if (!app.sim.editLogError.empty()) {
+        std::fprintf(stderr, "sandbox: %s\n", app.sim.editLogError.c_str());
+        return 1;
+    }
     return 0;
 }
 

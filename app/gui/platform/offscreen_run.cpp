@@ -375,6 +375,13 @@ std::string outputOverLessonScene(const App& app, const Options& o) {
     return "";
 }
 
+// A line of --edits refused on the way (the log stopped there): said on stderr.
+bool refusedEdits(const App& app) {
+    if (app.sim.editLogError.empty()) return false;
+    std::fprintf(stderr, "sandbox: %s\n", app.sim.editLogError.c_str());
+    return true;
+}
+
 } // namespace
 
 int runOffscreen(const Options& options) {
@@ -400,7 +407,7 @@ int runOffscreen(const Options& options) {
         AudioTrack track = startTrack(app, o, o.frames);
         if (track.tooLong) return 1;
         for (int i = 0; i < o.frames; ++i) simulateFrame(app, track);
-        return writeTrack(track, o);
+        return refusedEdits(app) ? 1 : writeTrack(track, o);
     }
     setUiScale(app.view, o.uiScale > 0.0f ? o.uiScale : 1.0f);
     if (o.present) setPresentMode(app.view, true);
@@ -446,5 +453,6 @@ int runOffscreen(const Options& options) {
     off.renderer.shutdown();
     offscreenShutdown(off.context);
     uiDestroyContext();
+    if (refusedEdits(app)) return 1;
     return shadersOk ? code : 1;
 }

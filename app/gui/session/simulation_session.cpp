@@ -1,8 +1,11 @@
 #include "simulation_session.h"
 
+#include "edit_words.h"
 #include "input_limits.h"
 #include "placement.h"
+#include "printable.h"
 #include "save_naming.h"
+#include "scene_json.h"
 #include "settings_table.h"
 #include "text_format.h"
 
@@ -45,20 +48,105 @@ void SimulationSession::setScene(const Scene& newScene, const std::string& path)
     blocksEdited = false;
     script.clear(); // a lesson step sets its own after this
     playerKeys = {};
+    editLog = LogPlayer{}; // a log is of the scene it was given with
+    editLogError.clear();
     restartRun();
+    edits.clear();
 }
 
 void SimulationSession::reset() {
     const WorldSettings chosen = world().settings;
     restartRun();
-    world().settings = chosen;
+    // A new run: the undo history and the journal start again, with the settings kept as edits
+    // at frame 0 (so the journal replays this run from the scene, and undo can take them back).
+    edits.clear();
+    for (const settings_table::WorldKey& row : settings_table::worldKeys()) {
+        if (row.inScene && !settings_table::same(row, world().settings, chosen))
+            apply(Edit::setWorld(row.key, settingJson(row, chosen)));
+    }
+    editLog.restart();
+    playEditLog();
 }
 
 void SimulationSession::resetToFile() {
     restartRun();
+    edits.clear();
+    editLog.restart();
+    playEditLog();
 }
 
-void SimulationSession::noteEdit(bool blocks) {
+EditError SimulationSession::apply(const Edit& edit, bool continues) {
+    const ApplyResult r = edits.apply({world(), labels}, edit, world().frame, continues);
+    if (!r.applied) return r.error;
+    afterEdit(*r.applied, false);
+    const bool named = !edits.journalFull() && !edits.journal().empty();
+    printEdit(editLogLine(named ? edits.journal().back().edit : edit, world()));
+    return {};
+}
+
+bool SimulationSession::undo() {
+    EditError error;
+    return undoOrRedo(true, error);
+}
+
+bool SimulationSession::redo() {
+    EditError error;
+    return undoOrRedo(false, error);
+}
+
+bool SimulationSession::undoOrRedo(bool back, EditError& error) {
+    const EditTarget target{world(), labels};
+    const UndoResult r =
+        back ? edits.undo(target, world().frame) : edits.redo(target, world().frame);
+    const char* what = back ? "undo" : "redo";
+    if (!r.edit) {
+        notice = r.error.empty()
+                     ? std::string(back ? "Nothing to undo" : "Nothing to redo")
+                     : std::string(back ? "Cannot undo: " : "Cannot redo: ") + r.error.text();
+        printEdit(std::string(what) + ": " + (r.error.empty() ? "nothing" : r.error.text()));
+        error = r.error;
+        return false;
+    }
+    afterEdit(*r.edit, back);
+    notice = std::string(what) + ": " + editChangeText(*r.edit, back, labels);
+    printEdit(notice);
+    return true;
+}
+
+void SimulationSession::playEditLog() {
+    while (const LogLine* line = editLog.next(world().frame)) {
+        const JournalEntry& e = line->entry;
+        EditError error;
+        if (e.what == JournalEntry::What::Edit)
+            error = apply(e.edit, e.continues);
+        else
+            undoOrRedo(e.what == JournalEntry::What::Undo, error);
+        if (error.empty()) continue;
+        editLogError = logLineError(*line, error).text();
+        notice = editLogError;
+        editLog = LogPlayer{}; // the rest would apply to a world it was not written for
+        return;
+    }
+}
+
+void SimulationSession::printEdit(const std::string& line) const {
+    if (!verbose) return;
+    std::printf("%s\n", printable(line, kPrintablePath).c_str()); // names come from files
+    std::fflush(stdout);
+}
+
+void SimulationSession::afterEdit(const AppliedEdit& a, bool undone) {
+    const bool blocks = a.edit.kind != Edit::Kind::SetWorld;
+    // The selection follows blocks added and removed before it.
+    if (a.edit.kind == Edit::Kind::Add || a.edit.kind == Edit::Kind::Remove) {
+        const bool inserted = (a.edit.kind == Edit::Kind::Add) != undone;
+        if (inserted && selected >= a.index)
+            ++selected;
+        else if (!inserted && selected == a.index)
+            selected = -1;
+        else if (!inserted && selected > a.index)
+            --selected;
+    }
     if (blocks) blocksEdited = true;
     if (history.empty()) return;
     const bool replaying = isReplaying();
@@ -151,6 +239,8 @@ FrameOutcome SimulationSession::step(bool sideBySide) {
         stopAtFrame.reset();
         out.reachedStop = true;
     }
+    playEditLog(); // the log's lines at the frame reached, after what the frame recorded
+    // (before the lesson's watch sees the frame: lesson_runner plays a step's edits so)
     if (stopWhen && stopWhen(w, run.stats, run.lastLog)) {
         paused = true;
         out.reachedStop = true;
@@ -247,40 +337,30 @@ bool SimulationSession::usesPhysicsSection() const {
 void SimulationSession::cycleMethod() {
     const int count = static_cast<int>(Method::Count);
     const int next = (static_cast<int>(world().settings.method) + 1) % count;
-    world().settings.method = static_cast<Method>(next);
-    noteEdit(false);
+    apply(Edit::setWorld("method", methodName(static_cast<Method>(next))));
+}
+
+void SimulationSession::applySettings(const WorldSettings& wanted) {
+    for (const settings_table::WorldKey& row : settings_table::worldKeys()) {
+        if (row.inScene && !settings_table::same(row, world().settings, wanted))
+            apply(Edit::setWorld(row.key, settingJson(row, wanted)));
+    }
 }
 
 void SimulationSession::setBlockKind(int index, BodyKind kind) {
     if (index < 0 || index >= static_cast<int>(world().blocks.size())) return;
-    Block& b = world().blocks[static_cast<std::size_t>(index)];
+    const Block& b = world().blocks[static_cast<std::size_t>(index)];
     if (b.kind == kind) return;
-    b.kind = kind;
-    if (kind == BodyKind::Dynamic) {
-        if (!(std::isfinite(b.mass) && b.mass > 0.0)) b.mass = 1.0;
-    } else {
-        b.mass = kInfiniteMass;
-        if (kind == BodyKind::Static) b.velocity = Vec2{};
-    }
-    noteEdit(true);
+    // A block made dynamic keeps a mass it had, else gets 1 kg.
+    const nlohmann::json mass = kind == BodyKind::Static      ? nlohmann::json("static")
+                                : kind == BodyKind::Kinematic ? nlohmann::json("kinematic")
+                                : std::isfinite(b.mass)       ? nlohmann::json(b.mass)
+                                                              : nlohmann::json(1.0);
+    apply(Edit::setBlock({index, ""}, "mass", mass));
 }
 
 bool SimulationSession::setBlockSize(int index, Vec2 size) {
-    if (index < 0 || index >= static_cast<int>(world().blocks.size())) return false;
-    if (!(size.x > 0.0 && size.y > 0.0) || !std::isfinite(size.x) || !std::isfinite(size.y)) {
-        return false;
-    }
-    Block& b = world().blocks[static_cast<std::size_t>(index)];
-    const Bounds& bounds = world().bounds;
-    const Vec2 h = size * 0.5;
-    if (b.position.x - h.x < bounds.min.x || b.position.x + h.x > bounds.max.x ||
-        b.position.y - h.y < bounds.min.y || b.position.y + h.y > bounds.max.y) {
-        return false;
-    }
-    if (overlapsAnyBlock(world(), index, b.position, size)) return false;
-    b.size = size;
-    noteEdit(true);
-    return true;
+    return apply(Edit::setBlock({index, ""}, "size", {size.x, size.y})).empty();
 }
 
 int SimulationSession::addBlockAt(Vec2 at) {
@@ -290,25 +370,20 @@ int SimulationSession::addBlockAt(Vec2 at) {
         notice = "No room for a new block there";
         return -1;
     }
-    Block block;
-    block.position = *spot;
-    block.size = size;
-    block.mass = 1.0;
-    block.kind = BodyKind::Dynamic;
-    world().blocks.push_back(block);
-    labels.push_back({"new " + std::to_string(world().blocks.size()), ""});
+    const std::string name = "new " + std::to_string(world().blocks.size() + 1);
+    if (!apply(Edit::add(
+                   {{"name", name}, {"position", {spot->x, spot->y}}, {"size", 1}, {"mass", 1}}))
+             .empty())
+        return -1;
     selected = static_cast<int>(world().blocks.size()) - 1;
-    noteEdit(true);
     return selected;
 }
 
 void SimulationSession::deleteSelected() {
     const int i = selected;
     if (i < 0 || i >= static_cast<int>(world().blocks.size())) return;
-    world().blocks.erase(world().blocks.begin() + i);
-    if (i < static_cast<int>(labels.size())) labels.erase(labels.begin() + i);
+    apply(Edit::remove({i, ""}));
     selected = -1;
-    noteEdit(true);
 }
 
 Scene SimulationSession::currentScene() const {

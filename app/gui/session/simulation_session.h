@@ -1,13 +1,17 @@
 // The simulation session: the scene as loaded and the run stepped from it, the fixed-step clock,
-// the timeline, what the plots and the inspector record, the cost measurement, and the edits of
-// blocks. It knows nothing of the view, the lesson or the panels: the frame loop and the lesson
-// session drive it (step, advance, reset, stopAtFrame) and read what it did (FrameOutcome,
-// notice). Plain logic: no GL, no ImGui; tested in tests/app.
+// the timeline, what the plots and the inspector record, the cost measurement, and the one door
+// for changes: every change to the world is an Edit applied by apply() (app/edit, docs/edits.md),
+// which records the timeline's keyframe, marks the scene edited, prints the --verbose line and
+// keeps it for undo. It knows nothing of the view, the lesson or the panels: the frame loop and
+// the lesson session drive it (step, advance, reset, stopAtFrame, apply) and read what it did
+// (FrameOutcome, notice). Plain logic: no GL, no ImGui; tested in tests/app.
 #pragma once
 
 #include "collision_announcer.h"
 #include "collision_sound.h"
 #include "cost.h"
+#include "edit_history.h"
+#include "edit_log.h"
 #include "fixed_step.h"
 #include "palette.h"
 #include "poi.h"
@@ -23,13 +27,6 @@
 #include <optional>
 #include <string>
 #include <vector>
-
-// What each block is called and how it is coloured; parallel to world.blocks (the engine's Block
-// has no name), kept in step when blocks are added or removed.
-struct BlockLabel {
-    std::string name;
-    std::string color; // "#rrggbb" or "" for the palette
-};
 
 // What one run owns: the world from a starting state and everything derived from stepping it.
 // A load or reset starts a new one from the scene, a jump on the timeline from the recorded
@@ -114,6 +111,13 @@ struct SimulationSession {
     // Edits of blocks (drag, fling, add, delete, the panel's fields) since the last load or save;
     // quitting asks when there are any, or when the settings differ from the scene's.
     bool blocksEdited = false;
+    // The edits applied (the undo and redo stacks, the journal since the last load or R).
+    EditHistory edits;
+    // An edit log playing (--edits; docs/edits.md): each line applies when the world reaches its
+    // frame. R and Shift+R play it again from its start; loading another scene drops it.
+    LogPlayer editLog;
+    std::string editLogError; // the first refused line ("demo.jsonl:3: m2.mass: ..."); it stops
+    bool verbose = false;     // --verbose: one stdout line per edit, undo and redo
     // What the session has to tell the user (an edit during a replay, the scene's end, no room
     // for a block): the app shows it as its note and clears it here.
     std::string notice;
@@ -128,9 +132,26 @@ struct SimulationSession {
     void reset();
     // Shift+R, "reset to file": everything back to the scene as loaded, settings included.
     void resetToFile();
-    // The user changed the world (`blocks`: a block; otherwise a setting) between steps. While
-    // the timeline replays, this starts a new future from here, and the notice says so.
-    void noteEdit(bool blocks);
+    // The one door: applies `edit` now (checked as applyEdit checks it) or refuses it (the
+    // error says why; nothing changed). Applied, it is a keyframe of the timeline (while the
+    // timeline replays a new future starts here, and the notice says so), a block edit marks
+    // the scene edited, --verbose prints it and undo can take it back. `continues`: it goes on
+    // the gesture begun by the last beginGesture() (a slider or a block dragged: one undo step).
+    EditError apply(const Edit& edit, bool continues = false);
+    // The next continuing edit starts a new gesture.
+    void beginGesture() { edits.endGesture(); }
+    // Ctrl+Z, Ctrl+Shift+Z / Ctrl+Y: the last edit undone or done again, at the world's present
+    // frame; the notice says what ("undo: bounciness 0.90 -> 0.50", the panel's digits) or why
+    // not. False when nothing was done.
+    bool undo();
+    bool redo();
+    // What was done since the scene was loaded, a lesson step entered or the run restarted (R,
+    // Shift+R), in order: every edit, undo and redo with its frame (the log Save edit log
+    // writes; a lesson reads what the lecturer changed).
+    const std::vector<JournalEntry>& editsSinceLoad() const { return edits.journal(); }
+    // Plays the edit log's lines due at the world's frame (step() does after each frame; call it
+    // after setting editLog). A refused line sets editLogError and the notice and stops the log.
+    void playEditLog();
     // True when quitting would lose edits (see blocksEdited).
     bool unsavedEdits() const;
 
@@ -164,10 +185,14 @@ struct SimulationSession {
     // True when the scene uses what the Physics section sets (a setting of the table's Physics
     // section other than its default, a block's force) or the thrust is on: the section opens.
     bool usesPhysicsSection() const;
-    // perfect -> move-and-correct -> turn-based -> perfect.
+    // perfect -> move-and-correct -> turn-based -> perfect (an edit of "method").
     void cycleMethod();
+    // Edits of every world key (of a scene file) in which the world's settings differ from
+    // `wanted`: the world then has those settings.
+    void applySettings(const WorldSettings& wanted);
 
-    // Changes the kind of block `index` (dynamic blocks get mass 1 kg when they had none).
+    // Edits of blocks, through apply(). Changes the kind of block `index` (dynamic blocks get
+    // mass 1 kg when they had none).
     void setBlockKind(int index, BodyKind kind);
     // Resizes block `index` when the new size fits without overlap; false (nothing changed) if
     // not.
@@ -192,6 +217,12 @@ struct SimulationSession {
 
   private:
     void restartRun(); // a new run from the scene
+    // After an edit, undo or redo: the timeline's keyframe, the edited mark, the selection
+    // following added and removed blocks.
+    void afterEdit(const AppliedEdit& applied, bool undone);
+    // Undo (`back`) or redo: true when done; `error` says why a refused one was refused.
+    bool undoOrRedo(bool back, EditError& error);
+    void printEdit(const std::string& line) const;
 };
 
 // True when the frame from frameStart to frameEnd (s) reaches the scene's "duration" (the app

@@ -1,20 +1,6 @@
 #include "timeline.h"
 
-#include "settings_table.h"
-
 #include <algorithm>
-
-namespace {
-
-bool sameBits(double a, double b) {
-    return a == b || (a != a && b != b);
-}
-
-bool sameVec(Vec2 a, Vec2 b) {
-    return sameBits(a.x, b.x) && sameBits(a.y, b.y);
-}
-
-} // namespace
 
 WorldHistory::WorldHistory(std::uint64_t capacityFrames, int keyframeEvery, std::size_t maxBytes)
     : capacity_(std::max<std::uint64_t>(1, capacityFrames)), every_(std::max(1, keyframeEvery)),
@@ -25,31 +11,14 @@ void WorldHistory::clear() {
     haveLast_ = false;
 }
 
-bool WorldHistory::sameAsLast(const World& w) const {
-    if (!haveLast_ || w.frame != last_.frame || !sameBits(w.time, last_.time)) return false;
-    if (!settings_table::sameAllSettings(w.settings, last_.settings)) return false;
-    if (!sameVec(w.bounds.min, last_.bounds.min) || !sameVec(w.bounds.max, last_.bounds.max)) {
-        return false;
-    }
-    if (w.blocks.size() != last_.blocks.size()) return false;
-    for (std::size_t i = 0; i < w.blocks.size(); ++i) {
-        const Block &a = w.blocks[i], &b = last_.blocks[i];
-        if (!sameVec(a.position, b.position) || !sameVec(a.velocity, b.velocity) ||
-            !sameVec(a.size, b.size) || !sameBits(a.mass, b.mass) || !sameVec(a.force, b.force) ||
-            a.kind != b.kind) {
-            return false;
-        }
-    }
-    return true;
-}
-
 void WorldHistory::beforeStep(const World& world) {
     if (!keyframes_.empty() && world.frame < lastFrame()) truncateAfter(world.frame);
     if (!keyframes_.empty() && world.frame < keyframes_.front().frame) clear();
-    const bool edited = !sameAsLast(world);
+    // An edit between steps is recorded where it is applied (editedAt): here only the keyframe
+    // that is due.
     const bool due = keyframes_.empty() ||
                      world.frame >= keyframes_.back().frame + static_cast<std::uint64_t>(every_);
-    if (edited || due) {
+    if (due) {
         while (!keyframes_.empty() && keyframes_.back().frame >= world.frame) {
             keyframes_.pop_back();
         }

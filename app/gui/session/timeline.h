@@ -1,6 +1,7 @@
 // The timeline: a history of the world the user scrubs back through and steps forward from.
-// Keyframes (whole World copies) every `keyframeEvery` frames, plus a keyframe whenever the world
-// was changed between steps (a drag, a slider); any frame in between is rebuilt by stepping its
+// Keyframes (whole World copies) every `keyframeEvery` frames, plus a keyframe wherever an edit
+// was applied between steps (editedAt: the session's one door calls it for every edit, so no
+// field can be missed); any frame in between is rebuilt by stepping its
 // keyframe forward, which the engine's determinism makes bit-exact. Memory: 1,000 blocks, 60 s
 // at 60 Hz, a keyframe every 12 frames: 300 x 64 kB = 19 MB; whatever the scene (200,000
 // blocks, or a keyframe every frame while thrust is held), at most kTimelineMaxBytes: the oldest
@@ -24,7 +25,7 @@ class WorldHistory {
 
     void clear();
     // Call with the live world just before it steps: truncates the future when the world was
-    // scrubbed back, and stores a keyframe when one is due or the world was edited.
+    // scrubbed back, and stores a keyframe when one is due.
     void beforeStep(const World& world);
     // Call with the live world just after it stepped.
     void afterStep(const World& world);
@@ -54,7 +55,6 @@ class WorldHistory {
     std::size_t maxBytes() const { return maxBytes_; }
 
   private:
-    bool sameAsLast(const World& world) const;
     World recycledCopy(const World& world); // a copy of world, in the oldest's storage if due
     std::uint64_t capacity_;
     int every_;

@@ -231,6 +231,10 @@ void applyAction(App& app, Action action) {
         app.ui.saveDialogOpen = true;
         app.ui.saveDialogPath = suggestedSavePath(app);
         break;
+    case Action::Undo:
+    case Action::Redo:
+        undoOrRedo(app, action == Action::Undo);
+        break;
     case Action::LessonNext:
     case Action::LessonPrevious:
     case Action::LessonFirst:

@@ -15,6 +15,16 @@ bool validBlock(const World& world, int i) {
     return i >= 0 && i < static_cast<int>(world.blocks.size());
 }
 
+// Block i moved (an edit, part of the drag's gesture) to the free spot nearest `desired` inside
+// the bounds; it stays where it is when there is none nearby.
+void moveTo(SimulationSession& sim, int i, Vec2 desired) {
+    const World& w = sim.world();
+    const Block& b = w.blocks[static_cast<std::size_t>(i)];
+    const auto spot = placeWithoutOverlap(w, i, desired, b.size);
+    if (spot && *spot != b.position)
+        sim.apply(Edit::setBlock({i, ""}, "position", {spot->x, spot->y}), true);
+}
+
 } // namespace
 
 int blockAtScreen(const World& world, const View& view, Vec2 screen) {
@@ -24,7 +34,7 @@ int blockAtScreen(const World& world, const View& view, Vec2 screen) {
 
 void mousePress(MouseTool& m, SimulationSession& sim, const View& view, MouseButton button,
                 Vec2 screen, bool doubleClick) {
-    World& w = sim.world();
+    const World& w = sim.world();
     const Vec2 world = view.camera.screenToWorld(screen);
     m.cursorWorld = world;
     m.pressWorld = world;
@@ -38,6 +48,7 @@ void mousePress(MouseTool& m, SimulationSession& sim, const View& view, MouseBut
             return;
         }
         sim.selected = hit;
+        sim.beginGesture(); // the whole drag is one edit: one undo takes it back
         m.mode = MouseTool::Mode::Dragging;
         m.block = hit;
         m.startPosition = w.blocks[static_cast<std::size_t>(hit)].position;
@@ -56,14 +67,12 @@ void mousePress(MouseTool& m, SimulationSession& sim, const View& view, MouseBut
 }
 
 void mouseMove(MouseTool& m, SimulationSession& sim, View& view, Vec2 screen) {
-    World& w = sim.world();
+    const World& w = sim.world();
     m.cursorWorld = view.camera.screenToWorld(screen);
     switch (m.mode) {
     case MouseTool::Mode::Dragging:
-        if (validBlock(w, m.block)) {
-            Block& b = w.blocks[static_cast<std::size_t>(m.block)];
-            b.position = clampIntoBounds(w.bounds, m.cursorWorld + m.grabOffset, b.size);
-        }
+        // The block follows the cursor to the nearest free spot (never on top of another).
+        if (validBlock(w, m.block)) moveTo(sim, m.block, m.cursorWorld + m.grabOffset);
         break;
     case MouseTool::Mode::Panning:
         view.camera.panPixels(screen - m.lastScreen);
@@ -78,21 +87,15 @@ void mouseMove(MouseTool& m, SimulationSession& sim, View& view, Vec2 screen) {
 
 void mouseRelease(MouseTool& m, SimulationSession& sim, View& view, MouseButton button,
                   Vec2 screen) {
-    World& w = sim.world();
+    const World& w = sim.world();
     mouseMove(m, sim, view, screen);
-    if (button == MouseButton::Left && m.mode == MouseTool::Mode::Dragging &&
-        validBlock(w, m.block)) {
-        Block& b = w.blocks[static_cast<std::size_t>(m.block)];
-        const auto spot = placeWithoutOverlap(w, m.block, b.position, b.size);
-        b.position = spot ? *spot : m.startPosition;
-        if (b.position != m.startPosition) sim.noteEdit(true);
+    if (button == MouseButton::Left && m.mode == MouseTool::Mode::Dragging) {
+        // Dropped: the last move (above) left it on a free spot.
     } else if (button == MouseButton::Right && m.mode == MouseTool::Mode::Flinging &&
                validBlock(w, m.block)) {
         const Vec2 v = m.flingVelocity();
-        if (std::isfinite(v.x) && std::isfinite(v.y)) {
-            w.blocks[static_cast<std::size_t>(m.block)].velocity = v;
-            sim.noteEdit(true);
-        }
+        if (std::isfinite(v.x) && std::isfinite(v.y))
+            sim.apply(Edit::setBlock({m.block, ""}, "velocity", {v.x, v.y}));
     } else if (!(button == MouseButton::Middle && m.mode == MouseTool::Mode::Panning)) {
         return; // a release that ends nothing in progress
     }

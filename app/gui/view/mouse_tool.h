@@ -1,8 +1,9 @@
 // What the mouse does in the scene: click selects, left-drag moves a block (the simulation pauses;
-// the drop never overlaps), right-drag flings (velocity from the drag vector), middle-drag pans,
-// double-click on empty space adds a block. Pure logic on the simulation session, the view and
-// screen positions (no ImGui), so it is tested without GL; scene_view.cpp feeds it ImGui's mouse
-// state.
+// it follows the cursor to the nearest free spot, never onto another block; the whole drag is
+// one edit), right-drag flings (velocity from the drag vector), middle-drag pans, double-click on
+// empty space adds a block. Every change is an edit through the session's door (apply). Pure logic
+// on the simulation session, the view and screen positions (no ImGui), so it is tested without GL;
+// scene_view.cpp feeds it ImGui's mouse state.
 #pragma once
 
 #include "vec2.h"

@@ -164,9 +164,9 @@ TEST(Timeline, EditsBetweenStepsAreKeyframedSoReplayStaysExact) {
     for (int i = 1; i <= 100; ++i) {
         stepSimulation(app);
         // Edits while paused at frame i: the timeline keeps the edited state as frame i.
-        if (i == 40) app.sim.world().settings.bounciness = 0.3;           // a slider
-        if (i == 55) app.sim.world().blocks[0].velocity = Vec2{3.0, 7.0}; // a fling
-        if (i == 70) app.sim.world().blocks[1].mass = 5.0;                // the mass slider
+        if (i == 40) app.sim.apply(Edit::setWorld("bounciness", 0.3));               // a slider
+        if (i == 55) app.sim.apply(Edit::setBlock({0, ""}, "velocity", {3.0, 7.0})); // a fling
+        if (i == 70) app.sim.apply(Edit::setBlock({1, ""}, "mass", 5.0)); // the mass slider
         original.push_back(stateHash(app.sim.world()));
     }
     stepSimulation(app);
@@ -174,6 +174,46 @@ TEST(Timeline, EditsBetweenStepsAreKeyframedSoReplayStaysExact) {
         World w;
         ASSERT_TRUE(app.sim.history.stateAt(f, w));
         EXPECT_EQ(stateHash(w), original[f]) << "frame " << f;
+    }
+}
+
+// A block's own friction set while paused (the field the timeline's comparison of fields used
+// to miss): scrubbed back and forth, every frame is the fresh run with that edit at its frame.
+TEST(Timeline, ABlocksFrictionSetWhilePausedReplaysAsAFreshRunWithTheEdit) {
+    const SceneResult r = parseScene(R"({"name": "slide", "world": {"friction": 0.4},
+        "blocks": [{"name": "slider", "position": [2, 0.5], "size": 1, "velocity": [9, 0]},
+                   {"name": "box", "position": [12, 0.5], "size": 1, "mass": 2}]})",
+                                     "slide.json");
+    ASSERT_TRUE(r.scene) << r.error.text();
+    const Edit friction = Edit::setBlock({-1, "slider"}, "friction", 1.5);
+    for (const Method method : {Method::Perfect, Method::MoveAndCorrect, Method::TurnBased}) {
+        Scene scene = *r.scene;
+        scene.settings.method = method;
+        // The fresh run: 20 frames, the edit, 70 more.
+        std::vector<std::uint64_t> fresh, unedited;
+        World w = makeWorld(scene), plain = w;
+        std::vector<BlockLabel> labels{{"slider", ""}, {"box", ""}};
+        for (int f = 0; f <= 90; ++f) {
+            if (f == 20) {
+                ASSERT_TRUE(applyEdit({w, labels}, friction).applied);
+            }
+            fresh.push_back(stateHash(w));
+            unedited.push_back(stateHash(plain));
+            w.step();
+            plain.step();
+        }
+        ASSERT_NE(fresh[90], unedited[90]) << methodName(method); // the edit matters
+        // The app: paused at frame 20, the friction set, played on to 90, scrubbed about.
+        App app;
+        setScene(app, scene, "slide.json");
+        for (int f = 0; f < 20; ++f) stepSimulation(app);
+        ASSERT_TRUE(app.sim.apply(friction).empty());
+        for (int f = 20; f < 90; ++f) stepSimulation(app);
+        for (std::uint64_t f : {10u, 25u, 19u, 20u, 21u, 63u, 90u, 33u, 89u}) {
+            ASSERT_TRUE(scrubTo(app, f)) << f;
+            EXPECT_EQ(stateHash(app.sim.world()), fresh[f]) << methodName(method) << " frame " << f;
+            EXPECT_EQ(app.sim.world().blocks[0].friction, f >= 20 ? 1.5 : -1.0) << f;
+        }
     }
 }
 

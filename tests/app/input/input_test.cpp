@@ -286,4 +286,42 @@ TEST(Mouse, DeleteRemovesTheSelectedBlockAndItsLabel) {
     EXPECT_EQ(app.sim.world().blocks.size(), 2u);
 }
 
+// Undo and redo through the session (Ctrl+Z, Ctrl+Y): what was undone is said with the panel's
+// digits; a drag of the mouse is one edit; R keeps the settings as edits that undo can take back.
+TEST(Undo, SaysWhatItUndidAndADragIsOneEdit) {
+    App app = makeApp();
+    EXPECT_FALSE(app.sim.undo());
+    EXPECT_EQ(app.sim.notice, "Nothing to undo");
+    app.sim.beginGesture();
+    for (double c : {0.95, 0.9}) app.sim.apply(Edit::setWorld("bounciness", c), true);
+    ASSERT_TRUE(app.sim.undo());
+    EXPECT_EQ(app.sim.notice, "undo: bounciness 0.90 -> 1.00");
+    EXPECT_EQ(app.sim.world().settings.bounciness, 1.0);
+    ASSERT_TRUE(app.sim.redo());
+    EXPECT_EQ(app.sim.notice, "redo: bounciness 1.00 -> 0.90");
+    // A block dragged over several moves: one undo puts it back exactly.
+    const Vec2 start = app.sim.world().blocks[0].position;
+    mousePress(app.mouse, app.sim, app.view, MouseButton::Left, screenOf(app, start), false);
+    for (double x : {6.0, 7.0, 8.5}) mouseMove(app.mouse, app.sim, app.view, screenOf(app, {x, 7}));
+    mouseRelease(app.mouse, app.sim, app.view, MouseButton::Left, screenOf(app, {8.5, 7}));
+    ASSERT_NE(app.sim.world().blocks[0].position, start);
+    undoOrRedo(app, true);
+    EXPECT_EQ(app.sim.world().blocks[0].position, start);
+    EXPECT_EQ(app.sim.notice, "undo: A position (8.50, 7.00) m -> (5.00, 5.00) m");
+    // R keeps C = 0.9 as an edit at frame 0: undone, C is the scene's again.
+    for (int i = 0; i < 5; ++i) stepSimulation(app);
+    resetScene(app);
+    EXPECT_EQ(app.sim.world().settings.bounciness, 0.9);
+    ASSERT_EQ(app.sim.editsSinceLoad().size(), 1u);
+    EXPECT_EQ(logText(app.sim.editsSinceLoad()),
+              "{\"frame\": 0, \"set\": \"bounciness\", \"value\": 0.9}\n");
+    ASSERT_TRUE(app.sim.undo());
+    EXPECT_EQ(app.sim.world().settings.bounciness, 1.0);
+    EXPECT_TRUE(app.sim.edits.canRedo());
+    // Shift+R and a load forget it all.
+    resetToFile(app);
+    EXPECT_FALSE(app.sim.edits.canRedo());
+    EXPECT_TRUE(app.sim.editsSinceLoad().empty());
+}
+
 } // namespace

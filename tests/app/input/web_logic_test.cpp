@@ -261,8 +261,7 @@ TEST(Link, OpeningTheQueryGivesTheSameQuery) {
 
 TEST(Link, AnEditedSceneTravelsInsideTheLink) {
     App app = setUpApp();
-    app.sim.world().blocks[0].velocity = {1.25, -3.5};
-    app.sim.noteEdit(true);
+    ASSERT_TRUE(app.sim.apply(Edit::setBlock({0, ""}, "velocity", {1.25, -3.5})).empty());
     EXPECT_TRUE(linkCarriesScene(app));
     EXPECT_EQ(linkQuery(app), ""); // the scene, its method and settings are in the fragment
     App moved = setUpApp();

@@ -169,10 +169,10 @@ TEST(Thrust, TheTimelineReplaysThrustAndEditedSettingsBitForBit) {
     std::vector<std::uint64_t> hashes{stateHash(app.sim.world())};
     for (int f = 0; f < 30; ++f) {
         app.sim.thrust.direction = (f % 10) < 4 ? Vec2{1.0, 0.0} : Vec2{}; // held 4 of each 10
-        if (f == 13) app.sim.world().settings.drag = 2.0; // edits without noteEdit (as a key does)
-        if (f == 17) app.sim.world().settings.resolve = Resolve::Reflect;
-        if (f == 21) app.sim.world().blocks[0].force = {0.0, 1.0};
-        if (f == 25) app.sim.world().settings.integrator = Integrator::Exact;
+        if (f == 13) app.sim.apply(Edit::setWorld("drag", 2.0));           // edits through the door
+        if (f == 17) app.sim.apply(Edit::setWorld("resolve", "reflect"));
+        if (f == 21) app.sim.apply(Edit::setBlock({0, ""}, "force", {0.0, 1.0}));
+        if (f == 25) app.sim.apply(Edit::setWorld("integrator", "exact"));
         stepSimulation(app);
         hashes.push_back(stateHash(app.sim.world()));
     }
@@ -382,15 +382,18 @@ TEST(ForceArrows, OwnForceWithTheArrowsAndTheHeldThrustAlways) {
 TEST(PhysicsLog, SettingsAndTheHeldThrust) {
     App app = shipsApp();
     const LoggedState before = snapshotForLog(app.sim, app.view, app.lesson);
-    app.sim.world().settings.resolve = Resolve::Reflect;
-    app.sim.world().settings.drag = 1.5;
+    app.sim.verbose = true;
+    testing::internal::CaptureStdout();
+    app.sim.apply(Edit::setWorld("resolve", "reflect"));
+    app.sim.apply(Edit::setWorld("drag", 1.5));
+    EXPECT_EQ(testing::internal::GetCapturedStdout(), "resolve: reflect\ndrag: 1.5\n");
     app.sim.thrust.on = true;
     app.sim.thrust.force = 20.0;
     app.sim.selected = 1;
     app.sim.thrust.direction = {-1.0, 0.0};
     const LoggedState held = snapshotForLog(app.sim, app.view, app.lesson);
     const std::vector<std::string> lines = describeChanges(before, held);
-    for (const char* line : {"resolve: reflect", "drag: 1.5", "thrust: on", "thrust held: -20,0 N"})
+    for (const char* line : {"thrust: on", "thrust held: -20,0 N"})
         EXPECT_NE(std::find(lines.begin(), lines.end(), line), lines.end()) << line;
     app.sim.thrust.direction = {};
     EXPECT_EQ(describeChanges(held, snapshotForLog(app.sim, app.view, app.lesson)),

@@ -169,17 +169,20 @@ TEST(RoundTrip, EveryBlockFieldSurvivesSaveLinkAndOpen) {
     for (const BodyKind kind : {BodyKind::Dynamic, BodyKind::Static, BodyKind::Kinematic}) {
         SCOPED_TRACE(static_cast<int>(kind));
         App app = appOn(scene);
-        Block& b = app.sim.world().blocks[1];
-        b.friction = 0.44;
+        // Through the one door, as the panel sets them.
+        const auto set = [&app](const char* field, const json& value) {
+            const EditError error = app.sim.apply(Edit::setBlock({1, ""}, field, value));
+            EXPECT_TRUE(error.empty()) << field << ": " << error.text();
+        };
+        set("friction", 0.44);
         if (kind == BodyKind::Dynamic) {
-            b.force = Vec2{0.44, -3.7};
-            b.mass = 0.44;
+            set("force", {0.44, -3.7});
+            set("mass", 0.44);
         } else {
             app.sim.setBlockKind(1, kind);
-            b.velocity = kind == BodyKind::Kinematic ? Vec2{0.44, 0.0} : Vec2{};
+            if (kind == BodyKind::Kinematic) set("velocity", {0.44, 0.0});
         }
-        app.sim.labels[1].color = "#4080d0";
-        app.sim.noteEdit(true);
+        set("color", "#4080d0");
         const fs::path dir = workDir("block" + std::to_string(static_cast<int>(kind)));
         const json file = json::parse(expectRoundTrips(app, dir));
         const json& m2 = file["blocks"][1];

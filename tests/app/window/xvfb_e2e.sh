@@ -1,6 +1,6 @@
 #!/bin/bash
 # End-to-end test of the real window: start Xvfb on a free display, run `sandbox --verbose` on a
-# scene, press P, R, S, Space, F1, Esc and Ctrl+Q and drag a slider with xdotool, and check
+# scene, press P, R, S, Space, F1, Esc, Ctrl+Z, Ctrl+Y and Ctrl+Q and drag a slider with xdotool, and check
 # through screenshots (xwd) and the app's --verbose log that each acted: the scene opens paused,
 # R keeps the method S chose, Esc closes Help and never quits, Ctrl+Q asks when there are unsaved
 # edits. Every wait has a timeout; Xvfb and the app are stopped on exit.
@@ -81,9 +81,24 @@ park
 shot slider
 echo "ok: the slider changes bounciness ($(grep "bounciness:" "$log" | tail -1))"
 
+# Ctrl+Z takes the whole slider drag back as one edit (C is the scene's 1 again) and the panel's
+# note says so; Ctrl+Y does it again; Ctrl+Z, then Ctrl+Shift+Z, once more.
+xdotool key ctrl+z; wait_for "^undo: bounciness 0\.[0-9][0-9] -> 1\.00$" 5
+sleep 0.4; shot undone
+[ "$(differing slider undone 0 0 340 720)" -gt 0 ] || fail "Ctrl+Z changed nothing on the panel"
+xdotool key ctrl+y; wait_for "^redo: bounciness 1\.00 -> 0\." 5
+xdotool key ctrl+z
+for _ in $(seq 50); do [ "$(grep -c "^undo: bounciness" "$log")" -ge 2 ] && break; sleep 0.1; done
+[ "$(grep -c "^undo: bounciness" "$log")" -eq 2 ] || fail "the second Ctrl+Z did not undo"
+xdotool key ctrl+shift+z
+for _ in $(seq 50); do [ "$(grep -c "^redo: bounciness" "$log")" -ge 2 ] && break; sleep 0.1; done
+[ "$(grep -c "^redo: bounciness" "$log")" -eq 2 ] || fail "Ctrl+Shift+Z did not redo"
+park; sleep 0.3; shot redone
+echo "ok: Ctrl+Z undoes the slider's drag as one edit, Ctrl+Y and Ctrl+Shift+Z redo it"
+
 # Esc with Help open closes Help and leaves the app running; Esc again does nothing at all.
 xdotool key F1; sleep 0.5; shot help
-[ "$(differing slider help $scene_region)" -gt 0 ] || fail "F1 showed no help"
+[ "$(differing redone help $scene_region)" -gt 0 ] || fail "F1 showed no help"
 xdotool key Escape; wait_for "^escape: help closed"
 sleep 0.5; kill -0 "$app_pid" 2>/dev/null || fail "Esc with Help open quit the app"
 xdotool key Escape; wait_for "^escape: nothing to close"
@@ -92,7 +107,7 @@ echo "ok: Esc closes Help and never quits"
 
 # F5: present mode (no panel: the panel's region changes), F5 again brings it back.
 xdotool key F5; wait_for "^present mode: on"; sleep 0.4; shot present
-[ "$(differing slider present 0 0 340 720)" -gt 0 ] || fail "present mode kept the panel"
+[ "$(differing redone present 0 0 340 720)" -gt 0 ] || fail "present mode kept the panel"
 xdotool key F5; wait_for "^present mode: off"
 echo "ok: F5 toggles present mode"
 

@@ -3,6 +3,7 @@
 // that edit the world and its blocks are settings_sections.cpp's; typed values typed_field.cpp's.
 #include "app_config.h"
 #include "app_frame.h"
+#include "edit_words.h"
 #include "imgui_ext.h"
 #include "overlay_window.h"
 #include "save_naming.h"
@@ -137,6 +138,16 @@ void lessonSection(App& app, int maxRows) {
     tooltip("Leave the lesson; the current scene stays");
 }
 
+// The journal of what was changed since the scene was loaded (or R), as an edit log.
+void editLogButton(App& app) {
+    const std::size_t count = app.sim.editsSinceLoad().size();
+    const std::string label = "Save edit log (" + std::to_string(count) + ")";
+    if (ImGui::Button(label.c_str())) saveEditLog(app);
+    tooltip("What was changed since the scene was loaded or R (every edit, undo and redo with its "
+            "frame) as a JSON-lines edit log: sandbox --edits FILE and sandbox-cli run --edits "
+            "FILE replay it (docs/edits.md)");
+}
+
 void fileSection(App& app) {
     if (!ImGui::CollapsingHeader("Open and save")) return;
     if (app.ui.inBrowser) {
@@ -146,8 +157,10 @@ void fileSection(App& app) {
         if (ImGui::Button("Save (download)")) applyAction(app, Action::Save);
         tooltip("Downloads the current state as a scene file (format v1) named after the scene; "
                 "Ctrl+S");
+        editLogButton(app);
         return;
     }
+    editLogButton(app);
     ImGui::InputTextWithHint("##open", "path/to/scene.json", &app.ui.openPath);
     ImGui::SameLine();
     if (ImGui::Button("Open") && !app.ui.openPath.empty()) loadScene(app, app.ui.openPath);
@@ -203,6 +216,28 @@ void compareSection(App& app) {
     if (uiSmallButton("close")) closeTrace(app);
 }
 
+// Undo and Redo (Ctrl+Z, Ctrl+Y): each says what it would do, and is dim when there is nothing.
+void undoButtons(App& app) {
+    const float w = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) / 2;
+    const struct {
+        const char* label;
+        Action action;
+        const AppliedEdit* next;
+        bool undone;
+    } buttons[] = {{"Undo", Action::Undo, app.sim.edits.nextUndo(), true},
+                   {"Redo", Action::Redo, app.sim.edits.nextRedo(), false}};
+    for (const auto& b : buttons) {
+        if (b.action == Action::Redo) ImGui::SameLine();
+        ImGui::BeginDisabled(!b.next);
+        if (ImGui::Button(keyedLabel(b.label, b.action, app.ui.touchUi).c_str(), ImVec2(w, 0)))
+            applyAction(app, b.action);
+        ImGui::EndDisabled();
+        if (b.next && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip("%s: %s", b.label,
+                              editChangeText(*b.next, b.undone, app.sim.labels).c_str());
+    }
+}
+
 void runSection(App& app) {
     if (!app.view.layout.sheet) { // the sheet has them in its bar
         const float w =
@@ -227,6 +262,7 @@ void runSection(App& app) {
     ImGui::SameLine();
     if (ImGui::Button("Reset to file")) applyAction(app, Action::ResetToFile);
     tooltip("Shift+R: everything as the scene file has it, settings included");
+    undoButtons(app);
 }
 
 void statisticsSection(const Run& run, const UiState& ui) {
@@ -423,7 +459,6 @@ void drawControlsPanel(App& app) {
         }
     }
     WholeRows whole;
-    const WorldSettings before = app.sim.world().settings;
     ImGui::PushItemWidth(width * 0.52f);
     scenePicker(app);
     // The panel's own height is shared so that it need not scroll: under the lesson, Play, Step
@@ -432,7 +467,8 @@ void drawControlsPanel(App& app) {
     // shows the rows that fit (the current step at least).
     const float row = ImGui::GetFrameHeightWithSpacing();
     constexpr int kLeastSectionRows = 4, kLeastStepRows = 3;
-    const float under = ImGui::GetStyle().ItemSpacing.y + 1.0f + (2 + kLeastSectionRows) * row;
+    // Under the lesson: Play, Step and Reset; Slow motion; Undo and Redo; then the sections.
+    const float under = ImGui::GetStyle().ItemSpacing.y + 1.0f + (3 + kLeastSectionRows) * row;
     const float lessonFrame = lessonFrameHeight(app);
     const float stepRow = ImGui::GetTextLineHeightWithSpacing();
     if (!app.sim.scene.description.empty()) {
@@ -467,5 +503,4 @@ void drawControlsPanel(App& app) {
     ImGui::PopItemWidth();
     whole.end();
     ImGui::End();
-    if (settingsDiffer(before, app.sim.world().settings)) app.sim.noteEdit(false);
 }

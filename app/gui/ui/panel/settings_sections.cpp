@@ -3,6 +3,7 @@
 
 #include "app.h"
 #include "input_map.h"
+#include "scene_json.h"
 #include "settings_table.h"
 #include "typed_field.h"
 #include "ui_style.h"
@@ -10,22 +11,44 @@
 #include <imgui.h>
 
 #include <cstddef>
+#include <cstdio>
 #include <string>
+#include <utility>
 
 namespace {
 
 // ---- The world's settings: one widget per row of the table (settings_table.h), by its kind ----
+// A widget never writes the world: it makes an edit of the row (the one door, docs/edits.md).
 
 using settings_table::WorldKey;
 
-void choiceCombo(const WorldKey& row, WorldSettings& s, bool touch) {
+// After a widget is drawn: pressed, it begins a gesture (a slider dragged is one undo step).
+bool widgetChanged(App& app, bool changed) {
+    if (ImGui::IsItemActivated()) app.sim.beginGesture();
+    return changed;
+}
+
+// The row's value in `next` as an edit; while the widget is held, part of its gesture. A
+// refusal shows under the field.
+void applyRow(App& app, const WorldKey& row, const WorldSettings& next) {
+    const EditError error =
+        app.sim.apply(Edit::setWorld(row.key, settingJson(row, next)), ImGui::IsItemActive());
+    if (!error.empty())
+        app.ui.typedWarning.note(row.panel.label, TypedValue{false, 0.0, error.text()});
+}
+
+void choiceCombo(App& app, const WorldKey& row, const WorldSettings& s) {
     const int current = row.getChoice(s);
-    const std::string label = keyedLabel(row.panel.label, actionOfControl(row.key), touch);
+    const std::string label = keyedLabel(row.panel.label, actionOfControl(row.key), app.ui.touchUi);
     if (ImGui::BeginCombo(label.c_str(), row.names.name(current))) {
         uiBeginRows();
         for (int i = 0; i < row.names.count; ++i) {
-            if (ImGui::Selectable(row.names.name(i), i == current) && i != current)
-                row.setChoice(s, i);
+            if (ImGui::Selectable(row.names.name(i), i == current) && i != current) {
+                WorldSettings next = s;
+                row.setChoice(next, i);
+                app.sim.beginGesture();
+                applyRow(app, row, next);
+            }
         }
         uiEndRows();
         ImGui::EndCombo();
@@ -34,20 +57,26 @@ void choiceCombo(const WorldKey& row, WorldSettings& s, bool touch) {
 
 // A slider; a typed value (Ctrl+click) within the row's range is taken. A rate (dt) is shown
 // and typed as 1/value.
-void numberSlider(App& app, const WorldKey& row, WorldSettings& s) {
-    double& value = s.*row.number;
+void numberSlider(App& app, const WorldKey& row, const WorldSettings& s) {
+    const double value = s.*row.number;
     const double shown = row.shown.asRate ? 1.0 / value : value;
     float typed = static_cast<float>(shown);
     const float width = ImGui::CalcItemWidth();
-    if (ImGui::SliderFloat(row.panel.label, &typed, row.panel.min, row.panel.max, row.panel.format,
-                           row.panel.logarithmic ? ImGuiSliderFlags_Logarithmic : 0)) {
+    if (widgetChanged(
+            app, ImGui::SliderFloat(row.panel.label, &typed, row.panel.min, row.panel.max,
+                                    row.panel.format,
+                                    row.panel.logarithmic ? ImGuiSliderFlags_Logarithmic : 0))) {
         double taken = shown;
         if (acceptTyped(app, row.panel.label, typed, row.panel.format, shown,
-                        row.shown.asRate ? row.shown.rateRange : row.range, taken))
-            value = row.shown.asRate ? 1.0 / taken : taken;
+                        row.shown.asRate ? row.shown.rateRange : row.range, taken)) {
+            WorldSettings next = s;
+            next.*row.number = row.shown.asRate ? 1.0 / taken : taken;
+            applyRow(app, row, next);
+        }
     }
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    if (&value == &s.bounciness) app.ui.bouncinessSlider = {a.x, a.y, b.x - a.x, b.y - a.y};
+    if (std::string(row.key) == "bounciness")
+        app.ui.bouncinessSlider = {a.x, a.y, b.x - a.x, b.y - a.y};
     // --verbose: where each slider is, once (the window test drags "bounciness").
     if (app.log.verbose && !app.log.layoutLogged) {
         std::printf("widget %s %d %d %d %d\n", row.key, static_cast<int>(a.x),
@@ -55,55 +84,69 @@ void numberSlider(App& app, const WorldKey& row, WorldSettings& s) {
     }
 }
 
-void wholeSlider(App& app, const WorldKey& row, WorldSettings& s) {
+void wholeSlider(App& app, const WorldKey& row, const WorldSettings& s) {
     int typed = s.*row.whole;
-    if (ImGui::SliderInt(row.panel.label, &typed, static_cast<int>(row.panel.min),
-                         static_cast<int>(row.panel.max), row.panel.format)) {
+    if (widgetChanged(app,
+                      ImGui::SliderInt(row.panel.label, &typed, static_cast<int>(row.panel.min),
+                                       static_cast<int>(row.panel.max), row.panel.format))) {
         double k = s.*row.whole;
-        if (acceptTyped(app, row.panel.label, typed, row.panel.format, k, row.range, k))
-            s.*row.whole = static_cast<int>(k);
+        if (acceptTyped(app, row.panel.label, typed, row.panel.format, k, row.range, k)) {
+            WorldSettings next = s;
+            next.*row.whole = static_cast<int>(k);
+            applyRow(app, row, next);
+        }
     }
 }
 
 // Two sliders (x, y) with no label, then "0" and the preset (the default) and the symbol.
-void pairSlider(App& app, const WorldKey& row, WorldSettings& s) {
-    Vec2& value = s.*row.pair;
+void pairSlider(App& app, const WorldKey& row, const WorldSettings& s) {
+    const Vec2 value = s.*row.pair;
+    WorldSettings next = s;
     float typed[2] = {static_cast<float>(value.x), static_cast<float>(value.y)};
-    if (ImGui::SliderFloat2(("##" + std::string(row.key)).c_str(), typed, row.panel.min,
-                            row.panel.max, row.panel.format)) {
-        // Ctrl+click types a value beyond the slider: any within the limits is taken.
-        acceptTyped2(app, row.panel.label, typed, row.panel.format, value, row.range, value);
-    }
+    // Ctrl+click types a value beyond the slider: any within the limits is taken.
+    if (widgetChanged(app, ImGui::SliderFloat2(("##" + std::string(row.key)).c_str(), typed,
+                                               row.panel.min, row.panel.max, row.panel.format)) &&
+        acceptTyped2(app, row.panel.label, typed, row.panel.format, value, row.range,
+                     next.*row.pair))
+        applyRow(app, row, next);
     tooltip(row.shown.tooltip);
-    ImGui::SameLine();
-    if (uiSmallButton("0")) value = Vec2{};
-    if (ImGui::IsItemActivated()) app.ui.typedWarning.note(row.panel.label, TypedValue{});
-    tooltip(("No " + std::string(row.shown.name)).c_str());
-    ImGui::SameLine();
-    if (uiSmallButton(row.panel.presetLabel)) value = defaultWorldSettings().*row.pair;
-    if (ImGui::IsItemActivated()) app.ui.typedWarning.note(row.panel.label, TypedValue{});
-    tooltip(row.panel.presetTooltip);
+    const std::pair<const char*, Vec2> presets[] = {
+        {"0", Vec2{}}, {row.panel.presetLabel, defaultWorldSettings().*row.pair}};
+    for (const auto& [label, preset] : presets) {
+        ImGui::SameLine();
+        if (uiSmallButton(label)) {
+            next.*row.pair = preset;
+            app.sim.beginGesture();
+            applyRow(app, row, next);
+        }
+        if (ImGui::IsItemActivated()) app.ui.typedWarning.note(row.panel.label, TypedValue{});
+        tooltip(preset == Vec2{} ? ("No " + std::string(row.shown.name)).c_str()
+                                 : row.panel.presetTooltip);
+    }
     ImGui::SameLine();
     ImGui::TextUnformatted(row.shown.symbol);
 }
 
-void nameChecks(const WorldKey& row, WorldSettings& s) {
+void nameChecks(App& app, const WorldKey& row, const WorldSettings& s) {
     ImGui::TextColored(uiDimColor(), "%s", row.panel.label);
     for (int i = 0; i < row.names.count; ++i) {
         const auto bit = static_cast<std::uint8_t>(1u << i);
         bool on = (s.*row.bits & bit) != 0;
-        if (ImGui::Checkbox(row.names.name(i), &on))
-            s.*row.bits = static_cast<std::uint8_t>(on ? s.*row.bits | bit : s.*row.bits & ~bit);
+        if (widgetChanged(app, ImGui::Checkbox(row.names.name(i), &on))) {
+            WorldSettings next = s;
+            next.*row.bits = static_cast<std::uint8_t>(on ? s.*row.bits | bit : s.*row.bits & ~bit);
+            applyRow(app, row, next);
+        }
         if (row.names.note) tooltip((std::string("Slide: \"") + row.names.note(i) + "\"").c_str());
     }
 }
 
 void settingWidget(App& app, const WorldKey& row) {
-    WorldSettings& s = app.sim.world().settings;
+    const WorldSettings& s = app.sim.world().settings;
     using settings_table::Kind;
     switch (row.kind) {
     case Kind::Choice:
-        choiceCombo(row, s, app.ui.touchUi);
+        choiceCombo(app, row, s);
         break;
     case Kind::Number:
         numberSlider(app, row, s);
@@ -115,11 +158,17 @@ void settingWidget(App& app, const WorldKey& row) {
         pairSlider(app, row, s);
         break;
     case Kind::NameSet:
-        nameChecks(row, s);
+        nameChecks(app, row, s);
         break;
-    case Kind::Flag:
-        ImGui::Checkbox(row.panel.label, &(s.*row.flag));
+    case Kind::Flag: {
+        bool on = s.*row.flag;
+        if (widgetChanged(app, ImGui::Checkbox(row.panel.label, &on))) {
+            WorldSettings next = s;
+            next.*row.flag = on;
+            applyRow(app, row, next);
+        }
         break;
+    }
     }
     if (row.kind != Kind::Pair && *row.shown.tooltip) tooltip(row.shown.tooltip);
     typedWarning(app, row.panel.label);
@@ -131,17 +180,26 @@ void settingWidgets(App& app, settings_table::Section section) {
         if (row->panel.section == section) settingWidget(app, *row);
 }
 
+// ---- The selected block: each field an edit of it ----
+
+// Block `i`'s field `key` set to `value` (a scene file's form), part of the widget's gesture
+// while it is held; a refusal shows under the field (`label`).
+void applyField(App& app, int i, const char* key, const nlohmann::json& value, const char* label) {
+    const EditError error =
+        app.sim.apply(Edit::setBlock({i, ""}, key, value), ImGui::IsItemActive());
+    if (!error.empty()) app.ui.typedWarning.note(label, TypedValue{false, 0.0, error.text()});
+}
+
 // The selected block's own constant force [fx, fy] (N): a thruster that is always on.
-void blockForceField(App& app, Block& b) {
+void blockForceField(App& app, int i, const Block& b) {
     const settings_table::BlockKey& row = settings_table::blockKey("force");
     float f[2] = {static_cast<float>(b.force.x), static_cast<float>(b.force.y)};
     Vec2 force = b.force;
-    if (ImGui::DragFloat2(row.label, f, 0.05f, -1000.0f, 1000.0f, row.sliderFormat) &&
+    if (widgetChanged(
+            app, ImGui::DragFloat2(row.label, f, 0.05f, -1000.0f, 1000.0f, row.sliderFormat)) &&
         acceptTyped2(app, row.label, f, row.sliderFormat, b.force, row.range, force) &&
-        acceptAcceleration(app, row.label, force, b.mass)) {
-        b.force = force;
-        app.sim.noteEdit(true);
-    }
+        acceptAcceleration(app, row.label, force, b.mass))
+        applyField(app, i, row.key, {force.x, force.y}, row.label);
     tooltip(row.tooltip);
     typedWarning(app, row.label);
 }
@@ -205,7 +263,7 @@ void selectedSection(App& app) {
         ImGui::TextColored(uiDimColor(), "Double-click empty space to add one.");
         return;
     }
-    Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
+    const Block b = app.sim.world().blocks[static_cast<std::size_t>(i)];
     ImGui::Text("%s", app.sim.blockDisplayName(i).c_str());
     int kind = static_cast<int>(b.kind);
     bool changed = ImGui::RadioButton("dynamic", &kind, 0);
@@ -213,46 +271,44 @@ void selectedSection(App& app) {
     changed |= ImGui::RadioButton("static", &kind, 1);
     ImGui::SameLine();
     changed |= ImGui::RadioButton("kinematic", &kind, 2);
-    if (changed) app.sim.setBlockKind(i, static_cast<BodyKind>(kind));
+    if (changed) {
+        app.sim.beginGesture();
+        app.sim.setBlockKind(i, static_cast<BodyKind>(kind));
+    }
     if (b.isDynamic()) {
         const settings_table::BlockKey& massRow = settings_table::blockKey("mass");
         float mass = static_cast<float>(b.mass);
         double newMass = b.mass;
-        if (ImGui::SliderFloat(massRow.label, &mass, 0.01f, 1000.0f, massRow.sliderFormat,
-                               ImGuiSliderFlags_Logarithmic) &&
+        if (widgetChanged(app,
+                          ImGui::SliderFloat(massRow.label, &mass, 0.01f, 1000.0f,
+                                             massRow.sliderFormat, ImGuiSliderFlags_Logarithmic)) &&
             acceptTyped(app, massRow.label, mass, massRow.sliderFormat, b.mass, massRow.range,
                         newMass) &&
-            acceptAcceleration(app, massRow.label, b.force, newMass)) {
-            b.mass = newMass;
-            app.sim.noteEdit(true);
-        }
+            acceptAcceleration(app, massRow.label, b.force, newMass))
+            applyField(app, i, massRow.key, newMass, massRow.label);
         typedWarning(app, massRow.label);
-        blockForceField(app, b);
+        blockForceField(app, i, b);
     } else {
         ImGui::TextColored(uiDimColor(), "mass: infinite");
     }
     const settings_table::BlockKey& sizeRow = settings_table::blockKey("size");
     float size[2] = {static_cast<float>(b.size.x), static_cast<float>(b.size.y)};
-    if (ImGui::DragFloat2(sizeRow.label, size, 0.02f, 0.05f, 50.0f, sizeRow.sliderFormat)) {
-        Vec2 wanted = b.size;
-        if (acceptTyped2(app, sizeRow.label, size, sizeRow.sliderFormat, b.size, sizeRow.range,
-                         wanted) &&
-            !app.sim.setBlockSize(i, wanted)) {
-            app.ui.typedWarning.note(
-                sizeRow.label,
-                {false, 0.0, "size: that size would overlap another block or a wall"});
-        }
-    }
+    Vec2 wanted = b.size;
+    if (widgetChanged(app, ImGui::DragFloat2(sizeRow.label, size, 0.02f, 0.05f, 50.0f,
+                                             sizeRow.sliderFormat)) &&
+        acceptTyped2(app, sizeRow.label, size, sizeRow.sliderFormat, b.size, sizeRow.range,
+                     wanted))
+        applyField(app, i, sizeRow.key, {wanted.x, wanted.y}, sizeRow.label);
     typedWarning(app, sizeRow.label);
     if (b.kind != BodyKind::Static) {
         const settings_table::BlockKey& velocityRow = settings_table::blockKey("velocity");
         float v[2] = {static_cast<float>(b.velocity.x), static_cast<float>(b.velocity.y)};
-        if (ImGui::DragFloat2(velocityRow.label, v, 0.05f, -1000.0f, 1000.0f,
-                              velocityRow.sliderFormat) &&
+        Vec2 velocity = b.velocity;
+        if (widgetChanged(app, ImGui::DragFloat2(velocityRow.label, v, 0.05f, -1000.0f, 1000.0f,
+                                                 velocityRow.sliderFormat)) &&
             acceptTyped2(app, velocityRow.label, v, velocityRow.sliderFormat, b.velocity,
-                         velocityRow.range, b.velocity)) {
-            app.sim.noteEdit(true);
-        }
+                         velocityRow.range, velocity))
+            applyField(app, i, velocityRow.key, {velocity.x, velocity.y}, velocityRow.label);
         typedWarning(app, velocityRow.label);
     }
     ImGui::TextColored(uiDimColor(), "position (%.2f, %.2f) m", b.position.x, b.position.y);

@@ -1,0 +1,114 @@
+#include "edit_words.h"
+
+#include "scene.h"
+#include "scene_json.h"
+#include "settings_table.h"
+
+#include <cstdio>
+#include <cstring>
+
+namespace {
+
+using json = nlohmann::json;
+
+// `value` by a printf format with one number in it ("%.2f", "%.0f Hz").
+std::string printed(const char* format, double value) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, format, value);
+    return buf;
+}
+
+// A pair by a format of one number and a unit ("%.2f m/s": "(3.00, 0.00) m/s") or of two
+// ("(%.2f, %.2f) m").
+std::string printedPair(const std::string& format, Vec2 v) {
+    const std::size_t first = format.find('%');
+    if (format.find('%', first + 1) != std::string::npos) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, format.c_str(), v.x, v.y);
+        return buf;
+    }
+    const std::size_t end = format.find_first_of("fgeGEd", first);
+    const std::string number = format.substr(0, end + 1), unit = format.substr(end + 1);
+    return "(" + printed(number.c_str(), v.x) + ", " + printed(number.c_str(), v.y) + ")" + unit;
+}
+
+// A world setting with the panel's digits: "0.90", "60 Hz", "(0.00, -9.81) m/s²", "turn-based".
+std::string settingText(const settings_table::WorldKey& row, const WorldSettings& s) {
+    using settings_table::Kind;
+    const char* format = *row.panel.format ? row.panel.format : "%.6g";
+    switch (row.kind) {
+    case Kind::Number: {
+        const double v = s.*row.number;
+        return printed(format, row.shown.asRate ? 1.0 / v : v);
+    }
+    case Kind::Pair:
+        return printedPair(format, s.*row.pair) + " " + settings_table::shownUnit(row);
+    case Kind::NameSet:
+        return settings_table::isNone(row, s) ? "none" : settings_table::setNames(row, s, ", ");
+    case Kind::Whole:
+    case Kind::Choice:
+    case Kind::Flag:
+        break;
+    }
+    return settings_table::logValue(row, s);
+}
+
+// A block's field with the panel's digits: "4 kg", "(3.00, 0.00) m/s", "static".
+std::string fieldText(const settings_table::BlockKey& row, const BlockDef& def) {
+    const json block = blockJson(def);
+    if (!block.contains(row.key)) return "none";
+    const json& value = block[row.key];
+    if (!*row.sliderFormat || value.is_string()) return scene_json::dumpValue(value);
+    if (value.is_number()) return printed(row.sliderFormat, value.get<double>());
+    return printedPair(row.sliderFormat, {value[0].get<double>(), value[1].get<double>()});
+}
+
+std::string blockName(const std::vector<BlockLabel>& labels, int index) {
+    const auto i = static_cast<std::size_t>(index);
+    return i < labels.size() && !labels[i].name.empty() ? labels[i].name
+                                                        : refText(BlockRef{index, ""});
+}
+
+} // namespace
+
+std::string editLogLine(const Edit& logged, const World& world) {
+    switch (logged.kind) {
+    case Edit::Kind::SetWorld:
+        if (const settings_table::WorldKey* row = settings_table::findWorldKey(logged.key))
+            return logged.key + ": " + settings_table::logValue(*row, world.settings);
+        break;
+    case Edit::Kind::SetBlock:
+        return editKey(logged) + ": " + scene_json::dumpValue(logged.value);
+    case Edit::Kind::Add:
+        return "add: blocks[" + std::to_string(world.blocks.size() - 1) + "]";
+    case Edit::Kind::Remove:
+        return "remove: " + refText(logged.block);
+    }
+    return editKey(logged);
+}
+
+std::string editChangeText(const AppliedEdit& a, bool undone,
+                           const std::vector<BlockLabel>& labels) {
+    const std::string arrow = " -> ";
+    switch (a.edit.kind) {
+    case Edit::Kind::SetWorld: {
+        const settings_table::WorldKey* row = settings_table::findWorldKey(a.edit.key);
+        if (!row) break;
+        const std::string before = settingText(*row, a.settingsBefore);
+        const std::string after = settingText(*row, a.settingsAfter);
+        return std::string(row->shown.name) + " " +
+               (undone ? after + arrow + before : before + arrow + after);
+    }
+    case Edit::Kind::SetBlock: {
+        const settings_table::BlockKey& row = settings_table::blockKey(a.edit.key.c_str());
+        const std::string before = fieldText(row, a.before), after = fieldText(row, a.after);
+        return blockName(labels, a.index) + " " + row.key + " " +
+               (undone ? after + arrow + before : before + arrow + after);
+    }
+    case Edit::Kind::Add: // "undo: add new 4"
+        return "add " + (a.after.name.empty() ? refText({a.index, ""}) : a.after.name);
+    case Edit::Kind::Remove:
+        return "remove " + (a.before.name.empty() ? refText({a.index, ""}) : a.before.name);
+    }
+    return editKey(a.edit);
+}
