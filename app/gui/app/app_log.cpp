@@ -1,5 +1,6 @@
 #include "app_log.h"
 
+#include "panel_rows.h"
 #include "settings_table.h"
 
 #include <cstdio>
@@ -50,7 +51,7 @@ std::vector<std::string> describeChanges(const LoggedState& a, const LoggedState
     }
     if (a.trailLength > 0 && b.trailLength == 0) out.push_back("trails cleared");
     if (a.uiVisible != b.uiVisible) out.push_back("ui: " + onOff(b.uiVisible));
-    for (const settings_table::WorldKey* row : settings_table::shownOrder()) {
+    for (const settings_table::WorldKey* row : panelOrder()) {
         if (!settings_table::same(*row, a.settings, b.settings))
             out.push_back(row->key + std::string(": ") +
                           settings_table::logValue(*row, b.settings));

@@ -3,6 +3,7 @@
 
 #include "app.h"
 #include "input_map.h"
+#include "panel_rows.h"
 #include "settings_table.h"
 #include "typed_field.h"
 #include "ui_style.h"
@@ -18,9 +19,9 @@ namespace {
 
 using settings_table::WorldKey;
 
-void choiceCombo(const WorldKey& row, WorldSettings& s, bool touch) {
+void choiceCombo(const WorldKey& row, const PanelRow& panel, WorldSettings& s, bool touch) {
     const int current = row.getChoice(s);
-    const std::string label = keyedLabel(row.panel.label, actionOfControl(row.key), touch);
+    const std::string label = keyedLabel(panel.label, actionOfControl(row.key), touch);
     if (ImGui::BeginCombo(label.c_str(), row.names.name(current))) {
         uiBeginRows();
         for (int i = 0; i < row.names.count; ++i) {
@@ -34,15 +35,15 @@ void choiceCombo(const WorldKey& row, WorldSettings& s, bool touch) {
 
 // A slider; a typed value (Ctrl+click) within the row's range is taken. A rate (dt) is shown
 // and typed as 1/value.
-void numberSlider(App& app, const WorldKey& row, WorldSettings& s) {
+void numberSlider(App& app, const WorldKey& row, const PanelRow& panel, WorldSettings& s) {
     double& value = s.*row.number;
     const double shown = row.shown.asRate ? 1.0 / value : value;
     float typed = static_cast<float>(shown);
     const float width = ImGui::CalcItemWidth();
-    if (ImGui::SliderFloat(row.panel.label, &typed, row.panel.min, row.panel.max, row.panel.format,
-                           row.panel.logarithmic ? ImGuiSliderFlags_Logarithmic : 0)) {
+    if (ImGui::SliderFloat(panel.label, &typed, panel.min, panel.max, panel.format,
+                           panel.logarithmic ? ImGuiSliderFlags_Logarithmic : 0)) {
         double taken = shown;
-        if (acceptTyped(app, row.panel.label, typed, row.panel.format, shown,
+        if (acceptTyped(app, panel.label, typed, panel.format, shown,
                         row.shown.asRate ? row.shown.rateRange : row.range, taken))
             value = row.shown.asRate ? 1.0 / taken : taken;
     }
@@ -55,40 +56,40 @@ void numberSlider(App& app, const WorldKey& row, WorldSettings& s) {
     }
 }
 
-void wholeSlider(App& app, const WorldKey& row, WorldSettings& s) {
+void wholeSlider(App& app, const WorldKey& row, const PanelRow& panel, WorldSettings& s) {
     int typed = s.*row.whole;
-    if (ImGui::SliderInt(row.panel.label, &typed, static_cast<int>(row.panel.min),
-                         static_cast<int>(row.panel.max), row.panel.format)) {
+    if (ImGui::SliderInt(panel.label, &typed, static_cast<int>(panel.min),
+                         static_cast<int>(panel.max), panel.format)) {
         double k = s.*row.whole;
-        if (acceptTyped(app, row.panel.label, typed, row.panel.format, k, row.range, k))
+        if (acceptTyped(app, panel.label, typed, panel.format, k, row.range, k))
             s.*row.whole = static_cast<int>(k);
     }
 }
 
 // Two sliders (x, y) with no label, then "0" and the preset (the default) and the symbol.
-void pairSlider(App& app, const WorldKey& row, WorldSettings& s) {
+void pairSlider(App& app, const WorldKey& row, const PanelRow& panel, WorldSettings& s) {
     Vec2& value = s.*row.pair;
     float typed[2] = {static_cast<float>(value.x), static_cast<float>(value.y)};
-    if (ImGui::SliderFloat2(("##" + std::string(row.key)).c_str(), typed, row.panel.min,
-                            row.panel.max, row.panel.format)) {
+    if (ImGui::SliderFloat2(("##" + std::string(row.key)).c_str(), typed, panel.min, panel.max,
+                            panel.format)) {
         // Ctrl+click types a value beyond the slider: any within the limits is taken.
-        acceptTyped2(app, row.panel.label, typed, row.panel.format, value, row.range, value);
+        acceptTyped2(app, panel.label, typed, panel.format, value, row.range, value);
     }
-    tooltip(row.shown.tooltip);
+    tooltip(panel.tooltip);
     ImGui::SameLine();
     if (uiSmallButton("0")) value = Vec2{};
-    if (ImGui::IsItemActivated()) app.ui.typedWarning.note(row.panel.label, TypedValue{});
+    if (ImGui::IsItemActivated()) app.ui.typedWarning.note(panel.label, TypedValue{});
     tooltip(("No " + std::string(row.shown.name)).c_str());
     ImGui::SameLine();
-    if (uiSmallButton(row.panel.presetLabel)) value = defaultWorldSettings().*row.pair;
-    if (ImGui::IsItemActivated()) app.ui.typedWarning.note(row.panel.label, TypedValue{});
-    tooltip(row.panel.presetTooltip);
+    if (uiSmallButton(panel.presetLabel)) value = defaultWorldSettings().*row.pair;
+    if (ImGui::IsItemActivated()) app.ui.typedWarning.note(panel.label, TypedValue{});
+    tooltip(panel.presetTooltip);
     ImGui::SameLine();
     ImGui::TextUnformatted(row.shown.symbol);
 }
 
-void nameChecks(const WorldKey& row, WorldSettings& s) {
-    ImGui::TextColored(uiDimColor(), "%s", row.panel.label);
+void nameChecks(const WorldKey& row, const PanelRow& panel, WorldSettings& s) {
+    ImGui::TextColored(uiDimColor(), "%s", panel.label);
     for (int i = 0; i < row.names.count; ++i) {
         const auto bit = static_cast<std::uint8_t>(1u << i);
         bool on = (s.*row.bits & bit) != 0;
@@ -98,59 +99,61 @@ void nameChecks(const WorldKey& row, WorldSettings& s) {
     }
 }
 
-void settingWidget(App& app, const WorldKey& row) {
+void settingWidget(App& app, const WorldKey& row, const PanelRow& panel) {
     WorldSettings& s = app.sim.world().settings;
     using settings_table::Kind;
     switch (row.kind) {
     case Kind::Choice:
-        choiceCombo(row, s, app.ui.touchUi);
+        choiceCombo(row, panel, s, app.ui.touchUi);
         break;
     case Kind::Number:
-        numberSlider(app, row, s);
+        numberSlider(app, row, panel, s);
         break;
     case Kind::Whole:
-        wholeSlider(app, row, s);
+        wholeSlider(app, row, panel, s);
         break;
     case Kind::Pair:
-        pairSlider(app, row, s);
+        pairSlider(app, row, panel, s);
         break;
     case Kind::NameSet:
-        nameChecks(row, s);
+        nameChecks(row, panel, s);
         break;
     case Kind::Flag:
-        ImGui::Checkbox(row.panel.label, &(s.*row.flag));
+        ImGui::Checkbox(panel.label, &(s.*row.flag));
         break;
     }
-    if (row.kind != Kind::Pair && *row.shown.tooltip) tooltip(row.shown.tooltip);
-    typedWarning(app, row.panel.label);
+    if (row.kind != Kind::Pair && *panel.tooltip) tooltip(panel.tooltip);
+    typedWarning(app, panel.label);
 }
 
 // The rows of one section of the panel, in its order.
-void settingWidgets(App& app, settings_table::Section section) {
-    for (const WorldKey* row : settings_table::shownOrder())
-        if (row->panel.section == section) settingWidget(app, *row);
+void settingWidgets(App& app, PanelSection section) {
+    for (const WorldKey* row : panelOrder())
+        if (const PanelRow* panel = panelRowOf(*row); panel && panel->section == section)
+            settingWidget(app, *row, *panel);
 }
 
 // The selected block's own constant force [fx, fy] (N): a thruster that is always on.
 void blockForceField(App& app, Block& b) {
     const settings_table::BlockKey& row = settings_table::blockKey("force");
+    const BlockPanelRow& panel = blockPanelRow("force");
     float f[2] = {static_cast<float>(b.force.x), static_cast<float>(b.force.y)};
     Vec2 force = b.force;
-    if (ImGui::DragFloat2(row.label, f, 0.05f, -1000.0f, 1000.0f, row.sliderFormat) &&
-        acceptTyped2(app, row.label, f, row.sliderFormat, b.force, row.range, force) &&
-        acceptAcceleration(app, row.label, force, b.mass)) {
+    if (ImGui::DragFloat2(panel.label, f, 0.05f, -1000.0f, 1000.0f, panel.format) &&
+        acceptTyped2(app, panel.label, f, panel.format, b.force, row.range, force) &&
+        acceptAcceleration(app, panel.label, force, b.mass)) {
         b.force = force;
         app.sim.noteEdit(true);
     }
-    tooltip(row.tooltip);
-    typedWarning(app, row.label);
+    tooltip(panel.tooltip);
+    typedWarning(app, panel.label);
 }
 
 } // namespace
 
 void simulationSection(App& app) {
     if (!ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    settingWidgets(app, settings_table::Section::Simulation);
+    settingWidgets(app, PanelSection::Simulation);
     if (app.log.verbose) app.log.layoutLogged = true;
     float scale = static_cast<float>(app.sim.timeScale);
     if (ImGui::SliderFloat("time scale", &scale, 0.05f, 4.0f, "%.2fx",
@@ -165,11 +168,11 @@ void physicsSection(App& app) {
     // Opens for a scene that uses it (thruster, feather and stone, the mistakes), else closed.
     const std::string scene = app.sim.scenePath + "\n" + app.sim.scene.name;
     if (scene != app.ui.physicsFollowedScene) {
-        ImGui::SetNextItemOpen(app.sim.usesPhysicsSection(), ImGuiCond_Always);
+        ImGui::SetNextItemOpen(usesPhysicsSection(app.sim), ImGuiCond_Always);
         app.ui.physicsFollowedScene = scene;
     }
     if (!ImGui::CollapsingHeader("Physics")) return;
-    settingWidgets(app, settings_table::Section::Physics);
+    settingWidgets(app, PanelSection::Physics);
     ImGui::Separator();
     ImGui::Checkbox("Thrust (arrow keys)", &app.sim.thrust.on);
     tooltip("Hold the arrow keys to push the selected block with the thrust force (added to its "
@@ -216,44 +219,47 @@ void selectedSection(App& app) {
     if (changed) app.sim.setBlockKind(i, static_cast<BodyKind>(kind));
     if (b.isDynamic()) {
         const settings_table::BlockKey& massRow = settings_table::blockKey("mass");
+        const BlockPanelRow& massPanel = blockPanelRow("mass");
         float mass = static_cast<float>(b.mass);
         double newMass = b.mass;
-        if (ImGui::SliderFloat(massRow.label, &mass, 0.01f, 1000.0f, massRow.sliderFormat,
+        if (ImGui::SliderFloat(massPanel.label, &mass, 0.01f, 1000.0f, massPanel.format,
                                ImGuiSliderFlags_Logarithmic) &&
-            acceptTyped(app, massRow.label, mass, massRow.sliderFormat, b.mass, massRow.range,
+            acceptTyped(app, massPanel.label, mass, massPanel.format, b.mass, massRow.range,
                         newMass) &&
-            acceptAcceleration(app, massRow.label, b.force, newMass)) {
+            acceptAcceleration(app, massPanel.label, b.force, newMass)) {
             b.mass = newMass;
             app.sim.noteEdit(true);
         }
-        typedWarning(app, massRow.label);
+        typedWarning(app, massPanel.label);
         blockForceField(app, b);
     } else {
         ImGui::TextColored(uiDimColor(), "mass: infinite");
     }
     const settings_table::BlockKey& sizeRow = settings_table::blockKey("size");
+    const BlockPanelRow& sizePanel = blockPanelRow("size");
     float size[2] = {static_cast<float>(b.size.x), static_cast<float>(b.size.y)};
-    if (ImGui::DragFloat2(sizeRow.label, size, 0.02f, 0.05f, 50.0f, sizeRow.sliderFormat)) {
+    if (ImGui::DragFloat2(sizePanel.label, size, 0.02f, 0.05f, 50.0f, sizePanel.format)) {
         Vec2 wanted = b.size;
-        if (acceptTyped2(app, sizeRow.label, size, sizeRow.sliderFormat, b.size, sizeRow.range,
+        if (acceptTyped2(app, sizePanel.label, size, sizePanel.format, b.size, sizeRow.range,
                          wanted) &&
             !app.sim.setBlockSize(i, wanted)) {
             app.ui.typedWarning.note(
-                sizeRow.label,
+                sizePanel.label,
                 {false, 0.0, "size: that size would overlap another block or a wall"});
         }
     }
-    typedWarning(app, sizeRow.label);
+    typedWarning(app, sizePanel.label);
     if (b.kind != BodyKind::Static) {
         const settings_table::BlockKey& velocityRow = settings_table::blockKey("velocity");
+        const BlockPanelRow& velocityPanel = blockPanelRow("velocity");
         float v[2] = {static_cast<float>(b.velocity.x), static_cast<float>(b.velocity.y)};
-        if (ImGui::DragFloat2(velocityRow.label, v, 0.05f, -1000.0f, 1000.0f,
-                              velocityRow.sliderFormat) &&
-            acceptTyped2(app, velocityRow.label, v, velocityRow.sliderFormat, b.velocity,
+        if (ImGui::DragFloat2(velocityPanel.label, v, 0.05f, -1000.0f, 1000.0f,
+                              velocityPanel.format) &&
+            acceptTyped2(app, velocityPanel.label, v, velocityPanel.format, b.velocity,
                          velocityRow.range, b.velocity)) {
             app.sim.noteEdit(true);
         }
-        typedWarning(app, velocityRow.label);
+        typedWarning(app, velocityPanel.label);
     }
     ImGui::TextColored(uiDimColor(), "position (%.2f, %.2f) m", b.position.x, b.position.y);
     if (ImGui::Button("Delete block")) deleteSelected(app);
