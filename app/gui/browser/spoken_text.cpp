@@ -28,10 +28,10 @@ SpokenScreen spokenScreen(const App& app) {
         s.lesson = "Lesson: " + app.lesson.lesson->name + ", step " +
                    std::to_string(app.lesson.current + 1) + " of " +
                    std::to_string(app.lesson.lesson->steps.size()) + ": " + step->title;
-        s.caption = oneLine(step->caption);
-        if (!step->question.empty()) {
-            s.question = oneLine(step->question);
-            if (app.lesson.revealed) s.answer = oneLine(step->answer);
+        for (const LessonLine& line : lessonCaption(app.lesson)) { // as the caption bar says
+            if (line.kind == LessonLine::Kind::Caption) s.caption = oneLine(line.text);
+            if (line.kind == LessonLine::Kind::Question) s.question = oneLine(line.text);
+            if (line.kind == LessonLine::Kind::Answer) s.answer = oneLine(line.text);
         }
     }
     const long long n = app.sim.run.totals.collisions;

@@ -12,10 +12,13 @@ struct SpokenScreen {
     std::string scene;       // the scene's name
     std::string description; // the scene's description
     std::string lesson;      // "Lesson: Lecture 3, step 3 of 24: title"; "" without a lesson
-    std::string caption;     // the step's caption (its lines joined)
-    std::string question;    // the step's question, while it waits for its answer
-    std::string answer;      // the answer, once revealed
-    std::string status;      // "perfect method, t = 0.62 s, paused, 1 collision"
+    // The caption bar's lines (lessonCaption, each on one line): the step's caption,
+    // "Predict: " and its question while it waits for its answer, "Answer: " and the answer
+    // once revealed (then no question, as on the bar).
+    std::string caption;
+    std::string question;
+    std::string answer;
+    std::string status; // "perfect method, t = 0.62 s, paused, 1 collision"
     bool operator==(const SpokenScreen& o) const;
     bool operator!=(const SpokenScreen& o) const { return !(*this == o); }
 };

@@ -205,14 +205,26 @@ std::string lessonHint(const LessonSession& session) {
     return "";
 }
 
-std::string lessonCaption(const LessonSession& session) {
+std::vector<LessonLine> lessonCaption(const LessonSession& session) {
     const LessonStep* step = session.step();
-    if (!step) return "";
-    std::string text = step->caption;
-    if (!step->question.empty())
-        text += session.revealed ? "\nAnswer: " + step->answer : "\nPredict: " + step->question;
+    if (!step) return {};
+    using Kind = LessonLine::Kind;
+    std::vector<LessonLine> lines{{Kind::Caption, step->caption}};
+    if (!step->question.empty()) {
+        if (session.revealed)
+            lines.push_back({Kind::Answer, "Answer: " + step->answer});
+        else
+            lines.push_back({Kind::Question, "Predict: " + step->question});
+    }
     const std::string hint = lessonHint(session);
-    if (!hint.empty()) text += "\n" + hint;
-    if (!session.digits.empty()) text += "\nGo to step " + session.digits + " (Enter)";
+    if (!hint.empty()) lines.push_back({Kind::Hint, hint});
+    if (!session.digits.empty())
+        lines.push_back({Kind::GoTo, "Go to step " + session.digits + " (Enter)"});
+    return lines;
+}
+
+std::string captionText(const std::vector<LessonLine>& lines) {
+    std::string text;
+    for (const LessonLine& line : lines) text += (text.empty() ? "" : "\n") + line.text;
     return text;
 }

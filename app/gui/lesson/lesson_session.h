@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 struct LessonSession {
     // Predict, then observe: a step opens paused at its setup (t = 0) with its question; the
@@ -86,6 +87,17 @@ void lessonAfterFrames(LessonSession& s, SimulationSession& sim, View& view);
 std::string lessonHeading(const LessonSession& session);
 // The key to press next, by phase ("PageDown: play" at the setup); "" at the moment.
 std::string lessonHint(const LessonSession& session);
-// The caption bar's text under it: the caption, then "Predict: " and the question or "Answer: "
-// and its answer, then the hint.
-std::string lessonCaption(const LessonSession& session);
+// A line of the caption bar under its heading, as shown.
+struct LessonLine {
+    enum class Kind : std::uint8_t { Caption, Question, Answer, Hint, GoTo };
+    Kind kind;
+    std::string text; // "Predict: " and the question, "Answer: " and the answer, ...
+};
+// The caption bar's lines under its heading, composed here once: the bar draws them (each kind
+// in its colour), the browser page's text reads them (spoken_text.h), the tests check them. The
+// step's caption; then "Predict: " and its question until the answer is revealed, "Answer: " and
+// the answer after; the key to press next (lessonHint); a step number being typed. None without
+// a step.
+std::vector<LessonLine> lessonCaption(const LessonSession& session);
+// The lines' texts, one per line.
+std::string captionText(const std::vector<LessonLine>& lines);

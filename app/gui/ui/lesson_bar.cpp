@@ -54,18 +54,23 @@ void drawLessonCaption(App& app) {
     else
         ImGui::TextColored(uiDimColor(), "   %s", status.c_str());
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(step->caption.c_str());
-    if (!step->question.empty()) {
-        if (s.revealed) {
-            ImGui::TextColored(uiNoteColor(), "Answer: %s", step->answer.c_str());
-        } else {
-            ImGui::TextColored(uiQuestionColor(), "Predict: %s", step->question.c_str());
+    for (const LessonLine& line : lessonCaption(s)) {
+        switch (line.kind) {
+        case LessonLine::Kind::Caption:
+            ImGui::TextUnformatted(line.text.c_str());
+            break;
+        case LessonLine::Kind::Question:
+            ImGui::TextColored(uiQuestionColor(), "%s", line.text.c_str());
+            break;
+        case LessonLine::Kind::Answer:
+            ImGui::TextColored(uiNoteColor(), "%s", line.text.c_str());
+            break;
+        case LessonLine::Kind::Hint:
+        case LessonLine::Kind::GoTo:
+            ImGui::TextColored(uiDimColor(), "%s", line.text.c_str());
+            break;
         }
     }
-    const std::string hint = lessonHint(s);
-    if (!hint.empty()) ImGui::TextColored(uiDimColor(), "%s", hint.c_str());
-    if (!s.digits.empty())
-        ImGui::TextColored(uiDimColor(), "Go to step %s (Enter)", s.digits.c_str());
     ImGui::PopTextWrapPos();
     ImGui::PopFont();
     app.view.captionHeight = ImGui::GetWindowHeight();

@@ -5,6 +5,7 @@
 #include "inspector_format.h"
 #include "lesson_runner.h"
 #include "lesson_session.h"
+#include "spoken_text.h"
 
 #include <gtest/gtest.h>
 
@@ -60,10 +61,10 @@ TEST(LessonSession, EveryStepOpensAtItsSetupAndPlaysToItsMoment) {
         EXPECT_TRUE(app.sim.paused) << step.title;
         EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Setup) << step.title;
         if (!step.question.empty()) {
-            EXPECT_NE(lessonCaption(app.lesson).find("Predict: " + step.question),
+            EXPECT_NE(captionText(lessonCaption(app.lesson)).find("Predict: " + step.question),
                       std::string::npos)
                 << step.title;
-            EXPECT_EQ(lessonCaption(app.lesson).find("Answer: "), std::string::npos);
+            EXPECT_EQ(captionText(lessonCaption(app.lesson)).find("Answer: "), std::string::npos);
         }
         if (step.pause.kind == LessonPause::Kind::None) continue;
         const StepRun run = runStepToPause(step);
@@ -77,7 +78,8 @@ TEST(LessonSession, EveryStepOpensAtItsSetupAndPlaysToItsMoment) {
         EXPECT_EQ(stateHash(app.sim.world()), stateHash(run.world)) << step.title;
         EXPECT_EQ(app.lesson.current, i); // still this step
         if (!step.question.empty()) {
-            EXPECT_NE(lessonCaption(app.lesson).find("Answer: " + step.answer), std::string::npos)
+            EXPECT_NE(captionText(lessonCaption(app.lesson)).find("Answer: " + step.answer),
+                      std::string::npos)
                 << step.title;
         }
         // Playing on does not stop again.
@@ -85,6 +87,49 @@ TEST(LessonSession, EveryStepOpensAtItsSetupAndPlaysToItsMoment) {
         advanceSimulation(app, 1.0 / 60.0);
         EXPECT_FALSE(app.sim.paused) << step.title;
     }
+}
+
+// The caption is composed once (lessonCaption): the page's text for a screen reader says what the
+// bar says, line for line, at the setup (the question) and at the moment (the answer, no question).
+TEST(LessonSession, ThePageReadsTheCaptionTheBarDraws) {
+    App app = lessonApp();
+    const Lesson& lesson = *app.lesson.lesson;
+    auto flat = [](std::string text) { // the page's text is one line
+        for (char& c : text)
+            if (c == '\n') c = ' ';
+        return text;
+    };
+    auto lineOf = [&](const std::vector<LessonLine>& lines, LessonLine::Kind kind) {
+        for (const LessonLine& line : lines)
+            if (line.kind == kind) return flat(line.text);
+        return std::string();
+    };
+    int questions = 0;
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+        const LessonStep& step = lesson.steps[i];
+        ASSERT_TRUE(enterStep(app, i));
+        for (int moment = 0; moment < 2; ++moment) {
+            if (moment) lessonShowPausePoint(app);
+            const std::vector<LessonLine> lines = lessonCaption(app.lesson);
+            const SpokenScreen spoken = spokenScreen(app);
+            ASSERT_FALSE(lines.empty());
+            EXPECT_EQ(lines[0].kind, LessonLine::Kind::Caption);
+            EXPECT_EQ(spoken.caption, flat(step.caption)) << step.title;
+            EXPECT_EQ(spoken.question, lineOf(lines, LessonLine::Kind::Question)) << step.title;
+            EXPECT_EQ(spoken.answer, lineOf(lines, LessonLine::Kind::Answer)) << step.title;
+            if (step.question.empty()) {
+                EXPECT_EQ(spoken.question + spoken.answer, "") << step.title;
+            } else if (moment) {
+                EXPECT_EQ(spoken.question, "") << step.title;
+                EXPECT_EQ(spoken.answer, flat("Answer: " + step.answer)) << step.title;
+            } else {
+                ++questions;
+                EXPECT_EQ(spoken.question, flat("Predict: " + step.question)) << step.title;
+                EXPECT_EQ(spoken.answer, "") << step.title;
+            }
+        }
+    }
+    EXPECT_GT(questions, 0); // the lecture asks
 }
 
 TEST(LessonSession, KeysWalkThroughTheSteps) {
@@ -118,7 +163,7 @@ TEST(LessonSession, KeysWalkThroughTheSteps) {
 
     lessonTypeDigit(app.lesson, 1);
     lessonTypeDigit(app.lesson, 2);
-    EXPECT_NE(lessonCaption(app.lesson).find("Go to step 12"), std::string::npos);
+    EXPECT_NE(captionText(lessonCaption(app.lesson)).find("Go to step 12"), std::string::npos);
     applyLessonAction(app, Action::LessonJump);
     EXPECT_EQ(app.lesson.current, 11u);
     lessonTypeDigit(app.lesson, 9);
