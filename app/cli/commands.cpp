@@ -4,6 +4,7 @@
 #include "csv.h"
 
 #include "input_limits.h"
+#include "lesson_prompt.h"
 #include "lesson_runner.h"
 #include "printable.h"
 #include "safe_file.h"
@@ -335,6 +336,12 @@ int validateCommand(const std::string& path, std::ostream& out, std::ostream& er
 
 namespace {
 
+// A text of several lines as one (its line breaks as spaces), safe to print.
+std::string oneLine(std::string text) {
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    return printable(text, kPrintablePath);
+}
+
 std::string blockLabel(const LessonStep& step, std::size_t b) {
     return step.scene->blocks[b].name.empty() ? "#" + std::to_string(b)
                                               : step.scene->blocks[b].name;
@@ -355,7 +362,26 @@ nlohmann::ordered_json stepJson(std::size_t number, const LessonStep& step, cons
     j["contacts"] = run.progress.contacts;
     j["time_scale"] = step.timeScale;
     j["motion_seconds"] = run.world.time / step.timeScale;
-    j["question"] = step.question;
+    j["event_time"] =
+        run.reached ? nlohmann::ordered_json(run.event.time) : nlohmann::ordered_json();
+    // What the step asks and answers, computed from the run (lesson_prompt.h): the question and
+    // its choices at the setup, the choice the step marks correct, the ones the run proved.
+    const StepPrompt prompt = stepPrompt(step);
+    const StepAnswer answer = stepAnswer(step, run, {}, nullptr);
+    j["question"] = prompt.question;
+    nlohmann::ordered_json choices = nlohmann::ordered_json::array();
+    for (std::size_t c = 0; c < prompt.choices.size(); ++c)
+        choices.push_back({{"letter", choiceLetter(c)}, {"text", prompt.choices[c]}});
+    j["choices"] = std::move(choices);
+    j["correct"] =
+        prompt.correct >= 0
+            ? nlohmann::ordered_json(choiceLetter(static_cast<std::size_t>(prompt.correct)))
+            : nlohmann::ordered_json();
+    nlohmann::ordered_json proved = nlohmann::ordered_json::array();
+    for (const int c : answer.proved) proved.push_back(choiceLetter(static_cast<std::size_t>(c)));
+    j["proved"] = std::move(proved);
+    j["answer"] = answer.text;
+    j["missed"] = answer.missed;
     j["given"] = step.given.size(); // statements of the question checked at the setup
     // The blocks as the setup shows them (t = 0, the question asked), then at the moment.
     const auto blocksJson = [&step](const World& world, bool withSize) {
@@ -404,6 +430,24 @@ int lessonCommand(const std::string& path, std::ostream& out, std::ostream& err,
             << " s (frame " << run.progress.frames << "), " << run.progress.collisions
             << " collisions, " << run.progress.contacts << " contacts, "
             << methodName(run.world.settings.method) << "\n";
+        // The question, its choices (the correct one marked, the ones the run proved) and the
+        // answer, computed from the run (lesson_prompt.h).
+        const StepPrompt prompt = stepPrompt(step);
+        const StepAnswer answer = stepAnswer(step, run, {}, nullptr);
+        if (!prompt.question.empty()) {
+            out << "     Predict: " << oneLine(prompt.question) << "\n";
+            for (std::size_t c = 0; c < prompt.choices.size(); ++c) {
+                const bool proved = std::find(answer.proved.begin(), answer.proved.end(),
+                                              static_cast<int>(c)) != answer.proved.end();
+                out << "       " << choiceLetter(c) << ". " << oneLine(prompt.choices[c])
+                    << (static_cast<int>(c) == prompt.correct ? "  (correct)" : "")
+                    << (proved ? "  (proved)" : "") << "\n";
+            }
+        }
+        if (!answer.missed.empty())
+            out << "     No answer: " << oneLine(answer.missed) << "\n";
+        else if (!answer.text.empty())
+            out << "     Answer: " << oneLine(answer.text) << "\n";
         for (std::size_t b = 0; b < run.world.blocks.size() && b < 12; ++b) {
             const Block& block = run.world.blocks[b];
             out << "     " << std::left << std::setw(14) << printable(blockLabel(step, b))

@@ -6,6 +6,7 @@
 #include "input_limits.h"
 #include "lesson_guards.h"
 #include "lesson_input.h"
+#include "lesson_questions.h"
 #include "printable.h"
 #include "scene_json.h"
 #include "vocabulary.h"
@@ -23,6 +24,7 @@ namespace fs = std::filesystem;
 using json = nlohmann::json;
 using namespace scene_json;
 using namespace lesson_guards;
+using namespace lesson_questions;
 
 namespace {
 
@@ -170,34 +172,6 @@ void loadStepScene(const json& step, const std::string& path, const LessonContex
 
 // ---- Pause point, camera, expectations ----
 
-LessonPause parsePause(const json& value, const std::string& path, const Scene& scene) {
-    requireObject(value, path);
-    checkKeys(value, path, {"time", "collision", "first_collision_of"});
-    if (value.size() != 1)
-        throw ValueError{path, "must have one of \"time\", \"collision\", \"first_collision_of\""};
-    LessonPause pause;
-    if (value.contains("time")) {
-        const std::string p = keyPath(path, "time");
-        pause.kind = LessonPause::Kind::Time;
-        pause.time = number(value["time"], p);
-        if (!(pause.time >= 0.0 && pause.time <= kMaxPauseTime))
-            throw ValueError{p, "must be from 0 to 600 seconds"};
-    } else if (value.contains("collision")) {
-        const std::string p = keyPath(path, "collision");
-        const double k = number(value["collision"], p);
-        if (k != std::floor(k) || k < 1 || k > kMaxPauseCollision)
-            throw ValueError{p, "must be a whole number from 1 to 1000000"};
-        pause.kind = LessonPause::Kind::Collision;
-        pause.collision = static_cast<int>(k);
-    } else {
-        const std::string p = keyPath(path, "first_collision_of");
-        pause.kind = LessonPause::Kind::BlockCollision;
-        pause.block = requireBlock(scene, value["first_collision_of"], p);
-        pause.blockName = value["first_collision_of"].get<std::string>();
-    }
-    return pause;
-}
-
 Bounds parseCamera(const json& value, const std::string& path) {
     const std::vector<double> b = numbers(value, path, 4);
     if (!(b[0] < b[2] && b[1] < b[3]))
@@ -328,13 +302,15 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
     requireObject(value, path);
     checkKeys(value, path,
               {"title", "caption", "scene", "overrides", "overlays", "select", "thrust", "camera",
-               "frame", "pause_at", "question", "answer", "reveal", "given", "expect", "input"});
+               "frame", "pause_at", "values", "question", "choices", "answer", "reveal", "given",
+               "expect", "input"});
     LessonStep step;
     step.place = source + ": " + path;
     if (!value.contains("title")) throw ValueError{path, "missing \"title\""};
     step.title = text(value["title"], keyPath(path, "title"), 1);
     if (!value.contains("caption")) throw ValueError{path, "missing \"caption\""};
-    step.caption = text(value["caption"], keyPath(path, "caption"), kMaxCaptionLines);
+    step.caption = // checked as text here, as a template once the scene's names are known
+        text(value["caption"], keyPath(path, "caption"), kMaxCaptionLines, kMaxTemplateLineChars);
     loadStepScene(value, path, context, cache, step);
     const Scene& scene = *step.scene;
     if (value.contains("overlays"))
@@ -381,14 +357,28 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
                                  " blocks is more than a step may run (1e8 block-steps: blocks x "
                                  "frames x substeps)"};
     }
+    if (value.contains("values"))
+        parseValues(value["values"], keyPath(path, "values"), scene, step);
+    step.captionText = templateText(value["caption"], keyPath(path, "caption"), kMaxCaptionLines,
+                                    scene, step.valueNames);
     if (value.contains("question")) {
-        step.question = text(value["question"], keyPath(path, "question"), kMaxCaptionLines);
+        const std::string p = keyPath(path, "question");
+        step.question = string(value["question"], p);
+        step.questionText =
+            templateText(value["question"], p, kMaxCaptionLines, scene, step.valueNames);
         if (!value.contains("answer")) throw ValueError{path, "a \"question\" needs an \"answer\""};
+        if (!value.contains("choices"))
+            throw ValueError{path, "a \"question\" needs \"choices\" (2 to 4 predictions)"};
+        parseChoices(value["choices"], keyPath(path, "choices"), scene, step);
+    } else if (value.contains("choices")) {
+        throw ValueError{keyPath(path, "choices"), "choices answer a \"question\": needs one"};
     }
     if (value.contains("answer")) {
-        if (!value.contains("question"))
-            throw ValueError{keyPath(path, "answer"), "an answer needs a \"question\""};
-        step.answer = text(value["answer"], keyPath(path, "answer"), kMaxCaptionLines);
+        const std::string p = keyPath(path, "answer");
+        if (!value.contains("question")) throw ValueError{p, "an answer needs a \"question\""};
+        step.answer = string(value["answer"], p);
+        step.answerText =
+            templateText(value["answer"], p, kMaxCaptionLines, scene, step.valueNames);
     }
     if (value.contains("reveal")) {
         if (!value.contains("question"))
@@ -435,6 +425,10 @@ LessonResult lessonFailure(const std::string& where, const std::string& message)
 }
 
 } // namespace
+
+std::string choiceLetter(std::size_t index) {
+    return std::string(1, static_cast<char>('A' + index));
+}
 
 const char* quantityName(LessonExpect::Quantity q) {
     for (const QuantityKey& k : kQuantities)
@@ -486,8 +480,10 @@ std::optional<std::size_t> stepIndex(const Lesson& lesson, long long number, std
 
 double pauseFrames(const LessonStep& step) {
     const double dt = step.scene->settings.dt;
-    const double seconds =
-        step.pause.kind == LessonPause::Kind::Time ? step.pause.time : kCollisionSearchSeconds;
+    const double seconds = step.pause.kind == LessonPause::Kind::Time
+                               ? step.pause.time
+                               : step.pause.within.value_or(kCollisionSearchSeconds) +
+                                     step.pause.watch * step.timeScale;
     return std::ceil(seconds / dt) + 2;
 }
 

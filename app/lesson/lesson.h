@@ -4,6 +4,7 @@
 // `steps[3].overlays[0]`). No GL, no ImGui: the app, sandbox-cli and the tests share it.
 #pragma once
 
+#include "lesson_text.h"
 #include "scene.h"
 #include "vocabulary.h"
 
@@ -12,16 +13,41 @@
 #include <string>
 #include <vector>
 
-// Where a step stops on its own: after the frame at whose end the condition first holds.
+// What a step waits for (docs/lesson-format.md, "pause_at"): an event of the live run. The run
+// pauses after the motion has gone on long enough to see its result (`watch`), or, when the
+// event does not come within `within` seconds, there, saying so (no answer is claimed).
 struct LessonPause {
-    enum class Kind { None, Time, Collision, BlockCollision };
+    enum class Kind {
+        None,
+        Time,           // a time: the first frame ending at or after `time`
+        Collision,      // the `collision`-th collision (walls included, rest-rule contacts not)
+        BlockCollision, // `block`'s first collision (with anything: a block or a wall)
+        PairCollision,  // the first collision of `block` with `other`
+        Rest,           // `block` coming to rest (speed at most kRestSpeed)
+        Reach,          // `block` reaching a place: its `side` at least `at` (or at most)
+    };
     Kind kind = Kind::None;
-    double time = 0.0;     // s (Time): the first frame ending at or after it
-    int collision = 0;     // Collision: the k-th collision (1-based, walls included, resting
-                           // contacts of the rest rule not counted)
-    int block = -1;        // BlockCollision: the first collision of this block (index)
+    double time = 0.0;     // s (Time)
+    int collision = 0;     // Collision: 1-based
+    int block = -1;        // the block the event is about (index)
+    int other = -1;        // PairCollision: the other block
     std::string blockName; // as written in the file
+    std::string otherName;
+    std::string side;    // Reach: "x", "y", "left", "right", "bottom" or "top"
+    double at = 0.0;     // Reach: m
+    bool atLeast = true; // Reach: side >= at (else <=)
+    // s of watched motion after the event (at the step's time scale) before the pause; 0 for a
+    // time (the time is the moment).
+    double watch = 0.0;
+    // s of simulated time the event may take; none: twice the step's moment as written (and,
+    // for the step as written, the search of kCollisionSearchSeconds).
+    std::optional<double> within;
 };
+
+// m/s: a block at most this fast has come to rest (LessonPause::Kind::Rest).
+inline constexpr double kRestSpeed = 1e-6;
+// s: the watched motion after an event, unless the step says (at least this much).
+inline constexpr double kDefaultWatch = 1.0;
 
 // One number the engine must reach at the pause point (or, in a step's `given`, that holds at its
 // setup): equal within `tolerance`, or in [min, max].
@@ -64,9 +90,22 @@ inline constexpr std::size_t kMaxLessonBlocks = 2000000;
 // substeps): bounds the time a lesson takes to validate (1e8: a few seconds).
 inline constexpr double kMaxStepBlockSteps = 1e8;
 
+// One prediction of a step's question (docs/lesson-format.md, "choices").
+struct LessonChoice {
+    LessonText text; // rendered at the setup, as the question is
+    LessonExpr when; // "if": a condition at the moment (the event): this is what happened
+    // What the answer says when the run proves this choice and not the correct one (the step's
+    // answer explains the correct one); empty: the step's answer.
+    LessonText answer;
+};
+
+// The letter of choice `index` (0-based): "A".."D".
+std::string choiceLetter(std::size_t index);
+
 struct LessonStep {
     std::string title;
-    std::string caption;     // one to three lines, separated by '\n'
+    std::string caption;     // one to three lines, separated by '\n' (a template: lesson_text.h)
+    LessonText captionText;  // rendered at the setup, as the question is
     std::string place;       // "lesson.json: steps[3]", for the runner's messages
     std::string sceneSource; // the file the scene came from, or "" for an inline scene
     // With the step's overrides applied; shared by the steps that name one file with the same
@@ -84,11 +123,21 @@ struct LessonStep {
     std::optional<Bounds> camera;       // world rectangle to fit into the view; none: the bounds
     ViewFrame frame = ViewFrame::World; // "frame": "com": seen moving with the centre of mass
     LessonPause pause;
-    std::string question; // shown until the next press...
+    // Named numbers of the step's texts and choices ("u": the centre of mass's velocity), each an
+    // expression of the world that may read the ones before it.
+    std::vector<std::string> valueNames;
+    std::vector<LessonExpr> values;
+    std::string question; // as written (a template: lesson_text.h), shown until the next press...
+    LessonText questionText;
+    // The predictions a class picks from (2 to 4, lettered A-D), each with the condition at the
+    // moment under which it is what happened; `correct` is the one the step as written proves.
+    std::vector<LessonChoice> choices;
+    int correct = -1;
     // What the question says of the setup, checked there (t = 0, before any frame): a question
     // stays true of what the class sees when it is asked.
     std::vector<LessonExpect> given;
-    std::string answer; // ...which shows this and turns on `reveal`
+    std::string answer; // as written; ...which shows this and turns on `reveal`
+    LessonText answerText;
     std::vector<std::string> reveal;
     std::vector<LessonExpect> expect;
 };
@@ -122,8 +171,8 @@ LessonResult loadLessonFile(const std::string& path, LessonContext context);
 // The index of step `number` (1-based, as the app and --step count); none, with a message, when
 // the lesson has no such step.
 std::optional<std::size_t> stepIndex(const Lesson& lesson, long long number, std::string* error);
-// Frames a pause point needs: a time pause, up to the frame that ends at T; a collision pause,
-// the search of 120 s of simulated time.
+// Frames a pause point needs: a time pause, up to the frame that ends at T; an event, the search
+// (its `within`, else 120 s of simulated time) and the watch after it.
 double pauseFrames(const LessonStep& step);
 // Frames the runner tries before it gives up on a pause point: a time pause's frames (with a
 // margin for rounding) or the collision search, within the step's budget of kMaxStepBlockSteps

@@ -17,9 +17,14 @@ namespace lesson_guards {
 // The limits of a lesson file.
 constexpr std::size_t kMaxSteps = 1000;
 constexpr std::size_t kMaxExpects = 100; // per step
+constexpr std::size_t kMaxValues = 20;   // named values per step
 constexpr std::size_t kMaxCaptionLines = 3;
 constexpr std::size_t kMaxLineChars = 200; // a caption line, a title, a question or an answer
-constexpr double kMaxPauseTime = 600.0;    // s
+// A line of a template (a caption, question, choice or answer with {...} in it), as written: the
+// expressions take room the text they print does not (ctest holds the shipped lessons' texts as
+// shown to kMaxLineChars).
+constexpr std::size_t kMaxTemplateLineChars = 400;
+constexpr double kMaxPauseTime = 600.0; // s
 constexpr int kMaxPauseCollision = 1000000;
 constexpr double kMaxFrameRate = 10000.0;         // Hz (dt at least 1e-4 s)
 constexpr double kCollisionSearchSeconds = 120.0; // s of simulated time to find a collision

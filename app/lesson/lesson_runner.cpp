@@ -1,83 +1,365 @@
 #include "lesson_runner.h"
 
+#include "lesson_guards.h"
 #include "printable.h"
 #include "scene_json.h"
+#include "text_format.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace {
 
-// s: a frame ending within this of the pause time counts as reaching it (frame times are sums of
-// dt and carry rounding).
+// s: a frame ending within this of a time counts as reaching it (frame times are sums of dt and
+// carry rounding).
 constexpr double kTimeSlack = 1e-9;
 
-std::string formatNumber(double x) {
+std::string formatValue(double x) {
     return scene_json::dumpValue(x);
+}
+
+bool reachedTime(const World& world, double time) {
+    return world.time >= time - kTimeSlack * std::max(1.0, time);
+}
+
+const Block* blockAt(const World& world, int index) {
+    return index >= 0 && static_cast<std::size_t>(index) < world.blocks.size()
+               ? &world.blocks[static_cast<std::size_t>(index)]
+               : nullptr;
+}
+
+double sideOf(const Block& b, const std::string& side) {
+    if (side == "x") return b.position.x;
+    if (side == "y") return b.position.y;
+    if (side == "left") return b.position.x - b.halfSize().x;
+    if (side == "right") return b.position.x + b.halfSize().x;
+    if (side == "bottom") return b.position.y - b.halfSize().y;
+    return b.position.y + b.halfSize().y;
+}
+
+// The gap between two blocks along an axis (positive: apart), and whether their velocities
+// close it.
+struct AxisGap {
+    double gap = 0.0;
+    bool closing = false;
+};
+AxisGap axisGap(const Block& a, const Block& b, int axis) {
+    const double ac = axis == 0 ? a.position.x : a.position.y;
+    const double bc = axis == 0 ? b.position.x : b.position.y;
+    const double ah = axis == 0 ? a.halfSize().x : a.halfSize().y;
+    const double bh = axis == 0 ? b.halfSize().x : b.halfSize().y;
+    const double av = axis == 0 ? a.velocity.x : a.velocity.y;
+    const double bv = axis == 0 ? b.velocity.x : b.velocity.y;
+    AxisGap g;
+    g.gap = std::abs(bc - ac) - ah - bh;
+    g.closing = (bc > ac ? av - bv : bv - av) > 0.0;
+    return g;
 }
 
 } // namespace
 
-bool pausesAtStart(const LessonPause& pause) {
-    return pause.kind == LessonPause::Kind::Time && pause.time <= kTimeSlack;
+std::vector<int> liveBlockIndex(const Scene& stepScene, const std::vector<std::string>& liveNames) {
+    std::vector<int> map(stepScene.blocks.size(), -1);
+    for (std::size_t i = 0; i < stepScene.blocks.size(); ++i) {
+        const std::string& name = stepScene.blocks[i].name;
+        const auto count = std::count(liveNames.begin(), liveNames.end(), name);
+        if (!name.empty() && count == 1) {
+            map[i] = static_cast<int>(std::find(liveNames.begin(), liveNames.end(), name) -
+                                      liveNames.begin());
+        } else if (i < liveNames.size() && liveNames[i] == name) {
+            map[i] = static_cast<int>(i); // unnamed or named twice: where it was
+        }
+    }
+    return map;
 }
 
-bool countFrame(const LessonPause& pause, const World& world, const StepStats& stats,
-                const std::vector<CollisionRecord>& log, StepProgress& progress) {
-    ++progress.frames;
-    progress.maxPenetration = std::max(progress.maxPenetration, stats.maxPenetration);
-    bool blockHit = false;
-    for (const CollisionRecord& r : log) {
-        if (r.rest) {
-            ++progress.contacts;
-            continue;
-        }
-        ++progress.collisions;
-        if (r.block == pause.block || r.other == pause.block) blockHit = true;
+LessonWatch::LessonWatch(const LessonStep& step, std::vector<int> blocks, double within,
+                         double watchSeconds)
+    : pause_(step.pause), blocks_(std::move(blocks)), within_(within), watch_(watchSeconds) {
+    for (const BlockDef& b : step.scene->blocks) names_.push_back(b.name);
+    const auto live = [this](int i) {
+        return i >= 0 && static_cast<std::size_t>(i) < blocks_.size()
+                   ? blocks_[static_cast<std::size_t>(i)]
+                   : -1;
+    };
+    block_ = live(pause_.block);
+    other_ = live(pause_.other);
+}
+
+bool LessonWatch::atStart(const World& start) {
+    const bool needsBlock = pause_.block >= 0;
+    if (needsBlock && (block_ < 0 || (pause_.other >= 0 && other_ < 0))) {
+        const std::string& gone = block_ < 0 ? pause_.blockName : pause_.otherName;
+        missed_ = printable(gone) + " is no longer in the scene";
+        state_ = State::Missed;
+        return true;
     }
-    switch (pause.kind) {
-    case LessonPause::Kind::None:
-        return false;
-    case LessonPause::Kind::Time:
-        return world.time >= pause.time - kTimeSlack * std::max(1.0, pause.time);
-    case LessonPause::Kind::Collision:
-        return progress.collisions >= pause.collision;
-    case LessonPause::Kind::BlockCollision:
-        if (pause.block >= 0 && blockHit) progress.blockCollided = true;
-        return progress.blockCollided;
+    if (pause_.kind == LessonPause::Kind::Time && pause_.time <= kTimeSlack) {
+        event_ = start;
+        state_ = State::Paused;
+        return true;
     }
     return false;
+}
+
+namespace {
+
+// `r` with its bodies swapped: body 1 becomes body 2.
+CollisionRecord swapped(CollisionRecord r) {
+    std::swap(r.block, r.other);
+    std::swap(r.m1, r.m2);
+    std::swap(r.v1, r.v2);
+    std::swap(r.v1After, r.v2After);
+    std::swap(r.position1, r.position2);
+    r.firstBelow = !r.firstBelow;
+    return r;
+}
+
+} // namespace
+
+bool LessonWatch::eventIn(const World& world, const std::vector<CollisionRecord>& log,
+                          int collisionsBefore) {
+    using K = LessonPause::Kind;
+    switch (pause_.kind) {
+    case K::None:
+        return false;
+    case K::Time:
+        return reachedTime(world, pause_.time);
+    case K::Collision: {
+        if (progress_.collisions < pause_.collision) return false;
+        int k = collisionsBefore;
+        for (const CollisionRecord& r : log) {
+            if (r.rest || ++k < pause_.collision) continue;
+            hit_ = r;
+            break;
+        }
+        return true;
+    }
+    case K::BlockCollision:
+    case K::PairCollision:
+        for (const CollisionRecord& r : log) {
+            if (r.rest) continue;
+            const bool mine = r.block == block_ || r.other == block_;
+            if (!mine) continue;
+            if (pause_.kind == K::PairCollision && r.block != other_ && r.other != other_) continue;
+            hit_ = r.block == block_ ? r : swapped(r);
+            return true;
+        }
+        return false;
+    case K::Rest: {
+        const Block* b = blockAt(world, block_);
+        return b && std::hypot(b->velocity.x, b->velocity.y) <= kRestSpeed;
+    }
+    case K::Reach: {
+        const Block* b = blockAt(world, block_);
+        if (!b) return false;
+        const double at = sideOf(*b, pause_.side);
+        return pause_.atLeast ? at >= pause_.at : at <= pause_.at;
+    }
+    }
+    return false;
+}
+
+bool LessonWatch::afterFrame(const World& world, const StepStats& stats,
+                             const std::vector<CollisionRecord>& log) {
+    if (paused()) return true;
+    ++progress_.frames;
+    const int collisionsBefore = progress_.collisions;
+    progress_.maxPenetration = std::max(progress_.maxPenetration, stats.maxPenetration);
+    for (const CollisionRecord& r : log) {
+        if (r.rest)
+            ++progress_.contacts;
+        else
+            ++progress_.collisions;
+    }
+    if (state_ == State::Waiting && pause_.kind != LessonPause::Kind::None &&
+        eventIn(world, log, collisionsBefore)) {
+        event_ = world;
+        eventProgress_ = progress_;
+        eventTime_ = world.time;
+        state_ = pause_.kind == LessonPause::Kind::Time ? State::Paused : State::Watching;
+        if (state_ == State::Paused) return true;
+    }
+    if (state_ == State::Watching && reachedTime(world, eventTime_ + watch_)) {
+        state_ = State::Paused;
+        return true;
+    }
+    if (state_ == State::Waiting && pause_.kind != LessonPause::Kind::None &&
+        pause_.kind != LessonPause::Kind::Time && reachedTime(world, within_)) {
+        giveUp(world, whyMissed(world));
+        return true;
+    }
+    return false;
+}
+
+void LessonWatch::giveUp(const World& world, const std::string& why) {
+    if (state_ == State::Watching) { // the event came; the watch is cut short
+        state_ = State::Paused;
+        return;
+    }
+    state_ = State::Missed;
+    missed_ = why.empty() ? whyMissed(world) : why;
+}
+
+std::string LessonWatch::whyMissed(const World& world) const {
+    const std::string in = " in " + formatQuantity(world.time, "s");
+    const std::string name = printable(pause_.blockName), other = printable(pause_.otherName);
+    const Block* a = blockAt(world, block_);
+    const Block* b = blockAt(world, other_);
+    using K = LessonPause::Kind;
+    switch (pause_.kind) {
+    case K::Collision:
+        return "only " + std::to_string(progress_.collisions) + " of " +
+               std::to_string(pause_.collision) + " collisions" + in;
+    case K::BlockCollision:
+        return name + " has hit nothing" + in;
+    case K::PairCollision: {
+        std::string why = name + " has not hit " + other + in;
+        if (!a || !b) return why;
+        const AxisGap x = axisGap(*a, *b, 0), y = axisGap(*a, *b, 1);
+        // To meet along one axis they must overlap along the other (or come to).
+        if ((y.gap > 0.0 && !y.closing && x.gap <= 0.0) ||
+            (x.gap > 0.0 && !x.closing && y.gap <= 0.0))
+            return why + ": they move apart";
+        if ((y.gap > 0.0 && !y.closing) || (x.gap > 0.0 && !x.closing))
+            return why + ": they are not on one line";
+        return why;
+    }
+    case K::Rest:
+        if (!a) return name + " is no longer in the scene";
+        return name + " still moves at " +
+               formatQuantity(std::hypot(a->velocity.x, a->velocity.y), "m/s") + " after " +
+               formatQuantity(world.time, "s");
+    case K::Reach:
+        if (!a) return name + " is no longer in the scene";
+        return name + " has not reached " + pause_.side + (pause_.atLeast ? " >= " : " <= ") +
+               formatQuantity(pause_.at, "m") + in + " (" + pause_.side + " = " +
+               formatQuantity(sideOf(*a, pause_.side), "m") + ")";
+    default:
+        return "the pause point was not reached" + in;
+    }
+}
+
+bool pausesAtItsSetup(const LessonStep& step) {
+    return step.pause.kind == LessonPause::Kind::Time && step.pause.time <= kTimeSlack;
 }
 
 World stepStartWorld(const LessonStep& step) {
     return makeWorld(*step.scene);
 }
 
-StepRun runStepToPause(const LessonStep& step) {
-    StepRun run;
-    run.world = stepStartWorld(step);
-    if (step.pause.kind == LessonPause::Kind::None || pausesAtStart(step.pause)) return run;
-    const int limit = maxStepFrames(step);
-    std::vector<CollisionRecord> log;
-    while (run.progress.frames < limit) {
-        log.clear();
-        const StepStats stats =
-            step.scene->player
-                ? stepWithPlayer(run.world, *step.scene->player,
-                                 scriptedKeys(step.input, run.world.time, run.world.settings.dt),
-                                 &log)
-                : run.world.step(&log);
-        if (countFrame(step.pause, run.world, stats, log, run.progress)) return run;
+namespace {
+
+StepRun runWatched(const LessonStep& step, World start, LessonWatch watch, int limit) {
+    const World setup = start;
+    World world = std::move(start);
+    if (!watch.atStart(world) && step.pause.kind != LessonPause::Kind::None) {
+        std::vector<CollisionRecord> log;
+        while (!watch.paused()) {
+            if (watch.progress().frames >= limit) {
+                watch.giveUp(world, "");
+                break;
+            }
+            log.clear();
+            const StepStats stats =
+                step.scene->player
+                    ? stepWithPlayer(world, *step.scene->player,
+                                     scriptedKeys(step.input, world.time, world.settings.dt), &log)
+                    : world.step(&log);
+            watch.afterFrame(world, stats, log);
+        }
     }
-    run.reached = false;
+    StepRun run = watchedRun(watch, setup, world);
+    if (step.pause.kind == LessonPause::Kind::None) run.reached = true; // it stays at its start
     return run;
 }
 
+std::vector<std::string> sceneNames(const Scene& scene) {
+    std::vector<std::string> names;
+    for (const BlockDef& b : scene.blocks) names.push_back(b.name);
+    return names;
+}
+
+} // namespace
+
+StepRun runStepToPause(const LessonStep& step) {
+    const double within = step.pause.within.value_or(lesson_guards::kCollisionSearchSeconds);
+    return runStepFrom(step, stepStartWorld(step), sceneNames(*step.scene), within, step.timeScale);
+}
+
+StepRun runStepFrom(const LessonStep& step, World start, const std::vector<std::string>& names,
+                    double within, double timeScale) {
+    LessonWatch watch(step, liveBlockIndex(*step.scene, names), within,
+                      step.pause.watch * timeScale);
+    const int limit = frameLimit(step, start, within, timeScale);
+    return runWatched(step, std::move(start), std::move(watch), limit);
+}
+
+int frameLimit(const LessonStep& step, const World& start, double within, double timeScale) {
+    const double dt = start.settings.dt;
+    const double seconds = step.pause.kind == LessonPause::Kind::Time
+                               ? step.pause.time * 1.01 + 1.0
+                               : within + step.pause.watch * timeScale;
+    const double perFrame = static_cast<double>(std::max<std::size_t>(1, start.blocks.size())) *
+                            std::max(1, start.settings.substeps);
+    const double limit =
+        std::min(std::ceil(seconds / dt) + 2, std::floor(kMaxStepBlockSteps / perFrame));
+    return static_cast<int>(std::max(1.0, limit));
+}
+
+StepRun watchedRun(const LessonWatch& watch, const World& setup, const World& now) {
+    StepRun run;
+    run.setup = setup;
+    run.world = now;
+    run.blocks = watch.blocks();
+    run.progress = watch.progress();
+    run.reached = watch.state() == LessonWatch::State::Paused;
+    run.missed = watch.missed();
+    if (watch.eventWorld()) {
+        run.event = *watch.eventWorld();
+        run.eventProgress = watch.eventProgress();
+        run.hit = watch.hit();
+    } else {
+        run.event = now; // no event: where the run is (nothing is claimed of it)
+        run.eventProgress = run.progress;
+    }
+    return run;
+}
+
+double liveWithin(const LessonStep& step, const StepRun& asWritten) {
+    if (step.pause.within) return *step.pause.within;
+    return std::max(2.0 * asWritten.world.time, 1.0);
+}
+
+ExprScope eventScope(const LessonStep& step, const StepRun& run) {
+    ExprScope s;
+    s.setup = &run.setup;
+    s.now = &run.event;
+    s.collisions = run.eventProgress.collisions;
+    s.contacts = run.eventProgress.contacts;
+    s.maxPenetration = run.eventProgress.maxPenetration;
+    s.values = &step.values;
+    s.blocks = &run.blocks;
+    s.hit = run.hit ? &*run.hit : nullptr;
+    return s;
+}
+
+ExprScope setupScope(const LessonStep& step, const World& setup, const std::vector<int>& blocks) {
+    ExprScope s;
+    s.setup = &setup;
+    s.now = &setup;
+    s.values = &step.values;
+    s.blocks = &blocks;
+    return s;
+}
+
 double measure(const LessonExpect& e, const StepRun& run) {
-    const World& w = run.world;
-    const Block* b = e.block >= 0 && e.block < static_cast<int>(w.blocks.size())
-                         ? &w.blocks[static_cast<std::size_t>(e.block)]
-                         : nullptr;
+    const World& w = run.event;
+    const StepProgress& progress = run.eventProgress;
+    const int live = e.block >= 0 && static_cast<std::size_t>(e.block) < run.blocks.size()
+                         ? run.blocks[static_cast<std::size_t>(e.block)]
+                         : e.block;
+    const Block* b = blockAt(w, live);
     using Q = LessonExpect::Quantity;
     switch (e.quantity) {
     case Q::X:
@@ -91,7 +373,7 @@ double measure(const LessonExpect& e, const StepRun& run) {
     case Q::Time:
         return w.time;
     case Q::Collisions:
-        return run.progress.collisions;
+        return progress.collisions;
     case Q::MomentumX:
         return totalMomentum(w).x;
     case Q::MomentumY:
@@ -99,7 +381,7 @@ double measure(const LessonExpect& e, const StepRun& run) {
     case Q::KineticEnergy:
         return kineticEnergy(w);
     case Q::MaxPenetration:
-        return run.progress.maxPenetration;
+        return progress.maxPenetration;
     case Q::Left:
         return b ? b->position.x - b->halfSize().x : NAN;
     case Q::Right:
@@ -118,6 +400,15 @@ double measure(const LessonExpect& e, const StepRun& run) {
     return NAN;
 }
 
+std::vector<int> provedChoices(const LessonStep& step, const StepRun& run) {
+    std::vector<int> proved;
+    if (!run.reached) return proved;
+    const ExprScope scope = eventScope(step, run);
+    for (std::size_t i = 0; i < step.choices.size(); ++i)
+        if (holds(step.choices[i].when, scope)) proved.push_back(static_cast<int>(i));
+    return proved;
+}
+
 namespace {
 
 // One message per expectation of `expects` that `run` does not meet.
@@ -132,16 +423,16 @@ void checkExpects(const std::vector<LessonExpect>& expects, const StepRun& run, 
         if (e.block >= 0) what += " of \"" + printable(e.blockName) + "\"";
         std::string expected;
         if (e.equals) {
-            expected = formatNumber(*e.equals) + " within " + formatNumber(e.tolerance);
+            expected = formatValue(*e.equals) + " within " + formatValue(e.tolerance);
         } else {
-            expected = std::string("in [") + (e.min ? formatNumber(*e.min) : "-inf") + ", " +
-                       (e.max ? formatNumber(*e.max) : "inf") + "]";
+            expected = std::string("in [") + (e.min ? formatValue(*e.min) : "-inf") + ", " +
+                       (e.max ? formatValue(*e.max) : "inf") + "]";
         }
         const std::string when = atSetup ? "at the setup, t = 0"
-                                         : "at t = " + formatNumber(run.world.time) + " s, frame " +
-                                               std::to_string(run.progress.frames);
+                                         : "at t = " + formatValue(run.event.time) + " s, frame " +
+                                               std::to_string(run.eventProgress.frames);
         failures.push_back(printable(e.where, kPrintablePath) + ": " + what + " is " +
-                           formatNumber(value) + ", expected " + expected + " (" + when + ")");
+                           formatValue(value) + ", expected " + expected + " (" + when + ")");
     }
 }
 
@@ -149,26 +440,49 @@ void checkExpects(const std::vector<LessonExpect>& expects, const StepRun& run, 
 
 std::vector<std::string> checkSetup(const LessonStep& step) {
     std::vector<std::string> failures;
-    StepRun setup{stepStartWorld(step), StepProgress{}, true};
+    StepRun setup;
+    setup.setup = stepStartWorld(step);
+    setup.world = setup.setup;
+    setup.event = setup.setup;
     checkExpects(step.given, setup, true, failures);
     return failures;
 }
 
 std::vector<std::string> checkStep(const LessonStep& step, const StepRun& run) {
     std::vector<std::string> failures = checkSetup(step);
+    const std::string place = printable(step.place, kPrintablePath);
     if (!run.reached) {
-        // Where it gave up: the collision search's end, or the step's budget of block-steps.
+        // Where it gave up: the search's end, or the step's budget of block-steps.
         const double searched = static_cast<double>(run.progress.frames);
-        failures.push_back(printable(step.place, kPrintablePath) +
-                           ".pause_at: the pause point was not reached in " +
+        failures.push_back(place + ".pause_at: the pause point was not reached in " +
                            std::to_string(run.progress.frames) +
-                           " frames (t = " + formatNumber(run.world.time) + " s; " +
-                           (searched >= pauseFrames(step) ? "the search ends after 120 s"
-                                                          : "a step may run 1e8 block-steps") +
-                           ")");
+                           " frames (t = " + formatValue(run.world.time) + " s; " +
+                           (searched >= pauseFrames(step)
+                                ? "the search ends after " +
+                                      formatValue(step.pause.within.value_or(
+                                          lesson_guards::kCollisionSearchSeconds)) +
+                                      " s"
+                                : "a step may run 1e8 block-steps") +
+                           "): " + run.missed);
         return failures;
     }
     checkExpects(step.expect, run, false, failures);
+    if (step.choices.empty()) return failures;
+    const std::vector<int> proved = provedChoices(step, run);
+    for (std::size_t i = 0; i < step.choices.size(); ++i) {
+        const bool isProved =
+            std::find(proved.begin(), proved.end(), static_cast<int>(i)) != proved.end();
+        const bool isCorrect = static_cast<int>(i) == step.correct;
+        if (isProved == isCorrect) continue;
+        failures.push_back(
+            place + ".choices[" + std::to_string(i) + "]: choice " + choiceLetter(i) +
+            (isCorrect ? " is marked correct, but the run "
+                         "contradicts it: "
+                       : " is not the correct one, but the run "
+                         "proves it too: ") +
+            printable(step.choices[i].when.source) + " is " + (isProved ? "true" : "false") +
+            " at t = " + formatValue(run.event.time) + " s");
+    }
     return failures;
 }
 

@@ -150,15 +150,15 @@ TEST(LessonHostile, TimePauseBeyondTheBudgetIsRefusedAtItsPlace) {
 }
 
 TEST(LessonHostile, PauseThatNeverComesEndsWithItsPlace) {
-    // A ball at rest without gravity never collides: the search ends after 120 s (120,002 frames
-    // at 1000 Hz) with the step's place in the failure.
+    // A ball at rest without gravity never collides: the search ends after 120 s (the frame
+    // ending at 120 s, the 120,000th at 1000 Hz) with the step's place in the failure.
     const LessonResult r = parseLesson(lessonOn(kBall, R"("overrides": {"frame_rate": 1000},
                                       "pause_at": {"collision": 1})"),
                                        "t.json", context());
     ASSERT_TRUE(r.lesson) << r.error.text();
     const StepRun run = runStepToPause(r.lesson->steps[0]);
     EXPECT_FALSE(run.reached);
-    EXPECT_EQ(run.progress.frames, 120002);
+    EXPECT_EQ(run.progress.frames, 120000);
     const std::vector<std::string> failures = checkStep(r.lesson->steps[0], run);
     ASSERT_EQ(failures.size(), 1u);
     EXPECT_EQ(failures[0].rfind("t.json: steps[0].pause_at: the pause point was not reached", 0),

@@ -3,6 +3,7 @@
 // lessons fail with their place.
 #include "lesson.h"
 #include "lesson_runner.h"
+#include "lesson_test_context.h"
 #include "vocabulary.h"
 
 #include <gtest/gtest.h>
@@ -18,10 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 LessonContext context() {
-    LessonContext c;
-    c.scenesDir = SANDBOX_SCENES_DIR;
-    c.overlayNames = overlayNames();
-    return c;
+    return shippedLessonContext();
 }
 
 std::vector<std::string> shippedLessons() {
@@ -148,7 +146,8 @@ INSTANTIATE_TEST_SUITE_P(Lessons, ShippedLessonStep, testing::ValuesIn(shippedSt
 // A question that is not true of its setup is caught: `given` is checked at t = 0, before any
 // frame, and names its place and both numbers.
 TEST(LessonRunner, AGivenThatTheSetupDoesNotShowFails) {
-    const std::string q = R"("question": "q?", "answer": "a", )";
+    const std::string q = R"("question": "q?", "answer": "a", "choices": [
+        {"text": "a", "if": "t >= 0", "correct": true}, {"text": "b", "if": "t < 0"}], )";
     const LessonStep right = onlyStep(
         lessonWith(q + R"("given": [{"block": "m1", "x": 4, "right": 4.5, "vx": 6, "mass": 1},
                          {"block": "m2", "left": 8.25, "top": 6.5, "bottom": 5.5},
@@ -199,19 +198,34 @@ TEST(Lesson, EnteringAStepIsExactEveryTime) {
 }
 
 // The lecture's example collides at t = 0.625 s, inside frame 38 (37/60 = 0.617 < 0.625 <=
-// 38/60): each kind of pause point stops after that frame, and the formula's numbers hold there
-// exactly (the perfect method resolves at the instant of impact; tolerance 1e-12 for rounding).
+// 38/60): each kind of event is that frame, and the formula's numbers hold there exactly (the
+// perfect method resolves at the instant of impact; tolerance 1e-12 for rounding). A collision
+// event is then watched for 1 s at the step's time scale (1): the pause is the first frame ending
+// at or after 38/60 + 1 s, frame 98, with the blocks 1 s further apart; a time is its own moment.
 TEST(LessonRunner, PausePointsStopAfterTheirFrame) {
     for (const char* pause :
          {R"("pause_at": {"collision": 1})", R"("pause_at": {"first_collision_of": "m1"})",
-          R"("pause_at": {"time": 0.63})"}) {
+          R"("pause_at": {"collision_of": ["m2", "m1"]})", R"("pause_at": {"time": 0.63})"}) {
         const LessonStep step = onlyStep(lessonWith(pause));
         const StepRun run = runStepToPause(step);
         ASSERT_TRUE(run.reached) << pause;
-        EXPECT_EQ(run.progress.frames, 38) << pause;
+        const bool time = step.pause.kind == LessonPause::Kind::Time;
+        EXPECT_EQ(run.eventProgress.frames, 38) << pause;
+        EXPECT_EQ(run.progress.frames, time ? 38 : 98) << pause;
+        EXPECT_EQ(run.eventProgress.collisions, 1) << pause;
         EXPECT_EQ(run.progress.collisions, 1) << pause;
-        EXPECT_NEAR(run.world.blocks[0].velocity.x, -2.0, 1e-12) << pause;
-        EXPECT_NEAR(run.world.blocks[1].velocity.x, 4.0, 1e-12) << pause;
+        EXPECT_NEAR(run.event.blocks[0].velocity.x, -2.0, 1e-12) << pause;
+        EXPECT_NEAR(run.event.blocks[1].velocity.x, 4.0, 1e-12) << pause;
+        const double apart = (run.world.blocks[1].position.x - run.world.blocks[0].position.x) -
+                             (run.event.blocks[1].position.x - run.event.blocks[0].position.x);
+        EXPECT_NEAR(apart, time ? 0.0 : 6.0, 1e-9) << pause; // 1 s at 4 - (-2) m/s
+        if (time) continue;
+        ASSERT_TRUE(run.hit) << pause;
+        // Body 1 is the block the event names first (m2 for collision_of [m2, m1]).
+        const bool m2First = step.pause.kind == LessonPause::Kind::PairCollision;
+        EXPECT_EQ(run.hit->m1, m2First ? 2.0 : 1.0) << pause;
+        EXPECT_NEAR(run.hit->v1After, m2First ? 4.0 : -2.0, 1e-12) << pause;
+        EXPECT_NEAR(run.hit->u, 2.0, 1e-12) << pause;
     }
     const StepRun none = runStepToPause(onlyStep(lessonWith("")));
     EXPECT_EQ(none.progress.frames, 0);
@@ -227,6 +241,7 @@ TEST(LessonRunner, APauseThatNeverComesIsReported) {
     const std::vector<std::string> failures = checkStep(step, run);
     ASSERT_EQ(failures.size(), 1u);
     EXPECT_NE(failures[0].find("pause point was not reached"), std::string::npos) << failures[0];
+    EXPECT_NE(failures[0].find("collisions in 120"), std::string::npos) << failures[0];
 }
 
 TEST(LessonRunner, AFailedExpectationNamesItsPlaceAndBothNumbers) {
@@ -271,6 +286,7 @@ TEST(Lesson, ShippedScenePathsAndSelection) {
         R"({"name": "t", "steps": [{"title": "s", "caption": "one\ntwo\nthree",
             "scene": "single_bounce", "select": "ball", "camera": [0, 0, 10, 6],
             "overlays": ["plots", "poi"], "question": "q?", "answer": "a.",
+            "choices": [{"text": "y", "if": "t >= 0", "correct": true}, {"text": "n", "if": "t < 0"}],
             "reveal": ["inspector"]}]})");
     EXPECT_EQ(fs::path(step.sceneSource).filename(), "single_bounce.json");
     EXPECT_EQ(step.selected, 0);

@@ -30,6 +30,18 @@ def lesson(step=None, top=None, scene=None):
     return doc
 
 
+# Two choices for a question about the lesson() step (a time of 1 s): the first is proved.
+CHOICES = [{"text": "{a.vx0} m/s", "if": "a.vx == a.vx0", "correct": True},
+           {"text": "0 m/s", "if": "a.vx == 0"}]
+
+
+def asking(**step):
+    """lesson() with a question, choices and an answer, and `step` on top."""
+    base = {"question": "How fast is a?", "answer": "{a.vx} m/s", "choices": CHOICES}
+    base.update(step)
+    return lesson(step=base)
+
+
 LONG = "x" * 201
 ESC_NAME = "\x1b]0;owned\x07\x1b[31mred"
 
@@ -149,8 +161,72 @@ KEY_CASES = [
      ["steps[0].pause_at.first_collision_of"]),
     ("question without answer", lesson(step={"question": "q?"}), ["steps[0]"]),
     ("given without question", lesson(step={"given": [{"time": 0}]}), ["steps[0].given"]),
-    ("reveal unknown overlay", lesson(step={"question": "q", "answer": "a",
+    ("reveal unknown overlay", lesson(step={"question": "q", "answer": "a", "choices": CHOICES,
                                             "reveal": ["sparkles"]}), ["steps[0].reveal[0]"]),
+    ("question without choices", lesson(step={"question": "q", "answer": "a"}), ["steps[0]"]),
+    ("choices without question", lesson(step={"choices": CHOICES}), ["steps[0].choices"]),
+    ("one choice", asking(choices=CHOICES[:1]), ["steps[0].choices"]),
+    ("five choices", asking(choices=CHOICES * 3), ["steps[0].choices"]),
+    ("no correct choice", asking(choices=[{"text": "x", "if": "t > 0"}] * 2),
+     ["steps[0].choices"]),
+    ("two correct choices", asking(choices=[CHOICES[0], CHOICES[0]]),
+     ["steps[0].choices[1].correct"]),
+    ("choice without if", asking(choices=[{"text": "x", "correct": True}, CHOICES[1]]),
+     ["steps[0].choices[0]"]),
+    ("choice correct a string", asking(choices=[dict(CHOICES[0], correct="yes"), CHOICES[1]]),
+     ["steps[0].choices[0].correct"]),
+    ("choice if a number", asking(choices=[dict(CHOICES[0], **{"if": "a.vx + 1"}), CHOICES[1]]),
+     ["steps[0].choices[0].if", "column"]),
+    ("choice text a condition", asking(choices=[dict(CHOICES[0], text="{a.vx > 1}"), CHOICES[1]]),
+     ["steps[0].choices[0].text", "column"]),
+    ("unknown block in an answer", asking(answer="{zz.vx}"), ["steps[0].answer", "column 2"]),
+    ("unknown quantity", asking(answer="{a.colour}"), ["steps[0].answer", "column 4"]),
+    ("unknown name", asking(answer="{v}"), ["steps[0].answer", "column 2"]),
+    ("unknown hit number", asking(answer="{hit.q}"), ["steps[0].answer", "column"]),
+    ("an unclosed brace", asking(answer="v = {a.vx"), ["steps[0].answer", "column 5"]),
+    ("a stray closing brace", asking(answer="v = }"), ["steps[0].answer", "column 5"]),
+    ("an empty expression", asking(answer="{ }"), ["steps[0].answer"]),
+    ("an unclosed quote", asking(answer="{'a.vx}"), ["steps[0].answer"]),
+    ("a bad number", asking(answer="{1.2.3}"), ["steps[0].answer"]),
+    ("a missing operand", asking(answer="{a.vx * }"), ["steps[0].answer"]),
+    ("deep parentheses", asking(answer="{" + "(" * 190 + "1" + ")" * 190 + "}"),
+     ["steps[0].answer", "nested too deeply"]),
+    ("deep minus signs", asking(answer="{" + "-" * 380 + "1}"), ["steps[0].answer", "nested"]),
+    ("a template line of 401", asking(answer="{" + "+".join(["1"] * 200) + "}"),
+     ["steps[0].answer", "400"]),
+    ("value reads itself", asking(values={"u": "w + 1", "w": "u * 2"}), ["steps[0].values"]),
+    ("value named C", asking(values={"C": "1"}), ["steps[0].values.C"]),
+    ("value named 2x", asking(values={"2x": "1"}), ["steps[0].values"]),
+    ("value not a string", asking(values={"u": 1}), ["steps[0].values.u"]),
+    ("values an array", asking(values=["u"]), ["steps[0].values"]),
+    ("21 values", asking(values={"v%d" % i: "1" for i in range(21)}), ["steps[0].values"]),
+    ("collision_of one block twice", lesson(step={"pause_at": {"collision_of": ["a", "a"]}}),
+     ["steps[0].pause_at.collision_of"]),
+    ("collision_of three", lesson(step={"pause_at": {"collision_of": ["a", "b", "a"]}}),
+     ["steps[0].pause_at.collision_of"]),
+    ("collision_of unknown", lesson(step={"pause_at": {"collision_of": ["a", "zz"]}}),
+     ["steps[0].pause_at.collision_of[1]"]),
+    ("rest unknown", lesson(step={"pause_at": {"rest": "zz"}}), ["steps[0].pause_at.rest"]),
+    ("reach without a place", lesson(step={"pause_at": {"reach": "a"}}), ["steps[0].pause_at"]),
+    ("reach two places", lesson(step={"pause_at": {"reach": "a", "x": {"min": 1},
+                                                   "y": {"min": 1}}}), ["steps[0].pause_at"]),
+    ("reach min and max", lesson(step={"pause_at": {"reach": "a", "x": {"min": 1, "max": 2}}}),
+     ["steps[0].pause_at.x"]),
+    ("a place without reach", lesson(step={"pause_at": {"rest": "a", "x": {"min": 1}}}),
+     ["steps[0].pause_at.x"]),
+    ("watch 0.5", lesson(step={"pause_at": {"rest": "a", "watch": 0.5}}),
+     ["steps[0].pause_at.watch"]),
+    ("watch with a time", lesson(step={"pause_at": {"time": 1, "watch": 2}}),
+     ["steps[0].pause_at.watch"]),
+    ("within 0", lesson(step={"pause_at": {"rest": "a", "within": 0}}),
+     ["steps[0].pause_at.within"]),
+    ("within 601", lesson(step={"pause_at": {"rest": "a", "within": 601}}),
+     ["steps[0].pause_at.within"]),
+    ("marked choice contradicted",
+     asking(choices=[dict(CHOICES[1], correct=True), {"text": "a", "if": "a.vx == a.vx0"}]),
+     ["steps[0].choices[0]", "contradicts"]),
+    ("a second choice proved too", asking(choices=[CHOICES[0], {"text": "y", "if": "t >= 0"}]),
+     ["steps[0].choices[1]", "proves it too"]),
     ("expect not an array", lesson(step={"expect": {"time": 1}}), ["steps[0].expect"]),
     ("expect unknown key", lesson(step={"expect": [{"colour": 1}]}), ["steps[0].expect[0]"]),
     ("expect no such block", lesson(step={"expect": [{"block": "zz", "x": 1}]}),
@@ -241,6 +317,9 @@ ECHO_CASES = [
     ("escape bytes in an unknown key", lesson(step={ESC_NAME: 1}), ["steps[0]", "\\x1b"]),
     ("escape bytes in an overlay", lesson(step={"overlays": [ESC_NAME]}),
      ["steps[0].overlays[0]", "\\x1b"]),
+    ("escape bytes in a quoted name in an answer", asking(answer="{'" + ESC_NAME + "'.vx}"),
+     ["steps[0].answer", "control character"]),
+    ("escape bytes in a value name", asking(values={ESC_NAME: "1"}), ["steps[0].values", "\\x1b"]),
     ("escape bytes in a block name, expect fails",
      lesson(step={"expect": [{"block": ESC_NAME, "vx": 99}],
                   "scene": dict(SCENE, blocks=[dict(SCENE["blocks"][0], name=ESC_NAME),
@@ -339,7 +418,8 @@ def path_cases(outside):
 
 
 # Cases that load and fail only when run to the pause point: the CLI's checks, not offscreen's.
-RUNTIME_CASES = {"expect fails", "pause never comes", "escape bytes in a block name, expect fails"}
+RUNTIME_CASES = {"expect fails", "pause never comes", "escape bytes in a block name, expect fails",
+                 "marked choice contradicted", "a second choice proved too"}
 
 
 def programs(suite, path, cwd, case=""):

@@ -12,6 +12,7 @@
 // offscreen renderer uses the same codes. window_glfw.cpp checks they match <GLFW/glfw3.h>.
 namespace keys {
 constexpr int kSpace = 32;
+constexpr int kA = 65;
 constexpr int kMinus = 45;
 constexpr int kEqual = 61;
 constexpr int kC = 67;
@@ -46,6 +47,8 @@ constexpr int kKeypad0 = 320; // kKeypad0 + d for the digit d
 constexpr int kKeypadSubtract = 333;
 constexpr int kKeypadAdd = 334;
 constexpr int kKeypadEnter = 335;
+constexpr int kLeftControl = 341;
+constexpr int kRightControl = 345;
 } // namespace keys
 
 enum class Action {
@@ -86,6 +89,7 @@ enum class Action {
     ThrustRight,
     ThrustDown,
     ThrustUp,
+    TogglePoll, // A: the class poll on / off for the open lesson (docs/poll.md)
 };
 
 // When a binding holds: always, or only with thrust off or on (the arrow keys step the lesson

@@ -2,6 +2,7 @@
 
 #include "lesson_runner.h"
 #include "overlays.h"
+#include "save_naming.h"
 
 #include <algorithm>
 
@@ -13,33 +14,88 @@ namespace {
 
 constexpr std::size_t kMaxDigits = 6;
 
-// Runs the frames up to the pause point and pauses there.
-void runToPausePoint(const LessonSession& s, SimulationSession& sim, const View& view) {
-    sim.stopAtFrame.reset(); // reached here, not again by playing on
-    while (s.stopFrame && sim.world().frame < *s.stopFrame) sim.step(lessonRunsSideBySide(s, view));
-    sim.paused = true;
+std::vector<std::string> labelNames(const SimulationSession& sim) {
+    std::vector<std::string> names;
+    for (const BlockLabel& l : sim.labels) names.push_back(l.name);
+    return names;
 }
 
-// The moment: the answer shows, with the overlays that prove it.
+// True when `now` is not the step's setup as written: its blocks (where, how fast, how heavy,
+// how big, how many) or its settings differ.
+bool differsFromWritten(const World& now, const World& written) {
+    if (now.blocks.size() != written.blocks.size() || stateHash(now) != stateHash(written) ||
+        settingsDiffer(now.settings, written.settings))
+        return true;
+    for (std::size_t i = 0; i < now.blocks.size(); ++i)
+        if (now.blocks[i].mass != written.blocks[i].mass ||
+            now.blocks[i].size.x != written.blocks[i].size.x ||
+            now.blocks[i].size.y != written.blocks[i].size.y)
+            return true;
+    return false;
+}
+
+// The moment: the answer shows, with the overlays that prove it (nothing is claimed when the
+// event did not come).
 void reveal(LessonSession& s, View& view) {
     s.phase = LessonSession::Phase::Moment;
     if (s.step()->question.empty() || s.revealed) return;
+    if (s.watch && s.watch->state() == LessonWatch::State::Missed) return;
     s.revealed = true;
     for (const std::string& name : s.step()->reveal) setOverlay(view.show, name, true);
 }
 
-// Paused at the setup (t = 0), the question asked; `run` says where the step's moment is.
-void showSetup(LessonSession& s, SimulationSession& sim, View& view, const StepRun& run) {
-    const LessonStep& step = *s.step();
+// Paused at the setup (t = 0), the question asked; nothing watched yet.
+void showSetup(LessonSession& s, SimulationSession& sim) {
     s.revealed = false;
     s.phase = LessonSession::Phase::Setup;
-    s.stopFrame.reset();
-    if (step.pause.kind != LessonPause::Kind::None && run.reached)
-        s.stopFrame = static_cast<std::uint64_t>(run.progress.frames);
+    s.watch.reset();
+    s.playedFrom.reset();
     sim.pauseAtSceneEnd = false; // the step stops where it says
     sim.paused = true;
     sim.stopAtFrame.reset();
-    if (s.stopFrame && *s.stopFrame == 0) reveal(s, view); // a step whose moment is its setup
+    sim.stopWhen = nullptr;
+}
+
+// The press that plays the step: from the world as it is now (the lecturer's changes included)
+// its event is watched frame by frame (SimulationSession::stopWhen). False when the step pauses
+// at once (a time of 0, an event about a block that is gone).
+bool startPlaying(LessonSession& s, SimulationSession& sim) {
+    const LessonStep& step = *s.step();
+    s.phase = LessonSession::Phase::Playing;
+    s.playedFrom = sim.world();
+    if (step.pause.kind == LessonPause::Kind::None) {
+        sim.paused = false;
+        return true;
+    }
+    const double within = s.written ? liveWithin(step, *s.written) : 1.0;
+    s.watch.emplace(step, liveBlockIndex(*step.scene, labelNames(sim)), within,
+                    step.pause.watch * sim.timeScale);
+    if (s.watch->atStart(sim.world())) return false;
+    LessonWatch* watch = &*s.watch;
+    sim.stopWhen = [watch](const World& w, const StepStats& stats,
+                           const std::vector<CollisionRecord>& log) {
+        return watch->afterFrame(w, stats, log);
+    };
+    sim.paused = false;
+    return true;
+}
+
+// Runs the frames up to the moment (or to where the event is given up) and pauses there.
+void runToPausePoint(LessonSession& s, SimulationSession& sim, const View& view) {
+    if (s.phase == LessonSession::Phase::Setup && !startPlaying(s, sim)) return;
+    if (!s.watch) return;
+    const LessonStep& step = *s.step();
+    const int limit =
+        frameLimit(step, *s.playedFrom, s.watch->within(), step.pause.watch * sim.timeScale);
+    while (!s.watch->paused()) {
+        if (s.watch->progress().frames >= limit) {
+            s.watch->giveUp(sim.world(), "");
+            break;
+        }
+        sim.step(lessonRunsSideBySide(s, view));
+    }
+    sim.stopWhen = nullptr;
+    sim.paused = true;
 }
 
 } // namespace
@@ -105,7 +161,10 @@ bool enterStep(LessonSession& s, SimulationSession& sim, View& view, Messages& m
     sim.script = step.input; // the step plays its player's keys itself
     sim.reset(); // again, with the selection: the plots and the point of impact follow it
     followNewRun(view, sim.world());
-    showSetup(s, sim, view, runStepToPause(step));
+    s.written =
+        runStepToPause(step); // as written: for a changed run's time and the answer beside it
+    showSetup(s, sim);
+    if (pausesAtItsSetup(step)) lessonShowPausePoint(s, sim, view);
     messages.clear();
     return true;
 }
@@ -114,11 +173,8 @@ void replayStep(LessonSession& s, SimulationSession& sim, View& view, Messages& 
     if (!s.step()) return;
     sim.reset(); // the lecturer's method and settings stay, as R outside lessons
     followNewRun(view, sim.world());
-    LessonStep asRun = *s.step(); // where the step now pauses, with those settings
-    Scene withSettings = *asRun.scene;
-    withSettings.settings = sim.world().settings;
-    asRun.scene = std::make_shared<const Scene>(std::move(withSettings));
-    showSetup(s, sim, view, runStepToPause(asRun));
+    showSetup(s, sim); // played again, it watches for its event in the world as it now is
+    if (pausesAtItsSetup(*s.step())) lessonShowPausePoint(s, sim, view);
     messages.clear();
 }
 
@@ -126,12 +182,10 @@ void lessonNext(LessonSession& s, SimulationSession& sim, View& view, Messages& 
     if (!s.active()) return;
     switch (s.phase) {
     case LessonSession::Phase::Setup: // play toward the moment
-        s.phase = LessonSession::Phase::Playing;
-        sim.stopAtFrame = s.stopFrame;
-        sim.paused = false;
+        if (!startPlaying(s, sim)) lessonShowPausePoint(s, sim, view);
         return;
     case LessonSession::Phase::Playing: // the moment at once
-        if (s.stopFrame) {
+        if (s.pauses()) {
             lessonShowPausePoint(s, sim, view);
             return;
         }
@@ -178,9 +232,8 @@ bool lessonRunsSideBySide(const LessonSession& s, const View& view) {
 }
 
 void lessonAfterFrames(LessonSession& s, SimulationSession& sim, View& view) {
-    if (s.phase != LessonSession::Phase::Playing || !s.stopFrame) return;
-    if (sim.world().frame < *s.stopFrame) return;
-    sim.stopAtFrame.reset();
+    if (s.phase != LessonSession::Phase::Playing || !s.watch || !s.watch->paused()) return;
+    sim.stopWhen = nullptr;
     sim.paused = true;
     reveal(s, view);
 }
@@ -196,7 +249,7 @@ std::string lessonHint(const LessonSession& session) {
     if (!session.step()) return "";
     switch (session.phase) {
     case LessonSession::Phase::Setup:
-        return session.stopFrame ? "PageDown: play" : "";
+        return session.pauses() ? "PageDown: play" : "";
     case LessonSession::Phase::Playing:
         return "PageDown: the moment at once";
     case LessonSession::Phase::Moment:
@@ -205,16 +258,48 @@ std::string lessonHint(const LessonSession& session) {
     return "";
 }
 
-std::vector<LessonLine> lessonCaption(const LessonSession& session) {
-    const LessonStep* step = session.step();
-    if (!step) return {};
+std::vector<std::string> lessonChanges(const LessonSession& s, const SimulationSession& sim) {
+    const LessonStep* step = s.step();
+    if (!step || !s.written) return {};
+    const World& setup = s.playedFrom ? *s.playedFrom : sim.world();
+    if (setup.time != 0.0 || !differsFromWritten(setup, s.written->setup)) return {};
+    return {"your changes"};
+}
+
+LessonTexts lessonTexts(const LessonSession& s, const SimulationSession& sim) {
+    LessonTexts t;
+    const LessonStep* step = s.step();
+    if (!step) return t;
+    // The question reads the world it is asked of: the one on screen at the setup (the lecturer's
+    // changes show at once), the one the step was played from after that.
+    const World& setup = s.playedFrom ? *s.playedFrom : sim.world();
+    const std::vector<int> blocks = liveBlockIndex(*step->scene, labelNames(sim));
+    const std::vector<std::string> changes = lessonChanges(s, sim);
+    const StepPrompt prompt = stepPrompt(*step, setup, blocks, changes.empty());
+    t.caption = prompt.caption;
+    t.question = prompt.question;
+    for (std::size_t i = 0; i < prompt.choices.size(); ++i)
+        t.choices.push_back(choiceLetter(i) + ". " + prompt.choices[i]);
+    if (s.phase != LessonSession::Phase::Moment || !s.watch) return t;
+    const StepRun run = watchedRun(*s.watch, setup, sim.world());
+    const StepAnswer answer = stepAnswer(*step, run, changes, s.written ? &*s.written : nullptr);
+    t.missed = answer.missed;
+    if (s.revealed) t.answer = answer.text;
+    return t;
+}
+
+std::vector<LessonLine> lessonCaption(const LessonSession& session, const SimulationSession& sim) {
+    if (!session.step()) return {};
     using Kind = LessonLine::Kind;
-    std::vector<LessonLine> lines{{Kind::Caption, step->caption}};
-    if (!step->question.empty()) {
-        if (session.revealed)
-            lines.push_back({Kind::Answer, "Answer: " + step->answer});
-        else
-            lines.push_back({Kind::Question, "Predict: " + step->question});
+    const LessonTexts t = lessonTexts(session, sim);
+    std::vector<LessonLine> lines{{Kind::Caption, t.caption}};
+    if (!t.missed.empty()) {
+        lines.push_back({Kind::NoAnswer, "No answer: " + t.missed});
+    } else if (session.revealed) {
+        if (!t.answer.empty()) lines.push_back({Kind::Answer, "Answer: " + t.answer});
+    } else if (!t.question.empty()) {
+        lines.push_back({Kind::Question, "Predict: " + t.question});
+        for (const std::string& c : t.choices) lines.push_back({Kind::Choice, c});
     }
     const std::string hint = lessonHint(session);
     if (!hint.empty()) lines.push_back({Kind::Hint, hint});

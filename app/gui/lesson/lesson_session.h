@@ -2,11 +2,15 @@
 // how it is walked through (next, previous, a step by number; the app's keys call these).
 // It drives the simulation session and the view (never the other way round): entering a step
 // puts the world in exactly the state the step states (lesson_runner's stepStartWorld), every
-// time, shows the step's overlays, camera and frame, and tells the session where to stop
-// (SimulationSession::stopAtFrame). Plain logic: no GL, no ImGui.
+// time, shows the step's overlays, camera and frame; playing it watches every frame for the
+// step's event in the world as the lecturer has made it (lesson_runner's LessonWatch, told by
+// SimulationSession::stopWhen) and pauses after the watch. What the caption bar says is computed
+// from that run (lesson_prompt.h). Plain logic: no GL, no ImGui.
 #pragma once
 
 #include "lesson.h"
+#include "lesson_prompt.h"
+#include "lesson_runner.h"
 #include "messages.h"
 #include "simulation_session.h"
 #include "view.h"
@@ -27,9 +31,13 @@ struct LessonSession {
     std::optional<Lesson> lesson; // none: no lesson open (the app shows scenes)
     std::size_t current = 0;      // step index
     Phase phase = Phase::Setup;
-    // The frame count of the step's pause point (the runner's, for the step as it now runs:
-    // after R, with the lecturer's method and settings). None: it does not pause.
-    std::optional<std::uint64_t> stopFrame;
+    // The step as written, run headless when it is entered: the time a changed run gives its
+    // event (liveWithin) and the result shown beside a changed answer.
+    std::optional<StepRun> written;
+    // The live run, from the press that played it: the world it started from (what the question
+    // and the choices read) and its event, watched frame by frame.
+    std::optional<World> playedFrom;
+    std::optional<LessonWatch> watch;
     bool revealed = false; // the question's answer shows (at the moment)
     std::string digits;    // typed step number, until Enter
 
@@ -41,7 +49,27 @@ struct LessonSession {
         const LessonStep* s = step();
         return s && !s->question.empty() && !revealed;
     }
+    // True when the step pauses by itself (it has an event).
+    bool pauses() const {
+        const LessonStep* s = step();
+        return s && s->pause.kind != LessonPause::Kind::None;
+    }
 };
+
+// What the caption bar says now, computed from the world (lesson_prompt.h): the slide's point, the
+// question and its choices at the setup (the lecturer's changes included), the answer at the
+// moment, or, when the event did not come, why not.
+struct LessonTexts {
+    std::string caption;
+    std::string question;             // "" when the step asks nothing
+    std::vector<std::string> choices; // "A. -2 m/s and 2 J", lettered
+    std::string answer;               // at the moment, when the event came and the step asks
+    std::string missed;               // at the moment, when it did not: why, in words
+};
+LessonTexts lessonTexts(const LessonSession& s, const SimulationSession& sim);
+// What the lecturer changed of the step as written, as the answer says it ("With your changes:
+// ..."); empty while the world played from is the step's setup as written.
+std::vector<std::string> lessonChanges(const LessonSession& s, const SimulationSession& sim);
 
 // The lessons directory compiled in (the source tree's lessons/).
 std::string builtInLessonsDirectory();
@@ -73,15 +101,15 @@ void lessonPrevious(LessonSession& s, SimulationSession& sim, View& view, Messag
 // messages.error and stays (false).
 void lessonTypeDigit(LessonSession& s, int digit);
 bool lessonJump(LessonSession& s, SimulationSession& sim, View& view, Messages& messages);
-// Runs the step to its pause point and reveals its answer: what the window shows once the class
-// has seen the step (offscreen screenshots, --record-steps).
+// Runs the step to its event and the watch after it, and reveals its answer: what the window shows
+// once the class has seen the step (offscreen screenshots, --record-steps).
 void lessonShowPausePoint(LessonSession& s, SimulationSession& sim, View& view);
 // True when the three methods run alongside: their overlay is shown, or the open step reveals
 // it at its moment (it runs hidden while the question is asked, so no table gives the answer
 // away, and shows the whole run with the answer).
 bool lessonRunsSideBySide(const LessonSession& s, const View& view);
 // After the frames of a displayed frame: when the step reached its moment while playing, shows
-// the answer and the overlays that prove it.
+// the answer and the overlays that prove it (or, when its event did not come, says why).
 void lessonAfterFrames(LessonSession& s, SimulationSession& sim, View& view);
 // The caption bar's first line: "n / N · title".
 std::string lessonHeading(const LessonSession& session);
@@ -89,15 +117,16 @@ std::string lessonHeading(const LessonSession& session);
 std::string lessonHint(const LessonSession& session);
 // A line of the caption bar under its heading, as shown.
 struct LessonLine {
-    enum class Kind : std::uint8_t { Caption, Question, Answer, Hint, GoTo };
+    enum class Kind : std::uint8_t { Caption, Question, Choice, Answer, NoAnswer, Hint, GoTo };
     Kind kind;
-    std::string text; // "Predict: " and the question, "Answer: " and the answer, ...
+    std::string text; // "Predict: " and the question, "A. ..." a choice, "Answer: " and the answer
 };
-// The caption bar's lines under its heading, composed here once: the bar draws them (each kind
-// in its colour), the browser page's text reads them (spoken_text.h), the tests check them. The
-// step's caption; then "Predict: " and its question until the answer is revealed, "Answer: " and
-// the answer after; the key to press next (lessonHint); a step number being typed. None without
-// a step.
-std::vector<LessonLine> lessonCaption(const LessonSession& session);
+// The caption bar's lines under its heading, composed here once from lessonTexts: the bar draws
+// them (each kind in its colour, the choices side by side where they fit), the browser page's
+// text and live region read them (spoken_text.h), the tests check them. The step's caption; then
+// "Predict: " and its question with its lettered choices (one line each) until the moment;
+// "Answer: " and the answer the run gives once revealed, or "No answer: " and why the event did
+// not come; the key to press next (lessonHint); a step number being typed. None without a step.
+std::vector<LessonLine> lessonCaption(const LessonSession& session, const SimulationSession& sim);
 // The lines' texts, one per line.
 std::string captionText(const std::vector<LessonLine>& lines);

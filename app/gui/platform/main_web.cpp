@@ -7,21 +7,20 @@
 #include "app_setup.h"
 #include "audio_out.h"
 #include "canvas_web.h"
+#include "imgui_ext.h"
 #include "link.h"
 #include "mouse_tool.h"
 #include "options.h"
 #include "page_controls.h"
 #include "renderer.h"
+#include "spoken_text.h"
 #include "touch_input.h"
 #include "ui_renderer_gl.h"
 #include "ui_style.h"
 #include "url_params.h"
 
 #include <emscripten.h>
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <imgui_internal.h> // a swipe scrolls the window under the finger (ImGui 1.86)
 
 #include <cmath>
 #include <cstdio>
@@ -47,11 +46,12 @@ struct WebApp {
     double linkSceneAt = -1e9;
     double pixelRatio = 1.0; // the ratio app.view.uiScale includes (the user's scale times it)
     TouchInput touch;
-    ImGuiWindow* touchScrolls = nullptr; // what a swipe scrolls: the window under the finger
-    bool typingShown = false;            // the page's field for the on-screen keyboard has focus
+    imgui_ext::ScrollTarget touchScrolls; // what a swipe scrolls: the window under the finger
+    bool typingShown = false;             // the page's field for the on-screen keyboard has focus
     long long frames = 0;
     double realTime = 0.0;  // s since the first frame (the live region's pace)
     std::string shownState; // pageStateJson() as the page last got it
+    SpokenScreen spoken;    // the screen as the live region last told it (spoken_text.h)
     double stateAt = -1e9;  // realTime when the page's text was last made
     double linkAt = -1e9;   // the page's clock (s) when the link was last looked at
 };
@@ -119,15 +119,10 @@ void applyTouch(WebApp& w, double now) {
         w.touch.event(e.phase, e.id, e.pos, e.time);
     if (!w.touch.active()) return;
     const TouchInput::Frame f = w.touch.frame(now);
-    ImGuiIO& io = ImGui::GetIO();
-    io.MousePos = f.pointer ? ImVec2(static_cast<float>(f.pos.x), static_cast<float>(f.pos.y))
-                            : ImVec2(-FLT_MAX, -FLT_MAX); // nothing hovered: no tooltip stays
-    for (bool& down : io.MouseDown) down = false;
-    io.MouseDown[0] = f.down;
-    io.KeyCtrl =
-        f.ctrl || io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL];
-    if (f.scrollY != 0.0 && w.touchScrolls)
-        ImGui::SetScrollY(w.touchScrolls, w.touchScrolls->Scroll.y - static_cast<float>(f.scrollY));
+    imgui_ext::setPointer(f.pointer,
+                          ImVec2(static_cast<float>(f.pos.x), static_cast<float>(f.pos.y)), f.down,
+                          f.ctrl);
+    if (f.scrollY != 0.0) imgui_ext::scrollBy(w.touchScrolls, -static_cast<float>(f.scrollY));
     if (f.pan.x != 0.0 || f.pan.y != 0.0) touchPanZoom(w.app.view, Vec2{}, f.pan, 1.0);
 }
 
@@ -135,13 +130,8 @@ void applyTouch(WebApp& w, double now) {
 // (and which window scrolls), or on the scene (on a block, or empty space)?
 void resolveTouch(WebApp& w) {
     const TouchInput::Mode mode = w.touch.mode();
-    if (mode == TouchInput::Mode::Waiting || mode == TouchInput::Mode::Pending) {
-        ImGuiWindow* window = GImGui->HoveredWindow; // the nearest that scrolls, from there out
-        while (window && (window->Flags & ImGuiWindowFlags_ChildWindow) &&
-               window->ScrollMax.y <= 0.0f)
-            window = window->ParentWindow;
-        w.touchScrolls = window;
-    }
+    if (mode == TouchInput::Mode::Waiting || mode == TouchInput::Mode::Pending)
+        w.touchScrolls = imgui_ext::scrollTargetUnderPointer();
     if (!w.touch.waitingForStart()) return;
     const ImGuiIO& io = ImGui::GetIO();
     const Vec2 at{io.MousePos.x, io.MousePos.y};
@@ -184,7 +174,8 @@ void answerRequests(WebApp& w) {
 constexpr double kPageTextSeconds = 0.25;
 
 // The page's text for a screen reader, kept in step with the canvas (within kPageTextSeconds),
-// and the collisions through its live region (at most about one a second).
+// and through its live region each step entered, its answer, every error (spokenChanges) and the
+// collisions (at most about one a second).
 void tellPage(WebApp& w, double realSeconds) {
     w.realTime += realSeconds;
     if (w.realTime - w.stateAt >= kPageTextSeconds) {
@@ -192,6 +183,9 @@ void tellPage(WebApp& w, double realSeconds) {
         std::string state = pageStateJson(w.app);
         if (state != w.shownState) pageShowState(state);
         w.shownState = std::move(state);
+        SpokenScreen spoken = spokenScreen(w.app);
+        for (const std::string& line : spokenChanges(w.spoken, spoken)) pageAnnounce(line);
+        w.spoken = std::move(spoken);
     }
     const std::string said = w.app.sim.announcer.announce(
         w.realTime, [&](int i) { return w.app.sim.blockDisplayName(i); });
@@ -230,18 +224,13 @@ void frame(void* arg) {
 }
 
 // ImGui's keyboard focus for the browser tests: the focused control's id, whether the focus ring
-// shows, and its rectangle (framebuffer pixels, where it is drawn: NavRectRel is relative to the
-// window's content start, which moves with its scrolling).
+// shows, and its rectangle (framebuffer pixels, where it is drawn).
 std::string navigationJson() {
-    const ImGuiContext& g = *ImGui::GetCurrentContext();
-    ImRect r;
-    if (g.NavWindow) r = ImGui::WindowRectRelToAbs(g.NavWindow, g.NavWindow->NavRectRel[0]);
-    const ImGuiIO& io = ImGui::GetIO();
+    const imgui_ext::KeyboardFocus f = imgui_ext::keyboardFocus();
     char text[200];
     std::snprintf(text, sizeof text, ",\"navId\":%u,\"navVisible\":%s,\"navRect\":[%d,%d,%d,%d]",
-                  static_cast<unsigned>(g.NavId), io.NavActive && io.NavVisible ? "true" : "false",
-                  static_cast<int>(r.Min.x), static_cast<int>(r.Min.y), static_cast<int>(r.Max.x),
-                  static_cast<int>(r.Max.y));
+                  f.id, f.ringShown ? "true" : "false", static_cast<int>(f.min.x),
+                  static_cast<int>(f.min.y), static_cast<int>(f.max.x), static_cast<int>(f.max.y));
     return text;
 }
 

@@ -150,6 +150,10 @@ FrameOutcome SimulationSession::step(bool sideBySide) {
         stopAtFrame.reset();
         out.reachedStop = true;
     }
+    if (stopWhen && stopWhen(w, run.stats, run.lastLog)) {
+        paused = true;
+        out.reachedStop = true;
+    }
     return out;
 }
 

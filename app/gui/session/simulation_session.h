@@ -19,6 +19,7 @@
 #include "world.h"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -84,6 +85,11 @@ struct SimulationSession {
     // Stepping pauses once, at the end of this frame (a lesson step's stop; reaching it clears
     // it). None: no such stop.
     std::optional<std::uint64_t> stopAtFrame;
+    // Asked after every frame (the world, the frame's stats and its collisions): stepping pauses
+    // at the end of a frame for which it says true. A lesson step's event, watched live
+    // (lesson_runner.h, LessonWatch), whatever the lecturer changed. Empty: none.
+    std::function<bool(const World&, const StepStats&, const std::vector<CollisionRecord>&)>
+        stopWhen;
     // Stepping pauses once where the scene's "duration" ends (the scene has made its point); a
     // lesson turns this off, its steps stopping where they say.
     bool pauseAtSceneEnd = true;

@@ -1,10 +1,10 @@
 // The lesson's caption bar: across the top of the scene, "n / N · title" large, the keys (in
 // present mode the method and t: lessonBarStatus) beside it, the caption under it, then the
-// question ("Predict: ...", at the setup and while the step plays; its answer at the moment) and
-// the key to press next. The one caption of a lesson, presenting or
-// not (present mode's one-line caption is for scenes). Opaque, so nothing shows through; its
-// height is kept in app.view.captionHeight and the scene's viewport starts below it. In present
-// mode it is the scene's caption, not a window: --layout-json lists no window there.
+// question ("Predict: ...", with its choices lettered A-D, at the setup and while the step plays;
+// its answer at the moment, or why there is none) and the key to press next. The one caption of a
+// lesson, presenting or not (present mode's one-line caption is for scenes). Opaque, so nothing
+// shows through; its height is kept in app.view.captionHeight and the scene's viewport starts below
+// it. In present mode it is the scene's caption, not a window: --layout-json lists no window there.
 #include "app_frame.h"
 #include "overlay_window.h"
 #include "ui_style.h"
@@ -53,17 +53,35 @@ void drawLessonCaption(App& app) {
         ImGui::Text("   %s", status.c_str());
     else
         ImGui::TextColored(uiDimColor(), "   %s", status.c_str());
-    ImGui::PushTextWrapPos(0.0f);
-    for (const LessonLine& line : lessonCaption(s)) {
+    // Computed from the world as it is (lesson_prompt.h): true after any change of the lecturer's;
+    // composed once (lessonCaption), which the page's screen-reader text reads too. Wrapped at
+    // spaces and never inside an equation's number (wrapFormula: "0.\n5" is not 0.5).
+    const auto said = [](const ImVec4& color, const std::string& text) {
+        ImGui::PushStyleColor(ImGuiCol_Text, color);
+        textWrappedFormula(text);
+        ImGui::PopStyleColor();
+    };
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    const float gap = ImGui::CalcTextSize("    ").x;
+    for (const LessonLine& line : lessonCaption(s, app.sim)) {
         switch (line.kind) {
         case LessonLine::Kind::Caption:
-            ImGui::TextUnformatted(line.text.c_str());
+            textWrappedFormula(line.text);
             break;
         case LessonLine::Kind::Question:
-            ImGui::TextColored(uiQuestionColor(), "%s", line.text.c_str());
+            said(uiQuestionColor(), line.text);
             break;
+        case LessonLine::Kind::Choice: {
+            // The choices after the question and side by side where they fit (a short question
+            // and its choices take one line), each whole.
+            const float width = ImGui::CalcTextSize(line.text.c_str()).x;
+            if (ImGui::GetItemRectMax().x + gap + width <= right) ImGui::SameLine(0.0f, gap);
+            said(uiQuestionColor(), line.text);
+            break;
+        }
         case LessonLine::Kind::Answer:
-            ImGui::TextColored(uiNoteColor(), "%s", line.text.c_str());
+        case LessonLine::Kind::NoAnswer:
+            said(uiNoteColor(), line.text);
             break;
         case LessonLine::Kind::Hint:
         case LessonLine::Kind::GoTo:
@@ -71,7 +89,6 @@ void drawLessonCaption(App& app) {
             break;
         }
     }
-    ImGui::PopTextWrapPos();
     ImGui::PopFont();
     app.view.captionHeight = ImGui::GetWindowHeight();
     ImGui::End();

@@ -5,6 +5,7 @@
 #include "equation_check.h"
 #include "inspector_format.h"
 #include "lesson.h"
+#include "lesson_prompt.h"
 #include "poi.h"
 #include "scene.h"
 
@@ -500,14 +501,19 @@ TEST(EquationCheck, EveryInspectorLineHoldsOverEveryShippedScene) {
     std::printf("%d runs, %d relations checked\n", runs, checked);
 }
 
-// The lesson's own text: whatever a caption, question or answer writes as an equation holds.
+// The lesson's own text, as shown (computed from the step as written: lesson_prompt.h): whatever
+// a caption, question, choice or answer writes as an equation holds.
 TEST(EquationCheck, EveryEquationInTheLectureLessonHolds) {
     const LessonResult lesson = lectureLesson();
     ASSERT_TRUE(lesson.lesson) << lesson.error.message;
     int checked = 0;
     for (std::size_t i = 0; i < lesson.lesson->steps.size(); ++i) {
         const LessonStep& step = lesson.lesson->steps[i];
-        for (const std::string& text : {step.title, step.caption, step.question, step.answer}) {
+        const StepPrompt prompt = stepPrompt(step);
+        std::vector<std::string> texts{step.title, prompt.caption, prompt.question,
+                                       stepAnswer(step, runStepToPause(step), {}, nullptr).text};
+        texts.insert(texts.end(), prompt.choices.begin(), prompt.choices.end());
+        for (const std::string& text : texts) {
             const EquationReport c = checkEquations(text);
             checked += c.checked;
             EXPECT_TRUE(c.holds()) << "step " << i + 1 << ": " << text << "\n" << problems(c);

@@ -2,6 +2,8 @@
 // and the screen's texts as sentences.
 #include "app.h"
 #include "collision_announcer.h"
+#include "input_map.h"
+#include "lesson_session.h"
 #include "spoken_text.h"
 
 #include <gtest/gtest.h>
@@ -72,6 +74,44 @@ TEST(SpokenText, TheScreenAsSentences) {
     app = playedThroughTheCollision();
     app.sim.paused = false;
     EXPECT_EQ(spokenScreen(app).status, "perfect method, t = 0.633 s, running, 1 collision");
+}
+
+// Issue 38: a screen reader hears each step entered (its title and question with the choices),
+// the answer at the moment, and every error, once each (spokenChanges; the browser page's live
+// region says these lines: tests/web/browser_test.py).
+TEST(SpokenText, StepsAnswersAndErrorsAreAnnouncedOnce) {
+    App app;
+    app.shipped.scenesDir = SANDBOX_SCENES_DIR;
+    ASSERT_TRUE(openLesson(app, std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json", 2))
+        << app.ui.messages.error;
+    SpokenScreen before;
+    SpokenScreen now = spokenScreen(app);
+    std::vector<std::string> said = spokenChanges(before, now);
+    ASSERT_EQ(said.size(), 1u);
+    EXPECT_EQ(said[0].rfind("Lesson: Lecture 3: Newton's laws & collisions, step 3 of 27: "
+                            "Bounciness C and kinetic energy. Question: 1 kg at 4 m/s (8 J) hits "
+                            "the right wall with C = 0.5. Its velocity after, and its kinetic "
+                            "energy? A. -2 m/s and 2 J. B.",
+                            0),
+              0u)
+        << said[0];
+    EXPECT_TRUE(spokenChanges(now, spokenScreen(app)).empty()); // nothing new: nothing said
+    before = now;
+    lessonShowPausePoint(app);
+    now = spokenScreen(app);
+    said = spokenChanges(before, now);
+    ASSERT_EQ(said.size(), 1u);
+    EXPECT_EQ(said[0].rfind("Answer: A. v' = -C·v = -0.5·4 = -2 m/s", 0), 0u) << said[0];
+    before = now;
+    lessonTypeDigit(app.lesson, 9);
+    lessonTypeDigit(app.lesson, 9);
+    applyLessonAction(app, Action::LessonJump);
+    now = spokenScreen(app);
+    said = spokenChanges(before, now);
+    ASSERT_EQ(said.size(), 1u);
+    EXPECT_NE(said[0].find("Error: "), std::string::npos) << said[0];
+    EXPECT_NE(said[0].find("no step 99 (the lesson has steps 1 to 27)"), std::string::npos)
+        << said[0];
 }
 
 } // namespace

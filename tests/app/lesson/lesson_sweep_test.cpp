@@ -13,6 +13,7 @@
 // over a block it does not belong to.
 #include "frame_json.h"
 #include "lesson.h"
+#include "lesson_prompt.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -163,6 +164,15 @@ double gapAtTheMoment(std::size_t step, const std::string& left, const std::stri
     return b.x - (a.x + a.w);
 }
 
+// The point of impact overlay's mark `name` ("POI": the block where it touched) at the moment.
+Rect markAtTheMoment(std::size_t step, const std::string& name) {
+    const Shot& m = shotOf(step, true);
+    for (const auto& mark : m.layout.at("marks"))
+        if (mark.at("name") == name) return rectOf(mark.at("rect"));
+    ADD_FAILURE() << m.name() << ": no mark '" << name << "' in the layout";
+    return {};
+}
+
 // How far right block `name` moved from the setup to the moment, in the moment's pixels.
 double movedRight(std::size_t step, const std::string& name) {
     const Shot &setup = shotOf(step, false), &moment = shotOf(step, true);
@@ -222,8 +232,13 @@ const std::vector<Effect>& effects() {
          [] { return sank(18, "top"); }},
         {19, "the order asymmetry, |gap(A, B) - gap(B, C)|",
          [] { return std::abs(gapAtTheMoment(19, "A", "B") - gapAtTheMoment(19, "B", "C")); }},
-        {20, "how far short of D A is reset (no overlap)",
-         [] { return gapAtTheMoment(20, "A", "D"); }},
+        // The moment shows A a watched second after its reset, flying on over D: where it was
+        // reset is the point of impact's mark.
+        {20, "how far short of D A is reset (no overlap): the point of impact's mark to D",
+         [] {
+             const Rect poi = markAtTheMoment(20, "POI");
+             return blockIn(shotOf(20, true), "D").x - (poi.x + poi.w);
+         }},
         {22, "where the mover touched the step to where it was put (the crooked result)",
          [] { return rightOfWhereItTouched(22, "mover", "floor step"); }},
         {23, "the gap the top pair opens (they part: no collision)",
@@ -486,12 +501,21 @@ TEST(LessonSweep, TheSetupAsksTheQuestionAndTheMomentAnswersIt) {
         const LessonStep& step = lecture3().steps.at(s.step - 1);
         if (step.question.empty()) continue;
         const std::string caption = captionWords(s);
-        const std::string question = "Predict: " + oneLine(step.question);
-        const std::string answer = "Answer: " + oneLine(step.answer);
+        // As shown: computed from the step as written (lesson_prompt.h), the choices lettered.
+        const StepPrompt prompt = stepPrompt(step);
+        const std::string question = "Predict: " + oneLine(prompt.question);
+        const std::string answer =
+            "Answer: " + oneLine(stepAnswer(step, runStepToPause(step), {}, nullptr).text);
         const bool asked = caption.find(question) != std::string::npos;
         const bool answered = caption.find(answer) != std::string::npos;
         EXPECT_EQ(asked, !s.moment) << s.name() << ": the question\n" << caption;
         EXPECT_EQ(answered, s.moment) << s.name() << ": the answer\n" << caption;
+        for (std::size_t c = 0; c < prompt.choices.size(); ++c) {
+            const std::string choice = choiceLetter(c) + ". " + oneLine(prompt.choices[c]);
+            EXPECT_EQ(caption.find(choice) != std::string::npos, !s.moment)
+                << s.name() << ": choice " << choiceLetter(c) << "\n"
+                << caption;
+        }
     }
 }
 
