@@ -14,6 +14,8 @@ import os
 import re
 import sys
 
+from check_include_cycles import repository_root
+
 LIMIT = 20
 CHECKED_ROOTS = ("app", "engine", "tests")
 SOURCE_SUFFIXES = (".c", ".cc", ".cpp", ".cxx", ".h", ".hh", ".hpp", ".inl", ".py", ".js",
@@ -33,12 +35,8 @@ def folder_sizes(root):
 
 
 def main(argv):
-    if len(argv) > 2 or (len(argv) == 2 and argv[1].startswith("-")):
-        print(__doc__.strip().splitlines()[2].strip(), file=sys.stderr)
-        return 2
-    root = argv[1] if len(argv) == 2 else os.path.join(os.path.dirname(__file__), "..")
-    if not os.path.isdir(root):
-        print(f"check_folder_sizes: {root}: not a folder", file=sys.stderr)
+    root = repository_root(argv, "check_folder_sizes", __doc__)
+    if root is None:
         return 2
     sizes = folder_sizes(root)
     over = [(folder, count) for folder, count in sizes if count > LIMIT]

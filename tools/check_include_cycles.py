@@ -205,13 +205,31 @@ def cycles(graph):
     return found
 
 
-def main(argv):
+def repository_root(argv, tool, doc):
+    """The folder a tools/ script checks: its one argument, else the repository it sits in.
+    None (after printing why) on bad usage or a path that is no folder."""
     if len(argv) > 2 or (len(argv) == 2 and argv[1].startswith("-")):
-        print(__doc__.strip().splitlines()[2].strip(), file=sys.stderr)
-        return 2
+        print(doc.strip().splitlines()[2].strip(), file=sys.stderr)
+        return None
     root = argv[1] if len(argv) == 2 else os.path.join(os.path.dirname(__file__), "..")
     if not os.path.isdir(root):
-        print(f"check_include_cycles: {root}: not a folder", file=sys.stderr)
+        print(f"{tool}: {root}: not a folder", file=sys.stderr)
+        return None
+    return root
+
+
+def print_cycles(kind, found, graph, name=lambda node: node):
+    """Each cycle as its chain, then one line per link: the include that makes it."""
+    for chain in found:
+        print(f"{kind}: {' -> '.join(name(node) for node in chain)}")
+        for node, next_node in zip(chain, chain[1:]):
+            path, line, included = graph[node][next_node]
+            print(f'  {path}:{line}: #include "{included}"')
+
+
+def main(argv):
+    root = repository_root(argv, "check_include_cycles", __doc__)
+    if root is None:
         return 2
     try:
         graph = include_graph(root)
@@ -219,18 +237,10 @@ def main(argv):
         print(f"check_include_cycles: {error}", file=sys.stderr)
         return 2
     found = cycles(graph)
-    for chain in found:
-        print(f"include cycle: {' -> '.join(chain)}")
-        for unit, next_unit in zip(chain, chain[1:]):
-            path, line, name = graph[unit][next_unit]
-            print(f'  {path}:{line}: #include "{name}"')
+    print_cycles("include cycle", found, graph)
     folders = folder_graph(graph)
     found_folders = cycles(folders)
-    for chain in found_folders:
-        print(f"folder cycle: {' -> '.join(f + '/' for f in chain)}")
-        for folder, next_folder in zip(chain, chain[1:]):
-            path, line, name = folders[folder][next_folder]
-            print(f'  {path}:{line}: #include "{name}"')
+    print_cycles("folder cycle", found_folders, folders, lambda folder: folder + "/")
     if found:
         print(f"check_include_cycles: {len(found)} cycle(s) among the project's own files "
               "(a file and its header count as one): break each by moving what both need below "

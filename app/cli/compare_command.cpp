@@ -19,20 +19,16 @@ bool refuse(std::ostream& err, const char* option, const std::string& value,
 } // namespace
 
 int compareCommand(const CompareRequest& r, std::ostream& out, std::ostream& err) {
-    // Usage first: gxp needs its scale, and the scale and origin mean nothing without gxp.
+    // gxp needs its scale, and the scale and origin mean nothing without gxp (trace.h: the rule
+    // the app's --trace-units follows too).
     TraceUnitsSpec units;
-    if (r.units && !parseTraceUnits(*r.units, units.units)) {
-        refuse(err, "--units", *r.units, "must be si or gxp");
-        return kExitUsage;
-    }
-    const bool gxp = units.units == TraceUnits::Gxp;
-    if (gxp && !r.pxPerM) {
-        err << "sandbox-cli compare: --units gxp needs --px-per-m N (pixels per metre)\n";
-        return kExitUsage;
-    }
-    if (!gxp && (r.pxPerM || r.pxOrigin)) {
-        err << "sandbox-cli compare: --px-per-m and --px-origin are for --units gxp\n";
-        return kExitUsage;
+    if (const auto refused =
+            readTraceUnitsOptions({r.units, r.pxPerM, r.pxOrigin}, "--units", units)) {
+        if (refused->text.empty())
+            err << "sandbox-cli compare: " << refused->flag << " " << refused->expected << "\n";
+        else
+            refuse(err, refused->flag.c_str(), refused->text, refused->expected);
+        return refused->usage ? kExitUsage : kExitBadInput;
     }
     std::optional<Method> method;
     if (r.method) {
@@ -42,18 +38,6 @@ int compareCommand(const CompareRequest& r, std::ostream& out, std::ostream& err
             return kExitBadInput;
         }
         method = m;
-    }
-    if (gxp) {
-        if (std::string p = parsePxPerM(*r.pxPerM, units.pxPerM); !p.empty()) {
-            refuse(err, "--px-per-m", *r.pxPerM, p);
-            return kExitBadInput;
-        }
-        if (r.pxOrigin) {
-            if (std::string p = parsePxOrigin(*r.pxOrigin, units.originPx); !p.empty()) {
-                refuse(err, "--px-origin", *r.pxOrigin, p);
-                return kExitBadInput;
-            }
-        }
     }
     double tolerance = 0.0;
     if (r.tolerance) {

@@ -7,6 +7,7 @@
 #include "poll_command.h"
 #include "printable.h"
 #include "settings_table.h"
+#include "trace.h"      // the trace-units options' table
 #include "vocabulary.h" // the overlay table (header-only): its names, for lesson files
 
 #include <CLI/CLI.hpp>
@@ -172,22 +173,20 @@ int main(int argc, char** argv) {
     CLI::Option* compareMethodOpt = compareCmd->add_option(
         "--method", compareMethod,
         "The reference's method: perfect, move-and-correct or turn-based (default: the scene's)");
-    CLI::Option* unitsOpt = compareCmd->add_option(
-        "--units", units,
-        "si (m, m/s, y up; the default) or gxp (pixels, y down, velocities in pixels per frame)");
-    CLI::Option* pxPerMOpt =
-        compareCmd->add_option("--px-per-m", pxPerM, "gxp: pixels per metre (required with gxp)");
-    CLI::Option* pxOriginOpt = compareCmd->add_option(
-        "--px-origin", pxOrigin, "gxp: the pixel X,Y of the world's top-left corner (default 0,0)");
+    // The trace's units: trace.h's table, shared with the app's --compare.
+    CLI::Option* unitsOpt = compareCmd->add_option("--units", units, kTraceUnitsOption.help);
+    CLI::Option* pxPerMOpt = compareCmd->add_option(kPxPerMOption.flag, pxPerM, kPxPerMOption.help);
+    CLI::Option* pxOriginOpt =
+        compareCmd->add_option(kPxOriginOption.flag, pxOrigin, kPxOriginOption.help);
     CLI::Option* toleranceOpt = compareCmd->add_option(
         "--tolerance", tolerance,
         "Positions within M metres are the same (default: a thousandth of the smallest block); "
         "velocities within M per frame");
     compareCmd->add_flag("--json", compare.json, "Print one JSON object");
     compareMethodOpt->type_name("M");
-    unitsOpt->type_name("si|gxp");
-    pxPerMOpt->type_name("N");
-    pxOriginOpt->type_name("X,Y");
+    unitsOpt->type_name(kTraceUnitsOption.value);
+    pxPerMOpt->type_name(kPxPerMOption.value);
+    pxOriginOpt->type_name(kPxOriginOption.value);
     toleranceOpt->type_name("M");
 
     PollCommandRequest poll;

@@ -196,6 +196,28 @@ std::string parsePxPerM(const std::string& text, double& pxPerM) {
     return limits::textViolation(text, kPxPerM, pxPerM);
 }
 
+std::optional<TraceUnitsRefusal>
+readTraceUnitsOptions(const TraceUnitsOptions& given, const char* unitsFlag, TraceUnitsSpec& spec) {
+    TraceUnitsSpec read;
+    if (given.units && !parseTraceUnits(*given.units, read.units))
+        return TraceUnitsRefusal{unitsFlag, *given.units, "must be si or gxp", true};
+    const bool gxp = read.units == TraceUnits::Gxp;
+    if (gxp && !given.pxPerM)
+        return TraceUnitsRefusal{std::string(unitsFlag) + " gxp", "",
+                                 "needs --px-per-m N (pixels per metre)", true};
+    if (!gxp && (given.pxPerM || given.pxOrigin))
+        return TraceUnitsRefusal{"--px-per-m and --px-origin", "",
+                                 std::string("are for ") + unitsFlag + " gxp", true};
+    if (given.pxPerM)
+        if (std::string p = parsePxPerM(*given.pxPerM, read.pxPerM); !p.empty())
+            return TraceUnitsRefusal{kPxPerMOption.flag, *given.pxPerM, p};
+    if (given.pxOrigin)
+        if (std::string p = parsePxOrigin(*given.pxOrigin, read.originPx); !p.empty())
+            return TraceUnitsRefusal{kPxOriginOption.flag, *given.pxOrigin, p};
+    spec = read;
+    return std::nullopt;
+}
+
 std::string parsePxOrigin(const std::string& text, Vec2& origin) {
     const std::size_t comma = text.find(',');
     if (comma == std::string::npos) return "must be X,Y in pixels, e.g. 40,30";
@@ -217,9 +239,6 @@ std::string traceBlockName(const Scene& scene, int index) {
 Vec2 positionToPixels(Vec2 m, const Bounds& bounds, const TraceUnitsSpec& u) {
     return {u.originPx.x + (m.x - bounds.min.x) * u.pxPerM,
             u.originPx.y + (bounds.max.y - m.y) * u.pxPerM};
-}
-Vec2 velocityToPixels(Vec2 v, double dt, const TraceUnitsSpec& u) {
-    return {v.x * u.pxPerM * dt, -v.y * u.pxPerM * dt};
 }
 Vec2 positionFromPixels(Vec2 px, const Bounds& bounds, const TraceUnitsSpec& u) {
     return {bounds.min.x + (px.x - u.originPx.x) / u.pxPerM,

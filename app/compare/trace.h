@@ -44,6 +44,42 @@ bool parseTraceUnits(const std::string& name, TraceUnits& units);
 std::string parsePxPerM(const std::string& text, double& pxPerM);
 std::string parsePxOrigin(const std::string& text, Vec2& origin);
 
+// ---- The trace's units on a command line: one table and one rule for both parsers ----
+// sandbox-cli compare (its units' flag --units) and sandbox / sandbox-offscreen beside --compare
+// (--trace-units) share these options: their words here, their reading in readTraceUnitsOptions.
+struct OptionWords {
+    const char* flag;
+    const char* value; // the value's name in the help
+    const char* help;
+};
+inline constexpr OptionWords kTraceUnitsOption{
+    "", "si|gxp",
+    "The trace's units: si (m, m/s, y up; the default) or gxp (pixels, y down, velocities in "
+    "pixels per frame; needs --px-per-m)"};
+inline constexpr OptionWords kPxPerMOption{"--px-per-m", "N",
+                                           "gxp: pixels per metre (required with gxp)"};
+inline constexpr OptionWords kPxOriginOption{
+    "--px-origin", "X,Y", "gxp: the pixel X,Y of the world's top-left corner (default 0,0)"};
+
+// The options as given (absent: not given).
+struct TraceUnitsOptions {
+    std::optional<std::string> units, pxPerM, pxOrigin;
+};
+// Why they are refused: the flag, the text given ("" when the refusal is of the combination) and
+// what it must be; `usage` when bad usage (exit 2: an unknown unit, gxp without its scale, a
+// scale without gxp) rather than a bad value (a scale or an origin out of its limits).
+struct TraceUnitsRefusal {
+    std::string flag;
+    std::string text;
+    std::string expected;
+    bool usage = false;
+};
+// Reads the options into `spec` (`unitsFlag` names the units' own flag in a refusal): gxp needs
+// --px-per-m; --px-per-m and --px-origin are for gxp only; the values as parsePxPerM and
+// parsePxOrigin read them. Nothing when they are good.
+std::optional<TraceUnitsRefusal> readTraceUnitsOptions(const TraceUnitsOptions& given,
+                                                       const char* unitsFlag, TraceUnitsSpec& spec);
+
 // One row: the state of each traced block after `frame` frames (frame 0: the start).
 struct TraceRow {
     std::int64_t frame = 0;
@@ -80,6 +116,5 @@ std::string traceBlockName(const Scene& scene, int index);
 // A state in SI units as the gxp numbers a student's engine prints (and back): pixels with y
 // down from the world's top-left corner at `units.originPx`, velocities in pixels per frame.
 Vec2 positionToPixels(Vec2 metres, const Bounds& bounds, const TraceUnitsSpec& units);
-Vec2 velocityToPixels(Vec2 metresPerSecond, double dt, const TraceUnitsSpec& units);
 Vec2 positionFromPixels(Vec2 px, const Bounds& bounds, const TraceUnitsSpec& units);
 Vec2 velocityFromPixels(Vec2 pxPerFrame, double dt, const TraceUnitsSpec& units);

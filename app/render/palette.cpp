@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 
 namespace {
 
@@ -55,13 +54,6 @@ bool parseHexColor(const std::string& text, Color& out) {
     }
     out = {bytes[0] / 255.0f, bytes[1] / 255.0f, bytes[2] / 255.0f, 1.0f};
     return true;
-}
-
-std::string toHexColor(const Color& color) {
-    char buf[8];
-    std::snprintf(buf, sizeof buf, "#%02x%02x%02x", static_cast<unsigned>(toByte(color.r)),
-                  static_cast<unsigned>(toByte(color.g)), static_cast<unsigned>(toByte(color.b)));
-    return buf;
 }
 
 Color Color::over(const Color& backdrop) const {

@@ -22,8 +22,6 @@ struct Color {
 
 // Parses "#rrggbb" (or "rrggbb"), case-insensitive. Returns false for anything else.
 bool parseHexColor(const std::string& text, Color& out);
-// "#rrggbb" for a colour (alpha ignored).
-std::string toHexColor(const Color& color);
 
 // The blocks' palette: eight colours that stay apart for every reader (see markGroups below),
 // each with the name a scene uses for its block ("red", ...). Shipped scenes take their colours

@@ -18,21 +18,17 @@ namespace {
 
 using limits::Range;
 
-// A block's keys in the order of a scene file; the panel's words for the fields it edits.
+// A block's keys in the order of a scene file (the panel's words for the fields it edits are the
+// app's: app/gui/view/panel_rows.h).
 const BlockKey kBlock[] = {
-    {"name", BlockKind::Text, &BlockDef::name, nullptr, Range{0, 0, ""}, false, "", "", ""},
-    {"position", BlockKind::Pair, nullptr, &BlockDef::position, limits::kCoordinate, true,
-     "position", "(%.2f, %.2f) m", ""},
-    {"size", BlockKind::Size, nullptr, &BlockDef::size, limits::kSize, true, "size", "%.2f m", ""},
-    {"velocity", BlockKind::Pair, nullptr, &BlockDef::velocity, limits::kSpeed, false, "velocity",
-     "%.2f m/s", ""},
-    {"mass", BlockKind::Mass, nullptr, nullptr, limits::kMass, false, "mass", "%.3g kg", ""},
-    {"force", BlockKind::Force, nullptr, &BlockDef::force, limits::kForce, false, "force", "%.2f N",
-     "A constant force on the block (N), a = F/m (Ctrl+click to type); its arrow is drawn with "
-     "the arrows overlay"},
-    {"color", BlockKind::Color, &BlockDef::color, nullptr, Range{0, 0, ""}, false, "", "", ""},
-    {"friction", BlockKind::Own, nullptr, nullptr, limits::kFriction, false, "", "", "",
-     &BlockDef::friction},
+    {"name", BlockKind::Text, &BlockDef::name, nullptr, Range{0, 0, ""}, false},
+    {"position", BlockKind::Pair, nullptr, &BlockDef::position, limits::kCoordinate, true},
+    {"size", BlockKind::Size, nullptr, &BlockDef::size, limits::kSize, true},
+    {"velocity", BlockKind::Pair, nullptr, &BlockDef::velocity, limits::kSpeed, false},
+    {"mass", BlockKind::Mass, nullptr, nullptr, limits::kMass, false},
+    {"force", BlockKind::Force, nullptr, &BlockDef::force, limits::kForce, false},
+    {"color", BlockKind::Color, &BlockDef::color, nullptr, Range{0, 0, ""}, false},
+    {"friction", BlockKind::Own, nullptr, nullptr, limits::kFriction, false, &BlockDef::friction},
 };
 
 bool sameNumber(double a, double b) {
@@ -76,16 +72,6 @@ std::vector<const WorldKey*> sceneRowsBy(int (*rank)(const WorldKey&)) {
 }
 
 constexpr int kLast = 1000000; // the rank of a row without a place: after the placed ones
-
-const std::vector<const WorldKey*>& shownOrder() {
-    // Panel rows first, by section and place.
-    static const std::vector<const WorldKey*> rows = sceneRowsBy([](const WorldKey& k) {
-        return k.panel.section == Section::None
-                   ? kLast
-                   : static_cast<int>(k.panel.section) * 1000 + k.panel.place;
-    });
-    return rows;
-}
 
 const std::vector<const WorldKey*>& cliOrder() {
     static const std::vector<const WorldKey*> rows =

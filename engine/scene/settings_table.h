@@ -1,9 +1,11 @@
 // The one table of the world's settings (WorldSettings) and of a block's fields (BlockDef): for
 // each its key in scene files, the member it sets, its kind, limits and unit, and the words people
-// read (the panel's label and tooltip, the note of a scene saved with changed settings, the log).
-// Scene parsing and saving, equality, the timeline's comparison, the --verbose log, sandbox-cli
-// run's flags and --json, and the controls panel all read the rows, so a new world key is a row
-// here, the engine code that uses it, a test and the docs (docs/scene-format.md).
+// read (its name and symbol in the note of a scene saved with changed settings and the log,
+// sandbox-cli's flag and help). Scene parsing and saving, equality, the timeline's comparison, the
+// --verbose log, sandbox-cli run's flags and --json, and the controls panel all read the rows, so
+// a new world key is a row here, the engine code that uses it, a test and the docs
+// (docs/scene-format.md); on the panel, also a row of the app's panel table
+// (app/gui/view/panel_rows.cpp: its section, label, slider and tooltip).
 #pragma once
 
 #include "settings_rows.h"
@@ -16,9 +18,6 @@ namespace settings_table {
 // The rows (world_settings.h), in the order of a scene file's "world" (the order they are read
 // and saved).
 Rows<WorldKey> worldKeys();
-// The scene's rows in the panel's order (Simulation, then Physics, then any row not on the
-// panel, in table order): the panel draws them and the --verbose log describes changes so.
-const std::vector<const WorldKey*>& shownOrder();
 // The scene's rows in sandbox-cli's order (its help and run --json): the placed ones (cliPlace
 // 1, 2, ...), then the others in table order.
 const std::vector<const WorldKey*>& cliOrder();

@@ -23,9 +23,6 @@ enum class Kind : std::uint8_t {
     Flag,    // true or false
 };
 
-// Where the controls panel shows a setting; None: not on the panel.
-enum class Section : std::uint8_t { None, Simulation, Physics };
-
 // The names of a Choice or a NameSet, from the engine's own name functions (methodName, ...).
 struct Names {
     int count = 0;
@@ -56,12 +53,12 @@ struct Member {
 };
 
 // How people read a setting: its name in sentences ("gravity", "frame rate": the note, the
-// panel), its symbol ("C", "g"), the panel's tooltip; a rate is shown as 1/value (dt as a frame
-// rate, within `rateRange`, whose unit is shown).
+// log), its symbol ("C", "g"); a rate is shown as 1/value (dt as a frame rate, within
+// `rateRange`, whose unit is shown). The panel's own columns (its label, slider, tooltip) are the
+// app's (app/gui/view/panel_rows.h), keyed by the row's key.
 struct Shown {
     const char* name = "";
     const char* symbol = "";
-    const char* tooltip = "";
     bool asRate = false;
     limits::Range rateRange{0.0, 0.0, ""};
 };
@@ -75,26 +72,12 @@ struct Cli {
     int place = 0;
 };
 
-// The controls panel: section, place in it (1 first), label, the slider's range and format; a
-// Pair's preset button (its label and tooltip) sets the default value.
-struct Panel {
-    Section section = Section::None;
-    int place = 0;
-    const char* label = "";
-    float min = 0.0f, max = 0.0f;
-    const char* format = "";
-    bool logarithmic = false;
-    const char* presetLabel = "";
-    const char* presetTooltip = "";
-};
-
 // One row: a world setting.
 struct WorldKey : Member {
     const char* key = ""; // in a scene's "world", sandbox-cli run --json and the --verbose log
     limits::Range range{0.0, 0.0, ""}; // Number, Whole, Pair
     Shown shown;
     Cli cli;
-    Panel panel;
     bool inScene = true; // false: an engine-only setting (no scene key, no panel, no flag)
 };
 
@@ -127,9 +110,6 @@ struct BlockKey {
     Vec2 BlockDef::*pair;        // Pair, Size, Force
     limits::Range range;         // Pair, Size, Mass, Force
     bool required;
-    const char* label;        // the panel's field ("" when the panel has none)
-    const char* sliderFormat; // the panel's number format, unit included
-    const char* tooltip;
     double BlockDef::*number = nullptr; // Own
 };
 

@@ -66,7 +66,8 @@ struct WorldSettings {
 
 WorldSettings defaultWorldSettings();
 
-// ---- The rows: key, member, limits, how people read it, sandbox-cli's flag, the panel ----
+// ---- The rows: key, member, limits, how people read it, sandbox-cli's flag (the panel's columns
+// are the app's: app/gui/view/panel_rows.h) ----
 
 // Method, resolve and integrator as Choice rows: choice<E, &WorldSettings::m, name>().
 namespace settings_table {
@@ -85,60 +86,42 @@ inline constexpr settings_table::WorldKey kWorldKeys[] = {
     {{&WorldSettings::gravity},
      "gravity",
      limits::kGravity,
-     {"gravity", "g", "Gravity (x, y) in m/s² (Ctrl+click to type a value)"},
-     {"--gravity", "GX,GY", "Gravity GX,GY", 5},
-     {settings_table::Section::Simulation, 3, "gravity", -20.0f, 20.0f, "%.2f", false, "9.81",
-      "Gravity 9.81 m/s² down"}},
+     {"gravity", "g"},
+     {"--gravity", "GX,GY", "Gravity GX,GY", 5}},
     {{&WorldSettings::bounciness},
      "bounciness",
      limits::kBounciness,
-     {"bounciness", "C", "Coefficient of restitution: 1 elastic, 0 perfectly inelastic"},
-     {"--bounciness", "C", "Bounciness C", 4},
-     {settings_table::Section::Simulation, 2, "bounciness C", 0.0f, 1.0f, "%.2f"}},
+     {"bounciness", "C"},
+     {"--bounciness", "C", "Bounciness C", 4}},
     {settings_table::choice<Method, &WorldSettings::method, methodName>(),
      "method",
      {},
-     {"method", "",
-      "perfect: events in time order, no overlap\nmove-and-correct: move, then push "
-      "apart\nturn-based: one body at a time"},
-     {"--method", "M", "Simulation method: perfect, move-and-correct or turn-based", 1},
-     {settings_table::Section::Simulation, 1, "method"}},
+     {"method"},
+     {"--method", "M", "Simulation method: perfect, move-and-correct or turn-based", 1}},
     {{&WorldSettings::dt},
      "dt",
      limits::kDt,
-     {"frame rate", "", "Simulation frames per simulated second: dt = 1 / rate", true,
-      limits::kFrameRate},
-     {"--dt", "S", "Seconds per frame", 2},
-     {settings_table::Section::Simulation, 4, "frame rate", 5.0f, 240.0f, "%.0f Hz"}},
+     {"frame rate", "", true, limits::kFrameRate},
+     {"--dt", "S", "Seconds per frame", 2}},
     {{&WorldSettings::substeps},
      "substeps",
      limits::kSubsteps,
      {"substeps"},
-     {"--substeps", "K", "Substeps per frame", 3},
-     {settings_table::Section::Simulation, 5, "substeps", 1.0f, 32.0f, "%d"}},
+     {"--substeps", "K", "Substeps per frame", 3}},
     {settings_table::choice<Resolve, &WorldSettings::resolve, resolveName>(),
      "resolve",
      {},
-     {"resolve", "",
-      "momentum: with Newton, the lecture's formula u = (m1·v1 + m2·v2)/(m1 + m2), "
-      "v' = u - C·(v - u)\nreflect: without Newton, each body reverses its own component as "
-      "off a wall, v' = -C·v (momentum is not kept)\n(slide \"Demo: bouncing squares; "
-      "with/without Newton\")"},
+     {"resolve"},
      {"--resolve", "R",
       "Collision resolve: momentum (the lecture's formula) or reflect (without Newton: each "
-      "body reverses its own velocity, v' = -C*v)"},
-     {settings_table::Section::Physics, 1, "resolve"}},
+      "body reverses its own velocity, v' = -C*v)"}},
     {settings_table::choice<Integrator, &WorldSettings::integrator, integratorName>(),
      "integrator",
      {},
-     {"integrator", "",
-      "semi-implicit-euler: v += a·h, then x += v·h (the lecture's)\nexplicit-euler: x moves "
-      "with the old v\nexact: x += v·h + a·h²/2, the parabola (slide \"It is just an "
-      "approximation of the true movement!\")"},
+     {"integrator"},
      {"--integrator", "I",
       "Integrator: semi-implicit-euler, explicit-euler or exact (constant acceleration "
-      "integrated exactly)"},
-     {settings_table::Section::Physics, 2, "integrator"}},
+      "integrated exactly)"}},
     {{&WorldSettings::mistakes,
       settings_table::Names{static_cast<int>(Mistake::Count),
                             [](int i) { return mistakeName(static_cast<Mistake>(i)); },
@@ -148,33 +131,18 @@ inline constexpr settings_table::WorldKey kWorldKeys[] = {
      {"mistakes"},
      {"--mistake", "NAME",
       "Make one of the lecture's mistakes (repeatable, added to the scene's): discrete, "
-      "move-back, first-found, no-approach-test; none clears the scene's"},
-     {settings_table::Section::Physics, 5, "Mistakes (the Tips slides' bugs)"}},
-    {{&WorldSettings::drag},
-     "drag",
-     limits::kDrag,
-     {"drag", "k",
-      "Quadratic drag: force -k·A·|v|·v, A = w·h; terminal speed sqrt(m·g/(k·A)). Air 1.2, "
-      "water 1000 (slide \"Viscosity/drag: a feather falls slower than a stone\"; Ctrl+click "
-      "to type)"},
-     {},
-     {settings_table::Section::Physics, 3, "drag k", 0.0f, 1000.0f, "%.3g kg/m³", true}},
+      "move-back, first-found, no-approach-test; none clears the scene's"}},
+    {{&WorldSettings::drag}, "drag", limits::kDrag, {"drag", "k"}, {}},
     {{&WorldSettings::friction},
      "friction",
      limits::kFriction,
      // µ is U+00B5 (the micro sign): the panel's font has Latin-1, not Greek.
-     {"friction", "µ",
-      "Coulomb friction at every contact: along the face the relative velocity changes by at "
-      "most µ times the change across it, toward zero, never past it; a block sliding on the "
-      "floor stops after v0/(µ·g) s and v0²/(2·µ·g) m. A pair uses sqrt(µ1·µ2) (Box2D's rule; a "
-      "block's own \"friction\" overrides the world's). 0: none (slide \"Application: "
-      "Platformer\": moving platforms, friction, pushing objects)"},
+     {"friction", "µ"},
      {"--friction", "MU",
       "Coulomb friction coefficient mu at every contact (0: none; a block's own \"friction\" "
-      "still overrides it)"},
-     {settings_table::Section::Physics, 4, "friction µ", 0.0f, 2.0f, "%.2f"}},
+      "still overrides it)"}},
     // The engine's own: no scene key (world.h says what they do).
-    {{&WorldSettings::restSpeed}, "rest_speed", {}, {}, {}, {}, false},
-    {{&WorldSettings::eventCap}, "event_cap", {}, {}, {}, {}, false},
-    {{&WorldSettings::measureOverlap}, "measure_overlap", {}, {}, {}, {}, false},
+    {{&WorldSettings::restSpeed}, "rest_speed", {}, {}, {}, false},
+    {{&WorldSettings::eventCap}, "event_cap", {}, {}, {}, false},
+    {{&WorldSettings::measureOverlap}, "measure_overlap", {}, {}, {}, false},
 };

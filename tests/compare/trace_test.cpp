@@ -208,3 +208,40 @@ TEST(TraceReader, UsageErrorsExitTwo) {
     EXPECT_EQ(compareCommand(request, out, err), 1);
     EXPECT_NE(err.str().find("--method exact: must be"), std::string::npos);
 }
+
+// One rule for the trace's units on both command lines (sandbox-cli compare's --units, the app's
+// --trace-units): what is refused, as usage or as a bad value, and what is read.
+TEST(TraceUnitsOptions, OneRuleForBothCommandLines) {
+    TraceUnitsSpec spec;
+    auto refusal = [&](TraceUnitsOptions given) {
+        return readTraceUnitsOptions(given, "--trace-units", spec);
+    };
+    auto r = refusal({"gxp", std::nullopt, std::nullopt});
+    ASSERT_TRUE(r);
+    EXPECT_TRUE(r->usage);
+    EXPECT_EQ(r->flag + " " + r->expected,
+              "--trace-units gxp needs --px-per-m N (pixels per metre)");
+    r = refusal({"furlongs", std::nullopt, std::nullopt});
+    ASSERT_TRUE(r);
+    EXPECT_TRUE(r->usage);
+    EXPECT_EQ(r->text, "furlongs");
+    r = refusal({std::nullopt, std::nullopt, "40,30"});
+    ASSERT_TRUE(r);
+    EXPECT_TRUE(r->usage);
+    EXPECT_EQ(r->expected, "are for --trace-units gxp");
+    r = refusal({"gxp", "-5", std::nullopt});
+    ASSERT_TRUE(r);
+    EXPECT_FALSE(r->usage); // a bad value
+    EXPECT_EQ(r->flag, "--px-per-m");
+    r = refusal({"gxp", "50", "40"});
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->flag, "--px-origin");
+    EXPECT_EQ(spec.units, TraceUnits::Si); // nothing read from refused options
+    EXPECT_FALSE(refusal({"gxp", "50", "40,30"}));
+    EXPECT_EQ(spec.units, TraceUnits::Gxp);
+    EXPECT_EQ(spec.pxPerM, 50.0);
+    EXPECT_EQ(spec.originPx.x, 40.0);
+    EXPECT_EQ(spec.originPx.y, 30.0);
+    EXPECT_FALSE(refusal({}));
+    EXPECT_EQ(spec.units, TraceUnits::Si);
+}

@@ -74,7 +74,7 @@ struct UiState {
     bool inBrowser = false;
     bool filePickerRequested = false;
     bool copyLinkRequested = false; // "Copy link": the link for what is on screen (browser/link.h)
-    bool touchUi = false;           // sizes for fingers (a touch screen; ui_style.h's uiSetTouch)
+    bool touchUi = false;           // sizes for fingers (a touch screen; ui_style.h's uiFollowView)
     // Where the bounciness slider was last drawn (px; the window and browser tests press it).
     ScreenRect bouncinessSlider;
     // Requests to the window backend.

@@ -1,5 +1,7 @@
 #include "app_config.h"
 
+#include "app.h"
+#include "options.h"
 #include "printable.h"
 #include "safe_file.h"
 
@@ -226,4 +228,24 @@ bool saveAppConfig(const std::string& dir, const AppConfig& config) {
     if (::stat(path.c_str(), &st) == 0 && (!S_ISREG(st.st_mode) || !inside))
         std::filesystem::remove(path, ec);
     return writeFileSafely(path, formatAppConfig(config));
+}
+
+void applyStartSettings(App& app, const AppConfig& config, const Options& options,
+                        double pixelRatio) {
+    const float scale = options.uiScale > 0.0f ? options.uiScale : config.uiScale;
+    setUiScale(app.view, static_cast<float>(scale * pixelRatio));
+    app.view.lightTheme = options.theme.empty() ? config.lightTheme : options.theme == "light";
+    app.view.labelScale = config.labelScale;
+    app.sim.sound.chosen = config.sound >= 0;
+    app.sim.sound.on = config.sound == 1;
+    app.sim.sound.volume = config.volume;
+    if (options.present) setPresentMode(app.view, true);
+}
+
+void keepSettings(const App& app, AppConfig& config, double pixelRatio) {
+    config.uiScale = static_cast<float>(app.view.uiScale / pixelRatio);
+    config.lightTheme = app.view.lightTheme;
+    config.labelScale = app.view.labelScale;
+    config.sound = app.sim.sound.chosen ? (app.sim.sound.on ? 1 : 0) : -1;
+    config.volume = app.sim.sound.volume;
 }

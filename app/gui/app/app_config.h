@@ -9,6 +9,9 @@
 #include <string>
 #include <vector>
 
+struct App;
+struct Options;
+
 // A settings file larger than this is not read (defaults and a warning): 1 MiB.
 inline constexpr std::size_t kMaxSettingsBytes = std::size_t{1} << 20;
 // Bad lines warned about one by one; the rest are counted in one more warning.
@@ -44,3 +47,15 @@ AppConfig loadAppConfig(const std::string& dir, std::vector<std::string>* warnin
 // Writes `dir`/settings.txt through a SafeFile, creating `dir`; a settings.txt that is not a
 // regular file is replaced by one. False on failure (the app carries on).
 bool saveAppConfig(const std::string& dir, const AppConfig& config);
+
+// The settings and the app, glued once for the three mains (window, offscreen, browser): the
+// saved settings under what the command line says (--ui-scale, --theme, --present) give the
+// starting app its UI scale, theme, label size and knocks. The offscreen renderer passes the
+// defaults (its images never depend on a file). `pixelRatio`: the browser's device pixel ratio,
+// which the UI scale includes on screen and leaves out in the file.
+void applyStartSettings(App& app, const AppConfig& config, const Options& options,
+                        double pixelRatio = 1.0);
+// What the settings keep of the app, when the window closes or the browser's page changes: the UI
+// scale (without `pixelRatio`), the theme, the label size, the knocks' choice and volume. The
+// last scene and the window's size are each main's own.
+void keepSettings(const App& app, AppConfig& config, double pixelRatio = 1.0);

@@ -1,10 +1,10 @@
 #include "options.h"
 
-#include "app_config.h"
 #include "input_limits.h"
 #include "input_map.h"
 #include "printable.h"
 #include "safe_file.h"
+#include "view.h" // the UI scale's range
 
 #include <CLI/CLI.hpp>
 
@@ -185,12 +185,13 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
                    "Open a trace your engine printed (CSV: t, then NAME_x, NAME_y, NAME_vx, "
                    "NAME_vy per block; docs/compare.md) on the scene: its blocks as outlines, the "
                    "timeline at the first difference, the inspector's diagnosis");
-    app.add_option("--trace-units", traceUnits,
-                   "The trace's units: si (m, m/s, y up; the default) or gxp (pixels, y down, "
-                   "velocities in pixels per frame; needs --px-per-m)")
-        ->check(CLI::IsMember({"si", "gxp"}));
-    app.add_option("--px-per-m", pxPerM, "gxp: pixels per metre");
-    app.add_option("--px-origin", pxOrigin, "gxp: the pixel X,Y of the world's top-left corner");
+    // The trace's units: trace.h's table and rule, shared with sandbox-cli compare.
+    CLI::Option* unitsOpt = app.add_option("--trace-units", traceUnits, kTraceUnitsOption.help);
+    CLI::Option* pxPerMOpt = app.add_option(kPxPerMOption.flag, pxPerM, kPxPerMOption.help);
+    CLI::Option* pxOriginOpt = app.add_option(kPxOriginOption.flag, pxOrigin, kPxOriginOption.help);
+    unitsOpt->type_name(kTraceUnitsOption.value);
+    pxPerMOpt->type_name(kPxPerMOption.value);
+    pxOriginOpt->type_name(kPxOriginOption.value);
     app.add_option("--poll", o.pollAddress,
                    "With a lesson: the class poll on, served on this address of the machine "
                    "(docs/poll.md; A turns it on and off)")
@@ -250,18 +251,16 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
                                                                std::to_string(o.frames) +
                                                                "): the frames recorded");
         }
-        if (!traceUnits.empty()) parseTraceUnits(traceUnits, o.traceUnits.units);
-        const bool gxp = o.traceUnits.units == TraceUnits::Gxp;
-        if (gxp && pxPerM.empty())
-            throw CLI::ValidationError("--trace-units gxp", "needs --px-per-m N");
-        if (!gxp && (!pxPerM.empty() || !pxOrigin.empty()))
-            throw CLI::ValidationError("--px-per-m and --px-origin", "are for --trace-units gxp");
-        if (!pxPerM.empty())
-            if (std::string p = parsePxPerM(pxPerM, o.traceUnits.pxPerM); !p.empty())
-                throw CLI::ValidationError("--px-per-m", p);
-        if (!pxOrigin.empty())
-            if (std::string p = parsePxOrigin(pxOrigin, o.traceUnits.originPx); !p.empty())
-                throw CLI::ValidationError("--px-origin", p);
+        auto given = [](const CLI::Option* option, const std::string& text) {
+            return option->count() > 0 ? std::optional<std::string>(text) : std::nullopt;
+        };
+        if (const auto refused =
+                readTraceUnitsOptions({given(unitsOpt, traceUnits), given(pxPerMOpt, pxPerM),
+                                       given(pxOriginOpt, pxOrigin)},
+                                      "--trace-units", o.traceUnits))
+            throw CLI::ValidationError(refused->flag +
+                                           (refused->text.empty() ? "" : " " + refused->text),
+                                       refused->expected);
         if (!traceUnits.empty() && o.compareTrace.empty())
             throw CLI::ValidationError("--trace-units", "needs --compare TRACE.csv");
         if (!o.record.empty() && o.frames <= 0) {

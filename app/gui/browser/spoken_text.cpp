@@ -28,14 +28,27 @@ SpokenScreen spokenScreen(const App& app) {
         s.lesson = "Lesson: " + app.lesson.lesson->name + ", step " +
                    std::to_string(app.lesson.current + 1) + " of " +
                    std::to_string(app.lesson.lesson->steps.size()) + ": " + step->title;
-        const LessonTexts texts = lessonTexts(app.lesson, app.sim);
-        s.caption = oneLine(texts.caption);
-        if (!texts.question.empty()) {
-            s.question = oneLine(texts.question);
-            for (const std::string& choice : texts.choices) s.question += " " + choice + ".";
-            if (app.lesson.revealed) s.answer = oneLine(texts.answer);
+        // As the caption bar says it (lessonCaption), each line on one line.
+        for (const LessonLine& line : lessonCaption(app.lesson, app.sim)) {
+            switch (line.kind) {
+            case LessonLine::Kind::Caption:
+                s.caption = oneLine(line.text);
+                break;
+            case LessonLine::Kind::Question:
+                s.question = oneLine(line.text);
+                break;
+            case LessonLine::Kind::Choice:
+                s.question += " " + oneLine(line.text) + ".";
+                break;
+            case LessonLine::Kind::Answer:
+            case LessonLine::Kind::NoAnswer:
+                s.answer = oneLine(line.text);
+                break;
+            case LessonLine::Kind::Hint:
+            case LessonLine::Kind::GoTo:
+                break;
+            }
         }
-        if (!texts.missed.empty()) s.answer = "No answer: " + texts.missed;
     }
     const long long n = app.sim.run.totals.collisions;
     s.status = std::string(methodName(app.sim.world().settings.method)) +
@@ -52,13 +65,11 @@ std::vector<std::string> spokenChanges(const SpokenScreen& before, const SpokenS
     if (!now.lesson.empty() &&
         (now.lesson != before.lesson || (now.question != before.question && now.answer.empty()))) {
         std::string line = now.lesson + ".";
-        if (!now.question.empty()) line += " Question: " + now.question;
+        if (!now.question.empty()) line += " " + now.question; // "Predict: ..."
         said.push_back(line);
     }
-    if (!now.answer.empty() && now.answer != before.answer) {
-        const bool missed = now.answer.rfind("No answer: ", 0) == 0;
-        said.push_back(missed ? now.answer : "Answer: " + now.answer);
-    }
+    if (!now.answer.empty() && now.answer != before.answer)
+        said.push_back(now.answer); // "Answer: ..." or "No answer: ..."
     if (!now.error.empty() && now.error != before.error) said.push_back("Error: " + now.error);
     return said;
 }

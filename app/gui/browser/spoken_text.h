@@ -13,11 +13,14 @@ struct SpokenScreen {
     std::string scene;       // the scene's name
     std::string description; // the scene's description
     std::string lesson;      // "Lesson: Lecture 3, step 3 of 24: title"; "" without a lesson
-    std::string caption;     // the step's caption (its lines joined)
-    std::string question;    // the step's question, while it waits for its answer
-    std::string answer;      // the answer, once revealed
-    std::string status;      // "perfect method, t = 0.62 s, paused, 1 collision"
-    std::string error;       // the error the app shows, "" for none
+    // The caption bar's lines (lessonCaption), each on one line: the step's caption; "Predict: "
+    // and its question with its choices ("A. ... B. ...") until the moment; "Answer: " and the
+    // answer once revealed, or "No answer: " and why.
+    std::string caption;
+    std::string question;
+    std::string answer;
+    std::string status; // "perfect method, t = 0.62 s, paused, 1 collision"
+    std::string error;  // the error the app shows, "" for none
     bool operator==(const SpokenScreen& o) const;
     bool operator!=(const SpokenScreen& o) const { return !(*this == o); }
 };
@@ -25,7 +28,7 @@ SpokenScreen spokenScreen(const App& app);
 
 // What the live region says when the screen changes from `before` to `now` (issue 38: a screen
 // reader hears every step change, the answer at the moment and every error): a step entered
-// ("Step 3 of 27: title. Question: ... A. ... B. ..."), its answer once revealed ("Answer: ..."
-// or "No answer: ..."), an error when one appears ("Error: ..."). One line each, in that order;
-// none when nothing of that changed.
+// ("Step 3 of 27: title. Predict: ... A. ... B. ..."), its answer once revealed ("Answer: ..."
+// or "No answer: ...": as the caption bar says them), an error when one appears ("Error: ..."). One
+// line each, in that order; none when nothing of that changed.
 std::vector<std::string> spokenChanges(const SpokenScreen& before, const SpokenScreen& now);

@@ -296,20 +296,28 @@ LessonTexts lessonTexts(const LessonSession& s, const SimulationSession& sim) {
     return t;
 }
 
-std::string lessonCaption(const LessonSession& session, const SimulationSession& sim) {
-    if (!session.step()) return "";
+std::vector<LessonLine> lessonCaption(const LessonSession& session, const SimulationSession& sim) {
+    if (!session.step()) return {};
+    using Kind = LessonLine::Kind;
     const LessonTexts t = lessonTexts(session, sim);
-    std::string text = t.caption;
+    std::vector<LessonLine> lines{{Kind::Caption, t.caption}};
     if (!t.missed.empty()) {
-        text += "\nNo answer: " + t.missed;
+        lines.push_back({Kind::NoAnswer, "No answer: " + t.missed});
     } else if (session.revealed) {
-        text += "\nAnswer: " + t.answer;
+        if (!t.answer.empty()) lines.push_back({Kind::Answer, "Answer: " + t.answer});
     } else if (!t.question.empty()) {
-        text += "\nPredict: " + t.question;
-        for (const std::string& c : t.choices) text += "\n" + c;
+        lines.push_back({Kind::Question, "Predict: " + t.question});
+        for (const std::string& c : t.choices) lines.push_back({Kind::Choice, c});
     }
     const std::string hint = lessonHint(session);
-    if (!hint.empty()) text += "\n" + hint;
-    if (!session.digits.empty()) text += "\nGo to step " + session.digits + " (Enter)";
+    if (!hint.empty()) lines.push_back({Kind::Hint, hint});
+    if (!session.digits.empty())
+        lines.push_back({Kind::GoTo, "Go to step " + session.digits + " (Enter)"});
+    return lines;
+}
+
+std::string captionText(const std::vector<LessonLine>& lines) {
+    std::string text;
+    for (const LessonLine& line : lines) text += (text.empty() ? "" : "\n") + line.text;
     return text;
 }

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 struct LessonSession {
     // Predict, then observe: a step opens paused at its setup (t = 0) with its question; the
@@ -114,6 +115,18 @@ void lessonAfterFrames(LessonSession& s, SimulationSession& sim, View& view);
 std::string lessonHeading(const LessonSession& session);
 // The key to press next, by phase ("PageDown: play" at the setup); "" at the moment.
 std::string lessonHint(const LessonSession& session);
-// The caption bar's text under it: the caption, then "Predict: " and the question with its
-// lettered choices, or "Answer: " and its answer (or why there is none), then the hint.
-std::string lessonCaption(const LessonSession& session, const SimulationSession& sim);
+// A line of the caption bar under its heading, as shown.
+struct LessonLine {
+    enum class Kind : std::uint8_t { Caption, Question, Choice, Answer, NoAnswer, Hint, GoTo };
+    Kind kind;
+    std::string text; // "Predict: " and the question, "A. ..." a choice, "Answer: " and the answer
+};
+// The caption bar's lines under its heading, composed here once from lessonTexts: the bar draws
+// them (each kind in its colour, the choices side by side where they fit), the browser page's
+// text and live region read them (spoken_text.h), the tests check them. The step's caption; then
+// "Predict: " and its question with its lettered choices (one line each) until the moment;
+// "Answer: " and the answer the run gives once revealed, or "No answer: " and why the event did
+// not come; the key to press next (lessonHint); a step number being typed. None without a step.
+std::vector<LessonLine> lessonCaption(const LessonSession& session, const SimulationSession& sim);
+// The lines' texts, one per line.
+std::string captionText(const std::vector<LessonLine>& lines);

@@ -80,11 +80,9 @@ void saveSettings(WebApp& w) {
     // Only a shipped scene is there next time (opened, saved and linked ones live in memory).
     for (const SceneEntry& s : w.app.shipped.scenes)
         if (s.path == w.app.sim.scenePath) w.config.lastScene = s.path;
-    w.config.uiScale = static_cast<float>(w.app.view.uiScale / w.pixelRatio);
+    keepSettings(w.app, w.config, w.pixelRatio);
     w.config.windowWidth = w.canvas.width;
     w.config.windowHeight = w.canvas.height;
-    w.config.sound = w.app.sim.sound.chosen ? (w.app.sim.sound.on ? 1 : 0) : -1;
-    w.config.volume = w.app.sim.sound.volume;
     const std::string text = formatAppConfig(w.config);
     if (text != w.storedSettings) storageSet(kSettingsKey, text);
     w.storedSettings = text;
@@ -244,16 +242,14 @@ void runFrame(WebApp& w) {
     canvasNewFrame(w.canvas, &realSeconds);
     followPixelRatio(w);
     app.view.fullscreen = w.canvas.fullscreen;
-    if (app.view.uiScale != uiCurrentScale() || uiSlideFontsStale()) { // the canvas's height too
-        uiApplyScale(app.view.uiScale);
+    app.ui.touchUi = app.ui.touchUi || w.canvas.touchScreen || w.touch.active();
+    if (uiFollowView(app.view, app.ui.touchUi)) { // the canvas's height too
         uiRendererFontsChanged();
         uiRendererNewFrame(); // uploads the new atlas before this frame uses it
     }
     openFilesInTurn(w);
     for (const TouchGesture& g : canvasTakeGestures(w.canvas))
         touchPanZoom(app.view, g.from, g.to, g.spreadRatio);
-    app.ui.touchUi = app.ui.touchUi || w.canvas.touchScreen || w.touch.active();
-    if (app.ui.touchUi != uiTouch()) uiSetTouch(app.ui.touchUi);
     applyTouch(w, emscripten_get_now() / 1000.0);
     ImGui::NewFrame();
     resolveTouch(w);
@@ -469,9 +465,6 @@ int main() {
     std::string error;
     setupApp(app, Options{}, w.config.lastScene, &error);
     applyUrlParams(app, params);
-    app.sim.sound.chosen = w.config.sound >= 0;
-    app.sim.sound.on = w.config.sound == 1;
-    app.sim.sound.volume = w.config.volume;
     const std::string linkError = pageLinkError();
     if (!linkError.empty())
         app.ui.messages.error += (app.ui.messages.error.empty() ? "" : "\n") + linkError;
@@ -487,8 +480,8 @@ int main() {
         return 1;
     }
     w.pixelRatio = w.canvas.devicePixelRatio;
-    setUiScale(app.view, static_cast<float>(w.config.uiScale * w.pixelRatio));
-    uiApplyScale(app.view.uiScale);
+    applyStartSettings(app, w.config, Options{}, w.pixelRatio);
+    uiFollowView(app.view, app.ui.touchUi);
     uiRendererFontsChanged();
     if (!w.renderer.init(&error)) app.ui.messages.error = "Shader error: " + error;
     emscripten_set_main_loop_arg(frame, &w, 0, 1);

@@ -63,14 +63,8 @@ int runWindow(const Options& options, char** argv, int argc) {
                      config.lastSceneLine, app.ui.messages.error.c_str());
     if (!settingsWarnings.empty() && app.ui.messages.error.empty())
         app.ui.messages.error = settingsWarnings.front();
-    setUiScale(app.view, options.uiScale > 0.0f ? options.uiScale : config.uiScale);
-    app.view.lightTheme = options.theme.empty() ? config.lightTheme : options.theme == "light";
-    app.view.labelScale = config.labelScale;
-    app.sim.sound.chosen = config.sound >= 0;
-    app.sim.sound.on = config.sound == 1;
-    app.sim.sound.volume = config.volume;
+    applyStartSettings(app, config, options);
     app.ui.firstLaunch = !config.existed;
-    if (options.present) setPresentMode(app.view, true);
     const bool sizeGiven = options.width != 1280 || options.height != 720;
     const int width = sizeGiven ? options.width : config.windowWidth;
     const int height = sizeGiven ? options.height : config.windowHeight;
@@ -82,7 +76,7 @@ int runWindow(const Options& options, char** argv, int argc) {
         if (!ec) iniPath = configDir + "/imgui.ini";
     }
     uiCreateContext(iniPath.empty() ? nullptr : iniPath.c_str());
-    uiApplyLook(app.view.uiScale, app.view.labelScale, app.view.lightTheme);
+    uiFollowView(app.view, app.ui.touchUi);
     WindowGlfw window;
     if (!windowInit(window, width, height, "Collision sandbox", &error)) {
         uiDestroyContext();
@@ -126,8 +120,7 @@ int runWindow(const Options& options, char** argv, int argc) {
             app.ui.fullscreenRequested = false;
         }
         // Fonts and theme, only what changed; new fonts go to the UI renderer.
-        if (uiApplyLook(app.view.uiScale, app.view.labelScale, app.view.lightTheme))
-            uiRendererFontsChanged();
+        if (uiFollowView(app.view, app.ui.touchUi)) uiRendererFontsChanged();
     }
     // Absolute, so that the next start from another folder finds it.
     std::error_code absoluteError;
@@ -136,11 +129,7 @@ int runWindow(const Options& options, char** argv, int argc) {
         scenePath.empty()
             ? std::string()
             : std::filesystem::absolute(scenePath, absoluteError).lexically_normal().string();
-    config.uiScale = app.view.uiScale;
-    config.lightTheme = app.view.lightTheme;
-    config.labelScale = app.view.labelScale;
-    config.sound = app.sim.sound.chosen ? (app.sim.sound.on ? 1 : 0) : -1;
-    config.volume = app.sim.sound.volume;
+    keepSettings(app, config);
     windowSize(window, &config.windowWidth, &config.windowHeight);
     if (!saveAppConfig(configDir, config) && !configDir.empty()) {
         std::fprintf(stderr, "sandbox: cannot save settings in %s\n",

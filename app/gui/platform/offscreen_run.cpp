@@ -1,5 +1,6 @@
 #include "offscreen_run.h"
 
+#include "app_config.h"
 #include "app_frame.h"
 #include "app_setup.h"
 #include "offscreen_osmesa.h"
@@ -409,13 +410,11 @@ int runOffscreen(const Options& options) {
         for (int i = 0; i < o.frames; ++i) simulateFrame(app, track);
         return refusedEdits(app) ? 1 : writeTrack(track, o);
     }
-    setUiScale(app.view, o.uiScale > 0.0f ? o.uiScale : 1.0f);
-    if (o.present) setPresentMode(app.view, true);
-    app.view.lightTheme = o.theme == "light";
+    applyStartSettings(app, AppConfig{}, o); // the defaults: an image never depends on a file
     uiCreateContext(nullptr);
     // The image's size before the fonts: the classroom's are baked for its height.
     ImGui::GetIO().DisplaySize = ImVec2(static_cast<float>(o.width), static_cast<float>(o.height));
-    uiApplyLook(app.view.uiScale, app.view.labelScale, app.view.lightTheme);
+    uiFollowView(app.view, app.ui.touchUi);
     Offscreen off;
     off.width = o.width;
     off.height = o.height;

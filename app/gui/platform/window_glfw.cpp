@@ -148,10 +148,6 @@ void windowSize(const WindowGlfw& w, int* width, int* height) {
     glfwGetWindowSize(w.window, width, height);
 }
 
-void windowRequestClose(WindowGlfw& w) {
-    glfwSetWindowShouldClose(w.window, GLFW_TRUE);
-}
-
 std::vector<KeyPress> windowTakeKeyPresses(WindowGlfw& w) {
     std::vector<KeyPress> keys;
     keys.swap(w.keyPresses);

@@ -32,7 +32,6 @@ void windowPresent(WindowGlfw& w);
 void windowSetFullscreen(WindowGlfw& w, bool fullscreen);
 void windowFramebufferSize(const WindowGlfw& w, int* width, int* height);
 void windowSize(const WindowGlfw& w, int* width, int* height);
-void windowRequestClose(WindowGlfw& w);
 // The key presses (not repeats) since the last call, in order.
 std::vector<KeyPress> windowTakeKeyPresses(WindowGlfw& w);
 // The files dropped on the window since the last call (a scene, or a trace: openFile).

@@ -320,20 +320,6 @@ Vec2 SimulationSession::appliedForce(int index) const {
     return index == pushedBlock() ? own + pushForce() : own;
 }
 
-bool SimulationSession::usesPhysicsSection() const {
-    if (thrust.on) return true;
-    const WorldSettings defaults = defaultWorldSettings();
-    for (const settings_table::WorldKey& row : settings_table::worldKeys()) {
-        if (row.panel.section == settings_table::Section::Physics &&
-            !settings_table::same(row, scene.settings, defaults))
-            return true;
-    }
-    for (const BlockDef& b : scene.blocks) {
-        if (b.force != Vec2{} || b.friction >= 0.0) return true;
-    }
-    return false;
-}
-
 void SimulationSession::cycleMethod() {
     const int count = static_cast<int>(Method::Count);
     const int next = (static_cast<int>(world().settings.method) + 1) % count;

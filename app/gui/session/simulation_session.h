@@ -182,9 +182,6 @@ struct SimulationSession {
     Vec2 pushForce() const;
     // The force on block `index` this frame (N): its own constant force plus the keys' push on it.
     Vec2 appliedForce(int index) const;
-    // True when the scene uses what the Physics section sets (a setting of the table's Physics
-    // section other than its default, a block's force) or the thrust is on: the section opens.
-    bool usesPhysicsSection() const;
     // perfect -> move-and-correct -> turn-based -> perfect (an edit of "method").
     void cycleMethod();
     // Edits of every world key (of a scene file) in which the world's settings differ from

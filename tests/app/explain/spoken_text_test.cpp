@@ -89,7 +89,7 @@ TEST(SpokenText, StepsAnswersAndErrorsAreAnnouncedOnce) {
     std::vector<std::string> said = spokenChanges(before, now);
     ASSERT_EQ(said.size(), 1u);
     EXPECT_EQ(said[0].rfind("Lesson: Lecture 3: Newton's laws & collisions, step 3 of 27: "
-                            "Bounciness C and kinetic energy. Question: 1 kg at 4 m/s (8 J) hits "
+                            "Bounciness C and kinetic energy. Predict: 1 kg at 4 m/s (8 J) hits "
                             "the right wall with C = 0.5. Its velocity after, and its kinetic "
                             "energy? A. -2 m/s and 2 J. B.",
                             0),

@@ -6,6 +6,7 @@
 #include "lesson_prompt.h"
 #include "lesson_runner.h"
 #include "lesson_session.h"
+#include "spoken_text.h"
 
 #include <gtest/gtest.h>
 
@@ -61,7 +62,7 @@ TEST(LessonSession, EveryStepOpensAtItsSetupAndPlaysToItsMoment) {
         EXPECT_TRUE(app.sim.paused) << step.title;
         EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Setup) << step.title;
         if (!step.question.empty()) {
-            const std::string caption = lessonCaption(app.lesson, app.sim);
+            const std::string caption = captionText(lessonCaption(app.lesson, app.sim));
             EXPECT_NE(caption.find("Predict: " + stepPrompt(step).question), std::string::npos)
                 << step.title;
             EXPECT_NE(caption.find("\nA. " + stepPrompt(step).choices.at(0) + "\nB. "),
@@ -82,16 +83,71 @@ TEST(LessonSession, EveryStepOpensAtItsSetupAndPlaysToItsMoment) {
         EXPECT_EQ(app.lesson.current, i); // still this step
         if (!step.question.empty()) {
             const std::string answer = stepAnswer(step, run, {}, nullptr).text;
-            EXPECT_NE(lessonCaption(app.lesson, app.sim).find("Answer: " + answer),
+            EXPECT_NE(captionText(lessonCaption(app.lesson, app.sim)).find("Answer: " + answer),
                       std::string::npos)
                 << step.title << "\n"
-                << lessonCaption(app.lesson, app.sim);
+                << captionText(lessonCaption(app.lesson, app.sim));
         }
         // Playing on does not stop again.
         app.sim.paused = false;
         advanceSimulation(app, 1.0 / 60.0);
         EXPECT_FALSE(app.sim.paused) << step.title;
     }
+}
+
+// The caption is composed once (lessonCaption): the page's text for a screen reader says what the
+// bar says, line for line (the choices after the question, each a sentence), at the setup (the
+// question and its choices) and at the moment (the answer or why there is none, no question).
+TEST(LessonSession, ThePageReadsTheCaptionTheBarDraws) {
+    App app = lessonApp();
+    const Lesson& lesson = *app.lesson.lesson;
+    auto flat = [](std::string text) { // the page's text is one line
+        for (char& c : text)
+            if (c == '\n') c = ' ';
+        return text;
+    };
+    using Kind = LessonLine::Kind;
+    int questions = 0, answers = 0;
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+        const LessonStep& step = lesson.steps[i];
+        ASSERT_TRUE(enterStep(app, i));
+        for (int moment = 0; moment < 2; ++moment) {
+            if (moment) lessonShowPausePoint(app);
+            const LessonTexts texts = lessonTexts(app.lesson, app.sim);
+            const std::vector<LessonLine> lines = lessonCaption(app.lesson, app.sim);
+            const SpokenScreen spoken = spokenScreen(app);
+            ASSERT_FALSE(lines.empty());
+            EXPECT_EQ(lines[0].kind, Kind::Caption);
+            std::string question, answer; // the bar's lines as the page says them
+            std::size_t choices = 0;
+            for (const LessonLine& line : lines) {
+                if (line.kind == Kind::Question) question = flat(line.text);
+                if (line.kind == Kind::Choice) question += " " + flat(line.text) + ".", ++choices;
+                if (line.kind == Kind::Answer || line.kind == Kind::NoAnswer)
+                    answer = flat(line.text);
+            }
+            EXPECT_EQ(spoken.caption, flat(texts.caption)) << step.title;
+            EXPECT_EQ(spoken.question, question) << step.title;
+            EXPECT_EQ(spoken.answer, answer) << step.title;
+            if (texts.question.empty()) {
+                EXPECT_EQ(spoken.question, "") << step.title;
+            } else if (moment) {
+                ++answers;
+                EXPECT_EQ(spoken.question, "") << step.title;
+                EXPECT_EQ(spoken.answer, texts.missed.empty() ? flat("Answer: " + texts.answer)
+                                                              : flat("No answer: " + texts.missed))
+                    << step.title;
+            } else {
+                ++questions;
+                EXPECT_EQ(spoken.question.rfind(flat("Predict: " + texts.question), 0), 0u)
+                    << step.title;
+                EXPECT_EQ(choices, texts.choices.size()) << step.title;
+                EXPECT_EQ(spoken.answer, "") << step.title;
+            }
+        }
+    }
+    EXPECT_GT(questions, 0); // the lecture asks
+    EXPECT_EQ(answers, questions);
 }
 
 TEST(LessonSession, KeysWalkThroughTheSteps) {
@@ -125,7 +181,8 @@ TEST(LessonSession, KeysWalkThroughTheSteps) {
 
     lessonTypeDigit(app.lesson, 1);
     lessonTypeDigit(app.lesson, 2);
-    EXPECT_NE(lessonCaption(app.lesson, app.sim).find("Go to step 12"), std::string::npos);
+    EXPECT_NE(captionText(lessonCaption(app.lesson, app.sim)).find("Go to step 12"),
+              std::string::npos);
     applyLessonAction(app, Action::LessonJump);
     EXPECT_EQ(app.lesson.current, 11u);
     lessonTypeDigit(app.lesson, 9);

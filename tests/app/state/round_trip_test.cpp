@@ -4,6 +4,7 @@
 #include "app.h"
 #include "app_setup.h"
 #include "classroom.h"
+#include "panel_rows.h"
 #include "settings_table.h"
 #include "test_fixtures.h"
 
@@ -212,10 +213,11 @@ TEST(RoundTrip, APanelsValueIsKeptAsShown) {
     EXPECT_EQ(shownNumber(0.4399999976158142, "100%% %.2f"), 0.44);
     // The panel's own formats, from the table, give the numbers as they read.
     for (const settings_table::WorldKey& row : settings_table::worldKeys()) {
-        if (row.kind != settings_table::Kind::Number || !row.inScene) continue;
+        const PanelRow* panel = panelRowOf(row);
+        if (row.kind != settings_table::Kind::Number || !panel) continue;
         SCOPED_TRACE(row.key);
         const double value = row.shown.asRate ? 61.0 : 0.44;
-        const double kept = shownNumber(static_cast<float>(value), row.panel.format);
+        const double kept = shownNumber(static_cast<float>(value), panel->format);
         EXPECT_EQ(kept, value);
     }
     // And saved so: the file says 0.44.

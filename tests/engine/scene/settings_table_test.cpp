@@ -63,17 +63,8 @@ TEST(SettingsTable, KeysAreUniqueAndEveryShownRowHasItsWords) {
         if (!row.inScene) continue;
         EXPECT_NE(std::string(row.shown.name), "") << row.key;
         EXPECT_EQ(settings_table::findWorldKey(row.key), &row);
-        if (row.panel.section == settings_table::Section::None) continue;
-        EXPECT_NE(std::string(row.panel.label), "") << row.key;
-        if (row.kind == Kind::Number || row.kind == Kind::Whole || row.kind == Kind::Pair) {
-            // The slider's ends are values the range takes (what it shows, for a rate).
-            const limits::Range& r = row.shown.asRate ? row.shown.rateRange : row.range;
-            EXPECT_EQ(limits::violation(r, row.panel.min), "") << row.key;
-            EXPECT_EQ(limits::violation(r, row.panel.max), "") << row.key;
-        }
     }
     EXPECT_EQ(settings_table::findWorldKey("rest_speed"), nullptr); // engine-only: no scene key
-    EXPECT_EQ(settings_table::shownOrder().size(), sceneRows().size());
 }
 
 // Each row's other value survives a file: read, written, read again; equality sees the change.

@@ -3,6 +3,7 @@
 
 #include "app.h"
 #include "input_map.h"
+#include "panel_rows.h"
 #include "scene_json.h"
 #include "settings_table.h"
 #include "typed_field.h"
@@ -30,16 +31,15 @@ bool widgetChanged(App& app, bool changed) {
 
 // The row's value in `next` as an edit; while the widget is held, part of its gesture. A
 // refusal shows under the field.
-void applyRow(App& app, const WorldKey& row, const WorldSettings& next) {
+void applyRow(App& app, const WorldKey& row, const PanelRow& panel, const WorldSettings& next) {
     const EditError error =
         app.sim.apply(Edit::setWorld(row.key, settingJson(row, next)), ImGui::IsItemActive());
-    if (!error.empty())
-        app.ui.typedWarning.note(row.panel.label, TypedValue{false, 0.0, error.text()});
+    if (!error.empty()) app.ui.typedWarning.note(panel.label, TypedValue{false, 0.0, error.text()});
 }
 
-void choiceCombo(App& app, const WorldKey& row, const WorldSettings& s) {
+void choiceCombo(App& app, const WorldKey& row, const PanelRow& panel, const WorldSettings& s) {
     const int current = row.getChoice(s);
-    const std::string label = keyedLabel(row.panel.label, actionOfControl(row.key), app.ui.touchUi);
+    const std::string label = keyedLabel(panel.label, actionOfControl(row.key), app.ui.touchUi);
     if (ImGui::BeginCombo(label.c_str(), row.names.name(current))) {
         uiBeginRows();
         for (int i = 0; i < row.names.count; ++i) {
@@ -47,7 +47,7 @@ void choiceCombo(App& app, const WorldKey& row, const WorldSettings& s) {
                 WorldSettings next = s;
                 row.setChoice(next, i);
                 app.sim.beginGesture();
-                applyRow(app, row, next);
+                applyRow(app, row, panel, next);
             }
         }
         uiEndRows();
@@ -57,21 +57,20 @@ void choiceCombo(App& app, const WorldKey& row, const WorldSettings& s) {
 
 // A slider; a typed value (Ctrl+click) within the row's range is taken. A rate (dt) is shown
 // and typed as 1/value.
-void numberSlider(App& app, const WorldKey& row, const WorldSettings& s) {
+void numberSlider(App& app, const WorldKey& row, const PanelRow& panel, const WorldSettings& s) {
     const double value = s.*row.number;
     const double shown = row.shown.asRate ? 1.0 / value : value;
     float typed = static_cast<float>(shown);
     const float width = ImGui::CalcItemWidth();
-    if (widgetChanged(
-            app, ImGui::SliderFloat(row.panel.label, &typed, row.panel.min, row.panel.max,
-                                    row.panel.format,
-                                    row.panel.logarithmic ? ImGuiSliderFlags_Logarithmic : 0))) {
+    if (widgetChanged(app,
+                      ImGui::SliderFloat(panel.label, &typed, panel.min, panel.max, panel.format,
+                                         panel.logarithmic ? ImGuiSliderFlags_Logarithmic : 0))) {
         double taken = shown;
-        if (acceptTyped(app, row.panel.label, typed, row.panel.format, shown,
+        if (acceptTyped(app, panel.label, typed, panel.format, shown,
                         row.shown.asRate ? row.shown.rateRange : row.range, taken)) {
             WorldSettings next = s;
             next.*row.number = row.shown.asRate ? 1.0 / taken : taken;
-            applyRow(app, row, next);
+            applyRow(app, row, panel, next);
         }
     }
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
@@ -84,100 +83,99 @@ void numberSlider(App& app, const WorldKey& row, const WorldSettings& s) {
     }
 }
 
-void wholeSlider(App& app, const WorldKey& row, const WorldSettings& s) {
+void wholeSlider(App& app, const WorldKey& row, const PanelRow& panel, const WorldSettings& s) {
     int typed = s.*row.whole;
-    if (widgetChanged(app,
-                      ImGui::SliderInt(row.panel.label, &typed, static_cast<int>(row.panel.min),
-                                       static_cast<int>(row.panel.max), row.panel.format))) {
+    if (widgetChanged(app, ImGui::SliderInt(panel.label, &typed, static_cast<int>(panel.min),
+                                            static_cast<int>(panel.max), panel.format))) {
         double k = s.*row.whole;
-        if (acceptTyped(app, row.panel.label, typed, row.panel.format, k, row.range, k)) {
+        if (acceptTyped(app, panel.label, typed, panel.format, k, row.range, k)) {
             WorldSettings next = s;
             next.*row.whole = static_cast<int>(k);
-            applyRow(app, row, next);
+            applyRow(app, row, panel, next);
         }
     }
 }
 
 // Two sliders (x, y) with no label, then "0" and the preset (the default) and the symbol.
-void pairSlider(App& app, const WorldKey& row, const WorldSettings& s) {
+void pairSlider(App& app, const WorldKey& row, const PanelRow& panel, const WorldSettings& s) {
     const Vec2 value = s.*row.pair;
     WorldSettings next = s;
     float typed[2] = {static_cast<float>(value.x), static_cast<float>(value.y)};
     // Ctrl+click types a value beyond the slider: any within the limits is taken.
     if (widgetChanged(app, ImGui::SliderFloat2(("##" + std::string(row.key)).c_str(), typed,
-                                               row.panel.min, row.panel.max, row.panel.format)) &&
-        acceptTyped2(app, row.panel.label, typed, row.panel.format, value, row.range,
-                     next.*row.pair))
-        applyRow(app, row, next);
-    tooltip(row.shown.tooltip);
+                                               panel.min, panel.max, panel.format)) &&
+        acceptTyped2(app, panel.label, typed, panel.format, value, row.range, next.*row.pair))
+        applyRow(app, row, panel, next);
+    tooltip(panel.tooltip);
     const std::pair<const char*, Vec2> presets[] = {
-        {"0", Vec2{}}, {row.panel.presetLabel, defaultWorldSettings().*row.pair}};
+        {"0", Vec2{}}, {panel.presetLabel, defaultWorldSettings().*row.pair}};
     for (const auto& [label, preset] : presets) {
         ImGui::SameLine();
         if (uiSmallButton(label)) {
             next.*row.pair = preset;
             app.sim.beginGesture();
-            applyRow(app, row, next);
+            applyRow(app, row, panel, next);
         }
-        if (ImGui::IsItemActivated()) app.ui.typedWarning.note(row.panel.label, TypedValue{});
+        if (ImGui::IsItemActivated()) app.ui.typedWarning.note(panel.label, TypedValue{});
         tooltip(preset == Vec2{} ? ("No " + std::string(row.shown.name)).c_str()
-                                 : row.panel.presetTooltip);
+                                 : panel.presetTooltip);
     }
     ImGui::SameLine();
     ImGui::TextUnformatted(row.shown.symbol);
 }
 
-void nameChecks(App& app, const WorldKey& row, const WorldSettings& s) {
-    ImGui::TextColored(uiDimColor(), "%s", row.panel.label);
+void nameChecks(App& app, const WorldKey& row, const PanelRow& panel, const WorldSettings& s) {
+    ImGui::TextColored(uiDimColor(), "%s", panel.label);
     for (int i = 0; i < row.names.count; ++i) {
         const auto bit = static_cast<std::uint8_t>(1u << i);
         bool on = (s.*row.bits & bit) != 0;
         if (widgetChanged(app, ImGui::Checkbox(row.names.name(i), &on))) {
             WorldSettings next = s;
             next.*row.bits = static_cast<std::uint8_t>(on ? s.*row.bits | bit : s.*row.bits & ~bit);
-            applyRow(app, row, next);
+            applyRow(app, row, panel, next);
         }
         if (row.names.note) tooltip((std::string("Slide: \"") + row.names.note(i) + "\"").c_str());
     }
 }
 
-void settingWidget(App& app, const WorldKey& row) {
+void settingWidget(App& app, const WorldKey& row, const PanelRow& panel) {
     const WorldSettings& s = app.sim.world().settings;
     using settings_table::Kind;
     switch (row.kind) {
     case Kind::Choice:
-        choiceCombo(app, row, s);
+        choiceCombo(app, row, panel, s);
         break;
     case Kind::Number:
-        numberSlider(app, row, s);
+        numberSlider(app, row, panel, s);
         break;
     case Kind::Whole:
-        wholeSlider(app, row, s);
+        wholeSlider(app, row, panel, s);
         break;
     case Kind::Pair:
-        pairSlider(app, row, s);
+        pairSlider(app, row, panel, s);
         break;
     case Kind::NameSet:
-        nameChecks(app, row, s);
+        nameChecks(app, row, panel, s);
         break;
     case Kind::Flag: {
         bool on = s.*row.flag;
-        if (widgetChanged(app, ImGui::Checkbox(row.panel.label, &on))) {
+        if (widgetChanged(app, ImGui::Checkbox(panel.label, &on))) {
             WorldSettings next = s;
             next.*row.flag = on;
-            applyRow(app, row, next);
+            applyRow(app, row, panel, next);
         }
         break;
     }
     }
-    if (row.kind != Kind::Pair && *row.shown.tooltip) tooltip(row.shown.tooltip);
-    typedWarning(app, row.panel.label);
+    if (row.kind != Kind::Pair && *panel.tooltip) tooltip(panel.tooltip);
+    typedWarning(app, panel.label);
 }
 
 // The rows of one section of the panel, in its order.
-void settingWidgets(App& app, settings_table::Section section) {
-    for (const WorldKey* row : settings_table::shownOrder())
-        if (row->panel.section == section) settingWidget(app, *row);
+void settingWidgets(App& app, PanelSection section) {
+    for (const WorldKey* row : panelOrder())
+        if (const PanelRow* panel = panelRowOf(*row); panel && panel->section == section)
+            settingWidget(app, *row, *panel);
 }
 
 // ---- The selected block: each field an edit of it ----
@@ -193,22 +191,23 @@ void applyField(App& app, int i, const char* key, const nlohmann::json& value, c
 // The selected block's own constant force [fx, fy] (N): a thruster that is always on.
 void blockForceField(App& app, int i, const Block& b) {
     const settings_table::BlockKey& row = settings_table::blockKey("force");
+    const BlockPanelRow& panel = blockPanelRow("force");
     float f[2] = {static_cast<float>(b.force.x), static_cast<float>(b.force.y)};
     Vec2 force = b.force;
-    if (widgetChanged(
-            app, ImGui::DragFloat2(row.label, f, 0.05f, -1000.0f, 1000.0f, row.sliderFormat)) &&
-        acceptTyped2(app, row.label, f, row.sliderFormat, b.force, row.range, force) &&
-        acceptAcceleration(app, row.label, force, b.mass))
-        applyField(app, i, row.key, {force.x, force.y}, row.label);
-    tooltip(row.tooltip);
-    typedWarning(app, row.label);
+    if (widgetChanged(app,
+                      ImGui::DragFloat2(panel.label, f, 0.05f, -1000.0f, 1000.0f, panel.format)) &&
+        acceptTyped2(app, panel.label, f, panel.format, b.force, row.range, force) &&
+        acceptAcceleration(app, panel.label, force, b.mass))
+        applyField(app, i, row.key, {force.x, force.y}, panel.label);
+    tooltip(panel.tooltip);
+    typedWarning(app, panel.label);
 }
 
 } // namespace
 
 void simulationSection(App& app) {
     if (!ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    settingWidgets(app, settings_table::Section::Simulation);
+    settingWidgets(app, PanelSection::Simulation);
     if (app.log.verbose) app.log.layoutLogged = true;
     float scale = static_cast<float>(app.sim.timeScale);
     if (ImGui::SliderFloat("time scale", &scale, 0.05f, 4.0f, "%.2fx",
@@ -223,11 +222,11 @@ void physicsSection(App& app) {
     // Opens for a scene that uses it (thruster, feather and stone, the mistakes), else closed.
     const std::string scene = app.sim.scenePath + "\n" + app.sim.scene.name;
     if (scene != app.ui.physicsFollowedScene) {
-        ImGui::SetNextItemOpen(app.sim.usesPhysicsSection(), ImGuiCond_Always);
+        ImGui::SetNextItemOpen(usesPhysicsSection(app.sim), ImGuiCond_Always);
         app.ui.physicsFollowedScene = scene;
     }
     if (!ImGui::CollapsingHeader("Physics")) return;
-    settingWidgets(app, settings_table::Section::Physics);
+    settingWidgets(app, PanelSection::Physics);
     ImGui::Separator();
     ImGui::Checkbox("Thrust (arrow keys)", &app.sim.thrust.on);
     tooltip("Hold the arrow keys to push the selected block with the thrust force (added to its "
@@ -277,39 +276,41 @@ void selectedSection(App& app) {
     }
     if (b.isDynamic()) {
         const settings_table::BlockKey& massRow = settings_table::blockKey("mass");
+        const BlockPanelRow& massPanel = blockPanelRow("mass");
         float mass = static_cast<float>(b.mass);
         double newMass = b.mass;
         if (widgetChanged(app,
-                          ImGui::SliderFloat(massRow.label, &mass, 0.01f, 1000.0f,
-                                             massRow.sliderFormat, ImGuiSliderFlags_Logarithmic)) &&
-            acceptTyped(app, massRow.label, mass, massRow.sliderFormat, b.mass, massRow.range,
+                          ImGui::SliderFloat(massPanel.label, &mass, 0.01f, 1000.0f,
+                                             massPanel.format, ImGuiSliderFlags_Logarithmic)) &&
+            acceptTyped(app, massPanel.label, mass, massPanel.format, b.mass, massRow.range,
                         newMass) &&
-            acceptAcceleration(app, massRow.label, b.force, newMass))
-            applyField(app, i, massRow.key, newMass, massRow.label);
-        typedWarning(app, massRow.label);
+            acceptAcceleration(app, massPanel.label, b.force, newMass))
+            applyField(app, i, massRow.key, newMass, massPanel.label);
+        typedWarning(app, massPanel.label);
         blockForceField(app, i, b);
     } else {
         ImGui::TextColored(uiDimColor(), "mass: infinite");
     }
     const settings_table::BlockKey& sizeRow = settings_table::blockKey("size");
+    const BlockPanelRow& sizePanel = blockPanelRow("size");
     float size[2] = {static_cast<float>(b.size.x), static_cast<float>(b.size.y)};
     Vec2 wanted = b.size;
-    if (widgetChanged(app, ImGui::DragFloat2(sizeRow.label, size, 0.02f, 0.05f, 50.0f,
-                                             sizeRow.sliderFormat)) &&
-        acceptTyped2(app, sizeRow.label, size, sizeRow.sliderFormat, b.size, sizeRow.range,
-                     wanted))
-        applyField(app, i, sizeRow.key, {wanted.x, wanted.y}, sizeRow.label);
-    typedWarning(app, sizeRow.label);
+    if (widgetChanged(
+            app, ImGui::DragFloat2(sizePanel.label, size, 0.02f, 0.05f, 50.0f, sizePanel.format)) &&
+        acceptTyped2(app, sizePanel.label, size, sizePanel.format, b.size, sizeRow.range, wanted))
+        applyField(app, i, sizeRow.key, {wanted.x, wanted.y}, sizePanel.label);
+    typedWarning(app, sizePanel.label);
     if (b.kind != BodyKind::Static) {
         const settings_table::BlockKey& velocityRow = settings_table::blockKey("velocity");
+        const BlockPanelRow& velocityPanel = blockPanelRow("velocity");
         float v[2] = {static_cast<float>(b.velocity.x), static_cast<float>(b.velocity.y)};
         Vec2 velocity = b.velocity;
-        if (widgetChanged(app, ImGui::DragFloat2(velocityRow.label, v, 0.05f, -1000.0f, 1000.0f,
-                                                 velocityRow.sliderFormat)) &&
-            acceptTyped2(app, velocityRow.label, v, velocityRow.sliderFormat, b.velocity,
+        if (widgetChanged(app, ImGui::DragFloat2(velocityPanel.label, v, 0.05f, -1000.0f, 1000.0f,
+                                                 velocityPanel.format)) &&
+            acceptTyped2(app, velocityPanel.label, v, velocityPanel.format, b.velocity,
                          velocityRow.range, velocity))
-            applyField(app, i, velocityRow.key, {velocity.x, velocity.y}, velocityRow.label);
-        typedWarning(app, velocityRow.label);
+            applyField(app, i, velocityRow.key, {velocity.x, velocity.y}, velocityPanel.label);
+        typedWarning(app, velocityPanel.label);
     }
     ImGui::TextColored(uiDimColor(), "position (%.2f, %.2f) m", b.position.x, b.position.y);
     if (ImGui::Button("Delete block")) deleteSelected(app);

@@ -4,6 +4,7 @@
 #include "imgui_ext.h"
 #include "palette.h"
 #include "text_format.h"
+#include "view.h"
 
 #include <imgui.h>
 
@@ -15,10 +16,15 @@ namespace {
 
 constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 constexpr float kBaseFontPx = 16.0f;
-float gScale = 0.0f;
-float gLabelScale = 1.0f;
-bool gLight = false;
-bool gTouch = false;
+// The look ImGui's style and fonts are built for: the view's, as uiFollowView last found it (the
+// view owns it; this is what the built atlas and style stand for). Scale 0: not built yet.
+struct BuiltLook {
+    float scale = 0.0f;
+    float labelScale = 1.0f;
+    bool light = false;
+    bool touch = false;
+};
+BuiltLook gBuilt;
 ImFont* gLabelFont = nullptr;
 ImFont* gCompactFont = nullptr;
 // The classroom's fonts (slideFontPx), baked for the display's height when the look was applied.
@@ -95,7 +101,7 @@ void setTheme(ImGuiStyle& style, bool light) {
 }
 
 void setTheme(ImGuiStyle& style) {
-    setTheme(style, gLight);
+    setTheme(style, gBuilt.light);
 }
 
 // Touch sizes at UI scale 1: a frame kTouchTargetPx high around the 16 px font, a slider's grab
@@ -121,7 +127,7 @@ void uiCreateContext(const char* iniPath) {
     io.ConfigFlags &= ~ImGuiConfigFlags_NavEnableKeyboard;
     imgui_ext::mapKeys(); // the navigation's keys
     setTheme(ImGui::GetStyle());
-    gScale = 0.0f;
+    gBuilt = BuiltLook{};
     gLabelFont = nullptr;
     gCompactFont = nullptr;
     gCaptionFont = gSlideLabelFont = nullptr;
@@ -130,10 +136,6 @@ void uiCreateContext(const char* iniPath) {
 
 void uiDestroyContext() {
     ImGui::DestroyContext();
-}
-
-float uiCurrentScale() {
-    return gScale;
 }
 
 ImFont* addFont(ImGuiIO& io, float px) {
@@ -153,15 +155,13 @@ ImFont* addFont(ImGuiIO& io, float px) {
 
 namespace {
 
-void applyStyle(float scale, bool light) {
+void applyStyle(const BuiltLook& look) {
     ImGuiStyle style;
-    setTheme(style, light);
-    if (gTouch) setTouchSizes(style);
-    style.ScaleAllSizes(scale);
+    setTheme(style, look.light);
+    if (look.touch) setTouchSizes(style);
+    style.ScaleAllSizes(look.scale);
     ImGui::GetStyle() = style;
 }
-
-} // namespace
 
 float slideFontPx(double share, float atLeast) {
     const float height = ImGui::GetIO().DisplaySize.y;
@@ -169,17 +169,26 @@ float slideFontPx(double share, float atLeast) {
     return std::fmax(px, std::round(atLeast));
 }
 
-bool uiApplyLook(float scale, float labelScale, bool light) {
+// The classroom's fonts for the display's height at `look`.
+float captionPx(const BuiltLook& look) {
+    return slideFontPx(kCaptionShare, kBaseFontPx * look.scale);
+}
+float slideLabelPx(const BuiltLook& look) {
+    return slideFontPx(kSceneLabelShare, kBaseFontPx * look.scale * look.labelScale);
+}
+
+} // namespace
+
+bool uiFollowView(const View& view, bool touch) {
+    const BuiltLook look{view.uiScale, view.labelScale, view.lightTheme, touch};
     // The classroom's text, whatever the UI scale (never smaller than the UI's own).
-    const float captionPx = slideFontPx(kCaptionShare, kBaseFontPx * scale);
-    const float slideLabelPx = slideFontPx(kSceneLabelShare, kBaseFontPx * scale * labelScale);
-    const bool fonts = scale != gScale || labelScale != gLabelScale || !gLabelFont ||
-                       captionPx != gSlideCaptionPx || slideLabelPx != gSlideLabelPx;
-    if (!fonts && light == gLight) return false;
-    gScale = scale;
-    gLabelScale = labelScale;
-    gLight = light;
+    const bool fonts = look.scale != gBuilt.scale || look.labelScale != gBuilt.labelScale ||
+                       !gLabelFont || captionPx(look) != gSlideCaptionPx ||
+                       slideLabelPx(look) != gSlideLabelPx;
+    if (!fonts && look.light == gBuilt.light && look.touch == gBuilt.touch) return false;
+    gBuilt = look;
     if (fonts) {
+        const float scale = look.scale, labelScale = look.labelScale;
         ImGuiIO& io = ImGui::GetIO();
         io.Fonts->Clear();
         addFont(io, kBaseFontPx * scale); // the first font is ImGui's default: the UI's
@@ -188,35 +197,21 @@ bool uiApplyLook(float scale, float labelScale, bool light) {
                                         : addFont(io, std::round(kBaseFontPx * scale * labelScale));
         gCompactFont =
             addFont(io, std::round(kBaseFontPx * scale * static_cast<float>(kCompactFontScale)));
-        gSlideCaptionPx = captionPx;
-        gSlideLabelPx = slideLabelPx;
-        gCaptionFont = addFont(io, captionPx);
-        gSlideLabelFont = addFont(io, slideLabelPx);
+        gSlideCaptionPx = captionPx(look);
+        gSlideLabelPx = slideLabelPx(look);
+        gCaptionFont = addFont(io, gSlideCaptionPx);
+        gSlideLabelFont = addFont(io, gSlideLabelPx);
         io.Fonts->Build();
     }
-    applyStyle(scale, light);
+    applyStyle(look);
     return fonts;
 }
 
-bool uiApplyScale(float scale) {
-    return uiApplyLook(scale, gLabelScale, gLight);
-}
-
-void uiSetTouch(bool touch) {
-    if (touch == gTouch) return;
-    gTouch = touch;
-    applyStyle(gScale > 0.0f ? gScale : 1.0f, gLight);
-}
-
-bool uiTouch() {
-    return gTouch;
-}
-
 void uiBeginRows() {
-    const float row = kTouchTargetPx * gScale - ImGui::GetTextLineHeight();
+    const float row = kTouchTargetPx * gBuilt.scale - ImGui::GetTextLineHeight();
     const ImVec2 spacing = ImGui::GetStyle().ItemSpacing;
     ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing,
-                        gTouch ? ImVec2(spacing.x, std::fmax(spacing.y, row)) : spacing);
+                        gBuilt.touch ? ImVec2(spacing.x, std::fmax(spacing.y, row)) : spacing);
 }
 
 void uiEndRows() {
@@ -224,7 +219,7 @@ void uiEndRows() {
 }
 
 bool uiSmallButton(const char* label) {
-    if (gTouch) return ImGui::Button(label);
+    if (gBuilt.touch) return ImGui::Button(label);
     // ImGui's SmallButton has no vertical padding: its label is clipped to the line, and a
     // large font's descenders ("velocity", "energy" at UI scale 1.5) were cut. Two pixels more.
     ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 1.0f));
@@ -249,17 +244,12 @@ ImFont* uiSlideLabelFont() {
     return gSlideLabelFont ? gSlideLabelFont : uiLabelFont();
 }
 
-bool uiSlideFontsStale() {
-    return slideFontPx(kCaptionShare, kBaseFontPx * gScale) != gSlideCaptionPx ||
-           slideFontPx(kSceneLabelShare, kBaseFontPx * gScale * gLabelScale) != gSlideLabelPx;
-}
-
 bool uiLightTheme() {
-    return gLight;
+    return gBuilt.light;
 }
 
 ImVec4 uiThemed(const ImVec4& c) {
-    if (!gLight) return c;
+    if (!gBuilt.light) return c;
     float h = 0.0f, s = 0.0f, v = 0.0f;
     ImGui::ColorConvertRGBtoHSV(c.x, c.y, c.z, h, s, v);
     if (s < 0.25f) {
@@ -274,7 +264,7 @@ ImVec4 uiThemed(const ImVec4& c) {
 }
 
 ImU32 uiThemed(ImU32 c) {
-    if (!gLight) return c;
+    if (!gBuilt.light) return c;
     return ImGui::ColorConvertFloat4ToU32(uiThemed(ImGui::ColorConvertU32ToFloat4(c)));
 }
 
@@ -320,10 +310,10 @@ ImVec4 uiQuestionColor() {
 }
 
 ImVec4 uiMarkColorVec(Mark mark) {
-    const Color c = markColor(mark, gLight);
+    const Color c = markColor(mark, gBuilt.light);
     return ImVec4(c.r, c.g, c.b, c.a);
 }
 
 ImU32 uiMarkColor(Mark mark) {
-    return markColor(mark, gLight).packed();
+    return markColor(mark, gBuilt.light).packed();
 }

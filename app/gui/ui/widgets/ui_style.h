@@ -4,25 +4,23 @@
 
 #include <string>
 
+struct View;
+
 // Creates the ImGui context and sets the theme. `iniPath` null: no ini file (offscreen runs).
 void uiCreateContext(const char* iniPath);
 void uiDestroyContext();
-// Rebuilds the font atlas and style sizes for `scale`, with the scene labels' font at
-// `labelScale` times the UI font, the classroom's fonts for the display's height, and the dark or
-// light theme. Does only what changed since the last call; true when the fonts changed: the caller
-// then tells the UI renderer (uiRendererFontsChanged), which uploads the new atlas at its next
-// NewFrame.
-bool uiApplyLook(float scale, float labelScale, bool light);
-bool uiApplyScale(float scale); // uiApplyLook with the current label scale and theme
-// The scale uiApplyLook last applied.
-float uiCurrentScale();
+// The look is the view's (its UI scale, the scene labels' size, the dark or light theme) with the
+// app's touch sizes (App::ui.touchUi): each main calls this between frames, every frame, and it
+// rebuilds what changed since: the font atlas and style sizes for the UI scale, the labels' font
+// at labelScale times the UI font, the classroom's fonts for the display's height, the theme,
+// the touch sizes. True when the fonts changed: the caller then tells the UI renderer
+// (uiRendererFontsChanged), which uploads the new atlas at its next NewFrame.
+bool uiFollowView(const View& view, bool touch);
 // Sizes for fingers (phones and tablets; the browser build when the device has a touch screen):
 // every button, field, checkbox and header at least kTouchTargetPx high (at UI scale 1), the
 // platforms' guideline for a tap target (Apple: 44 pt; Material: 48 dp), and the rows of lists
-// as tall. Applied with the look (uiApplyLook), between frames.
+// as tall.
 constexpr float kTouchTargetPx = 44.0f;
-void uiSetTouch(bool touch);
-bool uiTouch();
 // In a list (a combo's popup, the lesson's steps): rows kTouchTargetPx high with touch sizes.
 void uiBeginRows();
 void uiEndRows();
@@ -35,13 +33,11 @@ ImFont* uiLabelFont();
 // scale, as a slide's text is (a slide's body text is about 4% of its height): the caption bar's
 // (title, caption, question or answer, method and t) kCaptionShare of it, 36 px at 1080, the
 // scene's labels kSceneLabelShare, 24 px at 1080; never smaller than the UI's own fonts. Baked
-// for the display's height (ImGui's DisplaySize) when the look is applied; uiSlideFontsStale
-// says when the height has changed since (then apply the look again, between frames).
+// for the display's height (ImGui's DisplaySize) by uiFollowView, again when the height changes.
 constexpr double kCaptionShare = 0.033;
 constexpr double kSceneLabelShare = 0.022;
 ImFont* uiCaptionFont();
 ImFont* uiSlideLabelFont();
-bool uiSlideFontsStale();
 // The font of small docked windows (compactWindow in dock_layout.h): kCompactFontScale of the UI
 // font's size.
 ImFont* uiCompactFont();
