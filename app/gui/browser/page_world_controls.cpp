@@ -2,6 +2,7 @@
 
 #include "app.h"
 #include "edit.h"
+#include "panel_rows.h"
 #include "printable.h"
 #include "scene_json.h"
 #include "settings_table.h"
@@ -37,7 +38,8 @@ std::string controlLabel(const WorldKey& row, const char* axis = nullptr) {
 // The field the panel's warning names: its label ("bounciness C", "gravity"), the key for a row
 // the panel shows otherwise (dt, shown there as a frame rate).
 std::string warningField(const WorldKey& row) {
-    return *row.panel.label && !row.shown.asRate ? row.panel.label : row.key;
+    const PanelRow* panel = panelRowOf(row);
+    return panel && *panel->label && !row.shown.asRate ? panel->label : row.key;
 }
 
 json names(const WorldKey& row) {
@@ -85,7 +87,7 @@ bool acceptTypedNumber(App& app, const char* field, const std::string& text, dou
 
 json worldControlsJson(const WorldSettings& s) {
     json rows = json::array();
-    for (const WorldKey* row : settings_table::shownOrder()) {
+    for (const WorldKey* row : panelOrder()) {
         json c = {{"key", row->key}, {"label", controlLabel(*row)}};
         switch (row->kind) {
         case Kind::Number:
@@ -133,7 +135,7 @@ bool applyWorldControl(App& app, const std::string& control, const std::string& 
                        std::string& error) {
     const WorldSettings& current = app.sim.world().settings;
     WorldSettings s = current;
-    for (const WorldKey* row : settings_table::shownOrder()) {
+    for (const WorldKey* row : panelOrder()) {
         const std::string key = row->key;
         int axis = -1;
         if (row->kind == Kind::Pair && control == key + "-x") axis = 0;

@@ -16,7 +16,7 @@ struct App;
 struct WorldSettings;
 
 // [{"key", "label", "kind", "value", ...}] for every row of the scene's settings in the panel's
-// order (settings_table::shownOrder): kind "number" or "whole" (with "min" and "max"), "pair"
+// order (panelOrder, panel_rows.h): kind "number" or "whole" (with "min" and "max"), "pair"
 // (value [x, y]: the page makes the controls KEY-x and KEY-y), "choice" (value a name of
 // "names"), "set" (value the names set, of "names") or "flag" (value true or false). The label
 // is what a screen reader says: "Bounciness C", "Time step dt in s", "Gravity g, x in m/s²".

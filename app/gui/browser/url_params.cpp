@@ -4,6 +4,7 @@
 #include "edit.h"
 #include "lesson_session.h"
 #include "page_world_controls.h"
+#include "panel_rows.h"
 #include "printable.h"
 #include "scene_json.h"
 #include "scene_library.h"
@@ -59,7 +60,7 @@ std::string knownNames() {
     std::string names;
     for (const UrlParamInfo& info : kUrlParams)
         names += (names.empty() ? "" : ", ") + std::string(info.name);
-    for (const settings_table::WorldKey* row : settings_table::shownOrder())
+    for (const settings_table::WorldKey* row : panelOrder())
         names += ", " + std::string(row->key);
     return names;
 }

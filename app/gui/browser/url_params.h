@@ -19,7 +19,7 @@
 struct App;
 
 // The parameters a link may carry, in the order the address bar writes them; and every world key
-// of the settings table (settings_table::shownOrder: method, bounciness, gravity=X,Y, dt,
+// of the settings table (panelOrder, panel_rows.h: method, bounciness, gravity=X,Y, dt,
 // substeps, resolve, integrator, mistakes=a,b or none, drag, friction), each set after the scene
 // opens, as the page's controls take it (page_world_controls.h: readWorldValue).
 struct UrlParamInfo {

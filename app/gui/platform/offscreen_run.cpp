@@ -329,7 +329,7 @@ int recordSteps(App& app, Offscreen& off, const Options& o) {
         ImGui::GetIO().DisplaySize =
             ImVec2(static_cast<float>(screen.width), static_cast<float>(screen.height));
         setUiScale(app.view, screen.uiScale);
-        uiApplyLook(app.view.uiScale, app.view.labelScale, app.view.lightTheme); // for its height
+        uiFollowView(app.view, app.ui.touchUi); // the fonts and style for its height and scale
         if (!recordStepsInto(app, off, o.recordSteps + "/" + screen.name())) return 1;
         ++screens;
     }

@@ -1,5 +1,6 @@
 #include "edit_words.h"
 
+#include "panel_rows.h"
 #include "scene.h"
 #include "scene_json.h"
 #include "settings_table.h"
@@ -35,7 +36,8 @@ std::string printedPair(const std::string& format, Vec2 v) {
 // A world setting with the panel's digits: "0.90", "60 Hz", "(0.00, -9.81) m/s²", "turn-based".
 std::string settingText(const settings_table::WorldKey& row, const WorldSettings& s) {
     using settings_table::Kind;
-    const char* format = *row.panel.format ? row.panel.format : "%.6g";
+    const PanelRow* panel = panelRowOf(row);
+    const char* format = panel && *panel->format ? panel->format : "%.6g";
     switch (row.kind) {
     case Kind::Number: {
         const double v = s.*row.number;
@@ -58,9 +60,12 @@ std::string fieldText(const settings_table::BlockKey& row, const BlockDef& def) 
     const json block = blockJson(def);
     if (!block.contains(row.key)) return "none";
     const json& value = block[row.key];
-    if (!*row.sliderFormat || value.is_string()) return scene_json::dumpValue(value);
-    if (value.is_number()) return printed(row.sliderFormat, value.get<double>());
-    return printedPair(row.sliderFormat, {value[0].get<double>(), value[1].get<double>()});
+    const char* format = "";
+    for (const BlockPanelRow& p : blockPanelRows())
+        if (std::strcmp(p.key, row.key) == 0) format = p.format;
+    if (!*format || value.is_string()) return scene_json::dumpValue(value);
+    if (value.is_number()) return printed(format, value.get<double>());
+    return printedPair(format, {value[0].get<double>(), value[1].get<double>()});
 }
 
 std::string blockName(const std::vector<BlockLabel>& labels, int index) {

@@ -177,13 +177,13 @@ StepTexts stepTexts(const App& app) {
     return t;
 }
 
-std::string planKey(const LessonSession& s, const StepTexts& t, float width, float height) {
-    std::string key = std::to_string(s.current) + "|" + std::to_string(width) + "x" +
-                      std::to_string(height) + "|" +
-                      std::to_string(static_cast<double>(uiCaptionFont()->FontSize)) + "|" +
-                      std::to_string(static_cast<double>(uiCurrentScale())) + "|" + s.lesson->name +
-                      "|" + t.heading + "|" + t.now.caption + "|" + t.now.question + "|" +
-                      t.now.answer + "|" + t.now.missed;
+std::string planKey(const LessonSession& s, const StepTexts& t, float width, float height,
+                    float uiScale) {
+    std::string key =
+        std::to_string(s.current) + "|" + std::to_string(width) + "x" + std::to_string(height) +
+        "|" + std::to_string(static_cast<double>(uiCaptionFont()->FontSize)) + "|" +
+        std::to_string(static_cast<double>(uiScale)) + "|" + s.lesson->name + "|" + t.heading +
+        "|" + t.now.caption + "|" + t.now.question + "|" + t.now.answer + "|" + t.now.missed;
     for (const std::string& c : t.now.choices) key += "|" + c;
     return key;
 }
@@ -259,7 +259,7 @@ void planLessonCaption(App& app) {
     }
     const ImGuiIO& io = ImGui::GetIO();
     const StepTexts texts = stepTexts(app);
-    const std::string key = planKey(s, texts, io.DisplaySize.x, io.DisplaySize.y);
+    const std::string key = planKey(s, texts, io.DisplaySize.x, io.DisplaySize.y, app.view.uiScale);
     if (key != gPlan.key) {
         const bool sameStep =
             gPlan.key.substr(0, gPlan.key.find('|')) == key.substr(0, key.find('|'));

@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-struct SimulationSession;
+struct Scene;
 
 // The panel's sections of world settings.
 enum class PanelSection : std::uint8_t { Simulation, Physics };
@@ -53,4 +53,4 @@ const BlockPanelRow& blockPanelRow(const char* key);
 const std::vector<const settings_table::WorldKey*>& panelOrder();
 // True when the scene uses the Physics section (it opens then): the thrust is on, a setting of
 // that section differs from its default, or a block has its own force or friction.
-bool usesPhysicsSection(const SimulationSession& sim);
+bool usesPhysicsSection(const Scene& scene, bool thrustOn);

@@ -1,6 +1,6 @@
 #include "panel_rows.h"
 
-#include "simulation_session.h"
+#include "scene.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -101,16 +101,16 @@ const std::vector<const settings_table::WorldKey*>& panelOrder() {
     return rows;
 }
 
-bool usesPhysicsSection(const SimulationSession& sim) {
-    if (sim.thrust.on) return true;
+bool usesPhysicsSection(const Scene& scene, bool thrustOn) {
+    if (thrustOn) return true;
     const WorldSettings defaults = defaultWorldSettings();
     for (const settings_table::WorldKey& row : settings_table::worldKeys()) {
         const PanelRow* p = panelRowOf(row);
         if (p && p->section == PanelSection::Physics &&
-            !settings_table::same(row, sim.scene.settings, defaults))
+            !settings_table::same(row, scene.settings, defaults))
             return true;
     }
-    for (const BlockDef& b : sim.scene.blocks) {
+    for (const BlockDef& b : scene.blocks) {
         if (b.force != Vec2{} || b.friction >= 0.0) return true;
     }
     return false;
