@@ -10,6 +10,7 @@ packages=(
   xvfb xdotool x11-apps imagemagick fonts-dejavu-core
   libopenal-dev libsndfile1-dev
   libbox2d-dev libchipmunk-dev
+  libboost-dev libqrcodegencpp-dev zbar-tools
   clang libclang-rt-14-dev
 )
 

@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "compare_command.h"
 #include "input_limits.h"
+#include "poll_command.h"
 #include "printable.h"
 #include "settings_table.h"
 #include "vocabulary.h" // the overlay table (header-only): its names, for lesson files
@@ -166,8 +167,7 @@ int main(int argc, char** argv) {
     CLI::Option* pxPerMOpt =
         compareCmd->add_option("--px-per-m", pxPerM, "gxp: pixels per metre (required with gxp)");
     CLI::Option* pxOriginOpt = compareCmd->add_option(
-        "--px-origin", pxOrigin,
-        "gxp: the pixel X,Y of the world's top-left corner (default 0,0)");
+        "--px-origin", pxOrigin, "gxp: the pixel X,Y of the world's top-left corner (default 0,0)");
     CLI::Option* toleranceOpt = compareCmd->add_option(
         "--tolerance", tolerance,
         "Positions within M metres are the same (default: a thousandth of the smallest block); "
@@ -178,6 +178,19 @@ int main(int argc, char** argv) {
     pxPerMOpt->type_name("N");
     pxOriginOpt->type_name("X,Y");
     toleranceOpt->type_name("M");
+
+    PollCommandRequest poll;
+    CLI::App* pollCmd = app.add_subcommand(
+        "poll", "Serve a lesson's class poll (docs/poll.md): print {\"url\", \"token\"} as the "
+                "first line, then read commands on stdin: open STEP, close, revote, status, save "
+                "FILE.csv, quit; one JSON line answers each.");
+    pollCmd->add_option("LESSON", poll.lesson, "Lesson file (JSON) whose steps ask with choices")
+        ->required();
+    pollCmd->add_option("--bind", poll.bind, "Address to listen on (default: the default route's)")
+        ->type_name("ADDR");
+    pollCmd->add_option("--port", poll.port, "Port (default 0: a free one)")->type_name("N");
+    pollCmd->add_option("--csv", poll.csv, "Write every round's counts here at quit")
+        ->type_name("FILE.csv");
 
     try {
         app.parse(argc, argv);
@@ -195,6 +208,7 @@ int main(int argc, char** argv) {
         lessons.scenesDir = SANDBOX_SCENES_DIR;
         lessons.overlayNames = overlayNames();
         if (*validateCmd) return validateCommand(validatePath, std::cout, std::cerr, lessons);
+        if (*pollCmd) return pollCommand(poll, std::cin, std::cout, std::cerr);
         if (*lessonCmd) return lessonCommand(lessonPath, std::cout, std::cerr, lessons, lessonJson);
         if (*tradeoffCmd) return tradeoffCommand(tradeoff, std::cout, std::cerr);
         if (*stabilityCmd) return stabilityCommand(stability, std::cout, std::cerr);

@@ -34,6 +34,7 @@ const Press kPresses[] = {
     {keys::kTab, false, false, Action::KeyboardFocus},
     {keys::kF6, false, false, Action::NextWindow},
     {keys::kM, false, false, Action::ToggleSound},
+    {keys::kA, false, false, Action::TogglePoll},
     {keys::kR, false, true, Action::ResetToFile},
     {keys::kP, false, true, Action::TogglePause}, // Shift does not matter
     {keys::kQ, true, false, Action::Quit},

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "app_log.h"
+#include "class_poll.h"
 #include "classroom.h"
 #include "csv_export.h"
 #include "input_map.h"
@@ -96,6 +97,9 @@ struct App {
     // overlay's outlines, the timeline's mark, the inspector's "your trace". A new scene closes it.
     StudentTrace studentTrace;
     VerboseLog log;
+    // The class poll (class_poll.h): on for the open lesson until turned off, the lesson closes
+    // or the app quits (its server stops with it).
+    ClassPoll poll;
 };
 
 // Loads `path` as the current scene (closing a lesson). On error, keeps the current scene, sets

@@ -27,7 +27,15 @@ bool openFirst(App& app, const Options& options, const std::string& lastScene, s
             if (error) *error = app.ui.messages.error;
             return false;
         }
+        if (!options.pollAddress.empty() && !startPoll(app.poll, app.lesson, options.pollAddress)) {
+            if (error) *error = "--poll: " + app.poll.error;
+            return false;
+        }
         return true;
+    }
+    if (!options.pollAddress.empty()) {
+        if (error) *error = "--poll needs a lesson (--lesson NAME or a lesson file)";
+        return false;
     }
     if (options.step > 0) {
         if (error) *error = "--step needs a lesson (--lesson NAME or a lesson file)";

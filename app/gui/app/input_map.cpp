@@ -35,6 +35,8 @@ const std::vector<KeyBinding>& keyBindings() {
          "Keyboard: the focus ring on the next window (the panel, each overlay window, Help)"},
         {keys::kF11, false, Action::ToggleFullscreen, "F11", "Fullscreen"},
         {keys::kF1, false, Action::ToggleHelp, "F1", "This help"},
+        {keys::kA, false, Action::TogglePoll, "A",
+         "Ask the class: the poll on / off (a lesson's questions on the students' phones)"},
         {keys::kEqual, true, Action::UiScaleUp, "Ctrl+=", "Larger UI (projector)", true, false,
          KeyWhen::Always, "The browser's zoom: a larger UI (projector)"},
         {keys::kKeypadAdd, true, Action::UiScaleUp, "Ctrl+Keypad +", "Larger UI", true, false,
@@ -175,6 +177,8 @@ const char* actionName(Action action) {
         return "fullscreen";
     case Action::ToggleHelp:
         return "help";
+    case Action::TogglePoll:
+        return "poll";
     case Action::UiScaleUp:
         return "ui-scale-up";
     case Action::UiScaleDown:

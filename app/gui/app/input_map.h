@@ -12,6 +12,7 @@
 // offscreen renderer uses the same codes. window_glfw.cpp checks they match <GLFW/glfw3.h>.
 namespace keys {
 constexpr int kSpace = 32;
+constexpr int kA = 65;
 constexpr int kMinus = 45;
 constexpr int kEqual = 61;
 constexpr int kC = 67;
@@ -86,6 +87,7 @@ enum class Action {
     ThrustRight,
     ThrustDown,
     ThrustUp,
+    TogglePoll, // A: the class poll on / off for the open lesson (docs/poll.md)
 };
 
 // When a binding holds: always, or only with thrust off or on (the arrow keys step the lesson

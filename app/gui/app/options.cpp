@@ -22,6 +22,23 @@ bool parseSize(const std::string& text, int& width, int& height) {
     return true;
 }
 
+bool parsePollVotes(const std::string& text, std::vector<std::vector<int>>& rounds) {
+    rounds.assign(1, {});
+    std::string number;
+    for (std::size_t i = 0; i <= text.size(); ++i) {
+        const char c = i < text.size() ? text[i] : '/';
+        if (c >= '0' && c <= '9' && number.size() < 4) {
+            number += c;
+            continue;
+        }
+        if ((c != ',' && c != '/') || number.empty() || std::stoi(number) > 1000) return false;
+        rounds.back().push_back(std::stoi(number));
+        number.clear();
+        if (c == '/' && i < text.size()) rounds.emplace_back();
+    }
+    return true;
+}
+
 std::vector<OutputFile> outputFiles(const Options& o) {
     return {{"--screenshot", &o.screenshot},
             {"--layout-json", &o.layoutJson},
@@ -122,6 +139,15 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         ->check(CLI::IsMember({"si", "gxp"}));
     app.add_option("--px-per-m", pxPerM, "gxp: pixels per metre");
     app.add_option("--px-origin", pxOrigin, "gxp: the pixel X,Y of the world's top-left corner");
+    app.add_option("--poll", o.pollAddress,
+                   "With a lesson: the class poll on, served on this address of the machine "
+                   "(docs/poll.md; A turns it on and off)")
+        ->type_name("ADDR");
+    std::string pollVotes;
+    app.add_option("--poll-votes", pollVotes,
+                   "Offscreen, with --poll: votes for each choice as phones would send them, "
+                   "e.g. 3,17,4; a second round after a slash (3,17,4/1,22,1)")
+        ->type_name("COUNTS");
     app.set_version_flag("--version", "sandbox 0.1");
     try {
         app.parse(argc, argv);
@@ -145,6 +171,14 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
             throw CLI::ValidationError("--text-json", "needs --screenshot FILE");
         }
         o.atSetup = at == "setup";
+        if (!pollVotes.empty()) {
+            if (o.pollAddress.empty())
+                throw CLI::ValidationError("--poll-votes", "needs --poll ADDR");
+            if (!parsePollVotes(pollVotes, o.pollVotes))
+                throw CLI::ValidationError("--poll-votes", "expected counts such as 3,17,4 or "
+                                                           "3,17,4/1,22,1 (each 0 to 1000), got '" +
+                                                               pollVotes + "'");
+        }
         if (!o.recordSteps.empty() && o.lesson.empty() && o.scene.empty()) {
             throw CLI::ValidationError("--record-steps", "needs a lesson (--lesson NAME)");
         }

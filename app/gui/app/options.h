@@ -43,6 +43,11 @@ struct Options {
     // --trace-units (si, or gxp with --px-per-m and --px-origin).
     std::string compareTrace;
     TraceUnitsSpec traceUnits;
+    // --poll ADDR: the class poll on for the lesson, served on ADDR (docs/poll.md).
+    std::string pollAddress;
+    // Offscreen --poll-votes A,B,C[/A,B,C...]: votes for each choice as if phones had sent them,
+    // one group per round ("Vote again" between two).
+    std::vector<std::vector<int>> pollVotes;
 };
 
 // The files a run writes, by flag: none may be an input of the run (the scene, the lesson, the
@@ -53,6 +58,8 @@ struct OutputFile {
 };
 std::vector<OutputFile> outputFiles(const Options& o);
 
+// Parses --poll-votes: "3,17,4" or "3,17,4/1,22,1" (each 0..1000); false otherwise.
+bool parsePollVotes(const std::string& text, std::vector<std::vector<int>>& rounds);
 // Parses "WxH" (each 16..16384); false otherwise.
 bool parseSize(const std::string& text, int& width, int& height);
 

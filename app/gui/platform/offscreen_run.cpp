@@ -190,6 +190,14 @@ int writeScreenshot(Offscreen& off, const Options& o) {
 int screenshot(App& app, Offscreen& off, const Options& o) {
     // The step's moment (its pause point, the answer shown), or with --at setup the step as it
     // opens: t = 0, the question asked.
+    // The class poll's votes (--poll-votes), as phones would send them: a round per group.
+    for (std::size_t r = 0; r < o.pollVotes.size(); ++r) {
+        if (r > 0) {
+            closePollVote(app.poll);
+            pollVoteAgain(app.poll);
+        }
+        castDemoVotes(app.poll, o.pollVotes[r]);
+    }
     if (app.lesson.active() && !o.atSetup) lessonShowPausePoint(app);
     // --frames N simulates N frames, as if P had been pressed (the badge then shows no PAUSED).
     AudioTrack track = startTrack(app, o, o.frames);

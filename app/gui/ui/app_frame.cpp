@@ -132,6 +132,16 @@ void applyAction(App& app, Action action) {
     case Action::ToggleHelp:
         app.ui.helpOpen = !app.ui.helpOpen;
         break;
+    case Action::TogglePoll:
+        if (app.poll.on()) {
+            stopPoll(app.poll);
+            logEvent(app, "poll: off");
+        } else if (startPoll(app.poll, app.lesson)) {
+            logEvent(app, ("poll: " + pollUrl(app.poll)).c_str());
+        } else {
+            app.ui.messages.error = app.poll.error;
+        }
+        break;
     case Action::UiScaleUp:
         setUiScale(app.view, app.view.uiScale + 0.25f);
         break;
@@ -241,10 +251,12 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
         if (app.view.frame != ViewFrame::World) layOut();
     }
     takeNotice(app);
+    followLesson(app.poll, app.lesson, app.sim.paused); // asks, closes, stops with the lesson
     // The UI: the scene's labels, the overlays, the lesson's caption, the panels, the dialogs.
     drawSceneDecorations(app);
     drawOverlays(app);
     if (app.lesson.active()) drawLessonCaption(app); // a lesson's one caption, presenting too
+    drawPollWindow(app);
     if (!app.view.presentMode) {
         if (app.view.uiVisible) drawControlsPanel(app);
         if (app.ui.helpOpen) drawHelpWindow(app);

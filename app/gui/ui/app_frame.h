@@ -32,6 +32,10 @@ void logStateChanges(App& app);
 
 // Panels (one file each).
 void drawControlsPanel(App& app);
+// The class poll's window over the scene (QR code and counts, or the votes at the moment), and
+// its section of the controls panel (overlays/class_poll_window.cpp).
+void drawPollWindow(App& app);
+void pollSection(App& app);
 void drawHelpWindow(App& app);
 // The quit dialog (unsaved edits) and the Save dialog (a name; overwriting asks), when open.
 void drawDialogs(App& app);

@@ -448,6 +448,7 @@ void drawControlsPanel(App& app) {
     viewSection(app);
     fileSection(app);
     compareSection(app);
+    pollSection(app);
     ImGui::PopItemWidth();
     wholeSections.end();
     ImGui::EndChild();

@@ -1,0 +1,150 @@
+#include "class_poll.h"
+
+#include "lesson_session.h"
+
+#ifndef __EMSCRIPTEN__
+#include "lesson_poll_questions.h"
+#include "net_addresses.h"
+#include "poll_qr.h"
+#include "poll_session.h"
+#endif
+
+ClassPoll::ClassPoll() = default;
+ClassPoll::~ClassPoll() = default;
+ClassPoll::ClassPoll(ClassPoll&&) noexcept = default;
+ClassPoll& ClassPoll::operator=(ClassPoll&&) noexcept = default;
+
+#ifdef __EMSCRIPTEN__
+
+bool pollAvailable() {
+    return false;
+}
+void listPollAddresses(ClassPoll&) {}
+bool startPoll(ClassPoll& poll, const LessonSession&, const std::string&) {
+    poll.error = kPollUnavailable;
+    return false;
+}
+void stopPoll(ClassPoll&) {}
+void followLesson(ClassPoll&, const LessonSession&, bool) {}
+void closePollVote(ClassPoll&) {}
+bool pollVoteAgain(ClassPoll&) {
+    return false;
+}
+void castDemoVotes(ClassPoll&, const std::vector<int>&) {}
+PollScreen pollScreen(const ClassPoll&, const LessonSession&) {
+    return {};
+}
+std::string pollUrl(const ClassPoll&) {
+    return "";
+}
+
+#else
+
+bool pollAvailable() {
+    return true;
+}
+
+void listPollAddresses(ClassPoll& poll) {
+    poll.addresses.clear();
+    for (const NetAddress& a : netAddresses()) poll.addresses.push_back(a.address);
+    if (poll.addresses.empty()) poll.addresses.push_back("127.0.0.1");
+    if (poll.address >= poll.addresses.size()) poll.address = 0;
+}
+
+bool startPoll(ClassPoll& poll, const LessonSession& lesson, const std::string& address) {
+    poll.error.clear();
+    if (!lesson.active()) {
+        poll.error = "Open a lesson first: the poll asks its steps' questions.";
+        return false;
+    }
+    std::optional<PollQuestions> questions = lessonPollQuestions(lesson.lesson->path, &poll.error);
+    if (!questions) return false;
+    if (poll.addresses.empty()) listPollAddresses(poll);
+    const std::string at = address.empty() ? poll.addresses[poll.address] : address;
+    std::unique_ptr<PollSession> session = PollSession::start(*questions, at, 0, &poll.error);
+    if (!session) return false;
+    poll.session = std::move(session);
+    const QrModules qr = qrModules(poll.session->url());
+    poll.qrSize = qr.size;
+    poll.qrDark = qr.dark;
+    poll.lessonPath = lesson.lesson->path;
+    poll.followedStep = static_cast<std::size_t>(-1);
+    followLesson(poll, lesson, true);
+    return true;
+}
+
+void stopPoll(ClassPoll& poll) {
+    poll.session.reset(); // stops the server
+    poll.note.clear();
+}
+
+void followLesson(ClassPoll& poll, const LessonSession& lesson, bool simPaused) {
+    if (!poll.session) return;
+    if (!lesson.active() || lesson.lesson->path != poll.lessonPath) return stopPoll(poll);
+    const bool atSetup = lesson.phase == LessonSession::Phase::Setup;
+    if (lesson.current != poll.followedStep) {
+        poll.followedStep = lesson.current;
+        poll.asked = false;
+        poll.session->clear();
+        poll.note = atSetup ? "" : "the vote opens at a step's setup (R)";
+    }
+    if (atSetup && !poll.asked) {
+        poll.asked = true;
+        poll.note.clear();
+        if (!poll.session->open(static_cast<int>(lesson.current) + 1, &poll.note)) {
+            // "lesson.json: step 1 asks nothing": the window names no file.
+            const std::string prefix = poll.lessonPath + ": ";
+            if (poll.note.compare(0, prefix.size(), prefix) == 0) poll.note.erase(0, prefix.size());
+        }
+    }
+    // Whatever plays the step closes its vote: P, the bar's Play, PageDown.
+    if (poll.session->snapshot().open &&
+        (lesson.phase != LessonSession::Phase::Setup || !simPaused))
+        poll.session->close();
+}
+
+void closePollVote(ClassPoll& poll) {
+    if (poll.session) poll.session->close();
+}
+
+bool pollVoteAgain(ClassPoll& poll) {
+    return poll.session && poll.session->revote();
+}
+
+void castDemoVotes(ClassPoll& poll, const std::vector<int>& counts) {
+    if (!poll.session) return;
+    static int devices = 0;
+    for (std::size_t choice = 0; choice < counts.size(); ++choice)
+        for (int i = 0; i < counts[choice]; ++i)
+            poll.session->castVote("demo-" + std::to_string(++devices), static_cast<int>(choice));
+}
+
+std::string pollUrl(const ClassPoll& poll) {
+    return poll.session ? poll.session->url() : "";
+}
+
+PollScreen pollScreen(const ClassPoll& poll, const LessonSession& lesson) {
+    PollScreen s;
+    if (!poll.session) return s;
+    s.on = true;
+    s.url = poll.session->url();
+    s.qrSize = poll.qrSize;
+    s.qrDark = poll.qrDark;
+    s.note = poll.note;
+    const PollSnapshot snap = poll.session->snapshot();
+    s.asking = snap.asking;
+    s.open = snap.open;
+    s.joined = snap.joined;
+    s.voted = snap.current.voters;
+    if (!snap.asking) return s;
+    s.step = snap.current.step;
+    s.question = snap.current.question;
+    s.choices = snap.current.choices;
+    s.proved = snap.current.proved;
+    for (const PollRound& r : snap.rounds) s.rounds.push_back(r.counts);
+    // The counts stay hidden until the vote is closed and the class has seen the moment.
+    s.histogram = !snap.open && !s.rounds.empty() && lesson.phase == LessonSession::Phase::Moment;
+    return s;
+}
+
+#endif

@@ -1,0 +1,15 @@
+# Writes a C++ header holding the phone page's files (page/) as string constants, so the app
+# serves them from any directory. Run at build time: cmake -DOUTPUT=file.h -DPAGE_DIR=page -P this.
+file(GLOB FILES "${PAGE_DIR}/*.html" "${PAGE_DIR}/*.css" "${PAGE_DIR}/*.js")
+list(SORT FILES)
+set(content "// Generated from app/poll/page/ by app/poll/embed_page.cmake. Do not edit.\n#pragma once\n\n#include <string_view>\n\nnamespace poll_page {\n")
+foreach(page IN LISTS FILES)
+  file(READ "${page}" text)
+  get_filename_component(name "${page}" NAME)
+  string(MAKE_C_IDENTIFIER "${name}" ident)
+  string(APPEND content "inline constexpr std::string_view ${ident} = R\"page(${text})page\";\n")
+endforeach()
+string(APPEND content "}  // namespace poll_page\n")
+file(WRITE "${OUTPUT}.tmp" "${content}")
+execute_process(COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${OUTPUT}.tmp" "${OUTPUT}")
+file(REMOVE "${OUTPUT}.tmp")
