@@ -99,6 +99,9 @@ struct LessonChoice {
     LessonText answer;
 };
 
+// A question's choices: 2 to 4 (lettered A-D).
+inline constexpr std::size_t kMinChoices = 2;
+inline constexpr std::size_t kMaxChoices = 4;
 // The letter of choice `index` (0-based): "A".."D".
 std::string choiceLetter(std::size_t index);
 

@@ -3,6 +3,7 @@
 #include "app.h"
 #include "lesson_session.h"
 #include "printable.h"
+#include "scene.h"
 #include "scene_library.h"
 
 #include <algorithm>
@@ -186,6 +187,14 @@ void applyUrlParams(App& app, const UrlParams& params) {
             add("URL parameter lesson: no lesson " + echo(params.lesson) + " is shipped");
         else if (!openLesson(app, path, first))
             add(app.ui.messages.error);
+        else if (!params.linkScene.empty()) {
+            // The step's setup as the student changed it (link.h).
+            const SceneResult carried = loadSceneFile(params.linkScene);
+            if (carried.scene)
+                lessonTakeSetup(app.lesson, app.sim, app.view, *carried.scene);
+            else
+                add("the link's scene (#scene=...): " + carried.error.text());
+        }
     }
     if (!params.linkScene.empty() && params.lesson.empty()) {
         if (!loadScene(app, params.linkScene))
