@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fails (exit 1) when the project's own source files include each other in a circle.
+"""Fails (exit 1) when the project's own source files, or its folders, include each other in a circle.
 
     tools/check_include_cycles.py [ROOT]        # ROOT: the repository (default: this script's)
 
@@ -13,8 +13,15 @@ that path ending. Two candidates are an error (exit 2: the build's include order
 and so would a renamed folder), and so is an unreadable file. A name that is no project file
 (a system or generated header) is not the project's and is skipped.
 
-Prints each cycle as the chain of includes that closes it, one line per link with file and line.
-Exit codes: 0 no cycle, 1 a cycle, 2 an ambiguous include or bad usage.
+Folders are layers: under engine/ and app/ (LAYERED_ROOTS), no folder may include a file of a
+folder that includes it back, directly or through others. A file's folder is the one it sits in
+(engine/ and engine/methods/ are two folders), so engine/step.cpp including methods/methods.h and
+methods/resolve.h including world.h is a folder cycle engine -> engine/methods -> engine, although
+no two files include each other.
+
+Prints each cycle as the chain of includes that closes it, one line per link with file and line;
+a folder cycle as its folders and, per link, one include that makes it.
+Exit codes: 0 no cycle, 1 a cycle (of files or of folders), 2 an ambiguous include or bad usage.
 """
 
 import os
@@ -27,6 +34,8 @@ SOURCE_SUFFIXES = (".h", ".hpp", ".hh", ".inl", ".c", ".cc", ".cpp", ".cxx")
 SKIPPED_FOLDER = re.compile(r"^(\.git|build.*|node_modules|__pycache__)$")
 INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*"([^"]+)"', re.MULTILINE)
 COMMENT = re.compile(r"//[^\n]*|/\*.*?\*/", re.DOTALL)
+# The trees whose folders must be layers (a folder never includes one that includes it back).
+LAYERED_ROOTS = ("engine", "app")
 
 
 class Ambiguous(Exception):
@@ -86,6 +95,37 @@ def include_graph(root):
                 continue
             graph[unit_of(path)].setdefault(unit_of(target), (path, line, name))
     return graph
+
+
+def folder_of(unit):
+    """'app/gui/ui/help' -> 'app/gui/ui'; a unit at the root is in '.'."""
+    return os.path.dirname(unit) or "."
+
+
+def layered(folder):
+    return any(folder == root or folder.startswith(root + "/") for root in LAYERED_ROOTS)
+
+
+def folder_graph(graph):
+    """folder -> {included folder: (including file, line, included name)}, among LAYERED_ROOTS'
+    folders: the first include (in path order) that makes each arrow."""
+    folders = {}
+    for unit in sorted(graph):
+        source = folder_of(unit)
+        if not layered(source):
+            continue
+        arrows = folders.setdefault(source, {})
+        for target_unit in sorted(graph[unit]):
+            target = folder_of(target_unit)
+            if target == source or not layered(target):
+                continue
+            include = graph[unit][target_unit]
+            if target not in arrows or include < arrows[target]:
+                arrows[target] = include
+    for arrows in list(folders.values()):
+        for target in arrows:
+            folders.setdefault(target, {})
+    return folders
 
 
 def strongly_connected(graph):
@@ -184,12 +224,26 @@ def main(argv):
         for unit, next_unit in zip(chain, chain[1:]):
             path, line, name = graph[unit][next_unit]
             print(f'  {path}:{line}: #include "{name}"')
+    folders = folder_graph(graph)
+    found_folders = cycles(folders)
+    for chain in found_folders:
+        print(f"folder cycle: {' -> '.join(f + '/' for f in chain)}")
+        for folder, next_folder in zip(chain, chain[1:]):
+            path, line, name = folders[folder][next_folder]
+            print(f'  {path}:{line}: #include "{name}"')
     if found:
         print(f"check_include_cycles: {len(found)} cycle(s) among the project's own files "
               "(a file and its header count as one): break each by moving what both need below "
               "both, or by passing in what one side needs", file=sys.stderr)
+    if found_folders:
+        print(f"check_include_cycles: {len(found_folders)} folder cycle(s) under "
+              f"{', '.join(r + '/' for r in LAYERED_ROOTS)} (folders are layers: a folder never "
+              "includes one that includes it back): move the file that runs back up into the "
+              "folder below, or what both need below both", file=sys.stderr)
+    if found or found_folders:
         return 1
-    print(f"check_include_cycles: no cycle among {len(graph)} units")
+    print(f"check_include_cycles: no cycle among {len(graph)} units nor among "
+          f"{len(folders)} folders")
     return 0
 
 

@@ -73,7 +73,7 @@ Color outlineFor(const Color& fill, const Color& background);
 // colour in the dark and the light theme. Chosen so that every group of marks drawn together
 // (markGroups) stays apart, mark from mark and mark from what it is drawn on, by at least
 // kMinMarkDifference in CIEDE2000 for normal vision and under simulated protanopia,
-// deuteranopia and tritanopia (tests/app/palette_test.cpp computes it). Plot series also
+// deuteranopia and tritanopia (tests/app/render/palette_test.cpp computes it). Plot series also
 // differ by their dash pattern (PlotSeries::dash), the arrows by their shape.
 enum class Mark {
     PlotX,                // the x component in the plots (vx, px)

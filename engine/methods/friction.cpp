@@ -63,13 +63,13 @@ double Resolver::frictionImpulse(int a, int b, int tangent, double mu, double jn
         const double common = wa == 0.0   ? va
                               : wb == 0.0 ? vb
                                           : centerOfMassVelocity(1.0 / wa, va, 1.0 / wb, vb);
-        if (wa > 0.0) setVelocity(a, tangent, common);
-        if (wb > 0.0) setVelocity(b, tangent, common);
+        if (wa > 0.0) bounce(a, tangent, common);
+        if (wb > 0.0) bounce(b, tangent, common);
         return std::abs(rel);
     }
     const double direction = rel > 0.0 ? 1.0 : -1.0;
-    if (wa > 0.0) setVelocity(a, tangent, va - direction * jt * wa);
-    if (wb > 0.0) setVelocity(b, tangent, vb + direction * jt * wb);
+    if (wa > 0.0) bounce(a, tangent, va - direction * jt * wa);
+    if (wb > 0.0) bounce(b, tangent, vb + direction * jt * wb);
     return jt * (wa + wb);
 }
 
@@ -92,6 +92,22 @@ void Resolver::slideFriction(int i, int tangent) {
     else
         slide.accel = -std::min(std::max(applied, -slide.limit), slide.limit);
     setAcceleration(i, tangent, applied + slide.accel);
+}
+
+// Resolver::bounce with friction: block i's velocity along `axis` has changed by a collision or
+// friction. Its acceleration along the axis is its forces' and its slide's, the slide acting
+// against the new velocity (kept, a kinetic slide's old direction would push a block that bounced
+// back along its sliding, making energy); its slide along the other axis, on a support along this
+// one, ends: the block has left that support, or presses on it again and the rest rule sets the
+// slide again at this instant.
+void Resolver::releaseSlides(int i, int axis) {
+    Slide& along = (*ctx_.slides)[2 * static_cast<size_t>(i) + axis];
+    setAcceleration(i, axis, (*ctx_.forces)[i][axis] + along.accel);
+    if (along.on) slideFriction(i, axis);
+    Slide& across = (*ctx_.slides)[2 * static_cast<size_t>(i) + 1 - axis];
+    if (across.accel != 0.0)
+        setAcceleration(i, 1 - axis, (*ctx_.acceleration)[i][1 - axis] - across.accel);
+    across = Slide{};
 }
 
 double SubstepContext::stopTime(int i, int axis, double velocity) const {
@@ -130,7 +146,7 @@ void Resolver::touch(int i, const Aabb& box, int j, int axis) {
 // it does not. Each member's Slide keeps its share.
 double Resolver::freeClusterAcceleration(int axis, double u, double withoutFriction) {
     std::vector<Slide>& slides = *ctx_.slides;
-    const std::vector<Vec2>& accel = *ctx_.acceleration;
+    const std::vector<Vec2>& free = *ctx_.forces; // what drives each member, friction aside
     const std::vector<Block>& blocks = ctx_.world.blocks;
     double force = 0.0, mass = 0.0, holding = 0.0;
     bool any = false;
@@ -138,12 +154,9 @@ double Resolver::freeClusterAcceleration(int axis, double u, double withoutFrict
         Slide& slide = slides[2 * static_cast<size_t>(j) + axis];
         const double m = blocks[j].mass;
         mass += m;
-        if (!slide.on) {
-            force += m * accel[j][axis];
-            continue;
-        }
+        force += m * free[j][axis];
+        if (!slide.on) continue;
         any = true;
-        force += m * (accel[j][axis] - slide.accel);
         const double rel = u - velocityOf(slide.support, axis);
         if (rel != 0.0)
             force -= (rel > 0.0 ? 1.0 : -1.0) * m * slide.limit;

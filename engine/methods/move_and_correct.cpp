@@ -7,6 +7,7 @@
 #include "scratch.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -22,8 +23,25 @@ double correctionShare(const Block& self, const Block& other) {
     return other.kind == BodyKind::Kinematic ? 0.5 : 1.0;
 }
 
+// The exact integrator's motion is a parabola: a block pushed back by `shift` (m) along `axis`
+// against its acceleration `a` (out of a wall, a static or a kinematic block) is raised against
+// that force, and the energy -m·a·shift this takes comes out of its speed along the axis (where
+// its parabola passes that point, v² is less by 2·|a·shift|). Kept, it is energy the correction
+// made: a block bouncing on the floor would climb higher every bounce (docs/physics.md, "Energy in
+// piles"). After the resolve, so that the contact's normal change and its friction are those of
+// the whole correction (a resting block's g·h).
+void payForTheShift(Block& block, int axis, double a, double shift) {
+    const double work = a * shift; // < 0: raised against the force
+    if (!(work < 0.0)) return;
+    const double v = block.velocity[axis];
+    const double v2 = v * v + 2.0 * work;
+    block.velocity[axis] = v2 > 0.0 ? std::copysign(std::sqrt(v2), v) : 0.0;
+}
+
 // Pushes a and b apart along the axis of least penetration and resolves their velocities.
-void correctPair(SubstepContext& ctx, Resolver& resolver, int a, int b) {
+// `bent`: the exact integrator's accelerations (null for the Euler integrators).
+void correctPair(SubstepContext& ctx, Resolver& resolver, int a, int b,
+                 const std::vector<Vec2>* bent) {
     Block& A = ctx.world.blocks[a];
     Block& B = ctx.world.blocks[b];
     const Vec2 extents = overlapExtents(aabbOf(A), aabbOf(B));
@@ -37,10 +55,17 @@ void correctPair(SubstepContext& ctx, Resolver& resolver, int a, int b) {
     A.position[axis] += direction * depth * shareA;
     B.position[axis] -= direction * depth * shareB;
     resolver.resolvePair(a, b, axis);
+    // Between two finite masses the shares keep their centre of mass: no work against a uniform
+    // force. Against an infinite mass the dynamic block alone moves.
+    if (!bent) return;
+    if (A.isDynamic() && !B.isDynamic())
+        payForTheShift(A, axis, (*bent)[a][axis], direction * depth * shareA);
+    if (B.isDynamic() && !A.isDynamic())
+        payForTheShift(B, axis, (*bent)[b][axis], -direction * depth * shareB);
 }
 
 // Puts a block that sticks out of the bounds back on the wall, and bounces it off.
-void correctWalls(SubstepContext& ctx, Resolver& resolver, int i) {
+void correctWalls(SubstepContext& ctx, Resolver& resolver, int i, const std::vector<Vec2>* bent) {
     Block& block = ctx.world.blocks[i];
     const Bounds& bounds = ctx.world.bounds;
     for (int axis = 0; axis < 2; ++axis) {
@@ -53,6 +78,8 @@ void correctWalls(SubstepContext& ctx, Resolver& resolver, int i) {
         const bool movingOut = (below >= 0.0 && block.velocity[axis] < 0.0) ||
                                (above >= 0.0 && block.velocity[axis] > 0.0);
         if (movingOut) resolver.resolveWall(i, axis);
+        const double shift = below > 0.0 ? below : above > 0.0 ? -above : 0.0;
+        if (bent) payForTheShift(block, axis, (*bent)[i][axis], shift);
     }
 }
 
@@ -72,6 +99,7 @@ void advanceMoveAndCorrect(SubstepContext& ctx) {
     }
     // The motion is done: contacts are found after a whole step, as after an Euler step, so they
     // are resolved as then (the rest rule keeps its margin for what the step added).
+    const std::vector<Vec2>* bent = ctx.acceleration;
     ctx.acceleration = nullptr;
 
     // 2. Find the overlapping pairs at the new positions.
@@ -89,8 +117,8 @@ void advanceMoveAndCorrect(SubstepContext& ctx) {
     // 3. Correct the overlaps and resolve the collisions, then the walls.
     Resolver resolver(ctx);
     resolver.setNow(ctx.h);
-    for (const auto& [a, b] : pairs) correctPair(ctx, resolver, a, b);
+    for (const auto& [a, b] : pairs) correctPair(ctx, resolver, a, b, bent);
     for (int i = 0; i < n; ++i)
-        if (blocks[i].kind != BodyKind::Static) correctWalls(ctx, resolver, i);
+        if (blocks[i].kind != BodyKind::Static) correctWalls(ctx, resolver, i, bent);
     ctx.advanced = ctx.h;
 }

@@ -62,6 +62,7 @@ class PerfectSolver final : ResolveHooks {
     }
     bool resolve(const Event& e, int processed);
     int meetingsAtInstant(const Event& e);
+    int allowedMeetings(int processed) const;
     bool collapsesOrTraps(const Event& e, int axis, int meetings, int processed);
     bool squeezed(const Event& e, int axis) {
         return crush_.squeezed(blocks_, e.a, e.b, axis, timeline_.positionAt(e.a, e.time)[axis],
@@ -95,10 +96,15 @@ int PerfectSolver::meetingsAtInstant(const Event& e) {
     return ++metAtInstant_[(static_cast<std::uint64_t>(lo) << 32) | hi];
 }
 
+// How many meetings of one pair at one instant are resolved as they come (see the top of the
+// file); past half the event cap, one.
+int PerfectSolver::allowedMeetings(int processed) const {
+    return processed > ctx_.world.settings.eventCap / 2 ? 1 : kRepeatsAtInstant;
+}
+
 // The collapse and trap rules (see the top of the file).
 bool PerfectSolver::collapsesOrTraps(const Event& e, int axis, int meetings, int processed) {
-    const int allowed = processed > ctx_.world.settings.eventCap / 2 ? 1 : kRepeatsAtInstant;
-    if (meetings <= allowed) return false;
+    if (meetings <= allowedMeetings(processed)) return false;
     if (ctx_.world.settings.bounciness < 1.0) return true; // collapse
     const int block = blocks_[e.a].isDynamic() ? e.a : e.b;
     return block >= 0 && blocks_[block].isDynamic() &&
@@ -112,6 +118,9 @@ bool PerfectSolver::resolve(const Event& e, int processed) {
     // A block that stops sliding (friction, the exact integrator): no contact to resolve.
     if (isStop(e)) return resolver_.stopSliding(e.a, stopAxis(e)) != Resolution::None;
     const int meetings = meetingsAtInstant(e);
+    // Two blocks meeting again and again at one instant (Resolver::setRepeated).
+    resolver_.setRepeated(e.b >= 0 && blocks_[e.a].isDynamic() && blocks_[e.b].isDynamic() &&
+                          meetings > allowedMeetings(processed));
     bool changed = false;
     for (int axis = 0; axis < 2; ++axis) {
         if (!(e.axes & (1 << axis))) continue;

@@ -69,6 +69,24 @@ void Resolver::setVelocity(int i, int axis, double v) {
     changed_.push_back(i);
 }
 
+// A collision or friction (not the rest rule's merge) changes block i's velocity along `axis`.
+// With the exact integrator its acceleration along the axis is then its forces' again: a support
+// that held it (the rest rule's acceleration 0 on the floor) holds nothing it moves away from, and
+// kept, that 0 would carry it up without gravity's deceleration, making energy (m·g·v per second;
+// docs/physics.md, "Energy in piles"). If it still presses on what it touches, the contact comes
+// again at this instant and the rest rule holds it again. With friction its slides change too
+// (releaseSlides, friction.cpp).
+void Resolver::bounce(int i, int axis, double v) {
+    const double before = ctx_.world.blocks[i].velocity[axis];
+    setVelocity(i, axis, v);
+    if (!ctx_.acceleration || before == v || !ctx_.world.blocks[i].isDynamic()) return;
+    if (ctx_.slides) {
+        releaseSlides(i, axis);
+        return;
+    }
+    setAcceleration(i, axis, (*ctx_.forces)[i][axis]);
+}
+
 void Resolver::reverseKinematic(int i, int axis) {
     const Block& b = ctx_.world.blocks[i];
     if (b.kind == BodyKind::Kinematic) setVelocity(i, axis, -b.velocity[axis]);
@@ -136,8 +154,8 @@ Resolution Resolver::resolvePair(int a, int b, int axis, RestRule rest) {
     const double u = reflect ? 0.0 : centerOfMassVelocity(m1, v1, m2, v2);
     const double v1After = A.isDynamic() ? velocityAfterCollision(v1, u, C) : v1;
     const double v2After = B.isDynamic() ? velocityAfterCollision(v2, u, C) : v2;
-    setVelocity(a, axis, v1After);
-    setVelocity(b, axis, v2After);
+    bounce(a, axis, v1After);
+    bounce(b, axis, v2After);
     if (ctx_.friction) contactFriction(a, b, axis, std::abs((v1After - v2After) - (v1 - v2)));
     record(a, b, axis, m1, v1, m2, v2, u, C, v1After, v2After,
            reflect ? ResolveRule::Reflect : ResolveRule::Formula);
@@ -164,7 +182,7 @@ Resolution Resolver::resolveWall(int a, int axis, RestRule rest) {
     // A wall has infinite mass and u = 0, so v' = -C·v (lecture, "Bounce elasticity").
     const double C = ctx_.world.settings.bounciness;
     const double after = velocityAfterCollision(v, 0.0, C);
-    setVelocity(a, axis, after);
+    bounce(a, axis, after);
     if (ctx_.friction) contactFriction(a, wall, axis, std::abs(after - v));
     record(a, wall, axis, A.mass, v, kInfiniteMass, 0.0, 0.0, C, after, 0.0, ResolveRule::Formula);
     return Resolution::Bounce;
@@ -368,22 +386,25 @@ Resolution Resolver::restCluster(int seedA, int seedB, int axis, Wall seedWall) 
     // their anchors (0: walls, static and kinematic blocks do not accelerate), or, free, with the
     // cluster's own (total force over total mass) when the members' differ.
     if (ctx_.acceleration) {
-        const std::vector<Vec2>& accel = *ctx_.acceleration;
         double a = 0.0;
         if (!anchored) {
+            // From the forces on the members (ctx_.forces), not their accelerations now: a
+            // member that an earlier contact held (its acceleration 0 on a support it has left)
+            // is free again, and a held acceleration would take gravity's work off the cluster.
+            const std::vector<Vec2>& free = *ctx_.forces;
             double force = 0.0, mass = 0.0;
             bool same = true;
             for (int j : queue_) {
-                force += blocks[j].mass * accel[j][axis];
+                force += blocks[j].mass * free[j][axis];
                 mass += blocks[j].mass;
-                same &= accel[j][axis] == accel[queue_.front()][axis];
+                same &= free[j][axis] == free[queue_.front()][axis];
             }
-            a = same ? accel[queue_.front()][axis] : force / mass;
+            a = same ? free[queue_.front()][axis] : force / mass;
             if (ctx_.slides) a = freeClusterAcceleration(axis, u, a);
         }
         for (int j : queue_) setAcceleration(j, axis, a);
     }
-    if (ctx_.friction) {
+    if (ctx_.friction && !repeated_) {
         bool below = staticBelow, above = staticAbove;
         for (const Anchor& k : kinematics_) below |= k.below, above |= k.above;
         clusterFriction(axis, below, above, seedA, seedB >= 0 ? seedB : seedWall);

@@ -54,12 +54,14 @@ struct SubstepContext {
     // m/s^2 per block over this substep: the exact integrator's constant accelerations (the rest
     // rule zeroes them for supported blocks). Null for the Euler integrators: motion is linear.
     std::vector<Vec2>* acceleration = nullptr;
+    // The exact integrator: each block's forces' acceleration at the substep's start (what moves
+    // it when nothing holds it; null for the Euler integrators).
+    const std::vector<Vec2>* forces = nullptr;
     // Friction (friction.cpp): some μ > 0 (else no friction code runs: the results are those
-    // without it, bit for bit). With the exact integrator also each block's forces' acceleration
-    // at the substep's start and its slides (2 per block: x, y).
+    // without it, bit for bit). With the exact integrator also each block's slides (2 per block:
+    // x, y).
     bool friction = false;
     double maxFriction = 0.0; // the largest μ of the world and its blocks
-    const std::vector<Vec2>* forces = nullptr;
     std::vector<Slide>* slides = nullptr;
 
     // How blocks move within the substep and where the methods detect impacts: the methods call
@@ -143,6 +145,15 @@ class Resolver {
 
     // The time (s since the substep start) at which contacts are being resolved.
     void setNow(double now) { now_ = now; }
+    // The contact about to be resolved, of two blocks, has met more often at this instant than
+    // the method resolves as it comes (perfect.cpp: the collapse and trap rules). A rest-rule
+    // merge of it then carries no friction: each merge's friction changes both blocks' velocities
+    // along the other axis by up to μ·Δv_n, which closes a neighbouring contact along that axis
+    // again, whose merge's friction closes this one again; with μ ≥ 1 that never shrinks, and the
+    // event cap ended the substep with the forces' g·h given and no time passed (energy in piles
+    // with μ = 2: docs/physics.md, "Energy in piles"). Against an infinite mass friction only
+    // slows the block toward it, which closes nothing again.
+    void setRepeated(bool repeated) { repeated_ = repeated; }
 
     // Blocks a and b touch along `axis` (0 = x, 1 = y); resolves if they approach.
     Resolution resolvePair(int a, int b, int axis, RestRule rest = RestRule::WhenSlow);
@@ -170,6 +181,7 @@ class Resolver {
     void record(int a, int b, int axis, double m1, double v1, double m2, double v2, double u,
                 double C, double v1After, double v2After, ResolveRule rule);
     void setVelocity(int i, int axis, double v);
+    void bounce(int i, int axis, double v);
     void findNear(const Aabb& box);
     // Friction (friction.cpp).
     double frictionOf(int body) const;
@@ -179,6 +191,7 @@ class Resolver {
     double frictionImpulse(int a, int b, int tangent, double mu, double jn);
     void contactFriction(int a, int b, int axis, double dvn);
     void slideFriction(int i, int tangent);
+    void releaseSlides(int i, int axis);
     void touch(int i, const Aabb& box, int j, int axis);
     double freeClusterAcceleration(int axis, double u, double withoutFriction);
     void clusterFriction(int axis, bool anchoredBelow, bool anchoredAbove, int seedA,
@@ -192,6 +205,7 @@ class Resolver {
     ResolveHooks* hooks_;
     double now_ = 0.0;
     bool forceRest_ = false; // the contact being resolved: RestRule::Always
+    bool repeated_ = false;  // setRepeated
     std::vector<int> changed_;
     // The friction of the contact being resolved, for its record.
     struct FrictionNote {

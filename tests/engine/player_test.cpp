@@ -1,4 +1,4 @@
-// The scene's player (engine/player.h): up makes it jump only when it stands on something, never
+// The scene's player (engine/step/player.h): up makes it jump only when it stands on something, never
 // in mid-air; the jump rises jump²/(2·|g|) and left/right push it with a force, both exactly
 // (to 1e-9) under the exact integrator; the scene key "player" reads, saves and rejects bad
 // values with their JSON path.

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """tools/check_include_cycles.py on tiny trees written for each case: a cycle is found and printed
-with the includes that close it, a tree without one passes, an ambiguous include is refused."""
+with the includes that close it, a folder cycle under engine/ or app/ too, a tree without one
+passes, an ambiguous include is refused."""
 
 import os
 import subprocess
@@ -62,10 +63,10 @@ class IncludeCycles(unittest.TestCase):
 
     def test_a_tree_without_a_cycle_passes(self):
         code, out = check({
-            "engine/world.h": '#pragma once\n#include "vec2.h"\n#include <vector>\n',
-            "engine/world.cpp": '#include "world.h"\n',
-            "engine/vec2.h": "#pragma once\n",
-            "engine/step.cpp": '#include "world.h"\n#include "methods.h"\n',
+            "engine/world/world.h": '#pragma once\n#include "vec2.h"\n#include <vector>\n',
+            "engine/world/world.cpp": '#include "world.h"\n',
+            "engine/world/vec2.h": "#pragma once\n",
+            "engine/step/step.cpp": '#include "world.h"\n#include "methods.h"\n',
             "engine/methods/methods.h": '#include "world.h"\n',
             "engine/methods/perfect.cpp": '#include "methods.h"\n',
             # Not the project's: a system or generated header, and a commented-out include.
@@ -74,6 +75,44 @@ class IncludeCycles(unittest.TestCase):
             "app/main_loop.h": '#include "main.h"\n',
             "app/main.h": "#pragma once\n",
             "build/generated/world.h": '#include "main.h"\n',  # a build tree is not read
+        })
+        self.assertEqual(code, 0, out)
+        self.assertIn("no cycle among", out)
+
+    def test_folders_that_include_each_other_are_a_cycle(self):
+        # No two files include each other, yet engine/ needs engine/methods/ (step.cpp) and
+        # engine/methods/ needs engine/ (resolve.h): the folders are not layers.
+        code, out = check({
+            "engine/world.h": "#pragma once\n",
+            "engine/step.cpp": '#include "world.h"\n#include "methods.h"\n',
+            "engine/methods/methods.h": '#pragma once\n#include "resolve.h"\n',
+            "engine/methods/resolve.h": '#pragma once\n\n#include "world.h"\n',
+        })
+        self.assertEqual(code, 1, out)
+        self.assertNotIn("include cycle:", out)
+        self.assertIn("folder cycle: engine/ -> engine/methods/ -> engine/", out)
+        self.assertIn('engine/step.cpp:2: #include "methods.h"', out)
+        self.assertIn('engine/methods/resolve.h:3: #include "world.h"', out)
+        self.assertIn("1 folder cycle(s)", out)
+
+    def test_a_folder_cycle_through_three_folders_under_app(self):
+        code, out = check({
+            "app/gui/app/app.h": '#pragma once\n#include "csv_export.h"\n',
+            "app/gui/explain/csv_export.h": '#pragma once\n#include "table.h"\n',
+            "app/analysis/table.h": "#pragma once\n",
+            "app/analysis/table.cpp": '#include "table.h"\n#include "app.h"\n',
+        })
+        self.assertEqual(code, 1, out)
+        self.assertIn("folder cycle: app/analysis/ -> app/gui/app/ -> app/gui/explain/ -> "
+                      "app/analysis/", out)
+        self.assertIn('app/analysis/table.cpp:2: #include "app.h"', out)
+
+    def test_folders_outside_engine_and_app_may_include_each_other(self):
+        # Tests and tools are not layers: a test folder may share a fixture both ways.
+        code, out = check({
+            "tests/a/fixture.h": '#pragma once\n#include "helper.h"\n',
+            "tests/b/helper.h": "#pragma once\n",
+            "tests/b/b_test.cpp": '#include "fixture.h"\n',
         })
         self.assertEqual(code, 0, out)
         self.assertIn("no cycle among", out)

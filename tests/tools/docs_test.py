@@ -3,7 +3,7 @@
 - no tracked file refers to anything outside the repository (the old specification file, a
   sibling folder of the checkout);
 - every relative link in README.md and docs/*.md, and every path of the repository written in
-  backticks there (`engine/world.cpp`, `app/gui/*/`, `docs/tradeoff.{csv,md,png}`), names a file or
+  backticks there (`engine/world/world.cpp`, `app/gui/*/`, `docs/tradeoff.{csv,md,png}`), names a file or
   folder that exists, so a moved file cannot leave the docs pointing at nothing."""
 
 import glob

@@ -37,7 +37,7 @@ std::string lessonBarStatus(bool presentMode, Method method, double time);
 std::string startHint(bool paused, double time, bool firstLaunch, bool touch);
 
 // A number typed into a field of the controls panel (Ctrl+click on a slider, or a drag field),
-// checked against its limit in engine/input_limits.h, the table that scene files and flags use:
+// checked against its limit in engine/world/input_limits.h, the table that scene files and flags use:
 // a good value is taken; any other leaves the field at `current` with a message naming the
 // field, the limit and what was typed ("frame rate: must be from 1 to 1e6 Hz, not 2e6").
 struct TypedValue {

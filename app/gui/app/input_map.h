@@ -47,6 +47,8 @@ constexpr int kKeypad0 = 320; // kKeypad0 + d for the digit d
 constexpr int kKeypadSubtract = 333;
 constexpr int kKeypadAdd = 334;
 constexpr int kKeypadEnter = 335;
+constexpr int kLeftControl = 341;
+constexpr int kRightControl = 345;
 } // namespace keys
 
 enum class Action {

@@ -7,6 +7,7 @@
 #include "app_setup.h"
 #include "audio_out.h"
 #include "canvas_web.h"
+#include "imgui_ext.h"
 #include "link.h"
 #include "mouse_tool.h"
 #include "options.h"
@@ -19,10 +20,7 @@
 #include "url_params.h"
 
 #include <emscripten.h>
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <imgui_internal.h> // a swipe scrolls the window under the finger (ImGui 1.86)
 
 #include <cmath>
 #include <cstdio>
@@ -48,8 +46,8 @@ struct WebApp {
     double linkSceneAt = -1e9;
     double pixelRatio = 1.0; // the ratio app.view.uiScale includes (the user's scale times it)
     TouchInput touch;
-    ImGuiWindow* touchScrolls = nullptr; // what a swipe scrolls: the window under the finger
-    bool typingShown = false;            // the page's field for the on-screen keyboard has focus
+    imgui_ext::ScrollTarget touchScrolls; // what a swipe scrolls: the window under the finger
+    bool typingShown = false;             // the page's field for the on-screen keyboard has focus
     long long frames = 0;
     double realTime = 0.0;  // s since the first frame (the live region's pace)
     std::string shownState; // pageStateJson() as the page last got it
@@ -123,15 +121,10 @@ void applyTouch(WebApp& w, double now) {
         w.touch.event(e.phase, e.id, e.pos, e.time);
     if (!w.touch.active()) return;
     const TouchInput::Frame f = w.touch.frame(now);
-    ImGuiIO& io = ImGui::GetIO();
-    io.MousePos = f.pointer ? ImVec2(static_cast<float>(f.pos.x), static_cast<float>(f.pos.y))
-                            : ImVec2(-FLT_MAX, -FLT_MAX); // nothing hovered: no tooltip stays
-    for (bool& down : io.MouseDown) down = false;
-    io.MouseDown[0] = f.down;
-    io.KeyCtrl =
-        f.ctrl || io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL];
-    if (f.scrollY != 0.0 && w.touchScrolls)
-        ImGui::SetScrollY(w.touchScrolls, w.touchScrolls->Scroll.y - static_cast<float>(f.scrollY));
+    imgui_ext::setPointer(f.pointer,
+                          ImVec2(static_cast<float>(f.pos.x), static_cast<float>(f.pos.y)), f.down,
+                          f.ctrl);
+    if (f.scrollY != 0.0) imgui_ext::scrollBy(w.touchScrolls, -static_cast<float>(f.scrollY));
     if (f.pan.x != 0.0 || f.pan.y != 0.0) touchPanZoom(w.app.view, Vec2{}, f.pan, 1.0);
 }
 
@@ -139,13 +132,8 @@ void applyTouch(WebApp& w, double now) {
 // (and which window scrolls), or on the scene (on a block, or empty space)?
 void resolveTouch(WebApp& w) {
     const TouchInput::Mode mode = w.touch.mode();
-    if (mode == TouchInput::Mode::Waiting || mode == TouchInput::Mode::Pending) {
-        ImGuiWindow* window = GImGui->HoveredWindow; // the nearest that scrolls, from there out
-        while (window && (window->Flags & ImGuiWindowFlags_ChildWindow) &&
-               window->ScrollMax.y <= 0.0f)
-            window = window->ParentWindow;
-        w.touchScrolls = window;
-    }
+    if (mode == TouchInput::Mode::Waiting || mode == TouchInput::Mode::Pending)
+        w.touchScrolls = imgui_ext::scrollTargetUnderPointer();
     if (!w.touch.waitingForStart()) return;
     const ImGuiIO& io = ImGui::GetIO();
     const Vec2 at{io.MousePos.x, io.MousePos.y};
@@ -240,18 +228,13 @@ void frame(void* arg) {
 }
 
 // ImGui's keyboard focus for the browser tests: the focused control's id, whether the focus ring
-// shows, and its rectangle (framebuffer pixels, where it is drawn: NavRectRel is relative to the
-// window's content start, which moves with its scrolling).
+// shows, and its rectangle (framebuffer pixels, where it is drawn).
 std::string navigationJson() {
-    const ImGuiContext& g = *ImGui::GetCurrentContext();
-    ImRect r;
-    if (g.NavWindow) r = ImGui::WindowRectRelToAbs(g.NavWindow, g.NavWindow->NavRectRel[0]);
-    const ImGuiIO& io = ImGui::GetIO();
+    const imgui_ext::KeyboardFocus f = imgui_ext::keyboardFocus();
     char text[200];
     std::snprintf(text, sizeof text, ",\"navId\":%u,\"navVisible\":%s,\"navRect\":[%d,%d,%d,%d]",
-                  static_cast<unsigned>(g.NavId), io.NavActive && io.NavVisible ? "true" : "false",
-                  static_cast<int>(r.Min.x), static_cast<int>(r.Min.y), static_cast<int>(r.Max.x),
-                  static_cast<int>(r.Max.y));
+                  f.id, f.ringShown ? "true" : "false", static_cast<int>(f.min.x),
+                  static_cast<int>(f.min.y), static_cast<int>(f.max.x), static_cast<int>(f.max.y));
     return text;
 }
 

@@ -1,6 +1,6 @@
 #include "window_glfw.h"
 
-#include "app_frame.h"
+#include "imgui_ext.h"
 #include "input_map.h"
 #include "ui_renderer_gl.h"
 
@@ -26,7 +26,9 @@ static_assert(keys::kSpace == GLFW_KEY_SPACE && keys::kMinus == GLFW_KEY_MINUS &
                   keys::kLeft == GLFW_KEY_LEFT && keys::kPageUp == GLFW_KEY_PAGE_UP &&
                   keys::kPageDown == GLFW_KEY_PAGE_DOWN && keys::kHome == GLFW_KEY_HOME &&
                   keys::kEnd == GLFW_KEY_END && keys::kKeypad0 == GLFW_KEY_KP_0 &&
-                  keys::kKeypadEnter == GLFW_KEY_KP_ENTER,
+                  keys::kKeypadEnter == GLFW_KEY_KP_ENTER &&
+                  keys::kLeftControl == GLFW_KEY_LEFT_CONTROL &&
+                  keys::kRightControl == GLFW_KEY_RIGHT_CONTROL,
               "input_map.h key codes must match GLFW's");
 
 namespace {
@@ -107,8 +109,8 @@ bool windowNewFrame(WindowGlfw& w, double* realSeconds) {
     w.lastTime = now;
     uiRendererNewFrame();
     ImGui_ImplGlfw_NewFrame();
-    holdKeyTaps(w.keyPresses, w.heldTaps,
-                [&w](int key) { return glfwGetKey(w.window, key) == GLFW_PRESS; });
+    imgui_ext::holdKeyTaps(w.keyPresses, w.heldTaps,
+                           [&w](int key) { return glfwGetKey(w.window, key) == GLFW_PRESS; });
     return true;
 }
 

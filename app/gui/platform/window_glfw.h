@@ -15,8 +15,8 @@ struct WindowGlfw {
     bool fullscreen = false;
     int windowedX = 0, windowedY = 0, windowedWidth = 1280, windowedHeight = 720;
     double lastTime = 0.0;
-    std::vector<KeyPress> keyPresses;      // since the last windowTakeKeyPresses()
-    std::vector<int> heldTaps;             // keys held down one frame for ImGui (holdKeyTaps)
+    std::vector<KeyPress> keyPresses; // since the last windowTakeKeyPresses()
+    std::vector<int> heldTaps;        // keys held down one frame for ImGui (imgui_ext::holdKeyTaps)
     std::vector<std::string> droppedFiles; // since the last windowTakeDroppedFiles()
     bool closeRequested = false;           // the close button was pressed (the app decides)
 };

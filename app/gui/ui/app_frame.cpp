@@ -1,6 +1,7 @@
 #include "app_frame.h"
 #include "printable.h"
 
+#include "imgui_ext.h"
 #include "overlay_window.h"
 #include "renderer.h"
 #include "screen_text.h"
@@ -203,21 +204,6 @@ void logStateChanges(App& app) {
     app.log.lastValid = true;
 }
 
-void holdKeyTaps(const std::vector<KeyPress>& queued, std::vector<int>& held,
-                 const std::function<bool(int key)>& isDown) {
-    ImGuiIO& io = ImGui::GetIO();
-    constexpr int keyCount = IM_ARRAYSIZE(ImGuiIO::KeysDown);
-    const auto valid = [](int key) { return key >= 0 && key < keyCount; };
-    for (int key : held)
-        if (valid(key)) io.KeysDown[key] = isDown(key);
-    held.clear();
-    for (const KeyPress& k : queued) {
-        if (!valid(k.key) || io.KeysDown[k.key]) continue;
-        io.KeysDown[k.key] = true;
-        held.push_back(k.key);
-    }
-}
-
 void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, bool runClock) {
     const ImGuiIO& io = ImGui::GetIO();
     const auto layOut = [&app, &io] { updateCamera(app, io.DisplaySize.x, io.DisplaySize.y); };
@@ -232,10 +218,7 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     app.view.shownMarks.clear();
     forgetTextRoles();
     const bool typing = io.WantTextInput || (navigating() && !arrowsPush(app));
-    const Vec2 held = arrowsPush(app) && !typing ? heldThrustDirection([&io](int key) {
-        return key >= 0 && key < IM_ARRAYSIZE(io.KeysDown) && io.KeysDown[key];
-    })
-                                                 : Vec2{};
+    const Vec2 held = arrowsPush(app) && !typing ? heldThrustDirection(imgui_ext::keyDown) : Vec2{};
     // With thrust on the arrows push the selected block; else they are the player's keys (a
     // lesson step's script, when it has one, plays them instead: lesson_session.cpp).
     app.sim.thrust.direction = app.sim.thrust.on ? held : Vec2{};

@@ -6,7 +6,6 @@
 #include "app.h"
 #include "input_map.h"
 
-#include <functional>
 #include <vector>
 
 class SceneRenderer;
@@ -16,12 +15,6 @@ struct ImDrawList;
 // the simulation (when `runClock`: the window passes real time; the offscreen renderer steps
 // explicitly) and the UI.
 void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, bool runClock);
-// ImGui 1.86 reads the keys held at the start of a frame, so a tap between two frames (a quick
-// key press, a test's) is lost to its keyboard navigation. Before ImGui::NewFrame(): the keys of
-// `queued` (presses not yet taken) are held down for this frame; `held` remembers them, and the
-// next call lets them go (back to `isDown`, the key's real state).
-void holdKeyTaps(const std::vector<KeyPress>& queued, std::vector<int>& held,
-                 const std::function<bool(int key)>& isDown);
 // After ImGui::Render(): clears and draws the scene (the UI renderer draws ImGui's on top).
 void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
                int framebufferHeight);

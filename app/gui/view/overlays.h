@@ -1,6 +1,6 @@
 // The app's side of the overlay table (app/lesson/vocabulary.h, SANDBOX_OVERLAYS): the flags of
 // the shown overlays (Overlays) and each row's names, title and place (kOverlays); the draw
-// functions are the ImGui layer's (app/gui/ui/overlay_window.h).
+// functions are the ImGui layer's (app/gui/ui/widgets/overlay_window.h).
 #pragma once
 
 #include "dock_layout.h"
@@ -17,7 +17,7 @@ struct Overlays {
 #undef SANDBOX_OVERLAY_FLAG
 };
 
-// A row of the table, without its draw function (the ImGui layer holds those: ui/overlay_window.h).
+// A row of the table, without its draw function (the ImGui layer holds those: ui/widgets/overlay_window.h).
 struct OverlayInfo {
     bool Overlays::*flag;
     const char* name;

@@ -1,7 +1,7 @@
 #include "ui_style.h"
 
 #include "dock_layout.h"
-#include "input_map.h"
+#include "imgui_ext.h"
 #include "palette.h"
 #include "text_format.h"
 
@@ -118,17 +118,7 @@ void uiCreateContext(const char* iniPath) {
     // Every control reachable from the keyboard: the arrows move ImGui's focus ring (once Tab or
     // F6 put it in a window), Space presses, Enter types into a field (input_map.h's Tab row).
     io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
-    // The navigation's keys, as ImGui's GLFW backend maps them (the offscreen renderer has no
-    // backend: 1.86 asserts without Space).
-    const int navigationKeys[][2] = {
-        {ImGuiKey_Tab, keys::kTab},           {ImGuiKey_LeftArrow, keys::kLeft},
-        {ImGuiKey_RightArrow, keys::kRight},  {ImGuiKey_UpArrow, keys::kUp},
-        {ImGuiKey_DownArrow, keys::kDown},    {ImGuiKey_PageUp, keys::kPageUp},
-        {ImGuiKey_PageDown, keys::kPageDown}, {ImGuiKey_Home, keys::kHome},
-        {ImGuiKey_End, keys::kEnd},           {ImGuiKey_Delete, keys::kDelete},
-        {ImGuiKey_Space, keys::kSpace},       {ImGuiKey_Enter, keys::kEnter},
-        {ImGuiKey_Escape, keys::kEscape},     {ImGuiKey_KeyPadEnter, keys::kKeypadEnter}};
-    for (const auto& k : navigationKeys) io.KeyMap[k[0]] = k[1];
+    imgui_ext::mapKeys(); // the navigation's keys
     setTheme(ImGui::GetStyle());
     gScale = 0.0f;
     gLabelFont = nullptr;

@@ -3,6 +3,7 @@
 // that edit the world and its blocks are settings_sections.cpp's; typed values typed_field.cpp's.
 #include "app_config.h"
 #include "app_frame.h"
+#include "imgui_ext.h"
 #include "overlay_window.h"
 #include "save_naming.h"
 #include "settings_sections.h"
@@ -437,7 +438,8 @@ void drawControlsPanel(App& app) {
     // Flattened: the arrow keys go on from Reset into the sections (no Space to enter them).
     // It shows whole rows only (WholeRows): a row its bottom edge would cut is hidden.
     const float rows = std::max(1.0f, std::floor(ImGui::GetContentRegionAvail().y / row));
-    ImGui::BeginChild("##sections", ImVec2(0.0f, rows * row), false, ImGuiWindowFlags_NavFlattened);
+    ImGui::BeginChild("##sections", ImVec2(0.0f, rows * row), false,
+                      imgui_ext::flattenedNavigation());
     WholeRows wholeSections;
     ImGui::PushItemWidth(width * 0.52f);
     simulationSection(app);

@@ -135,10 +135,10 @@ StepStats World::step(std::vector<CollisionRecord>* log) {
         if (integrator == Integrator::Exact) {
             accelerations(*this, h, buffers.acceleration);
             ctx.acceleration = &buffers.acceleration;
+            buffers.forces = buffers.acceleration;
+            ctx.forces = &buffers.forces;
             if (friction) {
-                buffers.forces = buffers.acceleration;
                 buffers.slides.assign(2 * blocks.size(), Slide{});
-                ctx.forces = &buffers.forces;
                 ctx.slides = &buffers.slides;
             }
         }

@@ -1,6 +1,7 @@
 #include "screen_text.h"
 
 #include "dock_layout.h" // jsonString, jsonRect
+#include "imgui_ext.h"
 
 #include <imgui.h>
 
@@ -37,7 +38,7 @@ std::vector<RoleSpan> gRoles;
 std::string roleOf(const ImDrawList& list, int vertex) {
     for (auto it = gRoles.rbegin(); it != gRoles.rend(); ++it)
         if (it->list == &list && vertex >= it->from && vertex < it->to) return it->role;
-    std::string name = list._OwnerName ? list._OwnerName : "";
+    std::string name = imgui_ext::drawListOwner(list);
     for (const TextRoleRow& row : kTextRoles)
         if (name.rfind(row.drawList, 0) == 0) return row.role;
     const std::size_t slash = name.find('/');
@@ -83,27 +84,20 @@ struct DrawnGlyph {
     bool hidden = false; // wholly outside its clip rectangle: no pixel of it is drawn
 };
 
-// The quad at `idx` (6 indices: two triangles of a rectangle) as a glyph, if it is one.
-bool readGlyph(const ImDrawVert* vtx, const ImDrawIdx* idx, const ImVec4& clip,
-               const GlyphIndex& glyphs, DrawnGlyph& out) {
-    const unsigned a = idx[0];
-    if (idx[1] != a + 1 || idx[2] != a + 2 || idx[3] != a || idx[4] != a + 2 || idx[5] != a + 3)
-        return false;
-    const ImDrawVert& p = vtx[a];
-    const ImDrawVert& q = vtx[a + 2];
-    if (vtx[a + 1].pos.y != p.pos.y || vtx[a + 3].pos.x != p.pos.x) return false;
-    if (p.uv.x == q.uv.x || p.uv.y == q.uv.y) return false; // a solid shape (the white texel)
-    const GlyphRef ref = glyphs.find(p.uv.x, p.uv.y, q.uv.x, q.uv.y);
+// A rectangle drawn with the font's texture as a glyph, if it is one.
+bool readGlyph(const imgui_ext::DrawnRect& r, const GlyphIndex& glyphs, DrawnGlyph& out) {
+    const GlyphRef ref = glyphs.find(r.uvMin.x, r.uvMin.y, r.uvMax.x, r.uvMax.y);
     if (!ref.glyph) return false;
     const ImFontGlyph& g = *ref.glyph;
+    const ImVec4& clip = r.clip;
     // The part of the glyph's atlas rectangle drawn, and so the whole glyph's size on screen.
-    const double fu0 = (p.uv.x - g.U0) / double(g.U1 - g.U0),
-                 fu1 = (q.uv.x - g.U0) / double(g.U1 - g.U0);
-    const double fv0 = (p.uv.y - g.V0) / double(g.V1 - g.V0),
-                 fv1 = (q.uv.y - g.V0) / double(g.V1 - g.V0);
-    const double width = (q.pos.x - p.pos.x) / (fu1 - fu0);
-    const double height = (q.pos.y - p.pos.y) / (fv1 - fv0);
-    const double x0 = p.pos.x - fu0 * width, y0 = p.pos.y - fv0 * height;
+    const double fu0 = (r.uvMin.x - g.U0) / double(g.U1 - g.U0),
+                 fu1 = (r.uvMax.x - g.U0) / double(g.U1 - g.U0);
+    const double fv0 = (r.uvMin.y - g.V0) / double(g.V1 - g.V0),
+                 fv1 = (r.uvMax.y - g.V0) / double(g.V1 - g.V0);
+    const double width = (r.max.x - r.min.x) / (fu1 - fu0);
+    const double height = (r.max.y - r.min.y) / (fv1 - fv0);
+    const double x0 = r.min.x - fu0 * width, y0 = r.min.y - fv0 * height;
     out.ref = ref;
     out.scale = g.X1 - g.X0 >= g.Y1 - g.Y0 ? width / (g.X1 - g.X0) : height / (g.Y1 - g.Y0);
     out.penX = x0 - g.X0 * out.scale;
@@ -112,8 +106,8 @@ bool readGlyph(const ImDrawVert* vtx, const ImDrawIdx* idx, const ImVec4& clip,
     out.clipped = fu0 > 1e-6 || fu1 < 1.0 - 1e-6 || fv0 > 1e-6 || fv1 < 1.0 - 1e-6 ||
                   x0 < clip.x - kSlack || y0 < clip.y - kSlack || x0 + width > clip.z + kSlack ||
                   y0 + height > clip.w + kSlack;
-    out.hidden = q.pos.x <= clip.x + kSlack || p.pos.x >= clip.z - kSlack ||
-                 q.pos.y <= clip.y + kSlack || p.pos.y >= clip.w - kSlack;
+    out.hidden = r.max.x <= clip.x + kSlack || r.min.x >= clip.z - kSlack ||
+                 r.max.y <= clip.y + kSlack || r.min.y >= clip.w - kSlack;
     return true;
 }
 
@@ -198,21 +192,18 @@ void finish(Run& run, std::vector<ScreenText>& texts) {
 void readList(const ImDrawList& list, const ImTextureID fontTexture, const GlyphIndex& glyphs,
               std::vector<ScreenText>& texts) {
     Run run;
-    for (const ImDrawCmd& cmd : list.CmdBuffer) {
-        if (cmd.UserCallback || cmd.TextureId != fontTexture) continue;
-        const ImDrawVert* vtx = list.VtxBuffer.Data + cmd.VtxOffset;
-        const ImDrawIdx* idx = list.IdxBuffer.Data + cmd.IdxOffset;
-        // One text is drawn in one go: anything else drawn (a button's frame) or a new command
-        // ends it.
-        bool between = true;
-        for (unsigned k = 0; k + 6 <= cmd.ElemCount;) {
+    // One text is drawn in one go: anything else drawn (a button's frame) or a new command ends
+    // it.
+    bool between = true;
+    imgui_ext::forEachDrawnRect(
+        list, fontTexture,
+        [&](const imgui_ext::DrawnRect& r) {
             DrawnGlyph g;
-            if (!readGlyph(vtx, idx + k, cmd.ClipRect, glyphs, g)) {
+            if (!readGlyph(r, glyphs, g)) {
                 between = true;
-                k += 3;
-                continue;
+                return;
             }
-            const std::string role = roleOf(list, static_cast<int>(cmd.VtxOffset + idx[k]));
+            const std::string role = roleOf(list, r.vertex);
             if (between || !continues(run, g, role)) {
                 between = false;
                 finish(run, texts);
@@ -228,9 +219,8 @@ void readList(const ImDrawList& list, const ImTextureID fontTexture, const Glyph
             run.shown += g.hidden ? 0 : 1;
             run.penEnd = g.penX + g.ref.glyph->AdvanceX * g.scale;
             run.right = std::fmax(run.right, run.penEnd);
-            k += 6;
-        }
-    }
+        },
+        [&between] { between = true; });
     finish(run, texts);
 }
 
@@ -268,13 +258,13 @@ std::string screenTextJson(const std::vector<ScreenText>& texts) {
 }
 
 TextRole::TextRole(ImDrawList* list, const char* role) : list_(list), outer_(role) {
-    gRoles.push_back({list, list->VtxBuffer.Size, INT_MAX, role});
+    gRoles.push_back({list, imgui_ext::drawListVertices(*list), INT_MAX, role});
 }
 
 TextRole::~TextRole() {
     for (auto it = gRoles.rbegin(); it != gRoles.rend(); ++it)
         if (it->list == list_ && it->to == INT_MAX && it->role == outer_) {
-            it->to = list_->VtxBuffer.Size;
+            it->to = imgui_ext::drawListVertices(*list_);
             break;
         }
 }

@@ -1,4 +1,4 @@
-// The screen-text contract's reader (app/gui/ui/screen_text.h): text drawn with ImGui, read back
+// The screen-text contract's reader (app/gui/ui/widgets/screen_text.h): text drawn with ImGui, read back
 // from the draw data, with its rectangle, size, window and clipping. ImGui's own default font (no
 // file needed); no GL: only the draw data is looked at.
 #include "screen_text.h"

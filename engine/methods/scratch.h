@@ -89,7 +89,7 @@ struct StepScratch {
     BroadPhase overlapGrid; // maxOverlap's own, so measuring never touches the stepping grid
     std::vector<std::pair<int, int>> overlappingPairs; // move-and-correct
     std::vector<Vec2> acceleration; // the exact integrator's, per block (World::step)
-    std::vector<Vec2> forces;       // the same at the substep's start (friction)
+    std::vector<Vec2> forces;       // the forces alone, at the substep's start (exact integrator)
     std::vector<Slide> slides;      // friction with the exact integrator: 2 per block
     TurnBasedScratch turnBased;
     PerfectScratch perfect;

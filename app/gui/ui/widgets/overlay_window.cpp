@@ -1,9 +1,8 @@
 #include "overlay_window.h"
 
+#include "imgui_ext.h"
 #include "text_format.h"
 #include "ui_style.h"
-
-#include <imgui_internal.h>
 
 #include <algorithm>
 #include <cmath>
@@ -127,25 +126,17 @@ void recordShownWindow(App& app, const char* name) {
     app.view.shownWindows.push_back({name, {p.x, p.y, s.x, s.y}});
     if (app.ui.keyboardFocus != name) return;
     app.ui.keyboardFocus.clear();
-    // ImGui 1.86 has no public call for it: focus the window and let its navigation pick the
-    // first control, with the focus ring shown (as after an arrow key) and the mouse's hover off.
-    ImGuiWindow* window = ImGui::GetCurrentWindow();
-    ImGui::FocusWindow(window);
-    ImGui::NavInitWindow(window, true);
-    ImGuiContext& g = *ImGui::GetCurrentContext();
-    g.NavDisableHighlight = false;
-    g.NavDisableMouseHover = true;
+    imgui_ext::focusCurrentWindowForKeyboard();
 }
 
 std::string nextWindowForKeyboard(const App& app) {
-    const ImGuiContext& g = *ImGui::GetCurrentContext();
-    const ImGuiWindow* focused = g.NavWindow ? g.NavWindow->RootWindow : nullptr;
+    const std::string focused = imgui_ext::keyboardWindowName();
     const std::vector<DockedWindow>& shown = app.view.shownWindows;
     if (shown.empty()) return "";
-    for (std::size_t i = 0; focused && i < shown.size(); ++i) {
+    for (std::size_t i = 0; !focused.empty() && i < shown.size(); ++i) {
         const std::string& title = shown[i].name;
         // ImGui names a window by its title, "title##id" included.
-        if (title == focused->Name || std::string(focused->Name).rfind(title + "##", 0) == 0)
+        if (title == focused || focused.rfind(title + "##", 0) == 0)
             return shown[(i + 1) % shown.size()].name;
     }
     return shown.front().name;

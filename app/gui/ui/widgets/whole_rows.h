@@ -9,7 +9,7 @@
 // once it is drawn).
 #pragma once
 
-struct ImDrawList;
+#include "imgui_ext.h"
 
 class WholeRows {
   public:
@@ -19,7 +19,6 @@ class WholeRows {
     void end();
 
   private:
-    ImDrawList* list_;
-    int cmdStart_, idxStart_;
-    unsigned id_;
+    imgui_ext::DrawMark mark_;   // where the region's content starts in its window's draw list
+    float clipTop_, clipBottom_; // the region's clip rectangle (screen px)
 };

@@ -1,0 +1,226 @@
+#include "imgui_ext.h"
+
+#include <imgui_internal.h>
+
+#include <algorithm>
+#include <cfloat>
+
+// Every function below reads or writes what Dear ImGui 1.86 keeps to itself or has since
+// replaced (io.KeysDown and io.KeyMap became io.AddKeyEvent in 1.87; ImGuiWindowFlags_NavFlattened
+// moved to the child flags in 1.90; draw lists' layout and the navigation's state change between
+// versions). Another version: check each function against it, then change this number.
+static_assert(IMGUI_VERSION_NUM == 18600,
+              "imgui_ext.cpp is written against Dear ImGui 1.86 (IMGUI_VERSION_NUM 18600)");
+
+namespace imgui_ext {
+
+void mapKeys() {
+    ImGuiIO& io = ImGui::GetIO();
+    // As ImGui's GLFW backend maps them (the offscreen renderer has no backend: 1.86 asserts
+    // without Space).
+    const int map[][2] = {
+        {ImGuiKey_Tab, keys::kTab},           {ImGuiKey_LeftArrow, keys::kLeft},
+        {ImGuiKey_RightArrow, keys::kRight},  {ImGuiKey_UpArrow, keys::kUp},
+        {ImGuiKey_DownArrow, keys::kDown},    {ImGuiKey_PageUp, keys::kPageUp},
+        {ImGuiKey_PageDown, keys::kPageDown}, {ImGuiKey_Home, keys::kHome},
+        {ImGuiKey_End, keys::kEnd},           {ImGuiKey_Delete, keys::kDelete},
+        {ImGuiKey_Space, keys::kSpace},       {ImGuiKey_Enter, keys::kEnter},
+        {ImGuiKey_Escape, keys::kEscape},     {ImGuiKey_KeyPadEnter, keys::kKeypadEnter}};
+    for (const auto& k : map) io.KeyMap[k[0]] = k[1];
+}
+
+namespace {
+
+constexpr int kKeyCount = IM_ARRAYSIZE(ImGuiIO::KeysDown);
+
+bool validKey(int key) {
+    return key >= 0 && key < kKeyCount;
+}
+
+} // namespace
+
+bool keyDown(int key) {
+    return validKey(key) && ImGui::GetIO().KeysDown[key];
+}
+
+void holdKeyTaps(const std::vector<KeyPress>& queued, std::vector<int>& held,
+                 const std::function<bool(int key)>& isDown) {
+    ImGuiIO& io = ImGui::GetIO();
+    for (int key : held)
+        if (validKey(key)) io.KeysDown[key] = isDown(key);
+    held.clear();
+    for (const KeyPress& k : queued) {
+        if (!validKey(k.key) || io.KeysDown[k.key]) continue;
+        io.KeysDown[k.key] = true;
+        held.push_back(k.key);
+    }
+}
+
+void setPointer(bool onScreen, ImVec2 pos, bool down, bool ctrl) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = onScreen ? pos : ImVec2(-FLT_MAX, -FLT_MAX);
+    for (bool& button : io.MouseDown) button = false;
+    io.MouseDown[0] = down;
+    io.KeyCtrl = ctrl || keyDown(keys::kLeftControl) || keyDown(keys::kRightControl);
+}
+
+void focusCurrentWindowForKeyboard() {
+    ImGuiWindow* window = ImGui::GetCurrentWindow();
+    ImGui::FocusWindow(window);
+    ImGui::NavInitWindow(window, true);
+    ImGuiContext& g = *ImGui::GetCurrentContext();
+    g.NavDisableHighlight = false;
+    g.NavDisableMouseHover = true;
+}
+
+std::string keyboardWindowName() {
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    return g.NavWindow ? g.NavWindow->RootWindow->Name : "";
+}
+
+KeyboardFocus keyboardFocus() {
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    const ImGuiIO& io = ImGui::GetIO();
+    KeyboardFocus f;
+    f.id = g.NavId;
+    f.ringShown = io.NavActive && io.NavVisible;
+    if (g.NavWindow) {
+        // NavRectRel is relative to the window's content start, which moves with its scrolling.
+        const ImRect r = ImGui::WindowRectRelToAbs(g.NavWindow, g.NavWindow->NavRectRel[0]);
+        f.min = r.Min;
+        f.max = r.Max;
+    }
+    return f;
+}
+
+ImGuiWindowFlags flattenedNavigation() {
+    return ImGuiWindowFlags_NavFlattened;
+}
+
+ScrollTarget scrollTargetUnderPointer() {
+    ImGuiWindow* window = GImGui->HoveredWindow;
+    while (window && (window->Flags & ImGuiWindowFlags_ChildWindow) && window->ScrollMax.y <= 0.0f)
+        window = window->ParentWindow;
+    return {window};
+}
+
+void scrollBy(ScrollTarget target, float dy) {
+    auto* window = static_cast<ImGuiWindow*>(target.window);
+    if (window) ImGui::SetScrollY(window, window->Scroll.y + dy);
+}
+
+DrawMark markDrawing() {
+    ImDrawList* list = ImGui::GetWindowDrawList();
+    return {list, list->CmdBuffer.Size - 1, list->IdxBuffer.Size};
+}
+
+bool stillDrawing(const DrawMark& mark) {
+    return mark.list && ImGui::GetWindowDrawList() == mark.list && mark.command >= 0 &&
+           mark.command < mark.list->CmdBuffer.Size;
+}
+
+namespace {
+
+// The draw commands since `mark` in the current window's list, the first one split where the
+// mark is (what was drawn before it, the window's frame, stays as it was); false when the
+// current window draws elsewhere.
+bool commandsSince(const DrawMark& mark) {
+    if (!stillDrawing(mark)) return false;
+    ImVector<ImDrawCmd>& cmds = mark.list->CmdBuffer;
+    ImDrawCmd& first = cmds[mark.command];
+    const auto start = static_cast<unsigned>(mark.index);
+    if (first.IdxOffset < start && first.IdxOffset + first.ElemCount > start) {
+        ImDrawCmd rest = first;
+        rest.IdxOffset = start;
+        rest.ElemCount = first.IdxOffset + first.ElemCount - start;
+        first.ElemCount = start - first.IdxOffset;
+        cmds.insert(cmds.begin() + mark.command + 1, rest);
+    }
+    return true;
+}
+
+} // namespace
+
+std::vector<Span> drawnSince(const DrawMark& mark, ImU32 skip) {
+    std::vector<Span> spans;
+    if (!commandsSince(mark)) return spans;
+    const ImDrawList& list = *mark.list;
+    const auto start = static_cast<unsigned>(mark.index);
+    skip &= ~IM_COL32_A_MASK;
+    for (int c = mark.command; c < list.CmdBuffer.Size; ++c) {
+        const ImDrawCmd& cmd = list.CmdBuffer[c];
+        if (cmd.UserCallback || cmd.IdxOffset < start) continue;
+        for (unsigned k = 0; k + 3 <= cmd.ElemCount; k += 3) {
+            Span s{FLT_MAX, -FLT_MAX};
+            bool skipped = false;
+            for (unsigned v = 0; v < 3; ++v) {
+                const ImDrawIdx i = list.IdxBuffer[static_cast<int>(cmd.IdxOffset + k + v)];
+                const ImDrawVert& vert = list.VtxBuffer[static_cast<int>(cmd.VtxOffset + i)];
+                s.y0 = std::min(s.y0, vert.pos.y);
+                s.y1 = std::max(s.y1, vert.pos.y);
+                skipped = skipped || (vert.col & ~IM_COL32_A_MASK) == skip;
+            }
+            if (!skipped) spans.push_back(s);
+        }
+    }
+    return spans;
+}
+
+void clipDrawnSince(const DrawMark& mark, float top, float bottom) {
+    if (!commandsSince(mark)) return;
+    ImVector<ImDrawCmd>& cmds = mark.list->CmdBuffer;
+    const auto start = static_cast<unsigned>(mark.index);
+    for (int c = mark.command; c < cmds.Size; ++c) {
+        ImDrawCmd& cmd = cmds[c];
+        if (cmd.IdxOffset < start) continue;
+        cmd.ClipRect.y = std::max(cmd.ClipRect.y, top);
+        cmd.ClipRect.w = std::min(cmd.ClipRect.w, bottom);
+    }
+}
+
+void takeHover(ImVec2 min, ImVec2 max) {
+    const ImRect rect(min, max);
+    const ImGuiID id = ImGui::GetCurrentWindow()->GetID("##hover taken");
+    ImGui::ItemAdd(rect, id, nullptr, ImGuiItemFlags_NoNav);
+    ImGui::ItemHoverable(rect, id);
+}
+
+std::string drawListOwner(const ImDrawList& list) {
+    return list._OwnerName ? list._OwnerName : "";
+}
+
+int drawListVertices(const ImDrawList& list) {
+    return list.VtxBuffer.Size;
+}
+
+void forEachDrawnRect(const ImDrawList& list, ImTextureID texture,
+                      const std::function<void(const DrawnRect&)>& rect,
+                      const std::function<void()>& other) {
+    for (const ImDrawCmd& cmd : list.CmdBuffer) {
+        if (cmd.UserCallback || cmd.TextureId != texture) continue;
+        other(); // a new command
+        const ImDrawVert* vtx = list.VtxBuffer.Data + cmd.VtxOffset;
+        const ImDrawIdx* idx = list.IdxBuffer.Data + cmd.IdxOffset;
+        for (unsigned k = 0; k + 6 <= cmd.ElemCount;) {
+            // ImGui draws a textured rectangle as two triangles, (a, a+1, a+2) and (a, a+2, a+3),
+            // its corners clockwise from the top left.
+            const ImDrawIdx* q = idx + k;
+            const unsigned a = q[0];
+            const ImDrawVert& p = vtx[a];
+            const ImDrawVert& r = vtx[a + 2];
+            const bool isRect = q[1] == a + 1 && q[2] == a + 2 && q[3] == a && q[4] == a + 2 &&
+                                q[5] == a + 3 && vtx[a + 1].pos.y == p.pos.y &&
+                                vtx[a + 3].pos.x == p.pos.x;
+            // (a solid shape has every corner at the atlas's white texel)
+            if (!isRect || p.uv.x == r.uv.x || p.uv.y == r.uv.y) {
+                other();
+                k += 3;
+                continue;
+            }
+            rect({p.pos, r.pos, p.uv, r.uv, cmd.ClipRect, static_cast<int>(cmd.VtxOffset + a)});
+            k += 6;
+        }
+    }
+}
+
+} // namespace imgui_ext

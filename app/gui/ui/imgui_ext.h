@@ -1,0 +1,114 @@
+// Dear ImGui beyond its public API, in one place: everything the app takes from ImGui's
+// internals (imgui_internal.h), from its legacy input fields (1.86 has no input events: the keys
+// are io.KeysDown indexed by GLFW's key codes, mapped by io.KeyMap; the pointer is io.MousePos)
+// and from its draw lists read back after drawing (the rows a scroll region cuts, the texts on
+// screen). Written against Dear ImGui 1.86 (IMGUI_VERSION_NUM 18600: Debian 12's, and the
+// browser build's, compiled from Debian's source package); imgui_ext.cpp refuses to compile
+// against another version, so an upgrade starts here and touches no other file.
+#pragma once
+
+#include "input_map.h" // KeyPress
+
+#include <imgui.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace imgui_ext {
+
+// --- Keys and pointer (legacy input) ---
+
+// ImGui's navigation and text fields read the keys by GLFW's codes (input_map.h's keys::), as
+// its GLFW backend writes them: arrows, Tab, Space, Enter, Esc, PageUp, PageDown, Home, End,
+// Delete.
+void mapKeys();
+// Whether ImGui sees the key (a GLFW key code) held in this frame.
+bool keyDown(int key);
+// ImGui 1.86 reads the keys held at the start of a frame, so a tap between two frames (a quick
+// key press, a test's) is lost to its keyboard navigation. Before ImGui::NewFrame(): the keys of
+// `queued` (presses not yet taken) are held down for this frame; `held` remembers them, and the
+// next call lets them go (back to `isDown`, the key's real state).
+void holdKeyTaps(const std::vector<KeyPress>& queued, std::vector<int>& held,
+                 const std::function<bool(int key)>& isDown);
+// The pointer as a finger moves it (touch_input.h), before ImGui::NewFrame(): at `pos` (nowhere:
+// nothing hovered, so no tooltip stays), the left button `down`, Ctrl held when `ctrl` or a Ctrl
+// key is down.
+void setPointer(bool onScreen, ImVec2 pos, bool down, bool ctrl);
+
+// --- Keyboard navigation ---
+
+// The current window (between Begin and End) takes the keyboard: ImGui's navigation focuses it
+// and its first control, with the focus ring shown (as after an arrow key) and the mouse's hover
+// off until the mouse moves.
+void focusCurrentWindowForKeyboard();
+// The title of the window that has ImGui's keyboard focus (its top window, for a child's), as
+// ImGui names it ("title##id" included); "" when none.
+std::string keyboardWindowName();
+// Where the keyboard's focus is: the control's id (0: none), whether its ring shows and its
+// rectangle (screen pixels, where the ring is drawn).
+struct KeyboardFocus {
+    unsigned id = 0;
+    bool ringShown = false;
+    ImVec2 min, max;
+};
+KeyboardFocus keyboardFocus();
+// A child window's flag: the arrow keys go on from the parent's controls into the child's (no
+// key needed to enter it).
+ImGuiWindowFlags flattenedNavigation();
+
+// --- Touch scrolling ---
+
+// The window a swipe from the pointer scrolls: the nearest one under it that scrolls (from the
+// hovered child outward); none when the pointer is over no window.
+struct ScrollTarget {
+    void* window = nullptr;
+};
+ScrollTarget scrollTargetUnderPointer();
+// Scrolls `target` by `dy` pixels (down: positive).
+void scrollBy(ScrollTarget target, float dy);
+
+// --- What was drawn (the draw lists read back) ---
+
+// A place in the current window's draw list; what is drawn after it can be read and clipped.
+struct DrawMark {
+    ImDrawList* list = nullptr;
+    int command = 0; // the command being drawn into at the mark
+    int index = 0;   // the first index drawn after the mark
+};
+DrawMark markDrawing();
+// Whether the current window still draws where `mark` was made.
+bool stillDrawing(const DrawMark& mark);
+// The vertical extent of each triangle drawn into the current window since `mark` (none when
+// the current window draws into another list), leaving out those of colour `skip` (alpha
+// ignored). In drawing order; screen pixels.
+struct Span {
+    float y0, y1;
+};
+std::vector<Span> drawnSince(const DrawMark& mark, ImU32 skip);
+// Narrows what was drawn into the current window since `mark` to the band from `top` to
+// `bottom` (screen pixels): nothing of it shows outside.
+void clipDrawnSince(const DrawMark& mark, float top, float bottom);
+// The mouse over `min`-`max` (screen pixels) of the current window reaches none of the controls
+// submitted after this call: the rectangle takes the hover (and is no stop of the keyboard).
+void takeHover(ImVec2 min, ImVec2 max);
+
+// The part of the screen a draw list belongs to, as ImGui names it: a window's title ("title##id"
+// included; "Parent/Child_1A2B" for a child), "##Background", "##Foreground", "##Tooltip_00".
+std::string drawListOwner(const ImDrawList& list);
+// How many vertices `list` holds so far (a TextRole's place in it).
+int drawListVertices(const ImDrawList& list);
+// A rectangle drawn with a texture, axis-aligned, as ImGui draws a glyph: its corners on screen
+// and in the texture, its draw command's clip rectangle (x0, y0, x1, y1) and its first vertex.
+struct DrawnRect {
+    ImVec2 min, max, uvMin, uvMax;
+    ImVec4 clip;
+    int vertex = 0;
+};
+// Every rectangle drawn into `list` with `texture`, in drawing order; between them `other()`
+// for anything else drawn (a frame's triangles) and at each new draw command.
+void forEachDrawnRect(const ImDrawList& list, ImTextureID texture,
+                      const std::function<void(const DrawnRect&)>& rect,
+                      const std::function<void()>& other);
+
+} // namespace imgui_ext
