@@ -218,7 +218,7 @@ int main(int argc, char** argv) {
         lessons.scenesDir = SANDBOX_SCENES_DIR;
         lessons.overlayNames = overlayNames();
         if (*validateCmd) return validateCommand(validatePath, std::cout, std::cerr, lessons);
-        if (*pollCmd) return pollCommand(poll, std::cin, std::cout, std::cerr);
+        if (*pollCmd) return pollCommand(poll, lessons, std::cin, std::cout, std::cerr);
         if (*lessonCmd) return lessonCommand(lessonPath, std::cout, std::cerr, lessons, lessonJson);
         if (*tradeoffCmd) return tradeoffCommand(tradeoff, std::cout, std::cerr);
         if (*stabilityCmd) return stabilityCommand(stability, std::cout, std::cerr);

@@ -35,8 +35,8 @@ bool parseInt(const std::string& text, long long lo, long long hi, long long& va
 
 } // namespace
 
-int pollCommand(const PollCommandRequest& request, std::istream& in, std::ostream& out,
-                std::ostream& err) {
+int pollCommand(const PollCommandRequest& request, const LessonContext& lessons, std::istream& in,
+                std::ostream& out, std::ostream& err) {
     long long port = 0;
     if (!request.port.empty() && !parseInt(request.port, 0, 65535, port)) {
         err << "sandbox-cli poll: --port: " << printable(request.port)
@@ -44,7 +44,7 @@ int pollCommand(const PollCommandRequest& request, std::istream& in, std::ostrea
         return kExitBadInput;
     }
     std::string error;
-    std::optional<PollQuestions> questions = lessonPollQuestions(request.lesson, &error);
+    std::optional<PollQuestions> questions = lessonPollQuestions(request.lesson, lessons, &error);
     if (!questions) {
         err << "sandbox-cli poll: " << printable(error, 4 * kPrintableDefault) << "\n";
         return kExitBadInput;

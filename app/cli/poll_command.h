@@ -1,6 +1,8 @@
 // sandbox-cli poll: the class poll without a window (docs/cli.md, docs/poll.md).
 #pragma once
 
+#include "lesson.h"
+
 #include <iosfwd>
 #include <string>
 
@@ -15,5 +17,6 @@ struct PollCommandRequest {
 // commands from `in`, one a line (open STEP, close, revote, status, save FILE, quit), answering
 // each with one JSON line on `out` ({"error": ...} when refused; the message also on `err`).
 // Returns at `quit` or the end of `in`, having stopped the server. An ExitCode.
-int pollCommand(const PollCommandRequest& request, std::istream& in, std::ostream& out,
-                std::ostream& err);
+// `lessons`: what the lesson file may name (as for sandbox-cli lesson).
+int pollCommand(const PollCommandRequest& request, const LessonContext& lessons, std::istream& in,
+                std::ostream& out, std::ostream& err);

@@ -430,10 +430,6 @@ LessonResult lessonFailure(const std::string& where, const std::string& message)
 
 } // namespace
 
-std::string choiceLetter(std::size_t index) {
-    return std::string(1, static_cast<char>('A' + index));
-}
-
 const char* quantityName(LessonExpect::Quantity q) {
     for (const QuantityKey& k : kQuantities)
         if (k.quantity == q) return k.key;

@@ -1,6 +1,21 @@
 #include "lesson_prompt.h"
 
+#include "settings_table.h"
+#include "text_format.h"
+
 #include <algorithm>
+
+namespace {
+
+std::string number(double v) {
+    return formatNumber(v);
+}
+
+std::string pair(Vec2 v) {
+    return "(" + formatNumber(v.x) + ", " + formatNumber(v.y) + ")";
+}
+
+} // namespace
 
 StepPrompt stepPrompt(const LessonStep& step, const World& setup, const std::vector<int>& blocks,
                       bool asWritten) {
@@ -19,6 +34,50 @@ StepPrompt stepPrompt(const LessonStep& step) {
     std::vector<int> same(step.scene->blocks.size());
     for (std::size_t i = 0; i < same.size(); ++i) same[i] = static_cast<int>(i);
     return stepPrompt(step, stepStartWorld(step), same, true);
+}
+
+std::vector<std::string> setupChanges(const LessonStep& step, const World& now,
+                                      const std::vector<int>& blocks, const World& written) {
+    std::vector<std::string> said;
+    for (const settings_table::WorldKey& row : settings_table::worldKeys()) {
+        if (!row.inScene || settings_table::same(row, written.settings, now.settings)) continue;
+        const std::string symbol = row.shown.symbol;
+        if (settings_table::isNone(row, now.settings))
+            said.push_back("no " + std::string(row.shown.name));
+        else
+            said.push_back((symbol.empty() ? std::string(row.shown.name) + " " : symbol + " = ") +
+                           settings_table::shownValue(row, now.settings, number));
+    }
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < step.scene->blocks.size() && i < written.blocks.size(); ++i) {
+        const std::string& name = step.scene->blocks[i].name;
+        const int at = i < blocks.size() ? blocks[i] : -1;
+        if (at < 0 || static_cast<std::size_t>(at) >= now.blocks.size()) {
+            said.push_back(name + " deleted");
+            continue;
+        }
+        ++kept;
+        const Block& b = now.blocks[static_cast<std::size_t>(at)];
+        const Block& w = written.blocks[i];
+        if (b.kind != w.kind)
+            said.push_back(name + " made " +
+                           (b.kind == BodyKind::Static      ? "static"
+                            : b.kind == BodyKind::Kinematic ? "kinematic"
+                                                            : "dynamic"));
+        else if (b.mass != w.mass)
+            said.push_back(name + "'s mass " + number(b.mass) + " kg");
+        if (b.position.x != w.position.x || b.position.y != w.position.y)
+            said.push_back(name + " moved to " + pair(b.position) + " m");
+        if (b.velocity.x != w.velocity.x || b.velocity.y != w.velocity.y)
+            said.push_back(name + "'s velocity " + pair(b.velocity) + " m/s");
+        if (b.size.x != w.size.x || b.size.y != w.size.y)
+            said.push_back(name + "'s size " + number(b.size.x) + " x " + number(b.size.y) + " m");
+    }
+    if (now.blocks.size() > kept) {
+        const std::size_t added = now.blocks.size() - kept;
+        said.push_back(std::to_string(added) + (added == 1 ? " block" : " blocks") + " added");
+    }
+    return said;
 }
 
 std::string choiceLetters(const std::vector<int>& choices) {

@@ -38,5 +38,13 @@ struct StepAnswer {
 StepAnswer stepAnswer(const LessonStep& step, const StepRun& run,
                       const std::vector<std::string>& changes, const StepRun* asWritten);
 
+// What the lecturer changed of the step's setup as written, as the answer says it: the settings
+// by their symbol or name ("C = 0.9", "frame rate 60 Hz", "method turn-based"), then each block
+// the step names ("m2's mass 4 kg", "m2 moved to (7, 6) m", "m1's velocity (3, 0) m/s", "m2's
+// size 2 x 1 m", "m2 deleted"), then blocks added ("1 block added"). `now`: the lecturer's world
+// at its setup; `blocks`: liveBlockIndex of it; `written`: stepStartWorld(step). Empty: the same.
+std::vector<std::string> setupChanges(const LessonStep& step, const World& now,
+                                      const std::vector<int>& blocks, const World& written);
+
 // "A", "A and C", "A, B and D".
 std::string choiceLetters(const std::vector<int>& choices);

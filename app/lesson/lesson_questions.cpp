@@ -182,7 +182,7 @@ void parseValues(const json& value, const std::string& path, const Scene& scene,
 void parseChoices(const json& value, const std::string& path, const Scene& scene,
                   LessonStep& step) {
     if (!value.is_array()) throw ValueError{path, "must be an array of 2 to 4 choices"};
-    if (value.size() < 2 || value.size() > 4)
+    if (value.size() < kMinChoices || value.size() > kMaxChoices)
         throw ValueError{path, "must have 2 to 4 choices, not " + std::to_string(value.size())};
     for (std::size_t i = 0; i < value.size(); ++i) {
         const std::string p = indexPath(path, i);

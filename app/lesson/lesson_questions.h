@@ -3,7 +3,7 @@
 // scene_json::ValueError naming the JSON path of what is wrong. Used by lesson.cpp only.
 #pragma once
 
-#include "lesson.h"
+#include "lesson_step.h"
 
 #include <nlohmann/json_fwd.hpp>
 

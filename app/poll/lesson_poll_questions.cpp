@@ -1,77 +1,57 @@
 #include "lesson_poll_questions.h"
 
-#include <nlohmann/json.hpp>
+#include "lesson_runner.h"
 
-#include <fstream>
-#include <memory>
-#include <sstream>
+#include <map>
+#include <mutex>
 
-namespace {
+int provedChoice(const std::vector<int>& proved) {
+    return proved.size() == 1 ? proved.front() : -1;
+}
 
-std::optional<PollQuestion> stepQuestion(const nlohmann::json& step, int number,
-                                         std::string* error) {
-    auto fail = [&](const std::string& why) -> std::optional<PollQuestion> {
-        if (error) *error = "step " + std::to_string(number) + " " + why;
+std::optional<PollQuestion> pollQuestion(int number, const StepPrompt& prompt, int proved,
+                                         std::string* why) {
+    if (prompt.question.empty() || prompt.choices.size() < kMinChoices) {
+        if (why) *why = "step " + std::to_string(number) + " asks nothing to vote on";
         return std::nullopt;
-    };
-    const auto question = step.find("question");
-    if (question == step.end() || !question->is_string() || question->get<std::string>().empty())
-        return fail("asks nothing");
-    const auto choices = step.find("choices");
-    if (choices == step.end() || !choices->is_array()) return fail("has no choices to vote on");
+    }
     PollQuestion q;
     q.step = number;
-    q.question = question->get<std::string>();
-    for (const nlohmann::json& c : *choices) {
-        if (!c.is_string()) return fail("has a choice that is not text");
-        q.choices.push_back(c.get<std::string>());
-    }
-    const int n = static_cast<int>(q.choices.size());
-    if (n < kMinPollChoices || n > kMaxPollChoices)
-        return fail("has " + std::to_string(n) + " choices (2 to 4 can be voted on)");
-    if (const auto proved = step.find("proved"); proved != step.end()) {
-        if (!proved->is_number_integer() || proved->get<long long>() < 0 ||
-            proved->get<long long>() >= n)
-            return fail("proves no choice of its own (\"proved\": 0 to " + std::to_string(n - 1) +
-                        ")");
-        q.proved = proved->get<int>();
-    }
+    q.question = prompt.question;
+    q.choices = prompt.choices;
+    q.proved = proved;
     return q;
 }
 
-} // namespace
+PollQuestions lessonPollQuestions(std::shared_ptr<const Lesson> lesson) {
+    // A step's run as written is the same every time: its proved choice is found once.
+    struct Proved {
+        std::mutex mutex;
+        std::map<int, int> byStep;
+    };
+    auto proved = std::make_shared<Proved>();
+    return [lesson, proved](int number, std::string* why) -> std::optional<PollQuestion> {
+        const std::optional<std::size_t> index = stepIndex(*lesson, number, why);
+        if (!index) return std::nullopt; // "lesson.json: no step 9 (the lesson has steps 1 to 3)"
+        const LessonStep& step = lesson->steps[*index];
+        const StepPrompt prompt = stepPrompt(step);
+        if (prompt.question.empty()) return pollQuestion(number, prompt, -1, why);
+        std::lock_guard lock(proved->mutex);
+        auto found = proved->byStep.find(number);
+        if (found == proved->byStep.end()) {
+            const StepRun run = runStepToPause(step);
+            found = proved->byStep.emplace(number, provedChoice(provedChoices(step, run))).first;
+        }
+        return pollQuestion(number, prompt, found->second, why);
+    };
+}
 
-std::optional<PollQuestions> lessonPollQuestions(const std::string& path, std::string* error) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        if (error) *error = path + ": cannot open the lesson";
+std::optional<PollQuestions> lessonPollQuestions(const std::string& path,
+                                                 const LessonContext& context, std::string* error) {
+    LessonResult loaded = loadLessonFile(path, context);
+    if (!loaded.lesson) {
+        if (error) *error = loaded.error.text();
         return std::nullopt;
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    nlohmann::json lesson = nlohmann::json::parse(text.str(), nullptr, false);
-    if (lesson.is_discarded() || !lesson.is_object() || !lesson.contains("steps") ||
-        !lesson["steps"].is_array()) {
-        if (error) *error = path + ": not a lesson (a JSON object with \"steps\")";
-        return std::nullopt;
-    }
-    auto steps = std::make_shared<const nlohmann::json>(std::move(lesson["steps"]));
-    return PollQuestions([steps, path](int step, std::string* why) -> std::optional<PollQuestion> {
-        const int count = static_cast<int>(steps->size());
-        if (step < 1 || step > count) {
-            if (why)
-                *why = path + ": no step " + std::to_string(step) + ": the lesson has " +
-                       std::to_string(count);
-            return std::nullopt;
-        }
-        const nlohmann::json& s = (*steps)[static_cast<std::size_t>(step - 1)];
-        if (!s.is_object()) {
-            if (why) *why = path + ": steps[" + std::to_string(step - 1) + "] is not an object";
-            return std::nullopt;
-        }
-        std::string reason;
-        std::optional<PollQuestion> q = stepQuestion(s, step, &reason);
-        if (!q && why) *why = path + ": " + reason;
-        return q;
-    });
+    return lessonPollQuestions(std::make_shared<const Lesson>(std::move(*loaded.lesson)));
 }

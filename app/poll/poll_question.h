@@ -3,13 +3,16 @@
 // they come from (the lesson library, a fixture in a test) is one function.
 #pragma once
 
+#include "lesson.h"
+
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
-inline constexpr int kMinPollChoices = 2;
-inline constexpr int kMaxPollChoices = 4;
+// As many as a lesson's question has (lesson.h).
+inline constexpr int kMinPollChoices = static_cast<int>(kMinChoices);
+inline constexpr int kMaxPollChoices = static_cast<int>(kMaxChoices);
 
 struct PollQuestion {
     int step = 0; // 1-based, as the app and `--step` count
@@ -21,8 +24,3 @@ struct PollQuestion {
 // The question of step `step` (1-based); none, with `error` saying why ("step 1 asks nothing",
 // "no step 40: the lesson has 27"), when the step cannot be polled.
 using PollQuestions = std::function<std::optional<PollQuestion>(int step, std::string* error)>;
-
-// The letter of choice `index`: 'A' for 0.
-inline char choiceLetter(int index) {
-    return static_cast<char>('A' + index);
-}

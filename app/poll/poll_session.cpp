@@ -62,10 +62,10 @@ std::string pollResultsCsv(const std::vector<PollRound>& rounds) {
     for (const PollRound& r : rounds)
         for (std::size_t i = 0; i < r.choices.size(); ++i) {
             const int index = static_cast<int>(i);
-            csv += std::to_string(r.step) + "," + std::to_string(r.round) + "," +
-                   choiceLetter(index) + "," + csvField(r.choices[i]) + "," +
-                   std::to_string(r.counts[i]) + "," + std::to_string(r.voters) + "," +
-                   (r.proved == index ? "yes" : "no") + "," + csvField(r.question) + "\n";
+            csv += std::to_string(r.step) + "," + std::to_string(r.round) + "," + choiceLetter(i) +
+                   "," + csvField(r.choices[i]) + "," + std::to_string(r.counts[i]) + "," +
+                   std::to_string(r.voters) + "," + (r.proved == index ? "yes" : "no") + "," +
+                   csvField(r.question) + "\n";
         }
     return csv;
 }

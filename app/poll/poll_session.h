@@ -31,6 +31,10 @@ class PollSession {
 
     // Asks step `step`'s question (round 1); false, with `error`, when the step asks nothing.
     bool open(int step, std::string* error);
+    // Asks `q` as given (the window asks the question of the world the lecturer made).
+    void open(const PollQuestion& q) { state_.open(q); }
+    // The choice the run proved at the moment (-1: none): PollState::prove.
+    void prove(int choice) { state_.prove(choice); }
     std::optional<PollRound> close();
     bool revote();
     void clear(); // the lesson left the step: nothing asked

@@ -37,6 +37,13 @@ bool PollState::revote() {
     return true;
 }
 
+void PollState::prove(int choice) {
+    std::lock_guard lock(mutex_);
+    if (!asking_) return;
+    current_.proved = choice;
+    for (std::size_t r = firstRound_; r < results_.size(); ++r) results_[r].proved = choice;
+}
+
 void PollState::clear() {
     std::lock_guard lock(mutex_);
     closeLocked();

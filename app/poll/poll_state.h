@@ -58,6 +58,10 @@ class PollState {
     // Opens the next round of the current question ("Vote again"); false when none is asked or
     // a round is still open.
     bool revote();
+    // The choice the run proved (-1: none), once the class has seen it: the current question's
+    // rounds, closed and open, say so (a changed world may prove another than the step as
+    // written).
+    void prove(int choice);
     // Stops asking (the step changed): an open round is closed and kept.
     void clear();
 

@@ -15,10 +15,14 @@
                resident memory within a bound, and answers each of them again
   lesson       bad lessons, steps and commands: an error naming them, the server going on
 
+The first four serve lessons/lecture3.json and vote on its step 18 (three choices, B the one the
+run proves, read through the lesson library); `lesson` serves the fixture tests/data/poll.
+
 usage: poll_cli_test.py SANDBOX_CLI LESSON CHECK
 Exit 0 passed, 1 failed. Timeouts only guard against a hang; nothing is timed.
 """
 import asyncio
+import json
 import os
 import random
 import socket
@@ -29,7 +33,8 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from poll_client import Phone, PollServer, proc_status  # noqa: E402
 
-CHOICES = 3  # the fixture's step 2: three choices, B proved
+STEP = 18  # lecture3's "Move and correct: the mess": three choices, B proved by the run
+CHOICES = 3
 
 
 def check(condition, message):
@@ -53,8 +58,8 @@ async def run_phones(server, plan):
 
 def votes_check(server):
     rng = random.Random(40)
-    check(server.command("open 2") == {"step": 2, "round": 1, "open": True, "choices": 3},
-          "open 2")
+    check(server.command("open %d" % STEP) == {"step": STEP, "round": 1, "open": True,
+                                               "choices": 3}, "open %d" % STEP)
     plan, expected = {}, [0] * CHOICES
     for i in range(300):
         device = "phone-%04d" % i
@@ -80,7 +85,7 @@ def votes_check(server):
     check(status["joined"] == 300 and status["voted"] == 270 and status["open"], status)
     closed = server.command("close")
     print("close:", closed)
-    check(closed == {"step": 2, "round": 1, "counts": expected, "voters": 270, "proved": 1},
+    check(closed == {"step": STEP, "round": 1, "counts": expected, "voters": 270, "proved": 1},
           "close: %s, expected counts %s" % (closed, expected))
     # After the close: refused, not counted.
     late = {d: [1] for d in list(plan)[9::10]}
@@ -96,16 +101,16 @@ def votes_check(server):
     for device, codes in asyncio.run(after_close()).items():
         check(codes == [409], "%s after close: %s" % (device, codes))
     check(server.command("close") == {"error": "no vote is open"}, "a second close")
-    check(server.command("revote") == {"step": 2, "round": 2, "open": True}, "revote")
+    check(server.command("revote") == {"step": STEP, "round": 2, "open": True}, "revote")
     check(server.command("revote") == {"error": "revote: the vote is still open"}, "revote twice")
     check(server.command("close")["counts"] == [0, 0, 0], "an empty round")
     # Vote again: a third round, counted apart.
-    check(server.command("revote") == {"step": 2, "round": 3, "open": True}, "revote")
+    check(server.command("revote") == {"step": STEP, "round": 3, "open": True}, "revote")
     second = {"phone-%04d" % i: [i % CHOICES] for i in range(30)}
     statuses = asyncio.run(run_phones(server, second))
     check(all(s == [204] for s in statuses.values()), "round 2: %s" % statuses)
     closed2 = server.command("close")
-    check(closed2 == {"step": 2, "round": 3, "counts": [10, 10, 10], "voters": 30, "proved": 1},
+    check(closed2 == {"step": STEP, "round": 3, "counts": [10, 10, 10], "voters": 30, "proved": 1},
           "round 2: %s" % closed2)
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "poll.csv")
@@ -114,9 +119,13 @@ def votes_check(server):
             rows = f.read().splitlines()
     check(rows[0] == "step,round,choice,text,count,voters,proved,question", rows[0])
     check(len(rows) == 1 + 3 * CHOICES, rows)
-    check(rows[2].startswith('2,1,B,"Moves back at 2 m/s",%d,270,yes,' % expected[1]), rows[2])
-    check(rows[4].startswith('2,2,A,"Stops",0,0,no,'), rows[4])
-    check(rows[7].startswith('2,3,A,"Stops",10,30,no,'), rows[7])
+    # The choices as the lesson shows them, computed from the step's world ("{top.top0}": 5).
+    check(rows[2].startswith('%d,1,B,"Lower: the stack sinks into itself",%d,270,yes,'
+                             % (STEP, expected[1])), rows[2])
+    check(rows[4].startswith('%d,2,A,"At 5 m, at rest: nothing should move",0,0,no,' % STEP),
+          rows[4])
+    check(rows[7].startswith('%d,3,A,"At 5 m, at rest: nothing should move",10,30,no,' % STEP),
+          rows[7])
 
 
 async def raw_exchange(server, data):
@@ -133,7 +142,7 @@ async def raw_exchange(server, data):
 
 
 def refusals_check(server):
-    server.command("open 2")
+    server.command("open %d" % STEP)
 
     async def refusals():
         t, host = server.token, server.host
@@ -232,12 +241,12 @@ def trickle_check(server):
         s.close()
     check(dropped_at is not None, "a trickled request was never dropped")
     print("dropped after %d of %d bytes" % (dropped_at + 1, len(request)))
-    server.command("open 2")
+    server.command("open %d" % STEP)
     check(asyncio.run(Phone(server, "phone-after").vote(1)) == 204, "the server after a trickle")
 
 
 def connections_check(server):
-    server.command("open 2")
+    server.command("open %d" % STEP)
     threads0, rss0 = proc_status(server.proc.pid)
 
     async def hold():
@@ -269,17 +278,29 @@ def lesson_check(cli, lesson):
     import subprocess
     bad = subprocess.run([cli, "poll", lesson + ".missing", "--bind", "127.0.0.1"],
                          capture_output=True, text=True, stdin=subprocess.DEVNULL, timeout=60)
-    check(bad.returncode == 1 and "cannot open the lesson" in bad.stderr, bad.stderr)
+    check(bad.returncode == 1 and "no such file" in bad.stderr, bad.stderr)
     bad = subprocess.run([cli, "poll", lesson, "--bind", "127.0.0.1", "--port", "70000"],
                          capture_output=True, text=True, stdin=subprocess.DEVNULL, timeout=60)
     check(bad.returncode == 1 and "--port" in bad.stderr, bad.stderr)
     bad = subprocess.run([cli, "poll", lesson, "--bind", "not-an-address"],
                          capture_output=True, text=True, stdin=subprocess.DEVNULL, timeout=60)
     check(bad.returncode == 1 and "not an IP address" in bad.stderr, bad.stderr)
+    # A question with five choices: the lesson library refuses the file, naming the place.
+    with tempfile.TemporaryDirectory() as tmp:
+        with open(lesson) as f:
+            five = json.load(f)
+        five["steps"][1]["choices"] += [{"text": "Four", "if": "t < 0"},
+                                        {"text": "Five", "if": "t < 0"}]
+        path = os.path.join(tmp, "five.json")
+        with open(path, "w") as f:
+            json.dump(five, f)
+        bad = subprocess.run([cli, "poll", path, "--bind", "127.0.0.1"], capture_output=True,
+                             text=True, stdin=subprocess.DEVNULL, timeout=60)
+    check(bad.returncode == 1 and "steps[1].choices" in bad.stderr
+          and "2 to 4 choices, not 5" in bad.stderr, bad.stderr)
     server = PollServer(cli, lesson)
     try:
         check("asks nothing" in server.command("open 1")["error"], "step 1")
-        check("5 choices" in server.command("open 4")["error"], "step 4")
         check("no step 9" in server.command("open 9")["error"], "step 9")
         check("open STEP" in server.command("open x")["error"], "open x")
         check("unknown command" in server.command("vote 2")["error"], "vote 2")

@@ -198,21 +198,62 @@ TEST_F(PollProtocolTest, NoQuestionNoVote) {
     EXPECT_EQ(j["asking"], false);
 }
 
-TEST(PollQuestions, ReadFromTheLessonWithTheirPlaces) {
+LessonContext lessonContext() {
+    LessonContext c;
+    c.scenesDir = SANDBOX_SCENES_DIR;
+    return c;
+}
+
+TEST(PollQuestions, ReadThroughTheLessonLibraryWithTheChoiceTheRunProves) {
     std::string error;
-    const auto questions = lessonPollQuestions(SANDBOX_POLL_DATA_DIR "/poll_lesson.json", &error);
+    const auto questions =
+        lessonPollQuestions(SANDBOX_POLL_DATA_DIR "/poll_lesson.json", lessonContext(), &error);
     ASSERT_TRUE(questions) << error;
     const std::optional<PollQuestion> q = (*questions)(2, &error);
     ASSERT_TRUE(q) << error;
-    EXPECT_EQ(q->choices.size(), 3u);
-    EXPECT_EQ(q->proved, 1);
+    // The question's numbers computed from the step's world, as the caption shows them.
+    EXPECT_EQ(q->question,
+              "m1 = 1 kg at 6 m/s hits m2 = 2 kg at rest with C = 1. What does m1 do after?");
+    EXPECT_EQ(q->choices,
+              (std::vector<std::string>{"Stops", "Moves back at 2 m/s", "Keeps going at 2 m/s"}));
+    EXPECT_EQ(q->proved, 1); // the run: m1 leaves at -2 m/s
+    const std::optional<PollQuestion> four = (*questions)(3, &error);
+    ASSERT_TRUE(four) << error;
+    EXPECT_EQ(four->proved, 3);
     EXPECT_FALSE((*questions)(1, &error));
     EXPECT_NE(error.find("step 1 asks nothing"), std::string::npos) << error;
-    EXPECT_FALSE((*questions)(4, &error));
-    EXPECT_NE(error.find("5 choices"), std::string::npos) << error;
     EXPECT_FALSE((*questions)(5, &error));
-    EXPECT_NE(error.find("no step 5: the lesson has 4"), std::string::npos) << error;
-    EXPECT_FALSE(lessonPollQuestions(SANDBOX_POLL_DATA_DIR "/missing.json", &error));
+    EXPECT_NE(error.find("no step 5"), std::string::npos) << error;
+    EXPECT_FALSE(
+        lessonPollQuestions(SANDBOX_POLL_DATA_DIR "/missing.json", lessonContext(), &error));
+    EXPECT_NE(error.find("missing.json"), std::string::npos) << error;
+}
+
+TEST(PollQuestions, Lecture3AsksEveryStepAndTheRunProvesItsCorrectChoice) {
+    std::string error;
+    LessonResult lesson = loadLessonFile(SANDBOX_LESSONS_DIR "/lecture3.json", lessonContext());
+    ASSERT_TRUE(lesson.lesson) << lesson.error.text();
+    const PollQuestions questions =
+        lessonPollQuestions(std::make_shared<const Lesson>(*lesson.lesson));
+    for (std::size_t i = 0; i < lesson.lesson->steps.size(); ++i) {
+        const LessonStep& step = lesson.lesson->steps[i];
+        const std::optional<PollQuestion> q = questions(static_cast<int>(i) + 1, &error);
+        ASSERT_TRUE(q) << error;
+        EXPECT_EQ(q->question, stepPrompt(step).question) << "step " << i + 1;
+        EXPECT_EQ(q->choices.size(), step.choices.size()) << "step " << i + 1;
+        EXPECT_EQ(q->proved, step.correct) << "step " << i + 1;
+    }
+}
+
+TEST(PollState, TheRunsProvedChoiceMarksEveryRoundOfTheQuestion) {
+    PollState state;
+    state.open(PollQuestion{2, "Q", {"a", "b", "c"}, -1});
+    state.close();
+    ASSERT_TRUE(state.revote());
+    state.prove(2);
+    state.close();
+    for (const PollRound& r : state.results()) EXPECT_EQ(r.proved, 2) << "round " << r.round;
+    EXPECT_EQ(state.snapshot().current.proved, 2);
 }
 
 TEST(PollResults, CsvHasEveryRoundAndQuotesText) {

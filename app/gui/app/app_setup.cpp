@@ -29,7 +29,8 @@ bool openFirst(App& app, const Options& options, const std::string& lastScene, s
             if (error) *error = app.ui.messages.error;
             return false;
         }
-        if (!options.pollAddress.empty() && !startPoll(app.poll, app.lesson, options.pollAddress)) {
+        if (!options.pollAddress.empty() &&
+            !startPoll(app.poll, app.lesson, app.sim, options.pollAddress)) {
             if (error) *error = "--poll: " + app.poll.error;
             return false;
         }

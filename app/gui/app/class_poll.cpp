@@ -20,12 +20,13 @@ bool pollAvailable() {
     return false;
 }
 void listPollAddresses(ClassPoll&) {}
-bool startPoll(ClassPoll& poll, const LessonSession&, const std::string&) {
+bool startPoll(ClassPoll& poll, const LessonSession&, const SimulationSession&,
+               const std::string&) {
     poll.error = kPollUnavailable;
     return false;
 }
 void stopPoll(ClassPoll&) {}
-void followLesson(ClassPoll&, const LessonSession&, bool) {}
+void followLesson(ClassPoll&, const LessonSession&, const SimulationSession&) {}
 void closePollVote(ClassPoll&) {}
 bool pollVoteAgain(ClassPoll&) {
     return false;
@@ -51,17 +52,19 @@ void listPollAddresses(ClassPoll& poll) {
     if (poll.address >= poll.addresses.size()) poll.address = 0;
 }
 
-bool startPoll(ClassPoll& poll, const LessonSession& lesson, const std::string& address) {
+bool startPoll(ClassPoll& poll, const LessonSession& lesson, const SimulationSession& sim,
+               const std::string& address) {
     poll.error.clear();
     if (!lesson.active()) {
         poll.error = "Open a lesson first: the poll asks its steps' questions.";
         return false;
     }
-    std::optional<PollQuestions> questions = lessonPollQuestions(lesson.lesson->path, &poll.error);
-    if (!questions) return false;
+    // The file's questions as written (what `question` answers); the window asks the live one.
+    PollQuestions questions = lessonPollQuestions(std::make_shared<const Lesson>(*lesson.lesson));
     if (poll.addresses.empty()) listPollAddresses(poll);
     const std::string at = address.empty() ? poll.addresses[poll.address] : address;
-    std::unique_ptr<PollSession> session = PollSession::start(*questions, at, 0, &poll.error);
+    std::unique_ptr<PollSession> session =
+        PollSession::start(std::move(questions), at, 0, &poll.error);
     if (!session) return false;
     poll.session = std::move(session);
     const QrModules qr = qrModules(poll.session->url());
@@ -69,7 +72,7 @@ bool startPoll(ClassPoll& poll, const LessonSession& lesson, const std::string& 
     poll.qrDark = qr.dark;
     poll.lessonPath = lesson.lesson->path;
     poll.followedStep = static_cast<std::size_t>(-1);
-    followLesson(poll, lesson, true);
+    followLesson(poll, lesson, sim);
     return true;
 }
 
@@ -78,29 +81,38 @@ void stopPoll(ClassPoll& poll) {
     poll.note.clear();
 }
 
-void followLesson(ClassPoll& poll, const LessonSession& lesson, bool simPaused) {
+void followLesson(ClassPoll& poll, const LessonSession& lesson, const SimulationSession& sim) {
     if (!poll.session) return;
     if (!lesson.active() || lesson.lesson->path != poll.lessonPath) return stopPoll(poll);
     const bool atSetup = lesson.phase == LessonSession::Phase::Setup;
     if (lesson.current != poll.followedStep) {
         poll.followedStep = lesson.current;
         poll.asked = false;
+        poll.proved = false;
         poll.session->clear();
         poll.note = atSetup ? "" : "the vote opens at a step's setup (R)";
     }
+    const int number = static_cast<int>(lesson.current) + 1;
     if (atSetup && !poll.asked) {
+        // The question of the world on screen, the lecturer's changes included (lesson_prompt).
         poll.asked = true;
+        poll.proved = false;
         poll.note.clear();
-        if (!poll.session->open(static_cast<int>(lesson.current) + 1, &poll.note)) {
-            // "lesson.json: step 1 asks nothing": the window names no file.
-            const std::string prefix = poll.lessonPath + ": ";
-            if (poll.note.compare(0, prefix.size(), prefix) == 0) poll.note.erase(0, prefix.size());
-        }
+        const std::optional<PollQuestion> q =
+            pollQuestion(number, lessonPrompt(lesson, sim), -1, &poll.note);
+        if (q) poll.session->open(*q);
     }
     // Whatever plays the step closes its vote: P, the bar's Play, PageDown.
-    if (poll.session->snapshot().open &&
-        (lesson.phase != LessonSession::Phase::Setup || !simPaused))
-        poll.session->close();
+    if (poll.session->snapshot().open && (!atSetup || !sim.paused)) poll.session->close();
+    // At the moment, the choice the live run proved (in whatever world the lecturer made); a
+    // replay ("Vote again", R) proves it again at its own moment.
+    if (lesson.phase != LessonSession::Phase::Moment) poll.proved = false;
+    if (!poll.proved && poll.asked && lesson.phase == LessonSession::Phase::Moment) {
+        if (const std::optional<StepAnswer> answer = lessonAnswer(lesson, sim)) {
+            poll.proved = true;
+            poll.session->prove(answer->reached ? provedChoice(answer->proved) : -1);
+        }
+    }
 }
 
 void closePollVote(ClassPoll& poll) {

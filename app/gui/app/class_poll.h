@@ -12,6 +12,7 @@
 #include <vector>
 
 struct LessonSession;
+struct SimulationSession;
 class PollSession;
 
 // What the projector's poll window shows, copied each frame.
@@ -44,6 +45,7 @@ struct ClassPoll {
     std::string error;                    // the last start's failure
     std::size_t followedStep = static_cast<std::size_t>(-1); // the step the poll follows
     bool asked = false;     // its question was put to the phones (at its setup)
+    bool proved = false;    // the run's proved choice was given to the poll (at the moment)
     std::string lessonPath; // the lesson it asks from
     std::string note;       // why this step is not polled
     int qrSize = 0;         // the URL's QR code
@@ -61,11 +63,13 @@ inline constexpr const char* kPollUnavailable =
 void listPollAddresses(ClassPoll& poll);
 // Starts the server for the open lesson on poll.addresses[poll.address] (or `address` when
 // given), a free port; false with poll.error when no lesson is open or the address cannot be had.
-bool startPoll(ClassPoll& poll, const LessonSession& lesson, const std::string& address = "");
+bool startPoll(ClassPoll& poll, const LessonSession& lesson, const SimulationSession& sim,
+               const std::string& address = "");
 void stopPoll(ClassPoll& poll);
-// Once a frame: the lesson closed (the server stops), a new step (its question is asked), the
-// step playing (the vote closes).
-void followLesson(ClassPoll& poll, const LessonSession& lesson, bool simPaused);
+// Once a frame: the lesson closed (the server stops), a new step (its question, as the world on
+// screen asks it, is put to the phones), the step playing (the vote closes), the moment (the
+// choice the live run proved is marked).
+void followLesson(ClassPoll& poll, const LessonSession& lesson, const SimulationSession& sim);
 // "Close vote" at the setup, and "Vote again": the next round (the caller replays the step to
 // its setup).
 void closePollVote(ClassPoll& poll);

@@ -41,6 +41,9 @@ std::string showList(const Overlays& shown) {
 } // namespace
 
 bool linkCarriesScene(const App& app) {
+    // In a shipped lesson: the step's setup as the student changed it (none: the step says all).
+    if (app.lesson.active() && !shippedName(app.shipped.lessons, app.lesson.lesson->path).empty())
+        return !lessonChanges(app.lesson, app.sim).empty();
     if (shippedName(app.shipped.scenes, app.sim.scenePath).empty()) return true; // opened, saved
     WorldSettings settings = app.sim.world().settings;
     settings.method = app.sim.scene.settings.method; // the method has a parameter of its own
@@ -69,6 +72,11 @@ std::string linkQuery(const App& app) {
     if (app.view.frame == ViewFrame::CentreOfMass)
         add(query, "frame", viewFrameName(app.view.frame));
     return query;
+}
+
+Scene linkedScene(const App& app) {
+    if (app.lesson.active()) return app.sim.sceneOf(lessonSetupWorld(app.lesson, app.sim));
+    return app.sim.currentScene();
 }
 
 std::string linkTooLongMessage(std::size_t chars) {

@@ -7,6 +7,7 @@
 #include "panel_rows.h"
 #include "printable.h"
 #include "scene_json.h"
+#include "scene.h"
 #include "scene_library.h"
 
 #include <algorithm>
@@ -190,12 +191,23 @@ void applyUrlParams(App& app, const UrlParams& params) {
             add("URL parameter lesson: no lesson " + echo(params.lesson) + " is shipped");
         else if (!openLesson(app, path, 0))
             add(app.ui.messages.error);
-        else if (const int steps = static_cast<int>(app.lesson.lesson->steps.size());
-                 params.step >= 2 && params.step <= steps)
-            openLesson(app, path, static_cast<std::size_t>(params.step - 1));
-        else if (params.step != 0 && params.step != 1)
-            add("URL parameter step: " + echo(params.stepText) + " is not a step of " +
-                echo(params.lesson) + " (1 to " + std::to_string(steps) + "): it opens at step 1");
+        else {
+            const int steps = static_cast<int>(app.lesson.lesson->steps.size());
+            if (params.step >= 2 && params.step <= steps)
+                openLesson(app, path, static_cast<std::size_t>(params.step - 1));
+            else if (params.step != 0 && params.step != 1)
+                add("URL parameter step: " + echo(params.stepText) + " is not a step of " +
+                    echo(params.lesson) + " (1 to " + std::to_string(steps) +
+                    "): it opens at step 1");
+            if (!params.linkScene.empty()) {
+                // The step's setup as the student changed it (link.h).
+                const SceneResult carried = loadSceneFile(params.linkScene);
+                if (carried.scene)
+                    lessonTakeSetup(app.lesson, app.sim, app.view, *carried.scene);
+                else
+                    add("the link's scene (#scene=...): " + carried.error.text());
+            }
+        }
     }
     if (!params.linkScene.empty() && params.lesson.empty()) {
         if (!loadScene(app, params.linkScene))

@@ -176,6 +176,23 @@ bool enterStep(LessonSession& s, SimulationSession& sim, View& view, Messages& m
     return true;
 }
 
+void lessonTakeSetup(LessonSession& s, SimulationSession& sim, View& view, const Scene& carried) {
+    const LessonStep* step = s.step();
+    if (!step) return;
+    const int selected = sim.selected;
+    std::vector<ScriptedKeys> script = sim.script;
+    sim.setScene(carried, step->sceneSource);
+    sim.selected = selected;
+    sim.script = std::move(script);
+    sim.reset(); // with the selection, as entering the step
+    followNewRun(view, sim.world());
+    showSetup(s, sim);
+}
+
+const World& lessonSetupWorld(const LessonSession& s, const SimulationSession& sim) {
+    return s.playedFrom ? *s.playedFrom : sim.world();
+}
+
 void replayStep(LessonSession& s, SimulationSession& sim, View& view, Messages& messages) {
     if (!s.step()) return;
     sim.reset();                  // the lecturer's method and settings stay, as R outside lessons
@@ -271,28 +288,42 @@ std::vector<std::string> lessonChanges(const LessonSession& s, const SimulationS
     if (!step || !s.written) return {};
     const World& setup = s.playedFrom ? *s.playedFrom : sim.world();
     if (setup.time != 0.0 || !differsFromWritten(setup, s.written->setup)) return {};
-    return {"your changes"};
+    const std::vector<std::string> said =
+        setupChanges(*step, setup, liveBlockIndex(*step->scene, labelNames(sim)), s.written->setup);
+    // A change no line names (a block's colour, say) still makes the world not the one written.
+    return said.empty() ? std::vector<std::string>{"your changes"} : said;
 }
 
-LessonTexts lessonTexts(const LessonSession& s, const SimulationSession& sim) {
-    LessonTexts t;
+StepPrompt lessonPrompt(const LessonSession& s, const SimulationSession& sim) {
     const LessonStep* step = s.step();
-    if (!step) return t;
+    if (!step) return {};
     // The question reads the world it is asked of: the one on screen at the setup (the lecturer's
     // changes show at once), the one the step was played from after that.
     const World& setup = s.playedFrom ? *s.playedFrom : sim.world();
     const std::vector<int> blocks = liveBlockIndex(*step->scene, labelNames(sim));
-    const std::vector<std::string> changes = lessonChanges(s, sim);
-    const StepPrompt prompt = stepPrompt(*step, setup, blocks, changes.empty());
+    return stepPrompt(*step, setup, blocks, lessonChanges(s, sim).empty());
+}
+
+std::optional<StepAnswer> lessonAnswer(const LessonSession& s, const SimulationSession& sim) {
+    const LessonStep* step = s.step();
+    if (!step || s.phase != LessonSession::Phase::Moment || !s.watch) return std::nullopt;
+    const World& setup = s.playedFrom ? *s.playedFrom : sim.world();
+    const StepRun run = watchedRun(*s.watch, setup, sim.world());
+    return stepAnswer(*step, run, lessonChanges(s, sim), s.written ? &*s.written : nullptr);
+}
+
+LessonTexts lessonTexts(const LessonSession& s, const SimulationSession& sim) {
+    LessonTexts t;
+    if (!s.step()) return t;
+    const StepPrompt prompt = lessonPrompt(s, sim);
     t.caption = prompt.caption;
     t.question = prompt.question;
     for (std::size_t i = 0; i < prompt.choices.size(); ++i)
         t.choices.push_back(choiceLetter(i) + ". " + prompt.choices[i]);
-    if (s.phase != LessonSession::Phase::Moment || !s.watch) return t;
-    const StepRun run = watchedRun(*s.watch, setup, sim.world());
-    const StepAnswer answer = stepAnswer(*step, run, changes, s.written ? &*s.written : nullptr);
-    t.missed = answer.missed;
-    if (s.revealed) t.answer = answer.text;
+    const std::optional<StepAnswer> answer = lessonAnswer(s, sim);
+    if (!answer) return t;
+    t.missed = answer->missed;
+    if (s.revealed) t.answer = answer->text;
     return t;
 }
 

@@ -67,8 +67,14 @@ struct LessonTexts {
     std::string missed;               // at the moment, when it did not: why, in words
 };
 LessonTexts lessonTexts(const LessonSession& s, const SimulationSession& sim);
-// What the lecturer changed of the step as written, as the answer says it ("With your changes:
-// ..."); empty while the world played from is the step's setup as written.
+// The same unlettered, for the class poll: the question and choices of the world the step is
+// asked of (lesson_prompt's StepPrompt) and, at the moment, the answer with the choices the live
+// run proved (none before the moment).
+StepPrompt lessonPrompt(const LessonSession& s, const SimulationSession& sim);
+std::optional<StepAnswer> lessonAnswer(const LessonSession& s, const SimulationSession& sim);
+// What the lecturer changed of the step as written, as the answer says it ("With C = 0.9, m2's
+// mass 4 kg: ...", lesson_prompt's setupChanges); empty while the world played from is the
+// step's setup as written.
 std::vector<std::string> lessonChanges(const LessonSession& s, const SimulationSession& sim);
 
 // The lessons directory compiled in (the source tree's lessons/).
@@ -101,6 +107,12 @@ void lessonPrevious(LessonSession& s, SimulationSession& sim, View& view, Messag
 // messages.error and stays (false).
 void lessonTypeDigit(LessonSession& s, int digit);
 bool lessonJump(LessonSession& s, SimulationSession& sim, View& view, Messages& messages);
+// The step's setup as a link carried it (the student's changes: link.h): the step stays, paused at
+// its setup with its question, in the world of `carried` (R replays it; Shift+R the step as
+// written).
+void lessonTakeSetup(LessonSession& s, SimulationSession& sim, View& view, const Scene& carried);
+// The world the step is asked of: the one played from, else the one on screen (at the setup).
+const World& lessonSetupWorld(const LessonSession& s, const SimulationSession& sim);
 // Runs the step to its event and the watch after it, and reveals its answer: what the window shows
 // once the class has seen the step (offscreen screenshots, --record-steps).
 void lessonShowPausePoint(LessonSession& s, SimulationSession& sim, View& view);

@@ -7,6 +7,7 @@
 // the button (the browser build says why there is none).
 #include "app_frame.h"
 #include "class_poll.h"
+#include "lesson.h"
 #include "overlay_window.h"
 #include "ui_style.h"
 
@@ -75,8 +76,7 @@ void drawHistogram(const PollScreen& s, float width) {
     for (std::size_t c = 0; c < s.choices.size(); ++c) {
         const bool proved = static_cast<int>(c) == s.proved;
         const ImVec2 top = ImGui::GetCursorScreenPos();
-        const char letter[2] = {static_cast<char>('A' + c), 0};
-        ImGui::TextUnformatted(letter);
+        ImGui::TextUnformatted(choiceLetter(c).c_str());
         for (std::size_t r = 0; r < rounds; ++r) {
             const int count = c < s.rounds[r].size() ? s.rounds[r][c] : 0;
             if (r == 0)

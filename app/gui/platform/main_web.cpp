@@ -109,7 +109,7 @@ void followLink(WebApp& w, double now) {
     if (!linkCarriesScene(app) || linkSceneTooLarge(app)) {
         scene.clear();
     } else if (scene.empty() || (app.sim.paused && now - w.linkSceneAt >= kLinkRefreshSeconds)) {
-        scene = sceneToJson(app.sim.currentScene());
+        scene = sceneToJson(linkedScene(app));
         w.linkSceneAt = now;
     }
     std::string query = linkQuery(app);

@@ -373,20 +373,24 @@ void SimulationSession::deleteSelected() {
 }
 
 Scene SimulationSession::currentScene() const {
+    return sceneOf(world());
+}
+
+Scene SimulationSession::sceneOf(const World& w) const {
     Scene original = scene;
     original.blocks.clear();
     for (std::size_t i = 0; i < labels.size(); ++i) {
         BlockDef def;
-        def.name = i < world().blocks.size() ? nameWithMass(labels[i].name, world().blocks[i].mass)
-                                             : labels[i].name;
+        def.name =
+            i < w.blocks.size() ? nameWithMass(labels[i].name, w.blocks[i].mass) : labels[i].name;
         // A name whose new mass takes it past the format's limit is saved as it was read.
         if (!limits::textLengthViolation(def.name, limits::kMaxNameChars).empty())
             def.name = labels[i].name;
         def.color = labels[i].color;
         original.blocks.push_back(def);
     }
-    original.description = savedDescription(scene.description, scene.settings, world().settings);
-    return sceneFromWorld(world(), original);
+    original.description = savedDescription(scene.description, scene.settings, w.settings);
+    return sceneFromWorld(w, original);
 }
 
 bool SimulationSession::save(const std::string& path, std::string* error) {

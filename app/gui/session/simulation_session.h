@@ -202,6 +202,8 @@ struct SimulationSession {
 
     // The current state as a format v1 scene (names and colours kept).
     Scene currentScene() const;
+    // `w` (a world of this session's blocks, such as a lesson's setup) as a scene, as above.
+    Scene sceneOf(const World& w) const;
     // Saves currentScene() to `path` (absolute), which then is the current scene's file (what
     // the settings remember; reset to file goes back to it). False with `error` on failure.
     bool save(const std::string& path, std::string* error);

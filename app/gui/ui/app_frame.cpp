@@ -190,7 +190,7 @@ void applyAction(App& app, Action action) {
         if (app.poll.on()) {
             stopPoll(app.poll);
             logEvent(app, "poll: off");
-        } else if (startPoll(app.poll, app.lesson)) {
+        } else if (startPoll(app.poll, app.lesson, app.sim)) {
             logEvent(app, ("poll: " + pollUrl(app.poll)).c_str());
         } else {
             app.ui.messages.error = app.poll.error;
@@ -302,7 +302,7 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
         if (app.view.frame != ViewFrame::World) layOut();
     }
     takeNotice(app);
-    followLesson(app.poll, app.lesson, app.sim.paused); // asks, closes, stops with the lesson
+    followLesson(app.poll, app.lesson, app.sim); // asks, closes, stops with the lesson
     // The UI: the scene's labels, the overlays, the lesson's caption, the panels, the dialogs.
     drawSceneDecorations(app);
     drawOverlays(app);

@@ -5,8 +5,10 @@
 #include "browser_input.h"
 #include "browser_limits.h"
 #include "input_map.h"
+#include "lesson_session.h"
 #include "link.h"
 #include "mouse_tool.h"
+#include "scene_json.h"
 #include "settings_table.h"
 #include "shape_batch.h"
 #include "test_fixtures.h"
@@ -276,6 +278,42 @@ TEST(Link, ALessonStepIsItsLink) {
     App app = setUpApp();
     applyUrlParams(app, parseUrlParams("?lesson=lecture3&step=5"));
     EXPECT_EQ(linkQuery(app), "lesson=lecture3&step=5");
+    EXPECT_FALSE(linkCarriesScene(app)); // the step as written: its number says it all
+}
+
+// A link copied inside a lesson carries the student's changes (issue 38): the step, and its setup
+// as changed; opening it gives that step at its setup in that world, and the answer says so.
+TEST(Link, ALessonStepsChangesTravelInsideTheLink) {
+    App app = setUpApp();
+    applyUrlParams(app, parseUrlParams("?lesson=lecture3&step=13"));
+    app.sim.world().blocks[1].mass = 4.0;
+    app.sim.world().settings.bounciness = 0.5;
+    EXPECT_TRUE(linkCarriesScene(app));
+    EXPECT_EQ(linkQuery(app), "lesson=lecture3&step=13");
+    const std::vector<std::string> changes = lessonChanges(app.lesson, app.sim);
+    // The page writes the fragment's scene to a file before the app starts.
+    const std::string carried = testing::TempDir() + "/link_lesson_scene.json";
+    {
+        std::ofstream out(carried);
+        out << sceneToJson(linkedScene(app));
+    }
+    App opened = setUpApp();
+    UrlParams params = parseUrlParams("?lesson=lecture3&step=13");
+    params.linkScene = carried;
+    applyUrlParams(opened, params);
+    EXPECT_EQ(opened.ui.messages.error, "");
+    ASSERT_TRUE(opened.lesson.active());
+    EXPECT_EQ(opened.lesson.current, 12u);
+    EXPECT_EQ(opened.lesson.phase, LessonSession::Phase::Setup);
+    EXPECT_EQ(opened.sim.world().time, 0.0);
+    EXPECT_EQ(opened.sim.world().blocks[1].mass, 4.0);
+    EXPECT_EQ(opened.sim.world().settings.bounciness, 0.5);
+    EXPECT_EQ(lessonChanges(opened.lesson, opened.sim), changes);
+    EXPECT_EQ(linkQuery(opened), "lesson=lecture3&step=13");
+    EXPECT_TRUE(linkCarriesScene(opened));
+    // Shift+R: the step as written again, and the link says only its number.
+    applyLessonAction(opened, Action::ResetToFile);
+    EXPECT_FALSE(linkCarriesScene(opened));
 }
 
 // Touch: frames as the web main asks them (frame, then resolveStart after a Waiting frame).

@@ -321,3 +321,132 @@ TEST(LessonSession, TheNotACollisionStepShowsTheRelativeVelocityTest) {
     EXPECT_EQ(f.relative.rfind("rel. vel. along x = v1 - v2 = 3 - 4 = -1 < 0: separating", 0), 0u)
         << f.relative;
 }
+
+// ---- What the lecturer changes mid-demo stays true (issue 38) ----
+
+namespace {
+
+// Enters step `number` (1-based), lets `change` edit the world at its setup as the panel would,
+// plays it to its moment as the window does and returns the caption bar's text there.
+template <typename Change> std::string changedMoment(App& app, std::size_t number, Change change) {
+    EXPECT_TRUE(enterStep(app, number - 1));
+    change(app.sim.world());
+    applyLessonAction(app, Action::LessonNext);
+    playUntilPaused(app);
+    lessonAfterFrames(app.lesson, app.sim, app.view);
+    EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Moment) << "step " << number;
+    return lessonCaption(app.lesson, app.sim);
+}
+
+bool has(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+} // namespace
+
+// C changed at the setup: the question asks with it, the answer says so and gives its numbers
+// (issue 38: "-2 m/s, 2 J" with C = 0.9 in effect), beside the result as written.
+TEST(LessonMidDemo, BouncinessChangedAtTheSetup) {
+    App app = lessonApp();
+    ASSERT_TRUE(enterStep(app, 2));
+    app.sim.world().settings.bounciness = 0.9;
+    EXPECT_TRUE(has(lessonCaption(app.lesson, app.sim), "with C = 0.9. Its velocity after"))
+        << lessonCaption(app.lesson, app.sim);
+    const std::string text = changedMoment(app, 3, [](World& w) { w.settings.bounciness = 0.9; });
+    EXPECT_TRUE(has(text, "Answer: With C = 0.9: A. v' = -C·v = -0.9·4 = -3.6 m/s")) << text;
+    EXPECT_TRUE(has(text, "As written: A, -2 m/s and 2 J.")) << text;
+    EXPECT_NEAR(app.sim.world().blocks[0].velocity.x, -3.6, 1e-12);
+}
+
+// A mass changed: the answer names it and prints the inspector's numbers (issue 38: the answer
+// said -2 and 4, the inspector -3.6 and 2.4).
+TEST(LessonMidDemo, MassChangedAtTheSetup) {
+    App app = lessonApp();
+    const std::string text = changedMoment(app, 13, [](World& w) { w.blocks[1].mass = 4.0; });
+    EXPECT_TRUE(has(text, "Answer: With m2's mass 4 kg: A. v1' = 1.2 - 1·(6 - 1.2) = -3.6 m/s"))
+        << text;
+    EXPECT_NE(app.lesson.step()->scene->blocks[1].name.find("m2"), std::string::npos);
+}
+
+// The frame rate changed: the pause follows the event in the lecturer's world (issue 38: paused at
+// t = 0.08 s with 0 collisions), and the answer says what changed.
+TEST(LessonMidDemo, FrameRateChangedAtTheSetup) {
+    App app = lessonApp();
+    const std::string text = changedMoment(app, 4, [](World& w) { w.settings.dt = 1.0 / 60.0; });
+    EXPECT_TRUE(has(text, "Answer: With frame rate 60 Hz: A.")) << text;
+    EXPECT_TRUE(has(text, "touches the step at x = 8.75 m")) << text;
+    ASSERT_TRUE(app.lesson.watch && app.lesson.watch->hit());
+    EXPECT_NEAR(app.lesson.watch->hit()->time, 5.75 / 14.0, 1e-12);
+}
+
+// The method changed with S: the bullet bounces and the answer says where, not "past the wall".
+TEST(LessonMidDemo, MethodChangedAtTheSetup) {
+    App app = lessonApp();
+    const std::string text =
+        changedMoment(app, 2, [](World& w) { w.settings.method = Method::Perfect; });
+    EXPECT_TRUE(has(text, "Answer: With method perfect: B. At x = ")) << text;
+    EXPECT_FALSE(has(text, "16 m")) << text;
+}
+
+// A block moved off the line: the event does not come, the bar says why and claims no answer.
+TEST(LessonMidDemo, ABlockMovedOffTheLineSaysWhyAndClaimsNothing) {
+    App app = lessonApp();
+    const std::string text = changedMoment(app, 13, [](World& w) { w.blocks[1].position.y += 3; });
+    EXPECT_TRUE(has(text, "No answer: ")) << text;
+    EXPECT_FALSE(has(text, "Answer: ")) << text;
+}
+
+// Every change is said by its name, in the order of the settings table, then the blocks.
+TEST(LessonMidDemo, TheChangesAreSaidByName) {
+    App app = lessonApp();
+    ASSERT_TRUE(enterStep(app, 12));
+    World& w = app.sim.world();
+    w.settings.bounciness = 0.5;
+    w.blocks[0].velocity.x = 3.0;
+    w.blocks[1].position.x += 1.0;
+    const std::vector<std::string> changes = lessonChanges(app.lesson, app.sim);
+    const std::string m2 = app.lesson.step()->scene->blocks[1].name;
+    const std::string m1 = app.lesson.step()->scene->blocks[0].name;
+    ASSERT_EQ(changes.size(), 3u);
+    EXPECT_EQ(changes[0], "C = 0.5");
+    EXPECT_EQ(changes[1], m1 + "'s velocity (3, 0) m/s");
+    EXPECT_EQ(changes[2].rfind(m2 + " moved to (", 0), 0u) << changes[2];
+    applyLessonAction(app, Action::ResetToFile); // Shift+R: as written, nothing to say
+    EXPECT_TRUE(lessonChanges(app.lesson, app.sim).empty());
+}
+
+// The class poll asks the question of the world on screen and marks the choice the live run
+// proved: step 3 with C = 0.9 asks with 0.9; step 2 with the perfect method proves B (the bullet
+// bounces back), not A as written (it tunnels).
+TEST(LessonMidDemo, ThePollAsksTheLiveQuestionAndMarksTheLiveRunsChoice) {
+    if (!pollAvailable()) GTEST_SKIP() << kPollUnavailable;
+    App app = lessonApp();
+    ASSERT_TRUE(enterStep(app, 2));
+    app.sim.world().settings.bounciness = 0.9;
+    ASSERT_TRUE(startPoll(app.poll, app.lesson, app.sim, "127.0.0.1")) << app.poll.error;
+    PollScreen screen = pollScreen(app.poll, app.lesson);
+    ASSERT_TRUE(screen.asking && screen.open);
+    EXPECT_EQ(screen.step, 3);
+    EXPECT_TRUE(has(screen.question, "with C = 0.9.")) << screen.question;
+    ASSERT_EQ(screen.choices.size(), 4u);
+    EXPECT_EQ(screen.choices[0], "-3.6 m/s and 6.48 J");
+
+    ASSERT_TRUE(enterStep(app, 1));
+    app.sim.world().settings.method = Method::Perfect;
+    followLesson(app.poll, app.lesson, app.sim);
+    screen = pollScreen(app.poll, app.lesson);
+    ASSERT_TRUE(screen.asking && screen.open);
+    EXPECT_EQ(screen.step, 2);
+    EXPECT_EQ(screen.proved, -1);               // not known before the run
+    applyLessonAction(app, Action::LessonNext); // plays: the vote closes
+    followLesson(app.poll, app.lesson, app.sim);
+    EXPECT_FALSE(pollScreen(app.poll, app.lesson).open);
+    playUntilPaused(app);
+    lessonAfterFrames(app.lesson, app.sim, app.view);
+    followLesson(app.poll, app.lesson, app.sim);
+    screen = pollScreen(app.poll, app.lesson);
+    EXPECT_TRUE(screen.histogram);
+    EXPECT_EQ(app.lesson.step()->correct, 0);
+    EXPECT_EQ(screen.proved, 1);
+    stopPoll(app.poll);
+}
