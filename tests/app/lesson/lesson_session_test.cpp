@@ -335,7 +335,7 @@ template <typename Change> std::string changedMoment(App& app, std::size_t numbe
     playUntilPaused(app);
     lessonAfterFrames(app.lesson, app.sim, app.view);
     EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Moment) << "step " << number;
-    return lessonCaption(app.lesson, app.sim);
+    return captionText(lessonCaption(app.lesson, app.sim));
 }
 
 bool has(const std::string& text, const std::string& part) {
@@ -350,8 +350,9 @@ TEST(LessonMidDemo, BouncinessChangedAtTheSetup) {
     App app = lessonApp();
     ASSERT_TRUE(enterStep(app, 2));
     app.sim.world().settings.bounciness = 0.9;
-    EXPECT_TRUE(has(lessonCaption(app.lesson, app.sim), "with C = 0.9. Its velocity after"))
-        << lessonCaption(app.lesson, app.sim);
+    EXPECT_TRUE(
+        has(captionText(lessonCaption(app.lesson, app.sim)), "with C = 0.9. Its velocity after"))
+        << captionText(lessonCaption(app.lesson, app.sim));
     const std::string text = changedMoment(app, 3, [](World& w) { w.settings.bounciness = 0.9; });
     EXPECT_TRUE(has(text, "Answer: With C = 0.9: A. v' = -C·v = -0.9·4 = -3.6 m/s")) << text;
     EXPECT_TRUE(has(text, "As written: A, -2 m/s and 2 J.")) << text;
