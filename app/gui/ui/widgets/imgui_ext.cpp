@@ -78,6 +78,12 @@ void stopTyping() {
     if (ImGui::GetIO().WantTextInput) ImGui::ClearActiveID();
 }
 
+void endFrameLeftOpen() {
+    if (!ImGui::GetCurrentContext()->WithinFrameScope) return;
+    ImGui::ErrorCheckEndFrameRecover(nullptr);
+    ImGui::EndFrame();
+}
+
 KeyboardFocus keyboardFocus() {
     const ImGuiContext& g = *ImGui::GetCurrentContext();
     const ImGuiIO& io = ImGui::GetIO();

@@ -45,6 +45,9 @@ void focusCurrentWindowForKeyboard();
 // Ends the typing into the active text field (a Ctrl+clicked slider, a file name), keeping what
 // was typed (as a click elsewhere does).
 void stopTyping();
+// After an exception left an ImGui frame open (the browser's frame goes on after an error): its
+// windows and stacks are closed as ImGui's own error recovery does, and the frame ended.
+void endFrameLeftOpen();
 // Where the keyboard's focus is: the control's id (0: none), whether its ring shows and its
 // rectangle (screen pixels, where the ring is drawn).
 struct KeyboardFocus {
