@@ -279,7 +279,7 @@ void frame(void* arg) {
     } catch (...) {
         what = "an unknown exception";
     }
-    endFrameLeftOpen(); // an ImGui frame the error left open (imgui_ext.h)
+    imgui_ext::endFrameLeftOpen(); // an ImGui frame the error left open (imgui_ext.h)
     w.app.ui.messages.error = "The sandbox met an error and goes on: " + printable(what);
     std::fprintf(stderr, "sandbox: %s\n", w.app.ui.messages.error.c_str());
     pageShowProgress("");
