@@ -3,6 +3,7 @@
 
 #include "imgui_ext.h"
 #include "overlay_window.h"
+#include "panel_rows.h"
 #include "renderer.h"
 #include "screen_text.h"
 
@@ -23,6 +24,15 @@ void logEvent(const App& app, const std::string& text) {
     if (!app.log.verbose) return;
     std::printf("%s\n", printable(text, kPrintablePath).c_str()); // names come from files
     std::fflush(stdout);
+}
+
+// The world's settings a reset or a step's start changed (not edits: an edit prints its own
+// line where it is applied), one line each as an edit's: "method: perfect".
+void logSettingsChanged(const App& app, const WorldSettings& before) {
+    for (const settings_table::WorldKey* row : panelOrder())
+        if (!settings_table::same(*row, before, app.sim.world().settings))
+            logEvent(app, row->key + std::string(": ") +
+                              settings_table::logValue(*row, app.sim.world().settings));
 }
 
 // The keyboard to `window` ("": back to the scene), said in the --verbose log when it changes.
@@ -109,23 +119,29 @@ void applyAction(App& app, Action action) {
     switch (action) {
     case Action::None:
         break;
-    case Action::Reset:
+    case Action::Reset: {
+        const WorldSettings before = app.sim.world().settings;
         if (applyLessonAction(app, action)) { // in a lesson: restart the step
             logEvent(app, ("lesson restart " + std::to_string(app.lesson.current + 1)).c_str());
-            break;
+        } else {
+            resetScene(app);
+            logEvent(app, "reset");
         }
-        resetScene(app);
-        logEvent(app, "reset");
+        logSettingsChanged(app, before);
         break;
-    case Action::ResetToFile:
+    }
+    case Action::ResetToFile: {
+        const WorldSettings before = app.sim.world().settings;
         if (applyLessonAction(app, action)) { // in a lesson: the step as written
             logEvent(app,
                      ("lesson step as written " + std::to_string(app.lesson.current + 1)).c_str());
-            break;
+        } else {
+            resetToFile(app);
+            logEvent(app, "reset to file");
         }
-        resetToFile(app);
-        logEvent(app, "reset to file");
+        logSettingsChanged(app, before);
         break;
+    }
     case Action::TogglePause:
         app.sim.paused = !app.sim.paused;
         break;
