@@ -577,6 +577,14 @@ def link(page, base):
     page.drag(x, y, x + 80, y - 40)  # now the link carries the scene, the method inside it
     page.wait(lambda: "#scene=" in page.evaluate("location.href") and
               "method=" not in page.evaluate("location.search"), "the address bar to follow")
+    # The address bar may have caught the drag on its way: it settles on where the block stopped.
+    settled = ""
+    for _ in range(20):
+        href = page.evaluate("location.href")
+        if href == settled:
+            break
+        settled = href
+        page.wait_frames(60)
     edited = page.status()
     check(edited["method"] == "move-and-correct", f"S did not change the method: {edited}")
     url = page.evaluate("location.href")

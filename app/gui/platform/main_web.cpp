@@ -48,7 +48,8 @@ struct WebApp {
     // and when that scene was last made (s on the page's clock).
     std::string linkQuery, linkScene;
     double linkSceneAt = -1e9;
-    double pixelRatio = 1.0; // the ratio app.view.uiScale includes (the user's scale times it)
+    std::size_t linkJournal = 0; // the edits journaled when the scene was last made
+    double pixelRatio = 1.0;     // the ratio app.view.uiScale includes (the user's scale times it)
     TouchInput touch;
     imgui_ext::ScrollTarget touchScrolls; // what a swipe scrolls: the window under the finger
     bool typingShown = false;             // the page's field for the on-screen keyboard has focus
@@ -108,7 +109,10 @@ void followLink(WebApp& w, double now) {
     std::string scene = w.linkScene;
     if (!linkCarriesScene(app) || linkSceneTooLarge(app)) {
         scene.clear();
-    } else if (scene.empty() || (app.sim.paused && now - w.linkSceneAt >= kLinkRefreshSeconds)) {
+    } else if (scene.empty() || app.sim.edits.journal().size() != w.linkJournal ||
+               (app.sim.paused && now - w.linkSceneAt >= kLinkRefreshSeconds)) {
+        // An edit since (a block dragged on: each move is journaled) makes it again at once.
+        w.linkJournal = app.sim.edits.journal().size();
         scene = sceneToJson(linkedScene(app));
         w.linkSceneAt = now;
     }
