@@ -25,6 +25,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <deque>
 #include <exception>
