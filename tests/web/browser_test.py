@@ -704,11 +704,13 @@ def undo(page, base):
     disabled = lambda id: page.evaluate(f"document.getElementById('{id}').disabled")
     check(disabled("c-undo") and disabled("c-redo"), "Undo or Redo enabled with nothing done")
     set_c(page, "0.25")
-    check(not disabled("c-undo"), "Undo disabled after an edit")
+    # The page's controls follow the app's state at their next refresh (a few frames).
+    page.wait(lambda: not disabled("c-undo"), "Undo to be enabled after an edit")
     click("c-undo")
     s = page.status()
     check(s["bounciness"] == 1.0, f"Undo did not take C back: {s}")
     check(s["note"] == "undo: bounciness 0.25 -> 1.00", f"the note: {s['note']!r}")
+    page.wait(lambda: not disabled("c-redo"), "Redo to be enabled after an undo")
     click("c-redo")
     check(page.status()["bounciness"] == 0.25, "Redo did not set C again")
     # A block dragged (several moves) is one edit: Ctrl+Z puts it back exactly, Ctrl+Y moves it.
