@@ -873,10 +873,11 @@ def keys(page, base):
           f"typed 0.7 and Enter: C = {s['bounciness']}, typing {s['typing']}")
     lecture_keys_only(said)
     type_into_slider("0", ".", "3")
-    said = press("Escape", "Escape", 27, [r"^key Esc: escape$", r"^escape: the field left$",
-                                           r"^bounciness: 0.7$"])
+    # Esc undoes the typing: C is 0.7 again (an edit line says so when the typing had changed it).
+    said = press("Escape", "Escape", 27, [r"^key Esc: escape$", r"^escape: the field left$"])
     only(said, r"^key Esc: escape$", r"^escape: the field left$", r"^bounciness: 0.7$")
     check(not page.status()["typing"], "Esc did not leave the field")
+    check(page.status()["bounciness"] == 0.7, f"Esc left C at {page.status()['bounciness']}")
     type_into_slider("0", ".", "6")
     said = press("F5", "F5", 116, [r"^key F5: present$", r"^present mode: on$"])
     only(said, r"^key F5: present$", r"^present mode: on$", r"^bounciness: 0.6$")
