@@ -319,7 +319,7 @@ extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_open_lesson() {
 
 // For the browser tests: the --verbose log on (1) or off, printed to the page's console.
 extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_verbose(int on) {
-    if (gWeb) gWeb->app.log.verbose = on != 0;
+    if (gWeb) gWeb->app.log.verbose = gWeb->app.sim.verbose = on != 0; // the edits print too
 }
 
 // Called by web/index.html's first-visit hint: opens the help (its keys, or on a touch screen its
