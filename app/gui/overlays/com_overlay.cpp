@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace {
 
@@ -106,7 +107,28 @@ void drawMomentaDiagram(App& app) {
     }
 }
 
+// The marker's radius, px.
+float markerRadius(const App& app) {
+    return 9.0f * app.view.uiScale;
+}
+
+// Where the centre of mass's velocity arrow ends (m): u, or w = 0 in its own frame.
+Vec2 comArrowTip(const App& app, const CentreOfMass& c) {
+    return c.position +
+           (c.velocity - frameVelocity(app.sim.world(), app.view.frame)) * kVelocityArrowScale;
+}
+
 } // namespace
+
+std::vector<ScreenRect> comMarkerOnScreen(const App& app) {
+    const CentreOfMass c = centreOfMass(app.sim.world());
+    if (!app.view.show.com || !c.valid) return {};
+    const ImVec2 p = toScreen(app, c.position), head = toScreen(app, comArrowTip(app, c));
+    const float r = markerRadius(app), hw = 7.0f * app.view.uiScale; // the head, half its width
+    return {{p.x - r, p.y - r, 2.0f * r, 2.0f * r},
+            {std::min(p.x, head.x) - hw, std::min(p.y, head.y) - hw,
+             std::abs(head.x - p.x) + 2.0f * hw, std::abs(head.y - p.y) + 2.0f * hw}};
+}
 
 void drawComOverlay(App& app) {
     const CentreOfMass c = centreOfMass(app.sim.world());
@@ -114,23 +136,47 @@ void drawComOverlay(App& app) {
         const SceneLabelFont font(app);
         ImDrawList* dl = ImGui::GetBackgroundDrawList();
         const ImVec2 p = toScreen(app, c.position);
-        const float r = 9.0f * app.view.uiScale;
+        const float r = markerRadius(app);
         const ImU32 col = uiMarkColor(Mark::CentreOfMass);
         // In its own frame the centre of mass stands still: no arrow.
-        const Vec2 tip =
-            c.position +
-            (c.velocity - frameVelocity(app.sim.world(), app.view.frame)) * kVelocityArrowScale;
+        const Vec2 tip = comArrowTip(app, c);
         arrow(dl, p, toScreen(app, tip), col, 3.0f * app.view.uiScale, 13.0f * app.view.uiScale);
         dl->AddCircleFilled(
             p, r, uiLightTheme() ? IM_COL32(255, 255, 255, 220) : IM_COL32(20, 20, 20, 220));
         dl->AddCircle(p, r, col, 20, 2.5f * app.view.uiScale);
         dl->AddLine(ImVec2(p.x - r, p.y), ImVec2(p.x + r, p.y), col, 2.0f);
         dl->AddLine(ImVec2(p.x, p.y - r), ImVec2(p.x, p.y + r), col, 2.0f);
+        // The marker and its arrow are taken on screen (by the scene's labels, drawn before,
+        // too): no label goes over them.
+        const std::vector<ScreenRect> taken = comMarkerOnScreen(app);
+        for (const ScreenRect& box : taken) app.ui.takenOnScreen.blocks.push_back(box);
+        app.view.shownMarks.push_back({"centre of mass", taken.front()});
+        // On one line, or two where one would take more than a third of the scene's width (a
+        // 1024x768 projector: it ran past the scene's edge and over m2).
         char text[96];
         std::snprintf(text, sizeof text, "centre of mass  u = (%.2f, %.2f) m/s", c.velocity.x,
                       c.velocity.y);
-        const ImVec2 at = placeSceneLabel(
-            app, ImVec2(p.x + r + 4.0f, p.y - r - ImGui::GetFontSize()), ImGui::CalcTextSize(text));
+        if (ImGui::CalcTextSize(text).x > app.view.camera.viewport().width / 3.0) {
+            std::snprintf(text, sizeof text, "centre of mass\nu = (%.2f, %.2f) m/s", c.velocity.x,
+                          c.velocity.y);
+        }
+        // Beside the marker on its first free side (right, below, left, above); where none is
+        // free, where placeSceneLabel finds room, with a leader line to the marker (lecture3 step
+        // 10 wrote it over m2, whom it does not name).
+        const ImVec2 ts = ImGui::CalcTextSize(text);
+        const float g = 4.0f * app.view.uiScale;
+        const std::vector<ImVec2> tries = {ImVec2(p.x + r + g, p.y - ts.y * 0.5f),
+                                           ImVec2(p.x - ts.x * 0.5f, p.y + r + g),
+                                           ImVec2(p.x - r - g - ts.x, p.y - ts.y * 0.5f),
+                                           ImVec2(p.x - ts.x * 0.5f, p.y - r - g - ts.y)};
+        const ImVec2 at = placeSceneLabelAtOneOf(app, tries, ts);
+        // The label's point nearest the marker; a leader line where it is not beside it.
+        const ImVec2 near(std::clamp(p.x, at.x, at.x + ts.x), std::clamp(p.y, at.y, at.y + ts.y));
+        const float dx = near.x - p.x, dy = near.y - p.y, d = std::sqrt(dx * dx + dy * dy);
+        if (d > r + 2.0f * g) {
+            dl->AddLine(ImVec2(p.x + dx / d * r, p.y + dy / d * r), near, col,
+                        1.5f * app.view.uiScale);
+        }
         if (!uiLightTheme()) dl->AddText(ImVec2(at.x + 1, at.y + 1), IM_COL32(0, 0, 0, 220), text);
         dl->AddText(at, col, text);
     }

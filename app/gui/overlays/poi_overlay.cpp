@@ -45,14 +45,32 @@ void label(ImDrawList* dl, ImVec2 at, Mark mark, const std::string& text) {
     dl->AddText(at, uiMarkColor(mark), text.c_str());
 }
 
+bool poiShown(const App& app) {
+    const PoiView& p = app.sim.run.poi;
+    return app.view.show.poi && p.valid && p.block >= 0 &&
+           p.block < static_cast<int>(app.sim.world().blocks.size());
+}
+
 } // namespace
+
+std::vector<ScreenRect> poiBoxesOnScreen(const App& app) {
+    if (!poiShown(app)) return {};
+    const PoiView& p = app.sim.run.poi;
+    std::vector<ScreenRect> out;
+    for (const Vec2 c : {p.oldPosition, p.ghost, p.crooked, p.newPosition}) {
+        const ImVec2 a = toScreen(app, c - p.size * 0.5), b = toScreen(app, c + p.size * 0.5);
+        out.push_back(
+            {std::min(a.x, b.x), std::min(a.y, b.y), std::abs(b.x - a.x), std::abs(b.y - a.y)});
+    }
+    return out;
+}
 
 void drawPoiOverlay(App& app) {
     const SceneLabelFont font(app);
     const PoiView& p = app.sim.run.poi;
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     const float s = app.view.uiScale;
-    if (!p.valid || p.block < 0 || p.block >= static_cast<int>(app.sim.world().blocks.size())) {
+    if (!poiShown(app)) {
         const char* text = "Point of impact: shown after the watched block's next collision";
         const ImVec2 size = ImGui::CalcTextSize(text);
         label(dl, sceneCaptionPlace(app, size.x, size.y, {}), Mark::PoiOld, text);
@@ -81,14 +99,11 @@ void drawPoiOverlay(App& app) {
                              {p.ghost, "POI", Mark::PoiContact, {2, 0, 3, 1}},
                              {p.crooked, "moved back", Mark::PoiMovedBack, {1, 3, 0, 2}},
                              {p.newPosition, "new", Mark::PoiNew, {1, 3, 2, 0}}};
-    for (const Marked& m : marks) {
-        if (m.mark == Mark::PoiMovedBack && !movedBack) continue;
-        const ImVec2 a = toScreen(app, m.centre - p.size * 0.5),
-                     b = toScreen(app, m.centre + p.size * 0.5);
-        const ScreenRect r{std::min(a.x, b.x), std::min(a.y, b.y), std::abs(b.x - a.x),
-                           std::abs(b.y - a.y)};
-        app.ui.takenOnScreen.blocks.push_back(r);
-        app.view.shownMarks.push_back({m.text, r});
+    const std::vector<ScreenRect> boxes = poiBoxesOnScreen(app); // in the order of `marks`
+    for (std::size_t k = 0; k < boxes.size(); ++k) {
+        if (marks[k].mark == Mark::PoiMovedBack && !movedBack) continue;
+        app.ui.takenOnScreen.blocks.push_back(boxes[k]);
+        app.view.shownMarks.push_back({marks[k].text, boxes[k]});
     }
     const float hw = static_cast<float>(app.view.camera.metresToPixels(p.size.x * 0.5));
     const float hh = static_cast<float>(app.view.camera.metresToPixels(p.size.y * 0.5));
@@ -124,7 +139,8 @@ void drawPoiOverlay(App& app) {
                              uiMarkColor(Mark::PoiContact), uiMarkColor(Mark::PoiMovedBack)};
     std::vector<CaptionLine> caption;
     for (int i = 0; i < 4; ++i) caption.push_back({lines[i], colors[i], true});
-    std::vector<WorldBox> boxes;
-    for (Vec2 c : {p.oldPosition, p.newPosition, p.ghost, p.crooked}) boxes.push_back({c, p.size});
-    drawSceneCaption(app, caption, boxes);
+    std::vector<WorldBox> inWorld;
+    for (Vec2 c : {p.oldPosition, p.newPosition, p.ghost, p.crooked})
+        inWorld.push_back({c, p.size});
+    drawSceneCaption(app, caption, inWorld);
 }

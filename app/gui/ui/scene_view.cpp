@@ -118,20 +118,46 @@ ImVec2 freeSpot(const Taken& placed, const ScreenRect& view, float x, float abov
 
 constexpr int kCrowdedScene = 20; // blocks
 
-// `placed`: the rectangles taken on screen, the blocks and each label (the arrows' values
-// avoid them).
-void drawLabels(const App& app, ImDrawList* dl, Taken& placed) {
-    const int n = static_cast<int>(app.sim.world().blocks.size());
-    if (n > kMaxLabelledBlocks) return;
-    const float lineHeight = ImGui::GetFontSize();
-    // Rectangles already taken on screen: the blocks themselves, then each label placed.
-    placed.blocks.reserve(static_cast<std::size_t>(n));
+// Takes the blocks' rectangles on screen (placed.blocks[i] is block i's), then the overlays'
+// marks drawn later (the point of impact's boxes, the centre of mass): no label goes over them.
+void takeBlocks(const App& app, Taken& placed) {
+    placed.blocks.reserve(app.sim.world().blocks.size());
     for (const Block& b : app.sim.world().blocks) {
         const Vec2 lo = app.view.camera.worldToScreen(b.position - b.size * 0.5);
         const Vec2 hi = app.view.camera.worldToScreen(b.position + b.size * 0.5);
         placed.blocks.push_back(spanning(std::min(lo.x, hi.x), std::min(lo.y, hi.y),
                                          std::max(lo.x, hi.x), std::max(lo.y, hi.y)));
     }
+    for (const ScreenRect& box : poiBoxesOnScreen(app)) placed.blocks.push_back(box);
+    for (const ScreenRect& box : comMarkerOnScreen(app)) placed.blocks.push_back(box);
+}
+
+// The top of a label of `size` at x inside block `own`'s rectangle (placed.blocks[own]) that
+// overlaps no other block: `top` (centred) where that is clear, else the clear row nearest it in
+// the block; NAN where no row of the block is clear.
+float clearRowInside(const Taken& placed, std::size_t own, float x, float top, ImVec2 size) {
+    const ScreenRect& box = placed.blocks[own];
+    const auto clear = [&](float y) {
+        const ScreenRect r{x, y, size.x, size.y};
+        for (std::size_t j = 0; j < placed.blocks.size(); ++j)
+            if (j != own && rectsOverlap(r, placed.blocks[j])) return false;
+        return true;
+    };
+    const float lowest = static_cast<float>(box.y + box.height) - size.y - 1.0f;
+    const float highest = static_cast<float>(box.y) + 1.0f;
+    for (float d = 0.0f; top - d >= highest || top + d <= lowest; d += 2.0f) {
+        if (top - d >= highest && clear(top - d)) return top - d;
+        if (top + d <= lowest && clear(top + d)) return top + d;
+    }
+    return NAN;
+}
+
+// `placed`: the rectangles taken on screen, the blocks and each label (the arrows' values
+// avoid them).
+void drawLabels(const App& app, ImDrawList* dl, Taken& placed) {
+    const int n = static_cast<int>(app.sim.world().blocks.size());
+    if (n > kMaxLabelledBlocks) return;
+    const float lineHeight = ImGui::GetFontSize();
     for (int i = 0; i < n; ++i) {
         const Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
         const bool named = i < static_cast<int>(app.sim.labels.size()) &&
@@ -153,18 +179,26 @@ void drawLabels(const App& app, ImDrawList* dl, Taken& placed) {
         const ImVec2 nameSize = ImGui::CalcTextSize(name.c_str());
         const ImVec2 secondSize = ImGui::CalcTextSize(second);
         const bool twoLines = second[0] && hPx > 2.6 * lineHeight && secondSize.x < wPx - 6.0;
-        const bool inside = nameSize.x < wPx - 6.0 && hPx > lineHeight + 4.0;
+        const float labelW = twoLines ? std::max(nameSize.x, secondSize.x) : nameSize.x;
+        const float labelH = (twoLines ? 2.0f : 1.0f) * lineHeight;
+        // On the block, centred, or moved up or down in it off the blocks over it (a block
+        // sinking into the one under it: lecture3 step 18); else beside it.
+        const float top =
+            nameSize.x < wPx - 6.0 && hPx > lineHeight + 4.0
+                ? clearRowInside(placed, static_cast<std::size_t>(i),
+                                 static_cast<float>(c.x) - labelW * 0.5f,
+                                 static_cast<float>(c.y) - labelH * 0.5f, ImVec2(labelW, labelH))
+                : NAN;
+        const bool inside = std::isfinite(top);
         // White with a dark shadow on the block; the theme's text colour beside it.
         const ImU32 white = IM_COL32(255, 255, 255, 240);
         const ImU32 beside = packed(theme().text);
         if (inside) {
-            const float top = static_cast<float>(c.y) - (twoLines ? lineHeight : lineHeight * 0.5f);
             shadowText(dl, ImVec2(static_cast<float>(c.x) - nameSize.x * 0.5f, top), white,
                        name.c_str());
             // On its block (taken already): noted as a text too, which a caption should not hide.
-            const float labelW = twoLines ? std::max(nameSize.x, secondSize.x) : nameSize.x;
-            placed.texts.push_back(spanning(c.x - labelW * 0.5, top, c.x + labelW * 0.5,
-                                            top + (twoLines ? 2.0f : 1.0f) * lineHeight));
+            placed.texts.push_back(
+                spanning(c.x - labelW * 0.5, top, c.x + labelW * 0.5, top + labelH));
             if (twoLines) {
                 shadowText(dl,
                            ImVec2(static_cast<float>(c.x) - secondSize.x * 0.5f, top + lineHeight),
@@ -220,8 +254,9 @@ void drawAxisNumbers(const App& app, ImDrawList* dl, Taken& placed) {
         return x >= vp.x && y >= vp.y && x + size.x <= vp.x + vp.width &&
                y + size.y <= vp.y + vp.height;
     };
-    // Not under the status badge (taken before them): a number it would hide is left out.
-    const std::vector<ScreenRect> under = placed.texts;
+    // Not under the status badge (taken before them) nor over a number drawn before (the x and
+    // the y axis's 0 at the corner, at UI scale 2): such a number is left out.
+    const std::vector<ScreenRect>& under = placed.texts;
     const auto draw = [&](float x, float y, const char* text) {
         const ImVec2 size = ImGui::CalcTextSize(text);
         const ScreenRect r{x, y, size.x, size.y};
@@ -268,7 +303,7 @@ void drawAxisNumbers(const App& app, ImDrawList* dl, Taken& placed) {
 
 // The collision count, large, in the world's top right corner, where the count is the lesson:
 // few blocks, no gravity and many collisions (high_mass_ratio's 3141).
-void drawLargeCount(const App& app, ImDrawList* dl) {
+void drawLargeCount(const App& app, ImDrawList* dl, Taken& placed) {
     std::size_t dynamic = 0;
     for (const Block& b : app.sim.world().blocks) dynamic += b.isDynamic();
     // (No gravity: the count is the lesson only where nothing rests.)
@@ -283,32 +318,45 @@ void drawLargeCount(const App& app, ImDrawList* dl) {
     const float size = ImGui::GetFontSize() * 3.0f;
     const ImVec2 ts = font->CalcTextSizeA(size, 1e9f, 0.0f, text);
     const ScreenRect world = worldRectOnScreen(app.view.camera, app.sim.world().bounds);
-    const ImVec2 at(static_cast<float>(world.x + world.width) - ts.x - 12.0f * app.view.uiScale,
-                    static_cast<float>(world.y) + 8.0f * app.view.uiScale);
-    const ImU32 color = uiLightTheme() ? IM_COL32(30, 40, 60, 230) : IM_COL32(240, 240, 250, 230);
-    dl->AddText(font, size, at, color, text);
     const char* unit = "collisions";
     const ImVec2 us = ImGui::CalcTextSize(unit);
-    dl->AddText(ImVec2(at.x + ts.x - us.x, at.y + ts.y), packed(theme().axis), unit);
+    // The count over its unit, as one text: there, or moved off the blocks and the texts.
+    const ImVec2 both(std::max(ts.x, us.x), ts.y + us.y);
+    const ScreenRect& vp = app.view.camera.viewport();
+    const float right =
+        std::min(static_cast<float>(world.x + world.width), static_cast<float>(vp.x + vp.width)) -
+        12.0f * app.view.uiScale;
+    const float top =
+        std::max(static_cast<float>(world.y), static_cast<float>(vp.y)) + 8.0f * app.view.uiScale;
+    const ImVec2 spot = freeSpot(placed, vp, right - both.x, top, top, both, ImGui::GetFontSize());
+    placed.texts.push_back({spot.x, spot.y, both.x, both.y});
+    const ImVec2 at(spot.x + both.x - ts.x, spot.y);
+    const ImU32 color = uiLightTheme() ? IM_COL32(30, 40, 60, 230) : IM_COL32(240, 240, 250, 230);
+    dl->AddText(font, size, at, color, text);
+    dl->AddText(ImVec2(spot.x + both.x - us.x, at.y + ts.y), packed(theme().axis), unit);
 }
 
-// The row for a text of size `ts` at (x, y): there, or moved down a line at a time (at most
-// six) until it overlaps nothing in `placed`; where the rows down leave `view`, up instead.
-float freeRow(const Taken& placed, const ScreenRect& view, float x, float y, ImVec2 ts) {
+// The spot for a text of size `ts` at (x, y): there, or moved down a line at a time (at most
+// six) until it overlaps nothing in `placed`; where the rows down leave `view`, up instead; where
+// no row is free, a free spot sideways (freeSpot: lecture3 step 27's values were written over the
+// blocks of a pile), else the row covering the least.
+ImVec2 freeRow(const Taken& placed, const ScreenRect& view, float x, float y, ImVec2 ts) {
     float best = y;
     double least = INFINITY;
     for (const float direction : {1.0f, -1.0f}) {
         for (int k = 0; k < 6; ++k) {
             const float row = y + direction * static_cast<float>(k) * ts.y;
             const double covered = coveredAt(placed, view, x, row, ts, 4.0f);
-            if (covered == 0.0) return row;
+            if (covered == 0.0) return ImVec2(x, row);
             if (covered < least) {
                 least = covered;
                 best = row;
             }
         }
     }
-    return best; // none free: the row covering the least
+    const ImVec2 aside = freeSpot(placed, view, x, y, y, ts, ts.y);
+    if (coveredAt(placed, view, aside.x, aside.y, ts, 4.0f) == 0.0) return aside;
+    return ImVec2(x, best); // none free: the row covering the least
 }
 
 // A value written at the head of an arrow (from `base` to `tip`, m) cut at the view's edge or the
@@ -327,13 +375,13 @@ void drawValueAtTip(const App& app, ImDrawList* dl, Taken& placed, Vec2 base, Ve
         if (x + ts.x > vp.x + vp.width) x = static_cast<float>(at.x) - 8.0f - ts.x;
     }
     x = std::clamp(x, static_cast<float>(vp.x), static_cast<float>(vp.x + vp.width) - ts.x);
-    const float y =
+    const ImVec2 spot =
         freeRow(placed, vp, x,
                 std::clamp(static_cast<float>(at.y) - ts.y - 6.0f, static_cast<float>(vp.y),
                            static_cast<float>(vp.y + vp.height) - ts.y),
                 ts);
-    placed.texts.push_back(spanning(x, y, x + ts.x, y + ts.y));
-    shadowText(dl, ImVec2(x, y), color, text.c_str(), packed(theme().textShadow));
+    placed.texts.push_back({spot.x, spot.y, ts.x, ts.y});
+    shadowText(dl, spot, color, text.c_str(), packed(theme().textShadow));
 }
 
 // Block `i`'s velocity and mass as the collision inspector prints them, when they are what the
@@ -464,10 +512,9 @@ void drawArrowValues(const App& app, ImDrawList* dl, Taken& placed) {
         }
         const float x = std::clamp(static_cast<float>(at.x) - ts.x * 0.5f, static_cast<float>(vp.x),
                                    static_cast<float>(vp.x + vp.width) - ts.x);
-        const float y = freeRow(placed, vp, x, static_cast<float>(at.y), ts);
-        placed.texts.push_back(spanning(x, y, x + ts.x, y + ts.y));
-        shadowText(dl, ImVec2(x, y), packed(theme().velocity), text.c_str(),
-                   packed(theme().textShadow));
+        const ImVec2 spot = freeRow(placed, vp, x, static_cast<float>(at.y), ts);
+        placed.texts.push_back({spot.x, spot.y, ts.x, ts.y});
+        shadowText(dl, spot, packed(theme().velocity), text.c_str(), packed(theme().textShadow));
         ++written;
     }
 }
@@ -624,10 +671,12 @@ void drawSceneDecorations(App& app) {
     placed.texts.clear();
     // The badge first: the axis numbers and the labels go around it (a label or a number under
     // it was hidden: lecture3 steps 3, 8 and 23).
+    takeBlocks(app, placed);
     const ScreenRect badge = drawStatusBadge(app, dl);
     if (badge.width > 0.0) placed.texts.push_back(badge);
     drawAxisNumbers(app, dl, placed);
     drawReferenceLine(app, dl, placed);
+    drawLargeCount(app, dl, placed); // before the labels and values: they go around it
     drawLabels(app, dl, placed);
     drawArrowValues(app, dl, placed);
     drawMomentumValues(app, dl, placed);
@@ -637,7 +686,6 @@ void drawSceneDecorations(App& app) {
     forces.thrustBlock = app.sim.pushedBlock(); // the thrust, or the player's push
     forces.thrust = app.sim.pushForce();
     drawForceValues(app, forces, dl, placed);
-    drawLargeCount(app, dl);
     drawFlingReadout(app, dl);
     ImGui::PopFont();
     drawHoverTooltip(app);

@@ -1,11 +1,14 @@
 // The lesson sweep at the lecture halls' other screens (issue 39): every step of
 // lessons/lecture3.json at its setup and its moment on a 1280x800 and a 1024x768 projector at UI
-// scales 1 and 1.5, and at 1920x1080 at 1.5 (the README's projector setting), from one run of
+// scales 1 and 1.5, at 1920x1080 at 1.5 (the README's projector setting) and 2, at 1280x720 and
+// 1920x1200 at 1.25, 1366x768 at 1.5 and 3840x2160 at 2 (kScreens), from one run of
 // `sandbox-offscreen --record-steps DIR --screens ...` (the layout and text JSON of each, nothing
 // rasterised: DIR/WxH_uiS/step_NN_setup.* and step_NN_moment.*). Checked on each: the caption bar
 // takes at most 30% of the height and none of its text is cut, the setup asks and the moment
 // answers whole, and the world at the answer keeps at least 85% of its area at the setup (the
-// windows the moment opens do not squeeze the scene). The figures per screen are printed.
+// windows the moment opens do not squeeze the scene); no text drawn over the scene overlaps
+// another or a block or mark it does not name; the blocks a step names are big enough to see.
+// The figures per screen are printed.
 #include "frame_json.h"
 #include "lesson.h"
 
@@ -13,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -31,10 +35,14 @@ struct Screen {
     double uiScale;
     const char* dir; // as sandbox-offscreen names it (ClassroomScreen::name)
 };
+// The halls' projectors and laptops, at the UI scales a lecturer sets on them (and the panel
+// fits at): one sandbox-offscreen run writes them all (about 0.8 s a screen).
 const Screen kScreens[] = {
-    {1280, 800, 1.0, "1280x800_ui1"},     {1280, 800, 1.5, "1280x800_ui1.5"},
-    {1024, 768, 1.0, "1024x768_ui1"},     {1024, 768, 1.5, "1024x768_ui1.5"},
-    {1920, 1080, 1.5, "1920x1080_ui1.5"},
+    {1280, 800, 1.0, "1280x800_ui1"},       {1280, 800, 1.5, "1280x800_ui1.5"},
+    {1024, 768, 1.0, "1024x768_ui1"},       {1024, 768, 1.5, "1024x768_ui1.5"},
+    {1920, 1080, 1.5, "1920x1080_ui1.5"},   {1280, 720, 1.25, "1280x720_ui1.25"},
+    {1366, 768, 1.5, "1366x768_ui1.5"},     {1920, 1080, 2.0, "1920x1080_ui2"},
+    {1920, 1200, 1.25, "1920x1200_ui1.25"}, {3840, 2160, 2.0, "3840x2160_ui2"},
 };
 
 struct Shot {
@@ -206,6 +214,143 @@ TEST(LessonScreens, TheAnswerKeepsAtLeast85PercentOfTheWorld) {
         std::printf("%s: the world at the answer keeps at least %.1f%% of its setup area\n",
                     screen.dir, 100.0 * least);
     }
+}
+
+// A scene text "names" a block or a mark when it says its name as a word ("m2", "m1 = 1 kg",
+// "centre of mass  u = ..."), or lies wholly on that block (its own label's second line, "2 kg").
+bool says(const std::string& text, const std::string& name) {
+    if (name.empty()) return false;
+    const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+    for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
+        const std::size_t end = at + name.size();
+        if ((at == 0 || !word(text[at - 1])) && (end == text.size() || !word(text[end])))
+            return true;
+    }
+    return false;
+}
+
+// The two share more than a pixel each way (antialiased edges and shadows touch).
+bool sharesAPixel(const Rect& a, const Rect& b) {
+    const double w = std::min(a.x + a.w, b.x + b.w) - std::max(a.x, b.x);
+    const double h = std::min(a.y + a.h, b.y + b.h) - std::max(a.y, b.y);
+    return w > 1.0 && h > 1.0;
+}
+
+bool onIt(const Rect& in, const Rect& out) {
+    return inside(in, Rect{out.x - 1.0, out.y - 1.0, out.w + 2.0, out.h + 2.0});
+}
+
+// Known, not yet fixed (issue 39), each at the screens named: a scene text over another.
+struct KnownOverlap {
+    const char* screen;
+    std::size_t step;
+    bool moment;
+    const char* why;
+};
+const KnownOverlap kKnownOverlaps[] = {
+    // The point of impact's caption plate must cover the world somewhere: it hides a y-axis number.
+    {"1024x768_ui1.5", 4, true, "the caption plate over the axis number 10"},
+    {"1280x800_ui1.5", 5, true, "the caption plate over the axis number 10"},
+    {"1366x768_ui1.5", 5, true, "the caption plate over the axis number 10"},
+    {"1920x1080_ui2", 5, true, "the caption plate over the axis number 10"},
+    {"1024x768_ui1.5", 18, false, "'top' beside its block, over the x-axis numbers"},
+    {"1024x768_ui1.5", 27, true, "the momenta's values over the pile's blocks"},
+};
+
+bool knownOverlap(const Shot& s) {
+    for (const KnownOverlap& k : kKnownOverlaps)
+        if (s.screen->dir == std::string(k.screen) && s.step == k.step && s.moment == k.moment)
+            return true;
+    return false;
+}
+
+// Labels never lie about whom they name: no text drawn over the scene (labels, values, axis
+// numbers, the overlays' labels) overlaps another, or a block or a mark (the point of impact's
+// boxes, the centre of mass) it does not name.
+TEST(LessonScreens, NoSceneTextOverlapsAnotherOrWhatItDoesNotName) {
+    for (const Screen& screen : kScreens) {
+        int overlaps = 0;
+        for (const Shot& s : shots()) {
+            if (s.screen != &screen || !s.layout.is_object() || knownOverlap(s)) continue;
+            std::vector<const nlohmann::json*> scene;
+            for (const auto& t : s.texts)
+                if (t.at("window") == "scene") scene.push_back(&t);
+            for (std::size_t i = 0; i < scene.size(); ++i) {
+                const std::string text = scene[i]->at("text").get<std::string>();
+                const Rect r = rectOf(scene[i]->at("rect"));
+                for (std::size_t j = i + 1; j < scene.size(); ++j) {
+                    if (!sharesAPixel(r, rectOf(scene[j]->at("rect")))) continue;
+                    ++overlaps;
+                    ADD_FAILURE() << s.name() << ": '" << text << "' " << printed(r)
+                                  << " overlaps '" << scene[j]->at("text").get<std::string>()
+                                  << "' " << printed(rectOf(scene[j]->at("rect")));
+                }
+                for (const char* list : {"blocks", "marks"}) {
+                    for (const auto& b : s.layout.at(list)) {
+                        const std::string name = b.at("name").get<std::string>();
+                        const Rect box = rectOf(b.at("rect"));
+                        if (!sharesAPixel(r, box) || says(text, name) ||
+                            (list == std::string("blocks") && onIt(r, box)))
+                            continue;
+                        ++overlaps;
+                        ADD_FAILURE() << s.name() << ": '" << text << "' " << printed(r) << " over "
+                                      << name << " " << printed(box);
+                    }
+                }
+            }
+        }
+        std::printf("%s: %d scene texts over another or over what they do not name (known "
+                    "cases skipped: kKnownOverlaps)\n",
+                    screen.dir, overlaps);
+    }
+}
+
+// Steps whose named blocks are still under the size at some screen (issue 39: a camera that
+// frames what the step asks about, or a magnifier, still to do). Each is printed; a step listed
+// that passes at every screen fails the test, so that the list only shrinks.
+const std::size_t kStepsStillSmall[] = {1, 2, 5, 9, 11, 13, 14, 15, 16, 18, 20, 21, 23, 24, 26};
+
+bool stillSmall(std::size_t step) {
+    return std::find(std::begin(kStepsStillSmall), std::end(kStepsStillSmall), step) !=
+           std::end(kStepsStillSmall);
+}
+
+// The evidence is big enough: every block the step names (its name a word of the caption bar's
+// text) at least 40 px on its short side at the setup and the moment, 28 px on a 1024x768 screen.
+TEST(LessonScreens, TheBlocksAStepNamesAreBigEnough) {
+    std::vector<bool> small(lecture3().steps.size() + 1, false);
+    for (const Screen& screen : kScreens) {
+        const double least = screen.width <= 1024 ? 28.0 : 40.0;
+        double smallest = 1e9;
+        int under = 0, known = 0;
+        for (const Shot& s : shots()) {
+            if (s.screen != &screen || !s.layout.is_object()) continue;
+            const std::string words = captionWords(s);
+            for (const auto& b : s.layout.at("blocks")) {
+                const std::string name = b.at("name").get<std::string>();
+                if (!says(words, name)) continue;
+                const Rect box = rectOf(b.at("rect"));
+                const double side = std::min(box.w, box.h);
+                smallest = std::min(smallest, side);
+                if (side >= least) continue;
+                small[s.step] = true;
+                if (stillSmall(s.step)) {
+                    ++known;
+                    continue;
+                }
+                ++under;
+                ADD_FAILURE() << s.name() << ": " << name << " is " << printed(box) << ", under "
+                              << least << " px";
+            }
+        }
+        std::printf("%s: the blocks the steps name at least %.1f px (under %.0f px: %d, and %d in "
+                    "the steps still to frame)\n",
+                    screen.dir, smallest, least, under, known);
+    }
+    for (const std::size_t step : kStepsStillSmall)
+        EXPECT_TRUE(small.at(step)) << "step " << step
+                                    << " is big enough at every screen now: take it out of "
+                                       "kStepsStillSmall";
 }
 
 } // namespace

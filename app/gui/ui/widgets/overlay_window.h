@@ -28,6 +28,12 @@ void recordShownWindow(App& app, const char* name);
 std::string nextWindowForKeyboard(const App& app);
 // Where the camera shows the world's point `p` (m) on screen (px), as ImGui draws it.
 ImVec2 toScreen(const App& app, Vec2 p);
+// The point of impact's boxes on screen (old, POI, moved back, new; px) when its overlay shows
+// them this frame, else none: the scene's labels, drawn before the overlays, go around them.
+std::vector<ScreenRect> poiBoxesOnScreen(const App& app);
+// The centre of mass's marker and its arrow on screen (px) when its overlay is on, else none
+// (com_overlay.cpp).
+std::vector<ScreenRect> comMarkerOnScreen(const App& app);
 // Where an overlay's label of `size` px wanted at `at` (its top-left) goes over the scene: there,
 // or moved up or down by lines (then sideways) until it lies in the scene's view and overlaps
 // nothing taken on screen this frame (the blocks, their labels, the axis numbers, the arrows'
