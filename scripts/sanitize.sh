@@ -5,7 +5,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs="$(nproc)"
+# -O1 with line tables only, as the sanitizers' own documentation advises: reports still name
+# file:line, and the build takes about a third less time than the default -O2 -g (CI time).
 CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG" \
+  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG" \
   -DSANDBOX_SANITIZE=address,undefined -DSANDBOX_BUILD_APP=OFF -DSANDBOX_BUILD_BENCH=OFF \
   -DSANDBOX_WERROR=ON >/dev/null
 cmake --build build-asan -j"$jobs"
@@ -18,6 +22,11 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # The outside hostile-input suite (hostile_outside.*, issue 28) is never run here: it drives the
 # Release programs (the window and sandbox-offscreen, not built here) under `ulimit -v`, which
 # ASan's shadow memory cannot live with (every case aborted). scripts/test.sh runs it.
+# Stability.EnergyAtTheExtremesGrowsAsDocumented runs issue 28's two extreme runs in-process
+# (35 s under ASan): cli.energy_extreme_turn_based and cli.energy_extreme_perfect run the same two
+# files through sandbox-cli here and the other Stability tests run the matrix's code on smaller
+# worlds, so under ASan it would add 35 s and no code path.
 skip='hostile_outside\.'
-[ "${SANITIZE_ALL:-0}" = 1 ] || skip+='|JammedBox\.TenThousandBlocks'
+[ "${SANITIZE_ALL:-0}" = 1 ] ||
+  skip+='|JammedBox\.TenThousandBlocks|Stability\.EnergyAtTheExtremesGrowsAsDocumented'
 ctest --test-dir build-asan --output-on-failure -j"$jobs" -E "$skip" "$@"
