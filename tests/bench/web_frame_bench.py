@@ -12,8 +12,8 @@ sitting, taken in turns), at 1280x720:
     with every overlay on, and at ratio 2 for the default scene with every overlay on;
   - the first frame: ms from the start of loading to the first frame shown (the page's
     window.sandboxFirstFrame), on a warm server and cache (the page loaded once before).
-Each figure is the median over the rounds (default 3); with two SITEs the after's medians are
-also given as a share of the before's. `--only TEXT` takes only the cases whose names hold TEXT
+Each figure is the median over the rounds (default 3); each SITE after the first also has its
+medians given as a share of the first's. `--only TEXT` takes only the cases whose names hold TEXT
 (and no first frame). The machine's load matters: the load average is printed at the start and
 the end; report it with the figures.
 """
@@ -126,9 +126,10 @@ def main():
             f"{statistics.median(p for _, p in v):.2f} ms" for k, v in results[site].items()) +
             (f", first frame {statistics.median(first[site]):.0f} ms" if first[site] else ""))
     print("load average at the end: %.2f %.2f %.2f" % os.getloadavg())
-    if len(args) == 2:  # before and after: the after's medians as a share of the before's
-        before, after = (results[site] for site in args)
-        print("  after / before (medians): " + ", ".join(
+    before = results[args[0]]  # each later site's medians as a share of the first one's
+    for site in args[1:]:
+        after = results[site]
+        print(f"  {site} / {args[0]} (medians): " + ", ".join(
             f"{k} {statistics.median(m for m, _ in after[k]) / statistics.median(m for m, _ in v):.2f}"
             for k, v in before.items()))
     for server, _ in servers.values():
