@@ -198,6 +198,9 @@ bool canvasInit(CanvasWeb& c, std::string* error) {
         return false;
     }
     glfwSetKeyCallback(c.window, onKey); // instead of ImGui's, which onKey calls
+    // Emscripten's GLFW has no cursors (glfwSetCursor does nothing), and ImGui's backend would set
+    // the cursor's mode every frame, which there leaves the pointer lock each time.
+    ImGui::GetIO().ConfigFlags |= ImGuiConfigFlags_NoMouseCursorChange;
     c.lastTime = glfwGetTime();
     return true;
 }

@@ -55,11 +55,12 @@ struct WebApp {
     imgui_ext::ScrollTarget touchScrolls; // what a swipe scrolls: the window under the finger
     bool typingShown = false;             // the page's field for the on-screen keyboard has focus
     long long frames = 0;
-    double realTime = 0.0;  // s since the first frame (the live region's pace)
-    std::string shownState; // pageStateJson() as the page last got it
-    SpokenScreen spoken;    // the screen as the live region last told it (spoken_text.h)
-    double stateAt = -1e9;  // realTime when the page's text was last made
-    double linkAt = -1e9;   // the page's clock (s) when the link was last looked at
+    double realTime = 0.0;    // s since the first frame (the live region's pace)
+    std::string shownState;   // pageStateJson() as the page last got it
+    SpokenScreen spoken;      // the screen as the live region last told it (spoken_text.h)
+    double stateAt = -1e9;    // realTime when the page's text was last made
+    double linkAt = -1e9;     // the page's clock (s) when the link was last looked at
+    double settingsAt = -1e9; // realTime when the settings were last looked at
     // Files dropped or picked, opened in turn, each a frame after the page says "Opening ..."
     // (openFilesInTurn); `openingShown`: the page says it for the first one.
     std::deque<std::string> opening;
@@ -77,6 +78,10 @@ void followPixelRatio(WebApp& w) {
     setUiScale(w.app.view, static_cast<float>(w.app.view.uiScale / w.pixelRatio * ratio));
     w.pixelRatio = ratio;
 }
+
+// The settings are looked at every kSettingsSeconds rather than every frame (formatting them is
+// a good part of a quiet frame's work), and when the page goes away (sandbox_web_save_settings).
+constexpr double kSettingsSeconds = 0.5;
 
 void saveSettings(WebApp& w) {
     // Only a shipped scene is there next time (opened, saved and linked ones live in memory).
@@ -267,7 +272,10 @@ void runFrame(WebApp& w) {
     tellPage(w, realSeconds);
     followTyping(w);
     followLink(w, emscripten_get_now() / 1000.0);
-    saveSettings(w);
+    if (w.realTime - w.settingsAt >= kSettingsSeconds) {
+        w.settingsAt = w.realTime;
+        saveSettings(w);
+    }
     if (w.frames++ == 0) pageFirstFrameShown();
 }
 
@@ -305,6 +313,11 @@ std::string navigationJson() {
 }
 
 } // namespace
+
+// Called by web/index.html when the page is hidden or left: the settings are kept now.
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_save_settings() {
+    if (gWeb) saveSettings(*gWeb);
+}
 
 // Called by web/index.html with what the page's text field got from the on-screen keyboard.
 extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_typed(unsigned int codepoint) {

@@ -31,8 +31,8 @@ struct UiRenderer {
     GLuint fontTexture = 0;
     bool fontsChanged = true;
     std::vector<UiDrawRun> runs;
-    std::vector<ImDrawVert> vertices; // GL ES: every list's, uploaded at once
-    std::vector<ImDrawIdx> indices;
+    std::vector<ImDrawVert> vertices;   // GL ES: every list's, uploaded at once
+    std::vector<std::uint32_t> indices; // GL ES: every list's, into all the vertices
 };
 UiRenderer gUi;
 
@@ -92,17 +92,15 @@ void setupRenderState(const ImDrawData* data, int framebufferWidth, int framebuf
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gUi.indexBuffer);
 }
 
-// The vertex attributes read ImGui's vertices from `firstVertex` on (the VAO and the vertex buffer
-// bound): how the browser's WebGL 2, which has no glDrawElementsBaseVertex, honours VtxOffset.
-void pointAttributesAt(unsigned firstVertex) {
+// The vertex attributes read ImGui's vertices (the VAO and the vertex buffer bound).
+void pointAttributes() {
     const auto stride = static_cast<GLsizei>(sizeof(ImDrawVert));
-    const std::size_t base = std::size_t{firstVertex} * sizeof(ImDrawVert);
     glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<void*>(base + offsetof(ImDrawVert, pos)));
+                          reinterpret_cast<void*>(offsetof(ImDrawVert, pos)));
     glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<void*>(base + offsetof(ImDrawVert, uv)));
+                          reinterpret_cast<void*>(offsetof(ImDrawVert, uv)));
     glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
-                          reinterpret_cast<void*>(base + offsetof(ImDrawVert, col)));
+                          reinterpret_cast<void*>(offsetof(ImDrawVert, col)));
 }
 
 } // namespace
@@ -124,11 +122,11 @@ bool uiRendererInit(std::string* error) {
     glEnableVertexAttribArray(0);
     glEnableVertexAttribArray(1);
     glEnableVertexAttribArray(2);
-    pointAttributesAt(0);
+    pointAttributes();
     glBindVertexArray(0);
     ImGuiIO& io = ImGui::GetIO();
     io.BackendRendererName = "sandbox_gl33";
-    io.BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset; // base vertex, or re-pointed
+    io.BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset; // base vertex, or added
     gUi.fontsChanged = true;
     return true;
 }
@@ -195,50 +193,60 @@ namespace {
 
 // The browser's WebGL 2 (GL ES): every call crosses from wasm to JavaScript and on to the GPU
 // process, which costs more than it saves to skip texturing, and a GPU rasterises anyway. So
-// every list's vertices and indices are uploaded at once, and each command is one draw with the
-// textured program (solid shapes sample the atlas's white texel: the same colours).
+// every list's vertices are uploaded at once, with the indices as 32-bit numbers into all of them
+// (WebGL 2 has no glDrawElementsBaseVertex: the base vertex is added here, so the attributes
+// never move), and each command is one draw with the textured program (solid shapes sample the
+// atlas's white texel: the same colours), its scissor set only when it changes.
 void renderForWebGl(const ImDrawData* data, int fbWidth, int fbHeight) {
     gUi.vertices.clear();
-    gUi.indices.clear();
+    gUi.indices.resize(static_cast<std::size_t>(data->TotalIdxCount));
+    std::size_t listIndices = 0; // where the list starts in the index buffer
     for (int n = 0; n < data->CmdListsCount; ++n) {
         const ImDrawList* list = data->CmdLists[n];
+        const auto listVertices = static_cast<std::uint32_t>(gUi.vertices.size());
         gUi.vertices.insert(gUi.vertices.end(), list->VtxBuffer.begin(), list->VtxBuffer.end());
-        gUi.indices.insert(gUi.indices.end(), list->IdxBuffer.begin(), list->IdxBuffer.end());
+        for (const ImDrawCmd& cmd : list->CmdBuffer) {
+            const std::uint32_t base = listVertices + cmd.VtxOffset;
+            const ImDrawIdx* from = list->IdxBuffer.Data + cmd.IdxOffset;
+            std::uint32_t* to = gUi.indices.data() + listIndices + cmd.IdxOffset;
+            for (unsigned k = 0; k < cmd.ElemCount; ++k) to[k] = base + from[k];
+        }
+        listIndices += static_cast<std::size_t>(list->IdxBuffer.Size);
     }
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(gUi.vertices.size() * sizeof(ImDrawVert)),
                  gUi.vertices.data(), GL_STREAM_DRAW);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-                 static_cast<GLsizeiptr>(gUi.indices.size() * sizeof(ImDrawIdx)),
+                 static_cast<GLsizeiptr>(gUi.indices.size() * sizeof(std::uint32_t)),
                  gUi.indices.data(), GL_STREAM_DRAW);
     glUseProgram(gUi.textured.program);
-    const GLenum indexType = sizeof(ImDrawIdx) == 2 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT;
-    unsigned listVertices = 0, listIndices = 0; // where the list starts in the buffers
-    unsigned attributesAt = ~0u;                // the first vertex the attributes point at
-    GLuint texture = ~0u;                       // the texture bound
+    GLuint texture = ~0u;           // the texture bound
+    ImVec4 scissor(-1, -1, -1, -1); // the clip rectangle the scissor box was last set to
+    listIndices = 0;
     for (int n = 0; n < data->CmdListsCount; ++n) {
         const ImDrawList* list = data->CmdLists[n];
         for (const ImDrawCmd& cmd : list->CmdBuffer) {
             if (cmd.UserCallback) {
                 runCallback(list, cmd, data, fbWidth, fbHeight);
                 glUseProgram(gUi.textured.program);
-                attributesAt = texture = ~0u;
+                texture = ~0u;
+                scissor = ImVec4(-1, -1, -1, -1);
                 continue;
             }
-            if (!scissorTo(cmd, data, fbHeight, nullptr)) continue;
+            const ImVec4& clip = cmd.ClipRect;
+            if (clip.x != scissor.x || clip.y != scissor.y || clip.z != scissor.z ||
+                clip.w != scissor.w) {
+                if (!scissorTo(cmd, data, fbHeight, nullptr)) continue;
+                scissor = clip;
+            }
             if (textureName(cmd.GetTexID()) != texture) {
                 texture = textureName(cmd.GetTexID());
                 glBindTexture(GL_TEXTURE_2D, texture);
             }
-            if (listVertices + cmd.VtxOffset != attributesAt) {
-                attributesAt = listVertices + cmd.VtxOffset;
-                pointAttributesAt(attributesAt);
-            }
-            const std::size_t first = std::size_t{listIndices} + cmd.IdxOffset;
-            glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(cmd.ElemCount), indexType,
-                           reinterpret_cast<void*>(first * sizeof(ImDrawIdx)));
+            const std::size_t first = listIndices + cmd.IdxOffset;
+            glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(cmd.ElemCount), GL_UNSIGNED_INT,
+                           reinterpret_cast<void*>(first * sizeof(std::uint32_t)));
         }
-        listVertices += static_cast<unsigned>(list->VtxBuffer.Size);
-        listIndices += static_cast<unsigned>(list->IdxBuffer.Size);
+        listIndices += static_cast<std::size_t>(list->IdxBuffer.Size);
     }
     glDisable(GL_SCISSOR_TEST);
     glBindVertexArray(0);

@@ -1,0 +1,129 @@
+#!/usr/bin/python3
+"""Where the browser build's frame time goes: Chromium's own CPU profiler (the DevTools
+protocol's Profiler domain) over the running page, its samples summed by function.
+
+  tests/bench/web_profile.py SITE [QUERY] [--frames N] [--ratio R] [--top K] [--gl-calls]
+
+SITE is a build-web/ folder; QUERY the page's URL parameters (e.g. "scene=gas_500&show=plots").
+Build the site with wasm function names kept to read them (a profiling build: the link's
+--profiling-funcs, which changes no code):
+
+  SANDBOX_WEB_OUT=$PWD/build-web-prof scripts/web.sh build -DCMAKE_EXE_LINKER_FLAGS=--profiling-funcs
+
+At 1280x720 (ratio R, default 1), the simulation running, after 30 frames to warm up, the page is
+profiled over N frames (default 300) and the functions with the most self time are printed, as
+a share of the time inside the page's requestAnimationFrame callbacks (the frames' JavaScript,
+timed as web_frame_bench.py times it) and in ms per frame. A profile, not a benchmark: the shares
+hold under load, the ms do not. With --gl-calls, the WebGL calls per frame are counted by name
+instead (each crosses from wasm to JavaScript and into the browser's WebGL).
+"""
+import collections
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import web_frame_bench  # noqa: E402  (its TIMER, serve, and browser_test's Page)
+
+browser_test = web_frame_bench.browser_test
+
+# Counts the page's WebGL calls by name (installed before the page's scripts run).
+GL_COUNTER = """
+(() => {
+  window.sandboxGlCalls = {};
+  const proto = WebGL2RenderingContext.prototype;
+  for (const name of Object.getOwnPropertyNames(proto)) {
+    const d = Object.getOwnPropertyDescriptor(proto, name);
+    if (typeof d.value !== 'function' || name === 'constructor') continue;
+    const f = d.value;
+    proto[name] = function () {
+      window.sandboxGlCalls[name] = (window.sandboxGlCalls[name] || 0) + 1;
+      return f.apply(this, arguments);
+    };
+  }
+})();
+"""
+
+
+def self_times(profile):
+    """ms of self time per (function, place), from the profile's nodes and sample deltas."""
+    nodes = {n["id"]: n for n in profile["nodes"]}
+    ms = collections.Counter()
+    for node_id, delta in zip(profile["samples"], profile["timeDeltas"]):
+        frame = nodes[node_id]["callFrame"]
+        name = frame["functionName"] or "(anonymous)"
+        place = os.path.basename(frame["url"]) if frame["url"] else ""
+        ms[(name, place)] += delta / 1000.0
+    return ms
+
+
+def main():
+    args = sys.argv[1:]
+    options = {"--frames": 300, "--ratio": 1.0, "--top": 15}
+    count_gl = "--gl-calls" in args  # count the WebGL calls per frame instead of profiling
+    if count_gl:
+        args.remove("--gl-calls")
+    for key in list(options):
+        if key in args:
+            at = args.index(key)
+            options[key] = type(options[key])(args[at + 1])
+            del args[at:at + 2]
+    if not args:
+        print(__doc__)
+        return 2
+    site, query = args[0], (args[1] if len(args) > 1 else "")
+    server, base = web_frame_bench.serve(site)
+    page = browser_test.Page(1280, 720, options["--ratio"])
+    try:
+        page.call("Page.addScriptToEvaluateOnNewDocument", source=web_frame_bench.TIMER)
+        if count_gl:
+            page.call("Page.addScriptToEvaluateOnNewDocument", source=GL_COUNTER)
+        page.open(base + ("?" + query if query else ""))
+        if page.status()["paused"]:
+            page.key("p", "KeyP", 80)
+        page.wait(lambda: not page.status()["paused"], "the simulation to run")
+        count = "window.sandboxFrameMs.length"
+        start = page.evaluate(count)
+        page.wait(lambda: page.evaluate(count) >= start + 30, "warm-up frames")
+        if count_gl:
+            before = page.evaluate("Object.assign({}, window.sandboxGlCalls)")
+            start = page.evaluate(count)
+            page.wait(lambda: page.evaluate(count) >= start + options["--frames"], "the frames")
+            after = page.evaluate("Object.assign({}, window.sandboxGlCalls)")
+            frames = page.evaluate(count) - start
+            calls = {k: (v - before.get(k, 0)) / frames for k, v in after.items()}
+            print(f"{site} ?{query}: {sum(calls.values()):.1f} WebGL calls per frame:")
+            for name, n in sorted(calls.items(), key=lambda kv: -kv[1]):
+                if n >= 0.05:
+                    print(f"  {n:7.1f}  {name}")
+            return 0
+        page.call("Profiler.enable")
+        page.call("Profiler.setSamplingInterval", interval=100)  # us
+        start = page.evaluate(count)
+        page.call("Profiler.start")
+        page.wait(lambda: page.evaluate(count) >= start + options["--frames"], "the frames")
+        profile = page.call("Profiler.stop")["profile"]
+        end = page.evaluate(count)
+        frames = page.evaluate(f"window.sandboxFrameMs.slice({start}, {end})")
+    finally:
+        page.close()
+        server.shutdown()
+    ms = self_times(profile)
+    in_frames = sum(frames)
+    idle = {"(idle)", "(program)", "(garbage collector)"}
+    busy = sum(v for (name, _), v in ms.items() if name not in idle)
+    print(f"{site} ?{query} ratio {options['--ratio']}: {len(frames)} frames, "
+          f"{in_frames / len(frames):.2f} ms of JavaScript per frame (mean; median "
+          f"{sorted(frames)[len(frames) // 2]:.2f}); samples: {busy / len(frames):.2f} ms per "
+          "frame in functions, the rest idle, (program) or GC")
+    for name in sorted(idle):
+        total = sum(v for (n, _), v in ms.items() if n == name)
+        print(f"  {name}: {total / len(frames):.2f} ms per frame")
+    print(f"top {options['--top']} functions by self time (share of the time in functions):")
+    top = [(k, v) for k, v in ms.most_common() if k[0] not in idle][:options["--top"]]
+    for (name, place), v in top:
+        print(f"  {100 * v / busy:5.1f}%  {v / len(frames):6.3f} ms/frame  {name}  {place}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
