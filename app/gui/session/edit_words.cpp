@@ -4,6 +4,7 @@
 #include "scene.h"
 #include "scene_json.h"
 #include "settings_table.h"
+#include "text_format.h"
 
 #include <cstdio>
 #include <cstring>
@@ -68,22 +69,29 @@ std::string fieldText(const settings_table::BlockKey& row, const BlockDef& def) 
     return printedPair(format, {value[0].get<double>(), value[1].get<double>()});
 }
 
-std::string blockName(const std::vector<BlockLabel>& labels, int index) {
-    const auto i = static_cast<std::size_t>(index);
-    return i < labels.size() && !labels[i].name.empty() ? labels[i].name
-                                                        : refText(BlockRef{index, ""});
-}
-
 } // namespace
 
-std::string editLogLine(const Edit& logged, const World& world) {
+std::string spokenBlockName(const std::vector<BlockLabel>& labels, int index) {
+    const auto i = static_cast<std::size_t>(index);
+    if (i >= labels.size() || labels[i].name.empty()) return refText(BlockRef{index, ""});
+    const std::string base = baseBlockName(labels[i].name);
+    for (std::size_t j = 0; j < labels.size(); ++j) {
+        if (j != i && (labels[j].name == base || baseBlockName(labels[j].name) == base))
+            return labels[i].name; // two blocks would be called that
+    }
+    return base;
+}
+
+std::string editLogLine(const Edit& logged, int index, const World& world,
+                        const std::vector<BlockLabel>& labels) {
     switch (logged.kind) {
     case Edit::Kind::SetWorld:
         if (const settings_table::WorldKey* row = settings_table::findWorldKey(logged.key))
             return logged.key + ": " + settings_table::logValue(*row, world.settings);
         break;
-    case Edit::Kind::SetBlock:
-        return editKey(logged) + ": " + scene_json::dumpValue(logged.value);
+    case Edit::Kind::SetBlock: // "m2 mass: 4" (the block "m2 = 2 kg")
+        return spokenBlockName(labels, index) + " " + logged.key + ": " +
+               scene_json::dumpValue(logged.value);
     case Edit::Kind::Add:
         return "add: blocks[" + std::to_string(world.blocks.size() - 1) + "]";
     case Edit::Kind::Remove:
@@ -107,7 +115,7 @@ std::string editChangeText(const AppliedEdit& a, bool undone,
     case Edit::Kind::SetBlock: {
         const settings_table::BlockKey& row = settings_table::blockKey(a.edit.key.c_str());
         const std::string before = fieldText(row, a.before), after = fieldText(row, a.after);
-        return blockName(labels, a.index) + " " + row.key + " " +
+        return spokenBlockName(labels, a.index) + " " + row.key + ": " +
                (undone ? after + arrow + before : before + arrow + after);
     }
     case Edit::Kind::Add: // "undo: add new 4"

@@ -80,7 +80,8 @@ EditError SimulationSession::apply(const Edit& edit, bool continues) {
     if (!r.applied) return r.error;
     afterEdit(*r.applied, false);
     const bool named = !edits.journalFull() && !edits.journal().empty();
-    printEdit(editLogLine(named ? edits.journal().back().edit : edit, world()));
+    printEdit(
+        editLogLine(named ? edits.journal().back().edit : edit, r.applied->index, world(), labels));
     return {};
 }
 
