@@ -130,6 +130,10 @@ void SimulationSession::playEditLog() {
     }
 }
 
+void SimulationSession::printSetup(const std::vector<Edit>& setup) const {
+    for (const Edit& edit : setup) printEdit("setup: " + editLogLine(edit, -1, world(), labels));
+}
+
 void SimulationSession::printEdit(const std::string& line) const {
     if (!verbose) return;
     std::printf("%s\n", printable(line, kPrintablePath).c_str()); // names come from files

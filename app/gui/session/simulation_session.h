@@ -152,6 +152,10 @@ struct SimulationSession {
     // Plays the edit log's lines due at the world's frame (step() does after each frame; call it
     // after setting editLog). A refused line sets editLogError and the notice and stops the log.
     void playEditLog();
+    // A lesson step's own setup (its "overrides", already in the scene it was given): one
+    // --verbose line each, as the edit prints ("setup: method: move-and-correct"). Not an edit
+    // of the run: nothing to undo, nothing in the journal.
+    void printSetup(const std::vector<Edit>& setup) const;
     // True when quitting would lose edits (see blocksEdited).
     bool unsavedEdits() const;
 
