@@ -43,6 +43,7 @@ void SimulationSession::restartRun() {
 void SimulationSession::setScene(const Scene& newScene, const std::string& path) {
     scene = newScene;
     scenePath = path;
+    ++changes;
     selected = -1;
     paused = true;
     blocksEdited = false;
@@ -141,6 +142,7 @@ void SimulationSession::printEdit(const std::string& line) const {
 }
 
 void SimulationSession::afterEdit(const AppliedEdit& a, bool undone) {
+    ++changes;
     const bool blocks = a.edit.kind != Edit::Kind::SetWorld;
     // The selection follows blocks added and removed before it.
     if (a.edit.kind == Edit::Kind::Add || a.edit.kind == Edit::Kind::Remove) {

@@ -113,6 +113,10 @@ struct SimulationSession {
     bool blocksEdited = false;
     // The edits applied (the undo and redo stacks, the journal since the last load or R).
     EditHistory edits;
+    // Counts every change to the world through the door (an edit, undo or redo) and every
+    // scene set: a reader that keeps the count sees the world changed since (the class poll
+    // rewords its question).
+    std::uint64_t changes = 0;
     // An edit log playing (--edits; docs/edits.md): each line applies when the world reaches its
     // frame. R and Shift+R play it again from its start; loading another scene drops it.
     LogPlayer editLog;
