@@ -125,3 +125,28 @@ std::string editChangeText(const AppliedEdit& a, bool undone,
     }
     return editKey(a.edit);
 }
+
+std::string editNowText(const AppliedEdit& a, bool undone, const std::vector<BlockLabel>& labels) {
+    switch (a.edit.kind) {
+    case Edit::Kind::SetWorld: {
+        const settings_table::WorldKey* row = settings_table::findWorldKey(a.edit.key);
+        if (!row) break;
+        const std::string symbol = *row->shown.symbol ? std::string(" ") + row->shown.symbol : "";
+        return std::string(row->shown.name) + symbol + " is now " +
+               settingText(*row, undone ? a.settingsBefore : a.settingsAfter);
+    }
+    case Edit::Kind::SetBlock: {
+        const settings_table::BlockKey& row = settings_table::blockKey(a.edit.key.c_str());
+        return spokenBlockName(labels, a.index) + " " + row.key + " is now " +
+               fieldText(row, undone ? a.before : a.after);
+    }
+    case Edit::Kind::Add:
+    case Edit::Kind::Remove: {
+        const BlockDef& def = a.edit.kind == Edit::Kind::Add ? a.after : a.before;
+        const std::string name =
+            def.name.empty() ? refText({a.index, ""}) : baseBlockName(def.name);
+        return name + ((a.edit.kind == Edit::Kind::Add) != undone ? " added" : " removed");
+    }
+    }
+    return editKey(a.edit);
+}

@@ -22,3 +22,8 @@ std::string editLogLine(const Edit& logged, int index, const World& world,
 // "m2 mass: 4 kg -> 2 kg" (the block as spokenBlockName calls it).
 std::string editChangeText(const AppliedEdit& applied, bool undone,
                            const std::vector<BlockLabel>& labels);
+// What the world now has after undoing (`undone`) or doing `applied`, as a sentence a screen
+// reader says: "bounciness C is now 0.90", "frame rate is now 30 Hz", "m2 mass is now 4 kg",
+// "new 4 added", "m1 removed".
+std::string editNowText(const AppliedEdit& applied, bool undone,
+                        const std::vector<BlockLabel>& labels);

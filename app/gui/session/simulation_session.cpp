@@ -44,6 +44,7 @@ void SimulationSession::setScene(const Scene& newScene, const std::string& path)
     scene = newScene;
     scenePath = path;
     ++changes;
+    lastChange.clear();
     selected = -1;
     paused = true;
     blocksEdited = false;
@@ -143,6 +144,7 @@ void SimulationSession::printEdit(const std::string& line) const {
 
 void SimulationSession::afterEdit(const AppliedEdit& a, bool undone) {
     ++changes;
+    lastChange = editNowText(a, undone, labels);
     const bool blocks = a.edit.kind != Edit::Kind::SetWorld;
     // The selection follows blocks added and removed before it.
     if (a.edit.kind == Edit::Kind::Add || a.edit.kind == Edit::Kind::Remove) {

@@ -117,6 +117,9 @@ struct SimulationSession {
     // scene set: a reader that keeps the count sees the world changed since (the class poll
     // rewords its question).
     std::uint64_t changes = 0;
+    // The last change through the door, as a screen reader says it ("bounciness C is now
+    // 0.90", edit_words.h); "" after a scene is set.
+    std::string lastChange;
     // An edit log playing (--edits; docs/edits.md): each line applies when the world reaches its
     // frame. R and Shift+R play it again from its start; loading another scene drops it.
     LogPlayer editLog;
