@@ -1,6 +1,7 @@
 // Lesson files: parsing and validation (docs/lesson-format.md). The scene of a step is loaded
-// with the scene loader, its overrides merged into the scene's "world" object and validated by
-// the same loader, so a lesson accepts exactly the keys and values a scene file does.
+// with the scene loader; its overrides of world settings are edits, applied as any edit is
+// (applyEdit: the settings table's limits), and its "bounds" are merged into the scene's "world"
+// object and read by the same loader, so a lesson accepts exactly the values a scene file does.
 #include "lesson.h"
 
 #include "edit.h"
