@@ -1,14 +1,17 @@
 // Lesson files: parsing and validation (docs/lesson-format.md). The scene of a step is loaded
-// with the scene loader, its overrides merged into the scene's "world" object and validated by
-// the same loader, so a lesson accepts exactly the keys and values a scene file does.
+// with the scene loader; its overrides of world settings are edits, applied as any edit is
+// (applyEdit: the settings table's limits), and its "bounds" are merged into the scene's "world"
+// object and read by the same loader, so a lesson accepts exactly the values a scene file does.
 #include "lesson.h"
 
+#include "edit.h"
 #include "input_limits.h"
 #include "lesson_guards.h"
 #include "lesson_input.h"
 #include "lesson_questions.h"
 #include "printable.h"
 #include "scene_json.h"
+#include "settings_table.h"
 #include "vocabulary.h"
 
 #include <nlohmann/json.hpp>
@@ -68,6 +71,87 @@ struct SceneCache {
     }
 };
 
+// The keys of "overrides" that are not world keys of the settings table.
+constexpr const char* kStepOverrideKeys[] = {"frame_rate", "time_scale", "bounds"};
+
+std::string overrideKeyList() {
+    std::string list;
+    for (const settings_table::WorldKey& row : settings_table::worldKeys())
+        if (row.inScene) list += std::string(list.empty() ? "" : ", ") + row.key;
+    for (const char* key : kStepOverrideKeys) list += std::string(", ") + key;
+    return list;
+}
+
+// Reads a step's "overrides": its world settings become edits (out.overrides, "frame_rate" the
+// edit of dt), "time_scale" the step's; returns "bounds" when it is given (the scene's shape,
+// which no edit changes), else null. Only the form is checked here; the values where they apply.
+const json* readOverrides(const json& overrides, const std::string& overridesPath,
+                          LessonStep& out) {
+    const json* bounds = nullptr;
+    for (const auto& item : overrides.items()) {
+        const std::string key = item.key();
+        const std::string keyAt = keyPath(overridesPath, key);
+        if (key == "time_scale") {
+            out.timeScale = number(item.value(), keyAt);
+            if (const std::string bad = limits::violation(limits::kTimeScale, out.timeScale);
+                !bad.empty())
+                throw ValueError{keyAt, bad};
+        } else if (key == "frame_rate") {
+            if (overrides.contains("dt")) throw ValueError{keyAt, "give \"dt\" or \"frame_rate\""};
+            const double rate = number(item.value(), keyAt);
+            if (!(rate >= 1.0 && rate <= kMaxFrameRate))
+                throw ValueError{keyAt, "must be from 1 to 10000 frames per second"};
+            out.overrides.push_back(Edit::setWorld("dt", 1.0 / rate));
+        } else if (key == "bounds") {
+            bounds = &item.value();
+        } else {
+            const settings_table::WorldKey* row = settings_table::findWorldKey(key);
+            if (!row || !row->inScene)
+                throw ValueError{keyAt, "unknown key " + quoted(key) + " (expected " +
+                                            overrideKeyList() + ")"};
+            out.overrides.push_back(Edit::setWorld(key, item.value()));
+        }
+    }
+    return bounds;
+}
+
+// `settings` with the step's override edits applied as any edit is (applyEdit: the settings
+// table's limits and messages); a refused one is an error at its override.
+WorldSettings settingsAfter(const WorldSettings& settings, const std::vector<Edit>& edits,
+                            const std::string& overridesPath) {
+    World world; // world settings only: an edit of a world key reads no block
+    world.settings = settings;
+    std::vector<BlockLabel> labels;
+    for (const Edit& edit : edits) {
+        const ApplyResult r = applyEdit({world, labels}, edit);
+        if (!r.applied) {
+            // "dt" is the edit a "frame_rate" made (its range was checked where it was read).
+            throw ValueError{keyPath(overridesPath, edit.key), r.error.message};
+        }
+    }
+    return world.settings;
+}
+
+// The scene of `root` (a scene file's JSON) with its world's "bounds" replaced, read by the
+// scene loader (its blocks must fit in them); errors placed at the override.
+Scene sceneWithBounds(const json& root, const json& bounds, const std::string& overridesPath) {
+    json merged = root;
+    json world = merged.contains("world") ? merged["world"] : json::object();
+    world["bounds"] = bounds;
+    merged["world"] = world;
+    SceneResult scene = parseScene(merged.dump(), kInline);
+    if (scene.scene) return std::move(*scene.scene);
+    // "world.bounds" -> "steps[2].overrides.bounds"; anything else the bounds broke (a block now
+    // outside them) is placed at the overrides with the scene's path.
+    const ValueError e = sceneError(scene.error, "");
+    const std::string where = e.path.empty() ? "" : e.path.substr(1);
+    const std::string prefix = "world.bounds";
+    if (where.rfind(prefix, 0) == 0)
+        throw ValueError{keyPath(overridesPath, "bounds") + where.substr(prefix.size()), e.message};
+    throw ValueError{overridesPath,
+                     "with these overrides the scene fails: " + where + ": " + e.message};
+}
+
 // Loads the step's scene with its overrides applied; sets step.sceneSource and step.timeScale.
 void loadStepScene(const json& step, const std::string& path, const LessonContext& context,
                    SceneCache& cache, LessonStep& out) {
@@ -115,59 +199,19 @@ void loadStepScene(const json& step, const std::string& path, const LessonContex
 
     const std::string overridesPath = keyPath(path, "overrides");
     const json& overrides = requireObject(step["overrides"], overridesPath);
+    const json* bounds = readOverrides(overrides, overridesPath, out);
     // The same file with the same overrides: the scene already made for an earlier step.
     const std::string sharedKey =
         out.sceneSource.empty() ? "" : out.sceneSource + "\n" + overrides.dump();
     if (auto it = cache.withOverrides.find(sharedKey);
         !sharedKey.empty() && it != cache.withOverrides.end()) {
         out.scene = it->second;
-        if (overrides.contains("time_scale"))
-            out.timeScale = number(overrides["time_scale"], keyPath(overridesPath, "time_scale"));
         return;
     }
-    json merged = *root;
-    json world = merged.contains("world") ? merged["world"] : json::object();
-    std::vector<std::pair<std::string, std::string>> renamed; // world key -> override key
-    for (const auto& item : overrides.items()) {
-        const std::string key = item.key();
-        const std::string keyAt = keyPath(overridesPath, key);
-        if (key == "time_scale") {
-            out.timeScale = number(item.value(), keyAt);
-            if (const std::string bad = limits::violation(limits::kTimeScale, out.timeScale);
-                !bad.empty())
-                throw ValueError{keyAt, bad};
-        } else if (key == "frame_rate") {
-            if (overrides.contains("dt")) throw ValueError{keyAt, "give \"dt\" or \"frame_rate\""};
-            const double rate = number(item.value(), keyAt);
-            if (!(rate >= 1.0 && rate <= kMaxFrameRate))
-                throw ValueError{keyAt, "must be from 1 to 10000 frames per second"};
-            world["dt"] = 1.0 / rate;
-            renamed.emplace_back("dt", key);
-        } else {
-            world[key] = item.value(); // validated below, as the scene format's "world" key
-            renamed.emplace_back(key, key);
-        }
-    }
-    merged["world"] = world;
-    SceneResult mergedScene = parseScene(merged.dump(), kInline);
-    if (mergedScene.scene) {
-        out.scene = cache.keep(std::move(*mergedScene.scene), scenePath);
-        if (!sharedKey.empty()) cache.withOverrides.emplace(sharedKey, out.scene);
-        return;
-    }
-    // "world.bounciness" -> "steps[2].overrides.bounciness"; anything else the overrides broke
-    // (a block now out of the bounds) is placed at the overrides with the scene's path.
-    const ValueError e = sceneError(mergedScene.error, "");
-    const std::string where = e.path.empty() ? "" : e.path.substr(1);
-    for (const auto& [worldKey, overrideKey] : renamed) {
-        const std::string prefix = "world." + worldKey;
-        if (where == prefix || where.rfind(prefix + "[", 0) == 0 ||
-            where.rfind(prefix + ".", 0) == 0)
-            throw ValueError{keyPath(overridesPath, overrideKey) + where.substr(prefix.size()),
-                             e.message};
-    }
-    throw ValueError{overridesPath,
-                     "with these overrides the scene fails: " + where + ": " + e.message};
+    Scene setup = bounds ? sceneWithBounds(*root, *bounds, overridesPath) : *out.scene;
+    setup.settings = settingsAfter(setup.settings, out.overrides, overridesPath);
+    out.scene = cache.keep(std::move(setup), scenePath);
+    if (!sharedKey.empty()) cache.withOverrides.emplace(sharedKey, out.scene);
 }
 
 // ---- Pause point, camera, expectations ----

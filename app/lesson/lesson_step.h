@@ -116,6 +116,12 @@ struct LessonStep {
     // With the step's overrides applied; shared by the steps that name one file with the same
     // overrides (parsed once: a lesson of 1000 steps on one 200,000-block scene holds it once).
     std::shared_ptr<const Scene> scene;
+    // The step's "overrides" of world settings as edits ("frame_rate" the edit of dt), checked
+    // when the lesson is read as any edit is (applyEdit: the settings table's limits) and
+    // already in `scene`'s settings. They are the step, not a change to it: the app prints them
+    // (--verbose, "setup: method: move-and-correct") and keeps them off the undo stack, so
+    // Ctrl+Z never undoes a step's own setup (docs/lesson-format.md).
+    std::vector<Edit> overrides;
     double timeScale = 1.0;            // simulated seconds per real second (the app's Time scale)
     std::vector<std::string> overlays; // names from the overlay table, on while the step shows
     int selected = -1;                 // block index, -1 for none

@@ -123,6 +123,7 @@ std::string phoneViewJson(const PhoneView& v) {
     j["question"] = v.question;
     j["choices"] = v.choices;
     j["mine"] = v.mine ? nlohmann::json(*v.mine) : nlohmann::json(nullptr);
+    j["changed"] = v.setupChanged;
     // Invalid UTF-8 in a lesson's text is replaced, never a failure.
     return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }

@@ -33,6 +33,9 @@ class PollSession {
     bool open(int step, std::string* error);
     // Asks `q` as given (the window asks the question of the world the lecturer made).
     void open(const PollQuestion& q) { state_.open(q); }
+    // The setup changed while the vote is open: `q` asked instead, the votes for the old
+    // wording dropped (PollState::reword).
+    bool reword(const PollQuestion& q) { return state_.reword(q); }
     // The choice the run proved at the moment (-1: none): PollState::prove.
     void prove(int choice) { state_.prove(choice); }
     std::optional<PollRound> close();

@@ -11,6 +11,20 @@ void PollState::open(const PollQuestion& q) {
     current_ = PollRound{
         q.step, 1, q.question, q.choices, std::vector<int>(q.choices.size(), 0), 0, q.proved};
     votes_.clear();
+    dropped_.clear();
+}
+
+bool PollState::reword(const PollQuestion& q) {
+    std::lock_guard lock(mutex_);
+    if (!open_ || (q.question == current_.question && q.choices == current_.choices)) return false;
+    for (const auto& vote : votes_) dropped_.insert(vote.first);
+    votes_.clear();
+    current_.question = q.question;
+    current_.choices = q.choices;
+    current_.counts.assign(q.choices.size(), 0);
+    current_.voters = 0;
+    current_.proved = q.proved;
+    return true;
 }
 
 void PollState::closeLocked() {
@@ -34,6 +48,7 @@ bool PollState::revote() {
     std::fill(current_.counts.begin(), current_.counts.end(), 0);
     current_.voters = 0;
     votes_.clear();
+    dropped_.clear();
     return true;
 }
 
@@ -49,6 +64,7 @@ void PollState::clear() {
     closeLocked();
     asking_ = false;
     votes_.clear();
+    dropped_.clear();
 }
 
 bool PollState::join(const std::string& device) {
@@ -63,6 +79,7 @@ PollState::Vote PollState::vote(const std::string& device, int choice) {
     if (!open_) return Vote::Closed;
     if (choice < 0 || choice >= static_cast<int>(current_.counts.size())) return Vote::OutOfRange;
     if (!join(device)) return Vote::TooManyDevices;
+    dropped_.erase(device);
     auto [it, inserted] = votes_.try_emplace(device, choice);
     if (inserted) {
         current_.voters += 1;
@@ -86,6 +103,7 @@ PhoneView PollState::view(const std::string& device) {
     v.question = current_.question;
     v.choices = current_.choices;
     if (auto it = votes_.find(device); it != votes_.end() && !device.empty()) v.mine = it->second;
+    v.setupChanged = open_ && !device.empty() && dropped_.count(device) > 0;
     return v;
 }
 

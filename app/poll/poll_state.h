@@ -45,6 +45,9 @@ struct PhoneView {
     std::string question;
     std::vector<std::string> choices;
     std::optional<int> mine; // this device's vote in this round
+    // Its vote was dropped because the setup changed (PollState::reword) and it has not voted
+    // again: the page says "the setup changed: vote again".
+    bool setupChanged = false;
 };
 
 class PollState {
@@ -62,6 +65,12 @@ class PollState {
     // rounds, closed and open, say so (a changed world may prove another than the step as
     // written).
     void prove(int choice);
+    // The setup changed while the round is open (the lecturer changed C, a mass, the method):
+    // when `q` reads otherwise than the question asked, it is asked instead in the same round,
+    // and the votes cast so far are dropped (a prediction about another setup is another
+    // prediction); the phones that had voted are told to vote again (PhoneView::setupChanged).
+    // False, nothing changed, when no round is open or `q` reads the same.
+    bool reword(const PollQuestion& q);
     // Stops asking (the step changed): an open round is closed and kept.
     void clear();
 
@@ -83,6 +92,7 @@ class PollState {
     bool open_ = false;
     PollRound current_;
     std::map<std::string, int> votes_; // device -> choice, this round
+    std::set<std::string> dropped_;    // devices whose vote a reword dropped, not voted since
     std::set<std::string> devices_;    // joined
     std::vector<PollRound> results_;
     std::size_t firstRound_ = 0; // results_[firstRound_..]: the current question's rounds

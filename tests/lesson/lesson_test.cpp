@@ -279,6 +279,38 @@ TEST(Lesson, OverridesApplyAsSceneKeys) {
     EXPECT_EQ(step.scene->settings.gravity.y, -1.0);
     EXPECT_EQ(step.timeScale, 0.25);
     EXPECT_EQ(step.scene->blocks.size(), 2u);
+    // They are edits of world keys, as a step's "edits" and the edit log write them (the app
+    // prints each as the step's setup): "frame_rate" is the edit of dt, "time_scale" the step's.
+    std::vector<std::string> keys;
+    for (const Edit& e : step.overrides) {
+        EXPECT_EQ(e.kind, Edit::Kind::SetWorld);
+        keys.push_back(e.key);
+    }
+    EXPECT_EQ(keys,
+              (std::vector<std::string>{"bounciness", "dt", "gravity", "method", "substeps"}));
+}
+
+// An override is checked by the edit door's rules, and named where the lesson writes it; a key
+// that is neither a world key nor one of the step's own is refused with the keys it may be.
+TEST(LessonErrors, OverridesAreCheckedAsEdits) {
+    const auto errorWith = [](const std::string& fields) {
+        const LessonResult r = parseLesson(lessonWith(fields), "t.json", context());
+        EXPECT_FALSE(r.lesson) << fields;
+        return r.error.text();
+    };
+    EXPECT_EQ(errorWith(R"("overrides": {"bounciness": 2})"),
+              "t.json: steps[0].overrides.bounciness: must be from 0 to 1, not 2");
+    const std::string unknown = errorWith(R"("overrides": {"rest_speed": 1})");
+    EXPECT_NE(unknown.find("t.json: steps[0].overrides.rest_speed: unknown key \"rest_speed\" "
+                           "(expected gravity, bounciness, method, dt,"),
+              std::string::npos)
+        << unknown;
+    EXPECT_NE(unknown.find("friction, frame_rate, time_scale, bounds)"), std::string::npos)
+        << unknown;
+    // The bounds reshape the scene: its blocks must still fit, as in a scene file.
+    EXPECT_NE(
+        errorWith(R"("overrides": {"bounds": [0, 0, 5, 5]})").find("t.json: steps[0].overrides"),
+        std::string::npos);
 }
 
 TEST(Lesson, ShippedScenePathsAndSelection) {

@@ -107,6 +107,41 @@ TEST_F(PollProtocolTest, StateSaysTheQuestionAndThisDevicesVote) {
     EXPECT_EQ(state.snapshot().joined, 2);
 }
 
+// The lecturer changed the setup while the vote is open: the phones read the new wording, the
+// votes for the old one are dropped, and a phone that had voted is told to vote again until it
+// does; the same wording changes nothing.
+TEST_F(PollProtocolTest, ASetupChangedWhileTheVoteIsOpenAsksAgain) {
+    state.open(threeChoices());
+    vote("phone-0001", 2);
+    vote("phone-0002", 0);
+    EXPECT_FALSE(state.reword(threeChoices()));
+    EXPECT_EQ(state.snapshot().current.voters, 2);
+    PollQuestion changed = threeChoices();
+    changed.question = "With C = 0.5: what does m1 do?";
+    EXPECT_TRUE(state.reword(changed));
+    const auto stateOf = [&](const std::string& device) {
+        return nlohmann::json::parse(
+            protocol.handle(get("/" + kToken + "/state?device=" + device)).body);
+    };
+    const auto j = stateOf("phone-0001");
+    EXPECT_EQ(j["question"], "With C = 0.5: what does m1 do?");
+    EXPECT_EQ(j["round"], 1);
+    EXPECT_TRUE(j["mine"].is_null());
+    EXPECT_EQ(j["changed"], true);
+    EXPECT_EQ(stateOf("phone-0003")["changed"], false); // it had not voted
+    EXPECT_EQ(counts(), (std::vector<int>{0, 0, 0}));
+    EXPECT_EQ(vote("phone-0001", 1), 204);
+    EXPECT_EQ(stateOf("phone-0001")["changed"], false);
+    EXPECT_EQ(stateOf("phone-0002")["changed"], true);
+    EXPECT_EQ(counts(), (std::vector<int>{0, 1, 0}));
+    // Closed, the question is what it was when it closed: no reword.
+    state.close();
+    changed.question = "With C = 0.25: what does m1 do?";
+    EXPECT_FALSE(state.reword(changed));
+    EXPECT_EQ(state.results().back().question, "With C = 0.5: what does m1 do?");
+    EXPECT_EQ(stateOf("phone-0002")["changed"], false);
+}
+
 TEST_F(PollProtocolTest, ThePageCarriesTheTokenAndNoLessonText) {
     state.open({2, "<script>alert(1)</script>", {"<b>x</b>", "y"}, 0});
     const PollResponse page = protocol.handle(get("/" + kToken + "/"));

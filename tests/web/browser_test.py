@@ -39,7 +39,9 @@ DevTools protocol (python3-websocket). One check per run:
                 and with a lesson open
   live-region   lecture_example_1 played (with the page's own Play button) through its
                 collision leaves the live region saying it in the inspector's words; the page's
-                text names the scene and the lesson's step
+                text names the scene and the lesson's step; lecture3 step 3 with C set to 0.9
+                through the page's control says "bounciness C is now 0.90; the question now
+                reads: Predict: ... C = 0.9 ..."
   hidden-control  the page's hidden C control sets the world's C; a refused value is said
   undo          the page's hidden Undo and Redo buttons take C back and set it again (the note
                 says "undo: bounciness 0.25 -> 1.00"); a block dragged on the canvas is one edit:
@@ -654,6 +656,17 @@ def live_region(page, base):
           == "polite", "the live region is not polite")
     check("running" in text("reader-status"), f"status text: {text('reader-status')!r}")
     print(f"live region: {said!r}")
+    # A change mid-demo that rewords the step's question is said with the question as it now
+    # reads (lecture3 step 3 asks with C = 0.5; the page's C control sets 0.9).
+    page.open(base + "?lesson=lecture3&step=3")
+    check(page.status()["lessonStep"] == 3, "the lesson did not open at step 3")
+    page.wait(lambda: "step 3 of" in text("reader-live"), "step 3 said in the live region")
+    set_c(page, "0.9")
+    page.wait(lambda: "is now 0.90" in text("reader-live"), "the change in the live region")
+    said = text("reader-live")
+    check("bounciness C is now 0.90; the question now reads: Predict: " in said and
+          "C = 0.9" in said, f"the change is not said with the new question: {said!r}")
+    print(f"live region after C = 0.9: {said!r}")
 
 
 def set_c(page, value):

@@ -101,6 +101,23 @@ void followLesson(ClassPoll& poll, const LessonSession& lesson, const Simulation
         const std::optional<PollQuestion> q =
             pollQuestion(number, lessonPrompt(lesson, sim), -1, &poll.note);
         if (q) poll.session->open(*q);
+        poll.askedAt = sim.changes;
+    } else if (atSetup && poll.asked && sim.changes != poll.askedAt) {
+        // The lecturer changed the setup (C, a mass, the method, a block moved) while the step
+        // is asked: the phones are asked the question as the world now reads it, and a vote
+        // cast for the old wording is dropped (docs/poll.md, "The setup changed").
+        poll.askedAt = sim.changes;
+        if (poll.session->snapshot().open) {
+            std::string why;
+            const std::optional<PollQuestion> q =
+                pollQuestion(number, lessonPrompt(lesson, sim), -1, &why);
+            if (q) {
+                poll.session->reword(*q);
+            } else { // the changed setup asks nothing any more
+                poll.session->clear();
+                poll.note = why;
+            }
+        }
     }
     // Whatever plays the step closes its vote: P, the bar's Play, PageDown.
     if (poll.session->snapshot().open && (!atSetup || !sim.paused)) poll.session->close();

@@ -1,12 +1,14 @@
 // The class poll in the app (docs/poll.md): the lecturer turns it on for a lesson on an address
 // of this machine; it then follows the lesson by itself. At a step's setup it asks the step's
-// question (when it has choices) on every phone; whatever plays the step (P, the bar's Play,
-// PageDown) closes the vote; at the moment the counts show beside the choice the run proved.
-// "Vote again" replays the step to its setup with a second round. The server runs on its own
-// thread; the frame reads a snapshot and never waits for a phone. Plain logic, no ImGui. The
-// browser build cannot serve: there the poll says so and never starts.
+// question (when it has choices) on every phone, reworded when the lecturer changes the setup
+// while the vote is open (the votes for the old wording dropped); whatever plays the step (P,
+// the bar's Play, PageDown) closes the vote; at the moment the counts show beside the choice the
+// run proved. "Vote again" replays the step to its setup with a second round. The server runs on
+// its own thread; the frame reads a snapshot and never waits for a phone. Plain logic, no ImGui.
+// The browser build cannot serve: there the poll says so and never starts.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -44,8 +46,11 @@ struct ClassPoll {
     std::size_t address = 0;              // the one picked
     std::string error;                    // the last start's failure
     std::size_t followedStep = static_cast<std::size_t>(-1); // the step the poll follows
-    bool asked = false;     // its question was put to the phones (at its setup)
-    bool proved = false;    // the run's proved choice was given to the poll (at the moment)
+    bool asked = false;  // its question was put to the phones (at its setup)
+    bool proved = false; // the run's proved choice was given to the poll (at the moment)
+    // SimulationSession::changes when the question was last read from the world: a change
+    // since, while the vote is open, rewords it on the phones.
+    std::uint64_t askedAt = 0;
     std::string lessonPath; // the lesson it asks from
     std::string note;       // why this step is not polled
     int qrSize = 0;         // the URL's QR code

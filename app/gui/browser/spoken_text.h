@@ -3,6 +3,7 @@
 // Plain logic from the app's state, no ImGui: tested in tests/app.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,10 @@ struct SpokenScreen {
     std::string answer;
     std::string status; // "perfect method, t = 0.62 s, paused, 1 collision"
     std::string error;  // the error the app shows, "" for none
+    // The changes made through the door so far (SimulationSession::changes) and the last, as a
+    // sentence ("bounciness C is now 0.90").
+    std::uint64_t changes = 0;
+    std::string changed;
     bool operator==(const SpokenScreen& o) const;
     bool operator!=(const SpokenScreen& o) const { return !(*this == o); }
 };
@@ -30,5 +35,7 @@ SpokenScreen spokenScreen(const App& app);
 // reader hears every step change, the answer at the moment and every error): a step entered
 // ("Step 3 of 27: title. Predict: ... A. ... B. ..."), its answer once revealed ("Answer: ..."
 // or "No answer: ...": as the caption bar says them), an error when one appears ("Error: ..."). One
-// line each, in that order; none when nothing of that changed.
+// line each, in that order; none when nothing of that changed. A change the lecturer made in the
+// step (a setting, a block, an undo) that changes its question or answer is said as the change
+// and what now reads otherwise: "bounciness C is now 0.90; the question now reads: Predict: ...".
 std::vector<std::string> spokenChanges(const SpokenScreen& before, const SpokenScreen& now);

@@ -4,6 +4,7 @@
 #include "scene.h"
 #include "scene_json.h"
 #include "settings_table.h"
+#include "text_format.h"
 
 #include <cstdio>
 #include <cstring>
@@ -68,22 +69,29 @@ std::string fieldText(const settings_table::BlockKey& row, const BlockDef& def) 
     return printedPair(format, {value[0].get<double>(), value[1].get<double>()});
 }
 
-std::string blockName(const std::vector<BlockLabel>& labels, int index) {
-    const auto i = static_cast<std::size_t>(index);
-    return i < labels.size() && !labels[i].name.empty() ? labels[i].name
-                                                        : refText(BlockRef{index, ""});
-}
-
 } // namespace
 
-std::string editLogLine(const Edit& logged, const World& world) {
+std::string spokenBlockName(const std::vector<BlockLabel>& labels, int index) {
+    const auto i = static_cast<std::size_t>(index);
+    if (i >= labels.size() || labels[i].name.empty()) return refText(BlockRef{index, ""});
+    const std::string base = baseBlockName(labels[i].name);
+    for (std::size_t j = 0; j < labels.size(); ++j) {
+        if (j != i && (labels[j].name == base || baseBlockName(labels[j].name) == base))
+            return labels[i].name; // two blocks would be called that
+    }
+    return base;
+}
+
+std::string editLogLine(const Edit& logged, int index, const World& world,
+                        const std::vector<BlockLabel>& labels) {
     switch (logged.kind) {
     case Edit::Kind::SetWorld:
         if (const settings_table::WorldKey* row = settings_table::findWorldKey(logged.key))
             return logged.key + ": " + settings_table::logValue(*row, world.settings);
         break;
-    case Edit::Kind::SetBlock:
-        return editKey(logged) + ": " + scene_json::dumpValue(logged.value);
+    case Edit::Kind::SetBlock: // "m2 mass: 4" (the block "m2 = 2 kg")
+        return spokenBlockName(labels, index) + " " + logged.key + ": " +
+               scene_json::dumpValue(logged.value);
     case Edit::Kind::Add:
         return "add: blocks[" + std::to_string(world.blocks.size() - 1) + "]";
     case Edit::Kind::Remove:
@@ -107,13 +115,38 @@ std::string editChangeText(const AppliedEdit& a, bool undone,
     case Edit::Kind::SetBlock: {
         const settings_table::BlockKey& row = settings_table::blockKey(a.edit.key.c_str());
         const std::string before = fieldText(row, a.before), after = fieldText(row, a.after);
-        return blockName(labels, a.index) + " " + row.key + " " +
+        return spokenBlockName(labels, a.index) + " " + row.key + ": " +
                (undone ? after + arrow + before : before + arrow + after);
     }
     case Edit::Kind::Add: // "undo: add new 4"
         return "add " + (a.after.name.empty() ? refText({a.index, ""}) : a.after.name);
     case Edit::Kind::Remove:
         return "remove " + (a.before.name.empty() ? refText({a.index, ""}) : a.before.name);
+    }
+    return editKey(a.edit);
+}
+
+std::string editNowText(const AppliedEdit& a, bool undone, const std::vector<BlockLabel>& labels) {
+    switch (a.edit.kind) {
+    case Edit::Kind::SetWorld: {
+        const settings_table::WorldKey* row = settings_table::findWorldKey(a.edit.key);
+        if (!row) break;
+        const std::string symbol = *row->shown.symbol ? std::string(" ") + row->shown.symbol : "";
+        return std::string(row->shown.name) + symbol + " is now " +
+               settingText(*row, undone ? a.settingsBefore : a.settingsAfter);
+    }
+    case Edit::Kind::SetBlock: {
+        const settings_table::BlockKey& row = settings_table::blockKey(a.edit.key.c_str());
+        return spokenBlockName(labels, a.index) + " " + row.key + " is now " +
+               fieldText(row, undone ? a.before : a.after);
+    }
+    case Edit::Kind::Add:
+    case Edit::Kind::Remove: {
+        const BlockDef& def = a.edit.kind == Edit::Kind::Add ? a.after : a.before;
+        const std::string name =
+            def.name.empty() ? refText({a.index, ""}) : baseBlockName(def.name);
+        return name + ((a.edit.kind == Edit::Kind::Add) != undone ? " added" : " removed");
+    }
     }
     return editKey(a.edit);
 }

@@ -43,6 +43,8 @@ void SimulationSession::restartRun() {
 void SimulationSession::setScene(const Scene& newScene, const std::string& path) {
     scene = newScene;
     scenePath = path;
+    ++changes;
+    lastChange.clear();
     selected = -1;
     paused = true;
     blocksEdited = false;
@@ -80,7 +82,8 @@ EditError SimulationSession::apply(const Edit& edit, bool continues) {
     if (!r.applied) return r.error;
     afterEdit(*r.applied, false);
     const bool named = !edits.journalFull() && !edits.journal().empty();
-    printEdit(editLogLine(named ? edits.journal().back().edit : edit, world()));
+    printEdit(
+        editLogLine(named ? edits.journal().back().edit : edit, r.applied->index, world(), labels));
     return {};
 }
 
@@ -129,6 +132,10 @@ void SimulationSession::playEditLog() {
     }
 }
 
+void SimulationSession::printSetup(const std::vector<Edit>& setup) const {
+    for (const Edit& edit : setup) printEdit("setup: " + editLogLine(edit, -1, world(), labels));
+}
+
 void SimulationSession::printEdit(const std::string& line) const {
     if (!verbose) return;
     std::printf("%s\n", printable(line, kPrintablePath).c_str()); // names come from files
@@ -136,6 +143,8 @@ void SimulationSession::printEdit(const std::string& line) const {
 }
 
 void SimulationSession::afterEdit(const AppliedEdit& a, bool undone) {
+    ++changes;
+    lastChange = editNowText(a, undone, labels);
     const bool blocks = a.edit.kind != Edit::Kind::SetWorld;
     // The selection follows blocks added and removed before it.
     if (a.edit.kind == Edit::Kind::Add || a.edit.kind == Edit::Kind::Remove) {

@@ -113,6 +113,13 @@ struct SimulationSession {
     bool blocksEdited = false;
     // The edits applied (the undo and redo stacks, the journal since the last load or R).
     EditHistory edits;
+    // Counts every change to the world through the door (an edit, undo or redo) and every
+    // scene set: a reader that keeps the count sees the world changed since (the class poll
+    // rewords its question).
+    std::uint64_t changes = 0;
+    // The last change through the door, as a screen reader says it ("bounciness C is now
+    // 0.90", edit_words.h); "" after a scene is set.
+    std::string lastChange;
     // An edit log playing (--edits; docs/edits.md): each line applies when the world reaches its
     // frame. R and Shift+R play it again from its start; loading another scene drops it.
     LogPlayer editLog;
@@ -152,6 +159,10 @@ struct SimulationSession {
     // Plays the edit log's lines due at the world's frame (step() does after each frame; call it
     // after setting editLog). A refused line sets editLogError and the notice and stops the log.
     void playEditLog();
+    // A lesson step's own setup (its "overrides", already in the scene it was given): one
+    // --verbose line each, as the edit prints ("setup: method: move-and-correct"). Not an edit
+    // of the run: nothing to undo, nothing in the journal.
+    void printSetup(const std::vector<Edit>& setup) const;
     // True when quitting would lose edits (see blocksEdited).
     bool unsavedEdits() const;
 

@@ -1,6 +1,8 @@
 // The phone page's script: asks the laptop for the question every 2 s (every 10 s while the
 // page is hidden, at once when it shows again or the network comes back), shows the choices as
-// buttons and sends a tap as a vote. Everything from the server is put on the page as text.
+// buttons and sends a tap as a vote. When the lecturer changes the setup while the vote is open,
+// the question is the new one and a vote already cast is dropped: the page says to vote again.
+// Everything from the server is put on the page as text.
 "use strict";
 (function () {
   const base = document.querySelector('meta[name="poll-base"]').content;
@@ -82,6 +84,7 @@
     const yours = view.mine === null ? "" : "Your vote: " + letter(view.mine) + ".";
     if (offline) say("No connection: trying again. " + yours);
     else if (!view.open) say("The vote is closed. " + (yours || "You did not vote."));
+    else if (view.changed && !yours) say("The setup changed: read the question again and vote again.");
     else say(message || (yours ? yours + " Tap another letter to change it." : "Tap a letter to vote."));
   }
 

@@ -114,4 +114,37 @@ TEST(SpokenText, StepsAnswersAndErrorsAreAnnouncedOnce) {
         << said[0];
 }
 
+// A change the lecturer makes mid-demo that changes the step's question is said as the change
+// and the question as it now reads (the browser's live region says it); a change that reads
+// nothing otherwise is not said; undone, the question as written is said again.
+TEST(SpokenText, AChangeThatRewordsTheQuestionIsSaid) {
+    App app;
+    app.shipped.scenesDir = SANDBOX_SCENES_DIR;
+    ASSERT_TRUE(openLesson(app, std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json", 2))
+        << app.ui.messages.error;
+    SpokenScreen before = spokenScreen(app);
+    ASSERT_TRUE(app.sim.apply(Edit::setWorld("bounciness", 0.9)).empty());
+    SpokenScreen now = spokenScreen(app);
+    std::vector<std::string> said = spokenChanges(before, now);
+    ASSERT_EQ(said.size(), 1u);
+    EXPECT_EQ(said[0].rfind("bounciness C is now 0.90; the question now reads: Predict: ", 0), 0u)
+        << said[0];
+    EXPECT_NE(said[0].find("C = 0.9"), std::string::npos) << said[0];
+    before = now;
+    ASSERT_TRUE(app.sim.apply(Edit::setWorld("bounciness", 0.9)).empty()); // the same C again
+    now = spokenScreen(app);
+    EXPECT_TRUE(spokenChanges(before, now).empty());
+    before = now;
+    ASSERT_TRUE(app.sim.undo());
+    ASSERT_TRUE(app.sim.undo());
+    now = spokenScreen(app);
+    said = spokenChanges(before, now);
+    ASSERT_EQ(said.size(), 1u);
+    EXPECT_EQ(said[0].rfind("bounciness C is now 0.50; the question now reads: Predict: 1 kg at "
+                            "4 m/s (8 J) hits the right wall with C = 0.5.",
+                            0),
+              0u)
+        << said[0];
+}
+
 } // namespace

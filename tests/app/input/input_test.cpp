@@ -307,7 +307,7 @@ TEST(Undo, SaysWhatItUndidAndADragIsOneEdit) {
     ASSERT_NE(app.sim.world().blocks[0].position, start);
     undoOrRedo(app, true);
     EXPECT_EQ(app.sim.world().blocks[0].position, start);
-    EXPECT_EQ(app.sim.notice, "undo: A position (8.50, 7.00) m -> (5.00, 5.00) m");
+    EXPECT_EQ(app.sim.notice, "undo: A position: (8.50, 7.00) m -> (5.00, 5.00) m");
     // R keeps C = 0.9 as an edit at frame 0: undone, C is the scene's again.
     for (int i = 0; i < 5; ++i) stepSimulation(app);
     resetScene(app);

@@ -276,6 +276,31 @@ TEST(LessonSession, AMalformedLessonKeepsTheCurrentOne) {
     EXPECT_EQ(app.lesson.current, 4u);
 }
 
+// A step's overrides are the step (lecture3 step 18: move-and-correct at 30 frames per
+// second): Ctrl+Z has nothing of them to undo, R and Shift+R keep them; a change the lecturer
+// makes on top is undone back to them.
+TEST(LessonSession, AStepsOverridesAreItsSetupNotAnUndoableEdit) {
+    App app = lessonApp();
+    ASSERT_TRUE(enterStep(app, 17));
+    const auto asWritten = [&] {
+        EXPECT_EQ(app.sim.world().settings.method, Method::MoveAndCorrect);
+        EXPECT_EQ(app.sim.world().settings.dt, 1.0 / 30.0);
+    };
+    asWritten();
+    EXPECT_FALSE(app.sim.undo());
+    EXPECT_EQ(app.sim.notice, "Nothing to undo");
+    asWritten();
+    EXPECT_TRUE(app.sim.apply(Edit::setWorld("method", "perfect")).empty());
+    EXPECT_TRUE(app.sim.undo());
+    asWritten();
+    EXPECT_FALSE(app.sim.undo());
+    app.sim.resetToFile();
+    asWritten();
+    app.sim.reset();
+    asWritten();
+    EXPECT_FALSE(app.sim.edits.canUndo()); // R kept them: nothing differs from the step's setup
+}
+
 TEST(LessonSession, LoadingASceneLeavesTheLesson) {
     App app = lessonApp();
     ASSERT_TRUE(loadScene(app, std::string(SANDBOX_SCENES_DIR) + "/single_bounce.json"));

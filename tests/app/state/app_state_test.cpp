@@ -3,6 +3,7 @@
 #include "app_config.h"
 #include "app_log.h"
 #include "app_setup.h"
+#include "edit_words.h"
 #include "fixed_step.h"
 #include "options.h"
 #include "scene_library.h"
@@ -447,8 +448,8 @@ TEST(AppLog, DescribesWhatChanged) {
     app.sim.apply(Edit::setBlock({1, ""}, "mass", 4));
     app.sim.undo();
     EXPECT_EQ(testing::internal::GetCapturedStdout(),
-              "method: move-and-correct\nbounciness: 0.25\nB.mass: 4\n"
-              "undo: B mass 4 kg -> 2 kg\n");
+              "method: move-and-correct\nbounciness: 0.25\nB mass: 4\n"
+              "undo: B mass: 4 kg -> 2 kg\n");
     const auto lines = describeChanges(before, snapshotForLog(app.sim, app.view, app.lesson));
     ASSERT_EQ(lines.size(), 1u);
     EXPECT_EQ(lines[0], "paused");
@@ -747,4 +748,26 @@ TEST(Options, ThemeAndTimelineFrame) {
     EXPECT_EQ(parseOptions(5, pastTheEnd).exitCode, 2);
     const char* none[] = {"sandbox"};
     EXPECT_TRUE(parseOptions(1, none).options.theme.empty()); // the saved setting decides
+}
+
+// Undo notes and edit lines call a block as a student does: "m2" for "m2 = 2 kg", the whole name
+// when two blocks would be called alike, the place when it has no name.
+TEST(EditWords, ABlockIsCalledByItsShortName) {
+    const std::vector<BlockLabel> labels{{"m1 = 1 kg", ""}, {"m2 = 2 kg", ""},
+                                         {"A", ""},         {"A (2 kg)", ""},
+                                         {"", ""},          {"feather, 50 g", ""}};
+    EXPECT_EQ(spokenBlockName(labels, 1), "m2");
+    EXPECT_EQ(spokenBlockName(labels, 2), "A");
+    EXPECT_EQ(spokenBlockName(labels, 3), "A (2 kg)");
+    EXPECT_EQ(spokenBlockName(labels, 4), "blocks[4]");
+    EXPECT_EQ(spokenBlockName(labels, 5), "feather");
+    AppliedEdit mass;
+    mass.edit = Edit::setBlock({-1, "m2 = 2 kg"}, "mass", 2);
+    mass.index = 1;
+    mass.before.mass = 4;
+    mass.after.mass = 2;
+    EXPECT_EQ(editChangeText(mass, false, labels), "m2 mass: 4 kg -> 2 kg");
+    EXPECT_EQ(editChangeText(mass, true, labels), "m2 mass: 2 kg -> 4 kg");
+    World world;
+    EXPECT_EQ(editLogLine(mass.edit, 1, world, labels), "m2 mass: 2");
 }
