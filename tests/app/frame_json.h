@@ -1,13 +1,17 @@
 // What the offscreen tests read back from sandbox-offscreen: its --layout-json and --text-json
 // rectangles ([x, y, w, h], image pixels from the top-left) and the program run through a shell.
-// Shared by layout_test.cpp and lesson_sweep_test.cpp.
+// Shared by layout_test.cpp and the lesson sweeps (lesson_sweep_test.cpp, lesson_screens_test.cpp).
 #pragma once
 
 #include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
 
+#include <gtest/gtest.h>
+
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 struct Rect {
@@ -34,6 +38,14 @@ inline std::string printed(const Rect& r) {
     char text[96];
     std::snprintf(text, sizeof text, "[%g, %g, %g, %g]", r.x, r.y, r.w, r.h);
     return text;
+}
+
+// A JSON file the program wrote (a failure, and null, when it is missing).
+inline nlohmann::json readJson(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    EXPECT_TRUE(in.good()) << "no " << path;
+    if (!in) return {};
+    return nlohmann::json::parse(in);
 }
 
 // `s` in single quotes for the shell.

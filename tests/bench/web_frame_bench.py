@@ -58,19 +58,29 @@ def percentile(values, share):
     return ordered[min(len(ordered) - 1, int(share * len(ordered)))]
 
 
+FRAME_COUNT = "window.sandboxFrameMs.length"
+
+
+def open_running(page, base, query, warm_frames, scripts=()):
+    """Opens the page (TIMER and `scripts` injected first), lets it run (P when it starts paused)
+    and waits out `warm_frames` frames; returns the frame count then (web_profile.py too)."""
+    for source in (TIMER,) + tuple(scripts):
+        page.call("Page.addScriptToEvaluateOnNewDocument", source=source)
+    page.open(base + ("?" + query if query else ""))
+    if page.status()["paused"]:
+        page.key("p", "KeyP", 80)
+    page.wait(lambda: not page.status()["paused"], "the simulation to run")
+    start = page.evaluate(FRAME_COUNT)
+    page.wait(lambda: page.evaluate(FRAME_COUNT) >= start + warm_frames, "warm-up frames")
+    return page.evaluate(FRAME_COUNT)
+
+
 def frame_ms(base, query, ratio):
     """The median and the 95th percentile of the frames' JavaScript (ms)."""
     page = browser_test.Page(1280, 720, ratio)
     try:
-        page.call("Page.addScriptToEvaluateOnNewDocument", source=TIMER)
-        page.open(base + ("?" + query if query else ""))
-        if page.status()["paused"]:
-            page.key("p", "KeyP", 80)
-        page.wait(lambda: not page.status()["paused"], "the simulation to run")
-        count = "window.sandboxFrameMs.length"
-        start = page.evaluate(count)
-        page.wait(lambda: page.evaluate(count) >= start + WARM_FRAMES, "warm-up frames")
-        start = page.evaluate(count)
+        count = FRAME_COUNT
+        start = open_running(page, base, query, WARM_FRAMES)
         page.wait(lambda: page.evaluate(count) >= start + FRAMES, "the measured frames")
         times = page.evaluate(f"window.sandboxFrameMs.slice({start}, {start + FRAMES})")
         return statistics.median(times), percentile(times, 0.95)

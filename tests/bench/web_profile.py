@@ -74,16 +74,8 @@ def main():
     server, base = web_frame_bench.serve(site)
     page = browser_test.Page(1280, 720, options["--ratio"])
     try:
-        page.call("Page.addScriptToEvaluateOnNewDocument", source=web_frame_bench.TIMER)
-        if count_gl:
-            page.call("Page.addScriptToEvaluateOnNewDocument", source=GL_COUNTER)
-        page.open(base + ("?" + query if query else ""))
-        if page.status()["paused"]:
-            page.key("p", "KeyP", 80)
-        page.wait(lambda: not page.status()["paused"], "the simulation to run")
-        count = "window.sandboxFrameMs.length"
-        start = page.evaluate(count)
-        page.wait(lambda: page.evaluate(count) >= start + 30, "warm-up frames")
+        count = web_frame_bench.FRAME_COUNT
+        web_frame_bench.open_running(page, base, query, 30, (GL_COUNTER,) if count_gl else ())
         if count_gl:
             before = page.evaluate("Object.assign({}, window.sandboxGlCalls)")
             start = page.evaluate(count)

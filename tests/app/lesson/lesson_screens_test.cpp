@@ -10,6 +10,7 @@
 // another or a block or mark it does not name; the blocks a step names are big enough to see.
 // The figures per screen are printed.
 #include "frame_json.h"
+#include "lecture3_lesson.h"
 #include "lesson.h"
 
 #include <gtest/gtest.h>
@@ -55,25 +56,6 @@ struct Shot {
                (moment ? " moment" : " setup");
     }
 };
-
-const Lesson& lecture3() {
-    static const Lesson lesson = [] {
-        LessonContext context;
-        context.scenesDir = SANDBOX_SCENES_DIR;
-        LessonResult loaded =
-            loadLessonFile(std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json", context);
-        EXPECT_TRUE(loaded.lesson.has_value()) << loaded.error.message;
-        return loaded.lesson.value_or(Lesson{});
-    }();
-    return lesson;
-}
-
-nlohmann::json readJson(const fs::path& path) {
-    std::ifstream in(path);
-    EXPECT_TRUE(in.good()) << "no " << path;
-    if (!in) return {};
-    return nlohmann::json::parse(in);
-}
 
 // The one run: every screen, every step, setup then moment.
 const std::vector<Shot>& shots() {

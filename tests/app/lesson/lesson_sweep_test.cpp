@@ -12,6 +12,7 @@
 // rectangle (an arrow's value, an overlay's mark, the centre of mass, another block's name) is
 // over a block it does not belong to.
 #include "frame_json.h"
+#include "lecture3_lesson.h"
 #include "lesson.h"
 #include "lesson_prompt.h"
 
@@ -32,8 +33,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kLecture3 = std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json";
-
 // Issue 23's numbers at 1080p.
 constexpr double kCaptionPx = 36.0;    // 3.3% of the height: a slide's body text
 constexpr double kSceneLabelPx = 24.0; // 2.2%
@@ -51,24 +50,6 @@ struct Shot {
         return "step " + std::to_string(step) + (moment ? " moment" : " setup");
     }
 };
-
-const Lesson& lecture3() {
-    static const Lesson lesson = [] {
-        LessonContext context;
-        context.scenesDir = SANDBOX_SCENES_DIR;
-        LessonResult loaded = loadLessonFile(kLecture3, context);
-        EXPECT_TRUE(loaded.lesson.has_value()) << loaded.error.message;
-        return loaded.lesson.value_or(Lesson{});
-    }();
-    return lesson;
-}
-
-nlohmann::json readJson(const fs::path& path) {
-    std::ifstream in(path);
-    EXPECT_TRUE(in.good()) << "no " << path;
-    if (!in) return {};
-    return nlohmann::json::parse(in);
-}
 
 // The one run of the sweep: every step, setup then moment.
 const std::vector<Shot>& shots() {
