@@ -45,12 +45,7 @@ TIMER = """
 """
 
 
-def serve(site):
-    server = browser_test.http.server.ThreadingHTTPServer(
-        ("127.0.0.1", 0),
-        browser_test.functools.partial(browser_test.QuietHandler, directory=site))
-    browser_test.threading.Thread(target=server.serve_forever, daemon=True).start()
-    return server, f"http://127.0.0.1:{server.server_address[1]}/index.html"
+serve = browser_test.serve  # web_profile.py calls it here
 
 
 def percentile(values, share):

@@ -20,7 +20,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "web"))
 sys.path.insert(0, HERE)
 import browser_test as web  # noqa: E402  (exits 77 without python3-websocket or python3-pil)
-from poll_client import PollServer  # noqa: E402
+from poll_client import PollServer, run_test  # noqa: E402
 
 
 def check(condition, message):
@@ -101,8 +101,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        sys.exit(main())
-    except AssertionError as e:
-        print("FAILED:", e)
-        sys.exit(1)
+    run_test(main)

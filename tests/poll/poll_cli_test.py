@@ -31,7 +31,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from poll_client import Phone, PollServer, proc_status  # noqa: E402
+from poll_client import Phone, PollServer, proc_status, run_test  # noqa: E402
 
 STEP = 18  # lecture3's "Move and correct: the mess": three choices, B proved by the run
 CHOICES = 3
@@ -331,8 +331,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        sys.exit(main())
-    except AssertionError as e:
-        print("FAILED:", e)
-        sys.exit(1)
+    run_test(main)

@@ -6,6 +6,7 @@ import asyncio
 import json
 import select
 import subprocess
+import sys
 
 HANG_GUARD_S = 60
 
@@ -119,3 +120,12 @@ def proc_status(pid):
             name, _, value = line.partition(":")
             fields[name] = value.strip()
     return int(fields["Threads"]), int(fields["VmRSS"].split()[0])
+
+
+def run_test(main):
+    """Exits with what a test's main() returns, or 1 with the check that failed said."""
+    try:
+        sys.exit(main())
+    except AssertionError as e:
+        print("FAILED:", e)
+        sys.exit(1)

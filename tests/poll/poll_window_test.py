@@ -19,6 +19,8 @@ import shutil
 import subprocess
 import sys
 
+from poll_client import run_test
+
 SKIP = 77
 
 
@@ -110,8 +112,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        sys.exit(main())
-    except AssertionError as e:
-        print("FAILED:", e)
-        sys.exit(1)
+    run_test(main)

@@ -18,14 +18,11 @@ Exit 0: passed; 1: failed; 77: skipped (as browser_test.py).
 
 usage: big_inputs_test.py SITE_DIR CHECK
 """
-import functools
-import http.server
 import json
 import os
 import re
 import statistics
 import sys
-import threading
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -191,10 +188,7 @@ def main():
         bt.skip("chromium is not installed (scripts/web.sh deps installs it)")
     if not os.path.exists(os.path.join(site, "index.html")):
         bt.skip(f"{site}/index.html is missing: build the browser build with scripts/web.sh build")
-    server = http.server.ThreadingHTTPServer(
-        ("127.0.0.1", 0), functools.partial(bt.QuietHandler, directory=site))
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    base = f"http://127.0.0.1:{server.server_address[1]}/index.html"
+    server, base = bt.serve(site)
     try:
         {"big-files": big_files, "url-range": url_range}[what](base)
     except AssertionError as e:

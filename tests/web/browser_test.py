@@ -115,6 +115,15 @@ class QuietHandler(http.server.SimpleHTTPRequestHandler):
         pass
 
 
+def serve(site):
+    """`site` served on 127.0.0.1 (a free port) from a thread: the server, and its index.html's
+    URL (the browser tests, the big-input tests and the frame benchmark)."""
+    server = http.server.ThreadingHTTPServer(
+        ("127.0.0.1", 0), functools.partial(QuietHandler, directory=site))
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    return server, f"http://127.0.0.1:{server.server_address[1]}/index.html"
+
+
 class Page:
     """One Chromium with one page, over the DevTools protocol."""
 
@@ -1081,10 +1090,8 @@ def offline(site, base):
     print(f"file://: the one-file build drew the default scene ({colours} colours); the folder "
           "build says what to do")
     # Served, visited once, then the server goes away: the service worker's copy answers.
-    server = http.server.ThreadingHTTPServer(
-        ("127.0.0.1", 0), functools.partial(QuietHandler, directory=site))
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    url = f"http://127.0.0.1:{server.server_address[1]}/index.html?scene=newtons_cradle"
+    server, base = serve(site)
+    url = base + "?scene=newtons_cradle"
     page = Page(1280, 720)
     try:
         page.open(url)
@@ -1145,10 +1152,7 @@ def main():
         skip(f"{AXE_JS} is missing (scripts/web.sh deps installs axe-core)")
     if not os.path.exists(os.path.join(site, "index.html")):
         skip(f"{site}/index.html is missing: build the browser build with scripts/web.sh build")
-    server = http.server.ThreadingHTTPServer(
-        ("127.0.0.1", 0), functools.partial(QuietHandler, directory=site))
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    base = f"http://127.0.0.1:{server.server_address[1]}/index.html"
+    server, base = serve(site)
     checks = {"first-frame": first_frame, "pause": pause, "url-scene": url_scene,
               "url-lesson": url_lesson, "url-bad": url_bad, "open-file": open_file,
               "wheel": wheel, "trackers": trackers, "unsaved": unsaved, "link": link,
