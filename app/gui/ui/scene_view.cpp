@@ -89,6 +89,22 @@ double coveredAt(const Taken& placed, const ScreenRect& view, float x, float y, 
     return area(placed.blocks) + 10.0 * area(placed.texts);
 }
 
+// The part of `placed` that meets `region`, in order: all that a search whose rectangles lie in
+// `region` can touch, so that its sums are the same over fewer rectangles (a gas of 1,000 blocks
+// had every label's search add up every block: a sixth of the frame).
+Taken meeting(const Taken& placed, const ScreenRect& region) {
+    Taken out;
+    const auto keep = [&region](const std::vector<ScreenRect>& from, std::vector<ScreenRect>& to) {
+        for (const ScreenRect& p : from)
+            if (p.x < region.x + region.width && region.x < p.x + p.width &&
+                p.y < region.y + region.height && region.y < p.y + p.height)
+                to.push_back(p);
+    };
+    keep(placed.blocks, out.blocks);
+    keep(placed.texts, out.texts);
+    return out;
+}
+
 // The top-left of a label of `size` meant for x with its top at `above` or `below`: moved up or
 // down in steps of a line (trying above first) until it lies in `view` and overlaps none of
 // `placed` (labels already drawn and blocks); where no row is free, the same rows half its width
@@ -98,13 +114,18 @@ ImVec2 freeSpot(const Taken& placed, const ScreenRect& view, float x, float abov
                 ImVec2 size, float line) {
     const float gap = line * 0.5f; // labels closer than this read as one
     const float shift = size.x * 0.5f + gap;
+    const float reach =
+        3.0f * shift + gap + 1.0f; // the farthest a candidate's sides go, and a pixel
+    const Taken near = meeting(
+        placed, spanning(x - reach, std::min(above - 5.0f * line, below) - 1.0f, x + size.x + reach,
+                         std::max(above, below + 5.0f * line) + size.y + 1.0f));
     ImVec2 best(x, above);
     double least = INFINITY;
     for (const float dx :
          {0.0f, shift, -shift, 2.0f * shift, -2.0f * shift, 3.0f * shift, -3.0f * shift}) {
         for (int k = 0; k < 6; ++k) {
             for (const float y : {above - k * line, below + k * line}) {
-                const double covered = coveredAt(placed, view, x + dx, y, size, gap);
+                const double covered = coveredAt(near, view, x + dx, y, size, gap);
                 if (covered == 0.0) return ImVec2(x + dx, y);
                 if (covered < least) {
                     least = covered;
@@ -343,10 +364,12 @@ void drawLargeCount(const App& app, ImDrawList* dl, Taken& placed) {
 ImVec2 freeRow(const Taken& placed, const ScreenRect& view, float x, float y, ImVec2 ts) {
     float best = y;
     double least = INFINITY;
+    const Taken near = meeting(placed, spanning(x - 5.0f, y - 5.0f * ts.y - 1.0f, x + ts.x + 5.0f,
+                                                y + 6.0f * ts.y + 1.0f));
     for (const float direction : {1.0f, -1.0f}) {
         for (int k = 0; k < 6; ++k) {
             const float row = y + direction * static_cast<float>(k) * ts.y;
-            const double covered = coveredAt(placed, view, x, row, ts, 4.0f);
+            const double covered = coveredAt(near, view, x, row, ts, 4.0f);
             if (covered == 0.0) return ImVec2(x, row);
             if (covered < least) {
                 least = covered;
