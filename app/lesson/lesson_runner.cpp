@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
+#include <unordered_map>
 
 namespace {
 
@@ -60,13 +62,24 @@ AxisGap axisGap(const Block& a, const Block& b, int axis) {
 } // namespace
 
 std::vector<int> liveBlockIndex(const Scene& stepScene, const std::vector<std::string>& liveNames) {
+    // Each live name once: where it first is and how often it occurs (one pass, so that a step
+    // of 20,000 unnamed blocks costs a hash lookup a block, not a scan of every live name).
+    struct Seen {
+        int first = 0;
+        int count = 0;
+    };
+    std::unordered_map<std::string_view, Seen> seen;
+    seen.reserve(liveNames.size());
+    for (std::size_t j = 0; j < liveNames.size(); ++j) {
+        Seen& s = seen[liveNames[j]];
+        if (s.count++ == 0) s.first = static_cast<int>(j);
+    }
     std::vector<int> map(stepScene.blocks.size(), -1);
     for (std::size_t i = 0; i < stepScene.blocks.size(); ++i) {
         const std::string& name = stepScene.blocks[i].name;
-        const auto count = std::count(liveNames.begin(), liveNames.end(), name);
-        if (!name.empty() && count == 1) {
-            map[i] = static_cast<int>(std::find(liveNames.begin(), liveNames.end(), name) -
-                                      liveNames.begin());
+        const auto found = seen.find(name);
+        if (!name.empty() && found != seen.end() && found->second.count == 1) {
+            map[i] = found->second.first;
         } else if (i < liveNames.size() && liveNames[i] == name) {
             map[i] = static_cast<int>(i); // unnamed or named twice: where it was
         }

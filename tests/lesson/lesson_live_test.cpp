@@ -345,3 +345,23 @@ TEST(Lecture3, Step26TheSceneSaysAnAccelerationAsOne) {
     EXPECT_TRUE(contains(scene.description, "(25 - 3.924)/1 = 21.076 m/s^2")) << scene.description;
     EXPECT_TRUE(equationsHold(scene.description)) << scene.description;
 }
+
+// A step's blocks are found in the live world by name when the name is there exactly once, else
+// where they were when the name there is the same (unnamed, or named twice), else not at all.
+TEST(LessonLive, LiveBlockIndexFindsBlocksByUniqueNameElseByPlace) {
+    Scene scene;
+    for (const char* name : {"m1", "m2", "", "twin", "gone", ""}) {
+        BlockDef b;
+        b.name = name;
+        scene.blocks.push_back(b);
+    }
+    // m1 and m2 swapped; the unnamed block still at 2; "twin" twice (at 3 and 4); "gone" removed;
+    // the last unnamed block's place (5) holds a named one.
+    const std::vector<std::string> live = {"m2", "m1", "", "twin", "twin", "new"};
+    EXPECT_EQ(liveBlockIndex(scene, live), (std::vector<int>{1, 0, 2, 3, -1, -1}));
+    // Every block unnamed (a gas): each where it was, as far as the live world goes.
+    Scene gas;
+    gas.blocks.resize(4);
+    EXPECT_EQ(liveBlockIndex(gas, {"", "", ""}), (std::vector<int>{0, 1, 2, -1}));
+    EXPECT_EQ(liveBlockIndex(gas, {}), (std::vector<int>{-1, -1, -1, -1}));
+}
