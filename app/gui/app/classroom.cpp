@@ -36,9 +36,9 @@ std::string presentCaption(const std::string& sceneName, const std::string& desc
     return what + "   ·   " + methodAndTime(method, time);
 }
 
-std::string lessonBarStatus(bool presentMode, Method method, double time) {
+std::string lessonBarStatus(bool presentMode, Method method, double time, bool hinted) {
     if (presentMode) return methodAndTime(method, time);
-    return "PageDown next, PageUp back, R restart";
+    return hinted ? "PageUp back, R restart" : "PageDown next, PageUp back, R restart";
 }
 
 std::string startHint(bool paused, double time, bool firstLaunch, bool touch) {

@@ -203,9 +203,10 @@ bool writeLayoutJson(const App& app, const std::string& path) {
         blocks.push_back(
             {app.sim.blockDisplayName(static_cast<int>(i)), worldRectOnScreen(camera, box)});
     }
-    return writeText(
-        path, layoutJson(camera.viewport(), worldRectOnScreen(camera, app.sim.world().bounds),
-                         app.view.shownWindows, blocks, app.view.shownPlots, app.view.shownMarks));
+    return writeText(path, layoutJson(camera.viewport(),
+                                      worldRectOnScreen(camera, app.sim.world().bounds),
+                                      app.view.shownWindows, blocks, app.view.shownPlots,
+                                      app.view.shownMarks, app.view.shownMagnified));
 }
 
 // The texts of the frame rendered last (--text-json, screen_text.h).

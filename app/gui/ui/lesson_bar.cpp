@@ -304,7 +304,9 @@ void drawLessonCaption(App& app) {
     if (!s.digits.empty()) {
         statuses.push_back("Go to step " + s.digits + " (Enter)");
     } else if (!hint.empty()) {
-        statuses.push_back(hint + "   \xc2\xb7   " + keys);
+        statuses.push_back(hint + "   \xc2\xb7   " +
+                           lessonBarStatus(app.view.presentMode, app.sim.world().settings.method,
+                                           app.sim.world().time, true));
         statuses.push_back(hint);
     } else {
         statuses.push_back(keys);

@@ -4,6 +4,8 @@
 // line of a resting stack, the status badge (status_badge.cpp), a large collision count where the
 // count is the lesson, the fling readout and the hover tooltip.
 #include "app_frame.h"
+#include "label_placement.h"
+#include "magnifier.h"
 #include "overlay_window.h"
 
 #include "inspector_format.h"
@@ -61,117 +63,7 @@ int hoveredBlock(const App& app) {
     return pickBlock(app.sim.world(), app.view.camera.screenToWorld(mouse), 0.0);
 }
 
-// The rectangle from (x0, y0) to (x1, y1), px.
-ScreenRect spanning(double x0, double y0, double x1, double y1) {
-    return {x0, y0, x1 - x0, y1 - y0};
-}
-
-using Taken = UiState::TakenOnScreen;
-
-// What a text at (x, y) (top-left) of `size`, widened by `gap` on either side, covers of what is
-// taken: the area in common with the blocks, and ten times that with the texts (over a block, a
-// label hides less than over another label); infinite outside `view`. 0: a free spot.
-double coveredAt(const Taken& placed, const ScreenRect& view, float x, float y, ImVec2 size,
-                 float gap) {
-    if (x < view.x || y < view.y || x + size.x > view.x + view.width ||
-        y + size.y > view.y + view.height)
-        return INFINITY;
-    const ScreenRect r = spanning(x - gap, y, x + size.x + gap, y + size.y);
-    const auto area = [&r](const std::vector<ScreenRect>& list) {
-        double sum = 0.0;
-        for (const ScreenRect& p : list) {
-            const double w = std::min(r.x + r.width, p.x + p.width) - std::max(r.x, p.x);
-            const double h = std::min(r.y + r.height, p.y + p.height) - std::max(r.y, p.y);
-            if (w > 0.0 && h > 0.0) sum += w * h;
-        }
-        return sum;
-    };
-    return area(placed.blocks) + 10.0 * area(placed.texts);
-}
-
-// The part of `placed` that meets `region`, in order: all that a search whose rectangles lie in
-// `region` can touch, so that its sums are the same over fewer rectangles (a gas of 1,000 blocks
-// had every label's search add up every block: a sixth of the frame).
-Taken meeting(const Taken& placed, const ScreenRect& region) {
-    Taken out;
-    const auto keep = [&region](const std::vector<ScreenRect>& from, std::vector<ScreenRect>& to) {
-        for (const ScreenRect& p : from)
-            if (p.x < region.x + region.width && region.x < p.x + p.width &&
-                p.y < region.y + region.height && region.y < p.y + p.height)
-                to.push_back(p);
-    };
-    keep(placed.blocks, out.blocks);
-    keep(placed.texts, out.texts);
-    return out;
-}
-
-// The top-left of a label of `size` meant for x with its top at `above` or `below`: moved up or
-// down in steps of a line (trying above first) until it lies in `view` and overlaps none of
-// `placed` (labels already drawn and blocks); where no row is free, the same rows half its width
-// to the right, then to the left, and further. Where nothing is free, the spot in `view`
-// covering the least (a block rather than its label), else (x, above).
-ImVec2 freeSpot(const Taken& placed, const ScreenRect& view, float x, float above, float below,
-                ImVec2 size, float line) {
-    const float gap = line * 0.5f; // labels closer than this read as one
-    const float shift = size.x * 0.5f + gap;
-    const float reach =
-        3.0f * shift + gap + 1.0f; // the farthest a candidate's sides go, and a pixel
-    const Taken near = meeting(
-        placed, spanning(x - reach, std::min(above - 5.0f * line, below) - 1.0f, x + size.x + reach,
-                         std::max(above, below + 5.0f * line) + size.y + 1.0f));
-    ImVec2 best(x, above);
-    double least = INFINITY;
-    for (const float dx :
-         {0.0f, shift, -shift, 2.0f * shift, -2.0f * shift, 3.0f * shift, -3.0f * shift}) {
-        for (int k = 0; k < 6; ++k) {
-            for (const float y : {above - k * line, below + k * line}) {
-                const double covered = coveredAt(near, view, x + dx, y, size, gap);
-                if (covered == 0.0) return ImVec2(x + dx, y);
-                if (covered < least) {
-                    least = covered;
-                    best = ImVec2(x + dx, y);
-                }
-            }
-        }
-    }
-    return best;
-}
-
 constexpr int kCrowdedScene = 20; // blocks
-
-// Takes the blocks' rectangles on screen (placed.blocks[i] is block i's), then the overlays'
-// marks drawn later (the point of impact's boxes, the centre of mass): no label goes over them.
-void takeBlocks(const App& app, Taken& placed) {
-    placed.blocks.reserve(app.sim.world().blocks.size());
-    for (const Block& b : app.sim.world().blocks) {
-        const Vec2 lo = app.view.camera.worldToScreen(b.position - b.size * 0.5);
-        const Vec2 hi = app.view.camera.worldToScreen(b.position + b.size * 0.5);
-        placed.blocks.push_back(spanning(std::min(lo.x, hi.x), std::min(lo.y, hi.y),
-                                         std::max(lo.x, hi.x), std::max(lo.y, hi.y)));
-    }
-    for (const ScreenRect& box : poiBoxesOnScreen(app)) placed.blocks.push_back(box);
-    for (const ScreenRect& box : comMarkerOnScreen(app)) placed.blocks.push_back(box);
-}
-
-// The top of a label of `size` at x inside block `own`'s rectangle (placed.blocks[own]) that
-// overlaps no other block: `top` (centred) where that is clear, else the clear row nearest it in
-// the block; NAN where no row of the block is clear.
-float clearRowInside(const Taken& placed, std::size_t own, float x, float top, ImVec2 size) {
-    const ScreenRect& box = placed.blocks[own];
-    const auto clear = [&](float y) {
-        const ScreenRect r{x, y, size.x, size.y};
-        for (std::size_t j = 0; j < placed.blocks.size(); ++j)
-            if (j != own && rectsOverlap(r, placed.blocks[j])) return false;
-        return true;
-    };
-    const float lowest = static_cast<float>(box.y + box.height) - size.y - 1.0f;
-    const float highest = static_cast<float>(box.y) + 1.0f;
-    for (float d = 0.0f; top - d >= highest || top + d <= lowest; d += 2.0f) {
-        if (top - d >= highest && clear(top - d)) return top - d;
-        if (top + d <= lowest && clear(top + d)) return top + d;
-    }
-    return NAN;
-}
 
 // `placed`: the rectangles taken on screen, the blocks and each label (the arrows' values
 // avoid them).
@@ -355,31 +247,6 @@ void drawLargeCount(const App& app, ImDrawList* dl, Taken& placed) {
     const ImU32 color = uiLightTheme() ? IM_COL32(30, 40, 60, 230) : IM_COL32(240, 240, 250, 230);
     dl->AddText(font, size, at, color, text);
     dl->AddText(ImVec2(spot.x + both.x - us.x, at.y + ts.y), packed(theme().axis), unit);
-}
-
-// The spot for a text of size `ts` at (x, y): there, or moved down a line at a time (at most
-// six) until it overlaps nothing in `placed`; where the rows down leave `view`, up instead; where
-// no row is free, a free spot sideways (freeSpot: lecture3 step 27's values were written over the
-// blocks of a pile), else the row covering the least.
-ImVec2 freeRow(const Taken& placed, const ScreenRect& view, float x, float y, ImVec2 ts) {
-    float best = y;
-    double least = INFINITY;
-    const Taken near = meeting(placed, spanning(x - 5.0f, y - 5.0f * ts.y - 1.0f, x + ts.x + 5.0f,
-                                                y + 6.0f * ts.y + 1.0f));
-    for (const float direction : {1.0f, -1.0f}) {
-        for (int k = 0; k < 6; ++k) {
-            const float row = y + direction * static_cast<float>(k) * ts.y;
-            const double covered = coveredAt(near, view, x, row, ts, 4.0f);
-            if (covered == 0.0) return ImVec2(x, row);
-            if (covered < least) {
-                least = covered;
-                best = row;
-            }
-        }
-    }
-    const ImVec2 aside = freeSpot(placed, view, x, y, y, ts, ts.y);
-    if (coveredAt(placed, view, aside.x, aside.y, ts, 4.0f) == 0.0) return aside;
-    return ImVec2(x, best); // none free: the row covering the least
 }
 
 // A value written at the head of an arrow (from `base` to `tip`, m) cut at the view's edge or the
@@ -697,6 +564,7 @@ void drawSceneDecorations(App& app) {
     takeBlocks(app, placed);
     const ScreenRect badge = drawStatusBadge(app, dl);
     if (badge.width > 0.0) placed.texts.push_back(badge);
+    drawMagnifier(app, dl, placed); // before the numbers and labels: they go around it
     drawAxisNumbers(app, dl, placed);
     drawReferenceLine(app, dl, placed);
     drawLargeCount(app, dl, placed); // before the labels and values: they go around it

@@ -36,6 +36,23 @@ float plate(ImDrawList* dl, ImVec2 at, const char* text, ImU32 bg, ImU32 fg, flo
     return size.x + pad * 1.5f;
 }
 
+// Plates side by side from `at`, on to a row below where the next would pass `right` (the
+// scene's right edge: a narrow scene at UI scale 1.5 cut "3141 co" and "1 collisio").
+struct PlateRow {
+    ImDrawList* dl;
+    ImVec2 at;
+    float left, right, pad;
+    ScreenRect* extent;
+    void add(const char* text, ImU32 bg, ImU32 fg) {
+        const float width = ImGui::CalcTextSize(text).x;
+        if (at.x > left && at.x + width + pad * 0.5f > right) {
+            at.x = left;
+            at.y += ImGui::GetFontSize() + pad;
+        }
+        at.x += plate(dl, at, text, bg, fg, pad, *extent);
+    }
+};
+
 // `text` cut to `width` pixels with "..." at the end (whole UTF-8 characters).
 std::string fitted(const std::string& text, float width) {
     if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
@@ -59,7 +76,8 @@ ScreenRect drawStatusBadge(const App& app, ImDrawList* dl) {
     const TextRole role(dl, "status");
     const ScreenRect& vp = app.view.camera.viewport();
     const float pad = 8.0f * app.view.uiScale;
-    ImVec2 at(static_cast<float>(vp.x) + pad * 1.5f, static_cast<float>(vp.y) + pad);
+    const ImVec2 at(static_cast<float>(vp.x) + pad * 1.5f, static_cast<float>(vp.y) + pad);
+    PlateRow row{dl, at, at.x, static_cast<float>(vp.x + vp.width) - pad, pad, &extent};
     const ImU32 plateBg = uiLightTheme() ? IM_COL32(235, 236, 240, 230) : IM_COL32(20, 22, 30, 200);
     const ImU32 plateFg = uiLightTheme() ? IM_COL32(20, 22, 30, 255) : IM_COL32(225, 230, 240, 255);
     if (app.view.presentMode && app.lesson.active()) {
@@ -80,7 +98,7 @@ ScreenRect drawStatusBadge(const App& app, ImDrawList* dl) {
                 what += ": " + firstSentence(app.sim.scene.description);
             caption = fitted(what, room - tailWidth) + tail;
         }
-        at.x += plate(dl, at, caption.c_str(), plateBg, plateFg, pad, extent);
+        row.at.x += plate(dl, row.at, caption.c_str(), plateBg, plateFg, pad, extent);
         ImGui::PopFont();
     } else {
         // One count of collisions (the lesson's and sandbox-cli's); the rest rule's resting
@@ -98,14 +116,33 @@ ScreenRect drawStatusBadge(const App& app, ImDrawList* dl) {
                 text + n, sizeof text - static_cast<std::size_t>(n), "   %llu rest-rule merge%s",
                 static_cast<unsigned long long>(totals.contacts), totals.contacts == 1 ? "" : "s");
         }
-        at.x += plate(dl, at, text, plateBg, plateFg, pad, extent);
+        // One plate where it fits the scene's width; else the method and time, the count and
+        // the merges each on its own, wrapping.
+        if (ImGui::CalcTextSize(text).x + pad * 2.0f <= row.right - row.left) {
+            row.add(text, plateBg, plateFg);
+        } else {
+            char count[64];
+            std::snprintf(count, sizeof count, "%s   t = %.2f s",
+                          methodName(app.sim.world().settings.method), app.sim.world().time);
+            row.add(count, plateBg, plateFg);
+            std::snprintf(count, sizeof count, "%llu collision%s",
+                          static_cast<unsigned long long>(totals.collisions),
+                          totals.collisions == 1 ? "" : "s");
+            row.add(count, plateBg, plateFg);
+            if (totals.contacts > 0) {
+                std::snprintf(count, sizeof count, "%llu rest-rule merge%s",
+                              static_cast<unsigned long long>(totals.contacts),
+                              totals.contacts == 1 ? "" : "s");
+                row.add(count, plateBg, plateFg);
+            }
+        }
     }
     const char* state = app.sim.paused       ? "PAUSED"
                         : app.sim.slowMotion ? "SLOW MOTION  5 fps"
                                              : nullptr;
     if (state && !app.view.presentMode) {
         const ImU32 bg = app.sim.paused ? IM_COL32(220, 150, 40, 235) : IM_COL32(60, 130, 220, 235);
-        at.x += plate(dl, at, state, bg, IM_COL32(15, 15, 20, 255), pad, extent);
+        row.add(state, bg, IM_COL32(15, 15, 20, 255));
     }
     // The frame of reference, when it is not the world's (the walls drift: that is why).
     if (app.view.frame == ViewFrame::CentreOfMass && !app.view.presentMode) {
@@ -115,15 +152,13 @@ ScreenRect drawStatusBadge(const App& app, ImDrawList* dl) {
             (isRoundingNoise(u.y, length(u))
                  ? formatQuantity(u.x, "m/s")
                  : "(" + formatNumber(u.x) + ", " + formatNumber(u.y) + ") m/s");
-        at.x += plate(dl, at, text.c_str(), IM_COL32(255, 235, 90, 235), IM_COL32(15, 15, 20, 255),
-                      pad, extent);
+        row.add(text.c_str(), IM_COL32(255, 235, 90, 235), IM_COL32(15, 15, 20, 255));
     }
     // Paused at t = 0: how to start (the first time the app runs, with the first keys).
     const std::string hint =
         startHint(app.sim.paused, app.sim.world().time, app.ui.firstLaunch, app.ui.touchUi);
     if (!hint.empty()) {
-        plate(dl, at, hint.c_str(), IM_COL32(60, 150, 90, 235), IM_COL32(10, 16, 12, 255), pad,
-              extent);
+        row.add(hint.c_str(), IM_COL32(60, 150, 90, 235), IM_COL32(10, 16, 12, 255));
     }
     return extent;
 }

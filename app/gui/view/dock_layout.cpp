@@ -288,8 +288,10 @@ std::string layoutJson(const ScreenRect& scene, const ScreenRect& world,
                        const std::vector<DockedWindow>& windows,
                        const std::vector<DockedWindow>& blocks,
                        const std::vector<DockedWindow>& plots,
-                       const std::vector<DockedWindow>& marks) {
+                       const std::vector<DockedWindow>& marks,
+                       const std::vector<DockedWindow>& magnified) {
     return "{\"scene\": " + jsonRect(scene) + ", \"world\": " + jsonRect(world) +
            ", \"windows\": " + namedRects(windows) + ", \"blocks\": " + namedRects(blocks) +
-           ", \"plots\": " + namedRects(plots) + ", \"marks\": " + namedRects(marks) + "}\n";
+           ", \"plots\": " + namedRects(plots) + ", \"marks\": " + namedRects(marks) +
+           (magnified.empty() ? "" : ", \"magnified\": " + namedRects(magnified)) + "}\n";
 }

@@ -54,6 +54,8 @@ struct View {
     // Every mark an overlay drew over the scene this frame (the point of impact's boxes: "old",
     // "new", "POI", "moved back"), its rectangle on screen, by the label it carries.
     std::vector<DockedWindow> shownMarks;
+    // The blocks a magnifier drew this frame (magnifier.h), their part in its inset, by name.
+    std::vector<DockedWindow> shownMagnified;
     double captionHeight = 0.0; // px a lesson's caption bar takes across the top
     bool sheetOpen = false;     // narrow screens: the panel's sheet is open (sheetLayout)
 };

@@ -42,6 +42,9 @@ ImVec2 sceneCaptionPlace(const App& app, float width, float height,
     for (const Block& b : app.sim.world().blocks)
         avoid.push_back(screenBox(app, b.position, b.size, font));
     for (const WorldBox& b : boxes) avoid.push_back(screenBox(app, b.centre, b.size, font * 1.5));
+    // The magnifiers' insets (magnifier.h), drawn before it.
+    for (const DockedWindow& m : app.view.shownMarks)
+        if (m.name.rfind("magnifier", 0) == 0) avoid.push_back(m.rect);
     // Where it must cover blocks (a box full of them), it hides none of the texts drawn so far
     // (the axis numbers, the labels: app.ui.takenOnScreen) if it can.
     const ScreenRect r =
