@@ -159,8 +159,9 @@ void SceneRenderer::draw(const SceneView& view) {
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
     // The arena (inside the bounds) by a scissored clear: far cheaper than a quad on llvmpipe.
-    GLint vp[4] = {0, 0, 0, 0};
-    glGetIntegerv(GL_VIEWPORT, vp);
+    // The viewport as the caller set it (not asked of GL: in WebGL a query waits for the GPU
+    // process).
+    const GLint vp[4] = {0, 0, view.framebufferWidth, view.framebufferHeight};
     const double sx = vp[2] / view.displayWidth, sy = vp[3] / view.displayHeight;
     const Vec2 lo = view.camera->worldToScreen(view.world->bounds.min);
     const Vec2 hi = view.camera->worldToScreen(view.world->bounds.max);

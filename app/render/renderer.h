@@ -14,7 +14,8 @@ class SceneRenderer {
     // Compiles the embedded shaders; false with a message when the driver rejects them.
     bool init(std::string* error);
     void shutdown();
-    // Clears the framebuffer and draws the scene (GL viewport set by the caller).
+    // Clears the framebuffer and draws the scene (GL viewport set by the caller to
+    // view.framebufferWidth x view.framebufferHeight).
     void draw(const SceneView& view);
 
   private:

@@ -20,6 +20,8 @@ struct SceneView {
     std::vector<Color> blockColors; // per block (palette or scene colour)
     double displayWidth = 1280.0;   // screen pixels of the whole framebuffer
     double displayHeight = 720.0;
+    int framebufferWidth = 1280; // the GL viewport the scene is drawn into (device pixels)
+    int framebufferHeight = 720;
     int selected = -1;
     const Trails* trails = nullptr; // drawn when set
     bool vectors = false;           // velocity, momentum and force arrows

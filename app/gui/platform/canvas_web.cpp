@@ -201,6 +201,12 @@ bool canvasInit(CanvasWeb& c, std::string* error) {
     // Emscripten's GLFW has no cursors (glfwSetCursor does nothing), and ImGui's backend would set
     // the cursor's mode every frame, which there leaves the pointer lock each time.
     ImGui::GetIO().ConfigFlags |= ImGuiConfigFlags_NoMouseCursorChange;
+    // The display's size as the first frame's ImGui_ImplGlfw_NewFrame will set it, so that the
+    // fonts main() bakes for the display's height are the first frame's (not baked and uploaded
+    // a second time in it).
+    int width = 0, height = 0;
+    glfwGetWindowSize(c.window, &width, &height);
+    ImGui::GetIO().DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
     c.lastTime = glfwGetTime();
     return true;
 }

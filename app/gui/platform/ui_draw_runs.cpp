@@ -21,8 +21,10 @@ void splitIntoRuns(const ImDrawVert* vertices, const ImDrawIdx* indices, unsigne
                    unsigned indexCount, ImVec2 whiteUv, float minSolidPixels,
                    std::vector<UiDrawRun>& runs) {
     const std::size_t start = runs.size();
-    // 1. Maximal stretches of one kind, with the pixels of the solid ones.
-    std::vector<float> solidPixels;
+    // 1. Maximal stretches of one kind, with the pixels of the solid ones (kept between calls:
+    //    a frame splits a hundred commands, each would allocate it anew).
+    static thread_local std::vector<float> solidPixels;
+    solidPixels.clear();
     for (unsigned k = 0; k + 2 < indexCount; k += 3) {
         const ImDrawVert& a = vertices[indices[k]];
         const ImDrawVert& b = vertices[indices[k + 1]];
@@ -135,7 +137,8 @@ UiPixelRect surePixels(const ImDrawVert* fan, unsigned n, ImVec2 origin, ImVec2 
 
 void findOpaqueFills(const ImDrawVert* vertices, const ImDrawIdx* indices, unsigned indexBase,
                      ImVec2 origin, ImVec2 scale, int minPixels, std::vector<UiDrawRun>& runs) {
-    std::vector<UiDrawRun> out;
+    static thread_local std::vector<UiDrawRun> out; // kept between calls, as in splitIntoRuns
+    out.clear();
     for (const UiDrawRun& run : runs) {
         if (!run.solid) {
             out.push_back(run);
@@ -161,5 +164,5 @@ void findOpaqueFills(const ImDrawVert* vertices, const ImDrawIdx* indices, unsig
         }
         if (end > from) out.push_back({indexBase + from, end - from, true, {}, 0});
     }
-    runs = std::move(out);
+    runs.swap(out);
 }

@@ -342,6 +342,8 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
     scene.camera = &app.view.camera;
     scene.displayWidth = io.DisplaySize.x;
     scene.displayHeight = io.DisplaySize.y;
+    scene.framebufferWidth = framebufferWidth;
+    scene.framebufferHeight = framebufferHeight;
     scene.selected = app.sim.selected;
     scene.theme = &sceneTheme(app.view.lightTheme);
     scene.vectors = app.view.show.vectors;

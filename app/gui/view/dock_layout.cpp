@@ -221,9 +221,16 @@ ScreenRect placeCaption(double width, double height, const ScreenRect& scene,
         for (double x : xs) {
             if (x < x0 - 1e-9 || x > x1 + 1e-9) continue;
             const ScreenRect r{std::round(x), std::round(y), width, height};
-            double covered = 0.0, hidden = 0.0;
-            for (const ScreenRect& a : avoidInBand) covered += overlapArea(r, a);
+            double hidden = 0.0;
             for (const ScreenRect& t : textsInBand) hidden += overlapArea(r, t);
+            if (hidden > bestHidden) continue;
+            // The sums only grow (every area is >= 0): once past the best, the candidate loses
+            // whatever the rest adds (the sum is the same as the whole loop's up to there).
+            double covered = 0.0;
+            for (const ScreenRect& a : avoidInBand) {
+                covered += overlapArea(r, a);
+                if (hidden == bestHidden && covered > bestCovered) break;
+            }
             const double tier = !rectsOverlap(r, world) ? 0.0 : rectInside(r, inner) ? 1.0 : 2.0;
             const bool better =
                 hidden < bestHidden ||
