@@ -4,6 +4,7 @@
 #include "imgui_ext.h"
 #include "save_naming.h"
 #include "text_format.h"
+#include "typed_field.h"
 #include "ui_style.h"
 
 #include <imgui.h>
