@@ -7,11 +7,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG" \
-  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG" \
-  -DSANDBOX_FUZZ=ON -DSANDBOX_SANITIZE=address,undefined -DSANDBOX_BUILD_APP=OFF \
-  -DSANDBOX_BUILD_BENCH=OFF -DSANDBOX_BUILD_TESTS=ON -DSANDBOX_WERROR=ON >/dev/null
+source scripts/sanitized_configure.sh
+configure_sanitized build-fuzz -DSANDBOX_FUZZ=ON -DSANDBOX_BUILD_TESTS=ON
 cmake --build build-fuzz -j"$(nproc)" --target scene_fuzzer poll_fuzzer
 rm -rf build-fuzz/corpus build-fuzz/poll_corpus build-fuzz/artifacts
 mkdir -p build-fuzz/corpus build-fuzz/poll_corpus build-fuzz/artifacts

@@ -36,6 +36,16 @@ void stopOnInterrupt() {
     sigaction(SIGINT, &action, nullptr);
 }
 
+// tradeoff's and stability's shared options: --out DIR (required) and --scenes DIR.
+void addAnalysisOptions(CLI::App* command, AnalysisRequest& request) {
+    command->add_option("--out", request.outDir, "Output directory (created if missing)")
+        ->required()
+        ->type_name("DIR");
+    command->add_option("--scenes", request.scenesDir, "Directory of the scene files")
+        ->type_name("DIR")
+        ->capture_default_str();
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -132,12 +142,7 @@ int main(int argc, char** argv) {
         "tradeoff", "Speed versus accuracy: every method (and Box2D when built with it) over dt "
                     "1/30..1/7680 and substeps 1 and 4 on scenes with known answers. Writes "
                     "tradeoff.csv, tradeoff.md and tradeoff.png.");
-    tradeoffCmd->add_option("--out", tradeoff.outDir, "Output directory (created if missing)")
-        ->required()
-        ->type_name("DIR");
-    tradeoffCmd->add_option("--scenes", tradeoff.scenesDir, "Directory of the scene files")
-        ->type_name("DIR")
-        ->capture_default_str();
+    addAnalysisOptions(tradeoffCmd, tradeoff);
     tradeoffCmd->add_flag("--quick", tradeoff.quick, "Three frame rates instead of nine");
 
     AnalysisRequest stability;
@@ -147,12 +152,7 @@ int main(int argc, char** argv) {
                      "inelastic collapse, Newton's cradle, corner hit, high mass ratio, jammed "
                      "box) under every method, with the measured outcome of each. Writes "
                      "stability.csv and stability.md.");
-    stabilityCmd->add_option("--out", stability.outDir, "Output directory (created if missing)")
-        ->required()
-        ->type_name("DIR");
-    stabilityCmd->add_option("--scenes", stability.scenesDir, "Directory of the scene files")
-        ->type_name("DIR")
-        ->capture_default_str();
+    addAnalysisOptions(stabilityCmd, stability);
     stability.extremesDir = SANDBOX_EXTREMES_DIR;
     stabilityCmd
         ->add_option("--extremes", stability.extremesDir,

@@ -22,15 +22,6 @@ struct LessonResult {
     SceneError error; // meaningful only when !lesson
 };
 
-// What a lesson file may refer to.
-struct LessonContext {
-    std::string scenesDir;                    // shipped scenes, for "scene": "bullet_wall"
-    std::string baseDir;                      // scene paths are relative to it ("" = cwd)
-    std::string lessonFile;                   // the lesson's own file: no step may name it
-    std::size_t maxBlocks = kMaxLessonBlocks; // in all the lesson's scenes (lower in tests)
-    std::vector<std::string> overlayNames;    // the overlay table's names; empty: not checked
-};
-
 // Parses and validates lesson text; `sourceName` is used in error places.
 LessonResult parseLesson(const std::string& text, const std::string& sourceName,
                          const LessonContext& context);

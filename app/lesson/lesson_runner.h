@@ -120,6 +120,13 @@ ExprScope eventScope(const LessonStep& step, const StepRun& run);
 // What the question and the choices read: the setup, before any frame.
 ExprScope setupScope(const LessonStep& step, const World& setup, const std::vector<int>& blocks);
 
+// Block `index` of `world`, or null when there is none.
+inline const Block* blockAt(const World& world, int index) {
+    return index >= 0 && static_cast<std::size_t>(index) < world.blocks.size()
+               ? &world.blocks[static_cast<std::size_t>(index)]
+               : nullptr;
+}
+
 // The measured value of an expectation in a run, at its event.
 double measure(const LessonExpect& e, const StepRun& run);
 // The choices the run proves: those whose condition holds at its event (none when it missed).

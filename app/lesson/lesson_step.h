@@ -86,6 +86,16 @@ const char* quantityName(LessonExpect::Quantity q);
 // The blocks of all a lesson's scenes together (a scene shared by steps counts once): bounds the
 // memory a lesson may take.
 inline constexpr std::size_t kMaxLessonBlocks = 2000000;
+
+// What a lesson file may refer to.
+struct LessonContext {
+    std::string scenesDir;                    // shipped scenes, for "scene": "bullet_wall"
+    std::string baseDir;                      // scene paths are relative to it ("" = cwd)
+    std::string lessonFile;                   // the lesson's own file: no step may name it
+    std::size_t maxBlocks = kMaxLessonBlocks; // in all the lesson's scenes (lower in tests)
+    std::vector<std::string> overlayNames;    // the overlay table's names; empty: not checked
+};
+
 // The work a step's run to its pause point may take, in block-steps (blocks x frames x
 // substeps): bounds the time a lesson takes to validate (1e8: a few seconds).
 inline constexpr double kMaxStepBlockSteps = 1e8;

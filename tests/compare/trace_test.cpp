@@ -3,6 +3,8 @@
 #include "compare_command.h"
 #include "trace.h"
 
+#include "says.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -27,6 +29,11 @@ std::string errorOf(const std::string& text) {
     const TraceResult r = read(text);
     EXPECT_FALSE(r.trace);
     return r.error.text();
+}
+
+// The error of reading `text` says `part` (somewhere in it).
+::testing::AssertionResult errorSays(const std::string& text, const std::string& part) {
+    return says(errorOf(text), part);
 }
 
 const char* kHeader = "t,m1 = 1 kg_x,m1 = 1 kg_y,m1 = 1 kg_vx,m1 = 1 kg_vy,m2 = 2 kg_x,"
@@ -93,45 +100,35 @@ TEST(TraceReader, GxpUnitsArePixelsYDownPerFrame) {
 TEST(TraceReader, BadFilesNameTheirPlace) {
     EXPECT_EQ(errorOf(""), "trace.csv:1:1: empty file: a trace has a header row (t, then NAME_x, "
                            "NAME_y, NAME_vx, NAME_vy per block) and one row per frame");
-    EXPECT_NE(errorOf("0.1,4,6,6,0\n").find("trace.csv:1:1: no header row"), std::string::npos);
-    EXPECT_NE(errorOf("time_s,m1 = 1 kg_x\n1,2\n").find("trace.csv:1:1: no time column"),
-              std::string::npos);
+    EXPECT_TRUE(errorSays("0.1,4,6,6,0\n", "trace.csv:1:1: no header row"));
+    EXPECT_TRUE(errorSays("time_s,m1 = 1 kg_x\n1,2\n", "trace.csv:1:1: no time column"));
     // A block of the scene missing from the trace is named.
-    EXPECT_NE(errorOf("t,m1 = 1 kg_x,m1 = 1 kg_y,m1 = 1 kg_vx,m1 = 1 kg_vy\n0.1,1,2,3,4\n")
-                  .find("trace.csv:1: no columns for block 'm2 = 2 kg'"),
-              std::string::npos);
-    EXPECT_NE(errorOf("t,m1 = 1 kg_x,m1 = 1 kg_y,m1 = 1 kg_vx,m2 = 2 kg_x,m2 = 2 kg_y,"
-                      "m2 = 2 kg_vx,m2 = 2 kg_vy\n")
-                  .find("block 'm1 = 1 kg' has no column 'm1 = 1 kg_vy'"),
-              std::string::npos);
+    EXPECT_TRUE(errorSays("t,m1 = 1 kg_x,m1 = 1 kg_y,m1 = 1 kg_vx,m1 = 1 kg_vy\n0.1,1,2,3,4\n",
+                          "trace.csv:1: no columns for block 'm2 = 2 kg'"));
+    EXPECT_TRUE(errorSays("t,m1 = 1 kg_x,m1 = 1 kg_y,m1 = 1 kg_vx,m2 = 2 kg_x,m2 = 2 kg_y,"
+                          "m2 = 2 kg_vx,m2 = 2 kg_vy\n",
+                          "block 'm1 = 1 kg' has no column 'm1 = 1 kg_vy'"));
     // Text in a number: line 3, column 14 (the field's first byte), the column's name.
     EXPECT_EQ(errorOf(std::string(kHeader) + "0.0166667,4.1,6,6,0,8.75,6,0,0\n" +
                       "0.0333333,4.2,six,6,0,8.75,6,0,0\n"),
               "trace.csv:3:15: column 'm1 = 1 kg_y': 'six' is not a number");
-    EXPECT_NE(errorOf(std::string(kHeader) + "0.0166667,NaN,6,6,0,8.75,6,0,0\n")
-                  .find("trace.csv:2:11: column 'm1 = 1 kg_x': 'NaN' is not a number (NaN"),
-              std::string::npos);
-    EXPECT_NE(errorOf(std::string(kHeader) + "0.0166667,inf,6,6,0,8.75,6,0,0\n")
-                  .find("trace.csv:2:11: column 'm1 = 1 kg_x': 'inf' is not a finite number"),
-              std::string::npos);
+    EXPECT_TRUE(errorSays(std::string(kHeader) + "0.0166667,NaN,6,6,0,8.75,6,0,0\n",
+                          "trace.csv:2:11: column 'm1 = 1 kg_x': 'NaN' is not a number (NaN"));
+    EXPECT_TRUE(errorSays(std::string(kHeader) + "0.0166667,inf,6,6,0,8.75,6,0,0\n",
+                          "trace.csv:2:11: column 'm1 = 1 kg_x': 'inf' is not a finite number"));
     EXPECT_EQ(errorOf(std::string(kHeader) + "0.0166667,,6,6,0,8.75,6,0,0\n"),
               "trace.csv:2:11: column 'm1 = 1 kg_x': empty");
-    EXPECT_NE(errorOf(std::string(kHeader) + "0.0166667,1e300,6,6,0,8.75,6,0,0\n")
-                  .find("trace.csv:2:11: column 'm1 = 1 kg_x': must be from -1e9 to 1e9 m"),
-              std::string::npos);
-    EXPECT_NE(errorOf(std::string(kHeader) + "0.0166667,4,6,6,0,8.75\n")
-                  .find("trace.csv:2:23: 6 fields, the header (line 1) has 9"),
-              std::string::npos);
-    EXPECT_NE(errorOf(std::string(kHeader) + "0.0333333,4,6,6,0,8.75,6,0,0\n" +
-                      "0.0166667,4,6,6,0,8.75,6,0,0\n")
-                  .find("trace.csv:3:1: column 't': frame 1 does not come after frame 2"),
-              std::string::npos);
-    EXPECT_NE(errorOf(std::string(kHeader) + "0.025,4,6,6,0,8.75,6,0,0\n")
-                  .find("trace.csv:2:1: column 't': 0.025 s is not the end of a frame"),
-              std::string::npos);
-    EXPECT_NE(errorOf("t,\"m1 = 1 kg_x\n").find("trace.csv:1:3: a quote that does not close"),
-              std::string::npos);
-    EXPECT_NE(errorOf(kHeader).find("trace.csv:2: no rows after the header"), std::string::npos);
+    EXPECT_TRUE(errorSays(std::string(kHeader) + "0.0166667,1e300,6,6,0,8.75,6,0,0\n",
+                          "trace.csv:2:11: column 'm1 = 1 kg_x': must be from -1e9 to 1e9 m"));
+    EXPECT_TRUE(errorSays(std::string(kHeader) + "0.0166667,4,6,6,0,8.75\n",
+                          "trace.csv:2:23: 6 fields, the header (line 1) has 9"));
+    EXPECT_TRUE(errorSays(std::string(kHeader) + "0.0333333,4,6,6,0,8.75,6,0,0\n" +
+                              "0.0166667,4,6,6,0,8.75,6,0,0\n",
+                          "trace.csv:3:1: column 't': frame 1 does not come after frame 2"));
+    EXPECT_TRUE(errorSays(std::string(kHeader) + "0.025,4,6,6,0,8.75,6,0,0\n",
+                          "trace.csv:2:1: column 't': 0.025 s is not the end of a frame"));
+    EXPECT_TRUE(errorSays("t,\"m1 = 1 kg_x\n", "trace.csv:1:3: a quote that does not close"));
+    EXPECT_TRUE(errorSays(kHeader, "trace.csv:2: no rows after the header"));
     // Control bytes in a column's name are never echoed raw.
     const std::string escaped =
         errorOf(std::string(kHeader) + "0.0166667,\x1b]0;owned\x07,6,6,0,8.75,6,0,0\n");

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -50,18 +51,30 @@ struct GasOptions {
     std::uint64_t seed = 1;
 };
 
+// A grid of at least `count` cells, about square, over a region `span` wide and high: block k
+// goes into the cell of column k % columns and row k / columns (addGas, the robustness soak).
+struct CellGrid {
+    int columns = 1;
+    int rows = 1;
+    Vec2 cell; // m
+};
+inline CellGrid cellGridFor(int count, Vec2 span) {
+    CellGrid g;
+    g.columns = std::max(1, static_cast<int>(std::ceil(std::sqrt(count * span.x / span.y))));
+    g.rows = (count + g.columns - 1) / g.columns;
+    g.cell = Vec2{span.x / g.columns, span.y / g.rows};
+    return g;
+}
+
 // One block per cell of a grid over the region, at a random place inside its cell: the blocks
 // never overlap each other and never stick out of the region.
 inline void addGas(World& world, const GasOptions& o) {
     std::mt19937_64 rng(o.seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    const Vec2 span = o.max - o.min;
-    const int columns =
-        std::max(1, static_cast<int>(std::ceil(std::sqrt(o.count * span.x / span.y))));
-    const int rows = (o.count + columns - 1) / columns;
-    const Vec2 cell{span.x / columns, span.y / rows};
+    const CellGrid grid = cellGridFor(o.count, o.max - o.min);
+    const Vec2 cell = grid.cell;
     for (int k = 0; k < o.count; ++k) {
-        const int cx = k % columns, cy = k / columns;
+        const int cx = k % grid.columns, cy = k / grid.columns;
         const double fill = o.minFill + (o.maxFill - o.minFill) * unit(rng);
         const Vec2 size{cell.x * fill, cell.y * (o.minFill + (o.maxFill - o.minFill) * unit(rng))};
         const Vec2 slack = cell - size;
@@ -96,19 +109,20 @@ inline double momentumScale(const World& world) {
     return s;
 }
 
-// Test names for a parameterized test over Method ("-" is not allowed in test names).
+// Test names for a parameterized test over Method: the method's name in camel case
+// ("move-and-correct" is MoveAndCorrect; "-" is not allowed in test names).
 inline std::string methodTestName(Method method) {
-    switch (method) {
-    case Method::Perfect:
-        return "Perfect";
-    case Method::MoveAndCorrect:
-        return "MoveAndCorrect";
-    case Method::TurnBased:
-        return "TurnBased";
-    case Method::Count:
-        break;
+    std::string name;
+    bool wordStart = true;
+    for (const char* c = methodName(method); *c; ++c) {
+        if (*c == '-') {
+            wordStart = true;
+            continue;
+        }
+        name += wordStart ? static_cast<char>(std::toupper(static_cast<unsigned char>(*c))) : *c;
+        wordStart = false;
     }
-    return "Unknown";
+    return name;
 }
 
 // Every method of the engine's enum (Method::Count of them, in its order) and their test names:

@@ -12,6 +12,8 @@
 #include "lesson_test_context.h"
 #include "vocabulary.h"
 
+#include "says.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -121,8 +123,8 @@ TEST(LessonText, EquationsPrintAsTheInspectorsAndHoldAsPrinted) {
     const StepRun third = runStepFrom(s, thirds, namesOf(s), 10, 1);
     const std::string text = stepAnswer(s, third, {"m2's mass = 3.5 kg"}, &run).text;
     EXPECT_TRUE(equationsHold(text, kFormatNumberUnit)) << text;
-    EXPECT_TRUE(contains(text, "With m2's mass = 3.5 kg: A. ")) << text;
-    EXPECT_TRUE(contains(text, "As written: A, 2 - 1·(6 - 2) = -2.")) << text;
+    EXPECT_TRUE(says(text, "With m2's mass = 3.5 kg: A. "));
+    EXPECT_TRUE(says(text, "As written: A, 2 - 1·(6 - 2) = -2."));
 }
 
 TEST(LessonText, AsWrittenTextSaysSoOnceTheWorldIsChanged) {
@@ -186,9 +188,9 @@ TEST(LessonLive, Step3WithC09) {
     ASSERT_TRUE(run.reached);
     const StepRun written = runStepToPause(s);
     const std::string text = stepAnswer(s, run, {"C = 0.9"}, &written).text;
-    EXPECT_TRUE(contains(text, "With C = 0.9: A. v' = -C·v = -0.9·4 = -3.6 m/s")) << text;
-    EXPECT_TRUE(contains(text, "1·(-3.6)²/2 = 6.48 J")) << text;
-    EXPECT_TRUE(contains(text, "As written: A, -2 m/s and 2 J.")) << text;
+    EXPECT_TRUE(says(text, "With C = 0.9: A. v' = -C·v = -0.9·4 = -3.6 m/s"));
+    EXPECT_TRUE(says(text, "1·(-3.6)²/2 = 6.48 J"));
+    EXPECT_TRUE(says(text, "As written: A, -2 m/s and 2 J."));
     EXPECT_TRUE(equationsHold(text, kFormatNumberUnit)) << text;
     EXPECT_NEAR(run.event.blocks[0].velocity.x, -3.6, 1e-12);
     // The question asked at the setup says C = 0.9 too (issue 38: it said 0.5 after R).
@@ -211,7 +213,7 @@ TEST(LessonLive, Step13WithM2Of4KgSaysTheInspectorsNumbers) {
     EXPECT_EQ(f.v2AfterText, "2.4");
     EXPECT_TRUE(contains(text, "= " + f.v1AfterText + " m/s and v2'")) << text;
     EXPECT_TRUE(contains(text, "= " + f.v2AfterText + " m/s.")) << text;
-    EXPECT_TRUE(contains(text, "A. v1' = 1.2 - 1·(6 - 1.2) = -3.6 m/s")) << text;
+    EXPECT_TRUE(says(text, "A. v1' = 1.2 - 1·(6 - 1.2) = -3.6 m/s"));
     EXPECT_TRUE(equationsHold(text, kFormatNumberUnit)) << text;
     const StepPrompt prompt = stepPrompt(s, run.setup, run.blocks, false);
     EXPECT_TRUE(contains(prompt.question, "m2 = 4 kg at 0 m/s: u = (1·6 + 4·0)/(1 + 4) = 1.2 m/s"))
@@ -227,8 +229,8 @@ TEST(LessonLive, Step4At60FramesPerSecond) {
     EXPECT_EQ(run.eventProgress.collisions, 1);
     EXPECT_NEAR(run.hit->time, 5.75 / 14.0, 1e-12); // the bottom's 5.75 m at 14 m/s
     const std::string text = stepAnswer(s, run, {"60 frames per second"}, nullptr).text;
-    EXPECT_TRUE(contains(text, "touches the step at x = 8.75 m")) << text;
-    EXPECT_TRUE(contains(text, "b = 0.233 m")) << text;
+    EXPECT_TRUE(says(text, "touches the step at x = 8.75 m"));
+    EXPECT_TRUE(says(text, "b = 0.233 m"));
     EXPECT_TRUE(equationsHold(text, kFormatNumberUnit)) << text;
     EXPECT_EQ(stepAnswer(s, run, {}, nullptr).proved, std::vector<int>{0});
 }
@@ -260,7 +262,7 @@ TEST(LessonLive, Step25WithMu02StopsWhereTheEngineStopsIt) {
     EXPECT_NEAR(crate.position.x, 3.0 + 36.0 / (2 * 0.2 * 9.81), 1e-9);
     const std::string text = stepAnswer(s, run, {"µ = 0.2"}, nullptr).text;
     EXPECT_TRUE(contains(text, "at rest at x = " + formatNumber(crate.position.x) + " m")) << text;
-    EXPECT_TRUE(contains(text, "(as written: found to 1e-9")) << text;
+    EXPECT_TRUE(says(text, "(as written: found to 1e-9"));
     EXPECT_TRUE(equationsHold(text, kFormatNumberUnit)) << text;
     EXPECT_FALSE(contains(text, "6.67")) << text;
 }
@@ -295,8 +297,8 @@ TEST(Lecture3, EveryDemonstrationAsksAndItsTextsHoldAsPrinted) {
 // Step 4: moving back along y lands at the same x as the bounce, and lower (3.75 against 5 m).
 TEST(Lecture3, Step4SaysTheCrookedResultIsLowerNotElsewhereInX) {
     const std::string text = shownTexts(step(4)).back();
-    EXPECT_TRUE(contains(text, "at the frame's end it is at (10, 5) m")) << text;
-    EXPECT_TRUE(contains(text, "would leave it at (10, 3.75) m")) << text;
+    EXPECT_TRUE(says(text, "at the frame's end it is at (10, 5) m"));
+    EXPECT_TRUE(says(text, "would leave it at (10, 3.75) m"));
     EXPECT_FALSE(contains(text, "would leave it at x = 10 m")) << text;
 }
 
@@ -304,7 +306,7 @@ TEST(Lecture3, Step4SaysTheCrookedResultIsLowerNotElsewhereInX) {
 TEST(Lecture3, Step6WritesThePositionAsX) {
     const std::string caption = stepPrompt(step(6)).caption;
     EXPECT_FALSE(contains(caption, "p +=")) << caption;
-    EXPECT_TRUE(contains(caption, "x += v*dt")) << caption;
+    EXPECT_TRUE(says(caption, "x += v*dt"));
 }
 
 // Step 7: the distances the run travels, not a·t²/2.
@@ -325,7 +327,7 @@ TEST(Lecture3, Step7SaysTheDistancesTheRunTravels) {
 // Step 19: the question asks what the answer answers (where A's and C's centres end up).
 TEST(Lecture3, Step19AsksWhereTheCentresEndUp) {
     const std::string question = stepPrompt(step(19)).question;
-    EXPECT_TRUE(contains(question, "where are A's and C's centres after 3 s?")) << question;
+    EXPECT_TRUE(says(question, "where are A's and C's centres after 3 s?"));
     EXPECT_FALSE(contains(question, "which moves A first")) << question;
 }
 

@@ -6,6 +6,8 @@
 #include "lesson_test_context.h"
 #include "vocabulary.h"
 
+#include "says.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -63,6 +65,11 @@ std::string errorOf(const std::string& file) {
         loadLessonFile(std::string(SANDBOX_TEST_DATA_DIR) + "/" + file, context());
     EXPECT_FALSE(r.lesson) << file << " should not load";
     return r.error.text();
+}
+
+// The error of loading the bad lesson `file` says `part` (somewhere in it).
+::testing::AssertionResult errorSays(const std::string& file, const std::string& part) {
+    return says(errorOf(file), part);
 }
 
 LessonStep onlyStep(const std::string& text) {
@@ -448,35 +455,27 @@ TEST(Lesson, StepNumbersOutsideTheLessonAreErrors) {
 // ---- Malformed lessons: each error names its place ----
 
 TEST(LessonErrors, UnknownOverlay) {
-    const std::string e = errorOf("unknown_overlay.json");
-    EXPECT_NE(e.find("unknown_overlay.json: steps[1].overlays[1]: unknown overlay \"sparkles\""),
-              std::string::npos)
-        << e;
+    EXPECT_TRUE(
+        errorSays("unknown_overlay.json",
+                  "unknown_overlay.json: steps[1].overlays[1]: unknown overlay \"sparkles\""));
 }
 
 TEST(LessonErrors, SceneThatFailsToLoad) {
-    EXPECT_NE(errorOf("scene_fails.json")
-                  .find("scene_fails.json: steps[0].scene: no scene "
-                        "\"no_such_scene\""),
-              std::string::npos)
-        << errorOf("scene_fails.json");
-    const std::string e = errorOf("inline_scene_fails.json");
-    EXPECT_NE(e.find("inline_scene_fails.json: steps[1].scene.blocks[0].mass: "), std::string::npos)
-        << e;
+    EXPECT_TRUE(errorSays("scene_fails.json",
+                          "scene_fails.json: steps[0].scene: no scene \"no_such_scene\""));
+    EXPECT_TRUE(errorSays("inline_scene_fails.json",
+                          "inline_scene_fails.json: steps[1].scene.blocks[0].mass: "));
 }
 
 TEST(LessonErrors, BadExpectation) {
-    const std::string e = errorOf("bad_expectation.json");
-    EXPECT_NE(e.find("bad_expectation.json: steps[0].expect[1].block: no block named \"nobody\""),
-              std::string::npos)
-        << e;
+    EXPECT_TRUE(
+        errorSays("bad_expectation.json",
+                  "bad_expectation.json: steps[0].expect[1].block: no block named \"nobody\""));
 }
 
 TEST(LessonErrors, BadOverrideIsPlacedAtTheOverride) {
-    const std::string e = errorOf("bad_override.json");
-    EXPECT_NE(e.find("bad_override.json: steps[0].overrides.bounciness: must be from 0 to 1"),
-              std::string::npos)
-        << e;
+    EXPECT_TRUE(errorSays("bad_override.json",
+                          "bad_override.json: steps[0].overrides.bounciness: must be from 0 to 1"));
 }
 
 TEST(LessonErrors, SyntaxErrorHasLineAndColumn) {

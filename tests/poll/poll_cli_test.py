@@ -162,27 +162,24 @@ def refusals_check(server):
                                                    host="attacker.example"))[0], 421
         results["foreign port"] = (await p.request("GET", "/%s/state" % t,
                                                    host="127.0.0.1:1"))[0], 421
-        results["cross-site origin"] = (await p.request(
-            "POST", "/%s/vote" % t, good,
-            {"Content-Type": "application/json", "Origin": "http://attacker.example"}))[0], 403
-        results["cross-site fetch"] = (await p.request(
-            "POST", "/%s/vote" % t, good,
-            {"Content-Type": "application/json", "Sec-Fetch-Site": "cross-site"}))[0], 403
-        results["form"] = (await p.request(
-            "POST", "/%s/vote" % t, good, {"Content-Type": "text/plain",
-                                           "Origin": "http://" + host}))[0], 415
-        results["out of range"] = (await p.request(
-            "POST", "/%s/vote" % t, b'{"device": "phone-attack", "choice": 3}',
-            json_headers))[0], 422
-        results["negative"] = (await p.request(
-            "POST", "/%s/vote" % t, b'{"device": "phone-attack", "choice": -1}',
-            json_headers))[0], 422
-        results["malformed json"] = (await p.request(
-            "POST", "/%s/vote" % t, b'{"device": "phone-attack", "choice": ',
-            json_headers))[0], 400
-        results["free text"] = (await p.request(
-            "POST", "/%s/vote" % t, b'{"device": "phone-attack", "choice": 1, "name": "Ann"}',
-            json_headers))[0], 400
+        async def vote_status(body, headers):
+            """The status of a vote with this body and these headers, through the good token."""
+            return (await p.request("POST", "/%s/vote" % t, body, headers))[0]
+
+        results["cross-site origin"] = await vote_status(
+            good, {"Content-Type": "application/json", "Origin": "http://attacker.example"}), 403
+        results["cross-site fetch"] = await vote_status(
+            good, {"Content-Type": "application/json", "Sec-Fetch-Site": "cross-site"}), 403
+        results["form"] = await vote_status(
+            good, {"Content-Type": "text/plain", "Origin": "http://" + host}), 415
+        results["out of range"] = await vote_status(
+            b'{"device": "phone-attack", "choice": 3}', json_headers), 422
+        results["negative"] = await vote_status(
+            b'{"device": "phone-attack", "choice": -1}', json_headers), 422
+        results["malformed json"] = await vote_status(
+            b'{"device": "phone-attack", "choice": ', json_headers), 400
+        results["free text"] = await vote_status(
+            b'{"device": "phone-attack", "choice": 1, "name": "Ann"}', json_headers), 400
         p.close()
         # On connections of their own (the server closes them after refusing).
         results["body over the cap"] = await raw_exchange(

@@ -266,13 +266,11 @@ World buildWorld(const Scenario& sc, std::uint64_t seed) {
     // its neighbours): contacts at time zero.
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
-    const Vec2 span = sc.bounds.max - sc.bounds.min;
-    const int columns =
-        std::max(1, static_cast<int>(std::ceil(std::sqrt(sc.blocks * span.x / span.y))));
-    const int rows = (sc.blocks + columns - 1) / columns;
-    const Vec2 cell{span.x / columns, span.y / rows};
+    const test_worlds::CellGrid grid =
+        test_worlds::cellGridFor(sc.blocks, sc.bounds.max - sc.bounds.min);
+    const Vec2 cell = grid.cell;
     for (int k = 0; k < sc.blocks; ++k) {
-        const int cx = k % columns, cy = k / columns;
+        const int cx = k % grid.columns, cy = k / grid.columns;
         const bool full = unit(rng) < 0.1;
         const Vec2 fill =
             full ? Vec2{1.0, 1.0} : Vec2{0.2 + 0.7 * unit(rng), 0.2 + 0.7 * unit(rng)};

@@ -4,24 +4,16 @@ under app/, engine/ or tests/ is refused and named, 20 pass, data files and othe
 count."""
 
 import os
-import subprocess
 import sys
-import tempfile
 import unittest
 
-SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools",
-                      "check_folder_sizes.py")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from tree_check import check_refuses_a_missing_folder, run_on_tree  # noqa: E402
 
 
 def check(paths):
-    """Writes the (empty) files into a fresh folder and runs the script on it: (exit, output)."""
-    with tempfile.TemporaryDirectory() as root:
-        for path in paths:
-            os.makedirs(os.path.join(root, os.path.dirname(path)), exist_ok=True)
-            open(os.path.join(root, path), "w", encoding="utf-8").close()
-        run = subprocess.run([sys.executable, SCRIPT, root], capture_output=True, text=True,
-                             timeout=60)
-        return run.returncode, run.stdout + run.stderr
+    """The script on a fresh folder holding these (empty) files: (exit code, output)."""
+    return run_on_tree("check_folder_sizes.py", {path: "" for path in paths})
 
 
 def files(folder, count, suffix=".cpp"):
@@ -52,10 +44,7 @@ class FolderSizes(unittest.TestCase):
         self.assertEqual(code, 0, out)
 
     def test_bad_usage(self):
-        run = subprocess.run([sys.executable, SCRIPT, "/nonexistent/folder"], capture_output=True,
-                             text=True, timeout=60)
-        self.assertEqual(run.returncode, 2)
-        self.assertIn("not a folder", run.stderr)
+        check_refuses_a_missing_folder(self, "check_folder_sizes.py")
 
 
 if __name__ == "__main__":

@@ -184,20 +184,7 @@ def main():
         print(__doc__)
         return 2
     site, what = sys.argv[1], sys.argv[2]
-    if not os.path.exists(bt.CHROMIUM):
-        bt.skip("chromium is not installed (scripts/web.sh deps installs it)")
-    if not os.path.exists(os.path.join(site, "index.html")):
-        bt.skip(f"{site}/index.html is missing: build the browser build with scripts/web.sh build")
-    server, base = bt.serve(site)
-    try:
-        {"big-files": big_files, "url-range": url_range}[what](base)
-    except AssertionError as e:
-        print(f"FAILED: {e}")
-        return 1
-    finally:
-        server.shutdown()
-    print("passed")
-    return 0
+    return bt.run_site(site, {"big-files": big_files, "url-range": url_range}[what])
 
 
 if __name__ == "__main__":

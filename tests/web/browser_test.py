@@ -1141,44 +1141,17 @@ def shots(base, out_dir):
             page.close()
 
 
-def main():
-    if len(sys.argv) < 3:
-        print(__doc__)
-        return 2
-    site, what = sys.argv[1], sys.argv[2]
+def run_site(site, run):
+    """The browser tests' shared main: skipped where Chromium or the built site is missing, else
+    `site` served on 127.0.0.1 and run(base) called with its URL; prints "passed" or the failed
+    check and returns the exit code (browser_test.py, big_inputs_test.py)."""
     if not os.path.exists(CHROMIUM):
         skip("chromium is not installed (scripts/web.sh deps installs it)")
-    if what == "axe" and not os.path.exists(AXE_JS):
-        skip(f"{AXE_JS} is missing (scripts/web.sh deps installs axe-core)")
     if not os.path.exists(os.path.join(site, "index.html")):
         skip(f"{site}/index.html is missing: build the browser build with scripts/web.sh build")
     server, base = serve(site)
-    checks = {"first-frame": first_frame, "pause": pause, "url-scene": url_scene,
-              "url-lesson": url_lesson, "url-bad": url_bad, "open-file": open_file,
-              "wheel": wheel, "trackers": trackers, "unsaved": unsaved, "link": link,
-              "axe": axe, "live-region": live_region, "hidden-control": hidden_control,
-              "undo": undo,
-              "keyboard": keyboard, "keys": keys, "sound": sound}
     try:
-        if what == "shots":
-            shots(base, sys.argv[3])
-            return 0
-        if what == "fullscreen":
-            for ratio in (1, 2):
-                fullscreen(base, ratio)
-            print("passed")
-            return 0
-        if what in ("phone", "offline"):
-            phone(base) if what == "phone" else offline(site, base)
-            print("passed")
-            return 0
-        page = Page(1280, 720)
-        try:
-            checks[what](page, base)
-            page.wait_frames(2)  # let late messages arrive
-            check(not page.errors, "the console has errors:\n" + "\n".join(page.errors))
-        finally:
-            page.close()
+        run(base)
     except AssertionError as e:
         print(f"FAILED: {e}")
         return 1
@@ -1186,6 +1159,40 @@ def main():
         server.shutdown()
     print("passed")
     return 0
+
+
+def main():
+    if len(sys.argv) < 3:
+        print(__doc__)
+        return 2
+    site, what = sys.argv[1], sys.argv[2]
+    if what == "axe" and not os.path.exists(AXE_JS):
+        skip(f"{AXE_JS} is missing (scripts/web.sh deps installs axe-core)")
+    checks = {"first-frame": first_frame, "pause": pause, "url-scene": url_scene,
+              "url-lesson": url_lesson, "url-bad": url_bad, "open-file": open_file,
+              "wheel": wheel, "trackers": trackers, "unsaved": unsaved, "link": link,
+              "axe": axe, "live-region": live_region, "hidden-control": hidden_control,
+              "undo": undo,
+              "keyboard": keyboard, "keys": keys, "sound": sound}
+
+    def run(base):
+        if what == "shots":
+            shots(base, sys.argv[3])
+        elif what == "fullscreen":
+            for ratio in (1, 2):
+                fullscreen(base, ratio)
+        elif what in ("phone", "offline"):
+            phone(base) if what == "phone" else offline(site, base)
+        else:
+            page = Page(1280, 720)
+            try:
+                checks[what](page, base)
+                page.wait_frames(2)  # let late messages arrive
+                check(not page.errors, "the console has errors:\n" + "\n".join(page.errors))
+            finally:
+                page.close()
+
+    return run_site(site, run)
 
 
 if __name__ == "__main__":

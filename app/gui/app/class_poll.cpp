@@ -81,6 +81,18 @@ void stopPoll(ClassPoll& poll) {
     poll.note.clear();
 }
 
+namespace {
+
+// The step's question as the world on screen reads it, the lecturer's changes included
+// (lesson_prompt); none when the setup asks nothing (`why` says why).
+std::optional<PollQuestion> liveQuestion(const LessonSession& lesson, const SimulationSession& sim,
+                                         std::string* why) {
+    const int number = static_cast<int>(lesson.current) + 1;
+    return pollQuestion(number, lessonPrompt(lesson, sim), -1, why);
+}
+
+} // namespace
+
 void followLesson(ClassPoll& poll, const LessonSession& lesson, const SimulationSession& sim) {
     if (!poll.session) return;
     if (!lesson.active() || lesson.lesson->path != poll.lessonPath) return stopPoll(poll);
@@ -92,15 +104,12 @@ void followLesson(ClassPoll& poll, const LessonSession& lesson, const Simulation
         poll.session->clear();
         poll.note = atSetup ? "" : "the vote opens at a step's setup (R)";
     }
-    const int number = static_cast<int>(lesson.current) + 1;
     if (atSetup && !poll.asked) {
-        // The question of the world on screen, the lecturer's changes included (lesson_prompt).
         poll.asked = true;
         poll.proved = false;
         poll.note.clear();
-        const std::optional<PollQuestion> q =
-            pollQuestion(number, lessonPrompt(lesson, sim), -1, &poll.note);
-        if (q) poll.session->open(*q);
+        if (const std::optional<PollQuestion> q = liveQuestion(lesson, sim, &poll.note))
+            poll.session->open(*q);
         poll.askedAt = sim.changes;
     } else if (atSetup && poll.asked && sim.changes != poll.askedAt) {
         // The lecturer changed the setup (C, a mass, the method, a block moved) while the step
@@ -109,8 +118,7 @@ void followLesson(ClassPoll& poll, const LessonSession& lesson, const Simulation
         poll.askedAt = sim.changes;
         if (poll.session->snapshot().open) {
             std::string why;
-            const std::optional<PollQuestion> q =
-                pollQuestion(number, lessonPrompt(lesson, sim), -1, &why);
+            const std::optional<PollQuestion> q = liveQuestion(lesson, sim, &why);
             if (q) {
                 poll.session->reword(*q);
             } else { // the changed setup asks nothing any more

@@ -11,46 +11,18 @@
 // Key codes are GLFW's: ImGui 1.86 with its GLFW backend indexes io.KeysDown by them, and the
 // offscreen renderer uses the same codes. window_glfw.cpp checks they match <GLFW/glfw3.h>.
 namespace keys {
-constexpr int kSpace = 32;
-constexpr int kA = 65;
-constexpr int kMinus = 45;
-constexpr int kEqual = 61;
-constexpr int kC = 67;
-constexpr int kD = 68;
-constexpr int kF = 70;
-constexpr int kM = 77;
-constexpr int kN = 78;
-constexpr int kP = 80;
-constexpr int kQ = 81;
-constexpr int kR = 82;
-constexpr int kS = 83;
-constexpr int kU = 85;
-constexpr int kV = 86;
-constexpr int kY = 89;
-constexpr int kZ = 90;
-constexpr int k0 = 48; // k0 + d for the digit d
-constexpr int kEscape = 256;
-constexpr int kEnter = 257;
-constexpr int kTab = 258;
-constexpr int kDelete = 261;
-constexpr int kRight = 262;
-constexpr int kLeft = 263;
-constexpr int kDown = 264;
-constexpr int kUp = 265;
-constexpr int kPageUp = 266;
-constexpr int kPageDown = 267;
-constexpr int kHome = 268;
-constexpr int kEnd = 269;
-constexpr int kF1 = 290;
-constexpr int kF5 = 294;
-constexpr int kF6 = 295;
-constexpr int kF11 = 300;
+// Printable keys are their ASCII codes (a letter's upper case); GLFW numbers the others from 256.
+constexpr int kSpace = ' ', kMinus = '-', kEqual = '=';
+constexpr int k0 = '0'; // k0 + d for the digit d
+constexpr int kA = 'A', kC = 'C', kD = 'D', kF = 'F', kM = 'M', kN = 'N', kP = 'P', kQ = 'Q',
+              kR = 'R', kS = 'S', kU = 'U', kV = 'V', kY = 'Y', kZ = 'Z';
+constexpr int kEscape = 256, kEnter = 257, kTab = 258, kDelete = 261;
+constexpr int kRight = 262, kLeft = 263, kDown = 264, kUp = 265;
+constexpr int kPageUp = 266, kPageDown = 267, kHome = 268, kEnd = 269;
+constexpr int kF1 = 290, kF5 = 294, kF6 = 295, kF11 = 300;
 constexpr int kKeypad0 = 320; // kKeypad0 + d for the digit d
-constexpr int kKeypadSubtract = 333;
-constexpr int kKeypadAdd = 334;
-constexpr int kKeypadEnter = 335;
-constexpr int kLeftControl = 341;
-constexpr int kRightControl = 345;
+constexpr int kKeypadSubtract = 333, kKeypadAdd = 334, kKeypadEnter = 335;
+constexpr int kLeftControl = 341, kRightControl = 345;
 } // namespace keys
 
 enum class Action {

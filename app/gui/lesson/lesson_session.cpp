@@ -147,8 +147,8 @@ bool enterStep(LessonSession& s, SimulationSession& sim, View& view, Messages& m
     s.digits.clear();
     // The world the step states, seen as it says; its edits play at their frames (reset below
     // plays those of frame 0, and R plays them again).
-    sim.setScene(*step.scene, step.sceneSource); // its overrides in it: not to be undone
-    sim.printSetup(step.overrides);
+    // Its overrides are in its scene (not to be undone), printed as its setup.
+    sim.setScene(*step.scene, step.sceneSource, step.overrides);
     sim.editLog = LogPlayer(step.edits);
     Overlays shown = ShowSet::noOverlays();
     for (const std::string& name : step.overlays) setOverlay(shown, name, true);

@@ -49,8 +49,8 @@ struct WebApp {
     // and when that scene was last made (s on the page's clock).
     std::string linkQuery, linkScene;
     double linkSceneAt = -1e9;
-    std::size_t linkJournal = 0; // the edits journaled when the scene was last made
-    double pixelRatio = 1.0;     // the ratio app.view.uiScale includes (the user's scale times it)
+    std::uint64_t linkChanges = 0; // the session's changes when the scene was last made
+    double pixelRatio = 1.0; // the ratio app.view.uiScale includes (the user's scale times it)
     TouchInput touch;
     imgui_ext::ScrollTarget touchScrolls; // what a swipe scrolls: the window under the finger
     bool typingShown = false;             // the page's field for the on-screen keyboard has focus
@@ -115,10 +115,11 @@ void followLink(WebApp& w, double now) {
     std::string scene = w.linkScene;
     if (!linkCarriesScene(app) || linkSceneTooLarge(app)) {
         scene.clear();
-    } else if (scene.empty() || app.sim.edits.journal().size() != w.linkJournal ||
+    } else if (scene.empty() || app.sim.changes != w.linkChanges ||
                (app.sim.paused && now - w.linkSceneAt >= kLinkRefreshSeconds)) {
-        // An edit since (a block dragged on: each move is journaled) makes it again at once.
-        w.linkJournal = app.sim.edits.journal().size();
+        // A change since (an edit, an undo, a block dragged on: each move is an edit) makes it
+        // again at once.
+        w.linkChanges = app.sim.changes;
         scene = sceneToJson(linkedScene(app));
         w.linkSceneAt = now;
     }

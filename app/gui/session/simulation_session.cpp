@@ -2,6 +2,7 @@
 
 #include "edit_words.h"
 #include "input_limits.h"
+#include "panel_rows.h"
 #include "placement.h"
 #include "printable.h"
 #include "save_naming.h"
@@ -40,7 +41,8 @@ void SimulationSession::restartRun() {
     if (selected >= static_cast<int>(world().blocks.size())) selected = -1;
 }
 
-void SimulationSession::setScene(const Scene& newScene, const std::string& path) {
+void SimulationSession::setScene(const Scene& newScene, const std::string& path,
+                                 const std::vector<Edit>& setup) {
     scene = newScene;
     scenePath = path;
     ++changes;
@@ -54,6 +56,7 @@ void SimulationSession::setScene(const Scene& newScene, const std::string& path)
     editLogError.clear();
     restartRun();
     edits.clear();
+    for (const Edit& edit : setup) printChange("setup: " + editLogLine(edit, -1, world(), labels));
 }
 
 void SimulationSession::reset() {
@@ -82,7 +85,7 @@ EditError SimulationSession::apply(const Edit& edit, bool continues) {
     if (!r.applied) return r.error;
     afterEdit(*r.applied, false);
     const bool named = !edits.journalFull() && !edits.journal().empty();
-    printEdit(
+    printChange(
         editLogLine(named ? edits.journal().back().edit : edit, r.applied->index, world(), labels));
     return {};
 }
@@ -106,13 +109,13 @@ bool SimulationSession::undoOrRedo(bool back, EditError& error) {
         notice = r.error.empty()
                      ? std::string(back ? "Nothing to undo" : "Nothing to redo")
                      : std::string(back ? "Cannot undo: " : "Cannot redo: ") + r.error.text();
-        printEdit(std::string(what) + ": " + (r.error.empty() ? "nothing" : r.error.text()));
+        printChange(std::string(what) + ": " + (r.error.empty() ? "nothing" : r.error.text()));
         error = r.error;
         return false;
     }
     afterEdit(*r.edit, back);
     notice = std::string(what) + ": " + editChangeText(*r.edit, back, labels);
-    printEdit(notice);
+    printChange(notice);
     return true;
 }
 
@@ -132,11 +135,14 @@ void SimulationSession::playEditLog() {
     }
 }
 
-void SimulationSession::printSetup(const std::vector<Edit>& setup) const {
-    for (const Edit& edit : setup) printEdit("setup: " + editLogLine(edit, -1, world(), labels));
+void SimulationSession::printSettingsChanged(const WorldSettings& before) const {
+    for (const settings_table::WorldKey* row : panelOrder())
+        if (!settings_table::same(*row, before, world().settings))
+            printChange(row->key + std::string(": ") +
+                        settings_table::logValue(*row, world().settings));
 }
 
-void SimulationSession::printEdit(const std::string& line) const {
+void SimulationSession::printChange(const std::string& line) const {
     if (!verbose) return;
     std::printf("%s\n", printable(line, kPrintablePath).c_str()); // names come from files
     std::fflush(stdout);

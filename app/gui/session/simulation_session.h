@@ -133,7 +133,10 @@ struct SimulationSession {
     const World& world() const { return run.world; }
 
     // Uses an already parsed scene: a new run, paused at t = 0, nothing selected, nothing edited.
-    void setScene(const Scene& scene, const std::string& path);
+    // `setup`: a lesson step's own setup (its "overrides", already in `scene`), printed for
+    // --verbose as the edit prints, one line each ("setup: method: move-and-correct"); not an
+    // edit of the run: nothing to undo, nothing in the journal.
+    void setScene(const Scene& scene, const std::string& path, const std::vector<Edit>& setup = {});
     // R: the blocks and time back to the scene as loaded; the chosen method, bounciness, gravity,
     // frame rate and substeps stay (comparing methods is S then R). Trails cleared.
     void reset();
@@ -159,10 +162,10 @@ struct SimulationSession {
     // Plays the edit log's lines due at the world's frame (step() does after each frame; call it
     // after setting editLog). A refused line sets editLogError and the notice and stops the log.
     void playEditLog();
-    // A lesson step's own setup (its "overrides", already in the scene it was given): one
-    // --verbose line each, as the edit prints ("setup: method: move-and-correct"). Not an edit
-    // of the run: nothing to undo, nothing in the journal.
-    void printSetup(const std::vector<Edit>& setup) const;
+    // --verbose: the world keys whose values differ from `before`, one line each as an edit's
+    // ("method: perfect"), in the panel's order: what a reset or a lesson step's restart changed
+    // without an edit (an edit prints its own line where it is applied).
+    void printSettingsChanged(const WorldSettings& before) const;
     // True when quitting would lose edits (see blocksEdited).
     bool unsavedEdits() const;
 
@@ -232,7 +235,9 @@ struct SimulationSession {
     void afterEdit(const AppliedEdit& applied, bool undone);
     // Undo (`back`) or redo: true when done; `error` says why a refused one was refused.
     bool undoOrRedo(bool back, EditError& error);
-    void printEdit(const std::string& line) const;
+    // The one printer of what changed (--verbose): edits, undo and redo, a step's setup and the
+    // settings a reset changed, each line printable (names come from files).
+    void printChange(const std::string& line) const;
 };
 
 // True when the frame from frameStart to frameEnd (s) reaches the scene's "duration" (the app

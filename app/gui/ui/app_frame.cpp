@@ -3,7 +3,6 @@
 
 #include "imgui_ext.h"
 #include "overlay_window.h"
-#include "panel_rows.h"
 #include "renderer.h"
 #include "screen_text.h"
 
@@ -24,15 +23,6 @@ void logEvent(const App& app, const std::string& text) {
     if (!app.log.verbose) return;
     std::printf("%s\n", printable(text, kPrintablePath).c_str()); // names come from files
     std::fflush(stdout);
-}
-
-// The world's settings a reset or a step's start changed (not edits: an edit prints its own
-// line where it is applied), one line each as an edit's: "method: perfect".
-void logSettingsChanged(const App& app, const WorldSettings& before) {
-    for (const settings_table::WorldKey* row : panelOrder())
-        if (!settings_table::same(*row, before, app.sim.world().settings))
-            logEvent(app, row->key + std::string(": ") +
-                              settings_table::logValue(*row, app.sim.world().settings));
 }
 
 // The keyboard to `window` ("": back to the scene), said in the --verbose log when it changes.
@@ -127,7 +117,7 @@ void applyAction(App& app, Action action) {
             resetScene(app);
             logEvent(app, "reset");
         }
-        logSettingsChanged(app, before);
+        app.sim.printSettingsChanged(before);
         break;
     }
     case Action::ResetToFile: {
@@ -139,7 +129,7 @@ void applyAction(App& app, Action action) {
             resetToFile(app);
             logEvent(app, "reset to file");
         }
-        logSettingsChanged(app, before);
+        app.sim.printSettingsChanged(before);
         break;
     }
     case Action::TogglePause:

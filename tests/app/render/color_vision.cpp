@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace {
 
@@ -33,17 +34,10 @@ constexpr double kTritanopia[3][3] = {{1.255528, -0.076749, -0.178779},
 } // namespace
 
 const char* visionName(Vision vision) {
-    switch (vision) {
-    case Vision::Normal:
-        return "normal vision";
-    case Vision::Protanopia:
-        return "protanopia";
-    case Vision::Deuteranopia:
-        return "deuteranopia";
-    case Vision::Tritanopia:
-        return "tritanopia";
-    }
-    return "?";
+    constexpr const char* kNames[] = {"normal vision", "protanopia", "deuteranopia", "tritanopia"};
+    static_assert(std::size(kNames) == std::size(kVisions), "a name for every vision");
+    const auto i = static_cast<size_t>(vision);
+    return i < std::size(kNames) ? kNames[i] : "?";
 }
 
 Lab toLab(const Color& color) {

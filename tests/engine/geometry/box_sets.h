@@ -4,6 +4,9 @@
 
 #include "collision.h"
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <cstdint>
 #include <random>
 #include <utility>
@@ -78,6 +81,36 @@ template <class Test> std::vector<std::pair<int, int>> bruteForcePairs(const Box
                 !(s.blocks[a].kind == BodyKind::Static && s.blocks[b].kind == BodyKind::Static))
                 pairs.emplace_back(a, b);
     return pairs;
+}
+
+// The blocks a broad phase's query visits, sorted: `query(visit)` runs the query with `visit`.
+template <class Query> std::vector<int> sortedVisits(Query query) {
+    std::vector<int> found;
+    query([&](int j) { found.push_back(j); });
+    std::sort(found.begin(), found.end());
+    return found;
+}
+
+// The touching row: 0 and 1 share an edge, 2 starts 5e-10 m after 1 ends (within the touch
+// tolerance of 1e-9 m), so the pairs that meet are {0, 1} and {1, 2}.
+inline BoxSet touchingRow() {
+    BoxSet s;
+    s.blocks.assign(3, Block{});
+    s.boxes = {
+        {{1.0, 3.0}, {1.5, 3.5}}, {{1.5, 3.0}, {2.0, 3.5}}, {{2.0 + 5e-10, 3.0}, {2.5, 3.5}}};
+    return s;
+}
+
+// Two queries compared with the brute-force answer: a random block's own box (leaving that block
+// out), and a box anywhere. `answer(query, self)` is the broad phase's sorted answer (self -1:
+// no block left out).
+template <class Answer>
+void expectQueriesExact(const BoxSet& s, std::mt19937_64& rng, Answer answer) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const int self = static_cast<int>(unit(rng) * static_cast<double>(s.boxes.size()));
+    EXPECT_EQ(answer(s.boxes[self], self), bruteForceQuery(s.boxes, s.boxes[self], self));
+    const Aabb anywhere = randomQueryBox(rng);
+    EXPECT_EQ(answer(anywhere, -1), bruteForceQuery(s.boxes, anywhere, -1));
 }
 
 } // namespace box_sets

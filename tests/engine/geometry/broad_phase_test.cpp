@@ -17,17 +17,16 @@ namespace {
 
 using box_sets::BoxSet;
 using box_sets::bruteForcePairs;
-using box_sets::bruteForceQuery;
 using box_sets::randomSetup;
 
 std::vector<int> queryAnswer(const BroadPhase& grid, const Aabb& query, int self) {
-    std::vector<int> found;
-    if (self < 0)
-        grid.query(query, [&](int j) { found.push_back(j); });
-    else
-        grid.queryOthers(query, self, [&](int j) { found.push_back(j); });
+    std::vector<int> found = box_sets::sortedVisits([&](auto visit) {
+        if (self < 0)
+            grid.query(query, visit);
+        else
+            grid.queryOthers(query, self, visit);
+    });
     const size_t visited = found.size();
-    std::sort(found.begin(), found.end());
     found.erase(std::unique(found.begin(), found.end()), found.end());
     EXPECT_EQ(found.size(), visited) << "a block was visited twice";
     return found;
@@ -60,7 +59,6 @@ TEST(BroadPhase, QueriesFindExactlyTheBoxesThatMeetAlsoAfterSet) {
         BoxSet s = randomSetup(seed, 300);
         BroadPhase grid;
         grid.build(s.bounds, s.blocks, [&](int i) { return s.boxes[i]; });
-        const int n = static_cast<int>(s.boxes.size());
         for (int round = 0; round < 200; ++round) {
             // Register a block again: moved (often into other cells), sometimes grown over many
             // cells or shrunk back, sometimes moved back where it was (re-entering a cell).
@@ -72,11 +70,9 @@ TEST(BroadPhase, QueriesFindExactlyTheBoxesThatMeetAlsoAfterSet) {
                 grid.set(i, s.boxes[i]);
             }
             EXPECT_EQ(grid.box(i).max.x, s.boxes[i].max.x);
-            const int self = static_cast<int>(unit(rng) * n);
-            EXPECT_EQ(queryAnswer(grid, s.boxes[self], self),
-                      bruteForceQuery(s.boxes, s.boxes[self], self));
-            const Aabb anywhere = box_sets::randomQueryBox(rng);
-            EXPECT_EQ(queryAnswer(grid, anywhere, -1), bruteForceQuery(s.boxes, anywhere, -1));
+            box_sets::expectQueriesExact(s, rng, [&](const Aabb& query, int self) {
+                return queryAnswer(grid, query, self);
+            });
         }
         // After all the moves, the pairs too (overflow lists and dead slots).
         const auto meeting = pairsOf([&](auto visit) { grid.forEachMeetingPair(visit); });
@@ -85,10 +81,7 @@ TEST(BroadPhase, QueriesFindExactlyTheBoxesThatMeetAlsoAfterSet) {
 }
 
 TEST(BroadPhase, TouchingAndNearlyTouchingBoxesMeetButDoNotOverlap) {
-    BoxSet s;
-    s.blocks.assign(3, Block{});
-    s.boxes = {
-        {{1.0, 3.0}, {1.5, 3.5}}, {{1.5, 3.0}, {2.0, 3.5}}, {{2.0 + 5e-10, 3.0}, {2.5, 3.5}}};
+    const BoxSet s = box_sets::touchingRow();
     BroadPhase grid;
     grid.build(s.bounds, s.blocks, [&](int i) { return s.boxes[i]; });
     EXPECT_EQ(pairsOf([&](auto visit) { grid.forEachMeetingPair(visit); }),

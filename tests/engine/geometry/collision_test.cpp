@@ -11,6 +11,17 @@ Aabb box(double minX, double minY, double maxX, double maxY) {
     return {{minX, minY}, {maxX, maxY}};
 }
 
+// An impact (Impact or WallImpact) that hits at `time` on `axes`; the failure says what differs.
+template <class AnImpact>
+::testing::AssertionResult hitsAt(const AnImpact& impact, double time, int axes) {
+    if (!impact.hit()) return ::testing::AssertionFailure() << "no hit";
+    if (impact.time != time || impact.axes != axes)
+        return ::testing::AssertionFailure()
+               << "hit at " << impact.time << " s on axes " << int(impact.axes) << ", not at "
+               << time << " s on axes " << axes;
+    return ::testing::AssertionSuccess();
+}
+
 TEST(Aabb, AabbOfCentreAndSize) {
     const Aabb b = aabbOf(Vec2{5.0, 6.0}, Vec2{2.0, 1.0});
     EXPECT_EQ(b.min, (Vec2{4.0, 5.5}));
@@ -96,9 +107,8 @@ TEST(TimeOfImpact, HeadOnBothMovingMatchesLectureTEqualsAOverB) {
     ASSERT_EQ(t, 0.5);
     const Impact impact =
         timeOfImpact(box(0, 0, 1, 1), Vec2{10.0, 0.0}, box(1.5, 0, 2.5, 1), Vec2{-6.0, 0.0}, dt);
-    ASSERT_TRUE(impact.hit());
-    EXPECT_EQ(impact.time, t * dt); // seconds; exact: every number is a binary fraction
-    EXPECT_EQ(impact.axes, kAxisX);
+    // In seconds; exact: every number is a binary fraction.
+    EXPECT_TRUE(hitsAt(impact, t * dt, kAxisX));
     // Swapping the roles gives the same time.
     const Impact swapped =
         timeOfImpact(box(1.5, 0, 2.5, 1), Vec2{-6.0, 0.0}, box(0, 0, 1, 1), Vec2{10.0, 0.0}, dt);
@@ -110,32 +120,24 @@ TEST(TimeOfImpact, HeadOnVertical) {
     // A above B, falling at 4 m/s onto B rising at 4 m/s: gap 1 m, closing 8 m/s: 1/8 s.
     const Impact impact =
         timeOfImpact(box(0, 3, 1, 4), Vec2{0.0, -4.0}, box(0, 1, 1, 2), Vec2{0.0, 4.0}, 1.0);
-    ASSERT_TRUE(impact.hit());
-    EXPECT_EQ(impact.time, 0.125);
-    EXPECT_EQ(impact.axes, kAxisY);
+    EXPECT_TRUE(hitsAt(impact, 0.125, kAxisY));
 }
 
 TEST(TimeOfImpact, OneMovingAgainstOneAtRest) {
     const Impact impact =
         timeOfImpact(box(0, 0, 1, 1), Vec2{4.0, 0.0}, box(2, 0.5, 3, 1.5), Vec2{}, 1.0);
-    ASSERT_TRUE(impact.hit());
-    EXPECT_EQ(impact.time, 0.25); // gap 1 m at 4 m/s
-    EXPECT_EQ(impact.axes, kAxisX);
+    EXPECT_TRUE(hitsAt(impact, 0.25, kAxisX)); // gap 1 m at 4 m/s
     // The one at rest can be the first argument: it is hit from behind.
     const Impact other =
         timeOfImpact(box(2, 0.5, 3, 1.5), Vec2{}, box(0, 0, 1, 1), Vec2{4.0, 0.0}, 1.0);
-    ASSERT_TRUE(other.hit());
-    EXPECT_EQ(other.time, 0.25);
-    EXPECT_EQ(other.axes, kAxisX);
+    EXPECT_TRUE(hitsAt(other, 0.25, kAxisX));
 }
 
 TEST(TimeOfImpact, CatchingUpFromBehind) {
     // Both move right; A is faster: closing 2 m/s over a 1 m gap.
     const Impact impact =
         timeOfImpact(box(0, 0, 1, 1), Vec2{5.0, 0.0}, box(2, 0, 3, 1), Vec2{3.0, 0.0}, 1.0);
-    ASSERT_TRUE(impact.hit());
-    EXPECT_EQ(impact.time, 0.5);
-    EXPECT_EQ(impact.axes, kAxisX);
+    EXPECT_TRUE(hitsAt(impact, 0.5, kAxisX));
 }
 
 TEST(TimeOfImpact, MovingApartNeverHits) {
@@ -174,35 +176,25 @@ TEST(TimeOfImpact, TheAxisWhoseEntryComesLastIsTheCollisionAxis) {
     // the x faces meet while y overlaps: axis x only.
     const Impact x =
         timeOfImpact(box(0, 0, 1, 1), Vec2{2.0, 1.0}, box(3, 0.5, 4, 1.5), Vec2{}, 10.0);
-    ASSERT_TRUE(x.hit());
-    EXPECT_EQ(x.time, 1.0);
-    EXPECT_EQ(x.axes, kAxisX);
+    EXPECT_TRUE(hitsAt(x, 1.0, kAxisX));
     // A moves (1,2); B = [0.5,1.5]x[3,4]: y entry at 1 s, x overlaps all along: axis y.
     const Impact y =
         timeOfImpact(box(0, 0, 1, 1), Vec2{1.0, 2.0}, box(0.5, 3, 1.5, 4), Vec2{}, 10.0);
-    ASSERT_TRUE(y.hit());
-    EXPECT_EQ(y.time, 1.0);
-    EXPECT_EQ(y.axes, kAxisY);
+    EXPECT_TRUE(hitsAt(y, 1.0, kAxisY));
     // x entry at 0.5 s, y entry at 0.75 s (later): axis y.
     const Impact late =
         timeOfImpact(box(0, 0, 1, 1), Vec2{2.0, 4.0}, box(2, 4, 3, 5), Vec2{}, 10.0);
-    ASSERT_TRUE(late.hit());
-    EXPECT_EQ(late.time, 0.75);
-    EXPECT_EQ(late.axes, kAxisY);
+    EXPECT_TRUE(hitsAt(late, 0.75, kAxisY));
 }
 
 TEST(TimeOfImpact, TouchingAndApproachingHitsAtTimeZero) {
     const Impact impact =
         timeOfImpact(box(0, 0, 1, 1), Vec2{1.0, 0.0}, box(1, 0, 2, 1), Vec2{}, 1.0);
-    ASSERT_TRUE(impact.hit());
-    EXPECT_EQ(impact.time, 0.0);
-    EXPECT_EQ(impact.axes, kAxisX);
+    EXPECT_TRUE(hitsAt(impact, 0.0, kAxisX));
     // Resting on top of another, pushed down by gravity: y at time 0.
     const Impact onTop =
         timeOfImpact(box(0, 1, 1, 2), Vec2{0.0, -0.1635}, box(0, 0, 1, 1), Vec2{}, 1.0);
-    ASSERT_TRUE(onTop.hit());
-    EXPECT_EQ(onTop.time, 0.0);
-    EXPECT_EQ(onTop.axes, kAxisY);
+    EXPECT_TRUE(hitsAt(onTop, 0.0, kAxisY));
 }
 
 TEST(TimeOfImpact, TouchingAndPartingDoesNotHit) {
@@ -220,15 +212,11 @@ TEST(TimeOfImpact, CornerHitSetsBothAxes) {
     // A's top-right corner (1,1) meets B's bottom-left corner (2,2) at t = 1 s exactly.
     const Impact impact =
         timeOfImpact(box(0, 0, 1, 1), Vec2{1.0, 1.0}, box(2, 2, 3, 3), Vec2{}, 10.0);
-    ASSERT_TRUE(impact.hit());
-    EXPECT_EQ(impact.time, 1.0);
-    EXPECT_EQ(impact.axes, kAxisX | kAxisY);
+    EXPECT_TRUE(hitsAt(impact, 1.0, kAxisX | kAxisY));
     // Both moving toward each other diagonally: the corners meet at 0.5 s.
     const Impact both =
         timeOfImpact(box(0, 0, 1, 1), Vec2{1.0, 1.0}, box(2, 2, 3, 3), Vec2{-1.0, -1.0}, 10.0);
-    ASSERT_TRUE(both.hit());
-    EXPECT_EQ(both.time, 0.5);
-    EXPECT_EQ(both.axes, kAxisX | kAxisY);
+    EXPECT_TRUE(hitsAt(both, 0.5, kAxisX | kAxisY));
 }
 
 TEST(TimeOfImpact, WindowTooShortMeansNoHit) {
@@ -254,54 +242,38 @@ TEST(TimeOfWallImpact, EachWall) {
     const Bounds bounds{{0.0, 0.0}, {10.0, 10.0}};
     const Aabb b = box(4, 4, 6, 6);
     const WallImpact right = timeOfWallImpact(b, Vec2{2.0, 0.0}, bounds, 10.0);
-    ASSERT_TRUE(right.hit());
-    EXPECT_EQ(right.time, 2.0); // 4 m to the right wall at 2 m/s
-    EXPECT_EQ(right.axes, kAxisX);
+    EXPECT_TRUE(hitsAt(right, 2.0, kAxisX)); // 4 m to the right wall at 2 m/s
     EXPECT_EQ(wallOnAxis(0, 2.0), kWallRight);
 
     const WallImpact left = timeOfWallImpact(b, Vec2{-8.0, 0.0}, bounds, 10.0);
-    ASSERT_TRUE(left.hit());
-    EXPECT_EQ(left.time, 0.5);
-    EXPECT_EQ(left.axes, kAxisX);
+    EXPECT_TRUE(hitsAt(left, 0.5, kAxisX));
 
     const WallImpact top = timeOfWallImpact(b, Vec2{0.0, 4.0}, bounds, 10.0);
-    ASSERT_TRUE(top.hit());
-    EXPECT_EQ(top.time, 1.0);
-    EXPECT_EQ(top.axes, kAxisY);
+    EXPECT_TRUE(hitsAt(top, 1.0, kAxisY));
 
     const WallImpact bottom = timeOfWallImpact(b, Vec2{0.0, -1.0}, bounds, 10.0);
-    ASSERT_TRUE(bottom.hit());
-    EXPECT_EQ(bottom.time, 4.0);
-    EXPECT_EQ(bottom.axes, kAxisY);
+    EXPECT_TRUE(hitsAt(bottom, 4.0, kAxisY));
 }
 
 TEST(TimeOfWallImpact, DiagonalPicksTheEarlierWall) {
     const Bounds bounds{{0.0, 0.0}, {10.0, 10.0}};
     // 4 m to the right wall at 2 m/s (2 s), 4 m to the top at 4 m/s (1 s): top first.
     const WallImpact w = timeOfWallImpact(box(4, 4, 6, 6), Vec2{2.0, 4.0}, bounds, 10.0);
-    ASSERT_TRUE(w.hit());
-    EXPECT_EQ(w.time, 1.0);
-    EXPECT_EQ(w.axes, kAxisY);
+    EXPECT_TRUE(hitsAt(w, 1.0, kAxisY));
 }
 
 TEST(TimeOfWallImpact, CornerOfTheBoundsHitsBothWalls) {
     const Bounds bounds{{0.0, 0.0}, {10.0, 10.0}};
     const WallImpact upRight = timeOfWallImpact(box(4, 4, 6, 6), Vec2{2.0, 2.0}, bounds, 10.0);
-    ASSERT_TRUE(upRight.hit());
-    EXPECT_EQ(upRight.time, 2.0);
-    EXPECT_EQ(upRight.axes, kAxisX | kAxisY);
+    EXPECT_TRUE(hitsAt(upRight, 2.0, kAxisX | kAxisY));
     const WallImpact downLeft = timeOfWallImpact(box(1, 2, 2, 3), Vec2{-1.0, -2.0}, bounds, 10.0);
-    ASSERT_TRUE(downLeft.hit());
-    EXPECT_EQ(downLeft.time, 1.0);
-    EXPECT_EQ(downLeft.axes, kAxisX | kAxisY);
+    EXPECT_TRUE(hitsAt(downLeft, 1.0, kAxisX | kAxisY));
 }
 
 TEST(TimeOfWallImpact, TouchingAndMovingIntoTheWallIsTimeZero) {
     const Bounds bounds{{0.0, 0.0}, {10.0, 10.0}};
     const WallImpact floor = timeOfWallImpact(box(4, 0, 5, 1), Vec2{0.0, -0.5}, bounds, 0.1);
-    ASSERT_TRUE(floor.hit());
-    EXPECT_EQ(floor.time, 0.0);
-    EXPECT_EQ(floor.axes, kAxisY);
+    EXPECT_TRUE(hitsAt(floor, 0.0, kAxisY));
     // Touching the floor but moving up or sideways: no wall within a short window.
     EXPECT_FALSE(timeOfWallImpact(box(4, 0, 5, 1), Vec2{0.0, 0.5}, bounds, 0.1).hit());
     EXPECT_FALSE(timeOfWallImpact(box(4, 0, 5, 1), Vec2{1.0, 0.0}, bounds, 0.1).hit());

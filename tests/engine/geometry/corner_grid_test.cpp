@@ -15,14 +15,10 @@
 namespace {
 
 using box_sets::BoxSet;
-using box_sets::bruteForceQuery;
 using box_sets::randomSetup;
 
 std::vector<int> queryAnswer(const CornerGrid& grid, const Aabb& query, int self) {
-    std::vector<int> found;
-    grid.queryOthers(query, self, [&](int j) { found.push_back(j); });
-    std::sort(found.begin(), found.end());
-    return found;
+    return box_sets::sortedVisits([&](auto visit) { grid.queryOthers(query, self, visit); });
 }
 
 TEST(CornerGrid, PairsAreExactlyTheBoxesThatMeet) {
@@ -42,12 +38,10 @@ TEST(CornerGrid, PairsAreExactlyTheBoxesThatMeet) {
 
 TEST(CornerGrid, QueriesFindExactlyTheBoxesThatMeetAlsoAfterSet) {
     std::mt19937_64 rng(7);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (std::uint64_t seed = 1; seed <= 10; ++seed) {
         BoxSet s = randomSetup(seed, 300);
         CornerGrid grid;
         ASSERT_TRUE(grid.build(s.bounds, s.blocks, [&](int i) { return s.boxes[i]; }));
-        const int n = static_cast<int>(s.boxes.size());
         for (int round = 0; round < 200; ++round) {
             // Register a block again: moved a little (often into another cell), sometimes grown
             // into a large box or shrunk back.
@@ -55,21 +49,15 @@ TEST(CornerGrid, QueriesFindExactlyTheBoxesThatMeetAlsoAfterSet) {
             grid.set(i, s.boxes[i]);
             EXPECT_EQ(grid.box(i).max.x, s.boxes[i].max.x);
             // Query a block's own box, and a box anywhere.
-            const int self = static_cast<int>(unit(rng) * n);
-            EXPECT_EQ(queryAnswer(grid, s.boxes[self], self),
-                      bruteForceQuery(s.boxes, s.boxes[self], self));
-            const Aabb anywhere = box_sets::randomQueryBox(rng);
-            EXPECT_EQ(queryAnswer(grid, anywhere, -1), bruteForceQuery(s.boxes, anywhere, -1));
+            box_sets::expectQueriesExact(s, rng, [&](const Aabb& query, int self) {
+                return queryAnswer(grid, query, self);
+            });
         }
     }
 }
 
 TEST(CornerGrid, TouchingAndNearlyTouchingBoxesMeet) {
-    BoxSet s;
-    Block b;
-    s.blocks.assign(3, b);
-    s.boxes = {
-        {{1.0, 3.0}, {1.5, 3.5}}, {{1.5, 3.0}, {2.0, 3.5}}, {{2.0 + 5e-10, 3.0}, {2.5, 3.5}}};
+    const BoxSet s = box_sets::touchingRow();
     CornerGrid grid;
     ASSERT_TRUE(grid.build(s.bounds, s.blocks, [&](int i) { return s.boxes[i]; }));
     std::vector<std::pair<int, int>> pairs;

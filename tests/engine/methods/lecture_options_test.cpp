@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -30,6 +31,20 @@ void run(World& world, double seconds, std::vector<CollisionRecord>* log = nullp
     for (long f = 0; f < frames; ++f) world.step(log);
 }
 
+// Blocks 0's and 1's x velocities (m/s) after `seconds` of `world`.
+std::pair<double, double> xVelocitiesAfter(World world, double seconds) {
+    run(world, seconds);
+    return {world.blocks[0].velocity.x, world.blocks[1].velocity.x};
+}
+
+// The shipped scene `name` as it is (its mistake on) and the same world with `mistake` off.
+std::pair<World, World> withAndWithout(const std::string& name, Mistake mistake) {
+    World wrong = makeWorld(loadShipped(name));
+    World right = wrong;
+    right.settings.set(mistake, false);
+    return {wrong, right};
+}
+
 // ---- Resolve ----
 
 TEST(Resolve, ReflectReversesEachBodyAsOffAWallInLectureExample1) {
@@ -49,17 +64,13 @@ TEST(Resolve, ReflectReversesEachBodyAsOffAWallInLectureExample1) {
 TEST(Resolve, MomentumStaysTheDefault) {
     World world = makeWorld(loadShipped("lecture_example_1"));
     EXPECT_EQ(world.settings.resolve, Resolve::Momentum);
-    run(world, 1.0);
-    EXPECT_EQ(world.blocks[0].velocity.x, -2.0);
-    EXPECT_EQ(world.blocks[1].velocity.x, 4.0);
+    EXPECT_EQ(xVelocitiesAfter(world, 1.0), std::make_pair(-2.0, 4.0));
 }
 
 TEST(Resolve, TheShippedSceneWithoutNewtonIsLectureExample1Reflected) {
     World world = makeWorld(loadShipped("without_newton"));
     EXPECT_EQ(world.settings.resolve, Resolve::Reflect);
-    run(world, 1.0);
-    EXPECT_EQ(world.blocks[0].velocity.x, -6.0);
-    EXPECT_EQ(world.blocks[1].velocity.x, 0.0);
+    EXPECT_EQ(xVelocitiesAfter(world, 1.0), std::make_pair(-6.0, 0.0));
 }
 
 // ---- Forces ----
@@ -296,10 +307,8 @@ TEST(Mistakes, MoveBackGivesTheCrookedResult) {
     // The frame of impact (t = 0.4107 s into 0.4..0.5): the right answer puts the mover at the
     // point of impact, x = 3 + 14·0.4107 = 8.75; moving back along y only leaves x where the
     // whole frame took it, 3 + 14·0.5 = 10: 1.25 m off.
-    World wrong = makeWorld(loadShipped("mistake_move_back"));
+    auto [wrong, right] = withAndWithout("mistake_move_back", Mistake::MoveBack);
     ASSERT_TRUE(wrong.settings.has(Mistake::MoveBack));
-    World right = wrong;
-    right.settings.set(Mistake::MoveBack, false);
     run(wrong, 0.5);
     run(right, 0.5);
     EXPECT_NEAR(right.blocks[0].position.x, 3.0 + 14.0 * (5.75 / 14.0), 1e-9);
@@ -308,10 +317,8 @@ TEST(Mistakes, MoveBackGivesTheCrookedResult) {
 }
 
 TEST(Mistakes, FirstFoundResolvesTheFartherBlockAndOverlapsTheNearOne) {
-    World wrong = makeWorld(loadShipped("mistake_first_found"));
+    auto [wrong, right] = withAndWithout("mistake_first_found", Mistake::FirstFound);
     ASSERT_TRUE(wrong.settings.has(Mistake::FirstFound));
-    World right = wrong;
-    right.settings.set(Mistake::FirstFound, false);
     double wrongOverlap = 0.0, rightOverlap = 0.0;
     for (int f = 0; f < 10; ++f) {
         wrongOverlap = std::max(wrongOverlap, wrong.step().maxPenetration);
@@ -322,10 +329,8 @@ TEST(Mistakes, FirstFoundResolvesTheFartherBlockAndOverlapsTheNearOne) {
 }
 
 TEST(Mistakes, NoApproachTestResolvesSeparatingBlocks) {
-    World wrong = makeWorld(loadShipped("mistake_no_approach_test"));
+    auto [wrong, right] = withAndWithout("mistake_no_approach_test", Mistake::NoApproachTest);
     ASSERT_TRUE(wrong.settings.has(Mistake::NoApproachTest));
-    World right = wrong;
-    right.settings.set(Mistake::NoApproachTest, false);
     int wrongCollisions = 0, rightCollisions = 0;
     for (int f = 0; f < 60; ++f) {
         wrongCollisions += wrong.step().collisions;

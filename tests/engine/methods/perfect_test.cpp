@@ -58,17 +58,23 @@ TEST_P(PerfectGas, EnergyConservedAndNoOverlapWithWalls) {
     EXPECT_NEAR(world.time, 300 * world.settings.dt, 1e-12);
 }
 
+// `count` blocks over [0,20]² m, each filling from `minFill` to 0.9 of its grid cell: dense.
+GasOptions denseGas(int count, double minFill) {
+    GasOptions gas;
+    gas.min = {0.0, 0.0};
+    gas.max = {20.0, 20.0};
+    gas.count = count;
+    gas.minFill = minFill;
+    gas.maxFill = 0.9;
+    return gas;
+}
+
 TEST_P(PerfectGas, MomentumConservedAwayFromWalls) {
     // A dense cluster in [0,20]² inside bounds ±200 m: it expands at a few m/s and never reaches
     // a wall during the 2 s simulated (checked: no wall record in the log).
     World world =
         makeWorld(Method::Perfect, {0.0, 0.0}, 1.0, Bounds{{-200.0, -200.0}, {220.0, 220.0}});
-    GasOptions gas;
-    gas.min = {0.0, 0.0};
-    gas.max = {20.0, 20.0};
-    gas.count = 400;
-    gas.minFill = 0.6;
-    gas.maxFill = 0.9;
+    GasOptions gas = denseGas(400, 0.6);
     gas.seed = 100 + GetParam();
     addGas(world, gas);
     const Vec2 p0 = totalMomentum(world);
@@ -175,12 +181,7 @@ World cappedDenseGas(int substeps) {
     World world = makeWorld(Method::Perfect, {0.0, 0.0}, 1.0, Bounds{{0.0, 0.0}, {20.0, 20.0}});
     world.settings.eventCap = 5;
     world.settings.substeps = substeps;
-    GasOptions gas;
-    gas.min = {0.0, 0.0};
-    gas.max = {20.0, 20.0};
-    gas.count = 300;
-    gas.minFill = 0.7;
-    gas.maxFill = 0.9;
+    GasOptions gas = denseGas(300, 0.7);
     gas.maxSpeed = 10.0;
     addGas(world, gas);
     return world;

@@ -222,7 +222,8 @@ void physicsSection(App& app) {
     // Opens for a scene that uses it (thruster, feather and stone, the mistakes), else closed.
     const std::string scene = app.sim.scenePath + "\n" + app.sim.scene.name;
     if (scene != app.ui.physicsFollowedScene) {
-        ImGui::SetNextItemOpen(usesPhysicsSection(app.sim.scene, app.sim.thrust.on), ImGuiCond_Always);
+        ImGui::SetNextItemOpen(usesPhysicsSection(app.sim.scene, app.sim.thrust.on),
+                               ImGuiCond_Always);
         app.ui.physicsFollowedScene = scene;
     }
     if (!ImGui::CollapsingHeader("Physics")) return;

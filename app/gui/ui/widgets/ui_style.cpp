@@ -40,16 +40,20 @@ bool fileExists(const char* path) {
     return false;
 }
 
+// What both themes set their own way: the windows' background (the palette's) and one colour for
+// the title bars, active or not.
+void setWindowColors(ImVec4* c, bool light, const ImVec4& popup, const ImVec4& titleBar) {
+    const Color bg = windowBackground(light);
+    c[ImGuiCol_WindowBg] = ImVec4(bg.r, bg.g, bg.b, bg.a);
+    c[ImGuiCol_PopupBg] = popup;
+    c[ImGuiCol_TitleBg] = c[ImGuiCol_TitleBgActive] = c[ImGuiCol_TitleBgCollapsed] = titleBar;
+}
+
 // The light theme: ImGui's light colours, windows opaque, the title bars in the same blue.
 void setLightColors(ImGuiStyle& style) {
     ImGui::StyleColorsLight(&style);
     ImVec4* c = style.Colors;
-    const Color bg = windowBackground(true);
-    c[ImGuiCol_WindowBg] = ImVec4(bg.r, bg.g, bg.b, bg.a);
-    c[ImGuiCol_PopupBg] = ImVec4(0.98f, 0.98f, 0.97f, 0.99f);
-    c[ImGuiCol_TitleBg] = ImVec4(0.30f, 0.45f, 0.68f, 1.0f);
-    c[ImGuiCol_TitleBgActive] = ImVec4(0.30f, 0.45f, 0.68f, 1.0f);
-    c[ImGuiCol_TitleBgCollapsed] = ImVec4(0.30f, 0.45f, 0.68f, 1.0f);
+    setWindowColors(c, true, ImVec4(0.98f, 0.98f, 0.97f, 0.99f), ImVec4(0.30f, 0.45f, 0.68f, 1.0f));
     c[ImGuiCol_Text] = ImVec4(0.05f, 0.05f, 0.08f, 1.0f);
     c[ImGuiCol_FrameBg] = ImVec4(0.86f, 0.87f, 0.90f, 1.0f);
     c[ImGuiCol_Button] = ImVec4(0.62f, 0.74f, 0.92f, 1.0f);
@@ -79,12 +83,8 @@ void setTheme(ImGuiStyle& style, bool light) {
         light ? ImVec4(0.80f, 0.10f, 0.55f, 1.0f) : ImVec4(1.0f, 0.85f, 0.25f, 1.0f);
     if (light) return;
     ImVec4* c = style.Colors;
-    const Color bg = windowBackground(false);
-    c[ImGuiCol_WindowBg] = ImVec4(bg.r, bg.g, bg.b, bg.a);
-    c[ImGuiCol_PopupBg] = ImVec4(0.12f, 0.13f, 0.16f, 0.98f);
-    c[ImGuiCol_TitleBg] = ImVec4(0.16f, 0.29f, 0.48f, 1.0f);
-    c[ImGuiCol_TitleBgActive] = ImVec4(0.16f, 0.29f, 0.48f, 1.0f);
-    c[ImGuiCol_TitleBgCollapsed] = ImVec4(0.16f, 0.29f, 0.48f, 1.0f);
+    setWindowColors(c, false, ImVec4(0.12f, 0.13f, 0.16f, 0.98f),
+                    ImVec4(0.16f, 0.29f, 0.48f, 1.0f));
     c[ImGuiCol_Header] = ImVec4(0.20f, 0.25f, 0.33f, 1.0f);
     c[ImGuiCol_HeaderHovered] = ImVec4(0.26f, 0.36f, 0.50f, 1.0f);
     c[ImGuiCol_HeaderActive] = ImVec4(0.30f, 0.42f, 0.60f, 1.0f);
