@@ -29,16 +29,17 @@ std::string presentCaption(const std::string& sceneName, const std::string& desc
 // In a lesson there is one caption bar (app/gui/ui/lesson_bar.cpp), presenting or not:
 // "n / N · title", then on the same line this, then the caption and the question or answer.
 // In present mode the method and time (methodAndTime: the status badge that shows them is
-// hidden there, and present mode's one-line caption gives way to the bar); otherwise the keys.
-std::string lessonBarStatus(bool presentMode, Method method, double time);
+// hidden there, and present mode's one-line caption gives way to the bar); otherwise the keys, and
+// on a touch screen (`touch`) nothing: the hint beside it names the button to tap.
+std::string lessonBarStatus(bool presentMode, Method method, double time, bool touch = false);
 
 // The hint shown over a paused scene: at t = 0 "P to play" (and, the first time the app runs,
 // the keys to start with); "" while it runs or once it has run.
 std::string startHint(bool paused, double time, bool firstLaunch, bool touch);
 
 // A number typed into a field of the controls panel (Ctrl+click on a slider, or a drag field),
-// checked against its limit in engine/world/input_limits.h, the table that scene files and flags use:
-// a good value is taken; any other leaves the field at `current` with a message naming the
+// checked against its limit in engine/world/input_limits.h, the table that scene files and flags
+// use: a good value is taken; any other leaves the field at `current` with a message naming the
 // field, the limit and what was typed ("frame rate: must be from 1 to 1e6 Hz, not 2e6").
 struct TypedValue {
     bool ok = true;
