@@ -162,6 +162,9 @@ void applyStyle(const BuiltLook& look) {
     setTheme(style, look.light);
     if (look.touch) setTouchSizes(style);
     style.ScaleAllSizes(look.scale);
+    // ImGui's scroll bar takes its grab 3 px (pixels, not scaled) in from each side of its track:
+    // on a touch screen the part a finger can hold is the track's size less those.
+    if (look.touch) style.ScrollbarSize += 6.0f;
     ImGui::GetStyle() = style;
 }
 
