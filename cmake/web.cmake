@@ -53,8 +53,11 @@ add_library(imgui_web STATIC
 target_include_directories(imgui_web SYSTEM PUBLIC ${IMGUI_DIR} ${IMGUI_DIR}/backends
                            ${IMGUI_DIR}/misc/cpp)
 target_include_directories(imgui_web SYSTEM PRIVATE /usr/include/stb)
+# IMGUI_ENABLE_TEST_ENGINE: ImGui calls the item hooks of app/gui/platform/web/control_probe.cpp,
+# through which the browser tests measure every control (off until a test asks).
 target_compile_definitions(imgui_web PRIVATE
-  "IMGUI_STB_TRUETYPE_FILENAME=<stb_truetype.h>" "IMGUI_STB_RECT_PACK_FILENAME=<stb_rect_pack.h>")
+  "IMGUI_STB_TRUETYPE_FILENAME=<stb_truetype.h>" "IMGUI_STB_RECT_PACK_FILENAME=<stb_rect_pack.h>"
+  IMGUI_ENABLE_TEST_ENGINE)
 target_link_libraries(imgui_web PUBLIC glfw PkgConfig::STB)
 add_library(PkgConfig::IMGUI ALIAS imgui_web)
 set(IMGUI_INCLUDEDIR ${IMGUI_DIR})

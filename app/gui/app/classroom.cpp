@@ -36,8 +36,9 @@ std::string presentCaption(const std::string& sceneName, const std::string& desc
     return what + "   ·   " + methodAndTime(method, time);
 }
 
-std::string lessonBarStatus(bool presentMode, Method method, double time, bool hinted) {
+std::string lessonBarStatus(bool presentMode, Method method, double time, bool touch, bool hinted) {
     if (presentMode) return methodAndTime(method, time);
+    if (touch) return ""; // no keys: the hint names the button to tap (lessonHint)
     return hinted ? "PageUp back, R restart" : "PageDown next, PageUp back, R restart";
 }
 

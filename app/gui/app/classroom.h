@@ -30,8 +30,10 @@ std::string presentCaption(const std::string& sceneName, const std::string& desc
 // "n / N · title", then on the same line this, then the caption and the question or answer.
 // In present mode the method and time (methodAndTime: the status badge that shows them is
 // hidden there, and present mode's one-line caption gives way to the bar); otherwise the keys,
-// without PageDown after a hint that names it already (`hinted`: "PageDown: play").
-std::string lessonBarStatus(bool presentMode, Method method, double time, bool hinted = false);
+// without PageDown after a hint that names it already (`hinted`: "PageDown: play"), and on a
+// touch screen (`touch`) nothing: the hint beside it names the button to tap.
+std::string lessonBarStatus(bool presentMode, Method method, double time, bool touch = false,
+                            bool hinted = false);
 
 // The hint shown over a paused scene: at t = 0 "P to play" (and, the first time the app runs,
 // the keys to start with); "" while it runs or once it has run.

@@ -17,6 +17,12 @@ double notches(double delta, int deltaMode) {
 
 } // namespace
 
+bool wheelPans(double deltaX, double deltaY, int deltaMode, bool ctrl) {
+    if (ctrl || deltaMode != static_cast<int>(WheelDeltaMode::Pixel)) return false;
+    if (!std::isfinite(deltaX) || !std::isfinite(deltaY)) return false;
+    return deltaX != 0.0 || std::abs(deltaY) < 0.5 * kWheelPixelsPerNotch;
+}
+
 Vec2 wheelNotches(double deltaX, double deltaY, int deltaMode) {
     return {notches(deltaX, deltaMode), notches(deltaY, deltaMode)};
 }

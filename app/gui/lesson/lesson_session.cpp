@@ -271,8 +271,20 @@ std::string lessonHeading(const LessonSession& session) {
            std::to_string(session.lesson->steps.size()) + " \xc2\xb7 " + step->title;
 }
 
-std::string lessonHint(const LessonSession& session) {
+std::string lessonHint(const LessonSession& session, bool touch) {
     if (!session.step()) return "";
+    if (touch) {
+        const bool last = session.current + 1 >= session.lesson->steps.size();
+        switch (session.phase) {
+        case LessonSession::Phase::Setup: // short: it sits beside the heading on a phone
+            return session.pauses() ? "Tap Play" : "";
+        case LessonSession::Phase::Playing:
+            return "";
+        case LessonSession::Phase::Moment:
+            return last ? "" : "Tap Next";
+        }
+        return "";
+    }
     switch (session.phase) {
     case LessonSession::Phase::Setup:
         return session.pauses() ? "PageDown: play" : "";

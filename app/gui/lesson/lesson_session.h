@@ -125,8 +125,10 @@ bool lessonRunsSideBySide(const LessonSession& s, const View& view);
 void lessonAfterFrames(LessonSession& s, SimulationSession& sim, View& view);
 // The caption bar's first line: "n / N · title".
 std::string lessonHeading(const LessonSession& session);
-// The key to press next, by phase ("PageDown: play" at the setup); "" at the moment.
-std::string lessonHint(const LessonSession& session);
+// The key to press next, by phase ("PageDown: play" at the setup); "" at the moment. On a touch
+// screen (`touch`), which has no keys, the button to tap instead: "Tap Play" at the setup (the
+// bar's Play plays to the moment and stops there), "Tap Next" at the moment.
+std::string lessonHint(const LessonSession& session, bool touch = false);
 // A line of the caption bar under its heading, as shown.
 struct LessonLine {
     enum class Kind : std::uint8_t { Caption, Question, Choice, Answer, NoAnswer, Hint, GoTo };

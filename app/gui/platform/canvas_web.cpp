@@ -143,10 +143,17 @@ extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_file_opened(const char* path) {
 }
 
 // Called by web/index.html for a wheel event over the canvas (which it keeps from emscripten's
-// GLFW: that passes the raw deltas, about 100 per notch and the wrong way round).
-extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_wheel(double deltaX, double deltaY,
-                                                       int deltaMode) {
+// GLFW: that passes the raw deltas, about 100 per notch and the wrong way round). A touchpad's
+// two-finger scroll over the scene pans it, as two fingers do (wheelPans); over the UI, and a
+// mouse wheel's notch anywhere, it is ImGui's wheel (a window scrolls, the scene zooms).
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_wheel(double deltaX, double deltaY, int deltaMode,
+                                                       int ctrl) {
     if (!gCanvas) return;
+    if (wheelPans(deltaX, deltaY, deltaMode, ctrl != 0) && !ImGui::GetIO().WantCaptureMouse) {
+        const double r = gCanvas->devicePixelRatio; // the content follows the fingers
+        gCanvas->gestures.push_back({{0.0, 0.0}, {-deltaX * r, -deltaY * r}, 1.0});
+        return;
+    }
     const Vec2 n = wheelNotches(deltaX, deltaY, deltaMode);
     if (n.x != 0.0 || n.y != 0.0) ImGui_ImplGlfw_ScrollCallback(gCanvas->window, n.x, n.y);
 }

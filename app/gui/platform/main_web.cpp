@@ -454,7 +454,10 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* sandbox_web_status() {
             exact(app.sim.world().settings.gravity.x) + "," +
             exact(app.sim.world().settings.gravity.y) + "]" +
             ",\"pointerOnScreen\":" + (ImGui::IsMousePosValid(&io.MousePos) ? "true" : "false") +
-            ",\"typing\":" + (io.WantTextInput ? "true" : "false") + navigationJson() + "}";
+            ",\"typing\":" + (io.WantTextInput ? "true" : "false") +
+            ",\"captionHeight\":" + exact(app.view.captionHeight / ratio) +
+            ",\"lessonPhase\":" + std::to_string(static_cast<int>(app.lesson.phase)) +
+            ",\"revealed\":" + (app.lesson.revealed ? "true" : "false") + navigationJson() + "}";
     return text.c_str();
 }
 

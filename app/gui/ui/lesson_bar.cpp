@@ -298,15 +298,17 @@ void drawLessonCaption(App& app) {
     // Beside the heading where it fits (never cut at the bar's edge): the step number typed so
     // far, else the key to press next and the keys, else the key to press next alone.
     const std::string keys = lessonBarStatus(app.view.presentMode, app.sim.world().settings.method,
-                                             app.sim.world().time);
-    const std::string hint = lessonHint(s);
+                                             app.sim.world().time, app.ui.touchUi);
+    const std::string hint = lessonHint(s, app.ui.touchUi);
     std::vector<std::string> statuses;
     if (!s.digits.empty()) {
         statuses.push_back("Go to step " + s.digits + " (Enter)");
+    } else if (!hint.empty() && keys.empty()) {
+        statuses.push_back(hint);
     } else if (!hint.empty()) {
         statuses.push_back(hint + "   \xc2\xb7   " +
                            lessonBarStatus(app.view.presentMode, app.sim.world().settings.method,
-                                           app.sim.world().time, true));
+                                           app.sim.world().time, app.ui.touchUi, true));
         statuses.push_back(hint);
     } else {
         statuses.push_back(keys);

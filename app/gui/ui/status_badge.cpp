@@ -154,9 +154,12 @@ ScreenRect drawStatusBadge(const App& app, ImDrawList* dl) {
                  : "(" + formatNumber(u.x) + ", " + formatNumber(u.y) + ") m/s");
         row.add(text.c_str(), IM_COL32(255, 235, 90, 235), IM_COL32(15, 15, 20, 255));
     }
-    // Paused at t = 0: how to start (the first time the app runs, with the first keys).
-    const std::string hint =
-        startHint(app.sim.paused, app.sim.world().time, app.ui.firstLaunch, app.ui.touchUi);
+    // Paused at t = 0: how to start (the first time the app runs, with the first keys). On a touch
+    // screen in a lesson the caption says it ("Tap Play"): a phone's badge has no room for both.
+    const bool captionSays = app.ui.touchUi && app.lesson.active();
+    const std::string hint = captionSays ? ""
+                                         : startHint(app.sim.paused, app.sim.world().time,
+                                                     app.ui.firstLaunch, app.ui.touchUi);
     if (!hint.empty()) {
         row.add(hint.c_str(), IM_COL32(60, 150, 90, 235), IM_COL32(10, 16, 12, 255));
     }

@@ -89,6 +89,9 @@ Layout computeLayout(const LayoutInput& in) {
         above.displayHeight = top;
         above.panelWidth = 0.0;
         above.panelHeight = 0.0;
+        const double screenH = in.shareHeight > 0.0 ? in.shareHeight : H;
+        // (1 px to spare: the share is a floor, whatever the rounding.)
+        above.maxStripHeight = std::max(1.0, top - std::ceil(kMinSheetSceneShare * screenH) - 1.0);
         for (DockRequest& w : above.windows) w.side = DockSide::Bottom;
         Layout out = computeLayout(above);
         out.panel = fromEdges(0.0, top, W, H);
@@ -132,9 +135,11 @@ Layout computeLayout(const LayoutInput& in) {
                                ? 0.0
                                : std::min(std::max(wanted(right, s), areaW * kMinColumnShare),
                                           areaW * kMaxColumnShare);
-    const double stripH = bottom.empty() ? 0.0
-                                         : std::min(std::max(wanted(bottom, s), H * kMinStripShare),
-                                                    H * kMaxStripShare);
+    const double stripMost = in.maxStripHeight > 0.0
+                                 ? std::min(H * kMaxStripShare, in.maxStripHeight)
+                                 : H * kMaxStripShare;
+    const double stripH =
+        bottom.empty() ? 0.0 : std::min(std::max(wanted(bottom, s), H * kMinStripShare), stripMost);
     const double columnX = W - columnW, stripY = H - stripH;
     // The right column, above the strip, windows stacked top to bottom.
     const double columnH = bottom.empty() ? H : stripY;

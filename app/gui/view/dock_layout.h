@@ -51,6 +51,9 @@ struct DockRequest {
 constexpr double kSheetBelowPx = 600.0;
 constexpr double kSheetBarPx = 64.0;
 constexpr double kSheetOpenShare = 0.55;
+// Above a closed sheet, the windows' strip leaves the scene at least this share of the screen's
+// height (a phone held upright: the scene keeps 40% of the screen at a step's moment).
+constexpr double kMinSheetSceneShare = 0.40;
 bool sheetLayout(double displayWidth, float uiScale);
 
 struct LayoutInput {
@@ -65,6 +68,9 @@ struct LayoutInput {
     // The height the windows' heightShare is of (0: displayHeight): the image's, also below a
     // caption bar (a plot is 13% of the screen's height wherever it is).
     double shareHeight = 0.0;
+    // > 0: the bottom strip of windows at most this high (above a sheet: the scene keeps
+    // kMinSheetSceneShare of the screen).
+    double maxStripHeight = 0.0;
     std::vector<DockRequest> windows;
 };
 

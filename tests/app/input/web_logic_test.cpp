@@ -468,6 +468,17 @@ TEST(WheelNotches, OneNotchIsOneStepTheDesktopsWay) {
     EXPECT_EQ(wheelNotches(std::nan(""), INFINITY, 0).y, 0.0);
 }
 
+TEST(WheelPans, ATouchpadsScrollPansAMouseNotchAndAPinchZoom) {
+    EXPECT_FALSE(wheelPans(0.0, -100.0, 0, false)); // a mouse wheel's notch (Chromium)
+    EXPECT_FALSE(wheelPans(0.0, 3.0, 1, false));    // Firefox's 3 lines
+    EXPECT_FALSE(wheelPans(0.0, 1.0, 2, false));    // a page
+    EXPECT_TRUE(wheelPans(0.0, -4.0, 0, false));    // a touchpad's small steps
+    EXPECT_TRUE(wheelPans(12.0, 0.0, 0, false));    // sideways
+    EXPECT_TRUE(wheelPans(30.0, 140.0, 0, false));  // a quick diagonal swipe
+    EXPECT_FALSE(wheelPans(0.0, -4.0, 0, true));    // a pinch (Ctrl): zoom
+    EXPECT_FALSE(wheelPans(std::nan(""), 1.0, 0, false));
+}
+
 TEST(BrowserKeys, TheBrowsersOwnKeysAreNotBoundThere) {
     EXPECT_EQ(actionForKey(keys::kQ, true, false, false, true), Action::None); // close the tab
     EXPECT_EQ(actionForKey(keys::kQ, true, false, false, false), Action::Quit);

@@ -326,7 +326,9 @@ TEST(LessonSession, PresentModeKeepsTheOneCaptionBar) {
     EXPECT_EQ(lessonBarStatus(false, Method::Perfect, 0.625),
               "PageDown next, PageUp back, R restart");
     // After "PageDown: play" the keys do not name PageDown again.
-    EXPECT_EQ(lessonBarStatus(false, Method::Perfect, 0.0, true), "PageUp back, R restart");
+    EXPECT_EQ(lessonBarStatus(false, Method::Perfect, 0.0, false, true), "PageUp back, R restart");
+    EXPECT_EQ(lessonBarStatus(false, Method::Perfect, 0.0, true),
+              ""); // touch: the hint names the tap
     EXPECT_EQ(lessonHeading(app.lesson).rfind("1 / ", 0), 0u) << lessonHeading(app.lesson);
 }
 

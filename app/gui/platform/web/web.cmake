@@ -16,7 +16,9 @@ file(GLOB SHIPPED_SCENE_FILES CONFIGURE_DEPENDS ${SHIPPED_SCENES}/*.json ${SHIPP
 
 # The main and the canvas, compiled once for both.
 add_library(sandbox_web_main OBJECT platform/main_web.cpp platform/canvas_web.cpp
-                                    ${AUDIO_DIR}/audio_out.cpp)
+                                    platform/web/control_probe.cpp ${AUDIO_DIR}/audio_out.cpp)
+set_source_files_properties(platform/web/control_probe.cpp PROPERTIES
+                            COMPILE_DEFINITIONS IMGUI_ENABLE_TEST_ENGINE)
 target_include_directories(sandbox_web_main PRIVATE platform)
 target_link_libraries(sandbox_web_main PUBLIC sandbox_ui sandbox_ui_renderer glfw)
 sandbox_warnings(sandbox_web_main)

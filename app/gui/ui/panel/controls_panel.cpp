@@ -125,16 +125,31 @@ void undoButtons(App& app) {
     }
 }
 
+// Play on a touch screen: in a lesson, at the setup, it plays to the step's moment and stops
+// there (as PageDown), and at the moment it is Next (the next step); else Play or Pause.
+struct PlayButton {
+    const char* label;
+    Action action;
+};
+PlayButton touchPlayButton(const App& app) {
+    const LessonSession& s = app.lesson;
+    if (s.active() && s.phase == LessonSession::Phase::Setup) return {"Play", Action::LessonNext};
+    if (s.active() && s.phase == LessonSession::Phase::Moment && s.pauses() &&
+        s.current + 1 < s.lesson->steps.size())
+        return {"Next", Action::LessonNext};
+    return {app.sim.paused ? "Play" : "Pause", Action::TogglePause};
+}
+
 void runSection(App& app) {
     if (!app.view.layout.sheet) { // the sheet has them in its bar
         const float w =
             (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
         const bool touch = app.ui.touchUi;
-        if (ImGui::Button(
-                keyedLabel(app.sim.paused ? "Play" : "Pause", Action::TogglePause, touch).c_str(),
-                ImVec2(w, 0))) {
-            applyAction(app, Action::TogglePause);
-        }
+        const PlayButton play =
+            touch ? touchPlayButton(app)
+                  : PlayButton{app.sim.paused ? "Play" : "Pause", Action::TogglePause};
+        if (ImGui::Button(keyedLabel(play.label, play.action, touch).c_str(), ImVec2(w, 0)))
+            applyAction(app, play.action);
         ImGui::SameLine();
         if (ImGui::Button(keyedLabel("Step", Action::StepOnce, touch).c_str(), ImVec2(w, 0)))
             applyAction(app, Action::StepOnce);
@@ -280,8 +295,8 @@ void sheetBar(App& app) {
     if (ImGui::Button(app.view.sheetOpen ? "Close" : "Controls", ImVec2(w * 1.3f, 0)))
         app.view.sheetOpen = !app.view.sheetOpen;
     ImGui::SameLine();
-    if (ImGui::Button(app.sim.paused ? "Play" : "Pause", ImVec2(w, 0)))
-        applyAction(app, Action::TogglePause);
+    const PlayButton play = touchPlayButton(app); // a narrow screen: a phone
+    if (ImGui::Button(play.label, ImVec2(w, 0))) applyAction(app, play.action);
     ImGui::SameLine();
     if (ImGui::Button("Step", ImVec2(w, 0))) applyAction(app, Action::StepOnce);
     ImGui::SameLine();

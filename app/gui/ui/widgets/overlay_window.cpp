@@ -204,9 +204,11 @@ OverlayWindow::OverlayWindow(App& app, OverlayId id) {
     begun_ = true;
     open_ = beginOverlayWindow(app, id);
     // A small docked window (every overlay on at 1280x720) draws its contents in the compact
-    // font, baked at its own size (a scaled font would be blurred).
+    // font, baked at its own size (a scaled font would be blurred). Not on a touch screen: its
+    // controls would be under a fingertip's 44 px.
     const ScreenRect* docked = app.view.layout.find(overlayInfo(id).title);
-    if (open_ && docked && compactWindow(docked->width, docked->height, ImGui::GetFontSize())) {
+    if (open_ && docked && !app.ui.touchUi &&
+        compactWindow(docked->width, docked->height, ImGui::GetFontSize())) {
         ImGui::PushFont(uiCompactFont());
         font_ = true;
     }

@@ -104,14 +104,16 @@ void setTheme(ImGuiStyle& style) {
     setTheme(style, gBuilt.light);
 }
 
-// Touch sizes at UI scale 1: a frame kTouchTargetPx high around the 16 px font, a slider's grab
-// a fingertip wide, a thin scroll bar (a swipe scrolls).
+// Touch sizes at UI scale 1: a frame kTouchTargetPx high around the 16 px font and as wide
+// around a glyph (a window's close button is the font's size plus the frame's padding), a
+// slider's grab a fingertip wide, and a scroll bar a finger can hold (a swipe scrolls too).
 void setTouchSizes(ImGuiStyle& style) {
-    style.FramePadding = ImVec2(10.0f, (kTouchTargetPx - kBaseFontPx) * 0.5f);
+    const float pad = (kTouchTargetPx - kBaseFontPx) * 0.5f;
+    style.FramePadding = ImVec2(pad, pad);
     style.ItemSpacing = ImVec2(10.0f, 8.0f);
     style.ItemInnerSpacing = ImVec2(8.0f, 6.0f);
     style.GrabMinSize = 28.0f;
-    style.ScrollbarSize = 8.0f;
+    style.ScrollbarSize = kTouchTargetPx;
 }
 
 } // namespace
@@ -160,6 +162,9 @@ void applyStyle(const BuiltLook& look) {
     setTheme(style, look.light);
     if (look.touch) setTouchSizes(style);
     style.ScaleAllSizes(look.scale);
+    // ImGui's scroll bar takes its grab 3 px (pixels, not scaled) in from each side of its track:
+    // on a touch screen the part a finger can hold is the track's size less those.
+    if (look.touch) style.ScrollbarSize += 6.0f;
     ImGui::GetStyle() = style;
 }
 
