@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace {
 
@@ -60,13 +61,22 @@ AxisGap axisGap(const Block& a, const Block& b, int axis) {
 } // namespace
 
 std::vector<int> liveBlockIndex(const Scene& stepScene, const std::vector<std::string>& liveNames) {
+    // Each name of the live world: how many blocks bear it, and the first (one pass, so that a
+    // step of 20,000 unnamed blocks costs 20,000 looks, not 20,000 squared).
+    struct Bearers {
+        std::size_t count = 0, first = 0;
+    };
+    std::unordered_map<std::string, Bearers> bearers;
+    for (std::size_t j = 0; j < liveNames.size(); ++j) {
+        Bearers& b = bearers[liveNames[j]];
+        if (b.count++ == 0) b.first = j;
+    }
     std::vector<int> map(stepScene.blocks.size(), -1);
     for (std::size_t i = 0; i < stepScene.blocks.size(); ++i) {
         const std::string& name = stepScene.blocks[i].name;
-        const auto count = std::count(liveNames.begin(), liveNames.end(), name);
-        if (!name.empty() && count == 1) {
-            map[i] = static_cast<int>(std::find(liveNames.begin(), liveNames.end(), name) -
-                                      liveNames.begin());
+        const auto found = name.empty() ? bearers.end() : bearers.find(name);
+        if (found != bearers.end() && found->second.count == 1) {
+            map[i] = static_cast<int>(found->second.first);
         } else if (i < liveNames.size() && liveNames[i] == name) {
             map[i] = static_cast<int>(i); // unnamed or named twice: where it was
         }

@@ -345,3 +345,16 @@ TEST(Lecture3, Step26TheSceneSaysAnAccelerationAsOne) {
     EXPECT_TRUE(contains(scene.description, "(25 - 3.924)/1 = 21.076 m/s^2")) << scene.description;
     EXPECT_TRUE(equationsHold(scene.description)) << scene.description;
 }
+
+TEST(LessonLive, LiveBlocksAreFoundByUniqueNameElseWhereTheyWere) {
+    Scene step;
+    for (const char* name : {"a", "", "b", "twice", "twice", "gone", ""}) {
+        step.blocks.emplace_back();
+        step.blocks.back().name = name;
+    }
+    // The live world: "a" and "b" moved, "twice" twice, "gone" deleted, an unnamed block kept
+    // at 1, another named at 6.
+    const std::vector<std::string> live = {"b", "", "x", "twice", "a", "twice", "c"};
+    EXPECT_EQ(liveBlockIndex(step, live), (std::vector<int>{4, 1, 0, 3, -1, -1, -1}));
+    EXPECT_EQ(liveBlockIndex(step, {}), std::vector<int>(7, -1));
+}
