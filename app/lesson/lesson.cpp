@@ -362,9 +362,7 @@ int maxStepFrames(const LessonStep& step) {
 }
 
 bool isLessonText(const std::string& text) {
-    json root;
-    if (parseJsonText(text, "", root)) return false;
-    return root.is_object() && root.contains("steps");
+    return jsonRootHasKey(text, "steps"); // a scene is not parsed twice to be told apart
 }
 
 bool isLessonFile(const std::string& path) {

@@ -284,6 +284,54 @@ std::optional<SceneError> parseJsonText(const std::string& text, const std::stri
     return std::nullopt;
 }
 
+namespace {
+
+// SAX events of nlohmann's parser (json::sax_parse): notes whether the root object has the key,
+// and stops the parse (returns false) at the root's first token when it is not an object, and at
+// the key once seen. Builds nothing: values are looked at only for their nesting.
+struct RootKeyFinder {
+    const std::string& wanted;
+    std::size_t depth = 0;
+    bool found = false;
+
+    bool value() { return depth > 0; } // a scalar root is not an object
+    bool null() { return value(); }
+    bool boolean(bool) { return value(); }
+    bool number_integer(json::number_integer_t) { return value(); }
+    bool number_unsigned(json::number_unsigned_t) { return value(); }
+    bool number_float(json::number_float_t, const json::string_t&) { return value(); }
+    bool string(json::string_t&) { return value(); }
+    bool binary(json::binary_t&) { return value(); }
+    bool start_object(std::size_t) {
+        ++depth;
+        return true;
+    }
+    bool key(json::string_t& k) {
+        found = depth == 1 && k == wanted;
+        return !found;
+    }
+    bool start_array(std::size_t) { return depth++ > 0; } // an array root is not an object
+    bool end_object() { return close(); }
+    bool end_array() { return close(); }
+    bool close() {
+        --depth;
+        return true;
+    }
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) {
+        return false;
+    }
+};
+
+} // namespace
+
+bool jsonRootHasKey(const std::string& text, const std::string& key) {
+    RootKeyFinder finder{key};
+    json::sax_parse(text, &finder);
+    if (!finder.found) return false; // no such key at the root, or it did not parse that far
+    json root;
+    return !parseJsonText(text, "", root);
+}
+
 std::optional<SceneError> regularFileError(const std::string& path) {
     // Only regular files: a directory cannot be read and a FIFO could block forever. A path that
     // cannot be followed says why (a symlink loop, a directory without permission).

@@ -83,3 +83,9 @@ std::optional<SceneError> readJsonFile(const std::string& path, std::string& tex
 // duplicate keys); a syntax error is placed as "source:line:column".
 std::optional<SceneError> parseJsonText(const std::string& text, const std::string& sourceName,
                                         nlohmann::json& root);
+// True when parseJsonText accepts `text` and its root is an object with `key` (escapes decoded):
+// the same answer, but text whose root is not an object, or that has no such key at the root,
+// is told apart by one pass of nlohmann's SAX parser, which builds nothing and stops at the root's
+// first token when it is not an object; only text that has the key is parsed in full (for every
+// check: size, depth, NUL bytes, duplicate keys).
+bool jsonRootHasKey(const std::string& text, const std::string& key);

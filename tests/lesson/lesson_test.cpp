@@ -553,6 +553,9 @@ TEST(Lesson, LessonsAreToldApartFromScenesByTheirSteps) {
     EXPECT_FALSE(isLessonText(kExample));
     EXPECT_FALSE(isLessonText("{\"steps\": "));
     EXPECT_FALSE(isLessonText(std::string(100000, '[')));
+    EXPECT_FALSE(isLessonText(R"({"name": "s", "world": {"steps": 1}, "blocks": []})"));
+    EXPECT_FALSE(isLessonText(std::string("{\"steps\": []}\0", 14))); // a NUL byte
+    EXPECT_FALSE(isLessonText(""));
     EXPECT_TRUE(isLessonFile(std::string(SANDBOX_LESSONS_DIR) + "/lecture3.json"));
     EXPECT_FALSE(isLessonFile(std::string(SANDBOX_SCENES_DIR) + "/single_bounce.json"));
 }

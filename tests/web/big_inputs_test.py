@@ -4,8 +4,10 @@ on the page, long work shows progress and keeps the page answering keys. Driven 
 browser_test.py (headless Chromium over the DevTools protocol, its Page); one check per run:
 
   big-files   a scene whose name is 20 MB, a scene of 200,000 blocks, a 20 MB trace of the
-              student's engine and a scene with a 10 MB description, each given to the page's
-              file picker: each either opens with its progress shown on the page, or is refused
+              student's engine, a scene with a 10 MB description, and the worst files the
+              browser accepts (the densest scene and a trace as large as browser_limits.h lets
+              them be), each given to the page's file picker: each either opens with its
+              progress shown on the page, or is refused
               with a message on the page (the panel's error and the page's live region); no
               uncaught exception; while it opens, a key is sent every 0.2 s and the time the
               page takes to take it is measured (reported, not checked: no test reads a clock
@@ -31,6 +33,40 @@ import websocket  # noqa: E402 (python3-websocket: browser_test.py skipped witho
 
 check = bt.check
 
+
+def browser_limit(name):
+    """A limit of browser_limits.h in bytes (`inline constexpr ... kName = 128u << 10;`), so the
+    inputs at the limit follow it."""
+    header = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "app", "gui",
+                          "browser", "browser_limits.h")
+    with open(header) as f:
+        m = re.search(name + r" = (\d+)u << (\d+);", f.read())
+    return int(m.group(1)) << int(m.group(2))
+
+
+SCENE_LIMIT = browser_limit("kMaxBrowserSceneBytes")
+TRACE_LIMIT = browser_limit("kMaxBrowserTraceBytes")
+
+
+def dense_scene_js(limit):
+    """The densest scene (the most blocks a byte: about 32 bytes each, at integer positions)
+    with as many blocks as `limit` bytes hold."""
+    return ("(() => { const b = []; let n = 70; for (let i = 0; ; ++i) { "
+            "const r = '{\"position\":[' + (i % 500) + ',' + Math.floor(i / 500) + "
+            "'],\"size\":0.5}'; if (n + r.length + 1 > " + str(limit) + ") break; b.push(r); "
+            "n += r.length + 1; } return '{\"name\":\"dense\",\"world\":{\"bounds\":"
+            "[-1,-1,500,1000]},\"blocks\":[' + b.join(',') + ']}'; })()")
+
+
+def trace_js(limit):
+    """lecture_example_1's blocks (m1 at 6 m/s, m2 at rest) frame by frame, up to `limit` bytes."""
+    return (f"(() => {{ const rows = ['t,m1_x,m1_y,m1_vx,m1_vy,m2_x,m2_y,m2_vx,m2_vy']; "
+            f"let n = rows[0].length + 1; for (let k = 1; ; ++k) {{ const t = k / 60; "
+            "const r = t.toFixed(6) + ',' + (4 + 6 * t).toFixed(9) + ',6,6,0,8.75,6,0,0'; "
+            f"if (n + r.length + 1 > {limit}) break; rows.push(r); n += r.length + 1; }} "
+            "return rows.join('\\n') + '\\n'; })()")
+
+
 # Each input as the page makes it (JavaScript that returns the file's text), its file name, and
 # the shipped scene the page shows first (a trace is opened on the scene it traces).
 TWENTY_MB = 20 << 20
@@ -44,15 +80,14 @@ INPUTS = [
      "+ (i % 7 - 3) + ', ' + (i % 5 - 2) + ']}'); return '{\"name\": \"200000 blocks\", "
      "\"world\": {\"bounds\": [0, 0, 500, 400], \"gravity\": [0, 0]}, \"blocks\": [' + b.join(',\\n') "
      "+ ']}'; })()"),
-    ("a 20 MB trace", "trace_20mb.csv", "?scene=lecture_example_1",
-     # lecture_example_1's blocks (m1 at 6 m/s, m2 at rest) frame by frame until 20 MB.
-     f"(() => {{ const rows = ['t,m1_x,m1_y,m1_vx,m1_vy,m2_x,m2_y,m2_vx,m2_vy']; let n = 0; "
-     f"for (let k = 1; n < {TWENTY_MB}; ++k) {{ const t = k / 60; const r = t.toFixed(6) + ',' + "
-     "(4 + 6 * t).toFixed(9) + ',6,6,0,8.75,6,0,0'; rows.push(r); n += r.length + 1; } "
-     "return rows.join('\\n') + '\\n'; })()"),
+    ("a 20 MB trace", "trace_20mb.csv", "?scene=lecture_example_1", trace_js(TWENTY_MB)),
     ("a 10 MB description", "description_10mb.json", "",
      f"'{{\"name\": \"long\", \"description\": \"' + 'word '.repeat({10 << 20} / 5) + "
      "'\", \"blocks\": [{\"position\": [5, 5], \"size\": 1}]}'"),
+    # The worst the browser accepts (the files as large as its limits let them be): each opens.
+    ("the densest scene at the limit", "dense_at_limit.json", "", dense_scene_js(SCENE_LIMIT)),
+    ("a trace at the limit", "trace_at_limit.csv", "?scene=lecture_example_1",
+     trace_js(TRACE_LIMIT)),
 ]
 
 
@@ -114,6 +149,12 @@ def big_files(base):
             page.open(base + query)
             page.evaluate("window.sandboxProgressLog = []")
             make_file(page, name, make_js)
+            # The page's tasks over 50 ms (Chromium's long tasks) from the pick on: the longest
+            # is how long the open held the page's one thread, keys waiting meanwhile.
+            page.evaluate("window.longestTask = 0; new PerformanceObserver(list => { "
+                          "for (const e of list.getEntries()) window.longestTask = "
+                          "Math.max(window.longestTask, e.duration); })"
+                          ".observe({entryTypes: ['longtask']}); 0")
             started = time.monotonic()
             pick_file(page)
             latencies, outcome = [], None
@@ -126,6 +167,7 @@ def big_files(base):
             took = time.monotonic() - started
             how, s = outcome
             progress = page.evaluate("window.sandboxProgressLog")
+            longest = page.evaluate("window.longestTask")
             # The live region says a refusal on the next frames (the app's message, when it
             # changes, is announced as the page's state is sent).
             def live_text():
@@ -140,9 +182,12 @@ def big_files(base):
             said = f"progress shown {len(progress)} times" if how == "opened" else repr(s["error"][:160])
             print(f"{what}: {how} after {took:.1f} s ({said}); the page took a key in "
                   f"{statistics.median(latencies) * 1000:.0f} ms median, "
-                  f"{max(latencies) * 1000:.0f} ms at most ({len(latencies)} keys; reported, "
-                  f"not checked); F1 {'opened' if answered else 'did not open'} the help after",
+                  f"{max(latencies) * 1000:.0f} ms at most ({len(latencies)} keys), its longest "
+                  f"task {longest:.0f} ms (reported, not checked); F1 "
+                  f"{'opened' if answered else 'did not open'} the help after",
                   flush=True)
+            if name.endswith("_at_limit" + os.path.splitext(name)[1]):
+                check(how == "opened", f"{what}: refused, though within the browser's limit")
             if how == "opened":
                 check(progress, f"{what}: opened with no progress shown on the page")
             else:
