@@ -339,6 +339,8 @@ void drawLessonCaption(App& app) {
     const float wrap = ImGui::GetContentRegionAvail().x;
     flow(pieces, wrap, &placed);
     const ImVec2 origin = ImGui::GetCursorPos();
+    // Open before this frame: the click that opens it is not also the click that folds it.
+    const bool wasOpen = gCaptionOpen;
     for (std::size_t i = 0; i < placed.size(); ++i) {
         const Placed& p = placed[i];
         ImGui::SetCursorPos(ImVec2(origin.x + p.at.x, origin.y + p.at.y));
@@ -350,7 +352,7 @@ void drawLessonCaption(App& app) {
             wrappedTooltip(texts.caption);
         }
     }
-    if (gCaptionOpen && ImGui::IsWindowHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) &&
+    if (wasOpen && ImGui::IsWindowHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Left) &&
         !ImGui::IsAnyItemHovered())
         gCaptionOpen = false; // a click on the open bar folds it again
     ImGui::PopFont();

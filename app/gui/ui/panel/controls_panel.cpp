@@ -70,7 +70,12 @@ void lessonSection(App& app, int maxRows) {
     const int rows = std::max(1, std::min({maxRows, 8, steps}));
     uiBeginRows();
     const float rowHeight = std::round(ImGui::GetTextLineHeightWithSpacing());
-    ImGui::BeginChild("##steps", ImVec2(0.0f, static_cast<float>(rows) * rowHeight));
+    // With touch sizes a one-row list has no scroll bar: its bar would be shorter than a
+    // fingertip (a finger's swipe scrolls the list; Prev and Next step through it).
+    const ImGuiWindowFlags listFlags =
+        app.ui.touchUi && rows == 1 ? ImGuiWindowFlags_NoScrollbar : ImGuiWindowFlags_None;
+    ImGui::BeginChild("##steps", ImVec2(0.0f, static_cast<float>(rows) * rowHeight), false,
+                      listFlags);
     WholeRows whole;
     const int current = static_cast<int>(s.current);
     if (current != app.ui.stepListFollowed || rows != app.ui.stepListRows ||
