@@ -229,4 +229,87 @@ void forEachDrawnRect(const ImDrawList& list, ImTextureID texture,
     }
 }
 
+namespace {
+
+// The items seen so far this frame and the last whole frame's.
+struct ItemProbe {
+    bool hooked = false;
+    std::vector<ItemSeen> building;
+    ItemsOfAFrame last;
+    std::vector<ImGuiWindow*> roots; // building[i]'s root window
+};
+ItemProbe gItems;
+
+} // namespace
+
+const ItemsOfAFrame& itemsOfLastFrame() {
+#ifdef __EMSCRIPTEN__
+    ImGuiContext* ctx = ImGui::GetCurrentContext();
+    if (ctx && !gItems.hooked) {
+        // At each frame's start the frame before is whole: keep the items of windows shown (ImGui
+        // begins its fallback window "Debug##Default" every frame and hides it when empty) and
+        // the narrowest scrollbar a shown window had (a window's scrollbar is not an item).
+        ImGuiContextHook hook;
+        hook.Type = ImGuiContextHookType_NewFramePre;
+        hook.Callback = [](ImGuiContext* c, ImGuiContextHook*) {
+            float narrowest = 0.0f;
+            for (ImGuiWindow* w : c->Windows) {
+                if (!w->WasActive || w->Hidden) continue;
+                for (const bool shown : {w->ScrollbarX, w->ScrollbarY})
+                    if (shown && (narrowest == 0.0f || c->Style.ScrollbarSize < narrowest))
+                        narrowest = c->Style.ScrollbarSize;
+            }
+            gItems.last.items.clear();
+            for (std::size_t i = 0; i < gItems.building.size(); ++i) {
+                ImGuiWindow* root = gItems.roots[i];
+                if (root && root->Active && !root->Hidden)
+                    gItems.last.items.push_back(std::move(gItems.building[i]));
+            }
+            gItems.building.clear();
+            gItems.roots.clear();
+            gItems.last.narrowestScrollbar = narrowest;
+        };
+        ImGui::AddContextHook(ctx, &hook);
+        ctx->TestEngineHookItems = true;
+        gItems.hooked = true;
+    }
+#endif
+    return gItems.last;
+}
+
 } // namespace imgui_ext
+
+#ifdef __EMSCRIPTEN__
+// ImGui's test-engine item hooks, which the browser build's ImGui calls (IMGUI_ENABLE_TEST_ENGINE,
+// cmake/web.cmake) once itemsOfLastFrame has turned them on.
+void ImGuiTestEngineHook_ItemAdd(ImGuiContext* ctx, const ImRect& bb, ImGuiID id) {
+    ImGuiWindow* window = ctx->CurrentWindow;
+    if (!window) return;
+    imgui_ext::ItemSeen item;
+    item.id = id;
+    ImGuiWindow* root = window->RootWindow ? window->RootWindow : window;
+    item.window = root->Name;
+    item.min = bb.Min;
+    item.max = bb.Max;
+    item.visible = bb.Overlaps(window->ClipRect) && bb.GetWidth() > 0.0f && bb.GetHeight() > 0.0f;
+    imgui_ext::gItems.building.push_back(std::move(item));
+    imgui_ext::gItems.roots.push_back(root);
+}
+
+void ImGuiTestEngineHook_ItemInfo(ImGuiContext*, ImGuiID id, const char* label,
+                                  ImGuiItemStatusFlags) {
+    auto& items = imgui_ext::gItems.building;
+    for (auto it = items.rbegin(); it != items.rend(); ++it)
+        if (it->id == id) {
+            const std::string shown(label ? label : "");
+            it->label = shown.substr(0, shown.find("##"));
+            return;
+        }
+}
+
+void ImGuiTestEngineHook_Log(ImGuiContext*, const char*, ...) {}
+
+const char* ImGuiTestEngine_FindItemDebugLabel(ImGuiContext*, ImGuiID) {
+    return nullptr;
+}
+#endif

@@ -1,5 +1,5 @@
 // Dear ImGui beyond its public API, in one place: everything the app takes from ImGui's
-// internals (imgui_internal.h), from its legacy input fields (1.86 has no input events: the keys
+// internals (its internal header), from its legacy input fields (1.86 has no input events: the keys
 // are io.KeysDown indexed by GLFW's key codes, mapped by io.KeyMap; the pointer is io.MousePos)
 // and from its draw lists read back after drawing (the rows a scroll region cuts, the texts on
 // screen). Written against Dear ImGui 1.86 (IMGUI_VERSION_NUM 18600: Debian 12's, and the
@@ -113,5 +113,27 @@ struct DrawnRect {
 void forEachDrawnRect(const ImDrawList& list, ImTextureID texture,
                       const std::function<void(const DrawnRect&)>& rect,
                       const std::function<void()>& other);
+
+// --- The controls of a frame (the browser build's tests) ---
+
+// An interactive item ImGui added (a button, a slider, a window's close button, ...): its label's
+// shown part ("Play##bar": "Play"; "" for none), its root window's name, its rectangle on screen
+// and whether some of it is inside its window's clipping rectangle.
+struct ItemSeen {
+    ImGuiID id = 0;
+    std::string label;
+    std::string window;
+    ImVec2 min, max;
+    bool visible = false;
+};
+struct ItemsOfAFrame {
+    std::vector<ItemSeen> items;     // of the windows shown, in the order added
+    float narrowestScrollbar = 0.0f; // the width of the narrowest scrollbar shown (0: none)
+};
+// The last whole frame's items, through ImGui's test-engine item hooks: compiled in only where
+// ImGui is built with IMGUI_ENABLE_TEST_ENGINE (the browser build, cmake/web.cmake); elsewhere
+// always empty. The first call turns the hooks on (until then an item costs ImGui a flag's
+// test), so its answer is empty until a frame has been drawn since.
+const ItemsOfAFrame& itemsOfLastFrame();
 
 } // namespace imgui_ext
