@@ -282,3 +282,14 @@ std::string wrapFormula(const std::string& text, double width,
                         const std::function<double(const std::string&)>& measure) {
     return wrapParagraphs(text, width, measure, wrapFormulaParagraph);
 }
+
+bool saysWord(const std::string& text, const std::string& word) {
+    if (word.empty()) return false;
+    const auto inWord = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+    for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) {
+        const std::size_t end = at + word.size();
+        if ((at == 0 || !inWord(text[at - 1])) && (end == text.size() || !inWord(text[end])))
+            return true;
+    }
+    return false;
+}

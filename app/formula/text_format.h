@@ -57,3 +57,7 @@ std::string wrapAtSpaces(const std::string& text, double width,
 // company. A piece that fits nowhere overflows its line rather than being cut inside a number.
 std::string wrapFormula(const std::string& text, double width,
                         const std::function<double(const std::string&)>& measure);
+
+// `text` says `word` as a word of its own, not inside a longer one ("m1" is in "m1 hits m2" and
+// "m1 = 1 kg", not in "m12"): how a lesson step's texts name its blocks (the magnifier, tests).
+bool saysWord(const std::string& text, const std::string& word);

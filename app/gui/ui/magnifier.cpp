@@ -11,7 +11,6 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -26,16 +25,6 @@ constexpr std::size_t kMaxInsets = 4;
 constexpr double kShare = 0.45; // of the scene's width and height, an inset at most
 
 // `name` is a word of `text` (not part of a longer one: "m1" is not in "m12").
-bool says(const std::string& text, const std::string& name) {
-    if (name.empty()) return false;
-    const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
-    for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
-        const std::size_t end = at + name.size();
-        if ((at == 0 || !word(text[at - 1])) && (end == text.size() || !word(text[end])))
-            return true;
-    }
-    return false;
-}
 
 // Everything the step's caption bar can say, as written.
 std::string stepWords(const LessonStep& step) {
@@ -204,7 +193,7 @@ void drawMagnifier(App& app, ImDrawList* dl, Taken& placed) {
         const Vec2 a = cam.worldToScreen(box.min), z = cam.worldToScreen(box.max);
         if (z.x < vp.x || a.x > vp.x + vp.width || a.y < vp.y || z.y > vp.y + vp.height)
             continue; // out of the view
-        if (says(words, app.sim.blockDisplayName(static_cast<int>(i)))) small.push_back(i);
+        if (saysWord(words, app.sim.blockDisplayName(static_cast<int>(i)))) small.push_back(i);
     }
     if (small.empty()) return;
     std::sort(small.begin(), small.end(), [&world](std::size_t a, std::size_t b) {

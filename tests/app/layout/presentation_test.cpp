@@ -232,6 +232,16 @@ TEST(TextFormat, RoundingNoiseReadsAsZero) {
     EXPECT_FALSE(isRoundingNoise(INFINITY));
 }
 
+// A step's texts name a block by its name as a word of its own (the magnifier's rule).
+TEST(TextFormat, SaysWordFindsANameOnlyAsAWholeWord) {
+    EXPECT_TRUE(saysWord("m1 hits m2", "m2"));
+    EXPECT_TRUE(saysWord("m1 = 1 kg", "m1"));
+    EXPECT_TRUE(saysWord("(red, blue)", "blue"));
+    EXPECT_FALSE(saysWord("m12 hits m21", "m1")); // inside longer words only
+    EXPECT_TRUE(saysWord("m12 and m1", "m1"));    // a later whole word counts
+    EXPECT_FALSE(saysWord("anything", ""));
+}
+
 TEST(TextFormat, ReadablePrecision) {
     EXPECT_EQ(formatNumber(2.0), "2");
     EXPECT_EQ(formatNumber(-2.0), "-2");

@@ -12,12 +12,12 @@
 #include "frame_json.h"
 #include "lecture3_lesson.h"
 #include "lesson.h"
+#include "text_format.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -198,19 +198,6 @@ TEST(LessonScreens, TheAnswerKeepsAtLeast85PercentOfTheWorld) {
     }
 }
 
-// A scene text "names" a block or a mark when it says its name as a word ("m2", "m1 = 1 kg",
-// "centre of mass  u = ..."), or lies wholly on that block (its own label's second line, "2 kg").
-bool says(const std::string& text, const std::string& name) {
-    if (name.empty()) return false;
-    const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
-    for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
-        const std::size_t end = at + name.size();
-        if ((at == 0 || !word(text[at - 1])) && (end == text.size() || !word(text[end])))
-            return true;
-    }
-    return false;
-}
-
 // The two share more than a pixel each way (antialiased edges and shadows touch).
 bool sharesAPixel(const Rect& a, const Rect& b) {
     const double w = std::min(a.x + a.w, b.x + b.w) - std::max(a.x, b.x);
@@ -218,6 +205,9 @@ bool sharesAPixel(const Rect& a, const Rect& b) {
     return w > 1.0 && h > 1.0;
 }
 
+// A scene text "names" a block or a mark when it says its name as a word (saysWord: "m2",
+// "m1 = 1 kg", "centre of mass  u = ..."), or lies wholly on that block (onIt: its own label's
+// second line, "2 kg").
 bool onIt(const Rect& in, const Rect& out) {
     return inside(in, Rect{out.x - 1.0, out.y - 1.0, out.w + 2.0, out.h + 2.0});
 }
@@ -278,7 +268,7 @@ TEST(LessonScreens, NoSceneTextOverlapsAnotherOrWhatItDoesNotName) {
                     for (const auto& b : s.layout.at(list)) {
                         const std::string name = b.at("name").get<std::string>();
                         const Rect box = rectOf(b.at("rect"));
-                        if (!sharesAPixel(r, box) || says(text, name) ||
+                        if (!sharesAPixel(r, box) || saysWord(text, name) ||
                             (list == std::string("blocks") && onIt(r, box)))
                             continue;
                         ++overlaps;
@@ -365,7 +355,7 @@ TEST(LessonScreens, TheBlocksAStepNamesAreBigEnough) {
             const std::string words = captionWords(s);
             for (const auto& b : s.layout.at("blocks")) {
                 const std::string name = b.at("name").get<std::string>();
-                if (!says(words, name)) continue;
+                if (!saysWord(words, name)) continue;
                 const Rect box = rectOf(b.at("rect"));
                 const double side = std::max(std::min(box.w, box.h), magnifiedSide(s, name));
                 smallest = std::min(smallest, side);
