@@ -194,6 +194,16 @@ void SceneRenderer::draw(const SceneView& view) {
             const std::vector<BlockInstance>& instances = geometry_.blocks[k][shape];
             const BlockProgram& b = blockPrograms_[k][shape];
             if (instances.empty() || !b.program) continue;
+            // Opaque blocks (the usual case) replace what is under them: no blending, which
+            // a software rasteriser pays for in every pixel (the same pixels either way).
+            const bool opaque =
+                std::all_of(instances.begin(), instances.end(), [](const BlockInstance& i) {
+                    return i.fill[3] == 1.0f && i.outline[3] == 1.0f;
+                });
+            if (opaque)
+                glDisable(GL_BLEND);
+            else
+                glEnable(GL_BLEND);
             glUseProgram(b.program);
             setUniformTransform(b.transform, t);
             glUniform1f(b.pixelsPerMetre, static_cast<float>(view.camera->pixelsPerMetre()));
@@ -211,9 +221,15 @@ void SceneRenderer::draw(const SceneView& view) {
 #if !SANDBOX_GL_ES
     glDisable(GL_PROGRAM_POINT_SIZE);
 #endif
+    glEnable(GL_BLEND);
 
     drawShapes(t, geometry_.momenta, kMomentumShaftPx);
     drawShapes(t, geometry_.over, kVelocityShaftPx);
+#if !SANDBOX_GL_ES
+    // The scene's pixels start now: a software rasteriser (llvmpipe) fills them on its own
+    // threads while this one goes on to the UI, rather than all at the frame's end.
+    glFlush();
+#endif
 
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);

@@ -188,6 +188,18 @@ void SceneGeometry::addArrows(const SceneView& view) {
     }
 }
 
+const SceneGeometry::OutlineOf& SceneGeometry::outlineOf(const Color& fill, const Color& arena) {
+    const auto same = [](const Color& a, const Color& b) {
+        return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a;
+    };
+    for (const OutlineOf& o : outlines_)
+        if (same(o.fill, fill) && same(o.arena, arena)) return o;
+    if (outlines_.size() >= 64) outlines_.clear(); // a scene of many colours: a fresh table
+    outlines_.push_back(
+        {fill, arena, outlineFor(fill, arena), contrastRatio(fill, arena) < kMinBlockContrast});
+    return outlines_.back();
+}
+
 // The walls, the blocks and the ghosts, each as a point sprite or a quad.
 void SceneGeometry::addBlocks(const SceneView& view, double maxPointPx) {
     const World& world = *view.world;
@@ -225,9 +237,9 @@ void SceneGeometry::addBlocks(const SceneView& view, double maxPointPx) {
         const Color fill = i < view.blockColors.size() ? view.blockColors[i] : Color{};
         const bool selected = static_cast<int>(i) == view.selected;
         // Outlined so every block stands out from the arena, whatever its colour.
-        const Color outline =
-            selected ? scene_colors::kSelection : outlineFor(fill, view.theme->arena);
-        const bool faint = !selected && contrastRatio(fill, view.theme->arena) < kMinBlockContrast;
+        const OutlineOf& o = outlineOf(fill, view.theme->arena);
+        const Color outline = selected ? scene_colors::kSelection : o.outline;
+        const bool faint = !selected && o.faint;
         const float pattern = b.kind == BodyKind::Static      ? 1.0f
                               : b.kind == BodyKind::Kinematic ? 2.0f
                                                               : 0.0f;

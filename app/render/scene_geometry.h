@@ -110,4 +110,13 @@ struct SceneGeometry {
     void addTrails(const SceneView& view, const Trails& trails);
     void addArrows(const SceneView& view);
     void addBlocks(const SceneView& view, double maxPointPx);
+
+    // A fill's outline against an arena and whether it is faint there (outlineFor and
+    // contrastRatio: a dozen pow() calls, once per colour rather than per block and frame).
+    struct OutlineOf {
+        Color fill, arena, outline;
+        bool faint = false;
+    };
+    std::vector<OutlineOf> outlines_;
+    const OutlineOf& outlineOf(const Color& fill, const Color& arena);
 };

@@ -60,13 +60,13 @@ void Trails::clear() {
 
 Vec2 Trails::point(std::size_t block, int age) const {
     if (block >= blockCount_ || age < 0 || age >= length_) return {};
-    const int slot = ((head_ - age) % capacity_ + capacity_) % capacity_;
+    const int slot = slotOf(age);
     return points_[slotIndex(block, slot)];
 }
 
 bool Trails::impact(std::size_t block, int age, Vec2& at) const {
     if (block >= blockCount_ || age < 0 || age + 1 >= length_) return false;
-    const int slot = ((head_ - age) % capacity_ + capacity_) % capacity_;
+    const int slot = slotOf(age);
     if (!hasImpact_[slotIndex(block, slot)]) return false;
     at = impacts_[slotIndex(block, slot)];
     return true;
@@ -74,11 +74,14 @@ bool Trails::impact(std::size_t block, int age, Vec2& at) const {
 
 int Trails::ageWithinLength(const World& world, double budget) const {
     if (length_ < 2 || world.blocks.size() != blockCount_) return 0;
+    // Every frame, up to length() x blocks steps: each age's slot found once, the blocks' points
+    // read straight from it (the same sums in the same order as through point()).
     double total = 0.0;
     for (int age = 1; age < length_; ++age) {
+        const int newer = slotOf(age - 1), older = slotOf(age);
         for (std::size_t i = 0; i < blockCount_; ++i) {
             if (world.blocks[i].kind == BodyKind::Static) continue;
-            total += ::length(point(i, age) - point(i, age - 1));
+            total += ::length(points_[slotIndex(i, older)] - points_[slotIndex(i, newer)]);
         }
         if (total > budget) return age > 1 ? age - 1 : 1;
     }

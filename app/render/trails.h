@@ -73,6 +73,8 @@ class Trails {
     std::vector<Vec2> pendingImpact_;
     std::vector<char> hasPending_;
 
+    // The slot of point `age` (0: the newest).
+    int slotOf(int age) const { return ((head_ - age) % capacity_ + capacity_) % capacity_; }
     std::size_t slotIndex(std::size_t block, int slot) const {
         return block * static_cast<std::size_t>(capacity_) + static_cast<std::size_t>(slot);
     }
