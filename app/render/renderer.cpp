@@ -225,11 +225,6 @@ void SceneRenderer::draw(const SceneView& view) {
 
     drawShapes(t, geometry_.momenta, kMomentumShaftPx);
     drawShapes(t, geometry_.over, kVelocityShaftPx);
-#if !SANDBOX_GL_ES
-    // The scene's pixels start now: a software rasteriser (llvmpipe) fills them on its own
-    // threads while this one goes on to the UI, rather than all at the frame's end.
-    glFlush();
-#endif
 
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
