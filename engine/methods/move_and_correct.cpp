@@ -68,6 +68,11 @@ void correctPair(SubstepContext& ctx, Resolver& resolver, int a, int b,
 void correctWalls(SubstepContext& ctx, Resolver& resolver, int i, const std::vector<Vec2>* bent) {
     Block& block = ctx.world.blocks[i];
     const Bounds& bounds = ctx.world.bounds;
+    // Most blocks touch no wall (every face strictly inside): nothing to correct.
+    const Aabb start = aabbOf(block);
+    if (start.min.x > bounds.min.x && start.min.y > bounds.min.y && start.max.x < bounds.max.x &&
+        start.max.y < bounds.max.y)
+        return;
     for (int axis = 0; axis < 2; ++axis) {
         const Aabb box = aabbOf(block);
         const double below = bounds.min[axis] - box.min[axis];

@@ -63,7 +63,7 @@ class PerfectSolver final : ResolveHooks {
     bool resolve(const Event& e, int processed);
     int meetingsAtInstant(const Event& e);
     int allowedMeetings(int processed) const;
-    bool collapsesOrTraps(const Event& e, int axis, int meetings, int processed);
+    bool collapsesOrTraps(const Event& e, int axis, bool repeated);
     bool squeezed(const Event& e, int axis) {
         return crush_.squeezed(blocks_, e.a, e.b, axis, timeline_.positionAt(e.a, e.time)[axis],
                                e.b < 0 ? 0.0 : timeline_.positionAt(e.b, e.time)[axis]);
@@ -102,9 +102,10 @@ int PerfectSolver::allowedMeetings(int processed) const {
     return processed > ctx_.world.settings.eventCap / 2 ? 1 : kRepeatsAtInstant;
 }
 
-// The collapse and trap rules (see the top of the file).
-bool PerfectSolver::collapsesOrTraps(const Event& e, int axis, int meetings, int processed) {
-    if (meetings <= allowedMeetings(processed)) return false;
+// The collapse and trap rules (see the top of the file), for a contact that has met `repeated`ly
+// (more often than allowedMeetings) at this instant.
+bool PerfectSolver::collapsesOrTraps(const Event& e, int axis, bool repeated) {
+    if (!repeated) return false;
     if (ctx_.world.settings.bounciness < 1.0) return true; // collapse
     const int block = blocks_[e.a].isDynamic() ? e.a : e.b;
     return block >= 0 && blocks_[block].isDynamic() &&
@@ -117,14 +118,14 @@ bool PerfectSolver::collapsesOrTraps(const Event& e, int axis, int meetings, int
 bool PerfectSolver::resolve(const Event& e, int processed) {
     // A block that stops sliding (friction, the exact integrator): no contact to resolve.
     if (isStop(e)) return resolver_.stopSliding(e.a, stopAxis(e)) != Resolution::None;
-    const int meetings = meetingsAtInstant(e);
+    const bool repeated = meetingsAtInstant(e) > allowedMeetings(processed);
     // Two blocks meeting again and again at one instant (Resolver::setRepeated).
-    resolver_.setRepeated(e.b >= 0 && blocks_[e.a].isDynamic() && blocks_[e.b].isDynamic() &&
-                          meetings > allowedMeetings(processed));
+    resolver_.setRepeated(repeated && e.b >= 0 && blocks_[e.a].isDynamic() &&
+                          blocks_[e.b].isDynamic());
     bool changed = false;
     for (int axis = 0; axis < 2; ++axis) {
         if (!(e.axes & (1 << axis))) continue;
-        const RestRule rest = collapsesOrTraps(e, axis, meetings, processed) || squeezed(e, axis)
+        const RestRule rest = collapsesOrTraps(e, axis, repeated) || squeezed(e, axis)
                                   ? RestRule::Always
                                   : RestRule::WhenSlow;
         const Resolution r = e.b == kWallEvent ? resolver_.resolveWall(e.a, axis, rest)

@@ -69,17 +69,15 @@ void Resolver::setVelocity(int i, int axis, double v) {
     changed_.push_back(i);
 }
 
-// A collision or friction (not the rest rule's merge) changes block i's velocity along `axis`.
-// With the exact integrator its acceleration along the axis is then its forces' again: a support
-// that held it (the rest rule's acceleration 0 on the floor) holds nothing it moves away from, and
-// kept, that 0 would carry it up without gravity's deceleration, making energy (m·g·v per second;
-// docs/physics.md, "Energy in piles"). If it still presses on what it touches, the contact comes
-// again at this instant and the rest rule holds it again. With friction its slides change too
-// (releaseSlides, friction.cpp).
-void Resolver::bounce(int i, int axis, double v) {
-    const double before = ctx_.world.blocks[i].velocity[axis];
-    setVelocity(i, axis, v);
-    if (!ctx_.acceleration || before == v || !ctx_.world.blocks[i].isDynamic()) return;
+// Resolver::bounce with the exact integrator: a collision or friction (not the rest rule's merge)
+// has changed block i's velocity along `axis`. Its acceleration along the axis is then its forces'
+// again: a support that held it (the rest rule's acceleration 0 on the floor) holds nothing it
+// moves away from, and kept, that 0 would carry it up without gravity's deceleration, making
+// energy (m·g·v per second; docs/physics.md, "Energy in piles"). If it still presses on what it
+// touches, the contact comes again at this instant and the rest rule holds it again. With friction
+// its slides change too (releaseSlides, friction.cpp).
+void Resolver::freeAcceleration(int i, int axis) {
+    if (!ctx_.world.blocks[i].isDynamic()) return;
     if (ctx_.slides) {
         releaseSlides(i, axis);
         return;

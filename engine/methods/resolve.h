@@ -181,7 +181,15 @@ class Resolver {
     void record(int a, int b, int axis, double m1, double v1, double m2, double v2, double u,
                 double C, double v1After, double v2After, ResolveRule rule);
     void setVelocity(int i, int axis, double v);
-    void bounce(int i, int axis, double v);
+    // A collision or friction (not the rest rule's merge) sets block i's velocity along `axis`;
+    // with the exact integrator a change frees its acceleration (freeAcceleration). Here, inline:
+    // every collision passes through it, and the Euler integrators need the velocity alone.
+    void bounce(int i, int axis, double v) {
+        const double before = ctx_.world.blocks[i].velocity[axis];
+        setVelocity(i, axis, v);
+        if (ctx_.acceleration && before != v) freeAcceleration(i, axis);
+    }
+    void freeAcceleration(int i, int axis);
     void findNear(const Aabb& box);
     // Friction (friction.cpp).
     double frictionOf(int body) const;

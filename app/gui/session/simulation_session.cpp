@@ -135,7 +135,9 @@ void SimulationSession::playEditLog() {
     }
 }
 
-void SimulationSession::printSettingsChanged(const WorldSettings& before) const {
+void SimulationSession::restartShowingChanges(const std::function<void()>& restart) {
+    const WorldSettings before = world().settings;
+    restart();
     for (const settings_table::WorldKey* row : panelOrder())
         if (!settings_table::same(*row, before, world().settings))
             printChange(row->key + std::string(": ") +

@@ -162,10 +162,11 @@ struct SimulationSession {
     // Plays the edit log's lines due at the world's frame (step() does after each frame; call it
     // after setting editLog). A refused line sets editLogError and the notice and stops the log.
     void playEditLog();
-    // --verbose: the world keys whose values differ from `before`, one line each as an edit's
-    // ("method: perfect"), in the panel's order: what a reset or a lesson step's restart changed
-    // without an edit (an edit prints its own line where it is applied).
-    void printSettingsChanged(const WorldSettings& before) const;
+    // A restart that may change the world's settings without an edit (R, Shift+R, a lesson
+    // step's restart): runs `restart`, then with --verbose prints each world key whose value it
+    // changed, one line each as an edit's ("method: perfect"), in the panel's order (an edit
+    // prints its own line where it is applied).
+    void restartShowingChanges(const std::function<void()>& restart);
     // True when quitting would lose edits (see blocksEdited).
     bool unsavedEdits() const;
 

@@ -103,35 +103,36 @@ void followKeyboard(App& app) {
         config.ConfigFlags &= ~ImGuiConfigFlags_NavEnableKeyboard;
 }
 
+// R (Action::Reset) and Shift+R (Action::ResetToFile): in a lesson the step again (from its setup,
+// or as written), else a new run (the chosen settings kept, or the file's); the session prints
+// the settings the restart changed.
+void restart(App& app, Action action) {
+    const bool toFile = action == Action::ResetToFile;
+    app.sim.restartShowingChanges([&app, action, toFile] {
+        if (applyLessonAction(app, action)) {
+            const std::string step = std::to_string(app.lesson.current + 1);
+            logEvent(app,
+                     ((toFile ? "lesson step as written " : "lesson restart ") + step).c_str());
+        } else if (toFile) {
+            resetToFile(app);
+            logEvent(app, "reset to file");
+        } else {
+            resetScene(app);
+            logEvent(app, "reset");
+        }
+    });
+}
+
 } // namespace
 
 void applyAction(App& app, Action action) {
     switch (action) {
     case Action::None:
         break;
-    case Action::Reset: {
-        const WorldSettings before = app.sim.world().settings;
-        if (applyLessonAction(app, action)) { // in a lesson: restart the step
-            logEvent(app, ("lesson restart " + std::to_string(app.lesson.current + 1)).c_str());
-        } else {
-            resetScene(app);
-            logEvent(app, "reset");
-        }
-        app.sim.printSettingsChanged(before);
+    case Action::Reset:
+    case Action::ResetToFile:
+        restart(app, action);
         break;
-    }
-    case Action::ResetToFile: {
-        const WorldSettings before = app.sim.world().settings;
-        if (applyLessonAction(app, action)) { // in a lesson: the step as written
-            logEvent(app,
-                     ("lesson step as written " + std::to_string(app.lesson.current + 1)).c_str());
-        } else {
-            resetToFile(app);
-            logEvent(app, "reset to file");
-        }
-        app.sim.printSettingsChanged(before);
-        break;
-    }
     case Action::TogglePause:
         app.sim.paused = !app.sim.paused;
         break;
