@@ -191,11 +191,11 @@ def big_files(base):
                 check(how == "opened", f"{what}: refused, though within the browser's limit")
             if how == "opened":
                 check(progress, f"{what}: opened with no progress shown on the page")
-            if how == "opened" and name.endswith(".csv"):
-                # Compared one run a frame, each said on the page (browser/trace_opening.h).
-                runs = [p for p in progress if p.startswith("Comparing " + name)]
-                check(len(runs) >= 3 and re.search(r": run (\d+) of \1\.\.\.$", runs[-1]),
-                      f"{what}: not compared run by run with its progress shown: {progress}")
+                if name.endswith(".csv"):
+                    # Compared one run a frame, each said on the page (browser/trace_opening.h).
+                    runs = [p for p in progress if p.startswith("Comparing " + name)]
+                    check(len(runs) >= 3 and re.search(r": run (\d+) of \1\.\.\.$", runs[-1]),
+                          f"{what}: not compared run by run with its progress shown: {progress}")
             else:
                 check(s["error"] and s["error"][:60] in live,
                       f"{what}: refused, but the page's live region does not say it: {live!r}")
