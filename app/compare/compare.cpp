@@ -11,24 +11,6 @@ WorldSettings referenceSettings(const Scene& scene, std::optional<Method> method
 
 namespace {
 
-// Runs every variant (the reference first, already matched), keeping one of each set of
-// variants that simulate the same bit for bit (the simplest: the list is simplest first).
-std::vector<VariantFit> fitVariants(const Scene& scene, const std::vector<Variant>& variants,
-                                    const Trace& trace, const Tolerance& tol,
-                                    std::vector<VariantFit> fits) {
-    for (const Variant& v : variants) {
-        RunMatch m = matchRun(scene, v.settings, trace, tol);
-        const auto twin = std::find_if(fits.begin(), fits.end(),
-                                       [&](const VariantFit& f) { return f.match.hash == m.hash; });
-        if (twin != fits.end()) {
-            twin->sameAs.push_back(v);
-            continue;
-        }
-        fits.push_back({v, std::move(m), {}});
-    }
-    return fits;
-}
-
 // Better at reproducing the trace: same over more of it, then the smaller position error, then
 // the smaller velocity error, then the simpler (fewer changes: the list's order is kept).
 bool fitsBetter(const VariantFit& a, const VariantFit& b) {
@@ -45,36 +27,90 @@ bool fitsBetter(const VariantFit& a, const VariantFit& b) {
 
 TraceComparison compareTrace(const Scene& scene, const WorldSettings& reference, const Trace& trace,
                              const Tolerance& tolerance) {
-    TraceComparison c;
-    c.reference = reference;
-    c.tolerance = tolerance;
-    c.frames = static_cast<std::int64_t>(trace.rows.size());
-    if (scene.settings.mistakes)
-        c.notes.push_back("the scene turns on a mistake of the Tips slides to show it; the "
-                          "reference is the engine without it");
-    c.match = matchRun(scene, reference, trace, tolerance);
-    if (c.same()) return c;
-    c.parting = findPartingCollision(scene, reference, trace, c.match, tolerance);
+    TraceComparer comparer(scene, reference, trace, tolerance);
+    while (!comparer.done()) comparer.step();
+    return comparer.take();
+}
 
-    std::vector<VariantFit> fits;
-    fits.push_back({Variant{reference, {}}, c.match, {}});
-    std::vector<Variant> singles = variantsOf(reference, false);
-    singles.erase(singles.begin()); // the reference, matched above
-    fits = fitVariants(scene, singles, trace, tolerance, std::move(fits));
-    auto explains = [](const VariantFit& f) { return f.match.same(); };
-    if (std::none_of(fits.begin() + 1, fits.end(), explains)) {
+TraceComparer::TraceComparer(const Scene& scene, const WorldSettings& reference, const Trace& trace,
+                             const Tolerance& tolerance)
+    : scene_(scene), trace_(trace) {
+    c_.reference = reference;
+    c_.tolerance = tolerance;
+    c_.frames = static_cast<std::int64_t>(trace.rows.size());
+    if (scene.settings.mistakes)
+        c_.notes.push_back("the scene turns on a mistake of the Tips slides to show it; the "
+                           "reference is the engine without it");
+    singles_ = variantsOf(reference, false);
+    singles_.erase(singles_.begin()); // the reference, matched first
+}
+
+int TraceComparer::runsPlanned() const {
+    return 1 + static_cast<int>(singles_.size() + pairs_.size());
+}
+
+void TraceComparer::step() {
+    switch (phase_) {
+    case Phase::Reference:
+        c_.match = matchRun(scene_, c_.reference, trace_, c_.tolerance);
+        ++runs_;
+        if (c_.same()) {
+            singles_.clear();
+            phase_ = Phase::Done;
+            return;
+        }
+        c_.parting = findPartingCollision(scene_, c_.reference, trace_, c_.match, c_.tolerance);
+        fits_.push_back({Variant{c_.reference, {}}, c_.match, {}});
+        phase_ = Phase::Singles;
+        return;
+    case Phase::Singles:
+        if (next_ < singles_.size()) fitNext(singles_);
+        if (next_ < singles_.size()) return;
+        next_ = 0;
+        if (std::any_of(fits_.begin() + 1, fits_.end(),
+                        [](const VariantFit& f) { return f.match.same(); })) {
+            finish();
+            return;
+        }
         // Two mistakes at once, only when one change explains nothing.
-        std::vector<Variant> pairs = variantsOf(reference, true);
-        pairs.erase(pairs.begin(), pairs.begin() + static_cast<std::ptrdiff_t>(singles.size() + 1));
-        fits = fitVariants(scene, pairs, trace, tolerance, std::move(fits));
+        pairs_ = variantsOf(c_.reference, true);
+        pairs_.erase(pairs_.begin(),
+                     pairs_.begin() + static_cast<std::ptrdiff_t>(singles_.size() + 1));
+        phase_ = Phase::Pairs;
+        return;
+    case Phase::Pairs:
+        if (next_ < pairs_.size()) fitNext(pairs_);
+        if (next_ == pairs_.size()) finish();
+        return;
+    case Phase::Done:
+        return;
     }
-    std::stable_sort(fits.begin() + 1, fits.end(), fitsBetter);
-    for (auto f = fits.begin() + 1; f != fits.end(); ++f)
-        if (explains(*f)) c.explaining.push_back(*f);
+}
+
+// Runs the next of `variants`, keeping one of each set of variants that simulate the same bit
+// for bit (the simplest: the list is simplest first).
+void TraceComparer::fitNext(const std::vector<Variant>& variants) {
+    const Variant& v = variants[next_++];
+    RunMatch m = matchRun(scene_, v.settings, trace_, c_.tolerance);
+    ++runs_;
+    const auto twin = std::find_if(fits_.begin(), fits_.end(),
+                                   [&](const VariantFit& f) { return f.match.hash == m.hash; });
+    if (twin != fits_.end()) {
+        twin->sameAs.push_back(v);
+        return;
+    }
+    fits_.push_back({v, std::move(m), {}});
+}
+
+void TraceComparer::finish() {
+    auto explains = [](const VariantFit& f) { return f.match.same(); };
+    std::stable_sort(fits_.begin() + 1, fits_.end(), fitsBetter);
+    for (auto f = fits_.begin() + 1; f != fits_.end(); ++f)
+        if (explains(*f)) c_.explaining.push_back(*f);
     // The closest, when none explains: only one that follows the trace further than the
     // reference does.
-    if (c.explaining.empty() && fits.size() > 1 &&
-        fits[1].match.first().frame > c.match.first().frame)
-        c.closest = fits[1];
-    return c;
+    if (c_.explaining.empty() && fits_.size() > 1 &&
+        fits_[1].match.first().frame > c_.match.first().frame)
+        c_.closest = fits_[1];
+    phase_ = Phase::Done;
 }

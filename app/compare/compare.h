@@ -42,3 +42,31 @@ WorldSettings referenceSettings(const Scene& scene, std::optional<Method> method
 // differs from the reference.
 TraceComparison compareTrace(const Scene& scene, const WorldSettings& reference, const Trace& trace,
                              const Tolerance& tolerance);
+
+// compareTrace one simulated run at a time, the same result: step() until done(), then take().
+// The browser runs one step a frame, so its page answers keys between them (issue 41). The
+// scene and the trace must outlive it.
+class TraceComparer {
+  public:
+    TraceComparer(const Scene& scene, const WorldSettings& reference, const Trace& trace,
+                  const Tolerance& tolerance);
+    bool done() const { return phase_ == Phase::Done; }
+    void step(); // the next run (the reference first, then the variants)
+    int runsDone() const { return runs_; }
+    // The runs planned so far (the pairs of mistakes join only when no single change explains).
+    int runsPlanned() const;
+    TraceComparison take() { return std::move(c_); }
+
+  private:
+    enum class Phase { Reference, Singles, Pairs, Done };
+    void fitNext(const std::vector<Variant>& variants);
+    void finish();
+    const Scene& scene_;
+    const Trace& trace_;
+    TraceComparison c_;
+    Phase phase_ = Phase::Reference;
+    std::vector<Variant> singles_, pairs_;
+    std::vector<VariantFit> fits_;
+    std::size_t next_ = 0; // in singles_ or pairs_
+    int runs_ = 0;
+};

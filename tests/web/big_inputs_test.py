@@ -7,7 +7,8 @@ browser_test.py (headless Chromium over the DevTools protocol, its Page); one ch
               student's engine, a scene with a 10 MB description, and the worst files the
               browser accepts (the densest scene and a trace as large as browser_limits.h lets
               them be), each given to the page's file picker: each either opens with its
-              progress shown on the page, or is refused
+              progress shown on the page (a trace: compared one run a frame, "Comparing NAME
+              with the reference: run K of N..." shown for each), or is refused
               with a message on the page (the panel's error and the page's live region); no
               uncaught exception; while it opens, a key is sent every 0.2 s and the time the
               page takes to take it is measured (reported, not checked: no test reads a clock
@@ -190,6 +191,11 @@ def big_files(base):
                 check(how == "opened", f"{what}: refused, though within the browser's limit")
             if how == "opened":
                 check(progress, f"{what}: opened with no progress shown on the page")
+                if name.endswith(".csv"):
+                    # Compared one run a frame, each said on the page (browser/trace_opening.h).
+                    runs = [p for p in progress if p.startswith("Comparing " + name)]
+                    check(len(runs) >= 3 and re.search(r": run (\d+) of \1\.\.\.$", runs[-1]),
+                          f"{what}: not compared run by run with its progress shown: {progress}")
             else:
                 check(s["error"] and s["error"][:60] in live,
                       f"{what}: refused, but the page's live region does not say it: {live!r}")

@@ -68,15 +68,19 @@ bool openTrace(App& app, const std::string& path) {
         app.ui.messages.error = *error;
         return false;
     }
+    showOpenedTrace(app);
+    return true;
+}
+
+void showOpenedTrace(App& app) {
     app.ui.messages.error.clear();
-    app.ui.tracePath = path;
+    app.ui.tracePath = app.studentTrace.path;
     // The reference runs from the scene's start, without the Tips' mistakes.
     app.sim.applySettings(app.studentTrace.comparison->reference);
     resetScene(app);
     app.view.show.ghost = app.view.show.timeline = app.view.show.inspector = true;
     goToFirstDifference(app);
     app.ui.messages.note = "Your trace: " + studentTraceSummary(app.studentTrace) + ".";
-    return true;
 }
 
 bool compareTraceAgain(App& app) {

@@ -119,6 +119,10 @@ bool loadScene(App& app, const std::string& path);
 // the timeline and the inspector shown. On error, keeps what was open, sets the error message
 // and returns false.
 bool openTrace(App& app, const std::string& path);
+// What openTrace does once app.studentTrace holds the compared trace: the reference's settings
+// from the scene's start, the ghost, timeline and inspector shown, the first difference, the
+// note (the browser compares a frame at a time: browser/trace_opening.h).
+void showOpenedTrace(App& app);
 // Compares the open trace again with the current settings (after the method was changed).
 bool compareTraceAgain(App& app);
 // Goes to the open trace's first difference (the timeline's frame, or the run started again and

@@ -16,10 +16,10 @@
 // build the world, the first frame) is one task of the page's thread: for the densest scene at
 // the limit (4,124 blocks of 32 bytes, 128 KB) 0.4 to 0.6 s, so a key waits less than 1 s;
 // 8,000 blocks (256 KB) took 1.4 s, 20,000 (1.1 MB) 2.1 s, 70,000 (3.8 MB) 4.2 s, which is
-// why 4 MB was too much. A page's first trace took 1.5 to 1.7 s at that load at 10 or 60 KB
-// alike (a one-time cost of the browser build, still to be found: a second trace took 0.1 s),
-// 5.9 s at 256 KB and 16.8 s at 2 MB. The largest shipped scene is 60 KB. See the README,
-// "In a browser".
+// why 4 MB was too much. A trace is compared one run a frame (trace_opening.h): at the limit its
+// longest task was 0.75 to 1.0 s at load 24 to 28 (in one task, a page's first trace took 2.4 to
+// 3.8 s: the variants' code not yet optimised by the browser's JIT; 5.9 s at 256 KB and 16.8 s
+// at 2 MB). The largest shipped scene is 60 KB. See the README, "In a browser".
 inline constexpr std::uintmax_t kMaxBrowserSceneBytes = 128u << 10;
 inline constexpr std::uintmax_t kMaxBrowserTraceBytes = 64u << 10;
 

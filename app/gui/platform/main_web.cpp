@@ -17,6 +17,7 @@
 #include "renderer.h"
 #include "spoken_text.h"
 #include "touch_input.h"
+#include "trace_opening.h"
 #include "ui_renderer_gl.h"
 #include "ui_style.h"
 #include "url_params.h"
@@ -30,6 +31,7 @@
 #include <deque>
 #include <exception>
 #include <filesystem>
+#include <memory>
 #include <string>
 
 namespace {
@@ -65,6 +67,7 @@ struct WebApp {
     // (openFilesInTurn); `openingShown`: the page says it for the first one.
     std::deque<std::string> opening;
     bool openingShown = false;
+    std::unique_ptr<TraceOpening> traceOpening; // the first in `opening`, compared a run a frame
     std::string saidMessage; // the app's error or note as the page's live region last said it
 };
 
@@ -222,7 +225,8 @@ void tellPage(WebApp& w, double realSeconds) {
 // Files dropped or picked open one at a time: one refused at once when it is larger than the
 // browser opens (browser_limits.h: the message names the limit, and the file leaves the
 // browser's memory); otherwise the page says "Opening NAME (SIZE)..." for a frame (drawn before
-// the work starts, which holds the page's one thread), then it opens.
+// the work starts, which holds the page's one thread), then it opens: a scene at once, a trace
+// compared one run a frame with its progress shown (browser/trace_opening.h).
 void openFilesInTurn(WebApp& w) {
     for (std::string& path : canvasTakeOpenedFiles(w.canvas)) w.opening.push_back(std::move(path));
     if (w.opening.empty()) return;
@@ -241,7 +245,11 @@ void openFilesInTurn(WebApp& w) {
         w.openingShown = true;
         return;
     }
-    openFile(w.app, path);
+    std::string progress;
+    if (!openFileStep(w.app, w.traceOpening, path, progress)) {
+        pageShowProgress(progress);
+        return;
+    }
     pageShowProgress("");
     w.openingShown = false;
     w.opening.pop_front();
@@ -299,6 +307,7 @@ void frame(void* arg) {
     pageShowProgress("");
     w.opening.clear();
     w.openingShown = false;
+    w.traceOpening.reset();
     if (w.frames++ == 0) pageFirstFrameShown();
 }
 

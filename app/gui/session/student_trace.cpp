@@ -31,20 +31,43 @@ bool StudentTrace::ghostAt(std::int64_t frame, World& world) const {
     return true;
 }
 
-std::optional<std::string> openStudentTrace(StudentTrace& st, const std::string& path,
-                                            const Scene& scene, const WorldSettings& settings,
-                                            const TraceUnitsSpec& units) {
+std::optional<std::string> startStudentTrace(std::unique_ptr<TraceOpening>& opening,
+                                             const std::string& path, const Scene& scene,
+                                             const WorldSettings& settings,
+                                             const TraceUnitsSpec& units) {
     WorldSettings reference = settings;
     reference.mistakes = 0;
     TraceResult read = loadTraceFile(path, scene, reference.dt, units);
     if (!read.trace) return read.error.text();
-    st.path = path;
-    st.units = units;
-    st.scene = scene;
-    st.scene.settings = reference;
-    st.comparison =
-        compareTrace(st.scene, reference, *read.trace, traceTolerance(scene, reference.dt));
-    st.trace = std::move(read.trace);
+    opening = std::make_unique<TraceOpening>();
+    opening->path = path;
+    opening->units = units;
+    opening->scene = scene;
+    opening->scene.settings = reference;
+    opening->trace = std::move(*read.trace);
+    opening->comparer.emplace(opening->scene, reference, opening->trace,
+                              traceTolerance(scene, reference.dt));
+    return std::nullopt;
+}
+
+bool continueStudentTrace(TraceOpening& opening, StudentTrace& st) {
+    if (!opening.comparer->done()) opening.comparer->step();
+    if (!opening.comparer->done()) return false;
+    st.path = opening.path;
+    st.units = opening.units;
+    st.scene = opening.scene;
+    st.comparison = opening.comparer->take();
+    st.trace = std::move(opening.trace);
+    return true;
+}
+
+std::optional<std::string> openStudentTrace(StudentTrace& st, const std::string& path,
+                                            const Scene& scene, const WorldSettings& settings,
+                                            const TraceUnitsSpec& units) {
+    std::unique_ptr<TraceOpening> opening;
+    if (auto error = startStudentTrace(opening, path, scene, settings, units)) return error;
+    while (!continueStudentTrace(*opening, st)) {
+    }
     return std::nullopt;
 }
 

@@ -7,6 +7,7 @@
 #include "compare.h"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,25 @@ struct StudentTrace {
 std::optional<std::string> openStudentTrace(StudentTrace& st, const std::string& path,
                                             const Scene& scene, const WorldSettings& settings,
                                             const TraceUnitsSpec& units);
+// A trace being opened a step at a time (the browser, one step a frame, so that its page answers
+// keys meanwhile: issue 41): read at once, then compared one simulated run a step.
+struct TraceOpening {
+    std::string path;
+    TraceUnitsSpec units;
+    Scene scene;
+    Trace trace;
+    std::optional<TraceComparer> comparer; // reads scene and trace: the opening does not move
+};
+
+// Reads `path` as openStudentTrace does and starts comparing; on a bad file, no opening and the
+// error (with its place).
+std::optional<std::string> startStudentTrace(std::unique_ptr<TraceOpening>& opening,
+                                             const std::string& path, const Scene& scene,
+                                             const WorldSettings& settings,
+                                             const TraceUnitsSpec& units);
+// One run of the comparison; true when it is over and `st` holds the trace.
+bool continueStudentTrace(TraceOpening& opening, StudentTrace& st);
+
 // One line for the panel: "different from frame 5 (t = 0.5 s): mover's x off by 1.25 m", or
 // "the same as the reference over 100 frames".
 std::string studentTraceSummary(const StudentTrace& st);

@@ -5,6 +5,7 @@
 #include "app.h"
 #include "options.h"
 #include "test_fixtures.h"
+#include "trace_opening.h"
 
 #include <gtest/gtest.h>
 
@@ -59,7 +60,8 @@ TEST(StudentTrace, OpensAtTheFirstDifferenceWithTheGhostTimelineAndInspector) {
     EXPECT_TRUE(app.view.show.ghost);
     EXPECT_TRUE(app.view.show.timeline);
     EXPECT_TRUE(app.view.show.inspector);
-    EXPECT_NE(app.ui.messages.note.find("different from frame 5"), std::string::npos) << app.ui.messages.note;
+    EXPECT_NE(app.ui.messages.note.find("different from frame 5"), std::string::npos)
+        << app.ui.messages.note;
     // The diagnosis: the turn-based method.
     ASSERT_FALSE(app.studentTrace.comparison->explaining.empty());
     EXPECT_EQ(variantName(app.studentTrace.comparison->explaining.front().variant.changes),
@@ -77,6 +79,47 @@ TEST(StudentTrace, OpensAtTheFirstDifferenceWithTheGhostTimelineAndInspector) {
     EXPECT_EQ(app.sim.world().frame, 15u);
     ASSERT_TRUE(goToFirstDifference(app));
     EXPECT_EQ(app.sim.world().frame, 5u);
+    std::remove(trace.c_str());
+}
+
+// The browser opens a trace a step a frame (issue 41): read, then one simulated run a step, the
+// progress saying which; at the end the app shows what openTrace shows, the same comparison.
+TEST(StudentTrace, TheBrowserComparesOneRunAStepWithTheSameResult) {
+    const std::string trace = writeTurnBasedTrace("steps", 40);
+    App atOnce = appOn("point_of_impact");
+    ASSERT_TRUE(openTrace(atOnce, trace)) << atOnce.ui.messages.error;
+    App app = appOn("point_of_impact");
+    std::unique_ptr<TraceOpening> opening;
+    std::vector<std::string> progress;
+    std::string said;
+    while (!openFileStep(app, opening, trace, said)) {
+        ASSERT_TRUE(opening);
+        EXPECT_FALSE(app.studentTrace.open()); // nothing shown before the comparison is over
+        progress.push_back(said);
+        ASSERT_LT(progress.size(), 200u);
+    }
+    EXPECT_FALSE(opening);
+    ASSERT_GE(progress.size(), 3u); // the reference and the variants, a step each
+    const int runs = static_cast<int>(progress.size());
+    EXPECT_NE(progress.front().find("Comparing sandbox_student_trace_steps_"), std::string::npos)
+        << progress.front();
+    EXPECT_NE(progress.front().find(": run 1 of "), std::string::npos) << progress.front();
+    const std::string last = ": run " + std::to_string(runs) + " of " + std::to_string(runs);
+    EXPECT_NE(progress.back().find(last), std::string::npos) << progress.back();
+    ASSERT_TRUE(app.studentTrace.open());
+    EXPECT_EQ(app.studentTrace.firstDifference(), atOnce.studentTrace.firstDifference());
+    EXPECT_EQ(app.sim.world().frame, atOnce.sim.world().frame);
+    EXPECT_TRUE(app.view.show.ghost && app.view.show.timeline && app.view.show.inspector);
+    EXPECT_EQ(app.ui.messages.note, atOnce.ui.messages.note);
+    const TraceComparison& a = *app.studentTrace.comparison;
+    const TraceComparison& b = *atOnce.studentTrace.comparison;
+    ASSERT_EQ(a.explaining.size(), b.explaining.size());
+    for (std::size_t i = 0; i < a.explaining.size(); ++i) {
+        EXPECT_EQ(variantName(a.explaining[i].variant.changes),
+                  variantName(b.explaining[i].variant.changes));
+        EXPECT_EQ(a.explaining[i].match.hash, b.explaining[i].match.hash);
+    }
+    EXPECT_EQ(a.match.hash, b.match.hash);
     std::remove(trace.c_str());
 }
 
@@ -99,7 +142,8 @@ TEST(StudentTrace, ABadFileKeepsWhatWasOpenAndSaysWhere) {
         fs::temp_directory_path() / ("sandbox_bad_trace_" + std::to_string(::getpid()) + ".csv");
     std::ofstream(bad) << "t,mover_x,mover_y,mover_vx,mover_vy\n0.1,4.4,abc,14,-14\n";
     EXPECT_FALSE(openTrace(app, bad.string()));
-    EXPECT_NE(app.ui.messages.error.find(":2:9: column 'mover_y': 'abc' is not a number"), std::string::npos)
+    EXPECT_NE(app.ui.messages.error.find(":2:9: column 'mover_y': 'abc' is not a number"),
+              std::string::npos)
         << app.ui.messages.error;
     EXPECT_TRUE(app.studentTrace.open()); // the one before stays
     EXPECT_EQ(app.studentTrace.path, trace);
