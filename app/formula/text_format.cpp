@@ -237,7 +237,8 @@ void wrapFormulaParagraph(const std::string& text, double width,
         i = end + 1;
     }
     // Word k continues a short group in parentheses opened by an earlier word (a vector
-    // "(6, 0)", a pair): at most kGroupWords words from '(' to ')', read as one.
+    // "(6, 0)", a pair): at most kGroupWords words from '(' to ')', read as one where the group
+    // fits on a line.
     constexpr std::size_t kGroupWords = 3;
     std::vector<bool> inGroup(words.size(), false);
     for (std::size_t k = 0; k < words.size(); ++k) {
@@ -246,6 +247,7 @@ void wrapFormulaParagraph(const std::string& text, double width,
         for (std::size_t e = k + 1; e < words.size() && e < k + kGroupWords; ++e) {
             if (words[e].find('(') != std::string::npos) break;
             if (words[e].find(')') == std::string::npos) continue;
+            if (measure(lineOf(words, k, e + 1)) > width) break;
             for (std::size_t j = k + 1; j <= e; ++j) inGroup[j] = true;
             break;
         }

@@ -762,6 +762,7 @@ TEST(WrapFormula, BreaksBeforeOperatorsAndKeepsTheChainReadable) {
         EXPECT_NE(wrapFormula("total p = (6, 0) kg·m/s", width, bytes).find("(6, 0)"),
                   std::string::npos)
             << width;
+    EXPECT_EQ(wrapFormula("p = (123456, 654321)", 10, bytes), "p\n  = (123456,\n654321)");
     EXPECT_EQ(wrapFormula("a (long aside in parentheses) b", 14, bytes),
               "a (long aside\nin\nparentheses) b");
     EXPECT_EQ(wrapFormula("short = 1", 30, bytes), "short = 1");
