@@ -236,10 +236,28 @@ void wrapFormulaParagraph(const std::string& text, double width,
         if (end >= text.size()) break;
         i = end + 1;
     }
+    // Word k continues a short group in parentheses opened by an earlier word (a vector
+    // "(6, 0)", a pair): at most kGroupWords words from '(' to ')', read as one where the group
+    // fits on a line.
+    constexpr std::size_t kGroupWords = 3;
+    std::vector<bool> inGroup(words.size(), false);
+    for (std::size_t k = 0; k < words.size(); ++k) {
+        if (words[k].find('(') == std::string::npos || words[k].find(')') != std::string::npos)
+            continue;
+        for (std::size_t e = k + 1; e < words.size() && e < k + kGroupWords; ++e) {
+            if (words[e].find('(') != std::string::npos) break;
+            if (words[e].find(')') == std::string::npos) continue;
+            if (measure(lineOf(words, k, e + 1)) > width) break;
+            for (std::size_t j = k + 1; j <= e; ++j) inGroup[j] = true;
+            break;
+        }
+    }
     // A line may start at word k when neither k nor the word before it is empty (a double space
-    // stays inside a line) and the word before is not an operator.
+    // stays inside a line), the word before is not an operator and k is not inside a short
+    // group in parentheses.
     const auto canStart = [&](std::size_t k) {
-        return k > 0 && !words[k].empty() && !words[k - 1].empty() && !isOperatorWord(words[k - 1]);
+        return k > 0 && !words[k].empty() && !words[k - 1].empty() &&
+               !isOperatorWord(words[k - 1]) && !inGroup[k];
     };
     std::vector<std::size_t> starts{0};
     while (true) {

@@ -53,7 +53,8 @@ std::string wrapAtSpaces(const std::string& text, double width,
 // An equation or a line of prose with equations in it (the collision inspector's lines) broken
 // into lines of at most `width`: at spaces only, before an operator or a relation (the next
 // line starts "  = 999997.136", indented, and equation_check reads the chain on), never right
-// after one, and never leaving one word alone on the last line when the line before can give it
+// after one, never inside a short group in parentheses ("(6, 0)": three words at most), and never
+// leaving one word alone on the last line when the line before can give it
 // company. A piece that fits nowhere overflows its line rather than being cut inside a number.
 std::string wrapFormula(const std::string& text, double width,
                         const std::function<double(const std::string&)>& measure);

@@ -65,3 +65,16 @@ inline int run(const std::string& commandLine, std::string* output) {
     const int status = pclose(pipe);
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
+
+// The --screens argument of a sweep's screens ("1280x800@1,1920x1080@1.5"): each screen has
+// width, height and uiScale.
+template <class Screens> std::string screensOption(const Screens& screens) {
+    std::string out;
+    for (const auto& s : screens) {
+        char item[48];
+        std::snprintf(item, sizeof item, "%s%dx%d@%g", out.empty() ? "" : ",", s.width, s.height,
+                      s.uiScale);
+        out += item;
+    }
+    return out;
+}

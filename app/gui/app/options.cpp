@@ -153,12 +153,17 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     CLI::Option* recordSteps = app.add_option(
         "--record-steps", o.recordSteps,
         "Offscreen: write every lesson step at its setup and its moment here (PNG and JSON)");
+    CLI::Option* recordScenes = app.add_option(
+        "--record-scenes", o.recordScenes,
+        "Offscreen: write every shipped scene, after --frames N frames, with --show's "
+        "overlays, here (SCENE.png, SCENE.layout.json, SCENE.text.json)");
+    recordScenes->excludes(recordSteps);
     std::string screens;
     app.add_option("--screens", screens,
-                   "With --record-steps: at each of these screen sizes and UI scales (all: every "
-                   "classroom screen, or WxH@S,... e.g. 1280x800@1.5,1024x768@1), each into "
-                   "DIR/WxH_uiS/, the layout and text JSON only (nothing rasterised)")
-        ->needs(recordSteps)
+                   "With --record-steps or --record-scenes: at each of these screen sizes and UI "
+                   "scales (all: every classroom screen, or WxH@S,... e.g. "
+                   "1280x800@1.5,1024x768@1), each into DIR/WxH_uiS/, the layout and text JSON "
+                   "only (nothing rasterised)")
         ->type_name("LIST");
     app.add_option("--theme", o.theme,
                    "dark or light (bright rooms); the window's default is the saved setting")
@@ -208,6 +213,8 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
             throw CLI::ValidationError("--size", "expected WxH, e.g. 1280x720, got '" + size + "'");
         }
         if (!screens.empty()) {
+            if (o.recordSteps.empty() && o.recordScenes.empty())
+                throw CLI::ValidationError("--screens", "needs --record-steps or --record-scenes");
             std::string error;
             if (!parseScreens(screens, o.screens, &error))
                 throw CLI::ValidationError("--screens", error);
@@ -224,8 +231,9 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
         }
         // The JSON of one frame: the screenshot's, or alone (no image); not of a recording.
         const bool otherOutput =
-            o.screenshot.empty() && (!o.record.empty() || !o.recordSteps.empty() ||
-                                     o.benchmarkFrames > 0 || !o.audioWav.empty());
+            o.screenshot.empty() &&
+            (!o.record.empty() || !o.recordSteps.empty() || !o.recordScenes.empty() ||
+             o.benchmarkFrames > 0 || !o.audioWav.empty());
         if (!o.layoutJson.empty() && otherOutput) {
             throw CLI::ValidationError("--layout-json", "needs --screenshot FILE, or no other "
                                                         "output (then no image is rendered)");

@@ -25,18 +25,20 @@ struct Options {
     int height = 720;
     bool showGiven = false;
     ShowSet show;
-    int benchmarkFrames = 0; // offscreen: render this many frames and print ms per frame
-    float uiScale = 0.0f;    // 0: the saved setting (window) or 1 (offscreen)
-    bool verbose = false;    // print state changes (pause, method, sliders...) to stdout
-    bool present = false;    // start in present mode: the scene and a caption, no panel or window
-    std::string layoutJson;  // offscreen: write the layout (scene, world, windows) here, in pixels
-    std::string textJson;    // offscreen: write every text drawn in the last frame here
-    std::string lesson;      // --lesson NAME or file (docs/lesson-format.md)
-    int step = 0;            // --step N (1-based) of the lesson; 0: the first
-    bool atSetup = false;    // offscreen --at setup: the step at t = 0 with its question (else
-                             // --at moment, the default: at its pause point with the answer)
-    std::string recordSteps; // offscreen: one PNG per lesson step into this directory
-    // --screens: --record-steps at each of these screens and UI scales, JSON only (view.h)
+    int benchmarkFrames = 0;  // offscreen: render this many frames and print ms per frame
+    float uiScale = 0.0f;     // 0: the saved setting (window) or 1 (offscreen)
+    bool verbose = false;     // print state changes (pause, method, sliders...) to stdout
+    bool present = false;     // start in present mode: the scene and a caption, no panel or window
+    std::string layoutJson;   // offscreen: write the layout (scene, world, windows) here, in pixels
+    std::string textJson;     // offscreen: write every text drawn in the last frame here
+    std::string lesson;       // --lesson NAME or file (docs/lesson-format.md)
+    int step = 0;             // --step N (1-based) of the lesson; 0: the first
+    bool atSetup = false;     // offscreen --at setup: the step at t = 0 with its question (else
+                              // --at moment, the default: at its pause point with the answer)
+    std::string recordSteps;  // offscreen: one PNG per lesson step into this directory
+    std::string recordScenes; // offscreen: every shipped scene (with --show) into this directory
+    // --screens: --record-steps or --record-scenes at each of these screens and UI scales, JSON
+    // only (view.h)
     std::vector<ClassroomScreen> screens;
     std::optional<ViewFrame> frame; // --frame: start in this frame (a lesson's steps choose theirs)
     std::string theme;              // --theme dark|light; "": the saved setting (window) or dark
@@ -85,6 +87,6 @@ ParsedOptions parseOptions(int argc, const char* const* argv);
 // True when the run renders offscreen rather than opening a window.
 inline bool wantsOffscreen(const Options& o) {
     return !o.screenshot.empty() || !o.record.empty() || o.benchmarkFrames > 0 ||
-           !o.recordSteps.empty() || !o.audioWav.empty() || !o.layoutJson.empty() ||
-           !o.textJson.empty();
+           !o.recordSteps.empty() || !o.recordScenes.empty() || !o.audioWav.empty() ||
+           !o.layoutJson.empty() || !o.textJson.empty();
 }

@@ -5,7 +5,10 @@
 #include "overlay_window.h"
 #include "ui_style.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <iterator>
+#include <string>
 
 void drawSideBySideOverlay(App& app) {
     OverlayWindow overlay(app, OverlayId::sideBySide);
@@ -15,40 +18,87 @@ void drawSideBySideOverlay(App& app) {
         textWrappedAtSpaces("Starts from the current state when the simulation runs (P or N).");
         return;
     }
-    // Columns at the width of their contents (never cut): a narrow window scrolls sideways.
-    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit |
-                                  ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX;
+    // Each method's row as text: its name, then the statistics (kHeaders' order).
+    constexpr int kMethods = static_cast<int>(Method::Count);
+    constexpr const char* kHeaders[] = {"method", "collisions",  "max overlap",
+                                        "energy", "off perfect", "ms/step"};
+    constexpr int kColumns = static_cast<int>(std::size(kHeaders));
+    std::string cells[kMethods][kColumns];
+    char text[64];
+    for (int k = 0; k < kMethods; ++k) {
+        const Method method = static_cast<Method>(k);
+        const MethodRun& r = m.run(method);
+        cells[k][0] = methodName(method);
+        cells[k][1] = std::to_string(static_cast<long long>(r.totals.collisions));
+        std::snprintf(text, sizeof text, "%.3g m", r.totals.maxPenetration);
+        cells[k][2] = text;
+        std::snprintf(text, sizeof text, "%.4g J", r.stats.kineticEnergy + r.stats.potentialEnergy);
+        cells[k][3] = text;
+        std::snprintf(text, sizeof text, "%.3g m", m.divergence(method));
+        cells[k][4] = text;
+        std::snprintf(text, sizeof text, "%.3f", r.stats.stepMs);
+        cells[k][5] = text;
+    }
+    const int live = static_cast<int>(app.sim.world().settings.method);
     const ImGuiStyle& st = ImGui::GetStyle();
-    const float rows =
-        4.0f * (ImGui::GetTextLineHeight() + 2.0f * st.CellPadding.y) + st.ScrollbarSize + 2.0f;
-    if (ImGui::BeginTable("methods", 6, flags, ImVec2(0.0f, rows))) {
-        ImGui::TableSetupColumn("method");
-        ImGui::TableSetupColumn("collisions");
-        ImGui::TableSetupColumn("max overlap");
-        ImGui::TableSetupColumn("energy");
-        ImGui::TableSetupColumn("off perfect");
-        ImGui::TableSetupColumn("ms/step");
-        ImGui::TableHeadersRow();
-        for (int k = 0; k < static_cast<int>(Method::Count); ++k) {
-            const Method method = static_cast<Method>(k);
-            const MethodRun& r = m.run(method);
-            const bool live = method == app.sim.world().settings.method;
+    const auto width = [&st](const std::string& t) {
+        return ImGui::CalcTextSize(t.c_str()).x + 2.0f * st.CellPadding.x + 1.0f; // and a border
+    };
+    // A row a method, at the width of its contents, where that fits; else (a narrow window) a
+    // column a method, its name over two or three lines ("move-and-" / "correct" / "(live)").
+    // Never cut, never scrolled sideways.
+    float rowsWidth = 0.0f;
+    for (int c = 0; c < kColumns; ++c) {
+        float widest = width(kHeaders[c]);
+        for (int k = 0; k < kMethods; ++k)
+            widest = std::max(widest, width(cells[k][c] + (c == 0 && k == live ? " (live)" : "")));
+        rowsWidth += widest;
+    }
+    const ImGuiTableFlags flags =
+        ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV;
+    const auto methodText = [&](int k, const std::string& t) {
+        ImGui::TextColored(uiMarkColorVec(methodMark(static_cast<Method>(k))), "%s", t.c_str());
+    };
+    if (rowsWidth <= ImGui::GetContentRegionAvail().x) {
+        if (ImGui::BeginTable("methods", kColumns, flags)) {
+            for (const char* header : kHeaders) ImGui::TableSetupColumn(header);
+            ImGui::TableHeadersRow();
+            for (int k = 0; k < kMethods; ++k) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                methodText(k, cells[k][0] + (k == live ? " (live)" : ""));
+                for (int c = 1; c < kColumns; ++c) {
+                    ImGui::TableNextColumn();
+                    ImGui::TextUnformatted(cells[k][c].c_str());
+                }
+            }
+            ImGui::EndTable();
+        }
+    } else if (ImGui::BeginTable("methods", 1 + kMethods, flags)) {
+        ImGui::TableSetupColumn("");
+        for (int k = 0; k < kMethods; ++k) ImGui::TableSetupColumn(cells[k][0].c_str());
+        ImGui::TableNextRow(); // the names: a plain row, so that they size their columns
+        ImGui::TableNextColumn();
+        for (int k = 0; k < kMethods; ++k) {
+            ImGui::TableNextColumn();
+            std::string name = cells[k][0];
+            const std::size_t dash = name.rfind('-'); // "move-and-" / "correct"
+            if (dash != std::string::npos) name.insert(dash + 1, "\n");
+            methodText(k, name + (k == live ? "\n(live)" : ""));
+        }
+        for (int c = 1; c < kColumns; ++c) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::TextColored(uiMarkColorVec(methodMark(method)), "%s%s", methodName(method),
-                               live ? " (live)" : "");
-            ImGui::TableNextColumn();
-            ImGui::Text("%lld", static_cast<long long>(r.totals.collisions));
-            ImGui::TableNextColumn();
-            ImGui::Text("%.3g m", r.totals.maxPenetration);
-            ImGui::TableNextColumn();
-            ImGui::Text("%.4g J", r.stats.kineticEnergy + r.stats.potentialEnergy);
-            ImGui::TableNextColumn();
-            ImGui::Text("%.3g m", m.divergence(method));
-            ImGui::TableNextColumn();
-            ImGui::Text("%.3f", r.stats.stepMs);
+            ImGui::TextUnformatted(kHeaders[c]);
+            for (int k = 0; k < kMethods; ++k) {
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(cells[k][c].c_str());
+            }
         }
         ImGui::EndTable();
     }
-    dimText("Outlines in the scene: the other methods' blocks.");
+    // The note where the window has room for it (a short one cuts it, not the table).
+    const char* note = "Outlines in the scene: the other methods' blocks.";
+    const ImVec2 room = ImGui::GetContentRegionAvail();
+    if (ImGui::CalcTextSize(note, nullptr, false, room.x).y <= room.y) dimText(note);
 }

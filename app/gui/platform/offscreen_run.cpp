@@ -3,6 +3,7 @@
 #include "app_config.h"
 #include "app_frame.h"
 #include "app_setup.h"
+#include "imgui_ext.h"
 #include "offscreen_osmesa.h"
 #include "png_io.h"
 #include "printable.h"
@@ -18,6 +19,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <chrono>
 #include <cmath>
@@ -203,10 +205,13 @@ bool writeLayoutJson(const App& app, const std::string& path) {
         blocks.push_back(
             {app.sim.blockDisplayName(static_cast<int>(i)), worldRectOnScreen(camera, box)});
     }
+    std::vector<DockedWindow> sideways;
+    for (const imgui_ext::SidewaysScroll& w : imgui_ext::sidewaysScrolls())
+        sideways.push_back({w.window, {w.min.x, w.min.y, w.max.x - w.min.x, w.max.y - w.min.y}});
     return writeText(path, layoutJson(camera.viewport(),
                                       worldRectOnScreen(camera, app.sim.world().bounds),
                                       app.view.shownWindows, blocks, app.view.shownPlots,
-                                      app.view.shownMarks, app.view.shownMagnified));
+                                      app.view.shownMarks, app.view.shownMagnified, sideways));
 }
 
 // The texts of the frame rendered last (--text-json, screen_text.h).
@@ -328,6 +333,16 @@ bool recordStepsInto(App& app, Offscreen& off, const std::string& dir) {
     return true;
 }
 
+// At `screen`: the image's size, the UI scale, and the fonts and style for them.
+void useScreen(App& app, Offscreen& off, const ClassroomScreen& screen) {
+    off.width = screen.width;
+    off.height = screen.height;
+    ImGui::GetIO().DisplaySize =
+        ImVec2(static_cast<float>(screen.width), static_cast<float>(screen.height));
+    setUiScale(app.view, screen.uiScale);
+    uiFollowView(app.view, app.ui.touchUi); // the fonts and style for its height and scale
+}
+
 // A handout that the lesson sweep (ctest) also reads: every step's setup and moment as PNGs with
 // their JSON (recordStepsInto); with --screens, at each of those screens and UI scales
 // (--screens all: classroomScreens), each into DIR/WxH_uiS/, as JSON only.
@@ -346,17 +361,51 @@ int recordSteps(App& app, Offscreen& off, const Options& o) {
     }
     int screens = 0;
     for (const ClassroomScreen& screen : o.screens) {
-        off.width = screen.width;
-        off.height = screen.height;
-        ImGui::GetIO().DisplaySize =
-            ImVec2(static_cast<float>(screen.width), static_cast<float>(screen.height));
-        setUiScale(app.view, screen.uiScale);
-        uiFollowView(app.view, app.ui.touchUi); // the fonts and style for its height and scale
+        useScreen(app, off, screen);
         if (!recordStepsInto(app, off, o.recordSteps + "/" + screen.name())) return 1;
         ++screens;
     }
     std::printf("wrote %zu steps at %d screens to %s\n", steps, screens,
                 printable(o.recordSteps, kPrintablePath).c_str());
+    return 0;
+}
+
+// Every shipped scene after `frames` frames (--frames; 0: as it opens), with the overlays --show
+// chose, into `dir`: DIR/SCENE.* (writeFrameFiles; SCENE the file's name without .json).
+bool recordScenesInto(App& app, Offscreen& off, const std::string& dir, int frames) {
+    if (!makeDirectory(dir)) return false;
+    for (const SceneEntry& scene : app.shipped.scenes) {
+        if (!loadScene(app, scene.path)) {
+            std::fprintf(stderr, "sandbox: %s\n", app.ui.messages.error.c_str());
+            return false;
+        }
+        for (int i = 0; i < frames; ++i) stepSimulation(app);
+        if (frames > 0) app.sim.paused = false; // as in screenshot(): the run going on
+        for (int k = 0; k < kSettleFrames; ++k) renderFrame(app, off);
+        const std::string name = std::filesystem::path(scene.path).stem().string();
+        if (!writeFrameFiles(app, off, dir + "/" + name)) return false;
+    }
+    return true;
+}
+
+// Every shipped scene with the overlays of --show (the screen checks of issue 39 read them):
+// as PNGs with their JSON, or with --screens at each of those screens, JSON only, each into
+// DIR/WxH_uiS/.
+int recordScenes(App& app, Offscreen& off, const Options& o) {
+    if (app.view.show.cost) // the chart: one sweep for every scene (it runs the shipped ones)
+        app.sim.cost.runSweepNow(quickTradeoffSweep(app.shipped.scenesDir));
+    if (o.screens.empty()) {
+        if (!recordScenesInto(app, off, o.recordScenes, o.frames)) return 1;
+    } else {
+        for (const ClassroomScreen& screen : o.screens) {
+            useScreen(app, off, screen);
+            if (!recordScenesInto(app, off, o.recordScenes + "/" + screen.name(), o.frames))
+                return 1;
+        }
+    }
+    std::printf("wrote %zu scenes at %zu screens to %s\n", app.shipped.scenes.size(),
+                std::max<std::size_t>(o.screens.size(), 1),
+                printable(o.recordScenes, kPrintablePath).c_str());
     return 0;
 }
 
@@ -415,7 +464,8 @@ bool refusedEdits(const App& app) {
 int runOffscreen(const Options& options) {
     Options o = options;
     if (o.screenshot.empty() && o.record.empty() && o.benchmarkFrames <= 0 &&
-        o.recordSteps.empty() && o.audioWav.empty() && o.layoutJson.empty() && o.textJson.empty()) {
+        o.recordSteps.empty() && o.recordScenes.empty() && o.audioWav.empty() &&
+        o.layoutJson.empty() && o.textJson.empty()) {
         o.screenshot = "sandbox-screenshot.png";
     }
     App app;
@@ -429,7 +479,7 @@ int runOffscreen(const Options& options) {
         return 2;
     }
     if (o.screenshot.empty() && o.record.empty() && o.benchmarkFrames <= 0 &&
-        o.recordSteps.empty() && o.layoutJson.empty() &&
+        o.recordSteps.empty() && o.recordScenes.empty() && o.layoutJson.empty() &&
         o.textJson.empty()) { // --audio-wav alone: simulate and listen, draw nothing
         if (app.lesson.active()) lessonShowPausePoint(app);
         AudioTrack track = startTrack(app, o, o.frames);
@@ -446,12 +496,14 @@ int runOffscreen(const Options& options) {
     off.width = o.width;
     off.height = o.height;
     // No image asked for (the JSON alone, or every size's): nothing is rasterised.
-    off.pixels = o.screens.empty() && (!o.screenshot.empty() || !o.record.empty() ||
-                                       o.benchmarkFrames > 0 || !o.recordSteps.empty());
+    off.pixels =
+        o.screens.empty() && (!o.screenshot.empty() || !o.record.empty() || o.benchmarkFrames > 0 ||
+                              !o.recordSteps.empty() || !o.recordScenes.empty());
     if (!off.pixels) {
         ImGui::GetIO().Fonts->Build(); // ImGui lays text out with the atlas (never uploaded)
-        const int code =
-            !o.recordSteps.empty() ? recordSteps(app, off, o) : screenshot(app, off, o);
+        const int code = !o.recordSteps.empty()    ? recordSteps(app, off, o)
+                         : !o.recordScenes.empty() ? recordScenes(app, off, o)
+                                                   : screenshot(app, off, o);
         uiDestroyContext();
         return code;
     }
@@ -472,6 +524,8 @@ int runOffscreen(const Options& options) {
         code = benchmark(app, off, o);
     else if (!o.recordSteps.empty())
         code = recordSteps(app, off, o);
+    else if (!o.recordScenes.empty())
+        code = recordScenes(app, off, o);
     else if (!o.record.empty())
         code = record(app, off, o);
     else

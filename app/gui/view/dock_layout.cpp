@@ -296,14 +296,14 @@ std::string namedRects(const std::vector<DockedWindow>& list) {
 
 } // namespace
 
-std::string layoutJson(const ScreenRect& scene, const ScreenRect& world,
-                       const std::vector<DockedWindow>& windows,
-                       const std::vector<DockedWindow>& blocks,
-                       const std::vector<DockedWindow>& plots,
-                       const std::vector<DockedWindow>& marks,
-                       const std::vector<DockedWindow>& magnified) {
+std::string
+layoutJson(const ScreenRect& scene, const ScreenRect& world,
+           const std::vector<DockedWindow>& windows, const std::vector<DockedWindow>& blocks,
+           const std::vector<DockedWindow>& plots, const std::vector<DockedWindow>& marks,
+           const std::vector<DockedWindow>& magnified, const std::vector<DockedWindow>& sideways) {
     return "{\"scene\": " + jsonRect(scene) + ", \"world\": " + jsonRect(world) +
            ", \"windows\": " + namedRects(windows) + ", \"blocks\": " + namedRects(blocks) +
            ", \"plots\": " + namedRects(plots) + ", \"marks\": " + namedRects(marks) +
-           (magnified.empty() ? "" : ", \"magnified\": " + namedRects(magnified)) + "}\n";
+           (magnified.empty() ? "" : ", \"magnified\": " + namedRects(magnified)) +
+           (sideways.empty() ? "" : ", \"sideways\": " + namedRects(sideways)) + "}\n";
 }

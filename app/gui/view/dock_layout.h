@@ -130,13 +130,16 @@ ScreenRect worldRectOnScreen(const Camera& camera, const Bounds& bounds);
 //   {"scene": [...], "world": [...], "windows": [{"name": "Plots", "rect": [...]}, ...],
 //    "blocks": [{"name": "m1", "rect": [...]}, ...], "plots": [{"name": "velocity", ...}, ...],
 //    "marks": [{"name": "moved back", "rect": [...]}, ...]}
-// and, when a magnifier is drawn (magnifier.h), "magnified": the blocks as drawn in it, by name.
+// and, when a magnifier is drawn (magnifier.h), "magnified": the blocks as drawn in it, by name;
+// when a window (or a part of one: a table) must be scrolled sideways to read it, "sideways": that
+// part's rectangle by its window's name.
 std::string layoutJson(const ScreenRect& scene, const ScreenRect& world,
                        const std::vector<DockedWindow>& windows,
                        const std::vector<DockedWindow>& blocks = {},
                        const std::vector<DockedWindow>& plots = {},
                        const std::vector<DockedWindow>& marks = {},
-                       const std::vector<DockedWindow>& magnified = {});
+                       const std::vector<DockedWindow>& magnified = {},
+                       const std::vector<DockedWindow>& sideways = {});
 // JSON pieces of the documents the app writes: a string (quoted, escaped) and [x, y, w, h].
 std::string jsonString(const std::string& s);
 std::string jsonRect(const ScreenRect& r);

@@ -756,6 +756,15 @@ TEST(WrapFormula, BreaksBeforeOperatorsAndKeepsTheChainReadable) {
     EXPECT_EQ(
         wrapFormula("m1 = 1, m2 = 1000000, v1 = 1.5936995812, v2 = 0.9999987301, C = 1", 45, bytes),
         "m1 = 1, m2 = 1000000, v1 = 1.5936995812,\nv2 = 0.9999987301, C = 1");
+    // Issue 39: a vector in parentheses is never split ("(6,\n0)" in the momenta window); a
+    // longer aside in parentheses still wraps.
+    for (double width = 6.0; width <= 30.0; width += 1.0)
+        EXPECT_NE(wrapFormula("total p = (6, 0) kg·m/s", width, bytes).find("(6, 0)"),
+                  std::string::npos)
+            << width;
+    EXPECT_EQ(wrapFormula("p = (123456, 654321)", 10, bytes), "p\n  = (123456,\n654321)");
+    EXPECT_EQ(wrapFormula("a (long aside in parentheses) b", 14, bytes),
+              "a (long aside\nin\nparentheses) b");
     EXPECT_EQ(wrapFormula("short = 1", 30, bytes), "short = 1");
     EXPECT_EQ(wrapFormula("one\ntwo = 2", 30, bytes), "one\ntwo = 2");
 }

@@ -62,13 +62,8 @@ const std::vector<Shot>& shots() {
     static const std::vector<Shot> all = [] {
         const fs::path dir = fs::path(SANDBOX_SWEEP_OUTPUT_DIR);
         fs::remove_all(dir);
-        std::string screens, output;
-        for (const Screen& s : kScreens) {
-            char item[48];
-            std::snprintf(item, sizeof item, "%s%dx%d@%g", screens.empty() ? "" : ",", s.width,
-                          s.height, s.uiScale);
-            screens += item;
-        }
+        const std::string screens = screensOption(kScreens);
+        std::string output;
         const int code = run(quote(SANDBOX_OFFSCREEN_EXE) + " --lesson lecture3 --record-steps " +
                                  quote(dir.string()) + " --screens " + screens,
                              &output);

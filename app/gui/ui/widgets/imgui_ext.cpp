@@ -199,6 +199,18 @@ int drawListVertices(const ImDrawList& list) {
     return list.VtxBuffer.Size;
 }
 
+std::vector<SidewaysScroll> sidewaysScrolls() {
+    std::vector<SidewaysScroll> out;
+    for (const ImGuiWindow* w : GImGui->Windows) {
+        // Half a pixel: ImGui's sizes are floats that round to the same pixel.
+        if (!w->Active || w->Hidden || w->ScrollMax.x < 0.5f) continue;
+        const std::string root = w->RootWindow ? w->RootWindow->Name : w->Name;
+        out.push_back({root.substr(0, root.find("##")), w->Pos,
+                       ImVec2(w->Pos.x + w->Size.x, w->Pos.y + w->Size.y), w->ScrollMax.x});
+    }
+    return out;
+}
+
 void forEachDrawnRect(const ImDrawList& list, ImTextureID texture,
                       const std::function<void(const DrawnRect&)>& rect,
                       const std::function<void()>& other) {

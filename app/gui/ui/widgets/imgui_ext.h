@@ -114,6 +114,17 @@ void forEachDrawnRect(const ImDrawList& list, ImTextureID texture,
                       const std::function<void(const DrawnRect&)>& rect,
                       const std::function<void()>& other);
 
+// A window, or a part of one (a child window, a table's scrolling part), whose content is wider
+// than it shows: a reader must scroll it sideways. `window` is its root window's title (the part
+// before any "##"), `min`-`max` the part on screen and `hidden` how many pixels it hides.
+struct SidewaysScroll {
+    std::string window;
+    ImVec2 min, max;
+    float hidden = 0.0f;
+};
+// Those of the frame drawn last (the windows active in it), in ImGui's order of windows.
+std::vector<SidewaysScroll> sidewaysScrolls();
+
 // --- The controls of a frame (the browser build's tests) ---
 
 // An interactive item ImGui added (a button, a slider, a window's close button, ...): its label's
