@@ -6,7 +6,6 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <system_error>
 
 namespace fs = std::filesystem;
@@ -88,8 +87,10 @@ class SceneNameReader : public nlohmann::json_sax<nlohmann::json> {
 // The title listScenes gives the file: its scene's name, the file's name when the scene's is
 // empty, and when it is no scene the file's name with underscores as spaces.
 std::string sceneTitle(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    std::ifstream in(p, std::ios::binary | std::ios::ate); // read whole (not char by char)
+    std::string text(static_cast<std::size_t>(std::max<std::streamoff>(0, in.tellg())), '\0');
+    in.seekg(0);
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
     SceneNameReader reader;
     const bool scene =
         in && nlohmann::json::sax_parse(text, &reader) && reader.scene && reader.named;
