@@ -3,6 +3,7 @@
 protocol's Profiler domain) over the running page, its samples summed by function.
 
   tests/bench/web_profile.py SITE [QUERY] [--frames N] [--ratio R] [--top K] [--gl-calls]
+                             [--inclusive] [--first-frame]
 
 SITE is a build-web/ folder; QUERY the page's URL parameters (e.g. "scene=gas_500&show=plots").
 Build the site with wasm function names kept to read them (a profiling build: the link's
@@ -15,7 +16,11 @@ profiled over N frames (default 300) and the functions with the most self time a
 a share of the time inside the page's requestAnimationFrame callbacks (the frames' JavaScript,
 timed as web_frame_bench.py times it) and in ms per frame. A profile, not a benchmark: the shares
 hold under load, the ms do not. With --gl-calls, the WebGL calls per frame are counted by name
-instead (each crosses from wasm to JavaScript and into the browser's WebGL).
+instead (each crosses from wasm to JavaScript and into the browser's WebGL). With --inclusive,
+the functions are also listed by their total time (their own and their callees': where a frame's
+parts go, e.g. ImGui::NewFrame, appFrame, appRender, tellPage). With --first-frame, the page
+loaded once, then its warm reload is profiled up to its first frame shown (web_frame_bench.py's
+first frame): where that time goes (compiling the wasm, main(), the fonts, the first frame), in ms.
 """
 import collections
 import os
@@ -56,12 +61,66 @@ def self_times(profile):
     return ms
 
 
+def total_times(profile):
+    """ms of total time per function name: each sample counts once for every function on its
+    stack (a recursive one once)."""
+    nodes = {n["id"]: n for n in profile["nodes"]}
+    parent = {}
+    for n in profile["nodes"]:
+        for child in n.get("children", ()):
+            parent[child] = n["id"]
+    ms = collections.Counter()
+    for node_id, delta in zip(profile["samples"], profile["timeDeltas"]):
+        names, at = set(), node_id
+        while at is not None:
+            names.add(nodes[at]["callFrame"]["functionName"] or "(anonymous)")
+            at = parent.get(at)
+        for name in names:
+            ms[name] += delta / 1000.0
+    return ms
+
+
+def print_top(ms, busy, per, unit, top, idle):
+    for (name, place), v in [(k, v) for k, v in ms.most_common() if k[0] not in idle][:top]:
+        print(f"  {100 * v / busy:5.1f}%  {v / per:7.3f} {unit}  {name[:100]}  {place}")
+
+
+def profile_first_frame(page, base, site, query, top):
+    """The warm reload profiled up to its first frame: self and total times in ms."""
+    page.open(base + ("?" + query if query else ""))  # the cold load fills the cache
+    page.call("Profiler.enable")
+    page.call("Profiler.setSamplingInterval", interval=100)  # us
+    page.call("Profiler.start")
+    page.reload()
+    profile = page.call("Profiler.stop")["profile"]
+    first = page.evaluate("window.sandboxFirstFrame")
+    idle = {"(idle)", "(program)", "(garbage collector)", "(root)"}
+    ms = self_times(profile)
+    busy = sum(v for (name, _), v in ms.items() if name not in idle)
+    print(f"{site} ?{query}: first frame at {first:.0f} ms after the reload's start; profiled "
+          f"{sum(ms.values()):.0f} ms, {busy:.0f} ms in functions")
+    for name in sorted(idle - {"(root)"}):
+        print(f"  {name}: {sum(v for (n, _), v in ms.items() if n == name):.0f} ms")
+    print(f"top {top} functions by self time:")
+    print_top(ms, busy, 1, "ms", top, idle)
+    print(f"top {top} functions by total time (their callees' too):")
+    totals = collections.Counter({(k, ""): v for k, v in total_times(profile).items()})
+    print_top(totals, busy, 1, "ms", top, idle)
+    return 0
+
+
 def main():
     args = sys.argv[1:]
     options = {"--frames": 300, "--ratio": 1.0, "--top": 15}
     count_gl = "--gl-calls" in args  # count the WebGL calls per frame instead of profiling
     if count_gl:
         args.remove("--gl-calls")
+    inclusive = "--inclusive" in args  # also the functions by total time
+    if inclusive:
+        args.remove("--inclusive")
+    first_frame = "--first-frame" in args  # the warm reload up to its first frame
+    if first_frame:
+        args.remove("--first-frame")
     for key in list(options):
         if key in args:
             at = args.index(key)
@@ -74,6 +133,8 @@ def main():
     server, base = web_frame_bench.serve(site)
     page = browser_test.Page(1280, 720, options["--ratio"])
     try:
+        if first_frame:
+            return profile_first_frame(page, base, site, query, options["--top"])
         count = web_frame_bench.FRAME_COUNT
         web_frame_bench.open_running(page, base, query, 30, (GL_COUNTER,) if count_gl else ())
         if count_gl:
@@ -114,6 +175,12 @@ def main():
     top = [(k, v) for k, v in ms.most_common() if k[0] not in idle][:options["--top"]]
     for (name, place), v in top:
         print(f"  {100 * v / busy:5.1f}%  {v / len(frames):6.3f} ms/frame  {name}  {place}")
+    if inclusive:
+        totals = [(k, v) for k, v in total_times(profile).most_common()
+                  if k not in idle and k != "(root)"][:options["--top"]]
+        print(f"top {options['--top']} functions by total time (their callees' too):")
+        for name, v in totals:
+            print(f"  {100 * v / busy:5.1f}%  {v / len(frames):6.3f} ms/frame  {name[:110]}")
     return 0
 
 

@@ -271,9 +271,7 @@ void viewSection(App& app) {
 void sceneDescription(const std::string& text, int maxLines) {
     const float width = ImGui::GetContentRegionAvail().x;
     const auto lineCount = [width](const std::string& t) {
-        const std::string wrapped = wrapAtSpaces(t, width, [](const std::string& line) {
-            return static_cast<double>(ImGui::CalcTextSize(line.c_str()).x);
-        });
+        const std::string& wrapped = wrappedAtSpaces(t, width);
         return 1 + static_cast<int>(std::count(wrapped.begin(), wrapped.end(), '\n'));
     };
     const char* more = " (more)";

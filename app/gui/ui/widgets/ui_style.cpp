@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <string>
+#include <unordered_map>
 
 namespace {
 
@@ -273,19 +275,46 @@ ImU32 uiThemed(ImU32 c) {
     return ImGui::ColorConvertFloat4ToU32(uiThemed(ImGui::ColorConvertU32ToFloat4(c)));
 }
 
-void textWrappedAtSpaces(const std::string& text) {
-    const float width = ImGui::GetContentRegionAvail().x;
-    const std::string lines = wrapAtSpaces(text, width, [](const std::string& line) {
+namespace {
+
+// Wrapped texts as earlier frames made them, by what the wrapping depends on: the text, the
+// width, the rule (at spaces or a formula's) and the font (its size too). Most of the UI's text
+// is the same from one frame to the next, and wrapping it measures every word; the memo is
+// emptied when it holds kMaxWrapped texts (a running number makes a new text each frame).
+constexpr std::size_t kMaxWrapped = 512;
+std::unordered_map<std::string, std::string> gWrapped;
+
+const std::string& wrapped(const std::string& text, float width, bool formula) {
+    const ImFont* font = ImGui::GetFont();
+    const float size = ImGui::GetFontSize();
+    std::string key(reinterpret_cast<const char*>(&font), sizeof font);
+    key.append(reinterpret_cast<const char*>(&size), sizeof size);
+    key.append(reinterpret_cast<const char*>(&width), sizeof width);
+    key += formula ? 'f' : 's';
+    key += text;
+    const auto found = gWrapped.find(key);
+    if (found != gWrapped.end()) return found->second;
+    const auto measure = [](const std::string& line) {
         return static_cast<double>(ImGui::CalcTextSize(line.c_str()).x);
-    });
+    };
+    if (gWrapped.size() >= kMaxWrapped) gWrapped.clear();
+    return gWrapped[std::move(key)] =
+               formula ? wrapFormula(text, width, measure) : wrapAtSpaces(text, width, measure);
+}
+
+} // namespace
+
+const std::string& wrappedAtSpaces(const std::string& text, float width) {
+    return wrapped(text, width, false);
+}
+
+void textWrappedAtSpaces(const std::string& text) {
+    const std::string& lines = wrapped(text, ImGui::GetContentRegionAvail().x, false);
     ImGui::TextUnformatted(lines.c_str(), lines.c_str() + lines.size());
 }
 
 void textWrappedFormula(const std::string& text) {
-    const float width = ImGui::GetContentRegionAvail().x;
-    const std::string lines = wrapFormula(text, width, [](const std::string& line) {
-        return static_cast<double>(ImGui::CalcTextSize(line.c_str()).x);
-    });
+    const std::string& lines = wrapped(text, ImGui::GetContentRegionAvail().x, true);
     ImGui::TextUnformatted(lines.c_str(), lines.c_str() + lines.size());
 }
 

@@ -44,6 +44,10 @@ ImFont* uiCompactFont();
 bool uiLightTheme();
 // ImGui::TextWrapped, but broken at spaces only (wrapAtSpaces): "58.152" stays one piece.
 void textWrappedAtSpaces(const std::string& text);
+// `text` wrapped at spaces to `width` in the current font, as textWrappedAtSpaces shows it (kept
+// from earlier frames: the same text, width and font are not wrapped again). Valid until the
+// next wrapping.
+const std::string& wrappedAtSpaces(const std::string& text, float width);
 // A line with equations, wrapped before its operators (wrapFormula): nothing cut at the window's
 // edge, and each chain still reads as one.
 void textWrappedFormula(const std::string& text);
