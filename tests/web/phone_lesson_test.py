@@ -24,7 +24,8 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from browser_test import CHROMIUM, SKIP, Page, serve, skip  # noqa: E402
+import browser_test as bt  # noqa: E402 (its Page, its server, its skip rules)
+from browser_test import Page  # noqa: E402
 
 SIZES = ((390, 844, 3), (1024, 768, 2))
 STEPS = (3, 10, 13)
@@ -233,26 +234,12 @@ def main():
     if len(sys.argv) < 2:
         print(__doc__)
         return 2
-    site = sys.argv[1]
-    if not os.path.exists(CHROMIUM):
-        skip("chromium is not installed (scripts/web.sh deps installs it)")
-    if not os.path.exists(os.path.join(site, "index.html")):
-        skip(f"{site}/index.html is missing: build the browser build with scripts/web.sh build")
     shots_dir = sys.argv[3] if len(sys.argv) > 3 else None
     if shots_dir:
         os.makedirs(shots_dir, exist_ok=True)
-    server, base = serve(site)
-    try:
-        # phone-lesson: the phone; tablet-lesson: the tablet (ctest runs each as its own test).
-        sizes = [s for s in SIZES if (s[0] < 800) == (sys.argv[2:3] != ["tablet-lesson"])]
-        phone_lesson(base, sizes, shots_dir)
-    except AssertionError as e:
-        print(f"FAILED: {e}")
-        return 1
-    finally:
-        server.shutdown()
-    print("passed")
-    return 0
+    # phone-lesson: the phone; tablet-lesson: the tablet (ctest runs each as its own test).
+    sizes = [s for s in SIZES if (s[0] < 800) == (sys.argv[2:3] != ["tablet-lesson"])]
+    return bt.run_site(sys.argv[1], lambda base: phone_lesson(base, sizes, shots_dir))
 
 
 if __name__ == "__main__":

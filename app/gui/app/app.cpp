@@ -153,6 +153,7 @@ void undoOrRedo(App& app, bool undo) {
 }
 
 void updateCamera(App& app, double displayWidth, double displayHeight) {
+    app.view.touch = app.ui.touchUi;
     updateCamera(app.view, app.sim.world(), app.lesson.active(), displayWidth, displayHeight);
 }
 

@@ -275,14 +275,17 @@ void drawLessonCaption(App& app) {
     if (!step || gPlan.font == nullptr) return;
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
-    // The planned height; the whole caption ("(more)" clicked) grows it over the scene.
-    ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, gCaptionOpen ? 0.0f : gPlan.height),
+    // The planned height; the whole caption ("(more)" clicked) grows it over the scene. On a
+    // touch screen it keeps the planned height and scrolls (a swipe): grown, it covered the
+    // status line under it and went past a third of a phone's height.
+    const bool grown = gCaptionOpen && !app.ui.touchUi;
+    ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, grown ? 0.0f : gPlan.height),
                              ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(1.0f);
     ImGuiWindowFlags flags =
         ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
         ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus;
-    if (gCaptionOpen) flags |= ImGuiWindowFlags_AlwaysAutoResize;
+    if (grown) flags |= ImGuiWindowFlags_AlwaysAutoResize;
     pushTight(gPlan.tight);
     if (!ImGui::Begin("Lesson caption", nullptr, flags)) {
         ImGui::End();

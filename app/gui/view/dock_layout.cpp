@@ -57,8 +57,9 @@ const ScreenRect* Layout::find(const std::string& name) const {
     return nullptr;
 }
 
-bool sheetLayout(double displayWidth, float uiScale) {
-    return displayWidth < kSheetBelowPx * static_cast<double>(uiScale > 0.0f ? uiScale : 1.0f);
+bool sheetLayout(double displayWidth, float uiScale, double displayHeight, bool touch) {
+    const double s = static_cast<double>(uiScale > 0.0f ? uiScale : 1.0f);
+    return displayWidth < kSheetBelowPx * s || (touch && displayHeight < kTouchSheetBelowPx * s);
 }
 
 namespace {

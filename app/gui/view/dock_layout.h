@@ -47,14 +47,19 @@ struct DockRequest {
 // Narrow screens (a phone held upright): below kSheetBelowPx wide (px at UI scale 1) the panel
 // is a sheet along the bottom, the screen's width: closed, one row of buttons kSheetBarPx high
 // (44 px touch buttons and the window's padding); open, kSheetOpenShare of the height. Docked
-// windows then share a strip above it, and the scene keeps the rest.
+// windows then share a strip above it, and the scene keeps the rest. A touch screen below
+// kTouchSheetBelowPx high (a tablet held sideways, 1024x768) gets the sheet too: beside a
+// panel column of finger-sized rows, a lesson's caption and its windows would leave the scene a
+// fifth of the screen and scroll the panel's Play away.
 constexpr double kSheetBelowPx = 600.0;
+constexpr double kTouchSheetBelowPx = 800.0;
 constexpr double kSheetBarPx = 64.0;
 constexpr double kSheetOpenShare = 0.55;
 // Above a closed sheet, the windows' strip leaves the scene at least this share of the screen's
 // height (a phone held upright: the scene keeps 40% of the screen at a step's moment).
 constexpr double kMinSheetSceneShare = 0.40;
-bool sheetLayout(double displayWidth, float uiScale);
+bool sheetLayout(double displayWidth, float uiScale, double displayHeight = 0.0,
+                 bool touch = false);
 
 struct LayoutInput {
     double displayWidth = 1280.0;

@@ -38,7 +38,7 @@ Layout computeAppLayout(const View& view, bool captionBar, double displayWidth,
     if (captionBar) in.topInset = std::min(view.captionHeight, displayHeight * 0.5);
     if (view.presentMode) return computeLayout(in); // the scene alone (under a lesson's caption)
     if (!view.uiVisible) {
-    } else if (sheetLayout(displayWidth, view.uiScale)) {
+    } else if (sheetLayout(displayWidth, view.uiScale, displayHeight, view.touch)) {
         in.panelHeight = view.sheetOpen ? displayHeight * kSheetOpenShare
                                         : kSheetBarPx * static_cast<double>(view.uiScale);
     } else {

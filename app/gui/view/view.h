@@ -58,6 +58,7 @@ struct View {
     std::vector<DockedWindow> shownMagnified;
     double captionHeight = 0.0; // px a lesson's caption bar takes across the top
     bool sheetOpen = false;     // narrow screens: the panel's sheet is open (sheetLayout)
+    bool touch = false;         // a touch screen (app.ui.touchUi): a short one gets the sheet too
 };
 
 // A lesson's caption bar takes at most this share of the screen's height (lesson_bar.cpp).

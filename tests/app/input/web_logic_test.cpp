@@ -430,6 +430,11 @@ TEST(TouchInput, ATapOnTheSceneIsAPlainClick) {
 TEST(SheetLayout, NarrowScreensGetTheSceneAndABarOfButtons) {
     EXPECT_TRUE(sheetLayout(390.0 * 3, 3.0f)); // a phone held upright, ratio 3
     EXPECT_FALSE(sheetLayout(1024.0, 1.0f));
+    // A tablet held sideways (1024x768 at ratio 2) with touch: the sheet too; with a mouse, or
+    // as tall as a 1366x1024 tablet, the panel column.
+    EXPECT_TRUE(sheetLayout(2048.0, 2.0f, 1536.0, true));
+    EXPECT_FALSE(sheetLayout(2048.0, 2.0f, 1536.0, false));
+    EXPECT_FALSE(sheetLayout(2732.0, 2.0f, 2048.0, true));
     App app = setUpApp();
     app.view.uiScale = 3.0f;
     updateCamera(app, 1170.0, 2532.0);

@@ -34,8 +34,16 @@ void statRow(const char* name, const char* fmt, double value) {
     ImGui::Text(fmt, value);
 }
 
+// A touch screen with a panel column (a tablet): the bar (in a lesson its Prev / Play / Restart,
+// else Play, Step and Reset) is pinned at the panel's top and the rest scrolls under it, so that
+// the windows docked under the panel (a lesson's plots at its moment) never scroll the bar away.
+// A narrow screen's sheet has its own bar (sheetBar).
+bool touchPanelBar(const App& app) {
+    return app.ui.touchUi && !app.view.layout.sheet;
+}
+
 // The height the lesson section takes above its step list: its header, the lesson's name, the
-// Prev / Next / Restart row and the "close lesson" button under the list.
+// Prev / Next / Restart row (unless pinned above) and the "close lesson" button under the list.
 float lessonFrameHeight(const App& app) {
     const LessonSession& s = app.lesson;
     if (!s.active()) return 0.0f;
@@ -44,16 +52,12 @@ float lessonFrameHeight(const App& app) {
                                            ImGui::GetContentRegionAvail().x)
                            .y +
                        ImGui::GetStyle().ItemSpacing.y;
-    return 3.0f * row + name;
+    return (touchPanelBar(app) ? 2.0f : 3.0f) * row + name;
 }
 
-// The open lesson's steps: click one to go there. At most `maxRows` rows of the list show, whole:
-// its scroll follows the current step (with the steps around it) and stops on whole rows.
-void lessonSection(App& app, int maxRows) {
-    LessonSession& s = app.lesson;
-    if (!s.active()) return;
-    if (!ImGui::CollapsingHeader("Lesson", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    textWrappedAtSpaces(s.lesson->name);
+// The lesson's Prev, Play (Next at the moment) and Restart, in a row the panel's width.
+void lessonButtons(App& app) {
+    const LessonSession& s = app.lesson;
     const float w = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
     if (ImGui::Button("< Prev", ImVec2(w, 0))) applyAction(app, Action::LessonPrevious);
     tooltip("PageUp (or Left, with thrust off)");
@@ -66,6 +70,16 @@ void lessonSection(App& app, int maxRows) {
         applyAction(app, Action::Reset);
     tooltip("R: the step again from its setup, keeping the method and settings you changed; "
             "Shift+R: the step as written");
+}
+
+// The open lesson's steps: click one to go there. At most `maxRows` rows of the list show, whole:
+// its scroll follows the current step (with the steps around it) and stops on whole rows.
+void lessonSection(App& app, int maxRows) {
+    LessonSession& s = app.lesson;
+    if (!s.active()) return;
+    if (!ImGui::CollapsingHeader("Lesson", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    textWrappedAtSpaces(s.lesson->name);
+    if (!touchPanelBar(app)) lessonButtons(app);
     const int steps = static_cast<int>(s.lesson->steps.size());
     const int rows = std::max(1, std::min({maxRows, 8, steps}));
     uiBeginRows();
@@ -145,24 +159,28 @@ PlayButton touchPlayButton(const App& app) {
     return {app.sim.paused ? "Play" : "Pause", Action::TogglePause};
 }
 
+// Play (Pause), Step and Reset, in a row the panel's width.
+void runButtons(App& app) {
+    const float w = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
+    const bool touch = app.ui.touchUi;
+    const PlayButton play =
+        touch ? touchPlayButton(app)
+              : PlayButton{app.sim.paused ? "Play" : "Pause", Action::TogglePause};
+    if (ImGui::Button(keyedLabel(play.label, play.action, touch).c_str(), ImVec2(w, 0)))
+        applyAction(app, play.action);
+    ImGui::SameLine();
+    if (ImGui::Button(keyedLabel("Step", Action::StepOnce, touch).c_str(), ImVec2(w, 0)))
+        applyAction(app, Action::StepOnce);
+    ImGui::SameLine();
+    if (ImGui::Button(keyedLabel("Reset", Action::Reset, touch).c_str(), ImVec2(w, 0)))
+        applyAction(app, Action::Reset);
+    tooltip("Blocks and time back to the start; keeps the method, C, g, frame rate, substeps");
+}
+
 void runSection(App& app) {
-    if (!app.view.layout.sheet) { // the sheet has them in its bar
-        const float w =
-            (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3;
-        const bool touch = app.ui.touchUi;
-        const PlayButton play =
-            touch ? touchPlayButton(app)
-                  : PlayButton{app.sim.paused ? "Play" : "Pause", Action::TogglePause};
-        if (ImGui::Button(keyedLabel(play.label, play.action, touch).c_str(), ImVec2(w, 0)))
-            applyAction(app, play.action);
-        ImGui::SameLine();
-        if (ImGui::Button(keyedLabel("Step", Action::StepOnce, touch).c_str(), ImVec2(w, 0)))
-            applyAction(app, Action::StepOnce);
-        ImGui::SameLine();
-        if (ImGui::Button(keyedLabel("Reset", Action::Reset, touch).c_str(), ImVec2(w, 0)))
-            applyAction(app, Action::Reset);
-        tooltip("Blocks and time back to the start; keeps the method, C, g, frame rate, substeps");
-    }
+    // The sheet has them in its bar; a tablet's panel outside a lesson pinned at its top
+    // (touchPanelBar).
+    if (!app.view.layout.sheet && !(touchPanelBar(app) && !app.lesson.active())) runButtons(app);
     ImGui::Checkbox(keyedLabel("Slow motion", Action::ToggleSlowMotion, app.ui.touchUi).c_str(),
                     &app.sim.slowMotion);
     tooltip("5 simulation frames per second, as in the lecture's demo");
@@ -363,6 +381,16 @@ void drawControlsPanel(App& app) {
             return;
         }
     }
+    const bool pinned = touchPanelBar(app);
+    if (pinned) { // the bar; the rest scrolls under it
+        if (app.lesson.active())
+            lessonButtons(app);
+        else
+            runButtons(app);
+        ImGui::Separator();
+        ImGui::BeginChild("##under the bar", ImVec2(0.0f, 0.0f), false,
+                          imgui_ext::flattenedNavigation());
+    }
     WholeRows whole;
     ImGui::PushItemWidth(width * 0.52f);
     scenePicker(app);
@@ -407,5 +435,6 @@ void drawControlsPanel(App& app) {
     if (rows >= 1.0f) sectionsChild(app, width, rows * row);
     ImGui::PopItemWidth();
     whole.end();
+    if (pinned) ImGui::EndChild();
     ImGui::End();
 }
