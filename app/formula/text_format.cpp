@@ -241,6 +241,10 @@ void wrapFormulaParagraph(const std::string& text, double width,
     // fits on a line.
     constexpr std::size_t kGroupWords = 3;
     std::vector<bool> inGroup(words.size(), false);
+    // Word k opens such a group that fits on a line alone but not with the operators before it
+    // ("= (20.052, -17.339)" in a narrow window): a line may start at it, after the operator,
+    // rather than the group be split or overflow its window.
+    std::vector<bool> groupOnItsOwn(words.size(), false);
     for (std::size_t k = 0; k < words.size(); ++k) {
         if (words[k].find('(') == std::string::npos || words[k].find(')') != std::string::npos)
             continue;
@@ -248,16 +252,20 @@ void wrapFormulaParagraph(const std::string& text, double width,
             if (words[e].find('(') != std::string::npos) break;
             if (words[e].find(')') == std::string::npos) continue;
             if (measure(lineOf(words, k, e + 1)) > width) break;
+            // The line holding the group also holds the operators before it ("= (6, 0)").
+            std::size_t first = k;
+            while (first > 0 && isOperatorWord(words[first - 1])) --first;
+            groupOnItsOwn[k] = measure(lineOf(words, first, e + 1)) > width;
             for (std::size_t j = k + 1; j <= e; ++j) inGroup[j] = true;
             break;
         }
     }
     // A line may start at word k when neither k nor the word before it is empty (a double space
-    // stays inside a line), the word before is not an operator and k is not inside a short
-    // group in parentheses.
+    // stays inside a line), the word before is not an operator (unless k opens a group that
+    // fits only on its own) and k is not inside a short group in parentheses.
     const auto canStart = [&](std::size_t k) {
         return k > 0 && !words[k].empty() && !words[k - 1].empty() &&
-               !isOperatorWord(words[k - 1]) && !inGroup[k];
+               (!isOperatorWord(words[k - 1]) || groupOnItsOwn[k]) && !inGroup[k];
     };
     std::vector<std::size_t> starts{0};
     while (true) {

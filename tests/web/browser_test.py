@@ -466,7 +466,15 @@ def open_file(page, base):
     rows = ["t,mover_x,mover_y,mover_vx,mover_vy"]
     for k in range(1, 6):  # dt 0.1 s, velocity (14, -14) m/s from (3, 9.5)
         rows.append(f"{k / 10:g},{3 + 1.4 * k:g},{9.5 - 1.4 * k:g},14,-14")
-    s = pick("my_trace.csv", json.dumps("\n".join(rows) + "\n"))
+    pick("my_trace.csv", json.dumps("\n".join(rows) + "\n"))
+    # The page compares the trace one simulated run a frame, its progress on the page (issue 41):
+    # wait for the comparison's outcome, a first difference or an error.
+    def compared():
+        t = page.status()
+        return t["traceFirstDifference"] is not None or t["error"] != ""
+
+    page.wait(compared, "the trace's comparison")
+    s = page.status()
     check(s["error"] == "", f"error after a good trace: {s}")
     check(s["traceFirstDifference"] == 5, f"the first difference is not frame 5: {s}")
     check(s["paused"] and s["simTime"] > 0.45, f"the run did not stop at the difference: {s}")

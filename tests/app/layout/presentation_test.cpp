@@ -762,6 +762,10 @@ TEST(WrapFormula, BreaksBeforeOperatorsAndKeepsTheChainReadable) {
         EXPECT_NE(wrapFormula("total p = (6, 0) kg·m/s", width, bytes).find("(6, 0)"),
                   std::string::npos)
             << width;
+    // A vector that fits on a line alone but not after its "=" starts its own line rather than
+    // overflow the window (gas_500's momenta at 1920x1080, UI 1.5).
+    EXPECT_EQ(wrapFormula("total p = (20.052, -17.339) kg·m/s", 18, bytes),
+              "total p =\n(20.052, -17.339)\nkg·m/s");
     EXPECT_EQ(wrapFormula("p = (123456, 654321)", 10, bytes), "p\n  = (123456,\n654321)");
     EXPECT_EQ(wrapFormula("a (long aside in parentheses) b", 14, bytes),
               "a (long aside\nin\nparentheses) b");
