@@ -260,6 +260,20 @@ void wrapFormulaParagraph(const std::string& text, double width,
             break;
         }
     }
+    // A short relation, one word on each side of its operator ("C = 1", "m1 = 1,"), is not
+    // split where it fits on a line: "Here / C = 1" rather than "Here C / = 1". A chain
+    // ("a = b = c", "x + y = 3") and a vector's group are left to the rules above and below.
+    const auto isOperatorAt = [&](std::size_t k) {
+        return k < words.size() && isOperatorWord(words[k]);
+    };
+    for (std::size_t k = 1; k + 1 < words.size(); ++k) {
+        if (!isOperatorWord(words[k]) || words[k - 1].empty() || words[k + 1].empty()) continue;
+        if (isOperatorAt(k - 1) || isOperatorAt(k + 1) || (k >= 2 && isOperatorAt(k - 2)) ||
+            isOperatorAt(k + 2) || words[k + 1].find('(') != std::string::npos)
+            continue;
+        if (measure(lineOf(words, k - 1, k + 2)) > width) continue;
+        inGroup[k] = inGroup[k + 1] = true;
+    }
     // A line may start at word k when neither k nor the word before it is empty (a double space
     // stays inside a line), the word before is not an operator (unless k opens a group that
     // fits only on its own) and k is not inside a short group in parentheses.

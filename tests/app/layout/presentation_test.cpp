@@ -770,6 +770,12 @@ TEST(WrapFormula, BreaksBeforeOperatorsAndKeepsTheChainReadable) {
     EXPECT_EQ(wrapFormula("a (long aside in parentheses) b", 14, bytes),
               "a (long aside\nin\nparentheses) b");
     EXPECT_EQ(wrapFormula("short = 1", 30, bytes), "short = 1");
+    // A short relation is not split where it fits on a line (a phone's lesson caption broke
+    // "Here C / = 1"); a longer chain still breaks before its operator.
+    EXPECT_EQ(wrapFormula("Here C = 1", 8, bytes), "Here\nC = 1");
+    EXPECT_EQ(wrapFormula("with C = 0.5 the blocks", 12, bytes), "with C = 0.5\nthe blocks");
+    EXPECT_EQ(wrapFormula("Here C = 1", 4, bytes), "Here\nC\n  = 1");
+    EXPECT_EQ(wrapFormula("v = 2 + 3 = 5", 9, bytes), "v = 2 + 3\n  = 5");
     EXPECT_EQ(wrapFormula("one\ntwo = 2", 30, bytes), "one\ntwo = 2");
 }
 
