@@ -27,6 +27,22 @@ void meeting(const Taken& placed, const ScreenRect& region, Taken& out) {
     keep(placed.texts, out.texts);
 }
 
+// The part of `near` that a text with its top at `y` and `height` tall meets in rows, in order
+// (any x): coveredAt's vertical overlap worked out as coveredAt does, so that its sums over the
+// band are the sums over `near` (what the band leaves out adds nothing), over a tenth of it.
+void band(const Taken& near, float y, float height, Taken& out) {
+    out.blocks.clear();
+    out.texts.clear();
+    const ScreenRect r = spanning(0.0, y, 0.0, y + height);
+    const auto keep = [&r](const std::vector<ScreenRect>& from, std::vector<ScreenRect>& to) {
+        for (const ScreenRect& p : from)
+            if (std::min(r.y + r.height, p.y + p.height) - std::max(r.y, p.y) > 0.0)
+                to.push_back(p);
+    };
+    keep(near.blocks, out.blocks);
+    keep(near.texts, out.texts);
+}
+
 } // namespace
 
 ScreenRect spanning(double x0, double y0, double x1, double y1) {
@@ -62,13 +78,21 @@ ImVec2 freeSpot(const Taken& placed, const ScreenRect& view, float x, float abov
             spanning(x - reach, std::min(above - 5.0f * line, below) - 1.0f, x + size.x + reach,
                      std::max(above, below + 5.0f * line) + size.y + 1.0f),
             near);
+    // Each of the 12 rows is tried at up to 7 places sideways: its band of `near` is found on its
+    // first try and kept.
+    constexpr int kRows = 6;
+    static thread_local Taken rows[kRows][2];
+    bool banded[kRows][2] = {};
     ImVec2 best(x, above);
     double least = INFINITY;
     for (const float dx :
          {0.0f, shift, -shift, 2.0f * shift, -2.0f * shift, 3.0f * shift, -3.0f * shift}) {
-        for (int k = 0; k < 6; ++k) {
-            for (const float y : {above - k * line, below + k * line}) {
-                const double covered = coveredAt(near, view, x + dx, y, size, gap);
+        for (int k = 0; k < kRows; ++k) {
+            for (int side = 0; side < 2; ++side) {
+                const float y = side == 0 ? above - k * line : below + k * line;
+                if (!banded[k][side]) band(near, y, size.y, rows[k][side]);
+                banded[k][side] = true;
+                const double covered = coveredAt(rows[k][side], view, x + dx, y, size, gap);
                 if (covered == 0.0) return ImVec2(x + dx, y);
                 if (covered < least) {
                     least = covered;
@@ -128,6 +152,9 @@ ImVec2 freeRow(const Taken& placed, const ScreenRect& view, float x, float y, Im
         }
     }
     const ImVec2 aside = freeSpot(placed, view, x, y, y, ts, ts.y);
-    if (coveredAt(placed, view, aside.x, aside.y, ts, 4.0f) == 0.0) return aside;
+    meeting(placed,
+            spanning(aside.x - 5.0f, aside.y - 1.0f, aside.x + ts.x + 5.0f, aside.y + ts.y + 1.0f),
+            near); // all that the test below can meet
+    if (coveredAt(near, view, aside.x, aside.y, ts, 4.0f) == 0.0) return aside;
     return ImVec2(x, best); // none free: the row covering the least
 }
