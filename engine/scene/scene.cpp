@@ -283,13 +283,12 @@ PlayerDef parsePlayer(const json& value, const std::vector<BlockDef>& blocks) {
 
 Scene parseValue(const json& root) {
     requireObject(root, "(top level)");
-    checkKeys(root, "", {"name", "description", "duration", "world", "blocks", "player"});
+    checkKeys(root, "", kSceneKeys);
     Scene scene;
     if (!root.contains("name")) throw ValueError{"(top level)", "missing \"name\""};
     scene.name = text(root["name"], "name", limits::kMaxNameChars);
     if (root.contains("description"))
-        scene.description =
-            text(root["description"], "description", limits::kMaxDescriptionChars);
+        scene.description = text(root["description"], "description", limits::kMaxDescriptionChars);
     if (root.contains("duration"))
         scene.duration = number(root["duration"], "duration", limits::kDuration);
     if (root.contains("world")) parseWorld(root["world"], scene);

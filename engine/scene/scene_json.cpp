@@ -284,33 +284,36 @@ std::optional<SceneError> parseJsonText(const std::string& text, const std::stri
     return std::nullopt;
 }
 
+const std::vector<const char*> kSceneKeys = {"name",  "description", "duration",
+                                             "world", "blocks",      "player"};
+
 namespace {
 
-// SAX events of nlohmann's parser (json::sax_parse): notes whether the root object has the key,
-// and stops the parse (returns false) at the root's first token when it is not an object, and at
-// the key once seen. Builds nothing: values are looked at only for their nesting.
-struct RootKeyFinder {
-    const std::string& wanted;
+// SAX events of nlohmann's parser (json::sax_parse) as the root object's keys and values:
+// `visitor.rootKey(k)` hears each of the root's keys, `visitor.rootValue(s)` the value that
+// follows (a string as `s`, anything else as nullptr); either stops the parse by returning false.
+// A root that is not an object stops it at its first token. Builds nothing: deeper values are
+// looked at only for their nesting.
+template <class Visitor> struct RootObjectSax {
+    Visitor& visitor;
     std::size_t depth = 0;
-    bool found = false;
 
-    bool value() { return depth > 0; } // a scalar root is not an object
-    bool null() { return value(); }
-    bool boolean(bool) { return value(); }
-    bool number_integer(json::number_integer_t) { return value(); }
-    bool number_unsigned(json::number_unsigned_t) { return value(); }
-    bool number_float(json::number_float_t, const json::string_t&) { return value(); }
-    bool string(json::string_t&) { return value(); }
-    bool binary(json::binary_t&) { return value(); }
-    bool start_object(std::size_t) {
+    bool scalar(const std::string* s) { return depth == 1 ? visitor.rootValue(s) : depth > 0; }
+    bool null() { return scalar(nullptr); }
+    bool boolean(bool) { return scalar(nullptr); }
+    bool number_integer(json::number_integer_t) { return scalar(nullptr); }
+    bool number_unsigned(json::number_unsigned_t) { return scalar(nullptr); }
+    bool number_float(json::number_float_t, const json::string_t&) { return scalar(nullptr); }
+    bool string(json::string_t& s) { return scalar(&s); }
+    bool binary(json::binary_t&) { return scalar(nullptr); }
+    bool start_object(std::size_t) { return open(); }
+    bool start_array(std::size_t) { return depth > 0 && open(); } // an array root: no object
+    bool open() {
+        if (depth == 1 && !visitor.rootValue(nullptr)) return false;
         ++depth;
         return true;
     }
-    bool key(json::string_t& k) {
-        found = depth == 1 && k == wanted;
-        return !found;
-    }
-    bool start_array(std::size_t) { return depth++ > 0; } // an array root is not an object
+    bool key(json::string_t& k) { return depth != 1 || visitor.rootKey(k); }
     bool end_object() { return close(); }
     bool end_array() { return close(); }
     bool close() {
@@ -322,14 +325,50 @@ struct RootKeyFinder {
     }
 };
 
+// Whether the root has `wanted`: stops at it.
+struct RootKeyFinder {
+    const std::string& wanted;
+    bool found = false;
+    bool rootKey(const std::string& k) {
+        found = k == wanted;
+        return !found;
+    }
+    bool rootValue(const std::string*) { return true; }
+};
+
+// The root's string "name", while every root key is a scene's: stops at the first that is not,
+// and at a "name" that is not a string.
+struct SceneNameFinder {
+    std::optional<std::string> name;
+    std::string key;
+    bool rootKey(const std::string& k) {
+        key = k;
+        return std::any_of(kSceneKeys.begin(), kSceneKeys.end(),
+                           [&](const char* sceneKey) { return k == sceneKey; });
+    }
+    bool rootValue(const std::string* s) {
+        if (key != "name") return true;
+        if (s) name = *s;
+        return s != nullptr;
+    }
+};
+
 } // namespace
 
 bool jsonRootHasKey(const std::string& text, const std::string& key) {
     RootKeyFinder finder{key};
-    json::sax_parse(text, &finder);
+    RootObjectSax<RootKeyFinder> sax{finder};
+    json::sax_parse(text, &sax);
     if (!finder.found) return false; // no such key at the root, or it did not parse that far
     json root;
     return !parseJsonText(text, "", root);
+}
+
+std::optional<std::string> sceneNameOf(const std::string& text) {
+    SceneNameFinder finder;
+    RootObjectSax<SceneNameFinder> sax{finder};
+    if (!json::sax_parse(text, &sax)) return std::nullopt;
+    return finder.name;
 }
 
 std::optional<SceneError> regularFileError(const std::string& path) {

@@ -89,3 +89,10 @@ std::optional<SceneError> parseJsonText(const std::string& text, const std::stri
 // first token when it is not an object; only text that has the key is parsed in full (for every
 // check: size, depth, NUL bytes, duplicate keys).
 bool jsonRootHasKey(const std::string& text, const std::string& key);
+// The scene format's top-level keys: the one list parseScene checks a file's root against.
+extern const std::vector<const char*> kSceneKeys;
+// The scene's name when `text` reads as a scene file at its top level (JSON whose root is an
+// object, every key of it one of kSceneKeys, "name" a string), by the same one SAX pass as
+// jsonRootHasKey, which builds nothing; nothing otherwise. The blocks and the world are not
+// checked: a file listed by this name may still fail to load, with the loader's error.
+std::optional<std::string> sceneNameOf(const std::string& text);

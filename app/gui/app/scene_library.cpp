@@ -1,11 +1,12 @@
 #include "scene_library.h"
 
-#include <nlohmann/json.hpp>
+#include "scene_json.h"
 
 #include <algorithm>
-#include <array>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <string>
 #include <system_error>
 
 namespace fs = std::filesystem;
@@ -22,81 +23,19 @@ bool isFile(const fs::path& p) {
     return fs::is_regular_file(p, ec);
 }
 
-// The name a scene file gives itself, read in one pass over its JSON without making the scene
-// (listing the shipped scenes made each whole, the largest part of the browser's first frame):
-// `scene` when the top level is an object with a string "name" and only a scene's keys (a lesson,
-// with its "steps", is not a scene). A shipped scene is valid (tests/scenes); a broken file with
-// a name would show that name rather than its file's.
-class SceneNameReader : public nlohmann::json_sax<nlohmann::json> {
-  public:
-    std::string name;
-    bool named = false; // a string "name" at the top level
-    bool scene = true;  // every top-level key one of a scene's, the top level an object
-
-    bool null() override { return value(); }
-    bool boolean(bool) override { return value(); }
-    bool number_integer(number_integer_t) override { return value(); }
-    bool number_unsigned(number_unsigned_t) override { return value(); }
-    bool number_float(number_float_t, const string_t&) override { return value(); }
-    bool binary(binary_t&) override { return value(); }
-    bool string(string_t& s) override {
-        if (depth_ == 1 && key_ == "name") {
-            name = s;
-            named = true;
-            return true;
-        }
-        return value();
-    }
-    bool start_object(std::size_t) override { return open(depth_ == 0); }
-    bool start_array(std::size_t) override { return open(false); }
-    bool end_object() override { return close(); }
-    bool end_array() override { return close(); }
-    bool key(string_t& k) override {
-        if (depth_ == 1) {
-            // The scene format's top-level keys (engine/scene/scene.cpp's parseScene).
-            static const std::array<const char*, 6> kSceneKeys = {
-                "name", "description", "duration", "world", "blocks", "player"};
-            scene = scene && std::find(kSceneKeys.begin(), kSceneKeys.end(), k) != kSceneKeys.end();
-            key_ = k;
-        }
-        return true;
-    }
-    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
-        scene = false;
-        return false;
-    }
-
-  private:
-    int depth_ = 0;
-    std::string key_;
-    bool value() { // not a string
-        if (depth_ == 0 || (depth_ == 1 && key_ == "name")) scene = false;
-        return true;
-    }
-    bool open(bool topLevelObject) {
-        if (!topLevelObject) value();
-        ++depth_;
-        return true;
-    }
-    bool close() {
-        --depth_;
-        return true;
-    }
-};
-
 // The title listScenes gives the file: its scene's name, the file's name when the scene's is
-// empty, and when it is no scene the file's name with underscores as spaces.
+// empty, and when it is no scene the file's name with underscores as spaces. The name is read in
+// one pass (sceneNameOf) without making the scene: listing the shipped scenes made each whole
+// before, the largest part of the browser's first frame.
 std::string sceneTitle(const fs::path& p) {
     std::ifstream in(p, std::ios::binary | std::ios::ate); // read whole (not char by char)
     std::string text(static_cast<std::size_t>(std::max<std::streamoff>(0, in.tellg())), '\0');
     in.seekg(0);
     in.read(text.data(), static_cast<std::streamsize>(text.size()));
-    SceneNameReader reader;
-    const bool scene =
-        in && nlohmann::json::sax_parse(text, &reader) && reader.scene && reader.named;
-    if (scene && !reader.name.empty()) return reader.name;
+    const std::optional<std::string> name = in ? sceneNameOf(text) : std::nullopt;
+    if (name && !name->empty()) return *name;
     std::string title = p.stem().string();
-    if (!scene) std::replace(title.begin(), title.end(), '_', ' ');
+    if (!name) std::replace(title.begin(), title.end(), '_', ' ');
     return title;
 }
 

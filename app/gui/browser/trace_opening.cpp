@@ -4,15 +4,9 @@
 #include "printable.h"
 #include "student_trace.h"
 
-#include <cstdint>
 #include <filesystem>
 
 namespace {
-
-// app.sim.changes when the opening trace was read (the page opens one file at a time): a scene
-// opened or an edit made meanwhile starts the comparison again on the world as it is now, as
-// the window's openTrace compares with the current scene and settings.
-std::uint64_t changesAtStart = 0;
 
 std::string comparingMessage(const TraceOpening& opening) {
     return "Comparing " + printable(std::filesystem::path(opening.path).filename().string()) +
@@ -28,14 +22,16 @@ bool openFileStep(App& app, std::unique_ptr<TraceOpening>& opening, const std::s
         openFile(app, path);
         return true;
     }
-    if (opening && app.sim.changes != changesAtStart) opening.reset(); // compared a changed world
+    // A scene opened or an edit made since the trace was read: compare again on the world as it
+    // is now, as the window's openTrace compares with the current scene and settings.
+    if (opening && app.sim.changes != opening->changesAtStart) opening.reset();
     if (!opening) {
-        changesAtStart = app.sim.changes;
         if (const auto error = startStudentTrace(
                 opening, path, app.sim.scene, app.sim.world().settings, app.studentTrace.units)) {
             app.ui.messages.error = *error;
             return true;
         }
+        opening->changesAtStart = app.sim.changes;
     } else if (continueStudentTrace(*opening, app.studentTrace)) {
         opening.reset();
         showOpenedTrace(app);

@@ -43,6 +43,9 @@ struct TraceOpening {
     Scene scene;
     Trace trace;
     std::optional<TraceComparer> comparer; // reads scene and trace: the opening does not move
+    // The app's count of changes (app.sim.changes) when the trace was read: the browser's
+    // opening starts again on the world as it is when a scene was opened or an edit made since.
+    std::uint64_t changesAtStart = 0;
 };
 
 // Reads `path` as openStudentTrace does and starts comparing; on a bad file, no opening and the

@@ -1,7 +1,10 @@
-// The docked layout, end to end: `sandbox-offscreen --layout-json` for every shipped scene at the
-// classroom sizes (1280x720 and 1920x1080, UI scale 1 and 1.5) with every overlay on. No window
-// may cover the world's rectangle, every window lies inside the image, and the scene view holds
-// the world. In present mode (--present) there is no window at all.
+// The docked layout, end to end: the layout and text JSON of every shipped scene at the classroom
+// sizes (1280x720 and 1920x1080, UI scale 1 and 1.5) with every overlay on. No window may cover
+// the world's rectangle, every window lies inside the image, and the scene view holds the world.
+// In present mode (--present) there is no window at all. The shipped scenes' cases share one run
+// of `sandbox-offscreen --record-scenes DIR --screens ...` (JSON only, nothing rasterised), which
+// ctest runs as one test (Layout.everyShippedScene, tests/app/CMakeLists.txt): one program per
+// case cost about 1.3 s each, 165 of the Release ctest's 1,110 test-seconds (CI time).
 #include "frame_json.h"
 #include "overlays.h"
 #include "scene_library.h"
@@ -43,12 +46,15 @@ void PrintTo(const Case& c, std::ostream* os) {
     *os << c.name();
 }
 
+const std::pair<int, int> kSizes[] = {{1280, 720}, {1920, 1080}};
+const double kUiScales[] = {1.0, 1.5};
+
 std::vector<Case> cases() {
     std::vector<Case> out;
     for (const SceneEntry& e : listScenes(SANDBOX_SCENES_DIR)) {
         const std::string stem = fs::path(e.path).stem().string();
-        for (const auto& size : {std::pair<int, int>{1280, 720}, {1920, 1080}}) {
-            for (double scale : {1.0, 1.5}) out.push_back({stem, size.first, size.second, scale});
+        for (const auto& size : kSizes) {
+            for (double scale : kUiScales) out.push_back({stem, size.first, size.second, scale});
         }
     }
     return out;
@@ -93,6 +99,37 @@ Frame everyOverlay(const Case& c, const std::string& extra) {
     return render(outputDir() / (c.name() + extra.substr(0, extra.find(' '))),
                   quote(c.scene) + " --frames 30 --show " + kEveryOverlay + " --size " + size +
                       " --ui-scale " + std::to_string(c.uiScale) + " " + extra);
+}
+
+// The shipped scenes' frames, from one run at every size and UI scale of cases(): the frame of
+// `c`, 30 frames in with every overlay on (read from DIR/WxH_uiS/SCENE.layout.json and
+// SCENE.text.json; ClassroomScreen::name names the folders).
+Frame shippedFrame(const Case& c) {
+    static const fs::path dir = [] {
+        const fs::path out = fs::path(SANDBOX_SCREENSHOT_OUTPUT_DIR) / "layout-shipped";
+        fs::remove_all(out);
+        struct Screen {
+            int width, height;
+            double uiScale;
+        };
+        std::vector<Screen> screens;
+        for (const auto& size : kSizes)
+            for (double scale : kUiScales) screens.push_back({size.first, size.second, scale});
+        std::string output;
+        const int code =
+            run(quote(SANDBOX_OFFSCREEN_EXE) + " --record-scenes " + quote(out.string()) +
+                    " --frames 30 --screens " + screensOption(screens) + " --show " + kEveryOverlay,
+                &output);
+        EXPECT_EQ(code, 0) << output;
+        return out;
+    }();
+    char screen[48];
+    std::snprintf(screen, sizeof screen, "%dx%d_ui%g", c.width, c.height, c.uiScale);
+    Frame f;
+    f.layout = readJson(dir / screen / (c.scene + ".layout.json"));
+    const nlohmann::json texts = readJson(dir / screen / (c.scene + ".text.json"));
+    if (texts.is_object()) f.texts = texts.at("texts");
+    return f;
 }
 
 // A text as a failure message names it: its window, its characters and its rectangle.
@@ -157,7 +194,7 @@ class EveryOverlay : public ::testing::TestWithParam<Case> {};
 
 TEST_P(EveryOverlay, NoWindowCoversTheWorldAndNoneLeavesTheImage) {
     const Case& c = GetParam();
-    const Frame f = everyOverlay(c, "");
+    const Frame f = shippedFrame(c);
     const nlohmann::json& j = f.layout;
     ASSERT_TRUE(j.is_object());
     const Rect image{0, 0, double(c.width), double(c.height)};

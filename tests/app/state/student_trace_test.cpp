@@ -123,6 +123,29 @@ TEST(StudentTrace, TheBrowserComparesOneRunAStepWithTheSameResult) {
     std::remove(trace.c_str());
 }
 
+// A scene opened while the browser compares a trace (the opening's changesAtStart): the
+// comparison starts again from its first run on the world as it is now, and ends as openTrace.
+TEST(StudentTrace, TheBrowserStartsTheComparisonAgainWhenTheSceneChangesMeanwhile) {
+    const std::string trace = writeTurnBasedTrace("again", 40);
+    App atOnce = appOn("point_of_impact");
+    ASSERT_TRUE(openTrace(atOnce, trace)) << atOnce.ui.messages.error;
+    App app = appOn("point_of_impact");
+    std::unique_ptr<TraceOpening> opening;
+    std::string said;
+    ASSERT_FALSE(openFileStep(app, opening, trace, said));
+    ASSERT_FALSE(openFileStep(app, opening, trace, said));
+    EXPECT_NE(said.find(": run 2 of "), std::string::npos) << said;
+    ASSERT_TRUE(loadScene(app, kScenes + "/point_of_impact.json")) << app.ui.messages.error;
+    ASSERT_FALSE(openFileStep(app, opening, trace, said));
+    EXPECT_NE(said.find(": run 1 of "), std::string::npos) << said; // started again
+    int steps = 0;
+    while (!openFileStep(app, opening, trace, said)) ASSERT_LT(++steps, 200);
+    ASSERT_TRUE(app.studentTrace.open());
+    EXPECT_EQ(app.studentTrace.firstDifference(), atOnce.studentTrace.firstDifference());
+    EXPECT_EQ(app.studentTrace.comparison->match.hash, atOnce.studentTrace.comparison->match.hash);
+    std::remove(trace.c_str());
+}
+
 TEST(StudentTrace, TheReferenceIsTheChosenMethodWithoutTheTipsMistakes) {
     const std::string trace = writeTurnBasedTrace("same", 40);
     App app = appOn("mistake_move_back"); // turn-based with move-back

@@ -2,12 +2,14 @@
 // key" that tells a lesson from a scene. It must give the answer a full parse gives for every
 // input (the text parses with every check of parseJsonText, its root is an object, and it has
 // the key), including text that is not JSON at all.
+#include "scene.h"
 #include "scene_json.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,21 @@ bool fullParseAnswer(const std::string& text, const std::string& key) {
 
 std::string deep(char open, int levels) {
     return std::string(static_cast<std::size_t>(levels), open);
+}
+
+// Every shipped scene file: its path and its text.
+struct ShippedScene {
+    std::string path, text;
+};
+std::vector<ShippedScene> shippedScenes() {
+    std::vector<ShippedScene> out;
+    for (const auto& entry : std::filesystem::directory_iterator(SANDBOX_SCENES_DIR)) {
+        if (entry.path().extension() != ".json") continue;
+        ShippedScene scene{entry.path().string(), ""};
+        EXPECT_FALSE(readJsonFile(scene.path, scene.text)) << scene.path;
+        out.push_back(std::move(scene));
+    }
+    return out;
 }
 
 } // namespace
@@ -67,16 +84,54 @@ TEST(JsonRootHasKey, AnswersAsAFullParseForEveryKindOfInput) {
 }
 
 TEST(JsonRootHasKey, AnswersAsAFullParseForEveryShippedScene) {
-    int scenes = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(SANDBOX_SCENES_DIR)) {
-        const std::string path = entry.path().string();
-        if (entry.path().extension() != ".json") continue;
-        std::string text;
-        ASSERT_FALSE(readJsonFile(path, text)) << path;
+    const std::vector<ShippedScene> scenes = shippedScenes();
+    EXPECT_GT(scenes.size(), 10u);
+    for (const auto& [path, text] : scenes) {
         EXPECT_FALSE(jsonRootHasKey(text, "steps")) << path;
         EXPECT_TRUE(jsonRootHasKey(text, "blocks")) << path;
         EXPECT_EQ(jsonRootHasKey(text, "world"), fullParseAnswer(text, "world")) << path;
-        ++scenes;
     }
-    EXPECT_GT(scenes, 10);
+}
+
+// sceneNameOf (scene_json.h): the name the scene library lists a file by, read in the same one
+// pass. Every key the loader accepts at the top level (kSceneKeys) keeps the file a scene; any
+// other key, a "name" that is not a string or missing, or text that is not JSON makes it none.
+TEST(SceneNameOf, ReadsTheNameOfAFileWhoseTopLevelIsAScenes) {
+    const std::vector<std::pair<std::string, std::optional<std::string>>> cases = {
+        {R"({"name": "Pile", "blocks": []})", "Pile"},
+        {R"({"blocks": [{"name": 1}], "name": "n"})", "n"}, // a nested "name" is a block's
+        {R"({"name": "", "blocks": []})", ""},              // empty: listed by its file name
+        {R"({"n\u0061me": "escaped"})", "escaped"},
+        {R"({"name": "l", "steps": []})", std::nullopt}, // a lesson
+        {R"({"blocks": []})", std::nullopt},             // no name
+        {R"({"name": 3})", std::nullopt},
+        {R"({"name": {"a": "b"}})", std::nullopt},
+        {R"({"name": ["x"]})", std::nullopt},
+        {R"({"name": null})", std::nullopt},
+        {R"([{"name": "x"}])", std::nullopt},
+        {R"("name")", std::nullopt},
+        {R"({"name": "x")", std::nullopt},       // cut short
+        {R"({"name": "x"} junk)", std::nullopt}, // junk after the root
+        {R"({"name": "x", "blocks": [)", std::nullopt},
+        {"", std::nullopt},
+        {deep('{', 100000), std::nullopt},
+    };
+    for (const auto& [text, expected] : cases)
+        EXPECT_EQ(sceneNameOf(text), expected) << text.substr(0, 80);
+    // The loader's top-level keys, each in a file: a scene's name whatever the key's value.
+    for (const char* key : kSceneKeys) {
+        if (std::string(key) == "name") continue;
+        const std::string text = std::string(R"({"name": "k", ")") + key + R"(": 0})";
+        EXPECT_EQ(sceneNameOf(text), std::optional<std::string>("k")) << key;
+    }
+}
+
+TEST(SceneNameOf, GivesEveryShippedScenesNameAsTheLoaderReadsIt) {
+    const std::vector<ShippedScene> scenes = shippedScenes();
+    EXPECT_GT(scenes.size(), 10u);
+    for (const auto& [path, text] : scenes) {
+        const SceneResult loaded = parseScene(text, path);
+        ASSERT_TRUE(loaded.scene) << path;
+        EXPECT_EQ(sceneNameOf(text), std::optional<std::string>(loaded.scene->name)) << path;
+    }
 }
