@@ -105,8 +105,11 @@ LessonPause parsePause(const json& value, const std::string& path, const Scene& 
     if (value.contains("watch")) {
         const std::string p = keyPath(path, "watch");
         pause.watch = number(value["watch"], p);
-        if (!(pause.watch >= kDefaultWatch && pause.watch <= 60.0))
-            throw ValueError{p, "must be from 1 to 60 seconds of watched motion"};
+        // 0: the moment is the end of the event's frame itself (an answer about that frame,
+        // where the block was put: the live block is where it says).
+        if (!(pause.watch == 0.0 || (pause.watch >= kDefaultWatch && pause.watch <= 60.0)))
+            throw ValueError{p, "must be 0 (the event's frame) or from 1 to 60 seconds of "
+                                "watched motion"};
     }
     if (value.contains("within")) {
         const std::string p = keyPath(path, "within");

@@ -37,7 +37,8 @@ struct LessonPause {
     double at = 0.0;     // Reach: m
     bool atLeast = true; // Reach: side >= at (else <=)
     // s of watched motion after the event (at the step's time scale) before the pause; 0 for a
-    // time (the time is the moment).
+    // time (the time is the moment), and for an event whose own frame is the moment ("watch": 0:
+    // the step pauses at the end of the event's frame, where its answer says the blocks are).
     double watch = 0.0;
     // s of simulated time the event may take; none: twice the step's moment as written (and,
     // for the step as written, the search of kCollisionSearchSeconds).

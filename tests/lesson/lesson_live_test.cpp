@@ -10,6 +10,7 @@
 #include "lesson_prompt.h"
 #include "lesson_runner.h"
 #include "lesson_test_context.h"
+#include "text_format.h"
 #include "vocabulary.h"
 
 #include "says.h"
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -233,6 +235,59 @@ TEST(LessonLive, Step4At60FramesPerSecond) {
     EXPECT_TRUE(says(text, "b = 0.233 m"));
     EXPECT_TRUE(equationsHold(text, kFormatNumberUnit)) << text;
     EXPECT_EQ(stepAnswer(s, run, {}, nullptr).proved, std::vector<int>{0});
+}
+
+// A step whose answer is about its event's own frame ("at the frame's end it is at ...", "A is
+// reset to the point of impact (9, 4.5)") pauses at that frame's end ("watch": 0): the live
+// blocks are where the answer puts them, as written and after the lecturer changes the frame
+// rate, C or a mass (issue 39: step 4 paused 0.2 s later, at t = 0.7 at 10 frames/s, 0.65 at 20,
+// the block far from where the answer said).
+TEST(LessonLive, AnAnswerAboutTheEventsFramePausesAtThatFramesEnd) {
+    const std::vector<std::pair<std::string, std::function<void(World&)>>> changes = {
+        {"", [](World&) {}},
+        {"20 frames per second", [](World& w) { w.settings.dt = 1.0 / 20.0; }},
+        {"C = 0.5", [](World& w) { w.settings.bounciness = 0.5; }},
+        {"the first dynamic block 3 kg",
+         [](World& w) {
+             for (Block& b : w.blocks)
+                 if (b.isDynamic()) {
+                     b.mass = 3.0;
+                     break;
+                 }
+         }},
+    };
+    for (const std::size_t n : {4u, 20u, 21u, 22u}) {
+        const LessonStep& s = step(n);
+        EXPECT_EQ(s.pause.watch, 0.0) << "step " << n;
+        for (const auto& [name, change] : changes) {
+            const StepRun run = changedRun(s, change);
+            ASSERT_TRUE(run.reached) << "step " << n << " " << name << ": " << run.missed;
+            EXPECT_EQ(run.world.time, run.event.time) << "step " << n << " " << name;
+            ASSERT_EQ(run.world.blocks.size(), run.event.blocks.size());
+            for (std::size_t i = 0; i < run.world.blocks.size(); ++i)
+                EXPECT_EQ(run.world.blocks[i].position, run.event.blocks[i].position)
+                    << "step " << n << " " << name << ", block " << i;
+        }
+    }
+    // Step 4 by its own numbers: the frame k + 1 = floor(gap/drop) + 1 ends at (k + 1)/rate,
+    // where the answer says the block is, the live block's position as printed.
+    const LessonStep& s = step(4);
+    const int mover = blockNamed(s, "mover"), floorStep = blockNamed(s, "floor step");
+    for (const double rate : {10.0, 20.0, 60.0}) {
+        const StepRun run = changedRun(s, [rate](World& w) { w.settings.dt = 1.0 / rate; });
+        ASSERT_TRUE(run.reached) << rate;
+        const Block& m = run.setup.blocks[static_cast<std::size_t>(mover)];
+        const Block& f = run.setup.blocks[static_cast<std::size_t>(floorStep)];
+        const double gap = (m.position.y - m.size.y / 2) - (f.position.y + f.size.y / 2);
+        const double drop = -m.velocity.y / rate;
+        const double frames = std::floor(gap / drop) + 1.0;
+        EXPECT_NEAR(run.world.time, frames / rate, 1e-9) << rate; // 0.5 s at 10, 0.45 s at 20
+        const Vec2 live = run.world.blocks[static_cast<std::size_t>(mover)].position;
+        const std::string text = stepAnswer(s, run, {"a frame rate"}, nullptr).text;
+        EXPECT_TRUE(contains(text, "at the frame's end it is at (" + formatNumber(live.x) + ", " +
+                                       formatNumber(live.y) + ") m"))
+            << rate << ": " << text;
+    }
 }
 
 // Step 2 with the perfect method (issue 38: "at x = 16 m, past the wall" while the bullet bounced

@@ -47,6 +47,15 @@ struct UiState {
     struct TakenOnScreen {
         std::vector<ScreenRect> blocks, texts;
     } takenOnScreen;
+    // This frame's axis numbers, placed (and taken) with the scene's texts but drawn after the
+    // overlays: a caption plate over the scene may cover one (they yield to it), which is then
+    // left out (scene_view.cpp's drawYieldedAxisNumbers); and the plates drawn (px).
+    struct AxisNumber {
+        ScreenRect rect;
+        std::string text;
+    };
+    std::vector<AxisNumber> axisNumbers;
+    std::vector<ScreenRect> captionPlates;
     std::string physicsFollowedScene; // the scene the "Physics" header last opened or closed for
     // The window the keyboard focus goes to this frame (Tab: the panel, F6: the next window);
     // "" when none. recordShownWindow moves ImGui's navigation there as the window is drawn.

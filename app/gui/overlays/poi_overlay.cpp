@@ -71,9 +71,11 @@ void drawPoiOverlay(App& app) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     const float s = app.view.uiScale;
     if (!poiShown(app)) {
-        const char* text = "Point of impact: shown after the watched block's next collision";
-        const ImVec2 size = ImGui::CalcTextSize(text);
-        label(dl, sceneCaptionPlace(app, size.x, size.y, {}), Mark::PoiOld, text);
+        // On a plate as the numbers are, wrapped to the scene's width where it is narrow.
+        drawSceneCaption(app,
+                         {{"Point of impact: shown after the watched block's next collision",
+                           uiMarkColor(Mark::PoiOld), true}},
+                         {});
         return;
     }
     const float w = 2.0f * s;

@@ -313,6 +313,7 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     // The UI: the scene's labels, the overlays, the lesson's caption, the panels, the dialogs.
     drawSceneDecorations(app);
     drawOverlays(app);
+    drawYieldedAxisNumbers(app);
     if (app.lesson.active()) drawLessonCaption(app); // a lesson's one caption, presenting too
     drawPollWindow(app);
     if (!app.view.presentMode) {

@@ -44,6 +44,9 @@ void handleSceneMouse(App& app);
 // values) in app.ui.takenOnScreen, for the overlays' labels drawn after it (placeSceneLabel).
 // The overlays themselves (the table in vocabulary.h) are drawOverlays' (overlay_window.h).
 void drawSceneDecorations(App& app);
+// The axis numbers drawSceneDecorations placed, drawn after the overlays: those under a caption
+// plate over the scene (drawSceneCaption) are left out.
+void drawYieldedAxisNumbers(const App& app);
 // Its status badge in the scene's top left corner (status_badge.cpp): the method, the time and the
 // collisions (in present mode the scene's caption), PAUSED or SLOW MOTION, the frame of reference
 // when it is not the world's, and how to start. Returns the rectangle its plates cover (empty

@@ -134,8 +134,10 @@ void drawLabels(const App& app, ImDrawList* dl, Taken& placed) {
 // The numbers of the grid along the floor and the left wall; when the camera leaves the floor
 // (or the left wall) out of the view, along the view's bottom (or left) edge, so that a position
 // a step's question names can be read off the screen.
-// Each number taken is added to `placed`, so that the labels drawn after it go around it.
-void drawAxisNumbers(const App& app, ImDrawList* dl, Taken& placed) {
+// Each number taken is added to `placed`, so that the labels drawn after it go around it, and
+// to app.ui.axisNumbers: drawn after the overlays (drawYieldedAxisNumbers), each where no caption
+// plate covers it (a plate must cover the world somewhere: the numbers yield to it).
+void placeAxisNumbers(App& app, Taken& placed) {
     const Camera& cam = app.view.camera;
     const Bounds& bounds = app.sim.world().bounds;
     const ScreenRect& vp = cam.viewport();
@@ -151,7 +153,6 @@ void drawAxisNumbers(const App& app, ImDrawList* dl, Taken& placed) {
     // (with room between them: 60 px a grid line, as a major line has at least)
     const double step =
         majorsInView < 2.0 && grid * cam.pixelsPerMetre() >= 5.0 * 12.0 ? grid : major;
-    const ImU32 color = packed(theme().axis);
     const float gap = 14.0f;
     // Where the floor (the left wall) is below (left of) the view, the numbers go on its edge.
     const Vec2 corner = cam.worldToScreen(bounds.min);
@@ -176,7 +177,7 @@ void drawAxisNumbers(const App& app, ImDrawList* dl, Taken& placed) {
         if (std::any_of(under.begin(), under.end(),
                         [&r](const ScreenRect& t) { return rectsOverlap(r, t); }))
             return;
-        dl->AddText(ImVec2(x, y), color, text);
+        app.ui.axisNumbers.push_back({r, text});
         placed.texts.push_back(r);
     };
     char text[32];
@@ -460,18 +461,31 @@ void drawReferenceLine(const App& app, ImDrawList* dl, Taken& placed) {
         dl->AddLine(ImVec2(x, y), ImVec2(std::min(x + dash, static_cast<float>(b.x)), y), color,
                     2.0f * app.view.uiScale);
     }
-    char text[64];
-    std::snprintf(text, sizeof text, "top of the stack at the start: %s m",
-                  formatNumber(*top).c_str());
     // Its label over the line's right end in the view (the axis numbers are on the left), or
-    // under it where that is taken.
+    // under it where that is taken; in fewer words where the long one finds no free spot (a
+    // magnifier beside a narrow scene: lecture3 step 18 at 1280x800, UI 1.5).
     const ScreenRect& vp = app.view.camera.viewport();
-    const ImVec2 ts = ImGui::CalcTextSize(text);
     const float right = std::min(static_cast<float>(b.x), static_cast<float>(vp.x + vp.width));
-    const ImVec2 at = freeSpot(placed, vp, right - ts.x - 6.0f, y - ts.y - 4.0f, y + 4.0f, ts,
-                               ImGui::GetFontSize());
+    const std::string value = formatNumber(*top) + " m";
+    const std::string texts[] = {"top of the stack at the start: " + value,
+                                 "top at the start: " + value};
+    std::string text;
+    ImVec2 at, ts;
+    double least = INFINITY;
+    for (const std::string& t : texts) {
+        const ImVec2 size = ImGui::CalcTextSize(t.c_str());
+        const ImVec2 spot = freeSpot(placed, vp, right - size.x - 6.0f, y - size.y - 4.0f, y + 4.0f,
+                                     size, ImGui::GetFontSize());
+        const double covered =
+            coveredAt(placed, vp, spot.x, spot.y, size, ImGui::GetFontSize() * 0.5f);
+        if (text.empty() || covered < least) {
+            least = covered;
+            text = t, at = spot, ts = size;
+        }
+        if (covered == 0.0) break;
+    }
     placed.texts.push_back({at.x, at.y, ts.x, ts.y});
-    shadowText(dl, at, color, text, packed(theme().textShadow));
+    shadowText(dl, at, color, text.c_str(), packed(theme().textShadow));
 }
 
 void drawFlingReadout(const App& app, ImDrawList* dl) {
@@ -565,7 +579,9 @@ void drawSceneDecorations(App& app) {
     const ScreenRect badge = drawStatusBadge(app, dl);
     if (badge.width > 0.0) placed.texts.push_back(badge);
     drawMagnifier(app, dl, placed); // before the numbers and labels: they go around it
-    drawAxisNumbers(app, dl, placed);
+    app.ui.axisNumbers.clear();
+    app.ui.captionPlates.clear();
+    placeAxisNumbers(app, placed);
     drawReferenceLine(app, dl, placed);
     drawLargeCount(app, dl, placed); // before the labels and values: they go around it
     drawLabels(app, dl, placed);
@@ -580,4 +596,17 @@ void drawSceneDecorations(App& app) {
     drawFlingReadout(app, dl);
     ImGui::PopFont();
     drawHoverTooltip(app);
+}
+
+void drawYieldedAxisNumbers(const App& app) {
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    const SceneLabelFont font(app);
+    const std::vector<ScreenRect>& plates = app.ui.captionPlates;
+    for (const UiState::AxisNumber& n : app.ui.axisNumbers) {
+        if (std::any_of(plates.begin(), plates.end(),
+                        [&n](const ScreenRect& p) { return rectsOverlap(n.rect, p); }))
+            continue;
+        dl->AddText(ImVec2(static_cast<float>(n.rect.x), static_cast<float>(n.rect.y)),
+                    packed(theme().axis), n.text.c_str());
+    }
 }

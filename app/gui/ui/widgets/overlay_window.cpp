@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <string>
 
 namespace {
@@ -20,6 +21,19 @@ ScreenRect screenBox(const App& app, Vec2 centre, Vec2 size, double grow) {
     const Vec2 b = app.view.camera.worldToScreen(centre + size * 0.5);
     const double x = std::min(a.x, b.x) - grow, y = std::min(a.y, b.y) - grow;
     return {x, y, std::abs(b.x - a.x) + 2.0 * grow, std::abs(b.y - a.y) + 2.0 * grow};
+}
+
+// The texts taken on screen (app.ui.takenOnScreen) but the axis numbers, which yield to a plate.
+std::vector<ScreenRect> textsNotYielding(const App& app) {
+    std::vector<ScreenRect> out;
+    for (const ScreenRect& t : app.ui.takenOnScreen.texts)
+        if (std::none_of(app.ui.axisNumbers.begin(), app.ui.axisNumbers.end(),
+                         [&t](const UiState::AxisNumber& n) {
+                             return n.rect.x == t.x && n.rect.y == t.y && n.rect.width == t.width &&
+                                    n.rect.height == t.height;
+                         }))
+            out.push_back(t);
+    return out;
 }
 
 } // namespace
@@ -46,10 +60,11 @@ ImVec2 sceneCaptionPlace(const App& app, float width, float height,
     for (const DockedWindow& m : app.view.shownMarks)
         if (m.name.rfind("magnifier", 0) == 0) avoid.push_back(m.rect);
     // Where it must cover blocks (a box full of them), it hides none of the texts drawn so far
-    // (the axis numbers, the labels: app.ui.takenOnScreen) if it can.
+    // (the labels, the badge: app.ui.takenOnScreen) if it can; the axis numbers yield to it
+    // (drawYieldedAxisNumbers leaves out those it covers): their bands above are avoided only.
     const ScreenRect r =
         placeCaption(width, height, vp, worldRectOnScreen(app.view.camera, app.sim.world().bounds),
-                     avoid, 10.0 * s, app.ui.takenOnScreen.texts);
+                     avoid, 10.0 * s, textsNotYielding(app));
     return ImVec2(static_cast<float>(r.x), static_cast<float>(r.y));
 }
 
@@ -78,14 +93,14 @@ std::vector<CaptionLine> wrappedCaption(const std::vector<CaptionLine>& lines, f
 
 bool hidesText(const App& app, ImVec2 at, ImVec2 size) {
     const ScreenRect plate{at.x, at.y, size.x, size.y};
-    const std::vector<ScreenRect>& texts = app.ui.takenOnScreen.texts;
+    const std::vector<ScreenRect> texts = textsNotYielding(app);
     return std::any_of(texts.begin(), texts.end(),
                        [&plate](const ScreenRect& t) { return rectsOverlap(plate, t); });
 }
 
 } // namespace
 
-void drawSceneCaption(const App& app, const std::vector<CaptionLine>& lines,
+void drawSceneCaption(App& app, const std::vector<CaptionLine>& lines,
                       const std::vector<WorldBox>& boxes) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     const float font = ImGui::GetFontSize();
@@ -98,15 +113,22 @@ void drawSceneCaption(const App& app, const std::vector<CaptionLine>& lines,
     std::vector<CaptionLine> shown;
     float width = 0.0f;
     ImVec2 plate;
-    for (const float share : {1.0f, 0.6f, 0.4f, 0.25f}) {
+    // Narrower, a share of its width, never wider than the scene less its margins.
+    const float room = static_cast<float>(app.view.camera.viewport().width) - 32.0f * s;
+    const float fits = natural > room && room > 0.0f ? room / natural : 1.0f;
+    const float shares[] = {1.0f, fits, 0.6f, 0.4f, 0.25f};
+    for (std::size_t k = 0; k < std::size(shares); ++k) {
+        const float share = shares[k];
+        if (k == 1 && fits == 1.0f) continue; // it fits the scene as it is
         float widest = natural;
+        const float wrapAt = k == 0 ? natural : natural * std::min(share, fits);
         std::vector<CaptionLine> tried =
-            share < 1.0f ? wrappedCaption(lines, natural * share, widest) : lines;
+            wrapAt < natural ? wrappedCaption(lines, wrapAt, widest) : lines;
         // The plate is 6 px (x UI scale) wider than the text on each side, 4 px taller.
         const ImVec2 size(widest + 12.0f * s, static_cast<float>(tried.size()) * font + 8.0f * s);
         const ImVec2 at = sceneCaptionPlace(app, size.x, size.y, boxes);
         const bool hides = hidesText(app, at, size);
-        if (share == 1.0f || !hides) { // as it is, unless a narrower one hides nothing
+        if (k == 0 || !hides) { // as it is, unless a narrower one hides nothing
             shown = std::move(tried);
             width = widest;
             plate = at;
@@ -114,6 +136,7 @@ void drawSceneCaption(const App& app, const std::vector<CaptionLine>& lines,
         if (!hides) break;
     }
     const float n = static_cast<float>(shown.size());
+    app.ui.captionPlates.push_back({plate.x, plate.y, width + 12.0f * s, n * font + 8.0f * s});
     const ImVec2 at(plate.x + 6.0f * s, plate.y + 4.0f * s);
     dl->AddRectFilled(
         ImVec2(at.x - 6 * s, at.y - 4 * s), ImVec2(at.x + width + 6 * s, at.y + n * font + 4 * s),

@@ -75,7 +75,7 @@ ImVec2 sceneCaptionPlace(const App& app, float width, float height,
 // Lines of text on a plate over the scene, where sceneCaptionPlace finds room (the point of
 // impact's numbers, the student's trace); where the plate would hide a label there, the lines
 // wrapped narrower (wrapFormula) if that finds a spot hiding none.
-void drawSceneCaption(const App& app, const std::vector<CaptionLine>& lines,
+void drawSceneCaption(App& app, const std::vector<CaptionLine>& lines,
                       const std::vector<WorldBox>& boxes);
 
 // The window of an overlay row (overlays.h: its title and placement), closed by its close button
