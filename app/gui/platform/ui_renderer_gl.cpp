@@ -76,7 +76,7 @@ void setupRenderState(const ImDrawData* data, int framebufferWidth, int framebuf
     glBlendEquation(GL_FUNC_ADD);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glDisable(GL_CULL_FACE);
-#if !SANDBOX_GL_ES // the browser's canvas has no depth or stencil buffer (canvas_web.cpp)
+#if !SANDBOX_GL_ES // in the browser nothing turns them on (WebGL starts with both off)
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
 #endif
