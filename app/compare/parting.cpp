@@ -377,6 +377,7 @@ PartingCollision findPartingCollision(const Scene& scene, const WorldSettings& s
     Scene sc = scene;
     sc.settings = settings;
     World world = makeWorld(sc);
+    world.settings.measureTime = false; // no step's time is shown (in the browser: two JS calls)
     std::vector<CollisionRecord> log;
     auto involves = [&](const CollisionRecord& r) {
         return r.block == d.block || r.other == d.block;

@@ -19,7 +19,8 @@ struct StepStats {
     double potentialEnergy = 0.0; // J
     int eventCapHits = 0;         // substeps whose event cap ended them early
     double simulatedTime = 0.0;   // s actually advanced (less than dt when the cap held time back)
-    double stepMs = 0.0;          // ms of wall-clock time spent in the step
+    double stepMs = 0.0;          // ms of wall-clock time spent in the step (0 when not timed)
+    bool timed = false;           // stepMs was measured (WorldSettings::measureTime)
 };
 
 // What a run adds up over its steps: counts summed, the largest overlap kept. The one place

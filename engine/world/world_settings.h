@@ -51,6 +51,11 @@ struct WorldSettings {
     double restSpeed = 1e-6;
     int eventCap = 20000;       // perfect method: collision events per substep at most
     bool measureOverlap = true; // compute StepStats::maxPenetration (costs one broad phase)
+    // Time the step (StepStats::stepMs, ms of wall-clock time): two clock reads per step, which in
+    // the browser are calls out to JavaScript. Off, stepMs is 0 and nothing else changes (the
+    // physics never reads it). Not a row of the table below: it says how a step reports, not what
+    // it computes, so no comparison of settings (a scene's, the timeline's) sees it.
+    bool measureTime = true;
     Resolve resolve = Resolve::Momentum; // the lecture's formula, or "without Newton"
     Integrator integrator = Integrator::SemiImplicitEuler;
     std::uint8_t mistakes = 0; // bit (1 << Mistake) set: that mistake is made (all off: correct)

@@ -65,6 +65,26 @@ TEST(Statistics, StepReportsTheNewStateByHand) {
     }
 }
 
+// measureTime off: the step is not timed (stepMs 0, timed false) and nothing else changes: the
+// same state, bit for bit, and the same statistics.
+TEST(Statistics, AnUntimedStepIsTheSameStep) {
+    for (Method method : {Method::Perfect, Method::MoveAndCorrect, Method::TurnBased}) {
+        World timed = smallWorld(method), untimed = smallWorld(method);
+        untimed.settings.measureTime = false;
+        for (int frame = 0; frame < 120; ++frame) {
+            const StepStats a = timed.step(), b = untimed.step();
+            EXPECT_TRUE(a.timed);
+            EXPECT_FALSE(b.timed);
+            EXPECT_EQ(b.stepMs, 0.0);
+            EXPECT_EQ(a.collisions, b.collisions);
+            EXPECT_EQ(a.events, b.events);
+            EXPECT_EQ(a.kineticEnergy, b.kineticEnergy);
+            EXPECT_EQ(a.maxPenetration, b.maxPenetration);
+        }
+        EXPECT_EQ(stateHash(timed), stateHash(untimed)) << methodName(method);
+    }
+}
+
 TEST(Statistics, CollisionsCountWallHits) {
     // Block 0 reaches the right wall within the first frame (0.05 m at 6 m/s < 0.1 m);
     // block 1 and 2 meet head-on in the same frame (gap 0.1 m closing at 12 m/s).

@@ -23,7 +23,10 @@ int massBlock(const App& app) {
 } // namespace
 
 std::string pageStateJson(const App& app) {
-    const SpokenScreen s = spokenScreen(app);
+    return pageStateJson(app, spokenScreen(app));
+}
+
+std::string pageStateJson(const App& app, const SpokenScreen& s) {
     json screen = {{"scene", s.scene},     {"description", s.description}, {"lesson", s.lesson},
                    {"caption", s.caption}, {"question", s.question},       {"answer", s.answer},
                    {"status", s.status}};

@@ -1,10 +1,10 @@
 // The browser page's own text and form controls, for a screen reader or a switch device: beside
 // the canvas, the page keeps real DOM text in step with what the canvas shows (spoken_text.h)
 // and native, labelled, visually hidden controls (scene, lesson next/previous, play/pause,
-// step, reset, undo, redo, one for every world key of the settings table (page_world_controls.h), the
-// selected block and its mass) that drive the same state as the panel. This is the logic both ways,
-// with no browser: tested in tests/app; the page (platform/web/index.html) draws it, main_web.cpp
-// carries it.
+// step, reset, undo, redo, one for every world key of the settings table (page_world_controls.h),
+// the selected block and its mass) that drive the same state as the panel. This is the logic both
+// ways, with no browser: tested in tests/app; the page (platform/web/index.html) draws it,
+// main_web.cpp carries it.
 #pragma once
 
 #include "input_map.h"
@@ -13,11 +13,14 @@
 #include <string>
 
 struct App;
+struct SpokenScreen;
 
 // What the page shows, as JSON: {"screen": the SpokenScreen's texts, "controls": the controls'
 // values and choices, "world" the world keys' controls}. The page rewrites its DOM only when this
 // text changes.
 std::string pageStateJson(const App& app);
+// The same with the screen's texts as the caller already made them (spokenScreen(app)).
+std::string pageStateJson(const App& app, const SpokenScreen& s);
 // The page's "selected block" control lists the first kListedBlocks blocks and the selected one
 // (200,000 options made again every quarter second would take the page's frames, for nobody).
 inline constexpr std::size_t kListedBlocks = 100;

@@ -205,10 +205,10 @@ void tellPage(WebApp& w, double realSeconds) {
     w.realTime += realSeconds;
     if (w.realTime - w.stateAt >= kPageTextSeconds) {
         w.stateAt = w.realTime;
-        std::string state = pageStateJson(w.app);
+        SpokenScreen spoken = spokenScreen(w.app); // once: the page's text and the live region's
+        std::string state = pageStateJson(w.app, spoken);
         if (state != w.shownState) pageShowState(state);
         w.shownState = std::move(state);
-        SpokenScreen spoken = spokenScreen(w.app);
         for (const std::string& line : spokenChanges(w.spoken, spoken)) pageAnnounce(line);
         w.spoken = std::move(spoken);
     }

@@ -20,6 +20,7 @@ constexpr float kMinSolidRunPixels = 4096.0f;
 struct UiProgram {
     GLuint program = 0;
     GLint transform = -1;
+    float transformSet[4] = {0.0f, 0.0f, 0.0f, 0.0f}; // the transform last given (WebGL: kept)
 };
 
 struct UiRenderer {
@@ -75,17 +76,32 @@ void setupRenderState(const ImDrawData* data, int framebufferWidth, int framebuf
     glBlendEquation(GL_FUNC_ADD);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glDisable(GL_CULL_FACE);
+#if !SANDBOX_GL_ES // in the browser nothing turns them on (WebGL starts with both off)
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
+#endif
     glEnable(GL_SCISSOR_TEST);
     glViewport(0, 0, framebufferWidth, framebufferHeight);
     const float l = data->DisplayPos.x, r = data->DisplayPos.x + data->DisplaySize.x;
     const float t = data->DisplayPos.y, b = data->DisplayPos.y + data->DisplaySize.y;
+    const float transform[4] = {2.0f / (r - l), 2.0f / (t - b), (r + l) / (l - r),
+                                (t + b) / (b - t)};
+#if SANDBOX_GL_ES
+    // WebGL draws with the textured program only (renderForWebGl), and a program keeps its
+    // uniforms: the transform is given again only when the display changed (each GL call is a
+    // call out to JavaScript there).
+    UiProgram& p = gUi.textured;
+    glUseProgram(p.program);
+    if (!std::equal(transform, transform + 4, p.transformSet)) {
+        glUniform4f(p.transform, transform[0], transform[1], transform[2], transform[3]);
+        std::copy(transform, transform + 4, p.transformSet);
+    }
+#else
     for (const UiProgram* p : {&gUi.solid, &gUi.textured}) {
         glUseProgram(p->program);
-        glUniform4f(p->transform, 2.0f / (r - l), 2.0f / (t - b), (r + l) / (l - r),
-                    (t + b) / (b - t));
+        glUniform4f(p->transform, transform[0], transform[1], transform[2], transform[3]);
     }
+#endif
     glActiveTexture(GL_TEXTURE0);
     glBindVertexArray(gUi.vao);
     glBindBuffer(GL_ARRAY_BUFFER, gUi.vertexBuffer);
@@ -106,8 +122,14 @@ void pointAttributes() {
 } // namespace
 
 bool uiRendererInit(std::string* error) {
-    if (!buildUiProgram(gUi.solid, "", error) ||
-        !buildUiProgram(gUi.textured, "#define TEXTURED\n", error)) {
+    // WebGL draws every run textured (renderForWebGl): the solid program is not made there, one
+    // program less to compile before the first frame.
+#if SANDBOX_GL_ES
+    const bool solid = true;
+#else
+    const bool solid = buildUiProgram(gUi.solid, "", error);
+#endif
+    if (!solid || !buildUiProgram(gUi.textured, "#define TEXTURED\n", error)) {
         uiRendererShutdown();
         return false;
     }
@@ -218,7 +240,6 @@ void renderForWebGl(const ImDrawData* data, int fbWidth, int fbHeight) {
     glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                  static_cast<GLsizeiptr>(gUi.indices.size() * sizeof(std::uint32_t)),
                  gUi.indices.data(), GL_STREAM_DRAW);
-    glUseProgram(gUi.textured.program);
     GLuint texture = ~0u;           // the texture bound
     ImVec4 scissor(-1, -1, -1, -1); // the clip rectangle the scissor box was last set to
     listIndices = 0;

@@ -9,6 +9,7 @@ void CostMeasurement::measure(const World& world, const std::string& scenePath, 
     for (std::size_t m = 0; m < msPerStep_.size(); ++m) {
         World copy = world;
         copy.settings.method = static_cast<Method>(m);
+        copy.settings.measureTime = true; // what this measures
         double total = 0.0;
         for (int i = 0; i < frames; ++i) total += copy.step().stepMs;
         msPerStep_[m] = total / frames;

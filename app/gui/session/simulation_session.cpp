@@ -191,6 +191,7 @@ FrameOutcome SimulationSession::step(bool sideBySide) {
     // force accelerates a heavy block slowly and a light one fast), then taken off again.
     const int pushed = thrustedBlock();
     const Vec2 thrust = thrustForce();
+    w.settings.measureTime = stepTimeShown || sideBySide; // not a physics setting: no edit
     if (sideBySide) {
         if (!run.methods.running) run.methods.start(w);
         run.methods.step(w.settings, pushed, thrust);

@@ -108,6 +108,11 @@ struct SimulationSession {
     SoundControl sound;
     bool inLesson = false;
     CollisionAnnouncer announcer;
+    // The step's time is shown (the panel's Statistics open, as the app last drew it): the steps
+    // are timed (WorldSettings::measureTime) while it is, or while the methods run side by side
+    // (their overlay shows each one's time); else not (in the browser each clock read is a call
+    // out to JavaScript).
+    bool stepTimeShown = true;
     // Edits of blocks (drag, fling, add, delete, the panel's fields) since the last load or save;
     // quitting asks when there are any, or when the settings differ from the scene's.
     bool blocksEdited = false;

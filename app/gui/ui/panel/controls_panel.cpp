@@ -190,16 +190,26 @@ void runSection(App& app) {
     undoButtons(app);
 }
 
-void statisticsSection(const Run& run, const UiState& ui) {
-    if (!ImGui::CollapsingHeader("Statistics")) return;
+// Returns whether it is open (the steps are timed only while it is: SimulationSession's
+// stepTimeShown).
+bool statisticsSection(const Run& run, const UiState& ui) {
+    if (!ImGui::CollapsingHeader("Statistics")) return false;
     const StepStats& s = run.stats;
-    if (!ImGui::BeginTable("stats", 2, ImGuiTableFlags_SizingStretchProp)) return;
+    if (!ImGui::BeginTable("stats", 2, ImGuiTableFlags_SizingStretchProp)) return true;
     statRow("collisions / frame", "%.0f", s.collisions);
     statRow("resting contacts / frame", "%.0f", s.contacts);
     statRow("events / frame", "%.0f", s.events);
     statRow("largest overlap", "%.4f m", s.maxPenetration);
     statRow("event-cap hits", "%.0f", static_cast<double>(run.totals.eventCapHits));
-    statRow("step time", "%.3f ms", s.stepMs);
+    if (s.timed) {
+        statRow("step time", "%.3f ms", s.stepMs);
+    } else { // the step before the section opened (the next one is timed)
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted("step time");
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted("from the next step");
+    }
     statRow("collisions (total)", "%.0f", static_cast<double>(run.totals.collisions));
     statRow("resting contacts (total)", "%.0f", static_cast<double>(run.totals.contacts));
     statRow("momentum x", "%.3f kg·m/s", s.momentum.x);
@@ -211,6 +221,7 @@ void statisticsSection(const Run& run, const UiState& ui) {
         statRow("frames / second", "%.0f", 1000.0 / ui.frameMsSmoothed);
     }
     ImGui::EndTable();
+    return true;
 }
 
 void overlaysSection(Overlays& o, bool touch) {
@@ -337,7 +348,7 @@ void sectionsChild(App& app, float width, float height) {
     physicsSection(app);
     overlaysSection(app.view.show, app.ui.touchUi);
     selectedSection(app);
-    statisticsSection(app.sim.run, app.ui);
+    app.sim.stepTimeShown = statisticsSection(app.sim.run, app.ui);
     viewSection(app);
     fileSection(app);
     compareSection(app);
