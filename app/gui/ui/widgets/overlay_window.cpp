@@ -212,9 +212,11 @@ OverlayWindow::OverlayWindow(App& app, OverlayId id) {
         ImGui::PushFont(uiCompactFont());
         font_ = true;
     }
+    if (open_) wholeRows_.emplace();
 }
 
 OverlayWindow::~OverlayWindow() {
+    if (wholeRows_) wholeRows_->end();
     if (font_) ImGui::PopFont();
     if (begun_) ImGui::End();
 }
