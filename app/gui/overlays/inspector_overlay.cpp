@@ -95,6 +95,13 @@ void drawInspectorOverlay(App& app) {
                                           : "newest,",
                   r.time, bodyName(app, r.block).c_str(), bodyName(app, r.other).c_str(),
                   r.axis == 0 ? 'x' : 'y');
+    // Where the combo is too narrow for it, without the names (the formula's title under it
+    // names them).
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const float previewRoom =
+        ImGui::GetContentRegionAvail().x - ImGui::GetFrameHeight() - 2.0f * st.FramePadding.x;
+    if (ImGui::CalcTextSize(preview).x > previewRoom)
+        std::snprintf(preview, sizeof preview, "t = %.3f s (%c)", r.time, r.axis == 0 ? 'x' : 'y');
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::BeginCombo("##collisions", preview)) {
         for (int k = 0; k < count; ++k) {

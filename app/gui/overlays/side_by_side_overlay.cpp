@@ -6,9 +6,29 @@
 #include "ui_style.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iterator>
 #include <string>
+
+namespace {
+
+// An energy in J, kJ or MJ, four significant digits: "2.5 J", "29.17 kJ" (not "2.917e+04 J",
+// which no narrow column holds).
+std::string energyText(double joules) {
+    const char* unit = "J";
+    double value = joules;
+    for (const char* larger : {"kJ", "MJ", "GJ"}) {
+        if (std::abs(value) < 9999.5) break; // (what "%.4g" would write as 1e+04)
+        value /= 1e3;
+        unit = larger;
+    }
+    char text[64];
+    std::snprintf(text, sizeof text, "%.4g %s", value, unit);
+    return text;
+}
+
+} // namespace
 
 void drawSideBySideOverlay(App& app) {
     OverlayWindow overlay(app, OverlayId::sideBySide);
@@ -32,8 +52,7 @@ void drawSideBySideOverlay(App& app) {
         cells[k][1] = std::to_string(static_cast<long long>(r.totals.collisions));
         std::snprintf(text, sizeof text, "%.3g m", r.totals.maxPenetration);
         cells[k][2] = text;
-        std::snprintf(text, sizeof text, "%.4g J", r.stats.kineticEnergy + r.stats.potentialEnergy);
-        cells[k][3] = text;
+        cells[k][3] = energyText(r.stats.kineticEnergy + r.stats.potentialEnergy);
         std::snprintf(text, sizeof text, "%.3g m", m.divergence(method));
         cells[k][4] = text;
         std::snprintf(text, sizeof text, "%.3f", r.stats.stepMs);

@@ -208,10 +208,14 @@ bool writeLayoutJson(const App& app, const std::string& path) {
     std::vector<DockedWindow> sideways;
     for (const imgui_ext::SidewaysScroll& w : imgui_ext::sidewaysScrolls())
         sideways.push_back({w.window, {w.min.x, w.min.y, w.max.x - w.min.x, w.max.y - w.min.y}});
-    return writeText(path, layoutJson(camera.viewport(),
-                                      worldRectOnScreen(camera, app.sim.world().bounds),
-                                      app.view.shownWindows, blocks, app.view.shownPlots,
-                                      app.view.shownMarks, app.view.shownMagnified, sideways));
+    std::vector<DockedWindow> folded;
+    for (const DockTabs& t : app.view.layout.tabs)
+        for (const std::string& name : t.names)
+            if (name != t.shown) folded.push_back({name, t.rect});
+    return writeText(
+        path, layoutJson(camera.viewport(), worldRectOnScreen(camera, app.sim.world().bounds),
+                         app.view.shownWindows, blocks, app.view.shownPlots, app.view.shownMarks,
+                         app.view.shownMagnified, sideways, folded));
 }
 
 // The texts of the frame rendered last (--text-json, screen_text.h).
@@ -313,6 +317,34 @@ bool writeFrameFiles(const App& app, const Offscreen& off, const std::string& ba
            writeLayoutJson(app, base + ".layout.json") && writeTextJson(base + ".text.json");
 }
 
+// The windows folded behind tabs in the frame rendered last (DockTabs), each brought to the front
+// in turn and drawn: their texts into BASE.folded.text.json (as --text-json writes them) and the
+// parts of them that scroll sideways into BASE.folded.layout.json ("sideways"); no window is
+// folded: both empty. The windows in front are as they were after.
+bool writeFoldedFiles(App& app, Offscreen& off, const std::string& base) {
+    std::vector<std::string> folded;
+    for (const DockTabs& t : app.view.layout.tabs)
+        for (const std::string& name : t.names)
+            if (name != t.shown) folded.push_back(name);
+    const std::vector<std::string> front = app.view.frontWindows;
+    std::vector<ScreenText> texts;
+    std::vector<DockedWindow> sideways;
+    for (const std::string& name : folded) {
+        bringToFront(app.view, name);
+        for (int k = 0; k < kSettleFrames; ++k) renderFrame(app, off);
+        for (ScreenText& t : readScreenText(*ImGui::GetDrawData(), *ImGui::GetIO().Fonts))
+            if (t.window == name) texts.push_back(std::move(t));
+        for (const imgui_ext::SidewaysScroll& w : imgui_ext::sidewaysScrolls())
+            if (w.window == name)
+                sideways.push_back(
+                    {w.window, {w.min.x, w.min.y, w.max.x - w.min.x, w.max.y - w.min.y}});
+    }
+    app.view.frontWindows = front;
+    return writeText(base + ".folded.text.json", screenTextJson(texts)) &&
+           writeText(base + ".folded.layout.json",
+                     layoutJson({}, {}, {}, {}, {}, {}, {}, sideways));
+}
+
 // Every lesson step twice into `dir`: at its setup (t = 0, the question asked: DIR/step_NN_setup.*)
 // and at its moment (its pause point, the answer shown: DIR/step_NN_moment.*), each with its
 // layout and its texts (writeFrameFiles).
@@ -384,6 +416,7 @@ bool recordScenesInto(App& app, Offscreen& off, const std::string& dir, int fram
         for (int k = 0; k < kSettleFrames; ++k) renderFrame(app, off);
         const std::string name = std::filesystem::path(scene.path).stem().string();
         if (!writeFrameFiles(app, off, dir + "/" + name)) return false;
+        if (!writeFoldedFiles(app, off, dir + "/" + name)) return false;
     }
     return true;
 }

@@ -42,6 +42,30 @@ std::vector<double> share(const std::vector<const DockRequest*>& items, double l
     return out;
 }
 
+// True when `items` side by side along `length` each get at least kLeastDockShrink of their
+// least extent.
+bool fitSideBySide(const std::vector<const DockRequest*>& items, double length, double gap,
+                   double scale, double displayH) {
+    if (items.size() < 2) return true;
+    double mins = 0.0;
+    for (const DockRequest* r : items) mins += leastExtent(*r, scale, displayH);
+    return mins * kLeastDockShrink <= length - gap * static_cast<double>(items.size() - 1);
+}
+
+// The region's windows folded into tabs: the one shown (the highest `front`) stays in `items`
+// alone, to be given the whole region; the tabs go into `out` (their rectangle set with it).
+void foldIntoTabs(std::vector<const DockRequest*>& items, std::vector<DockTabs>& out) {
+    DockTabs tabs;
+    const DockRequest* shown = items.front();
+    for (const DockRequest* r : items) {
+        tabs.names.push_back(r->name);
+        if (r->front > shown->front) shown = r;
+    }
+    tabs.shown = shown->name;
+    out.push_back(std::move(tabs));
+    items = {shown};
+}
+
 double wanted(const std::vector<const DockRequest*>& items, double scale) {
     double w = 0.0;
     for (const DockRequest* r : items) w = std::max(w, r->crossExtent * scale);
@@ -54,6 +78,12 @@ const ScreenRect* Layout::find(const std::string& name) const {
     for (const DockedWindow& w : windows) {
         if (w.name == name) return &w.rect;
     }
+    return nullptr;
+}
+
+const DockTabs* Layout::tabsOf(const std::string& name) const {
+    for (const DockTabs& t : tabs)
+        if (std::find(t.names.begin(), t.names.end(), name) != t.names.end()) return &t;
     return nullptr;
 }
 
@@ -82,6 +112,7 @@ Layout computeLayout(const LayoutInput& in) {
         shiftDown(out.panel, top);
         shiftDown(out.scene, top);
         for (DockedWindow& w : out.windows) shiftDown(w.rect, top);
+        for (DockTabs& t : out.tabs) shiftDown(t.rect, top);
         return out;
     }
     if (in.panelHeight > 0.0) { // a sheet: the rest is laid out above it, windows in the strip
@@ -93,6 +124,7 @@ Layout computeLayout(const LayoutInput& in) {
         const double screenH = in.shareHeight > 0.0 ? in.shareHeight : H;
         // (1 px to spare: the share is a floor, whatever the rounding.)
         above.maxStripHeight = std::max(1.0, top - std::ceil(kMinSheetSceneShare * screenH) - 1.0);
+        above.tabs = false;
         for (DockRequest& w : above.windows) w.side = DockSide::Bottom;
         Layout out = computeLayout(above);
         out.panel = fromEdges(0.0, top, W, H);
@@ -144,20 +176,27 @@ Layout computeLayout(const LayoutInput& in) {
     const double columnX = W - columnW, stripY = H - stripH;
     // The right column, above the strip, windows stacked top to bottom.
     const double columnH = bottom.empty() ? H : stripY;
+    // Regions too small for their windows side by side: one window each, the rest behind tabs.
+    const double stripX0 = areaX + (panel > 0.0 ? gap : 0.0);
+    const bool foldRight = in.tabs && !fitSideBySide(right, columnH, gap, s, shareH);
+    const bool foldBottom = in.tabs && !fitSideBySide(bottom, W - stripX0, gap, s, 0.0);
+    if (foldRight) foldIntoTabs(right, out.tabs);
+    if (foldBottom) foldIntoTabs(bottom, out.tabs);
     const std::vector<double> heights = share(right, columnH, gap, s, shareH);
     double y = 0.0;
     for (std::size_t i = 0; i < right.size(); ++i) {
         const double y1 = i + 1 == right.size() ? columnH : y + heights[i];
         out.windows.push_back({right[i]->name, fromEdges(columnX + gap, y, W, y1)});
+        if (foldRight) out.tabs[0].rect = out.windows.back().rect;
         y = y1 + gap;
     }
     // The bottom strip, from the panel to the right edge (under the column), left to right.
-    const double stripX0 = areaX + (panel > 0.0 ? gap : 0.0);
     const std::vector<double> widths = share(bottom, W - stripX0, gap, s, 0.0);
     double x = stripX0;
     for (std::size_t i = 0; i < bottom.size(); ++i) {
         const double x1 = i + 1 == bottom.size() ? W : x + widths[i];
         out.windows.push_back({bottom[i]->name, fromEdges(x, stripY + gap, x1, H)});
+        if (foldBottom) out.tabs.back().rect = out.windows.back().rect;
         x = x1 + gap;
     }
     out.scene = fromEdges(areaX, 0.0, std::max(areaX + 1.0, columnX), std::max(1.0, stripY));
@@ -301,10 +340,12 @@ std::string
 layoutJson(const ScreenRect& scene, const ScreenRect& world,
            const std::vector<DockedWindow>& windows, const std::vector<DockedWindow>& blocks,
            const std::vector<DockedWindow>& plots, const std::vector<DockedWindow>& marks,
-           const std::vector<DockedWindow>& magnified, const std::vector<DockedWindow>& sideways) {
+           const std::vector<DockedWindow>& magnified, const std::vector<DockedWindow>& sideways,
+           const std::vector<DockedWindow>& folded) {
     return "{\"scene\": " + jsonRect(scene) + ", \"world\": " + jsonRect(world) +
            ", \"windows\": " + namedRects(windows) + ", \"blocks\": " + namedRects(blocks) +
            ", \"plots\": " + namedRects(plots) + ", \"marks\": " + namedRects(marks) +
            (magnified.empty() ? "" : ", \"magnified\": " + namedRects(magnified)) +
-           (sideways.empty() ? "" : ", \"sideways\": " + namedRects(sideways)) + "}\n";
+           (sideways.empty() ? "" : ", \"sideways\": " + namedRects(sideways)) +
+           (folded.empty() ? "" : ", \"folded\": " + namedRects(folded)) + "}\n";
 }

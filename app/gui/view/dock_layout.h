@@ -42,6 +42,9 @@ struct DockRequest {
     // scale: plots of 140 px at 1080p). The windows under the panel take at most
     // kMaxPanelDockShare of the height.
     double heightShare = 0.0;
+    // When the region's windows fold into tabs (computeLayout), the one with the highest `front`
+    // is shown (the one asked for last); on a tie, the first.
+    int front = 0;
 };
 
 // Narrow screens (a phone held upright): below kSheetBelowPx wide (px at UI scale 1) the panel
@@ -76,6 +79,10 @@ struct LayoutInput {
     // > 0: the bottom strip of windows at most this high (above a sheet: the scene keeps
     // kMinSheetSceneShare of the screen).
     double maxStripHeight = 0.0;
+    // A region (the right column, the bottom strip) whose windows do not fit side by side, each
+    // at least kLeastDockShrink of its least extent, folds them into tabs (not on a touch screen,
+    // nor above a sheet: their windows keep their own layout).
+    bool tabs = true;
     std::vector<DockRequest> windows;
 };
 
@@ -84,13 +91,24 @@ struct DockedWindow {
     ScreenRect rect;
 };
 
+// Windows folded into tabs: one shown at the region's rectangle (in Layout::windows), with a tab
+// bar of every name along its top; the others are one click on their tab away.
+struct DockTabs {
+    ScreenRect rect;
+    std::vector<std::string> names; // in the order the windows were requested
+    std::string shown;
+};
+
 struct Layout {
     ScreenRect panel;   // width 0 when there is none
     bool sheet = false; // the panel is a sheet along the bottom (sheetLayout)
     ScreenRect scene;   // what the scene view gets
     std::vector<DockedWindow> windows;
-    // The rectangle of window `name`, or nullptr when it is not docked.
+    std::vector<DockTabs> tabs;
+    // The rectangle of window `name`, or nullptr when it is not docked (or folded behind a tab).
     const ScreenRect* find(const std::string& name) const;
+    // The tabs window `name` is folded into, or nullptr.
+    const DockTabs* tabsOf(const std::string& name) const;
 };
 
 // Shares of the display the regions never go beyond, so the scene keeps at least about half of
@@ -104,6 +122,10 @@ constexpr double kMaxPanelDockShare = 0.7; // of the height: the panel keeps the
 // the back row), whatever the UI scale: the plot widget keeps to it (plot_widget.cpp) and the
 // cost window's row in the overlay table asks for it as its heightShare.
 constexpr double kMinPlotShare = 0.13;
+// Windows side by side are drawn down to this share of their least extent (their contents allow
+// it: every overlay on at 1280x800, UI 1, and at 1920x1080, UI 1.5, they get 80%); below it, the
+// region's windows fold into tabs (DockTabs).
+constexpr double kLeastDockShrink = 0.75;
 // Pixels (at UI scale 1) between neighbouring windows.
 constexpr double kDockGap = 4.0;
 
@@ -137,14 +159,13 @@ ScreenRect worldRectOnScreen(const Camera& camera, const Bounds& bounds);
 //    "marks": [{"name": "moved back", "rect": [...]}, ...]}
 // and, when a magnifier is drawn (magnifier.h), "magnified": the blocks as drawn in it, by name;
 // when a window (or a part of one: a table) must be scrolled sideways to read it, "sideways": that
-// part's rectangle by its window's name.
-std::string layoutJson(const ScreenRect& scene, const ScreenRect& world,
-                       const std::vector<DockedWindow>& windows,
-                       const std::vector<DockedWindow>& blocks = {},
-                       const std::vector<DockedWindow>& plots = {},
-                       const std::vector<DockedWindow>& marks = {},
-                       const std::vector<DockedWindow>& magnified = {},
-                       const std::vector<DockedWindow>& sideways = {});
+// part's rectangle by its window's name; when windows are folded into tabs (DockTabs), "folded":
+// each window behind a tab, with the rectangle it is shown at when its tab is picked.
+std::string layoutJson(
+    const ScreenRect& scene, const ScreenRect& world, const std::vector<DockedWindow>& windows,
+    const std::vector<DockedWindow>& blocks = {}, const std::vector<DockedWindow>& plots = {},
+    const std::vector<DockedWindow>& marks = {}, const std::vector<DockedWindow>& magnified = {},
+    const std::vector<DockedWindow>& sideways = {}, const std::vector<DockedWindow>& folded = {});
 // JSON pieces of the documents the app writes: a string (quoted, escaped) and [x, y, w, h].
 std::string jsonString(const std::string& s);
 std::string jsonRect(const ScreenRect& r);

@@ -51,9 +51,13 @@ Layout computeAppLayout(const View& view, bool captionBar, double displayWidth,
         const bool kept =
             view.show.*row.flag || (captionBar && !underPanel && view.reserved.*row.flag);
         if (!row.title || !kept || isFloating(view, row.title)) continue;
+        const auto& front = view.frontWindows;
+        const auto at = std::find(front.begin(), front.end(), row.title);
+        const int rank = at == front.end() ? 0 : static_cast<int>(at - front.begin()) + 1;
         in.windows.push_back({row.title, row.place.side, row.place.minExtent, row.place.weight,
-                              row.place.crossExtent, row.place.heightShare});
+                              row.place.crossExtent, row.place.heightShare, rank});
     }
+    in.tabs = !view.touch; // a touch screen's layouts stay as they are
     return computeLayout(in);
 }
 
@@ -64,6 +68,14 @@ ScreenRect sceneViewport(const View& view, bool captionBar, double displayWidth,
 
 void updateCamera(View& view, const World& world, bool captionBar, double displayWidth,
                   double displayHeight) {
+    // Windows turned on since the last layout come to the front (the first of the table's rows
+    // turned on together in front of the others).
+    for (std::size_t i = kOverlayCount; i-- > 0;) {
+        const OverlayInfo& row = kOverlays[i];
+        if (row.title && view.show.*row.flag && !(view.shownBefore.*row.flag))
+            bringToFront(view, row.title);
+    }
+    view.shownBefore = view.show;
     view.layout = computeAppLayout(view, captionBar, displayWidth, displayHeight);
     view.camera.setViewport(view.layout.scene);
     if (view.autoFit) {
@@ -102,6 +114,12 @@ void applyShowSet(View& view, const ShowSet& show) {
     view.overlaysChosen = true;
     view.uiVisible = !show.none;
     view.show = show.overlays;
+}
+
+void bringToFront(View& view, const std::string& title) {
+    auto& f = view.frontWindows;
+    f.erase(std::remove(f.begin(), f.end(), title), f.end());
+    f.push_back(title);
 }
 
 bool isFloating(const View& view, const std::string& title) {

@@ -47,6 +47,10 @@ struct View {
     Layout layout;
     // Overlay windows pulled out of the layout to float (by title); put back with "Dock".
     std::vector<std::string> floatingWindows;
+    // Overlay windows by title in the order they were last turned on or picked (the last: the
+    // latest): where windows fold into tabs (DockTabs), the latest of them is shown.
+    std::vector<std::string> frontWindows;
+    Overlays shownBefore = ShowSet::noOverlays(); // the overlays on at the last layout
     // Every window drawn this frame with its rectangle (for --layout-json), in drawing order.
     std::vector<DockedWindow> shownWindows;
     // Every plot drawn this frame (its widget's whole rectangle, by name: "velocity"), likewise.
@@ -118,6 +122,8 @@ void setPresentMode(View& view, bool on);
 void setUiScale(View& view, float scale);
 // Sets the overlays from a --show list.
 void applyShowSet(View& view, const ShowSet& show);
+// Shows window `title` where it is folded behind a tab (its tab picked; its overlay turned on).
+void bringToFront(View& view, const std::string& title);
 // Is `title` an overlay window pulled out of the layout to float?
 bool isFloating(const View& view, const std::string& title);
 void setFloating(View& view, const std::string& title, bool floating);

@@ -72,7 +72,10 @@ TEST(DockLayout, EveryWindowAtTheFourClassroomSizes) {
             in.windows = everyWindow();
             const Layout l = computeLayout(in);
             SCOPED_TRACE(std::to_string(size.first) + "x" + std::to_string(scale));
-            ASSERT_EQ(l.windows.size(), in.windows.size());
+            // Each window docked, or folded behind a tab (1280x720 at UI 1.5: DockTabs).
+            std::size_t folded = 0;
+            for (const DockTabs& t : l.tabs) folded += t.names.size() - 1;
+            ASSERT_EQ(l.windows.size() + folded, in.windows.size());
             expectSound(l, size.first, size.second);
             EXPECT_DOUBLE_EQ(l.scene.x, l.panel.width); // the scene starts where the panel ends
         }
@@ -187,12 +190,76 @@ TEST(DockLayout, MinimumsThatDoNotFitShrinkAlikeAndStayInside) {
     in.uiScale = 2.0f;
     in.panelWidth = 280;
     for (int i = 0; i < 6; ++i) in.windows.push_back({"w" + std::to_string(i), DockSide::Right});
+    in.tabs = false; // (else they fold into tabs)
     const Layout l = computeLayout(in);
+    ASSERT_EQ(l.windows.size(), 6u);
     const ScreenRect screen{0, 0, 640, 360};
     for (const DockedWindow& w : l.windows) {
         EXPECT_TRUE(rectInside(w.rect, screen)) << w.name;
         EXPECT_FALSE(rectsOverlap(w.rect, l.scene)) << w.name;
     }
+}
+
+// Issue 39: every overlay on at 1280x800, UI 1.5 leaves the bottom strip's four windows 110-270
+// px wide; a region whose windows do not fit side by side (each at least kLeastDockShrink of its
+// least extent) shows one of them, the one brought to the front last, with the others' tabs.
+TEST(DockLayout, WindowsThatDoNotFitFoldIntoTabs) {
+    const auto input = [](double w, double h, float scale) {
+        LayoutInput in;
+        in.displayWidth = w;
+        in.displayHeight = h;
+        in.uiScale = scale;
+        in.panelWidth = std::min(350.0 * scale, w * 0.45);
+        in.windows = everyWindow();
+        return in;
+    };
+    // They fit at 1920x1080: nothing folds.
+    EXPECT_TRUE(computeLayout(input(1920, 1080, 1.0f)).tabs.empty());
+    LayoutInput in = input(1280, 800, 1.5f);
+    in.windows[4].front = 2; // methods side by side asked for last
+    in.windows[3].front = 1;
+    const Layout l = computeLayout(in);
+    expectSound(l, 1280, 800);
+    ASSERT_EQ(l.tabs.size(), 2u);
+    const DockTabs& right = l.tabs[0];
+    const DockTabs& bottom = l.tabs[1];
+    EXPECT_EQ(right.names,
+              (std::vector<std::string>{"Plots", "Collision inspector", "Speed versus accuracy"}));
+    EXPECT_EQ(right.shown, "Plots"); // none brought to the front: the first
+    EXPECT_EQ(bottom.names,
+              (std::vector<std::string>{"Timeline", "Methods side by side", "Momenta"}));
+    EXPECT_EQ(bottom.shown, "Methods side by side");
+    ASSERT_EQ(l.windows.size(), 2u);
+    for (const DockTabs& t : l.tabs) {
+        const ScreenRect* shown = l.find(t.shown);
+        ASSERT_NE(shown, nullptr) << t.shown;
+        EXPECT_EQ(shown->x, t.rect.x);
+        EXPECT_EQ(shown->width, t.rect.width);
+        EXPECT_EQ(l.tabsOf(t.shown), &t);
+        for (const std::string& name : t.names) {
+            if (name != t.shown) {
+                EXPECT_EQ(l.find(name), nullptr) << name;
+            }
+        }
+    }
+    // The shown window has its whole region: the strip from the panel to the right edge.
+    EXPECT_EQ(bottom.rect.x, l.panel.width + std::round(kDockGap * 1.5));
+    EXPECT_EQ(bottom.rect.x + bottom.rect.width, 1280.0);
+    // Under a caption bar the tabs move down with their windows.
+    in.topInset = 100;
+    const Layout below = computeLayout(in);
+    ASSERT_EQ(below.tabs.size(), 2u);
+    EXPECT_EQ(below.tabs[0].rect.y, 100.0);
+    ASSERT_NE(below.find("Plots"), nullptr);
+    EXPECT_EQ(below.find("Plots")->y, below.tabs[0].rect.y);
+    EXPECT_EQ(below.find("Plots")->height, below.tabs[0].rect.height);
+    // Not on a touch screen (tabs off) nor above a sheet: the windows shrink as before.
+    in.tabs = false;
+    EXPECT_TRUE(computeLayout(in).tabs.empty());
+    in.tabs = true;
+    in.panelWidth = 0.0;
+    in.panelHeight = 64.0;
+    EXPECT_TRUE(computeLayout(in).tabs.empty());
 }
 
 TEST(DockLayout, WorldRectOnScreenFollowsTheCamera) {

@@ -172,12 +172,53 @@ std::string nextWindowForKeyboard(const App& app) {
     return panel != windows.end() ? *panel : windows.front();
 }
 
+namespace {
+
+// A folded window's tab: its title, or where the titles do not all fit across the window, its
+// overlay's short name (the panel's: "inspector", "cost").
+std::string tabLabel(const std::string& title, bool shortName) {
+    if (shortName)
+        for (const OverlayInfo& row : kOverlays)
+            if (row.title && title == row.title) return row.label;
+    return title;
+}
+
+// The tab bar of the windows folded with `title` (shown), across the top of its window: the
+// others' tabs bring theirs to the front (from the next frame); the shown one's closes it.
+void drawFoldedTabs(App& app, const DockTabs& tabs, const char* title, bool* open) {
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const auto across = [&](bool shortName) {
+        float width = ImGui::GetFontSize() + st.FramePadding.x; // the shown tab's close button
+        for (const std::string& name : tabs.names)
+            width += ImGui::CalcTextSize(tabLabel(name, shortName).c_str()).x +
+                     2.0f * st.FramePadding.x + st.ItemInnerSpacing.x;
+        return width;
+    };
+    const bool shortNames = across(false) > ImGui::GetContentRegionAvail().x;
+    if (!ImGui::BeginTabBar("##folded", ImGuiTabBarFlags_FittingPolicyResizeDown)) return;
+    for (const std::string& name : tabs.names) {
+        const std::string label = tabLabel(name, shortNames) + "##" + name;
+        if (name == title) {
+            if (ImGui::BeginTabItem(label.c_str(), open)) ImGui::EndTabItem();
+        } else if (ImGui::TabItemButton(label.c_str())) {
+            bringToFront(app.view, name);
+        }
+        if (ImGui::IsItemHovered() && shortNames) ImGui::SetTooltip("%s", name.c_str());
+    }
+    ImGui::EndTabBar();
+}
+
+} // namespace
+
 bool beginOverlayWindow(App& app, OverlayId id) {
     const OverlayInfo& info = overlayInfo(id);
     const char* title = info.title;
     bool* open = &(app.view.show.*info.flag);
     const ScreenRect* docked = app.view.layout.find(title);
+    // Folded with others (DockTabs): a tab bar in place of the title bar.
+    const DockTabs* tabs = docked ? app.view.layout.tabsOf(title) : nullptr;
     ImGuiWindowFlags flags = ImGuiWindowFlags_NoSavedSettings;
+    if (tabs) flags |= ImGuiWindowFlags_NoTitleBar;
     if (docked) {
         ImGui::SetNextWindowPos(
             ImVec2(static_cast<float>(docked->x), static_cast<float>(docked->y)), ImGuiCond_Always);
@@ -190,6 +231,7 @@ bool beginOverlayWindow(App& app, OverlayId id) {
     ImGui::SetNextWindowBgAlpha(kWindowAlpha);
     const bool visible = ImGui::Begin(title, open, flags);
     recordShownWindow(app, title);
+    if (tabs && visible) drawFoldedTabs(app, *tabs, title, open);
     const ImGuiIO& io = ImGui::GetIO();
     const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
     if (docked) {
@@ -224,6 +266,9 @@ bool beginOverlayWindow(App& app, OverlayId id) {
 
 OverlayWindow::OverlayWindow(App& app, OverlayId id) {
     if (app.view.presentMode) return; // present mode: the scene only
+    const char* title = overlayInfo(id).title;
+    const DockTabs* tabs = app.view.layout.tabsOf(title);
+    if (tabs && tabs->shown != title) return; // folded behind another window's tab
     begun_ = true;
     open_ = beginOverlayWindow(app, id);
     // A small docked window (every overlay on at 1280x720) draws its contents in the compact
@@ -235,9 +280,11 @@ OverlayWindow::OverlayWindow(App& app, OverlayId id) {
         ImGui::PushFont(uiCompactFont());
         font_ = true;
     }
+    if (open_) wholeRows_.emplace();
 }
 
 OverlayWindow::~OverlayWindow() {
+    if (wholeRows_) wholeRows_->end();
     if (font_) ImGui::PopFont();
     if (begun_) ImGui::End();
 }

@@ -6,9 +6,11 @@
 #pragma once
 
 #include "app.h"
+#include "whole_rows.h"
 
 #include <imgui.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -96,6 +98,8 @@ class OverlayWindow {
     bool begun_ = false;
     bool open_ = false;
     bool font_ = false; // the compact font pushed
+    // The window shows whole rows: a line its edge would cut scrolls into view whole.
+    std::optional<WholeRows> wholeRows_;
 };
 
 // The draw functions the table names (one file each in overlays/).
