@@ -28,9 +28,11 @@ std::optional<ScreenRect> tradeoffChart(CostMeasurement& cost) {
     pick = std::clamp(pick, 0, static_cast<int>(scenes.size()) - 1);
     // 12 ems, or what a narrow window leaves beside its label.
     const ImGuiStyle& st = ImGui::GetStyle();
-    ImGui::SetNextItemWidth(std::min(ImGui::GetFontSize() * 12.0f,
-                                     ImGui::GetContentRegionAvail().x -
-                                         ImGui::CalcTextSize("scene").x - st.ItemInnerSpacing.x));
+    // (at least 1 px: ImGui reads a width under 0 as "up to the right edge less that")
+    ImGui::SetNextItemWidth(
+        std::max(1.0f, std::min(ImGui::GetFontSize() * 12.0f, ImGui::GetContentRegionAvail().x -
+                                                                  ImGui::CalcTextSize("scene").x -
+                                                                  st.ItemInnerSpacing.x)));
     if (ImGui::BeginCombo("scene", scenes[static_cast<std::size_t>(pick)].c_str())) {
         for (int i = 0; i < static_cast<int>(scenes.size()); ++i) {
             if (ImGui::Selectable(scenes[static_cast<std::size_t>(i)].c_str(), i == pick)) {

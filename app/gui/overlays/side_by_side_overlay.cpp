@@ -19,7 +19,8 @@ std::string energyText(double joules) {
     const char* unit = "J";
     double value = joules;
     for (const char* larger : {"kJ", "MJ", "GJ"}) {
-        if (std::abs(value) < 9999.5) break; // (what "%.4g" would write as 1e+04)
+        // (what "%.4g" would write as 1e+04; a blown-up NaN or infinity stays in J as it is)
+        if (!(std::abs(value) >= 9999.5) || std::isinf(value)) break;
         value /= 1e3;
         unit = larger;
     }

@@ -316,6 +316,9 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     drawYieldedAxisNumbers(app);
     if (app.lesson.active()) drawLessonCaption(app); // a lesson's one caption, presenting too
     drawPollWindow(app);
+    // The steps are timed only while the panel's Statistics shows their time (drawControlsPanel
+    // says so when it draws that section; a closed sheet, presenting or a hidden UI shows none).
+    app.sim.stepTimeShown = false;
     if (!app.view.presentMode) {
         if (app.view.uiVisible) drawControlsPanel(app);
         if (app.ui.helpOpen) drawHelpWindow(app);

@@ -53,7 +53,11 @@ Layout computeAppLayout(const View& view, bool captionBar, double displayWidth,
         if (!row.title || !kept || isFloating(view, row.title)) continue;
         const auto& front = view.frontWindows;
         const auto at = std::find(front.begin(), front.end(), row.title);
-        const int rank = at == front.end() ? 0 : static_cast<int>(at - front.begin()) + 1;
+        // A window the lesson only reserves is never the one a folded region shows (it is not
+        // drawn): it ranks below every window that is on.
+        const int rank = !(view.show.*row.flag)
+                             ? -1
+                             : (at == front.end() ? 0 : static_cast<int>(at - front.begin()) + 1);
         in.windows.push_back({row.title, row.place.side, row.place.minExtent, row.place.weight,
                               row.place.crossExtent, row.place.heightShare, rank});
     }

@@ -213,8 +213,8 @@ const std::vector<Effect>& effects() {
          [] { return sank(18, "top"); }},
         {19, "the order asymmetry, |gap(A, B) - gap(B, C)|",
          [] { return std::abs(gapAtTheMoment(19, "A", "B") - gapAtTheMoment(19, "B", "C")); }},
-        // The moment shows A a watched second after its reset, flying on over D: where it was
-        // reset is the point of impact's mark.
+        // The moment pauses at the end of the frame that reset A ("watch": 0): where it was reset
+        // is the point of impact's mark.
         {20, "how far short of D A is reset (no overlap): the point of impact's mark to D",
          [] {
              const Rect poi = markAtTheMoment(20, "POI");

@@ -113,7 +113,8 @@ void drawSceneCaption(App& app, const std::vector<CaptionLine>& lines,
     std::vector<CaptionLine> shown;
     float width = 0.0f;
     ImVec2 plate;
-    // Narrower, a share of its width, never wider than the scene less its margins.
+    // Narrower, a share of its width, never wider than the scene less its margins. (Where every
+    // narrower plate hides a text the plate stays as it is, even wider than the scene.)
     const float room = static_cast<float>(app.view.camera.viewport().width) - 32.0f * s;
     const float fits = natural > room && room > 0.0f ? room / natural : 1.0f;
     const float shares[] = {1.0f, fits, 0.6f, 0.4f, 0.25f};
