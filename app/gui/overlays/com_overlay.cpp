@@ -99,11 +99,18 @@ void drawMomentaDiagram(App& app) {
     arrow(dl, a, b, uiMarkColor(Mark::Total), width * 1.3f, head * 1.2f);
     dl->AddCircleFilled(map(Vec2{}), width * 1.5f, uiMarkColor(Mark::Total));
     if (len > 1.0f) {
+        // Beside the total's middle, on the side away from the chain, its nearest edge half a
+        // shift clear of the arrow (a label centred on the line was cut by it: "tota|").
         const char* text = "total";
         const ImVec2 ts = ImGui::CalcTextSize(text);
-        dl->AddText(
-            ImVec2((a.x + b.x - ts.x) * 0.5f + off.x * 1.5f, (a.y + b.y) * 0.5f + off.y * 1.2f),
-            uiMarkColor(Mark::Total), text);
+        const ImVec2 n(off.x / shift, off.y / shift);
+        const float reach =
+            std::abs(n.x) * ts.x * 0.5f + std::abs(n.y) * ts.y * 0.5f + width + shift * 0.5f;
+        const float x = (a.x + b.x - ts.x) * 0.5f + n.x * reach;
+        const float y = (a.y + b.y - ts.y) * 0.5f + n.y * reach;
+        dl->AddText(ImVec2(std::clamp(x, lo.x, std::max(lo.x, hi.x - ts.x)),
+                           std::clamp(y, lo.y, std::max(lo.y, hi.y - ts.y))),
+                    uiMarkColor(Mark::Total), text);
     }
 }
 
