@@ -205,7 +205,10 @@ TEST_P(EveryOverlay, NoWindowCoversTheWorldAndNoneLeavesTheImage) {
     EXPECT_GT(world.w, 0.0);
     EXPECT_GT(world.h, 0.0);
     const auto& windows = j.at("windows");
-    EXPECT_GE(windows.size(), 7u) << "the panel and six overlay windows";
+    // Windows that do not fit side by side fold into tabs (issue 39): the shown ones and the
+    // folded ones ("folded", each behind a tab) together.
+    const std::size_t folded = j.contains("folded") ? j.at("folded").size() : 0;
+    EXPECT_GE(windows.size() + folded, 7u) << "the panel and six overlay windows";
     for (const auto& w : windows) {
         const std::string name = w.at("name").get<std::string>();
         const Rect r = rectOf(w.at("rect"));
