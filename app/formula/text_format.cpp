@@ -219,8 +219,10 @@ bool isOperatorWord(const std::string& w) {
     return false;
 }
 
-// The words of `text` between `from` and `to` (a line), indented when it continues a formula.
+// The words of `text` between `from` and `to` (a line), indented when it continues a formula;
+// the spaces of a gap at its end (a line broken before an aside) left out.
 std::string lineOf(const std::vector<std::string>& words, std::size_t from, std::size_t to) {
+    while (to > from + 1 && words[to - 1].empty()) --to;
     std::string line = from > 0 && isOperatorWord(words[from]) ? "  " : "";
     for (std::size_t k = from; k < to; ++k) line += (k > from ? " " : "") + words[k];
     return line;
@@ -274,12 +276,14 @@ void wrapFormulaParagraph(const std::string& text, double width,
         if (measure(lineOf(words, k - 1, k + 2)) > width) continue;
         inGroup[k] = inGroup[k + 1] = true;
     }
-    // A line may start at word k when neither k nor the word before it is empty (a double space
-    // stays inside a line), the word before is not an operator (unless k opens a group that
-    // fits only on its own) and k is not inside a short group in parentheses.
+    // A line may start at word k when k is not empty (the spaces of a gap stay together), the
+    // word before is not an operator (unless k opens a group that fits only on its own) and k
+    // is not inside a short group in parentheses. So a line may start after a gap of spaces, at
+    // an aside ("v2' = v2 = 0   (infinite mass: unchanged)"): the aside goes under the equation
+    // rather than run past the window's edge; the gap's spaces end no line.
     const auto canStart = [&](std::size_t k) {
-        return k > 0 && !words[k].empty() && !words[k - 1].empty() &&
-               (!isOperatorWord(words[k - 1]) || groupOnItsOwn[k]) && !inGroup[k];
+        return k > 0 && !words[k].empty() && (!isOperatorWord(words[k - 1]) || groupOnItsOwn[k]) &&
+               !inGroup[k];
     };
     std::vector<std::size_t> starts{0};
     while (true) {
@@ -292,7 +296,7 @@ void wrapFormulaParagraph(const std::string& text, double width,
             if (first == words.size()) first = k;
             if (measure(lineOf(words, from, k)) > width) break;
             next = k; // the line [from, k) fits: break there unless a later one does too
-            if (std::strchr(",:;", words[k - 1].back())) clause = k;
+            if (!words[k - 1].empty() && std::strchr(",:;", words[k - 1].back())) clause = k;
         }
         if (measure(lineOf(words, from, words.size())) <= width) break;
         if (clause != words.size() && measure(lineOf(words, from, clause)) >= 0.5 * width)

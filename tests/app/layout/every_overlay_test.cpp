@@ -40,27 +40,6 @@ const Screen kScreens[] = {
     {1920, 1080, 1.5, "1920x1080_ui1.5"},
 };
 
-// Screens where some scene still has a clipped text or a sideways scroll (issue 39): each is
-// printed, not failed. At 1280x800, UI 1.5, the windows fold into tabs (two regions: the right
-// column's, the bottom strip's); the collision inspector, 311 px wide there, still has formula
-// lines with a note that does not wrap ("(infinite mass: unchanged)") and a last line cut at its
-// bottom in a few scenes. A screen listed that passes fails the test: the list only shrinks.
-const char* const kScreensStillFailing[] = {"1280x800_ui1.5"};
-
-bool stillFailing(const Screen& screen) {
-    for (const char* dir : kScreensStillFailing)
-        if (std::string(dir) == screen.dir) return true;
-    return false;
-}
-
-// A failure at a screen that must pass, or a line printed at one still failing.
-void report(const Screen& screen, const std::string& what) {
-    if (stillFailing(screen))
-        std::printf("  known: %s\n", what.c_str());
-    else
-        ADD_FAILURE() << what;
-}
-
 struct Shot {
     const Screen* screen = nullptr;
     std::string scene;
@@ -148,29 +127,13 @@ TEST(EveryOverlay, NoTextIsClipped) {
                 for (const auto& t : *texts) {
                     if (!t.at("clipped").get<bool>()) continue;
                     ++clipped;
-                    report(screen, s.name() + ": '" + t.at("text").get<std::string>() + "' in " +
-                                       t.at("window").get<std::string>() + " at " +
-                                       printed(rectOf(t.at("rect"))) + " clipped");
+                    ADD_FAILURE() << s.name() << ": '" << t.at("text").get<std::string>() << "' in "
+                                  << t.at("window").get<std::string>() << " at "
+                                  << printed(rectOf(t.at("rect"))) << " clipped";
                 }
         }
         std::printf("%s: %d clipped texts over %zu scenes\n", screen.dir, clipped,
                     shippedScenes().size());
-    }
-}
-
-// The screens still failing: each has a clipped text or a sideways scroll somewhere.
-TEST(EveryOverlay, TheScreensStillFailingStillFail) {
-    for (const Screen& screen : kScreens) {
-        if (!stillFailing(screen)) continue;
-        bool fails = false;
-        for (const Shot& s : shots()) {
-            if (s.screen != &screen) continue;
-            fails |= s.layout.is_object() && s.layout.contains("sideways");
-            fails |= s.foldedLayout.is_object() && s.foldedLayout.contains("sideways");
-            for (const auto& t : s.texts) fails |= t.at("clipped").get<bool>();
-            for (const auto& t : s.foldedTexts) fails |= t.at("clipped").get<bool>();
-        }
-        EXPECT_TRUE(fails) << screen.dir << " passes now: take it out of kScreensStillFailing";
     }
 }
 
@@ -183,8 +146,8 @@ TEST(EveryOverlay, NoWindowScrollsSideways) {
                 if (!layout->contains("sideways")) continue;
                 for (const auto& w : layout->at("sideways")) {
                     ++sideways;
-                    report(screen, s.name() + ": " + w.at("name").get<std::string>() + " " +
-                                       printed(rectOf(w.at("rect"))) + " scrolls sideways");
+                    ADD_FAILURE() << s.name() << ": " << w.at("name").get<std::string>() << " "
+                                  << printed(rectOf(w.at("rect"))) << " scrolls sideways";
                 }
             }
         }

@@ -844,6 +844,12 @@ TEST(WrapFormula, BreaksBeforeOperatorsAndKeepsTheChainReadable) {
     EXPECT_EQ(wrapFormula("Here C = 1", 4, bytes), "Here\nC\n  = 1");
     EXPECT_EQ(wrapFormula("v = 2 + 3 = 5", 9, bytes), "v = 2 + 3\n  = 5");
     EXPECT_EQ(wrapFormula("one\ntwo = 2", 30, bytes), "one\ntwo = 2");
+    // An aside after a gap of spaces goes under its equation where the two do not fit on a line
+    // (the collision inspector, 311 px wide at 1280x800 UI 1.5, ran it past its edge); the gap
+    // stays where they fit.
+    const std::string aside = "v2' = v2 = 0   (infinite mass: unchanged)";
+    EXPECT_EQ(wrapFormula(aside, 30, bytes), "v2' = v2 = 0\n(infinite mass: unchanged)");
+    EXPECT_EQ(wrapFormula(aside, 41, bytes), aside);
 }
 
 // Issue 25: the inspector shows the friction rule that acted, |dvt| <= mu·|dvn|, with numbers

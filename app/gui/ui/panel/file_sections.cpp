@@ -13,16 +13,36 @@
 #include <cmath>
 #include <string>
 
+namespace {
+
+// `name` as a combo `room` px wide shows it: whole where it fits, else its first words that fit
+// with "..." after them (ImGui would cut it mid-letter at the arrow).
+std::string fittedName(const std::string& name, float room) {
+    if (ImGui::CalcTextSize(name.c_str()).x <= room) return name;
+    for (std::size_t end = name.rfind(' '); end != std::string::npos && end > 0;
+         end = name.rfind(' ', end - 1)) {
+        const std::string shown = name.substr(0, end) + "...";
+        if (ImGui::CalcTextSize(shown.c_str()).x <= room) return shown;
+    }
+    return name; // not even its first word fits: cut as ImGui cuts it
+}
+
+} // namespace
+
 void scenePicker(App& app) {
-    const char* preview = app.sim.scene.name.empty() ? "(no scene)" : app.sim.scene.name.c_str();
     const char* copyLink = "Copy link";
     const ImGuiStyle& style = ImGui::GetStyle();
     const float copyWidth = app.ui.inBrowser ? ImGui::CalcTextSize(copyLink).x +
                                                    2.0f * style.FramePadding.x + style.ItemSpacing.x
                                              : 0.0f;
     ImGui::SetNextItemWidth(-1.0f - copyWidth);
+    // The preview's room: the combo's width less its arrow and its padding.
+    const float room = ImGui::GetContentRegionAvail().x - copyWidth - ImGui::GetFrameHeight() -
+                       2.0f * style.FramePadding.x;
+    const std::string& name = app.sim.scene.name;
+    const std::string preview = name.empty() ? "(no scene)" : fittedName(name, room);
     // Taller than the default 8 rows: every shipped scene at once, in the lecture's order.
-    if (ImGui::BeginCombo("##scene", preview, ImGuiComboFlags_HeightLargest)) {
+    if (ImGui::BeginCombo("##scene", preview.c_str(), ImGuiComboFlags_HeightLargest)) {
         uiBeginRows();
         for (const SceneEntry& e : app.shipped.scenes) {
             const bool current = e.path == app.sim.scenePath;
@@ -42,8 +62,10 @@ void scenePicker(App& app) {
         uiEndRows();
         ImGui::EndCombo();
     }
-    tooltip("The shipped scenes in the lecture's order (app/scenes/lecture_order.txt), and "
-            "lessons (lessons/)");
+    const std::string whole = !name.empty() && preview != name ? name + "\n\n" : "";
+    tooltip((whole + "The shipped scenes in the lecture's order (app/scenes/lecture_order.txt), "
+                     "and lessons (lessons/)")
+                .c_str());
     if (!app.ui.inBrowser) return;
     ImGui::SameLine();
     if (ImGui::Button(copyLink)) app.ui.copyLinkRequested = true;

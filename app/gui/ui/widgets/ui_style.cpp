@@ -5,6 +5,7 @@
 #include "palette.h"
 #include "text_format.h"
 #include "view.h"
+#include "whole_rows.h"
 
 #include <imgui.h>
 
@@ -308,14 +309,24 @@ const std::string& wrappedAtSpaces(const std::string& text, float width) {
     return wrapped(text, width, false);
 }
 
-void textWrappedAtSpaces(const std::string& text) {
-    const std::string& lines = wrapped(text, ImGui::GetContentRegionAvail().x, false);
+namespace {
+
+// A wrapped text's lines: one row for a region that shows whole rows (an equation is not shown
+// without its result).
+void textLines(const std::string& lines) {
     ImGui::TextUnformatted(lines.c_str(), lines.c_str() + lines.size());
+    if (lines.find('\n') != std::string::npos)
+        WholeRows::keepTogether(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
+}
+
+} // namespace
+
+void textWrappedAtSpaces(const std::string& text) {
+    textLines(wrapped(text, ImGui::GetContentRegionAvail().x, false));
 }
 
 void textWrappedFormula(const std::string& text) {
-    const std::string& lines = wrapped(text, ImGui::GetContentRegionAvail().x, true);
-    ImGui::TextUnformatted(lines.c_str(), lines.c_str() + lines.size());
+    textLines(wrapped(text, ImGui::GetContentRegionAvail().x, true));
 }
 
 void wrappedTooltip(const std::string& text) {

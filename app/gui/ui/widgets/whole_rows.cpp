@@ -19,6 +19,8 @@ struct Hidden {
 };
 // By the region's draw list (a window keeps its own from frame to frame).
 std::map<const ImDrawList*, Hidden> gHidden;
+// The texts kept together (WholeRows::keepTogether) in the regions being drawn, by draw list.
+std::map<const ImDrawList*, std::vector<imgui_ext::Span>> gTogether;
 
 ImVec2 scrollOfWindow() {
     return ImVec2(ImGui::GetScrollX(), ImGui::GetScrollY());
@@ -29,6 +31,7 @@ ImVec2 scrollOfWindow() {
 WholeRows::WholeRows() : mark_(imgui_ext::markDrawing()) {
     // Right after Begin: the window's clip rectangle, inside its frame and scroll bars.
     ImDrawList* list = ImGui::GetWindowDrawList();
+    gTogether[list].clear(); // from here on its texts kept together are noted
     clipTop_ = list->GetClipRectMin().y;
     clipBottom_ = list->GetClipRectMax().y;
     // The mouse over a strip hidden in the frame before reaches nothing under it.
@@ -49,14 +52,27 @@ WholeRows::WholeRows() : mark_(imgui_ext::markDrawing()) {
     }
 }
 
+void WholeRows::keepTogether(ImVec2 min, ImVec2 max) {
+    // Noted only where a region that shows whole rows is being drawn.
+    const auto it = gTogether.find(ImGui::GetWindowDrawList());
+    if (it != gTogether.end()) it->second.push_back(imgui_ext::Span{min.y, max.y});
+}
+
 void WholeRows::end() {
+    std::vector<imgui_ext::Span> together;
+    if (const auto it = gTogether.find(mark_.list); it != gTogether.end()) {
+        together = std::move(it->second);
+        gTogether.erase(it);
+    }
     if (!imgui_ext::stillDrawing(mark_)) return; // ended in another window
     const float top = clipTop_, bottom = clipBottom_;
-    // Every triangle drawn, as the span of heights it covers; a tall one (a background) is no row,
-    // nor the keyboard's focus ring (its colour is no control's): it reaches into the gaps between
-    // rows and would join the focused row to the next, hiding it with a row cut under it.
+    // Every triangle drawn, as the span of heights it covers, and the texts kept together; a tall
+    // one (a background) is no row, nor the keyboard's focus ring (its colour is no control's):
+    // it reaches into the gaps between rows and would join the focused row to the next, hiding
+    // it with a row cut under it.
     std::vector<imgui_ext::Span> spans =
         imgui_ext::drawnSince(mark_, ImGui::GetColorU32(ImGuiCol_NavHighlight));
+    spans.insert(spans.end(), together.begin(), together.end());
     spans.erase(std::remove_if(
                     spans.begin(), spans.end(),
                     [&](const imgui_ext::Span& s) { return s.y1 - s.y0 >= 0.5f * (bottom - top); }),

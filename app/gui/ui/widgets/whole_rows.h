@@ -17,6 +17,11 @@ class WholeRows {
     WholeRows();
     // Call right before End or EndChild: narrows what was drawn since the constructor.
     void end();
+    // A text of several lines (a wrapped equation, a paragraph) drawn into the current window at
+    // `min`-`max` (screen px): one row, hidden whole where an edge would cut it, rather than
+    // shown without its last line ("p after = 0.01·(-300)" without "= -3 kg·m/s"). A text taller
+    // than half the region stays lines, as a background is no row.
+    static void keepTogether(ImVec2 min, ImVec2 max);
 
   private:
     imgui_ext::DrawMark mark_;   // where the region's content starts in its window's draw list
