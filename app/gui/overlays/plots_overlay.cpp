@@ -5,6 +5,7 @@
 #include "csv_export.h"
 #include "overlay_window.h"
 #include "plot_widget.h"
+#include "slider.h"
 #include "ui_style.h"
 
 #include <algorithm>
@@ -130,8 +131,8 @@ void drawPlotsOverlay(App& app) {
     const double newest =
         tm.energy.size() > 0 ? std::max(now, tm.energy.time(tm.energy.size() - 1)) : now;
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
-    ImGui::SliderFloat("time window", &app.ui.plotSpanSeconds, 2.0f, 60.0f, "%.0f s",
-                       ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    uiSliderFloat("time window", &app.ui.plotSpanSeconds, 2.0f, 60.0f, "%.0f s",
+                  ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     exportButtons(app);
     // Until the window fills, the axis grows with the run (at least 2 s), then it scrolls.
     const double span = std::clamp(newest * 1.05, 2.0, static_cast<double>(app.ui.plotSpanSeconds));

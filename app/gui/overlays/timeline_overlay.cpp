@@ -3,6 +3,7 @@
 // frame replays from there (the same states, bit for bit, unless something is changed).
 #include "app_frame.h"
 #include "overlay_window.h"
+#include "slider.h"
 #include "ui_style.h"
 
 #include <cstdio>
@@ -57,8 +58,8 @@ void drawTimelineOverlay(App& app) {
     ImGui::SetNextItemWidth(-1.0f); // the slider on its own line: it must show frame and time
     char label[64];
     std::snprintf(label, sizeof label, "frame %%d   t = %.2f s", app.sim.world().time);
-    if (ImGui::SliderInt("##frame", &frame, static_cast<int>(first), static_cast<int>(last), label,
-                         ImGuiSliderFlags_AlwaysClamp)) {
+    if (uiSliderInt("##frame", &frame, static_cast<int>(first), static_cast<int>(last), label,
+                    ImGuiSliderFlags_AlwaysClamp)) {
         go(frame);
     }
     markFirstDifference(app, first, last);

@@ -10,6 +10,7 @@
 #include "overlay_window.h"
 #include "save_naming.h"
 #include "settings_sections.h"
+#include "slider.h"
 #include "text_format.h"
 #include "typed_field.h"
 #include "ui_style.h"
@@ -247,7 +248,7 @@ void viewSection(App& app) {
     if (uiSmallButton(keyedLabel("clear trails", Action::ClearTrails, app.ui.touchUi).c_str()))
         applyAction(app, Action::ClearTrails);
     float scale = app.view.uiScale;
-    if (ImGui::SliderFloat("UI scale", &scale, 0.75f, 3.0f, "%.2f")) {
+    if (uiSliderFloat("UI scale", &scale, 0.75f, 3.0f, "%.2f")) {
         // Applied when released: rebuilding the font under the cursor would fight the slider.
         app.ui.messages.note = "UI scale applies on release";
     }
@@ -259,7 +260,7 @@ void viewSection(App& app) {
     }
     typedWarning(app, "UI scale");
     float labels = app.view.labelScale;
-    if (ImGui::SliderFloat("scene labels", &labels, kMinLabelScale, kMaxLabelScale, "%.2fx")) {
+    if (uiSliderFloat("scene labels", &labels, kMinLabelScale, kMaxLabelScale, "%.2fx")) {
         app.ui.messages.note = "Label size applies on release";
     }
     tooltip("Size of the block names and numbers in the scene, apart from the UI scale");
@@ -281,8 +282,8 @@ void viewSection(App& app) {
             "lower on a wall; at most 20 a second (a gas hums). Off by default outside lessons");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
-    ImGui::SliderFloat("volume", &app.sim.sound.volume, 0.0f, 1.0f, "%.2f",
-                       ImGuiSliderFlags_AlwaysClamp);
+    uiSliderFloat("volume", &app.sim.sound.volume, 0.0f, 1.0f, "%.2f",
+                  ImGuiSliderFlags_AlwaysClamp);
     const bool touch = app.ui.touchUi;
     if (ImGui::Button(keyedLabel("Fit view", Action::FitView, touch).c_str()))
         applyAction(app, Action::FitView);

@@ -6,6 +6,7 @@
 #include "panel_rows.h"
 #include "scene_json.h"
 #include "settings_table.h"
+#include "slider.h"
 #include "typed_field.h"
 #include "ui_style.h"
 
@@ -62,8 +63,7 @@ void numberSlider(App& app, const WorldKey& row, const PanelRow& panel, const Wo
     const double shown = row.shown.asRate ? 1.0 / value : value;
     float typed = static_cast<float>(shown);
     const float width = ImGui::CalcItemWidth();
-    if (widgetChanged(app,
-                      ImGui::SliderFloat(panel.label, &typed, panel.min, panel.max, panel.format,
+    if (widgetChanged(app, uiSliderFloat(panel.label, &typed, panel.min, panel.max, panel.format,
                                          panel.logarithmic ? ImGuiSliderFlags_Logarithmic : 0))) {
         double taken = shown;
         if (acceptTyped(app, panel.label, typed, panel.format, shown,
@@ -85,8 +85,8 @@ void numberSlider(App& app, const WorldKey& row, const PanelRow& panel, const Wo
 
 void wholeSlider(App& app, const WorldKey& row, const PanelRow& panel, const WorldSettings& s) {
     int typed = s.*row.whole;
-    if (widgetChanged(app, ImGui::SliderInt(panel.label, &typed, static_cast<int>(panel.min),
-                                            static_cast<int>(panel.max), panel.format))) {
+    if (widgetChanged(app, uiSliderInt(panel.label, &typed, static_cast<int>(panel.min),
+                                       static_cast<int>(panel.max), panel.format))) {
         double k = s.*row.whole;
         if (acceptTyped(app, panel.label, typed, panel.format, k, row.range, k)) {
             WorldSettings next = s;
@@ -102,8 +102,8 @@ void pairSlider(App& app, const WorldKey& row, const PanelRow& panel, const Worl
     WorldSettings next = s;
     float typed[2] = {static_cast<float>(value.x), static_cast<float>(value.y)};
     // Ctrl+click types a value beyond the slider: any within the limits is taken.
-    if (widgetChanged(app, ImGui::SliderFloat2(("##" + std::string(row.key)).c_str(), typed,
-                                               panel.min, panel.max, panel.format)) &&
+    if (widgetChanged(app, uiSliderFloat2(("##" + std::string(row.key)).c_str(), typed, panel.min,
+                                          panel.max, panel.format)) &&
         acceptTyped2(app, panel.label, typed, panel.format, value, row.range, next.*row.pair))
         applyRow(app, row, panel, next);
     tooltip(panel.tooltip);
@@ -210,8 +210,7 @@ void simulationSection(App& app) {
     settingWidgets(app, PanelSection::Simulation);
     if (app.log.verbose) app.log.layoutLogged = true;
     float scale = static_cast<float>(app.sim.timeScale);
-    if (ImGui::SliderFloat("time scale", &scale, 0.05f, 4.0f, "%.2fx",
-                           ImGuiSliderFlags_Logarithmic)) {
+    if (uiSliderFloat("time scale", &scale, 0.05f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) {
         acceptTyped(app, "time scale", scale, "%.2fx", app.sim.timeScale, limits::kTimeScale,
                     app.sim.timeScale);
     }
@@ -234,8 +233,8 @@ void physicsSection(App& app) {
             "own force while held). The arrows then do not step a lesson: PageDown / PageUp do "
             "(slide \"Spaceship thruster: big ship: slow acceleration; small ship: fast\")");
     float thrust = static_cast<float>(app.sim.thrust.force);
-    if (ImGui::SliderFloat("thrust force", &thrust, 0.1f, 1000.0f, "%.3g N",
-                           ImGuiSliderFlags_Logarithmic)) {
+    if (uiSliderFloat("thrust force", &thrust, 0.1f, 1000.0f, "%.3g N",
+                      ImGuiSliderFlags_Logarithmic)) {
         acceptTyped(app, "thrust force", thrust, "%.3g N", app.sim.thrust.force, limits::kThrust,
                     app.sim.thrust.force);
     }
@@ -280,8 +279,7 @@ void selectedSection(App& app) {
         const BlockPanelRow& massPanel = blockPanelRow("mass");
         float mass = static_cast<float>(b.mass);
         double newMass = b.mass;
-        if (widgetChanged(app,
-                          ImGui::SliderFloat(massPanel.label, &mass, 0.01f, 1000.0f,
+        if (widgetChanged(app, uiSliderFloat(massPanel.label, &mass, 0.01f, 1000.0f,
                                              massPanel.format, ImGuiSliderFlags_Logarithmic)) &&
             acceptTyped(app, massPanel.label, mass, massPanel.format, b.mass, massRow.range,
                         newMass) &&
