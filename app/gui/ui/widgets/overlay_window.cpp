@@ -91,16 +91,11 @@ std::vector<CaptionLine> wrappedCaption(const std::vector<CaptionLine>& lines, f
     return out;
 }
 
-// The area of the texts drawn so far (but the axis numbers) that a plate at `at` would hide.
-double hiddenText(const App& app, ImVec2 at, ImVec2 size) {
+bool hidesText(const App& app, ImVec2 at, ImVec2 size) {
     const ScreenRect plate{at.x, at.y, size.x, size.y};
-    double hidden = 0.0;
-    for (const ScreenRect& t : textsNotYielding(app)) {
-        const double w = std::min(plate.x + plate.width, t.x + t.width) - std::max(plate.x, t.x);
-        const double h = std::min(plate.y + plate.height, t.y + t.height) - std::max(plate.y, t.y);
-        if (w > 0.0 && h > 0.0) hidden += w * h;
-    }
-    return hidden;
+    const std::vector<ScreenRect> texts = textsNotYielding(app);
+    return std::any_of(texts.begin(), texts.end(),
+                       [&plate](const ScreenRect& t) { return rectsOverlap(plate, t); });
 }
 
 } // namespace
@@ -113,34 +108,33 @@ void drawSceneCaption(App& app, const std::vector<CaptionLine>& lines,
     float natural = 0.0f;
     for (const CaptionLine& l : lines)
         natural = std::max(natural, ImGui::CalcTextSize(l.text.c_str()).x);
-    // As it is where it fits the scene less its margins, else wrapped to that width; where that
-    // hides a text (a box full of labelled blocks), narrower and taller (the scene's margin
-    // beside the world may hold it). Never wider than the scene: a plate wider ran under the
-    // docked windows beside it, its words cut (step 5 of lecture3 at 1280x800, UI 1.5). Where
-    // every width hides a text, the one hiding the least of them.
+    // As it is; where that hides a text (a box full of labelled blocks), narrower and taller
+    // (the scene's margin beside the world may hold it).
     std::vector<CaptionLine> shown;
     float width = 0.0f;
     ImVec2 plate;
+    // Narrower, a share of its width, never wider than the scene less its margins. (Where every
+    // narrower plate hides a text the plate stays as it is, even wider than the scene.)
     const float room = static_cast<float>(app.view.camera.viewport().width) - 32.0f * s;
     const float fits = natural > room && room > 0.0f ? room / natural : 1.0f;
-    const float shares[] = {1.0f, 0.8f, 0.6f, 0.4f, 0.25f};
-    double leastHidden = INFINITY;
-    for (const float share : shares) {
+    const float shares[] = {1.0f, fits, 0.6f, 0.4f, 0.25f};
+    for (std::size_t k = 0; k < std::size(shares); ++k) {
+        const float share = shares[k];
+        if (k == 1 && fits == 1.0f) continue; // it fits the scene as it is
         float widest = natural;
-        const float wrapAt = natural * share * fits;
+        const float wrapAt = k == 0 ? natural : natural * std::min(share, fits);
         std::vector<CaptionLine> tried =
             wrapAt < natural ? wrappedCaption(lines, wrapAt, widest) : lines;
         // The plate is 6 px (x UI scale) wider than the text on each side, 4 px taller.
         const ImVec2 size(widest + 12.0f * s, static_cast<float>(tried.size()) * font + 8.0f * s);
         const ImVec2 at = sceneCaptionPlace(app, size.x, size.y, boxes);
-        const double hidden = hiddenText(app, at, size);
-        if (hidden < leastHidden) {
-            leastHidden = hidden;
+        const bool hides = hidesText(app, at, size);
+        if (k == 0 || !hides) { // as it is, unless a narrower one hides nothing
             shown = std::move(tried);
             width = widest;
             plate = at;
         }
-        if (hidden <= 0.0) break;
+        if (!hides) break;
     }
     const float n = static_cast<float>(shown.size());
     app.ui.captionPlates.push_back({plate.x, plate.y, width + 12.0f * s, n * font + 8.0f * s});

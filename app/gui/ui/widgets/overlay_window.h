@@ -75,9 +75,8 @@ struct CaptionLine {
 ImVec2 sceneCaptionPlace(const App& app, float width, float height,
                          const std::vector<WorldBox>& boxes);
 // Lines of text on a plate over the scene, where sceneCaptionPlace finds room (the point of
-// impact's numbers, the student's trace), never wider than the scene less its margins (the lines
-// wrapped, wrapFormula); where the plate would hide a label there, the lines wrapped narrower
-// if that finds a spot hiding none (else the width hiding the least).
+// impact's numbers, the student's trace); where the plate would hide a label there, the lines
+// wrapped narrower (wrapFormula) if that finds a spot hiding none.
 void drawSceneCaption(App& app, const std::vector<CaptionLine>& lines,
                       const std::vector<WorldBox>& boxes);
 
