@@ -121,10 +121,16 @@ void drawLabels(const App& app, ImDrawList* dl, Taken& placed) {
             // Beside the block; in a crowded scene only for the selected one (a hundred names
             // pushed around each other are noise).
             const float x = static_cast<float>(c.x) - nameSize.x * 0.5f;
-            const float above = static_cast<float>(c.y - hPx * 0.5) - lineHeight - 2.0f;
-            const float below = static_cast<float>(c.y + hPx * 0.5) + 2.0f;
-            const ImVec2 at =
-                freeSpot(placed, app.view.camera.viewport(), x, above, below, nameSize, lineHeight);
+            // Above or below it, in the view: a block taller than the view (step 2's wall) has
+            // its name at the view's top or bottom edge rather than outside the scene.
+            const ScreenRect& vp = app.view.camera.viewport();
+            const float top = static_cast<float>(vp.y) + 2.0f;
+            const float bottom =
+                std::max(top, static_cast<float>(vp.y + vp.height) - lineHeight - 2.0f);
+            const float above =
+                std::clamp(static_cast<float>(c.y - hPx * 0.5) - lineHeight - 2.0f, top, bottom);
+            const float below = std::clamp(static_cast<float>(c.y + hPx * 0.5) + 2.0f, top, bottom);
+            const ImVec2 at = freeSpot(placed, vp, x, above, below, nameSize, lineHeight);
             placed.texts.push_back(spanning(at.x, at.y, at.x + nameSize.x, at.y + nameSize.y));
             shadowText(dl, at, beside, name.c_str(), packed(theme().textShadow));
         }
@@ -153,7 +159,7 @@ void placeAxisNumbers(App& app, Taken& placed) {
     // (with room between them: 60 px a grid line, as a major line has at least)
     const double step =
         majorsInView < 2.0 && grid * cam.pixelsPerMetre() >= 5.0 * 12.0 ? grid : major;
-    const float gap = 14.0f;
+    const float gap = static_cast<float>(kAxisRowGapPx);
     // Where the floor (the left wall) is below (left of) the view, the numbers go on its edge.
     const Vec2 corner = cam.worldToScreen(bounds.min);
     const bool floorHidden = corner.y > vp.y + vp.height;

@@ -1,6 +1,7 @@
 #include "view.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 double panelWidth(float uiScale, double displayWidth) {
@@ -9,6 +10,11 @@ double panelWidth(float uiScale, double displayWidth) {
 
 bool panelFits(float uiScale, double displayWidth) {
     return kPanelPxAtScale1 * static_cast<double>(uiScale) <= displayWidth * kMaxPanelShare;
+}
+
+double fitMarginPx(float uiScale, double displayHeight) {
+    return std::max(kFitMarginPx * static_cast<double>(uiScale),
+                    std::ceil(kSceneLabelShare * displayHeight) + kAxisRowGapPx);
 }
 
 std::string ClassroomScreen::name() const {
@@ -84,7 +90,7 @@ void updateCamera(View& view, const World& world, bool captionBar, double displa
     view.camera.setViewport(view.layout.scene);
     if (view.autoFit) {
         const Bounds& bounds = view.fitBounds ? *view.fitBounds : world.bounds;
-        view.camera.fit(bounds, kFitMarginPx * static_cast<double>(view.uiScale));
+        view.camera.fit(bounds, fitMarginPx(view.uiScale, displayHeight));
     }
     view.camera.setCentre(view.camera.centre() +
                           followShift(view.frameCamera, world, view.frame, view.autoFit));

@@ -95,6 +95,14 @@ ScreenRect sceneViewport(const View& view, bool captionBar, double displayWidth,
 // Pixels (at UI scale 1) between the world's bounds and the scene's rectangle when the camera
 // fits the world: room for the axis numbers and, at the top, the status badge or caption.
 constexpr double kFitMarginPx = 36.0;
+// The scene's labels (block names, axis numbers) take this share of the display's height at
+// least (ui_style.h: 24 px at 1080, 48 px at 2160): the fit's margin keeps room for the axis
+// numbers' row under the floor (scene_view.cpp's placeAxisNumbers, kAxisRowGapPx under it), which
+// kFitMarginPx at a small UI scale on a tall display does not (3840x2160 at UI 1 lifted the row
+// over the blocks resting on the floor).
+constexpr double kSceneLabelShare = 0.022;
+constexpr double kAxisRowGapPx = 14.0;
+double fitMarginPx(float uiScale, double displayHeight);
 // On a narrow screen (sheetLayout) too the fit shows the whole world: a phone held upright sees
 // every block of the scene first (the default scene's 0.6 m block is then about 10 CSS px wide
 // at 390 CSS px; two fingers or the wheel zoom in, a drag on empty space pans).

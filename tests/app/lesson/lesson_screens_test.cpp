@@ -1,14 +1,15 @@
-// The lesson sweep at the lecture halls' other screens (issue 39): every step of
-// lessons/lecture3.json at its setup and its moment on a 1280x800 and a 1024x768 projector at UI
-// scales 1 and 1.5, at 1920x1080 at 1.5 (the README's projector setting) and 2, at 1280x720 and
-// 1920x1200 at 1.25, 1366x768 at 1.5 and 3840x2160 at 2 (kScreens), from one run of
+// The lesson sweep at the lecture halls' screens (issue 39): every step of lessons/lecture3.json
+// at its setup and its moment at 1024x768, 1280x720, 1280x800, 1366x768, 1920x1080, 1920x1200
+// and 3840x2160, each at UI scales 1, 1.25, 1.5 and 2 where the controls panel fits (its 350 px
+// x scale at most 45% of the width, view.h's panelFits: 1024 px takes 1 and 1.25, 1280 and
+// 1366 px up to 1.5, 1920 and 3840 px all four: kScreens, 23 screens), from one run of
 // `sandbox-offscreen --record-steps DIR --screens ...` (the layout and text JSON of each, nothing
 // rasterised: DIR/WxH_uiS/step_NN_setup.* and step_NN_moment.*). Checked on each: the caption bar
 // takes at most 30% of the height and none of its text is cut, the setup asks and the moment
 // answers whole, and the world at the answer keeps at least 85% of its area at the setup (the
-// windows the moment opens do not squeeze the scene); no text drawn over the scene overlaps
-// another or a block or mark it does not name; the blocks a step names are big enough to see.
-// The figures per screen are printed.
+// windows the moment opens do not squeeze the scene); no text drawn over the scene runs out of
+// it, overlaps another or a block or mark it does not name; the blocks a step names are big enough
+// to see. The figures per screen are printed.
 #include "frame_json.h"
 #include "lecture3_lesson.h"
 #include "lesson.h"
@@ -37,13 +38,22 @@ struct Screen {
     const char* dir; // as sandbox-offscreen names it (ClassroomScreen::name)
 };
 // The halls' projectors and laptops, at the UI scales a lecturer sets on them (and the panel
-// fits at): one sandbox-offscreen run writes them all (about 0.8 s a screen).
+// fits at; not: 1024x768 at 1.5 and 2, 1280x720, 1280x800 and 1366x768 at 2, where the panel
+// would take 51%, 68%, 55% and 51% of the width and is squeezed to 45%): one sandbox-offscreen
+// run writes them all (about 0.2 CPU s a screen).
 const Screen kScreens[] = {
-    {1280, 800, 1.0, "1280x800_ui1"},       {1280, 800, 1.5, "1280x800_ui1.5"},
-    {1024, 768, 1.0, "1024x768_ui1"},       {1024, 768, 1.5, "1024x768_ui1.5"},
-    {1920, 1080, 1.5, "1920x1080_ui1.5"},   {1280, 720, 1.25, "1280x720_ui1.25"},
-    {1366, 768, 1.5, "1366x768_ui1.5"},     {1920, 1080, 2.0, "1920x1080_ui2"},
-    {1920, 1200, 1.25, "1920x1200_ui1.25"}, {3840, 2160, 2.0, "3840x2160_ui2"},
+    {1024, 768, 1.0, "1024x768_ui1"},       {1024, 768, 1.25, "1024x768_ui1.25"},
+    {1280, 720, 1.0, "1280x720_ui1"},       {1280, 720, 1.25, "1280x720_ui1.25"},
+    {1280, 720, 1.5, "1280x720_ui1.5"},     {1280, 800, 1.0, "1280x800_ui1"},
+    {1280, 800, 1.25, "1280x800_ui1.25"},   {1280, 800, 1.5, "1280x800_ui1.5"},
+    {1366, 768, 1.0, "1366x768_ui1"},       {1366, 768, 1.25, "1366x768_ui1.25"},
+    {1366, 768, 1.5, "1366x768_ui1.5"},     {1920, 1080, 1.0, "1920x1080_ui1"},
+    {1920, 1080, 1.25, "1920x1080_ui1.25"}, {1920, 1080, 1.5, "1920x1080_ui1.5"},
+    {1920, 1080, 2.0, "1920x1080_ui2"},     {1920, 1200, 1.0, "1920x1200_ui1"},
+    {1920, 1200, 1.25, "1920x1200_ui1.25"}, {1920, 1200, 1.5, "1920x1200_ui1.5"},
+    {1920, 1200, 2.0, "1920x1200_ui2"},     {3840, 2160, 1.0, "3840x2160_ui1"},
+    {3840, 2160, 1.25, "3840x2160_ui1.25"}, {3840, 2160, 1.5, "3840x2160_ui1.5"},
+    {3840, 2160, 2.0, "3840x2160_ui2"},
 };
 
 struct Shot {
@@ -112,6 +122,9 @@ std::string captionWords(const Shot& s) {
     return out;
 }
 
+bool onIt(const Rect& in, const Rect& out);
+bool knownOverlap(const Shot& s);
+
 double area(const Rect& r) {
     return r.w * r.h;
 }
@@ -151,6 +164,29 @@ TEST(LessonScreens, NoCaptionTextIsClipped) {
             }
         }
         std::printf("%s: %d clipped caption texts\n", screen.dir, clipped);
+    }
+}
+
+// No text drawn over the scene (labels, values, axis numbers, a caption plate) runs out of the
+// scene's rectangle, under a docked window or the caption bar (step 2's wall had its name above
+// the scene; step 5's point-of-impact plate, wider than a 438 px scene at 1280x800 UI 1.5, runs
+// under the inspector, "crook": kKnownOverlaps).
+TEST(LessonScreens, EverySceneTextLiesInTheScene) {
+    for (const Screen& screen : kScreens) {
+        int outside = 0;
+        for (const Shot& s : shots()) {
+            if (s.screen != &screen || !s.layout.is_object() || knownOverlap(s)) continue;
+            const Rect scene = rectOf(s.layout.at("scene"));
+            for (const auto& t : s.texts) {
+                if (t.at("window") != "scene" || onIt(rectOf(t.at("rect")), scene)) continue;
+                ++outside;
+                ADD_FAILURE() << s.name() << ": '" << t.at("text").get<std::string>() << "' "
+                              << printed(rectOf(t.at("rect"))) << " out of the scene "
+                              << printed(scene);
+            }
+        }
+        std::printf("%s: %d scene texts out of the scene (known cases skipped: kKnownOverlaps)\n",
+                    screen.dir, outside);
     }
 }
 
@@ -214,11 +250,17 @@ struct KnownOverlap {
     bool moment;
     const char* why;
 };
-const KnownOverlap kKnownOverlaps[] = {
-    // The point of impact's caption plate (four lines) finds no room beside the blocks and the
-    // magnifiers in a scene 560 px wide: it covers the magnifier of 'other'.
-    {"1024x768_ui1.5", 5, true, "the caption plate over the magnifier of 'other'"},
-    {"1024x768_ui1.5", 27, true, "the momenta's values over the pile's blocks"},
+// The point of impact's caption plate (four lines, about 600 px wide at UI 1.5) at step 5's
+// moment, in a scene 390-440 px wide: as it is, it runs out of the scene under the inspector (its
+// words cut, "crook"); wrapped to the scene's width (tried) it found no spot and covered the
+// mover, its label and the point of impact's labels, which looks worse. Skipped by both checks
+// (the plate out of the scene, a text over another). (A fix: place the plate before the labels,
+// so that they go around it, or fold its lines behind a "more".)
+const std::vector<KnownOverlap> kKnownOverlaps = {
+    {"1024x768_ui1.25", 5, true, "the caption plate out of the scene"},
+    {"1280x720_ui1.5", 5, true, "the caption plate out of the scene"},
+    {"1280x800_ui1.5", 5, true, "the caption plate out of the scene"},
+    {"1366x768_ui1.5", 5, true, "the caption plate out of the scene"},
 };
 
 bool knownOverlap(const Shot& s) {
@@ -270,15 +312,16 @@ TEST(LessonScreens, NoSceneTextOverlapsAnotherOrWhatItDoesNotName) {
 }
 
 // Steps whose named blocks are still under the size at some screen, in the scene and in every
-// magnifier (magnifier.h). Step 26: at its moment the platformer's coin lies on the floor far
-// from the others and the four insets go to the crate, the lift, the shelf and the player (a
-// magnifier shows a long block's group whole or not at all). Each is printed; a step listed
-// that passes at every screen fails the test, so that the list only shrinks.
-const std::size_t kStepsStillSmall[] = {26};
+// magnifier (magnifier.h). Each is printed; a step listed that passes at every screen fails the
+// test, so that the list only shrinks. Step 26: at its moment the platformer's coin lies on the
+// floor far from the others and the four insets go to the crate, the lift, the shelf and the
+// player (a fifth inset, tried, found no free spot among the edge spots insetSpot tries: 12-23 px
+// at the screens up to 1366x768).
+const std::vector<std::size_t> kStepsStillSmall = {26};
 
 bool stillSmall(std::size_t step) {
-    return std::find(std::begin(kStepsStillSmall), std::end(kStepsStillSmall), step) !=
-           std::end(kStepsStillSmall);
+    return std::find(kStepsStillSmall.begin(), kStepsStillSmall.end(), step) !=
+           kStepsStillSmall.end();
 }
 
 // The short side of block `name` as a magnifier draws it (magnifier.h: its part in the inset),

@@ -32,10 +32,10 @@ ImFont* uiLabelFont();
 // The classroom's text (a lesson, present mode): sized by the window's height whatever the UI
 // scale, as a slide's text is (a slide's body text is about 4% of its height): the caption bar's
 // (title, caption, question or answer, method and t) kCaptionShare of it, 36 px at 1080, the
-// scene's labels kSceneLabelShare, 24 px at 1080; never smaller than the UI's own fonts. Baked
-// for the display's height (ImGui's DisplaySize) by uiFollowView, again when the height changes.
+// scene's labels kSceneLabelShare (view.h), 24 px at 1080; never smaller than the UI's own fonts.
+// Baked for the display's height (ImGui's DisplaySize) by uiFollowView, again when the height
+// changes.
 constexpr double kCaptionShare = 0.033;
-constexpr double kSceneLabelShare = 0.022;
 ImFont* uiCaptionFont();
 ImFont* uiSlideLabelFont();
 // The font of small docked windows (compactWindow in dock_layout.h): kCompactFontScale of the UI
