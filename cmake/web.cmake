@@ -9,9 +9,15 @@
 #                                               scripts/web.sh), with the GLFW backend
 #   glfw                                        emscripten's built-in GLFW 3 (-sUSE_GLFW=3)
 #   Threads::Threads                            empty: the web build runs on one thread
-# Scene files are parsed by nlohmann-json, which reports errors by throwing: keep C++ exceptions.
-add_compile_options(-fexceptions)
-add_link_options(-fexceptions)
+# Scene files are parsed by nlohmann-json, which reports errors by throwing: keep C++ exceptions,
+# as WebAssembly's own (-fwasm-exceptions: try/catch inside the wasm, no cost where nothing throws).
+# Emscripten's JavaScript way (-fexceptions) sent every call that might throw from a function with
+# something to clean up out to JavaScript and back (its invoke_ wrappers): about a tenth of a
+# frame. Debian's emscripten ships its C++ libraries built this way (libc++-except.a,
+# libc++abi-except.a, libunwind-except.a in its cache): nothing to build. Browsers run it since
+# Chrome 95, Firefox 100 and Safari 15.2.
+add_compile_options(-fwasm-exceptions)
+add_link_options(-fwasm-exceptions)
 
 set(SANDBOX_IMGUI_SOURCE_DIR "" CACHE PATH "Dear ImGui 1.86 sources (apt-get source imgui)")
 if(NOT EXISTS "${SANDBOX_IMGUI_SOURCE_DIR}/imgui.cpp")

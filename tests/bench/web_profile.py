@@ -3,7 +3,7 @@
 protocol's Profiler domain) over the running page, its samples summed by function.
 
   tests/bench/web_profile.py SITE [QUERY] [--frames N] [--ratio R] [--top K] [--gl-calls]
-                             [--inclusive] [--first-frame]
+                             [--inclusive] [--first-frame] [--invokes]
 
 SITE is a build-web/ folder; QUERY the page's URL parameters (e.g. "scene=gas_500&show=plots").
 Build the site with wasm function names kept to read them (a profiling build: the link's
@@ -21,6 +21,11 @@ the functions are also listed by their total time (their own and their callees':
 parts go, e.g. ImGui::NewFrame, appFrame, appRender, tellPage). With --first-frame, the page
 loaded once, then its warm reload is profiled up to its first frame shown (web_frame_bench.py's
 first frame): where that time goes (compiling the wasm, main(), the fonts, the first frame), in ms.
+With --invokes, the calls per frame through emscripten's invoke_ wrappers are counted by the
+function called (named in a profiling build): with exceptions in emscripten's JavaScript mode
+(-fexceptions), a call that may throw from code with something to clean up leaves the wasm for
+JavaScript and comes back through the function table; with WebAssembly's own exceptions
+(-fwasm-exceptions, cmake/web.cmake) there are none.
 """
 import collections
 import os
@@ -47,6 +52,106 @@ GL_COUNTER = """
   }
 })();
 """
+
+
+# Counts the calls through emscripten's invoke_ wrappers by the function table's index: the
+# wrappers are the wasm's imports that are JavaScript functions named invoke_* (the imports' and
+# their modules' own names are shortened), wrapped as the page instantiates the wasm.
+INVOKE_COUNTER = """
+(() => {
+  window.sandboxInvokes = {};
+  const wrap = (imports) => {
+    for (const module of Object.values(imports || {})) {
+      for (const name of Object.keys(module)) {
+        const f = module[name];
+        if (typeof f !== 'function' || !f.name.startsWith('invoke_')) continue;
+        module[name] = function (index) {
+          window.sandboxInvokes[index] = (window.sandboxInvokes[index] || 0) + 1;
+          return f.apply(this, arguments);
+        };
+      }
+    }
+  };
+  for (const name of ['instantiate', 'instantiateStreaming']) {
+    const original = WebAssembly[name];
+    WebAssembly[name] = function (source, imports) {
+      wrap(imports);
+      return original.apply(this, arguments);
+    };
+  }
+})();
+"""
+
+
+def wasm_function_names(path):
+    """The wasm's function names by function index, from its name section (a profiling build's;
+    {} without one)."""
+    data = open(path, "rb").read()
+
+    def leb(at):
+        value = shift = 0
+        while True:
+            byte = data[at]
+            at += 1
+            value |= (byte & 0x7F) << shift
+            shift += 7
+            if byte < 0x80:
+                return value, at
+
+    names, at = {}, 8
+    while at < len(data):
+        section, size, at = data[at], *leb(at + 1)
+        end = at + size
+        length, inner = leb(at)
+        if section == 0 and data[inner:inner + length] == b"name":
+            inner += length
+            while inner < end:
+                kind, size, inner = data[inner], *leb(inner + 1)
+                if kind == 1:  # function names
+                    count, j = leb(inner)
+                    for _ in range(count):
+                        index, j = leb(j)
+                        length, j = leb(j)
+                        names[index] = data[j:j + length].decode("utf-8", "replace")
+                        j += length
+                inner += size
+        at = end
+    return names
+
+
+def without_template_arguments(name):
+    """`name` with every template's arguments left out (std::vector<int> -> std::vector<>)."""
+    out, depth = [], 0
+    for at, c in enumerate(name):
+        if c == ">" and depth:
+            depth -= 1
+        if depth == 0:
+            out.append(c)
+        if c == "<" and not name[:at + 1].endswith("operator<"):
+            depth += 1
+    return "".join(out)
+
+
+def count_invokes(page, site, frames, top):
+    """Prints the invoke_ calls per frame over `frames` frames, by the function called."""
+    count = web_frame_bench.FRAME_COUNT
+    before = page.evaluate("Object.assign({}, window.sandboxInvokes)")
+    start = page.evaluate(count)
+    page.wait(lambda: page.evaluate(count) >= start + frames, "the frames")
+    after = page.evaluate("Object.assign({}, window.sandboxInvokes)")
+    frames = page.evaluate(count) - start
+    slots = sorted(after, key=lambda k: before.get(k, 0) - after[k])
+    # A table slot's function is the wasm's function of that index (its name is the index).
+    indices = page.evaluate("[" + ",".join(slots) + "].map((i) => wasmTable.get(i).name)")
+    names = wasm_function_names(os.path.join(site, "sandbox.wasm"))
+    calls = [((after[k] - before.get(k, 0)) / frames,
+              without_template_arguments(names.get(int(f), f"wasm-function[{f}]")))
+             for k, f in zip(slots, indices)]
+    print(f"{sum(n for n, _ in calls):.1f} calls per frame through invoke_ wrappers, over "
+          f"{frames} frames; the top {top} by the function called:")
+    for n, name in calls[:top]:
+        if n >= 0.05:
+            print(f"  {n:8.1f}  {name[:110]}")
 
 
 def self_times(profile):
@@ -121,6 +226,9 @@ def main():
     first_frame = "--first-frame" in args  # the warm reload up to its first frame
     if first_frame:
         args.remove("--first-frame")
+    invokes = "--invokes" in args  # the calls through invoke_ wrappers instead of profiling
+    if invokes:
+        args.remove("--invokes")
     for key in list(options):
         if key in args:
             at = args.index(key)
@@ -136,7 +244,11 @@ def main():
         if first_frame:
             return profile_first_frame(page, base, site, query, options["--top"])
         count = web_frame_bench.FRAME_COUNT
-        web_frame_bench.open_running(page, base, query, 30, (GL_COUNTER,) if count_gl else ())
+        scripts = (GL_COUNTER,) if count_gl else (INVOKE_COUNTER,) if invokes else ()
+        web_frame_bench.open_running(page, base, query, 30, scripts)
+        if invokes:
+            print(f"{site} ?{query}: ", end="")
+            return count_invokes(page, site, options["--frames"], options["--top"]) or 0
         if count_gl:
             before = page.evaluate("Object.assign({}, window.sandboxGlCalls)")
             start = page.evaluate(count)
