@@ -3,13 +3,22 @@
 # time (issue 7) and, side by side, the class poll's request handling (poll_fuzzer.cpp, issue 40)
 # for half as long: clang into ./build-fuzz, seed corpus tests/fuzz/corpus (copied, so the run
 # never changes the repository). Fails on any crash, leak, sanitizer report, timeout or out-of-memory;
-# the reproducer is left in build-fuzz/artifacts/. Usage: scripts/fuzz.sh [SECONDS] (default 60).
+# the reproducer is left in build-fuzz/artifacts/. Usage: scripts/fuzz.sh [SECONDS] (default 60);
+# `scripts/fuzz.sh build` only builds the two fuzzers, `scripts/fuzz.sh run [SECONDS]` only runs
+# them (.ci/run builds them beside the sanitizer stage, at the lowest priority, and runs them after).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+step=all
+case "${1:-}" in
+  build | run) step="$1" && shift ;;
+esac
 seconds="${1:-60}"
-source scripts/sanitized_configure.sh
-configure_sanitized build-fuzz -DSANDBOX_FUZZ=ON -DSANDBOX_BUILD_TESTS=ON
-cmake --build build-fuzz -j"$(nproc)" --target scene_fuzzer poll_fuzzer
+if [ "$step" != run ]; then
+  source scripts/sanitized_configure.sh
+  configure_sanitized build-fuzz -DSANDBOX_FUZZ=ON -DSANDBOX_BUILD_TESTS=ON
+  cmake --build build-fuzz -j"$(nproc)" --target scene_fuzzer poll_fuzzer
+fi
+[ "$step" != build ] || exit 0
 rm -rf build-fuzz/corpus build-fuzz/poll_corpus build-fuzz/artifacts
 mkdir -p build-fuzz/corpus build-fuzz/poll_corpus build-fuzz/artifacts
 cp tests/fuzz/corpus/* build-fuzz/corpus/
