@@ -11,6 +11,33 @@
 #include <cstdlib>
 #include <utility>
 
+JsonValue::JsonValue(nlohmann::json value) : json_(new nlohmann::json(std::move(value))) {}
+JsonValue::JsonValue(const JsonValue& other)
+    : json_(other.json_ ? new nlohmann::json(*other.json_) : nullptr) {}
+JsonValue::JsonValue(JsonValue&& other) noexcept : json_(std::exchange(other.json_, nullptr)) {}
+JsonValue& JsonValue::operator=(const JsonValue& other) {
+    if (this != &other) *this = JsonValue(other);
+    return *this;
+}
+JsonValue& JsonValue::operator=(JsonValue&& other) noexcept {
+    if (this != &other) {
+        delete json_;
+        json_ = std::exchange(other.json_, nullptr);
+    }
+    return *this;
+}
+JsonValue::~JsonValue() {
+    delete json_;
+}
+const nlohmann::json& JsonValue::operator*() const {
+    static const nlohmann::json null;
+    return json_ ? *json_ : null;
+}
+nlohmann::json& JsonValue::operator*() {
+    if (!json_) json_ = new nlohmann::json();
+    return *json_;
+}
+
 namespace {
 
 using json = nlohmann::json;
@@ -122,7 +149,7 @@ ApplyResult setWorld(EditTarget& t, const Edit& edit) {
     // The value replaces the old one whole (a set of names too), as a scene file's would.
     settings_table::copy(*row, defaultWorldSettings(), next);
     try {
-        readSetting(*row, edit.value, edit.key, next);
+        readSetting(*row, *edit.value, edit.key, next);
     } catch (const scene_json::ValueError& e) {
         return refused(edit, e.message);
     }
@@ -154,10 +181,10 @@ ApplyResult setBlock(EditTarget& t, const Edit& edit) {
     json block = blockJson(a.before);
     // The row's value as a scene file holds it; null: none, as if the file left it out (a
     // block's own friction then is the world's).
-    if (edit.value.is_null())
+    if (edit.value->is_null())
         block.erase(edit.key);
     else
-        block[edit.key] = edit.value;
+        block[edit.key] = *edit.value;
     try { // an unknown field is refused as in a file: "m2.weight: unknown key"
         a.after = parseBlock(block, refText(edit.block));
     } catch (const scene_json::ValueError& e) {
@@ -175,7 +202,7 @@ ApplyResult add(EditTarget& t, const Edit& edit) {
     AppliedEdit a;
     a.edit = edit;
     try {
-        a.after = parseBlock(edit.value, "add");
+        a.after = parseBlock(*edit.value, "add");
     } catch (const scene_json::ValueError& e) {
         ApplyResult r;
         r.error = {e.path, e.message};

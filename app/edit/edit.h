@@ -9,7 +9,7 @@
 #include "block_def.h"
 #include "world.h"
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <cstdint>
 #include <optional>
@@ -34,6 +34,28 @@ std::string refText(const BlockRef& ref);
 // "blocks[2]" is the place, anything else a name.
 BlockRef parseRef(const std::string& text);
 
+// A value as a scene file writes it (an nlohmann::json, null by default), held through a pointer
+// so that this header, which most of the app includes through the lesson and the edit log, needs
+// only json_fwd.hpp: json.hpp is ~25,000 lines to compile in every file (build time). `*value`
+// is the json; a copy copies it. Empty (no pointer) is the null json.
+class JsonValue {
+  public:
+    JsonValue() = default;
+    JsonValue(nlohmann::json value); // implicit, as a json is from its values
+    JsonValue(const JsonValue& other);
+    JsonValue(JsonValue&& other) noexcept;
+    JsonValue& operator=(const JsonValue& other);
+    JsonValue& operator=(JsonValue&& other) noexcept;
+    ~JsonValue();
+    const nlohmann::json& operator*() const;
+    nlohmann::json& operator*();
+    const nlohmann::json* operator->() const { return &**this; }
+    nlohmann::json* operator->() { return &**this; }
+
+  private:
+    nlohmann::json* json_ = nullptr; // owned; null: the null json
+};
+
 struct Edit {
     enum class Kind : std::uint8_t { SetWorld, SetBlock, Add, Remove };
     Kind kind = Kind::SetWorld;
@@ -41,7 +63,7 @@ struct Edit {
     BlockRef block;  // SetBlock, Remove
     // SetWorld, SetBlock: the value as a scene file writes it (null: a block's own value, such
     // as its friction, back to the world's); Add: the block as a scene file writes it.
-    nlohmann::json value;
+    JsonValue value;
 
     static Edit setWorld(const std::string& key, nlohmann::json value);
     static Edit setBlock(BlockRef block, const std::string& field, nlohmann::json value);

@@ -321,11 +321,11 @@ std::string logLineText(const JournalEntry& entry) {
         case Edit::Kind::SetWorld:
         case Edit::Kind::SetBlock:
             field("set", editKey(entry.edit));
-            field("value", entry.edit.value);
+            field("value", *entry.edit.value);
             if (entry.continues) field("continues", true);
             break;
         case Edit::Kind::Add:
-            field("add", entry.edit.value);
+            field("add", *entry.edit.value);
             break;
         case Edit::Kind::Remove:
             field("remove", refText(entry.edit.block));

@@ -5,6 +5,8 @@
 #include "scene.h"
 #include "settings_table.h"
 
+#include <nlohmann/json.hpp>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -203,7 +205,7 @@ TEST(EditHistory, UndoRedoAndAGestureIsOneStep) {
     ASSERT_TRUE(h.apply(e.target(), Edit::setBlock({1, ""}, "mass", 4), 5).applied);
     // The three values of the slider at one frame: one line, one undo step.
     ASSERT_EQ(h.journal().size(), 2u);
-    EXPECT_EQ(h.journal()[0].edit.value, 0.7);
+    EXPECT_EQ(*h.journal()[0].edit.value, 0.7);
     EXPECT_EQ(h.journal()[1].edit.block.name, "b"); // the journal names the block
     UndoResult u = h.undo(e.target(), 6);
     ASSERT_TRUE(u.edit);

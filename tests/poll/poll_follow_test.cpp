@@ -7,6 +7,8 @@
 #include "lesson_session.h"
 #include "poll_session.h"
 
+#include <nlohmann/json.hpp>
+
 #include <gtest/gtest.h>
 
 #include <string>

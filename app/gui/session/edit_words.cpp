@@ -91,7 +91,7 @@ std::string editLogLine(const Edit& logged, int index, const World& world,
         break;
     case Edit::Kind::SetBlock: // "m2 mass: 4" (the block "m2 = 2 kg")
         return spokenBlockName(labels, index) + " " + logged.key + ": " +
-               scene_json::dumpValue(logged.value);
+               scene_json::dumpValue(*logged.value);
     case Edit::Kind::Add:
         return "add: blocks[" + std::to_string(world.blocks.size() - 1) + "]";
     case Edit::Kind::Remove:

@@ -4,6 +4,8 @@
 #include "simulation_session.h"
 #include "view.h"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 
 namespace {

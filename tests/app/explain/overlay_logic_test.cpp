@@ -11,6 +11,8 @@
 #include "test_fixtures.h"
 #include "timeline.h"
 
+#include <nlohmann/json.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>

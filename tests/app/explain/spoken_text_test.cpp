@@ -6,6 +6,8 @@
 #include "lesson_session.h"
 #include "spoken_text.h"
 
+#include <nlohmann/json.hpp>
+
 #include <gtest/gtest.h>
 
 namespace {

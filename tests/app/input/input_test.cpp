@@ -6,6 +6,8 @@
 #include "placement.h"
 #include "test_fixtures.h"
 
+#include <nlohmann/json.hpp>
+
 #include <gtest/gtest.h>
 
 #include <set>

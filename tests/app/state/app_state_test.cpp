@@ -9,6 +9,8 @@
 #include "scene_library.h"
 #include "test_fixtures.h"
 
+#include <nlohmann/json.hpp>
+
 #include <gtest/gtest.h>
 
 #include <cstdio>

@@ -9,6 +9,8 @@
 #include "scene_geometry.h"
 #include "test_fixtures.h"
 
+#include <nlohmann/json.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
