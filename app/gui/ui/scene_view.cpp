@@ -121,15 +121,20 @@ void drawLabels(const App& app, ImDrawList* dl, Taken& placed) {
             // Beside the block; in a crowded scene only for the selected one (a hundred names
             // pushed around each other are noise).
             const float x = static_cast<float>(c.x) - nameSize.x * 0.5f;
-            // Above or below it, in the view: a block taller than the view (step 2's wall) has
-            // its name at the view's top or bottom edge rather than outside the scene.
+            // Above or below it; a block in the view but taller than it (step 2's wall) has its
+            // name at the view's top or bottom edge rather than outside the scene. (A block out
+            // of the view, panned or zoomed away, keeps its spots: no name at an edge for it.)
             const ScreenRect& vp = app.view.camera.viewport();
-            const float top = static_cast<float>(vp.y) + 2.0f;
-            const float bottom =
-                std::max(top, static_cast<float>(vp.y + vp.height) - lineHeight - 2.0f);
-            const float above =
-                std::clamp(static_cast<float>(c.y - hPx * 0.5) - lineHeight - 2.0f, top, bottom);
-            const float below = std::clamp(static_cast<float>(c.y + hPx * 0.5) + 2.0f, top, bottom);
+            float above = static_cast<float>(c.y - hPx * 0.5) - lineHeight - 2.0f;
+            float below = static_cast<float>(c.y + hPx * 0.5) + 2.0f;
+            const bool inView = c.y + hPx * 0.5 > vp.y && c.y - hPx * 0.5 < vp.y + vp.height;
+            if (inView) {
+                const float viewTop = static_cast<float>(vp.y) + 2.0f;
+                const float viewBottom =
+                    std::max(viewTop, static_cast<float>(vp.y + vp.height) - lineHeight - 2.0f);
+                above = std::clamp(above, viewTop, viewBottom);
+                below = std::clamp(below, viewTop, viewBottom);
+            }
             const ImVec2 at = freeSpot(placed, vp, x, above, below, nameSize, lineHeight);
             placed.texts.push_back(spanning(at.x, at.y, at.x + nameSize.x, at.y + nameSize.y));
             shadowText(dl, at, beside, name.c_str(), packed(theme().textShadow));

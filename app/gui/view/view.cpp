@@ -12,9 +12,14 @@ bool panelFits(float uiScale, double displayWidth) {
     return kPanelPxAtScale1 * static_cast<double>(uiScale) <= displayWidth * kMaxPanelShare;
 }
 
-double fitMarginPx(float uiScale, double displayHeight) {
+double sceneLabelPx(float uiScale, float labelScale, double displayHeight) {
+    const double share = displayHeight > 0.0 ? std::ceil(kSceneLabelShare * displayHeight) : 0.0;
+    return std::max(share, std::round(kBaseFontPx * static_cast<double>(uiScale * labelScale)));
+}
+
+double fitMarginPx(float uiScale, float labelScale, double displayHeight) {
     return std::max(kFitMarginPx * static_cast<double>(uiScale),
-                    std::ceil(kSceneLabelShare * displayHeight) + kAxisRowGapPx);
+                    sceneLabelPx(uiScale, labelScale, displayHeight) + kAxisRowGapPx);
 }
 
 std::string ClassroomScreen::name() const {
@@ -90,7 +95,7 @@ void updateCamera(View& view, const World& world, bool captionBar, double displa
     view.camera.setViewport(view.layout.scene);
     if (view.autoFit) {
         const Bounds& bounds = view.fitBounds ? *view.fitBounds : world.bounds;
-        view.camera.fit(bounds, fitMarginPx(view.uiScale, displayHeight));
+        view.camera.fit(bounds, fitMarginPx(view.uiScale, view.labelScale, displayHeight));
     }
     view.camera.setCentre(view.camera.centre() +
                           followShift(view.frameCamera, world, view.frame, view.autoFit));

@@ -102,7 +102,11 @@ constexpr double kFitMarginPx = 36.0;
 // over the blocks resting on the floor).
 constexpr double kSceneLabelShare = 0.022;
 constexpr double kAxisRowGapPx = 14.0;
-double fitMarginPx(float uiScale, double displayHeight);
+// The UI font at UI scale 1 (px); the scene's labels are at least this x UI scale x label scale.
+constexpr double kBaseFontPx = 16.0;
+// The scene's label font (px) on a display `displayHeight` px high (ui_style.cpp builds it).
+double sceneLabelPx(float uiScale, float labelScale, double displayHeight);
+double fitMarginPx(float uiScale, float labelScale, double displayHeight);
 // On a narrow screen (sheetLayout) too the fit shows the whole world: a phone held upright sees
 // every block of the scene first (the default scene's 0.6 m block is then about 10 CSS px wide
 // at 390 CSS px; two fingers or the wheel zoom in, a drag on empty space pans).

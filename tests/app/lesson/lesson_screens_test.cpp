@@ -123,7 +123,8 @@ std::string captionWords(const Shot& s) {
 }
 
 bool onIt(const Rect& in, const Rect& out);
-bool knownOverlap(const Shot& s);
+bool knownText(const Shot& s, const std::string& text);
+void expectKnownStillOut(const std::vector<std::string>& seen);
 
 double area(const Rect& r) {
     return r.w * r.h;
@@ -172,13 +173,18 @@ TEST(LessonScreens, NoCaptionTextIsClipped) {
 // the scene; step 5's point-of-impact plate, wider than a 438 px scene at 1280x800 UI 1.5, runs
 // under the inspector, "crook": kKnownOverlaps).
 TEST(LessonScreens, EverySceneTextLiesInTheScene) {
+    std::vector<std::string> knownSeen; // the known cases found out of the scene still
     for (const Screen& screen : kScreens) {
         int outside = 0;
         for (const Shot& s : shots()) {
-            if (s.screen != &screen || !s.layout.is_object() || knownOverlap(s)) continue;
+            if (s.screen != &screen || !s.layout.is_object()) continue;
             const Rect scene = rectOf(s.layout.at("scene"));
             for (const auto& t : s.texts) {
                 if (t.at("window") != "scene" || onIt(rectOf(t.at("rect")), scene)) continue;
+                if (knownText(s, t.at("text").get<std::string>())) {
+                    knownSeen.push_back(s.name());
+                    continue;
+                }
                 ++outside;
                 ADD_FAILURE() << s.name() << ": '" << t.at("text").get<std::string>() << "' "
                               << printed(rectOf(t.at("rect"))) << " out of the scene "
@@ -188,6 +194,7 @@ TEST(LessonScreens, EverySceneTextLiesInTheScene) {
         std::printf("%s: %d scene texts out of the scene (known cases skipped: kKnownOverlaps)\n",
                     screen.dir, outside);
     }
+    expectKnownStillOut(knownSeen);
 }
 
 // The question (with "Predict:") at the setup and the answer or why there is none at the moment
@@ -248,26 +255,41 @@ struct KnownOverlap {
     const char* screen;
     std::size_t step;
     bool moment;
+    const char* textStart; // the known text (only it is skipped in that shot)
     const char* why;
 };
 // The point of impact's caption plate (four lines, about 600 px wide at UI 1.5) at step 5's
 // moment, in a scene 390-440 px wide: as it is, it runs out of the scene under the inspector (its
 // words cut, "crook"); wrapped to the scene's width (tried) it found no spot and covered the
-// mover, its label and the point of impact's labels, which looks worse. Skipped by both checks
-// (the plate out of the scene, a text over another). (A fix: place the plate before the labels,
+// mover, its label and the point of impact's labels, which looks worse. Only the plate is skipped,
+// by both checks (out of the scene, over another text); a listed case whose plate lies in the
+// scene fails the first, so that the list only shrinks. (A fix: place the plate before the labels,
 // so that they go around it, or fold its lines behind a "more".)
 const std::vector<KnownOverlap> kKnownOverlaps = {
-    {"1024x768_ui1.25", 5, true, "the caption plate out of the scene"},
-    {"1280x720_ui1.5", 5, true, "the caption plate out of the scene"},
-    {"1280x800_ui1.5", 5, true, "the caption plate out of the scene"},
-    {"1366x768_ui1.5", 5, true, "the caption plate out of the scene"},
+    {"1024x768_ui1.25", 5, true, "Point of impact of ", "the caption plate out of the scene"},
+    {"1280x720_ui1.5", 5, true, "Point of impact of ", "the caption plate out of the scene"},
+    {"1280x800_ui1.5", 5, true, "Point of impact of ", "the caption plate out of the scene"},
+    {"1366x768_ui1.5", 5, true, "Point of impact of ", "the caption plate out of the scene"},
 };
 
-bool knownOverlap(const Shot& s) {
+bool knownCase(const KnownOverlap& k, const Shot& s) {
+    return s.screen->dir == std::string(k.screen) && s.step == k.step && s.moment == k.moment;
+}
+
+bool knownText(const Shot& s, const std::string& text) {
     for (const KnownOverlap& k : kKnownOverlaps)
-        if (s.screen->dir == std::string(k.screen) && s.step == k.step && s.moment == k.moment)
-            return true;
+        if (knownCase(k, s) && text.rfind(k.textStart, 0) == 0) return true;
     return false;
+}
+
+// A known case that is out of the scene no more fails, so that the list only shrinks.
+void expectKnownStillOut(const std::vector<std::string>& seen) {
+    for (const Shot& s : shots())
+        for (const KnownOverlap& k : kKnownOverlaps)
+            if (knownCase(k, s))
+                EXPECT_NE(std::find(seen.begin(), seen.end(), s.name()), seen.end())
+                    << s.name() << ": '" << k.textStart << "...' lies in the scene now: take it "
+                    << "out of kKnownOverlaps";
 }
 
 // Labels never lie about whom they name: no text drawn over the scene (labels, values, axis
@@ -277,10 +299,11 @@ TEST(LessonScreens, NoSceneTextOverlapsAnotherOrWhatItDoesNotName) {
     for (const Screen& screen : kScreens) {
         int overlaps = 0;
         for (const Shot& s : shots()) {
-            if (s.screen != &screen || !s.layout.is_object() || knownOverlap(s)) continue;
+            if (s.screen != &screen || !s.layout.is_object()) continue;
             std::vector<const nlohmann::json*> scene;
             for (const auto& t : s.texts)
-                if (t.at("window") == "scene") scene.push_back(&t);
+                if (t.at("window") == "scene" && !knownText(s, t.at("text").get<std::string>()))
+                    scene.push_back(&t);
             for (std::size_t i = 0; i < scene.size(); ++i) {
                 const std::string text = scene[i]->at("text").get<std::string>();
                 const Rect r = rectOf(scene[i]->at("rect"));

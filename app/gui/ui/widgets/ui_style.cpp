@@ -18,7 +18,7 @@
 namespace {
 
 constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-constexpr float kBaseFontPx = 16.0f;
+constexpr float kUiFontPx = static_cast<float>(kBaseFontPx); // view.h
 // The look ImGui's style and fonts are built for: the view's, as uiFollowView last found it (the
 // view owns it; this is what the built atlas and style stand for). Scale 0: not built yet.
 struct BuiltLook {
@@ -111,7 +111,7 @@ void setTheme(ImGuiStyle& style) {
 // around a glyph (a window's close button is the font's size plus the frame's padding), a
 // slider's grab a fingertip wide, and a scroll bar a finger can hold (a swipe scrolls too).
 void setTouchSizes(ImGuiStyle& style) {
-    const float pad = (kTouchTargetPx - kBaseFontPx) * 0.5f;
+    const float pad = (kTouchTargetPx - kUiFontPx) * 0.5f;
     style.FramePadding = ImVec2(pad, pad);
     style.ItemSpacing = ImVec2(10.0f, 8.0f);
     style.ItemInnerSpacing = ImVec2(8.0f, 6.0f);
@@ -154,7 +154,7 @@ ImFont* addFont(ImGuiIO& io, float px) {
         return io.Fonts->AddFontFromFileTTF(kFontPath, px, &config);
     }
     ImFontConfig config;
-    config.SizePixels = px * 13.0f / kBaseFontPx;
+    config.SizePixels = px * 13.0f / kUiFontPx;
     return io.Fonts->AddFontDefault(&config);
 }
 
@@ -179,10 +179,11 @@ float slideFontPx(double share, float atLeast) {
 
 // The classroom's fonts for the display's height at `look`.
 float captionPx(const BuiltLook& look) {
-    return slideFontPx(kCaptionShare, kBaseFontPx * look.scale);
+    return slideFontPx(kCaptionShare, kUiFontPx * look.scale);
 }
-float slideLabelPx(const BuiltLook& look) {
-    return slideFontPx(kSceneLabelShare, kBaseFontPx * look.scale * look.labelScale);
+float slideLabelPx(const BuiltLook& look) { // one formula with the camera's fit (view.h)
+    return static_cast<float>(
+        sceneLabelPx(look.scale, look.labelScale, ImGui::GetIO().DisplaySize.y));
 }
 
 } // namespace
@@ -199,12 +200,12 @@ bool uiFollowView(const View& view, bool touch) {
         const float scale = look.scale, labelScale = look.labelScale;
         ImGuiIO& io = ImGui::GetIO();
         io.Fonts->Clear();
-        addFont(io, kBaseFontPx * scale); // the first font is ImGui's default: the UI's
+        addFont(io, kUiFontPx * scale); // the first font is ImGui's default: the UI's
         // The scene's labels: a font of their own size (a scaled UI font would be blurred).
         gLabelFont = labelScale == 1.0f ? io.Fonts->Fonts[0]
-                                        : addFont(io, std::round(kBaseFontPx * scale * labelScale));
+                                        : addFont(io, std::round(kUiFontPx * scale * labelScale));
         gCompactFont =
-            addFont(io, std::round(kBaseFontPx * scale * static_cast<float>(kCompactFontScale)));
+            addFont(io, std::round(kUiFontPx * scale * static_cast<float>(kCompactFontScale)));
         gSlideCaptionPx = captionPx(look);
         gSlideLabelPx = slideLabelPx(look);
         gCaptionFont = addFont(io, gSlideCaptionPx);
