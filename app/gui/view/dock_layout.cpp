@@ -87,6 +87,10 @@ const DockTabs* Layout::tabsOf(const std::string& name) const {
     return nullptr;
 }
 
+bool Layout::hides(const std::string& name) const {
+    return std::find(hidden.begin(), hidden.end(), name) != hidden.end();
+}
+
 bool sheetLayout(double displayWidth, float uiScale, double displayHeight, bool touch) {
     const double s = static_cast<double>(uiScale > 0.0f ? uiScale : 1.0f);
     return displayWidth < kSheetBelowPx * s || (touch && displayHeight < kTouchSheetBelowPx * s);
@@ -124,11 +128,24 @@ Layout computeLayout(const LayoutInput& in) {
         const double screenH = in.shareHeight > 0.0 ? in.shareHeight : H;
         // (1 px to spare: the share is a floor, whatever the rounding.)
         above.maxStripHeight = std::max(1.0, top - std::ceil(kMinSheetSceneShare * screenH) - 1.0);
-        above.tabs = false;
-        for (DockRequest& w : above.windows) w.side = DockSide::Bottom;
+        // Under a strip lower than the sheet's bar (the sheet open) nothing can be read: the
+        // windows wait, not drawn, and the scene keeps the room.
+        std::vector<std::string> hidden;
+        if (above.maxStripHeight < kSheetBarPx * static_cast<double>(in.uiScale)) {
+            for (const DockRequest& w : above.windows) hidden.push_back(w.name);
+            above.windows.clear();
+        }
+        for (DockRequest& w : above.windows) {
+            // A column's window laid along the strip: its least extent was a height; as a width
+            // it is the width the window wants (a plot's axis, the inspector's equations), so
+            // that three of them fold into tabs on a phone rather than each shown a third wide.
+            if (w.side != DockSide::Bottom) w.minExtent = std::max(w.minExtent, w.crossExtent);
+            w.side = DockSide::Bottom;
+        }
         Layout out = computeLayout(above);
         out.panel = fromEdges(0.0, top, W, H);
         out.sheet = true;
+        out.hidden = std::move(hidden);
         return out;
     }
     Layout out;

@@ -79,9 +79,10 @@ struct LayoutInput {
     // > 0: the bottom strip of windows at most this high (above a sheet: the scene keeps
     // kMinSheetSceneShare of the screen).
     double maxStripHeight = 0.0;
-    // A region (the right column, the bottom strip) whose windows do not fit side by side, each
-    // at least kLeastDockShrink of its least extent, folds them into tabs (not on a touch screen,
-    // nor above a sheet: their windows keep their own layout).
+    // A region (the right column, the bottom strip, the strip above a phone's sheet) whose
+    // windows do not fit side by side, each at least kLeastDockShrink of its least extent, folds
+    // them into tabs (on a touch screen too: a phone's three windows side by side are each a
+    // third of 390 CSS px, their texts cut to a word).
     bool tabs = true;
     std::vector<DockRequest> windows;
 };
@@ -105,10 +106,14 @@ struct Layout {
     ScreenRect scene;   // what the scene view gets
     std::vector<DockedWindow> windows;
     std::vector<DockTabs> tabs;
+    // Windows with no room: above a phone's open sheet the scene keeps its share and the strip
+    // has none, so its windows are not drawn until the sheet closes.
+    std::vector<std::string> hidden;
     // The rectangle of window `name`, or nullptr when it is not docked (or folded behind a tab).
     const ScreenRect* find(const std::string& name) const;
     // The tabs window `name` is folded into, or nullptr.
     const DockTabs* tabsOf(const std::string& name) const;
+    bool hides(const std::string& name) const;
 };
 
 // Shares of the display the regions never go beyond, so the scene keeps at least about half of

@@ -72,7 +72,6 @@ Layout computeAppLayout(const View& view, bool captionBar, double displayWidth,
         in.windows.push_back({row.title, row.place.side, row.place.minExtent, row.place.weight,
                               row.place.crossExtent, row.place.heightShare, rank});
     }
-    in.tabs = !view.touch; // a touch screen's layouts stay as they are
     return computeLayout(in);
 }
 

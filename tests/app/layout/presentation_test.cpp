@@ -253,13 +253,37 @@ TEST(DockLayout, WindowsThatDoNotFitFoldIntoTabs) {
     ASSERT_NE(below.find("Plots"), nullptr);
     EXPECT_EQ(below.find("Plots")->y, below.tabs[0].rect.y);
     EXPECT_EQ(below.find("Plots")->height, below.tabs[0].rect.height);
-    // Not on a touch screen (tabs off) nor above a sheet: the windows shrink as before.
+    // Tabs off: the windows shrink as before.
     in.tabs = false;
     EXPECT_TRUE(computeLayout(in).tabs.empty());
     in.tabs = true;
-    in.panelWidth = 0.0;
-    in.panelHeight = 64.0;
-    EXPECT_TRUE(computeLayout(in).tabs.empty());
+    // Above a phone's sheet (390x844 at ratio 3, UI scale 3: 1170x2532 px) the strip's windows
+    // fold too, one shown across the whole width and none over the sheet or the scene.
+    LayoutInput phone = input(1170, 2532, 3.0f);
+    phone.panelWidth = 0.0;
+    phone.panelHeight = 64.0 * 3.0;
+    phone.windows.resize(3); // a lesson step's three windows
+    const Layout p = computeLayout(phone);
+    ASSERT_TRUE(p.sheet);
+    ASSERT_EQ(p.tabs.size(), 1u);
+    EXPECT_EQ(p.tabs[0].names.size(), 3u);
+    ASSERT_EQ(p.windows.size(), 1u);
+    EXPECT_EQ(p.windows[0].rect.x, 0.0);
+    EXPECT_EQ(p.windows[0].rect.width, 1170.0);
+    EXPECT_LE(p.windows[0].rect.y + p.windows[0].rect.height, p.panel.y);
+    EXPECT_FALSE(rectsOverlap(p.windows[0].rect, p.scene));
+    EXPECT_TRUE(p.hidden.empty());
+    // The sheet open (55% of the height) under a lesson's caption (a third): no room for the
+    // strip; its windows are hidden (not drawn over the sheet), the scene keeps its share.
+    phone.panelHeight = 2532 * kSheetOpenShare;
+    phone.topInset = 2532 / 3.0;
+    const Layout open = computeLayout(phone);
+    EXPECT_TRUE(open.windows.empty());
+    EXPECT_TRUE(open.tabs.empty());
+    EXPECT_EQ(open.hidden,
+              (std::vector<std::string>{"Plots", "Collision inspector", "Speed versus accuracy"}));
+    EXPECT_TRUE(open.hides("Plots"));
+    EXPECT_FALSE(rectsOverlap(open.scene, open.panel));
 }
 
 TEST(DockLayout, WorldRectOnScreenFollowsTheCamera) {

@@ -188,8 +188,12 @@ std::string tabLabel(const std::string& title, bool shortName) {
 // others' tabs bring theirs to the front (from the next frame); the shown one's closes it.
 void drawFoldedTabs(App& app, const DockTabs& tabs, const char* title, bool* open) {
     const ImGuiStyle& st = ImGui::GetStyle();
+    // On a touch screen the shown tab has no close button (a font's size: under a fingertip's
+    // 44 px); the sheet's overlay switches turn the window off.
+    if (app.ui.touchUi) open = nullptr;
     const auto across = [&](bool shortName) {
-        float width = ImGui::GetFontSize() + st.FramePadding.x; // the shown tab's close button
+        // The shown tab's close button.
+        float width = open ? ImGui::GetFontSize() + st.FramePadding.x : 0.0f;
         for (const std::string& name : tabs.names)
             width += ImGui::CalcTextSize(tabLabel(name, shortName).c_str()).x +
                      2.0f * st.FramePadding.x + st.ItemInnerSpacing.x;
@@ -270,6 +274,7 @@ OverlayWindow::OverlayWindow(App& app, OverlayId id) {
     const char* title = overlayInfo(id).title;
     const DockTabs* tabs = app.view.layout.tabsOf(title);
     if (tabs && tabs->shown != title) return; // folded behind another window's tab
+    if (app.view.layout.hides(title)) return; // no room (a phone's open sheet)
     begun_ = true;
     open_ = beginOverlayWindow(app, id);
     // A small docked window (every overlay on at 1280x720) draws its contents in the compact
