@@ -72,9 +72,10 @@ PoiView computePoi(const std::vector<Block>& before, const Bounds& bounds,
     return p;
 }
 
-std::string poiEquation(const PoiView& p) {
+std::string poiEquation(const PoiView& p, bool units) {
     const char axis = p.axis == 0 ? 'x' : 'y';
     const auto formula = [&](int extra) { return printed(p.a, extra) / printed(p.b, extra); };
-    return "t = a/b = " + equationWithFewestDigits(formula, p.t) +
-           " of the frame   (a, b: m along " + axis + ")";
+    const std::string equation = "t = a/b = " + equationWithFewestDigits(formula, p.t);
+    return units ? equation + " of the frame   (a, b: m along " + axis + ")"
+                 : equation + " of frame";
 }

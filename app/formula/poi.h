@@ -34,5 +34,6 @@ PoiView computePoi(const std::vector<Block>& before, const Bounds& bounds,
                    const WorldSettings& settings, double frameStart, int block);
 
 // The time of impact as the lecture writes it, with as many digits as make it hold as printed:
-// "t = a/b = 0.15/1.4 = 0.107 of the frame   (a, b: m along y)".
-std::string poiEquation(const PoiView& p);
+// "t = a/b = 0.15/1.4 = 0.107 of the frame   (a, b: m along y)"; without `units`, in fewer
+// words (a narrow scene's plate: "t = a/b = 0.15/1.4 = 0.107 of frame").
+std::string poiEquation(const PoiView& p, bool units = true);

@@ -209,6 +209,26 @@ std::string wrapAtSpaces(const std::string& text, double width,
     return wrapParagraphs(text, width, measure, wrapParagraph);
 }
 
+std::string wrapAtSeparators(const std::string& text, const std::string& separator, double width,
+                             const std::function<double(const std::string&)>& measure) {
+    if (separator.empty()) return wrapAtSpaces(text, width, measure);
+    std::string out, line;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t end = std::min(text.find(separator, start), text.size());
+        const std::string part = text.substr(start, end - start);
+        const std::string joined = line.empty() ? part : line + separator + part;
+        if (line.empty() || measure(joined) <= width) {
+            line = joined;
+        } else {
+            out += line + "\n";
+            line = part;
+        }
+        start = end + separator.size();
+    }
+    return wrapAtSpaces(out + line, width, measure);
+}
+
 namespace {
 
 bool isOperatorWord(const std::string& w) {

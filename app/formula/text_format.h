@@ -50,6 +50,11 @@ std::string formulaSymbol(const std::string& name);
 // own newlines are kept.
 std::string wrapAtSpaces(const std::string& text, double width,
                          const std::function<double(const std::string&)>& measure);
+// Text whose parts are set apart by `separator` ("P to play   ·   N one step   ·   F1 help")
+// broken into lines of at most `width`: between parts, the separator left out at a break; a part
+// wider than a line at its spaces (wrapAtSpaces).
+std::string wrapAtSeparators(const std::string& text, const std::string& separator, double width,
+                             const std::function<double(const std::string&)>& measure);
 // An equation or a line of prose with equations in it (the collision inspector's lines) broken
 // into lines of at most `width`: at spaces only, before an operator or a relation (the next
 // line starts "  = 999997.136", indented, and equation_check reads the chain on), never right

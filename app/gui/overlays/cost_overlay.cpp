@@ -89,8 +89,13 @@ void drawCostOverlay(App& app) {
         ImGui::EndTable();
     }
     if (uiSmallButton("Measure again")) cost.measure(app.sim.world(), app.sim.scenePath);
-    ImGui::SameLine();
-    dimText("(a copy, 30 frames per method)");
+    // Beside the button where it fits on the line, else under it (a narrow window at 1024x768,
+    // UI 1.25, wrapped it into a column of single words).
+    const char* how = "(a copy, 30 frames per method)";
+    if (ImGui::CalcTextSize(how).x + ImGui::GetStyle().ItemSpacing.x <=
+        ImGui::GetContentRegionAvail().x - ImGui::GetItemRectSize().x)
+        ImGui::SameLine();
+    dimText(how);
     ImGui::Separator();
     if (cost.sweepRunning()) {
         ImGui::TextColored(uiThemed(ImVec4(0.55f, 0.85f, 0.6f, 1.0f)),

@@ -107,6 +107,40 @@ void drawPoiOverlay(App& app) {
         app.ui.takenOnScreen.blocks.push_back(boxes[k]);
         app.view.shownMarks.push_back({marks[k].text, boxes[k]});
     }
+    // The caption: the numbers of t = a/b. Placed before the boxes' labels, which go around it
+    // (placed after them, it found no room in a narrow scene: step 5 of lecture3 at 1280x800, UI
+    // 1.5); it keeps off the boxes and a line and a half around them, their labels' room.
+    const char axis = p.axis == 0 ? 'x' : 'y';
+    const std::string other = p.other < 0 ? wallName(p.other) : app.sim.blockDisplayName(p.other);
+    const std::string lines[4] = {
+        "Point of impact of " + app.sim.blockDisplayName(p.block) + " with " + other +
+            ", frame from t = " + formatNumber(p.frameStart) + " s",
+        poiEquation(p),
+        "POI = old + t·v·dt = (" + formatNumber(p.ghost.x) + ", " + formatNumber(p.ghost.y) + ")",
+        std::string("moved back along ") + axis + " only: (" + formatNumber(p.crooked.x) + ", " +
+            formatNumber(p.crooked.y) + "), crooked",
+    };
+    // Where the scene is narrow (1024x768 at UI 1.25, 1280x720 at 1.5: 300-390 px of text), the
+    // same numbers in fewer words (four lines of at most about 35 characters: a plate that fits
+    // above or under the blocks there): the title without "Point of impact" (the step and the
+    // boxes' labels say it), the equation without its units' note, the crooked result without
+    // its name.
+    const std::string brief[4] = {
+        app.sim.blockDisplayName(p.block) + " with " + other + ", frame from " +
+            formatNumber(p.frameStart) + " s",
+        poiEquation(p, false),
+        "",
+        std::string("moved back along ") + axis + " only: (" + formatNumber(p.crooked.x) + ", " +
+            formatNumber(p.crooked.y) + ")",
+    };
+    const ImU32 colors[4] = {uiThemed(IM_COL32(230, 234, 242, 255)), uiMarkColor(Mark::PoiContact),
+                             uiMarkColor(Mark::PoiContact), uiMarkColor(Mark::PoiMovedBack)};
+    std::vector<CaptionLine> caption;
+    for (int i = 0; i < 4; ++i) caption.push_back({lines[i], colors[i], true, brief[i]});
+    std::vector<WorldBox> inWorld;
+    for (Vec2 c : {p.oldPosition, p.newPosition, p.ghost, p.crooked})
+        inWorld.push_back({c, p.size});
+    drawSceneCaption(app, caption, inWorld);
     const float hw = static_cast<float>(app.view.camera.metresToPixels(p.size.x * 0.5));
     const float hh = static_cast<float>(app.view.camera.metresToPixels(p.size.y * 0.5));
     for (const Marked& m : marks) {
@@ -125,24 +159,4 @@ void drawPoiOverlay(App& app) {
         }
         label(dl, placeSceneLabelAtOneOf(app, tries, ts), m.mark, m.text);
     }
-
-    // The caption: the numbers of t = a/b.
-    const char axis = p.axis == 0 ? 'x' : 'y';
-    const std::string other = p.other < 0 ? wallName(p.other) : app.sim.blockDisplayName(p.other);
-    const std::string lines[4] = {
-        "Point of impact of " + app.sim.blockDisplayName(p.block) + " with " + other +
-            ", frame from t = " + formatNumber(p.frameStart) + " s",
-        poiEquation(p),
-        "POI = old + t·v·dt = (" + formatNumber(p.ghost.x) + ", " + formatNumber(p.ghost.y) + ")",
-        std::string("moved back along ") + axis + " only: (" + formatNumber(p.crooked.x) + ", " +
-            formatNumber(p.crooked.y) + "), crooked",
-    };
-    const ImU32 colors[4] = {uiThemed(IM_COL32(230, 234, 242, 255)), uiMarkColor(Mark::PoiContact),
-                             uiMarkColor(Mark::PoiContact), uiMarkColor(Mark::PoiMovedBack)};
-    std::vector<CaptionLine> caption;
-    for (int i = 0; i < 4; ++i) caption.push_back({lines[i], colors[i], true});
-    std::vector<WorldBox> inWorld;
-    for (Vec2 c : {p.oldPosition, p.newPosition, p.ghost, p.crooked})
-        inWorld.push_back({c, p.size});
-    drawSceneCaption(app, caption, inWorld);
 }

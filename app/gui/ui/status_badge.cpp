@@ -37,19 +37,31 @@ float plate(ImDrawList* dl, ImVec2 at, const char* text, ImU32 bg, ImU32 fg, flo
 }
 
 // Plates side by side from `at`, on to a row below where the next would pass `right` (the
-// scene's right edge: a narrow scene at UI scale 1.5 cut "3141 co" and "1 collisio").
+// scene's right edge: a narrow scene at UI scale 1.5 cut "3141 co" and "1 collisio"); a plate
+// wider than a whole row in lines (the start hint at 1280x720, UI 1.5, ran under the inspector
+// docked beside the scene).
 struct PlateRow {
     ImDrawList* dl;
     ImVec2 at;
     float left, right, pad;
     ScreenRect* extent;
     void add(const char* text, ImU32 bg, ImU32 fg) {
-        const float width = ImGui::CalcTextSize(text).x;
-        if (at.x > left && at.x + width + pad * 0.5f > right) {
+        const float room = right - left - pad * 0.5f;
+        std::string shown = text;
+        if (ImGui::CalcTextSize(text).x > room)
+            shown = wrapAtSeparators(text, "   ·   ", room, [](const std::string& line) {
+                return static_cast<double>(ImGui::CalcTextSize(line.c_str()).x);
+            });
+        const ImVec2 size = ImGui::CalcTextSize(shown.c_str());
+        if (at.x > left && at.x + size.x + pad * 0.5f > right) {
             at.x = left;
             at.y += ImGui::GetFontSize() + pad;
         }
-        at.x += plate(dl, at, text, bg, fg, pad, *extent);
+        at.x += plate(dl, at, shown.c_str(), bg, fg, pad, *extent);
+        if (size.y > ImGui::GetFontSize() * 1.5f) { // in lines: what follows goes below it
+            at.x = left;
+            at.y += size.y + pad;
+        }
     }
 };
 

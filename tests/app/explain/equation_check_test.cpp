@@ -299,6 +299,8 @@ TEST(EquationCheck, APointOfImpactOfABlockThatIsHitHolds) {
     EXPECT_NEAR(p.b, 0.6, 1e-12);  // m: 6 m/s over 0.1 s
     EXPECT_NEAR(p.t, 0.25 / 0.6, 1e-12);
     EXPECT_EQ(poiEquation(p), "t = a/b = 0.25/0.6 = 0.417 of the frame   (a, b: m along x)");
+    // The brief form of a narrow scene's plate: the same numbers.
+    EXPECT_EQ(poiEquation(p, false), "t = a/b = 0.25/0.6 = 0.417 of frame");
 }
 
 // Every line the inspector writes of `r`, and the checks of each.

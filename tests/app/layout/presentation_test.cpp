@@ -811,6 +811,19 @@ TEST(WrapAtSpaces, BreaksAtSpacesOnly) {
     EXPECT_EQ(cut, "éé\néé\né");
 }
 
+// Issue 39: the start hint wider than a narrow scene (1280x720, UI 1.5, the inspector docked
+// beside it) breaks between its parts, the separator left out; a part wider than a line at spaces.
+TEST(WrapAtSeparators, BreaksBetweenPartsThenAtSpaces) {
+    const std::string hint = "P to play   ·   N one step   ·   F1 help (keys, overlays)";
+    EXPECT_EQ(wrapAtSeparators(hint, "   ·   ", 100, bytes), hint);
+    EXPECT_EQ(wrapAtSeparators(hint, "   ·   ", 30, bytes),
+              "P to play   ·   N one step\nF1 help (keys, overlays)");
+    EXPECT_EQ(wrapAtSeparators(hint, "   ·   ", 12, bytes),
+              "P to play\nN one step\nF1 help\n(keys,\noverlays)");
+    EXPECT_EQ(wrapAtSeparators("", "   ·   ", 12, bytes), "");
+    EXPECT_EQ(wrapAtSeparators("a b c", "", 3, bytes), "a b\nc");
+}
+
 // Issue 23: the inspector's lines wrap before an operator, never after one, never inside a
 // number, and never leave one word alone on the last line; the wrapped chain still reads as one
 // (equation_check) and holds.

@@ -91,11 +91,75 @@ std::vector<CaptionLine> wrappedCaption(const std::vector<CaptionLine>& lines, f
     return out;
 }
 
-bool hidesText(const App& app, ImVec2 at, ImVec2 size) {
+double overlapArea(const ScreenRect& a, const ScreenRect& b) {
+    const double w = std::min(a.x + a.width, b.x + b.width) - std::max(a.x, b.x);
+    const double h = std::min(a.y + a.height, b.y + b.height) - std::max(a.y, b.y);
+    return w > 0.0 && h > 0.0 ? w * h : 0.0;
+}
+
+// What a plate at `at` of `size` hides: the area of the texts taken so far (but the axis
+// numbers, which yield) and the magnifiers' insets, then that of the blocks and marks (the point
+// of impact's boxes).
+struct Hidden {
+    double texts = 0.0, blocks = 0.0;
+    bool none() const { return texts == 0.0 && blocks == 0.0; }
+    bool operator<(const Hidden& o) const {
+        return texts < o.texts || (texts == o.texts && blocks < o.blocks);
+    }
+};
+Hidden hiddenBy(const App& app, ImVec2 at, ImVec2 size) {
     const ScreenRect plate{at.x, at.y, size.x, size.y};
-    const std::vector<ScreenRect> texts = textsNotYielding(app);
-    return std::any_of(texts.begin(), texts.end(),
-                       [&plate](const ScreenRect& t) { return rectsOverlap(plate, t); });
+    Hidden out;
+    for (const ScreenRect& t : textsNotYielding(app)) out.texts += overlapArea(plate, t);
+    for (const ScreenRect& b : app.ui.takenOnScreen.blocks) out.blocks += overlapArea(plate, b);
+    return out;
+}
+
+float widestLine(const std::vector<CaptionLine>& lines) {
+    float widest = 0.0f;
+    for (const CaptionLine& l : lines)
+        widest = std::max(widest, ImGui::CalcTextSize(l.text.c_str()).x);
+    return widest;
+}
+
+// A caption as drawn: its lines and the widest of them.
+struct CaptionForm {
+    std::vector<CaptionLine> lines;
+    float width = 0.0f;
+};
+
+// The forms of a caption tried, in order: as it is where it fits the scene's `room` (px of
+// text); its brief form (the lines' `brief`, where any has one), wrapped to the room where even
+// that is wider; or, without one, the caption wrapped to the room; then narrower and taller
+// (a share of its width: the scene's margin beside the world may hold it). None wider than the
+// room, but for a word wider than it.
+std::vector<CaptionForm> captionForms(const std::vector<CaptionLine>& lines, float room) {
+    std::vector<CaptionLine> brief = lines;
+    bool hasBrief = false;
+    for (CaptionLine& l : brief)
+        if (!l.brief.empty()) {
+            l.text = l.brief;
+            hasBrief = true;
+        }
+    std::vector<CaptionForm> forms;
+    const auto add = [&forms](const std::vector<CaptionLine>& base, float wrapAt) {
+        CaptionForm f;
+        f.width = widestLine(base);
+        f.lines = wrapAt < f.width ? wrappedCaption(base, wrapAt, f.width) : base;
+        forms.push_back(std::move(f));
+    };
+    const float natural = widestLine(lines);
+    if (natural <= room || room <= 0.0f)
+        add(lines, natural);
+    else if (!hasBrief)
+        add(lines, room);
+    const std::vector<CaptionLine>& last = hasBrief ? brief : lines;
+    const float lastWidth = widestLine(last);
+    const float most = room > 0.0f ? std::min(room, lastWidth) : lastWidth;
+    if (hasBrief) add(brief, most);
+    for (const float share : {0.6f, 0.4f, 0.25f})
+        if (lastWidth * share < most) add(last, lastWidth * share);
+    return forms;
 }
 
 } // namespace
@@ -105,39 +169,37 @@ void drawSceneCaption(App& app, const std::vector<CaptionLine>& lines,
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     const float font = ImGui::GetFontSize();
     const float s = app.view.uiScale;
-    float natural = 0.0f;
-    for (const CaptionLine& l : lines)
-        natural = std::max(natural, ImGui::CalcTextSize(l.text.c_str()).x);
-    // As it is; where that hides a text (a box full of labelled blocks), narrower and taller
-    // (the scene's margin beside the world may hold it).
-    std::vector<CaptionLine> shown;
-    float width = 0.0f;
-    ImVec2 plate;
-    // Narrower, a share of its width, never wider than the scene less its margins. (Where every
-    // narrower plate hides a text the plate stays as it is, even wider than the scene.)
+    // The widest text a plate inside the scene holds: the scene less its margins (10 px x UI
+    // scale, placeCaption's inset) and the plate's own (6 px x UI scale on each side). A plate
+    // wider than the scene ran under the docked window beside it, its words cut ("crook": step 5
+    // of lecture3 at 1280x800, UI 1.5).
     const float room = static_cast<float>(app.view.camera.viewport().width) - 32.0f * s;
-    const float fits = natural > room && room > 0.0f ? room / natural : 1.0f;
-    const float shares[] = {1.0f, fits, 0.6f, 0.4f, 0.25f};
-    for (std::size_t k = 0; k < std::size(shares); ++k) {
-        const float share = shares[k];
-        if (k == 1 && fits == 1.0f) continue; // it fits the scene as it is
-        float widest = natural;
-        const float wrapAt = k == 0 ? natural : natural * std::min(share, fits);
-        std::vector<CaptionLine> tried =
-            wrapAt < natural ? wrappedCaption(lines, wrapAt, widest) : lines;
+    // The first form hiding no text drawn so far and no block, else the one hiding the least.
+    const std::vector<CaptionForm> forms = captionForms(lines, room);
+    std::size_t chosen = 0;
+    ImVec2 plate;
+    Hidden least{INFINITY, INFINITY};
+    for (std::size_t k = 0; k < forms.size(); ++k) {
         // The plate is 6 px (x UI scale) wider than the text on each side, 4 px taller.
-        const ImVec2 size(widest + 12.0f * s, static_cast<float>(tried.size()) * font + 8.0f * s);
+        const ImVec2 size(forms[k].width + 12.0f * s,
+                          static_cast<float>(forms[k].lines.size()) * font + 8.0f * s);
         const ImVec2 at = sceneCaptionPlace(app, size.x, size.y, boxes);
-        const bool hides = hidesText(app, at, size);
-        if (k == 0 || !hides) { // as it is, unless a narrower one hides nothing
-            shown = std::move(tried);
-            width = widest;
+        const Hidden hidden = hiddenBy(app, at, size);
+        if (hidden < least) {
+            chosen = k;
             plate = at;
+            least = hidden;
         }
-        if (!hides) break;
+        if (hidden.none()) break;
     }
+    const std::vector<CaptionLine>& shown = forms[chosen].lines;
+    const float width = forms[chosen].width;
     const float n = static_cast<float>(shown.size());
-    app.ui.captionPlates.push_back({plate.x, plate.y, width + 12.0f * s, n * font + 8.0f * s});
+    const ScreenRect taken{plate.x, plate.y, width + 12.0f * s, n * font + 8.0f * s};
+    app.ui.captionPlates.push_back(taken);
+    // Taken: the labels drawn after it go around it (the point of impact's, placed after its
+    // plate so that the plate finds room first).
+    app.ui.takenOnScreen.texts.push_back(taken);
     const ImVec2 at(plate.x + 6.0f * s, plate.y + 4.0f * s);
     dl->AddRectFilled(
         ImVec2(at.x - 6 * s, at.y - 4 * s), ImVec2(at.x + width + 6 * s, at.y + n * font + 4 * s),

@@ -63,11 +63,13 @@ struct WorldBox {
     Vec2 size;
 };
 // One line of a caption over the scene, in its colour (the dark theme's; uiThemed deepens it;
-// or, `themed`, already the theme's: a mark's, uiMarkColor).
+// or, `themed`, already the theme's: a mark's, uiMarkColor), and, where the scene is too narrow
+// for the line, its brief form ("" keeps the line as it is).
 struct CaptionLine {
     std::string text;
     ImU32 color;
     bool themed = false;
+    std::string brief = "";
 };
 // Where a caption of `width` x `height` px goes over the scene (placeCaption): covering no
 // block (grown by its labels), none of `boxes` (grown by one and a half lines), nor the status
@@ -75,8 +77,11 @@ struct CaptionLine {
 ImVec2 sceneCaptionPlace(const App& app, float width, float height,
                          const std::vector<WorldBox>& boxes);
 // Lines of text on a plate over the scene, where sceneCaptionPlace finds room (the point of
-// impact's numbers, the student's trace); where the plate would hide a label there, the lines
-// wrapped narrower (wrapFormula) if that finds a spot hiding none.
+// impact's numbers, the student's trace), never wider than the scene: where the lines are wider,
+// their brief forms, wrapped (wrapFormula) to the scene's width where even those are. Where the
+// plate would hide a text drawn so far (a label), the brief or wrapped forms, then narrower ones,
+// if one finds a spot hiding none (else the one hiding the least). The plate is then taken on
+// screen (app.ui.takenOnScreen): the labels drawn after it go around it.
 void drawSceneCaption(App& app, const std::vector<CaptionLine>& lines,
                       const std::vector<WorldBox>& boxes);
 
