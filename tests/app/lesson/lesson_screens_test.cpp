@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -469,6 +470,37 @@ TEST(LessonScreens, TheMomentCameraShowsWhatTheAnswerNames) {
         EXPECT_GT(named, 0) << s.name() << ": the answer names no block";
     }
     std::printf("%d moments framed by their moment camera\n", framed);
+}
+
+// The plots' axis numbers never touch (issue 39: step 10's "v of m1" at 1280x800 UI 1.5 wrote
+// "4", "2", "0", "-2", "-4" 11 px apart in 24 px lines): a short plot numbers every second or
+// third tick (plot_widget.cpp, labelStride).
+TEST(LessonScreens, NoTwoAxisNumbersOfAPlotTouch) {
+    for (const Screen& screen : kScreens) {
+        int numbers = 0, touching = 0;
+        for (const Shot& s : shots()) {
+            if (s.screen != &screen) continue;
+            std::vector<const nlohmann::json*> axis;
+            for (const auto& t : s.texts) {
+                const std::string text = t.at("text").get<std::string>();
+                const std::size_t digit = text.rfind('-', 0) == 0 ? 1 : 0;
+                if (t.at("window") == "Plots" && text.size() > digit &&
+                    std::isdigit(static_cast<unsigned char>(text[digit])))
+                    axis.push_back(&t);
+            }
+            numbers += static_cast<int>(axis.size());
+            for (std::size_t i = 0; i < axis.size(); ++i)
+                for (std::size_t j = i + 1; j < axis.size(); ++j) {
+                    const Rect a = rectOf(axis[i]->at("rect")), b = rectOf(axis[j]->at("rect"));
+                    if (!sharesAPixel(a, b)) continue;
+                    ++touching;
+                    ADD_FAILURE() << s.name() << ": '" << axis[i]->at("text").get<std::string>()
+                                  << "' " << printed(a) << " touches '"
+                                  << axis[j]->at("text").get<std::string>() << "' " << printed(b);
+                }
+        }
+        std::printf("%s: %d plot numbers, %d touching another\n", screen.dir, numbers, touching);
+    }
 }
 
 } // namespace

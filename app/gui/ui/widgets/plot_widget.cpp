@@ -81,6 +81,31 @@ std::string labelFor(double v, double lo, double hi, bool log, int minTicks, int
     return tickLabel(v, axisTickStep(lo, hi, minTicks, maxTicks));
 }
 
+// Every how many y ticks a number is written so that the numbers, each `lineHeight` px tall,
+// never touch (the ticks are evenly spaced, on a log axis too: decades).
+std::size_t labelStride(const std::vector<double>& ticks, const Mapping& m, float lineHeight) {
+    if (ticks.size() < 2) return 1;
+    const float gap = std::abs(m.sy(ticks[1]) - m.sy(ticks[0]));
+    if (!(gap > 0.0f)) return ticks.size();
+    return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(lineHeight / gap)));
+}
+
+// The first numbered tick, given every `stride`-th is: the offset that numbers the most ticks,
+// the one that numbers "0" among them (a 55 px plot of -4..4 in steps of 2 writes "-4" and "2"
+// rather than "0" alone: issue 23 asked for more than "0").
+std::size_t firstLabelled(const std::vector<double>& ticks, std::size_t stride) {
+    std::size_t zero = 0;
+    for (std::size_t k = 0; k < ticks.size(); ++k)
+        if (ticks[k] == 0.0) zero = k;
+    std::size_t best = zero % stride;
+    const auto count = [&](std::size_t from) {
+        return (ticks.size() - from + stride - 1) / stride;
+    };
+    for (std::size_t from = 0; from < stride && from < ticks.size(); ++from)
+        if (count(from) > count(best)) best = from;
+    return best;
+}
+
 // One piece of a plot's header: the title, the unit, or a series' legend entry (line and label).
 struct HeaderItem {
     std::string text;
@@ -192,17 +217,30 @@ ScreenRect drawPlot(const char* id, const PlotOptions& o, const std::vector<Plot
     if (m.max.x - m.min.x < 10.0f || m.max.y - m.min.y < 10.0f) return widget;
     dl->AddRectFilled(m.min, m.max, frameBg(), 3.0f);
 
-    // Grid and tick labels.
+    // Grid and tick labels: every tick's line, and its number where the numbers do not touch
+    // (issue 39: a short plot at a large UI scale has room for fewer labels than kMinYTicks).
+    const std::size_t stride = labelStride(yTicks, m, ImGui::GetTextLineHeight() + font * 0.1f);
+    const std::size_t first = firstLabelled(yTicks, stride);
+    const int xMaxTicks = std::max(2, int((m.max.x - m.min.x) / (font * 4.5f)));
+    const std::vector<double> xTicks = ticksFor(x0, x1, o.logX, 1, xMaxTicks);
+    const float xRow = m.max.y + font * 0.15f; // the x axis's numbers' top
+    // The left edge of the x axis's first number: a y number reaching down into its row left of
+    // it is not written (step 10's "-1" over the time axis's "0.0").
+    float firstX = outerMax.x;
+    if (!xTicks.empty()) {
+        const std::string text = labelFor(xTicks[0], x0, x1, o.logX, 1, xMaxTicks);
+        firstX = m.sx(xTicks[0]) - ImGui::CalcTextSize(text.c_str()).x * 0.5f;
+    }
     for (std::size_t i = 0; i < yTicks.size(); ++i) {
         const float y = m.sy(yTicks[i]);
         dl->AddLine(ImVec2(m.min.x, y), ImVec2(m.max.x, y),
                     yTicks[i] == 0.0 && !o.logY ? zeroColor() : gridColor());
+        if (i < first || (i - first) % stride != 0) continue;
         const ImVec2 ts = ImGui::CalcTextSize(yLabels[i].c_str());
-        dl->AddText(ImVec2(m.min.x - ts.x - font * 0.3f, y - ts.y * 0.5f), axisText(),
-                    yLabels[i].c_str());
+        const float right = m.min.x - font * 0.3f;
+        if (y + ts.y * 0.5f > xRow + 1.0f && right > firstX + 1.0f) continue;
+        dl->AddText(ImVec2(right - ts.x, y - ts.y * 0.5f), axisText(), yLabels[i].c_str());
     }
-    const int xMaxTicks = std::max(2, int((m.max.x - m.min.x) / (font * 4.5f)));
-    const std::vector<double> xTicks = ticksFor(x0, x1, o.logX, 1, xMaxTicks);
     for (std::size_t i = 0; i < xTicks.size(); ++i) {
         const float x = m.sx(xTicks[i]);
         dl->AddLine(ImVec2(x, m.min.y), ImVec2(x, m.max.y), gridColor());
@@ -211,7 +249,7 @@ ScreenRect drawPlot(const char* id, const PlotOptions& o, const std::vector<Plot
         const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
         float tx = x - ts.x * 0.5f;
         tx = std::min(tx, outerMax.x - ts.x);
-        dl->AddText(ImVec2(tx, m.max.y + font * 0.15f), axisText(), text.c_str());
+        dl->AddText(ImVec2(tx, xRow), axisText(), text.c_str());
     }
 
     dl->PushClipRect(m.min, m.max, true);
