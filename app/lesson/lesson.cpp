@@ -162,9 +162,9 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
                      const LessonContext& context, SceneCache& cache) {
     requireObject(value, path);
     checkKeys(value, path,
-              {"title", "caption", "scene", "overrides", "overlays", "select", "thrust", "camera",
-               "frame", "pause_at", "values", "question", "choices", "answer", "reveal", "given",
-               "expect", "input", "edits"});
+              {"title",  "caption",       "scene", "overrides", "overlays", "select",   "thrust",
+               "camera", "moment_camera", "frame", "pause_at",  "values",   "question", "choices",
+               "answer", "reveal",        "given", "expect",    "input",    "edits"});
     LessonStep step;
     step.place = source + ": " + path;
     if (!value.contains("title")) throw ValueError{path, "missing \"title\""};
@@ -221,6 +221,12 @@ LessonStep parseStep(const json& value, const std::string& path, const std::stri
                                  std::to_string(scene.blocks.size()) +
                                  " blocks is more than a step may run (1e8 block-steps: blocks x "
                                  "frames x substeps)"};
+    }
+    if (value.contains("moment_camera")) { // the moment's framing: a step that pauses has one
+        const std::string p = keyPath(path, "moment_camera");
+        step.momentCamera = parseCamera(value["moment_camera"], p);
+        if (step.pause.kind == LessonPause::Kind::None)
+            throw ValueError{p, "frames the moment: needs \"pause_at\""};
     }
     if (value.contains("values"))
         parseValues(value["values"], keyPath(path, "values"), scene, step);

@@ -145,7 +145,10 @@ struct LessonStep {
     // Edits at their frames (docs/edits.md: the edit log's lines as a JSON array), applied by the
     // app and by the runner alike; those at frame 0 are part of the setup.
     EditLog edits;
-    std::optional<Bounds> camera;       // world rectangle to fit into the view; none: the bounds
+    std::optional<Bounds> camera; // world rectangle to fit into the view; none: the bounds
+    // The world rectangle fitted at the moment (the answer shown), so that the evidence the
+    // question asks about is big enough (issue 39); none: `camera` stays.
+    std::optional<Bounds> momentCamera;
     ViewFrame frame = ViewFrame::World; // "frame": "com": seen moving with the centre of mass
     LessonPause pause;
     // Named numbers of the step's texts and choices ("u": the centre of mass's velocity), each an

@@ -336,6 +336,18 @@ TEST(Lesson, ShippedScenePathsAndSelection) {
     EXPECT_EQ(step.question, "q?");
 }
 
+// The moment may frame its evidence (issue 39): the step's camera at the setup, its
+// "moment_camera" once the event came.
+TEST(Lesson, AMomentCameraFramesTheMoment) {
+    const LessonStep step = onlyStep(lessonWith(
+        R"("camera": [0, 0, 10, 6], "moment_camera": [5, 0, 9, 3], "pause_at": {"time": 1})"));
+    ASSERT_TRUE(step.camera && step.momentCamera);
+    EXPECT_EQ(step.camera->max.x, 10.0);
+    EXPECT_EQ(step.momentCamera->min.x, 5.0);
+    EXPECT_EQ(step.momentCamera->max.y, 3.0);
+    EXPECT_FALSE(onlyStep(lessonWith(R"("pause_at": {"time": 1})")).momentCamera);
+}
+
 TEST(Lesson, AStepCanTurnThrustOnForTheSelectedBlock) {
     const LessonStep step = onlyStep(lessonWith(R"("select": "m2", "thrust": 12.5)"));
     EXPECT_EQ(step.selected, 1);
@@ -494,6 +506,8 @@ TEST(LessonErrors, ValuesNameTheirPath) {
         {R"("pause_at": {"first_collision_of": "m3"})", "steps[0].pause_at.first_collision_of"},
         {R"("select": "m3")", "steps[0].select"},
         {R"("camera": [0, 0, -1, 5])", "steps[0].camera"},
+        {R"("moment_camera": [0, 0, 5])", "steps[0].moment_camera"},
+        {R"("moment_camera": [0, 0, 5, 5])", "steps[0].moment_camera"}, // no pause_at: no moment
         {R"("frame": "moving")", "steps[0].frame"},
         {R"("frame": 1)", "steps[0].frame"},
         {R"("overlays": "plots")", "steps[0].overlays"},

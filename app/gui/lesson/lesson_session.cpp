@@ -38,6 +38,9 @@ bool differsFromWritten(const World& now, const World& written) {
 // event did not come).
 void reveal(LessonSession& s, View& view) {
     s.phase = LessonSession::Phase::Moment;
+    // The moment frames its evidence (its "moment_camera"), unless the lecturer has taken the
+    // camera (panned or zoomed: autoFit off); the setup frames the step's camera again.
+    if (s.step()->momentCamera && view.autoFit) view.fitBounds = s.step()->momentCamera;
     if (s.step()->question.empty() || s.revealed) return;
     if (s.watch && s.watch->state() == LessonWatch::State::Missed) return;
     s.revealed = true;
@@ -187,6 +190,7 @@ void lessonTakeSetup(LessonSession& s, SimulationSession& sim, View& view, const
     sim.script = std::move(script);
     sim.reset(); // with the selection, as entering the step
     followNewRun(view, sim.world());
+    view.fitBounds = step->camera;
     showSetup(s, sim);
 }
 
@@ -199,6 +203,7 @@ void replayStep(LessonSession& s, SimulationSession& sim, View& view, Messages& 
     sim.reset();                  // the lecturer's method and settings stay, as R outside lessons
     sim.script = s.step()->input; // its player's keys played again (the arrows may have taken it)
     followNewRun(view, sim.world());
+    view.fitBounds = s.step()->camera; // the setup's framing, should the moment have changed it
     showSetup(s, sim); // played again, it watches for its event in the world as it now is
     if (pausesAtItsSetup(*s.step())) lessonShowPausePoint(s, sim, view);
     messages.clear();

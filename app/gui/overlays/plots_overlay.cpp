@@ -106,8 +106,14 @@ std::string watchedName(const App& app) {
 // One button per plot: its whole recorded series (the last 60 s) as CSV (csv_export.h).
 void exportButtons(App& app) {
     ImGui::TextDisabled("CSV:");
+    const ImGuiStyle& style = ImGui::GetStyle();
     for (const PlotRow& row : plotRows()) {
-        ImGui::SameLine();
+        // On the same line where it fits, else on the next (issue 39: at 1024x768 UI 1.5 the
+        // panel's column is 460 px and "energy" was cut at its edge).
+        const float width = ImGui::CalcTextSize(row.name).x + 2.0f * style.FramePadding.x;
+        if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <=
+            ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x)
+            ImGui::SameLine();
         if (!uiSmallButton(row.name)) continue;
         const std::string prefix =
             row.ofWatchedBlock && app.sim.telemetry.watched >= 0 ? watchedName(app) + " " : "";

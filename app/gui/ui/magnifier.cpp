@@ -191,8 +191,11 @@ void drawMagnifier(App& app, ImDrawList* dl, Taken& placed) {
         if (ppm * shortSide(b) >= least) continue;
         const Bounds box = boxOf(b);
         const Vec2 a = cam.worldToScreen(box.min), z = cam.worldToScreen(box.max);
-        if (z.x < vp.x || a.x > vp.x + vp.width || a.y < vp.y || z.y > vp.y + vp.height)
-            continue; // out of the view
+        // Out of the view, or mostly (a "moment_camera" frames the evidence and leaves the
+        // rest behind: the platformer's lift at its edge is not what the answer shows).
+        const double w = std::min(z.x, vp.x + vp.width) - std::max(a.x, vp.x);
+        const double h = std::min(a.y, vp.y + vp.height) - std::max(z.y, vp.y);
+        if (w <= 0.0 || h <= 0.0 || w * h < 0.5 * (z.x - a.x) * (a.y - z.y)) continue;
         if (saysWord(words, app.sim.blockDisplayName(static_cast<int>(i)))) small.push_back(i);
     }
     if (small.empty()) return;

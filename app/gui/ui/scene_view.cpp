@@ -89,17 +89,33 @@ void drawLabels(const App& app, ImDrawList* dl, Taken& placed) {
         const Vec2 c = app.view.camera.worldToScreen(b.position);
         const double wPx = app.view.camera.metresToPixels(b.size.x);
         const double hPx = app.view.camera.metresToPixels(b.size.y);
+        {
+            // A block wholly out of the view, or with its middle left or right of it (panned
+            // away, or left behind by a step's "moment_camera": the platformer's lift at its
+            // edge), is not named: the name would be out of the scene. (One above or below,
+            // step 2's wall taller than the view, has its name at the view's edge, below.)
+            const ScreenRect& vp = app.view.camera.viewport();
+            if (c.x < vp.x || c.x > vp.x + vp.width || c.y + hPx * 0.5 < vp.y ||
+                c.y - hPx * 0.5 > vp.y + vp.height)
+                continue;
+        }
         const ImVec2 nameSize = ImGui::CalcTextSize(name.c_str());
         const ImVec2 secondSize = ImGui::CalcTextSize(second);
         const bool twoLines = second[0] && hPx > 2.6 * lineHeight && secondSize.x < wPx - 6.0;
         const float labelW = twoLines ? std::max(nameSize.x, secondSize.x) : nameSize.x;
         const float labelH = (twoLines ? 2.0f : 1.0f) * lineHeight;
+        // Its middle, moved into the view where the block runs out of it (the name stays whole
+        // in the scene: the platformer's lift at the moment's left edge).
+        const ScreenRect& vp = app.view.camera.viewport();
+        const float mid =
+            std::clamp(static_cast<float>(c.x), static_cast<float>(vp.x) + labelW * 0.5f + 2.0f,
+                       std::max(static_cast<float>(vp.x) + labelW * 0.5f + 2.0f,
+                                static_cast<float>(vp.x + vp.width) - labelW * 0.5f - 2.0f));
         // On the block, centred, or moved up or down in it off the blocks over it (a block
         // sinking into the one under it: lecture3 step 18); else beside it.
         const float top =
             nameSize.x < wPx - 6.0 && hPx > lineHeight + 4.0
-                ? clearRowInside(placed, static_cast<std::size_t>(i),
-                                 static_cast<float>(c.x) - labelW * 0.5f,
+                ? clearRowInside(placed, static_cast<std::size_t>(i), mid - labelW * 0.5f,
                                  static_cast<float>(c.y) - labelH * 0.5f, ImVec2(labelW, labelH))
                 : NAN;
         const bool inside = std::isfinite(top);
@@ -107,24 +123,21 @@ void drawLabels(const App& app, ImDrawList* dl, Taken& placed) {
         const ImU32 white = IM_COL32(255, 255, 255, 240);
         const ImU32 beside = packed(theme().text);
         if (inside) {
-            shadowText(dl, ImVec2(static_cast<float>(c.x) - nameSize.x * 0.5f, top), white,
-                       name.c_str());
+            shadowText(dl, ImVec2(mid - nameSize.x * 0.5f, top), white, name.c_str());
             // On its block (taken already): noted as a text too, which a caption should not hide.
             placed.texts.push_back(
-                spanning(c.x - labelW * 0.5, top, c.x + labelW * 0.5, top + labelH));
+                spanning(mid - labelW * 0.5f, top, mid + labelW * 0.5f, top + labelH));
             if (twoLines) {
-                shadowText(dl,
-                           ImVec2(static_cast<float>(c.x) - secondSize.x * 0.5f, top + lineHeight),
+                shadowText(dl, ImVec2(mid - secondSize.x * 0.5f, top + lineHeight),
                            IM_COL32(255, 255, 255, 190), second);
             }
         } else if (n <= kCrowdedScene || i == app.sim.selected) {
             // Beside the block; in a crowded scene only for the selected one (a hundred names
             // pushed around each other are noise).
-            const float x = static_cast<float>(c.x) - nameSize.x * 0.5f;
+            const float x = mid - nameSize.x * 0.5f;
             // Above or below it; a block in the view but taller than it (step 2's wall) has its
             // name at the view's top or bottom edge rather than outside the scene. (A block out
             // of the view, panned or zoomed away, keeps its spots: no name at an edge for it.)
-            const ScreenRect& vp = app.view.camera.viewport();
             float above = static_cast<float>(c.y - hPx * 0.5) - lineHeight - 2.0f;
             float below = static_cast<float>(c.y + hPx * 0.5) + 2.0f;
             const bool inView = c.y + hPx * 0.5 > vp.y && c.y - hPx * 0.5 < vp.y + vp.height;
@@ -180,13 +193,16 @@ void placeAxisNumbers(App& app, Taken& placed) {
                y + size.y <= vp.y + vp.height;
     };
     // Not under the status badge (taken before them) nor over a number drawn before (the x and
-    // the y axis's 0 at the corner, at UI scale 2): such a number is left out.
+    // the y axis's 0 at the corner, at UI scale 2), nor, on the view's edge, over a block (the
+    // platformer's moment leaves the left wall out: "0" fell on the ledge): such a number is left
+    // out.
     const std::vector<ScreenRect>& under = placed.texts;
     const auto draw = [&](float x, float y, const char* text) {
         const ImVec2 size = ImGui::CalcTextSize(text);
         const ScreenRect r{x, y, size.x, size.y};
-        if (std::any_of(under.begin(), under.end(),
-                        [&r](const ScreenRect& t) { return rectsOverlap(r, t); }))
+        const auto over = [&r](const ScreenRect& t) { return rectsOverlap(r, t); };
+        if (std::any_of(under.begin(), under.end(), over) ||
+            std::any_of(placed.blocks.begin(), placed.blocks.end(), over))
             return;
         app.ui.axisNumbers.push_back({r, text});
         placed.texts.push_back(r);

@@ -259,6 +259,39 @@ TEST(LessonSession, StepSettingsAreApplied) {
     }
 }
 
+// The platformer's moment frames its evidence (its "moment_camera": the shelf, the player, the
+// coin on the floor); R frames the step's camera again; a lecturer who panned keeps their view.
+TEST(LessonSession, TheMomentCameraFramesTheMomentAndRFramesTheSetup) {
+    App app = lessonApp();
+    std::size_t platformer = 0;
+    while (platformer < app.lesson.lesson->steps.size() &&
+           !app.lesson.lesson->steps[platformer].momentCamera)
+        ++platformer;
+    ASSERT_LT(platformer, app.lesson.lesson->steps.size()) << "no step has a moment_camera";
+    enterStep(app, platformer);
+    const LessonStep& step = *app.lesson.step();
+    ASSERT_TRUE(app.view.fitBounds && step.camera);
+    EXPECT_EQ(app.view.fitBounds->min.x, step.camera->min.x);
+    applyLessonAction(app, Action::LessonNext); // play
+    playUntilPaused(app);
+    lessonAfterFrames(app.lesson, app.sim, app.view);
+    ASSERT_EQ(app.lesson.phase, LessonSession::Phase::Moment);
+    ASSERT_TRUE(app.view.fitBounds);
+    EXPECT_EQ(app.view.fitBounds->min.x, step.momentCamera->min.x);
+    EXPECT_EQ(app.view.fitBounds->max.y, step.momentCamera->max.y);
+    applyLessonAction(app, Action::Reset); // R: the setup, framed as it was
+    EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Setup);
+    ASSERT_TRUE(app.view.fitBounds);
+    EXPECT_EQ(app.view.fitBounds->min.x, step.camera->min.x);
+    app.view.autoFit = false; // the lecturer pans: the moment keeps their view
+    applyLessonAction(app, Action::LessonNext);
+    playUntilPaused(app);
+    lessonAfterFrames(app.lesson, app.sim, app.view);
+    EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Moment);
+    EXPECT_EQ(app.view.fitBounds->min.x, step.camera->min.x);
+    EXPECT_FALSE(app.view.autoFit);
+}
+
 TEST(LessonSession, AMalformedLessonKeepsTheCurrentOne) {
     App app = lessonApp();
     enterStep(app, 4);

@@ -81,6 +81,31 @@ std::string labelFor(double v, double lo, double hi, bool log, int minTicks, int
     return tickLabel(v, axisTickStep(lo, hi, minTicks, maxTicks));
 }
 
+// Every how many y ticks a number is written so that the numbers, each `lineHeight` px tall,
+// never touch (the ticks are evenly spaced, on a log axis too: decades).
+std::size_t labelStride(const std::vector<double>& ticks, const Mapping& m, float lineHeight) {
+    if (ticks.size() < 2) return 1;
+    const float gap = std::abs(m.sy(ticks[1]) - m.sy(ticks[0]));
+    if (!(gap > 0.0f)) return ticks.size();
+    return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(lineHeight / gap)));
+}
+
+// The first numbered tick, given every `stride`-th is: the offset that numbers the most ticks,
+// the one that numbers "0" among them (a 55 px plot of -4..4 in steps of 2 writes "-4" and "2"
+// rather than "0" alone: issue 23 asked for more than "0").
+std::size_t firstLabelled(const std::vector<double>& ticks, std::size_t stride) {
+    std::size_t zero = 0;
+    for (std::size_t k = 0; k < ticks.size(); ++k)
+        if (ticks[k] == 0.0) zero = k;
+    std::size_t best = zero % stride;
+    const auto count = [&](std::size_t from) {
+        return (ticks.size() - from + stride - 1) / stride;
+    };
+    for (std::size_t from = 0; from < stride && from < ticks.size(); ++from)
+        if (count(from) > count(best)) best = from;
+    return best;
+}
+
 // One piece of a plot's header: the title, the unit, or a series' legend entry (line and label).
 struct HeaderItem {
     std::string text;
@@ -174,11 +199,37 @@ ScreenRect drawPlot(const char* id, const PlotOptions& o, const std::vector<Plot
     const float header = (items.empty() ? 1.0f : float(items.back().line + 1)) * font * 1.35f;
     const int yMaxTicks = std::max(2, int((size.y - header - font * 1.5f) / (font * 1.8f)));
     const int yMinTicks = o.logY ? 1 : kMinYTicks;
-    const std::vector<double> yTicks = ticksFor(yr.lo, yr.hi, o.logY, yMinTicks, yMaxTicks);
+    std::vector<double> yTicks = ticksFor(yr.lo, yr.hi, o.logY, yMinTicks, yMaxTicks);
+    // Ticks closer than a line of text (kMinYTicks on a short plot): the least step of 1, 2, 2.5
+    // or 5 times a power of ten whose numbers do not touch, where it still numbers kMinYTicks
+    // (a 154 px plot at UI 1.5: -2.5, 0, 2.5 rather than -4, -2, 0, 2 18 px apart); else
+    // labelStride below numbers every second or third tick.
+    double yStep = NAN; // the step whose digits the numbers have (tickLabel)
+    const float areaH = (outerMax.y - font * 1.4f) - (outerMin.y + header);
+    if (!o.logY && yTicks.size() >= 2 && areaH > 0.0f) {
+        const double perUnit = areaH / (yr.hi - yr.lo);
+        const double least = (ImGui::GetTextLineHeight() + font * 0.1f) / perUnit;
+        if ((yTicks[1] - yTicks[0]) < least) {
+            const double power = std::pow(10.0, std::floor(std::log10(least)));
+            for (const double mantissa : {1.0, 2.0, 2.5, 5.0, 10.0}) {
+                if (mantissa * power < least) continue;
+                const std::vector<double> wider = ticksEvery(yr.lo, yr.hi, mantissa * power);
+                if (static_cast<int>(wider.size()) >= kMinYTicks) {
+                    yTicks = wider;
+                    // The digits of its numbers: 2.5 needs one more than its power ("2.5", not
+                    // "2"; "25" and "0.25" as they are).
+                    yStep = mantissa == 2.5 ? 0.1 * mantissa * power : mantissa * power;
+                }
+                break;
+            }
+        }
+    }
     float labelW = ImGui::CalcTextSize("0").x;
     std::vector<std::string> yLabels;
     for (double t : yTicks) {
-        yLabels.push_back(labelFor(t, yr.lo, yr.hi, o.logY, yMinTicks, yMaxTicks));
+        yLabels.push_back(std::isfinite(yStep)
+                              ? tickLabel(t, yStep)
+                              : labelFor(t, yr.lo, yr.hi, o.logY, yMinTicks, yMaxTicks));
         labelW = std::max(labelW, ImGui::CalcTextSize(yLabels.back().c_str()).x);
     }
     Mapping m{x0,
@@ -192,17 +243,26 @@ ScreenRect drawPlot(const char* id, const PlotOptions& o, const std::vector<Plot
     if (m.max.x - m.min.x < 10.0f || m.max.y - m.min.y < 10.0f) return widget;
     dl->AddRectFilled(m.min, m.max, frameBg(), 3.0f);
 
-    // Grid and tick labels.
+    // Grid and tick labels: every tick's line, and its number where the numbers do not touch
+    // (issue 39: a short plot at a large UI scale has room for fewer labels than kMinYTicks).
+    const std::size_t stride = labelStride(yTicks, m, ImGui::GetTextLineHeight() + font * 0.1f);
+    const std::size_t first = firstLabelled(yTicks, stride);
+    const int xMaxTicks = std::max(2, int((m.max.x - m.min.x) / (font * 4.5f)));
+    const std::vector<double> xTicks = ticksFor(x0, x1, o.logX, 1, xMaxTicks);
+    const float xRow = m.max.y + font * 0.15f; // the x axis's numbers' top
+    // A y number reaching down into the x numbers' row (the bottom tick's, -1 on step 10's
+    // momentum plot): the x axis's first number starts right of it rather than on it.
+    float firstXFrom = -INFINITY;
     for (std::size_t i = 0; i < yTicks.size(); ++i) {
         const float y = m.sy(yTicks[i]);
         dl->AddLine(ImVec2(m.min.x, y), ImVec2(m.max.x, y),
                     yTicks[i] == 0.0 && !o.logY ? zeroColor() : gridColor());
+        if (i < first || (i - first) % stride != 0) continue;
         const ImVec2 ts = ImGui::CalcTextSize(yLabels[i].c_str());
-        dl->AddText(ImVec2(m.min.x - ts.x - font * 0.3f, y - ts.y * 0.5f), axisText(),
-                    yLabels[i].c_str());
+        const float right = m.min.x - font * 0.3f;
+        if (y + ts.y * 0.5f > xRow + 1.0f) firstXFrom = right + font * 0.2f;
+        dl->AddText(ImVec2(right - ts.x, y - ts.y * 0.5f), axisText(), yLabels[i].c_str());
     }
-    const int xMaxTicks = std::max(2, int((m.max.x - m.min.x) / (font * 4.5f)));
-    const std::vector<double> xTicks = ticksFor(x0, x1, o.logX, 1, xMaxTicks);
     for (std::size_t i = 0; i < xTicks.size(); ++i) {
         const float x = m.sx(xTicks[i]);
         dl->AddLine(ImVec2(x, m.min.y), ImVec2(x, m.max.y), gridColor());
@@ -210,8 +270,9 @@ ScreenRect drawPlot(const char* id, const PlotOptions& o, const std::vector<Plot
         if (i + 1 == xTicks.size() && *o.xUnit) text += std::string(" ") + o.xUnit;
         const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
         float tx = x - ts.x * 0.5f;
+        if (i == 0) tx = std::max(tx, firstXFrom);
         tx = std::min(tx, outerMax.x - ts.x);
-        dl->AddText(ImVec2(tx, m.max.y + font * 0.15f), axisText(), text.c_str());
+        dl->AddText(ImVec2(tx, xRow), axisText(), text.c_str());
     }
 
     dl->PushClipRect(m.min, m.max, true);
