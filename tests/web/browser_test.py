@@ -127,7 +127,7 @@ def serve(site):
 class Page:
     """One Chromium with one page, over the DevTools protocol."""
 
-    def __init__(self, width, height, pixel_ratio=1.0, touch=False):
+    def __init__(self, width, height, pixel_ratio=1.0, touch=False, flags=()):
         self.profile = tempfile.mkdtemp(prefix="sandbox-chromium-")
         self.proc = subprocess.Popen(
             [CHROMIUM, "--headless=new", "--no-sandbox", "--use-angle=swiftshader",
@@ -135,7 +135,7 @@ class Page:
              "--disable-extensions", "--hide-scrollbars", "--mute-audio",
              f"--window-size={width},{height}", f"--force-device-scale-factor={pixel_ratio}",
              "--remote-debugging-port=0",
-             f"--user-data-dir={self.profile}", "about:blank"],
+             f"--user-data-dir={self.profile}", *flags, "about:blank"],
             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         port_file = os.path.join(self.profile, "DevToolsActivePort")
         self.wait(lambda: os.path.exists(port_file) and open(port_file).read().count("\n") >= 1,
