@@ -125,7 +125,8 @@ def serve(site):
 
 
 class Page:
-    """One Chromium with one page, over the DevTools protocol."""
+    """One Chromium with one page, over the DevTools protocol (`flags`: more of Chromium's
+    switches)."""
 
     def __init__(self, width, height, pixel_ratio=1.0, touch=False, flags=()):
         self.profile = tempfile.mkdtemp(prefix="sandbox-chromium-")
