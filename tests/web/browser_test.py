@@ -1081,6 +1081,8 @@ def phone(base):
 def offline(site, base):
     one_file = "file://" + os.path.abspath(os.path.join(site, "sandbox-offline.html"))
     folder = "file://" + os.path.abspath(os.path.join(site, "index.html"))
+    # One Chromium for both parts (CI time): the file:// pages leave nothing for the served
+    # origin (its own server, a port of its own), which the second part visits first.
     page = Page(1280, 720)
     try:
         page.open(one_file)
@@ -1094,15 +1096,11 @@ def offline(site, base):
             "document.getElementById('note') ? document.getElementById('note').textContent : ''"),
             "the folder build's note about file://")
         check(not page.errors, "the console has errors:\n" + "\n".join(page.errors))
-    finally:
-        page.close()
-    print(f"file://: the one-file build drew the default scene ({colours} colours); the folder "
-          "build says what to do")
-    # Served, visited once, then the server goes away: the service worker's copy answers.
-    server, base = serve(site)
-    url = base + "?scene=newtons_cradle"
-    page = Page(1280, 720)
-    try:
+        print(f"file://: the one-file build drew the default scene ({colours} colours); the "
+              "folder build says what to do")
+        # Served, visited once, then the server goes away: the service worker's copy answers.
+        server, base = serve(site)
+        url = base + "?scene=newtons_cradle"
         page.open(url)
         page.evaluate("navigator.serviceWorker.ready.then(() => { window.sandboxWorker = 1; })")
         page.wait(lambda: page.evaluate("!!window.sandboxWorker"), "the service worker")
