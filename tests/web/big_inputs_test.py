@@ -142,11 +142,40 @@ def settled(page, name):
     return None
 
 
-def big_files(base):
-    failures = []
-    for what, name, query, make_js in INPUTS:
-        page = bt.Page(1280, 720)
+def leave(page, base):
+    """The page left for about:blank, and gone (its memory with it: no back-forward cache); what
+    it kept in the browser (settings, the service worker and its files) forgotten, as in a new
+    Chromium."""
+    page.call("Page.navigate", url="about:blank")
+
+    def gone():
         try:
+            return page.evaluate("location.href") == "about:blank"
+        except AssertionError as e:  # asked while the old page went
+            if "navigated or closed" in str(e):
+                return False
+            raise
+
+    page.wait(gone, "the last input's page to go")
+    origin = re.match(r"https?://[^/]+", base).group(0)
+    page.call("Storage.clearDataForOrigin", origin=origin, storageTypes="all")
+
+
+def big_files(base):
+    """Each input in a new page of one Chromium (a Chromium each cost a start and a stop: CI
+    time): the last input's page is left first, and its errors forgotten; a new Chromium after
+    a page that hung."""
+    failures = []
+    page = None
+    for what, name, query, make_js in INPUTS:
+        fresh = page is None
+        if fresh:
+            page = bt.Page(1280, 720, flags=("--disable-features=BackForwardCache",))
+        started = time.monotonic()
+        try:
+            if not fresh:
+                leave(page, base)
+            page.errors.clear()  # this input's page's errors only
             page.open(base + query)
             page.evaluate("window.sandboxProgressLog = []")
             make_file(page, name, make_js)
@@ -209,8 +238,10 @@ def big_files(base):
             print(f"FAILED: {what}: the page answered nothing for {bt.HANG_GUARD_S} s "
                   f"({took:.0f} s after the file was given)", flush=True)
             failures.append(f"{what}: hung")
-        finally:
             page.close()
+            page = None
+    if page:
+        page.close()
     check(not failures, f"{len(failures)} of {len(INPUTS)} inputs failed")
 
 

@@ -125,9 +125,10 @@ def serve(site):
 
 
 class Page:
-    """One Chromium with one page, over the DevTools protocol."""
+    """One Chromium with one page, over the DevTools protocol (`flags`: more of Chromium's
+    switches)."""
 
-    def __init__(self, width, height, pixel_ratio=1.0, touch=False):
+    def __init__(self, width, height, pixel_ratio=1.0, touch=False, flags=()):
         self.profile = tempfile.mkdtemp(prefix="sandbox-chromium-")
         self.proc = subprocess.Popen(
             [CHROMIUM, "--headless=new", "--no-sandbox", "--use-angle=swiftshader",
@@ -135,7 +136,7 @@ class Page:
              "--disable-extensions", "--hide-scrollbars", "--mute-audio",
              f"--window-size={width},{height}", f"--force-device-scale-factor={pixel_ratio}",
              "--remote-debugging-port=0",
-             f"--user-data-dir={self.profile}", "about:blank"],
+             f"--user-data-dir={self.profile}", *flags, "about:blank"],
             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         port_file = os.path.join(self.profile, "DevToolsActivePort")
         self.wait(lambda: os.path.exists(port_file) and open(port_file).read().count("\n") >= 1,
@@ -1080,6 +1081,8 @@ def phone(base):
 def offline(site, base):
     one_file = "file://" + os.path.abspath(os.path.join(site, "sandbox-offline.html"))
     folder = "file://" + os.path.abspath(os.path.join(site, "index.html"))
+    # One Chromium for both parts (CI time): the file:// pages leave nothing for the served
+    # origin (its own server, a port of its own), which the second part visits first.
     page = Page(1280, 720)
     try:
         page.open(one_file)
@@ -1093,15 +1096,11 @@ def offline(site, base):
             "document.getElementById('note') ? document.getElementById('note').textContent : ''"),
             "the folder build's note about file://")
         check(not page.errors, "the console has errors:\n" + "\n".join(page.errors))
-    finally:
-        page.close()
-    print(f"file://: the one-file build drew the default scene ({colours} colours); the folder "
-          "build says what to do")
-    # Served, visited once, then the server goes away: the service worker's copy answers.
-    server, base = serve(site)
-    url = base + "?scene=newtons_cradle"
-    page = Page(1280, 720)
-    try:
+        print(f"file://: the one-file build drew the default scene ({colours} colours); the "
+              "folder build says what to do")
+        # Served, visited once, then the server goes away: the service worker's copy answers.
+        server, base = serve(site)
+        url = base + "?scene=newtons_cradle"
         page.open(url)
         page.evaluate("navigator.serviceWorker.ready.then(() => { window.sandboxWorker = 1; })")
         page.wait(lambda: page.evaluate("!!window.sandboxWorker"), "the service worker")
