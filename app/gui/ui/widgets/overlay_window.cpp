@@ -70,16 +70,14 @@ ImVec2 sceneCaptionPlace(const App& app, float width, float height,
 
 namespace {
 
-// The caption's lines wrapped `width` px wide (wrapFormula: never inside a number), each piece
-// in its line's colour; and the widest piece.
+// The caption's lines wrapped `width` px wide (wrapFormula: never inside a number; kept from
+// earlier frames, wrappedFormula), each piece in its line's colour; and the widest piece.
 std::vector<CaptionLine> wrappedCaption(const std::vector<CaptionLine>& lines, float width,
                                         float& widest) {
     std::vector<CaptionLine> out;
     widest = 0.0f;
     for (const CaptionLine& l : lines) {
-        const std::string text = wrapFormula(l.text, width, [](const std::string& piece) {
-            return static_cast<double>(ImGui::CalcTextSize(piece.c_str()).x);
-        });
+        const std::string& text = wrappedFormula(l.text, width);
         std::size_t start = 0;
         while (start <= text.size()) {
             const std::size_t end = std::min(text.find('\n', start), text.size());
@@ -91,9 +89,9 @@ std::vector<CaptionLine> wrappedCaption(const std::vector<CaptionLine>& lines, f
     return out;
 }
 
-bool hidesText(const App& app, ImVec2 at, ImVec2 size) {
+// Whether a plate at `at` of `size` hides one of `texts` (textsNotYielding).
+bool hidesText(const std::vector<ScreenRect>& texts, ImVec2 at, ImVec2 size) {
     const ScreenRect plate{at.x, at.y, size.x, size.y};
-    const std::vector<ScreenRect> texts = textsNotYielding(app);
     return std::any_of(texts.begin(), texts.end(),
                        [&plate](const ScreenRect& t) { return rectsOverlap(plate, t); });
 }
@@ -118,6 +116,7 @@ void drawSceneCaption(App& app, const std::vector<CaptionLine>& lines,
     const float room = static_cast<float>(app.view.camera.viewport().width) - 32.0f * s;
     const float fits = natural > room && room > 0.0f ? room / natural : 1.0f;
     const float shares[] = {1.0f, fits, 0.6f, 0.4f, 0.25f};
+    const std::vector<ScreenRect> texts = textsNotYielding(app); // the same for every try
     for (std::size_t k = 0; k < std::size(shares); ++k) {
         const float share = shares[k];
         if (k == 1 && fits == 1.0f) continue; // it fits the scene as it is
@@ -128,7 +127,7 @@ void drawSceneCaption(App& app, const std::vector<CaptionLine>& lines,
         // The plate is 6 px (x UI scale) wider than the text on each side, 4 px taller.
         const ImVec2 size(widest + 12.0f * s, static_cast<float>(tried.size()) * font + 8.0f * s);
         const ImVec2 at = sceneCaptionPlace(app, size.x, size.y, boxes);
-        const bool hides = hidesText(app, at, size);
+        const bool hides = hidesText(texts, at, size);
         if (k == 0 || !hides) { // as it is, unless a narrower one hides nothing
             shown = std::move(tried);
             width = widest;
