@@ -52,15 +52,58 @@ bool SceneRenderer::init(std::string* error) {
 #endif
     maxPointPx_ = std::min(static_cast<double>(pointSizes[1]), kMaxPointSpritePx);
 
-    glGenVertexArrays(1, &blockVao_);
     glGenBuffers(1, &cornerVbo_);
-    glGenBuffers(1, &instanceVbo_);
-    glBindVertexArray(blockVao_);
+    glGenBuffers(1, &streamVbo_);
     glBindBuffer(GL_ARRAY_BUFFER, cornerVbo_);
     glBufferData(GL_ARRAY_BUFFER, sizeof kCorners, kCorners, GL_STATIC_DRAW);
+    // A vertex array for each block program: a quad's corners (not for points, one vertex each)
+    // and the instances' attributes (pointed into the frame's buffer by pointBlockAttributes).
+    for (int k = 0; k < kBlockStyleCount; ++k) {
+        for (int shape = 0; shape < kBlockShapeCount; ++shape) {
+            BlockProgram& b = blockPrograms_[k][shape];
+            glGenVertexArrays(1, &b.vao);
+            glBindVertexArray(b.vao);
+            if (shape == kQuad) {
+                glBindBuffer(GL_ARRAY_BUFFER, cornerVbo_);
+                glEnableVertexAttribArray(0);
+                glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+            }
+            for (GLuint index = 1; index <= 4; ++index) {
+                glEnableVertexAttribArray(index);
+                if (shape == kQuad) glVertexAttribDivisor(index, 1);
+            }
+        }
+    }
+    glGenVertexArrays(1, &shapeVao_);
+    glBindVertexArray(shapeVao_);
     glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
-    glBindBuffer(GL_ARRAY_BUFFER, instanceVbo_);
+    glEnableVertexAttribArray(1);
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    return true;
+}
+
+void SceneRenderer::shutdown() {
+    glDeleteBuffers(1, &cornerVbo_);
+    glDeleteBuffers(1, &streamVbo_);
+    glDeleteVertexArrays(1, &shapeVao_);
+    for (auto& shapes : blockPrograms_) {
+        for (BlockProgram& b : shapes) {
+            if (b.program) glDeleteProgram(b.program);
+            if (b.vao) glDeleteVertexArrays(1, &b.vao);
+            b = BlockProgram{};
+        }
+    }
+    if (shapeProgram_) glDeleteProgram(shapeProgram_);
+    shapeProgram_ = 0;
+    shapeVao_ = cornerVbo_ = streamVbo_ = 0;
+    shapeBase_ = ~std::size_t(0);
+}
+
+void SceneRenderer::pointBlockAttributes(int style, int shape, std::size_t base) {
+    BlockProgram& b = blockPrograms_[style][shape];
+    if (b.base == base) return;
+    b.base = base;
     const GLsizei stride = sizeof(BlockInstance);
     const struct {
         GLuint index;
@@ -70,79 +113,77 @@ bool SceneRenderer::init(std::string* error) {
                        {2, 4, offsetof(BlockInstance, fill)},
                        {3, 4, offsetof(BlockInstance, outline)},
                        {4, 2, offsetof(BlockInstance, style)}};
-    for (const auto& a : attributes) {
-        glEnableVertexAttribArray(a.index);
+    for (const auto& a : attributes)
         glVertexAttribPointer(a.index, a.size, GL_FLOAT, GL_FALSE, stride,
-                              reinterpret_cast<const void*>(a.offset));
-        glVertexAttribDivisor(a.index, 1);
-    }
-    // The same records as points: one vertex each, no corners.
-    glGenVertexArrays(1, &pointVao_);
-    glBindVertexArray(pointVao_);
-    glBindBuffer(GL_ARRAY_BUFFER, instanceVbo_);
-    for (const auto& a : attributes) {
-        glEnableVertexAttribArray(a.index);
-        glVertexAttribPointer(a.index, a.size, GL_FLOAT, GL_FALSE, stride,
-                              reinterpret_cast<const void*>(a.offset));
-    }
-
-    glGenVertexArrays(1, &shapeVao_);
-    glGenBuffers(1, &shapeVbo_);
-    glBindVertexArray(shapeVao_);
-    glBindBuffer(GL_ARRAY_BUFFER, shapeVbo_);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(ShapeVertex),
-                          reinterpret_cast<const void*>(offsetof(ShapeVertex, x)));
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(ShapeVertex),
-                          reinterpret_cast<const void*>(offsetof(ShapeVertex, r)));
-    glBindVertexArray(0);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    return true;
+                              reinterpret_cast<const void*>(base + a.offset));
 }
 
-void SceneRenderer::shutdown() {
-    glDeleteBuffers(1, &cornerVbo_);
-    glDeleteBuffers(1, &instanceVbo_);
-    glDeleteBuffers(1, &shapeVbo_);
-    glDeleteVertexArrays(1, &blockVao_);
-    glDeleteVertexArrays(1, &pointVao_);
-    glDeleteVertexArrays(1, &shapeVao_);
-    for (auto& shapes : blockPrograms_) {
-        for (BlockProgram& b : shapes) {
-            if (b.program) glDeleteProgram(b.program);
-            b = BlockProgram{};
+void SceneRenderer::pointShapeAttributes(std::size_t base) {
+    if (shapeBase_ == base) return;
+    shapeBase_ = base;
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(ShapeVertex),
+                          reinterpret_cast<const void*>(base + offsetof(ShapeVertex, x)));
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(ShapeVertex),
+                          reinterpret_cast<const void*>(base + offsetof(ShapeVertex, r)));
+}
+
+void SceneRenderer::append(const void* data, std::size_t bytes) {
+    const auto* from = static_cast<const unsigned char*>(data);
+    upload_.insert(upload_.end(), from, from + bytes);
+}
+
+SceneRenderer::BatchRanges SceneRenderer::addBatch(const ShapeBatch& batch, float lineWidthPx) {
+    const auto vertexAt = [&] {
+        return static_cast<GLint>((upload_.size() - shapeBytes_) / sizeof(ShapeVertex));
+    };
+    BatchRanges r;
+    r.lineWidthPx = lineWidthPx;
+    r.triangles = {vertexAt(), static_cast<GLsizei>(batch.vertices().size())};
+    append(batch.vertices().data(), batch.vertices().size() * sizeof(ShapeVertex));
+    const std::vector<ShapeVertex>* segments = &batch.segmentVertices();
+    r.segmentsAsLines = lineWidthPx <= maxLineWidth_;
+    if (!r.segmentsAsLines) { // no lines this wide (WebGL 2): the quads GL would have rasterised
+        wideLineQuads_.clear();
+        appendWideLineQuads(batch.segmentVertices(), lineWidthPx, framebufferPixelsPerMetre_,
+                            wideLineQuads_);
+        segments = &wideLineQuads_;
+    }
+    r.segments = {vertexAt(), static_cast<GLsizei>(segments->size())};
+    append(segments->data(), segments->size() * sizeof(ShapeVertex));
+    return r;
+}
+
+void SceneRenderer::upload(const float lineWidthPx[3]) {
+    upload_.clear();
+    for (int k = 0; k < kBlockStyleCount; ++k) {
+        for (int shape = 0; shape < kBlockShapeCount; ++shape) {
+            const std::vector<BlockInstance>& instances = geometry_.blocks[k][shape];
+            blockPrograms_[k][shape].count = static_cast<GLsizei>(instances.size());
+            if (instances.empty()) continue;
+            blockPrograms_[k][shape].at = upload_.size();
+            append(instances.data(), instances.size() * sizeof(BlockInstance));
         }
     }
-    if (shapeProgram_) glDeleteProgram(shapeProgram_);
-    shapeProgram_ = 0;
-    blockVao_ = pointVao_ = shapeVao_ = cornerVbo_ = instanceVbo_ = shapeVbo_ = 0;
+    shapeBytes_ = upload_.size();
+    const ShapeBatch* batches[3] = {&geometry_.under, &geometry_.momenta, &geometry_.over};
+    for (int i = 0; i < 3; ++i) batchRanges_[i] = addBatch(*batches[i], lineWidthPx[i]);
+    if (upload_.empty()) return;
+    glBindBuffer(GL_ARRAY_BUFFER, streamVbo_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(upload_.size()), upload_.data(),
+                 GL_STREAM_DRAW);
 }
 
-void SceneRenderer::drawVertices(const std::vector<ShapeVertex>& vertices, GLenum mode) {
-    if (vertices.empty()) return;
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(ShapeVertex)),
-                 vertices.data(), GL_STREAM_DRAW);
-    glDrawArrays(mode, 0, static_cast<GLsizei>(vertices.size()));
-}
-
-void SceneRenderer::drawShapes(const ClipTransform& t, const ShapeBatch& batch, float lineWidthPx) {
-    if (batch.vertices().empty() && batch.segmentVertices().empty()) return;
+void SceneRenderer::drawShapes(const ClipTransform& t, const BatchRanges& r) {
+    if (r.triangles.count == 0 && r.segments.count == 0) return;
     glUseProgram(shapeProgram_);
     setUniformTransform(shapeTransform_, t);
     glBindVertexArray(shapeVao_);
-    glBindBuffer(GL_ARRAY_BUFFER, shapeVbo_);
-    drawVertices(batch.vertices(), GL_TRIANGLES);
-    if (lineWidthPx <= maxLineWidth_) {
-        glLineWidth(std::max(lineWidthPx, 1.0f));
-        drawVertices(batch.segmentVertices(), GL_LINES);
-        return;
-    }
-    // No lines this wide (WebGL 2): the quads GL would have rasterised.
-    wideLineQuads_.clear();
-    appendWideLineQuads(batch.segmentVertices(), lineWidthPx, framebufferPixelsPerMetre_,
-                        wideLineQuads_);
-    drawVertices(wideLineQuads_, GL_TRIANGLES);
+    pointShapeAttributes(shapeBytes_);
+    if (r.triangles.count) glDrawArrays(GL_TRIANGLES, r.triangles.first, r.triangles.count);
+    if (r.segmentsAsLines) glLineWidth(std::max(r.lineWidthPx, 1.0f));
+    if (r.segments.count)
+        glDrawArrays(r.segmentsAsLines ? GL_LINES : GL_TRIANGLES, r.segments.first,
+                     r.segments.count);
 }
 
 void SceneRenderer::draw(const SceneView& view) {
@@ -182,13 +223,14 @@ void SceneRenderer::draw(const SceneView& view) {
     const ClipTransform t = view.camera->clipTransform(view.displayWidth, view.displayHeight);
     framebufferPixelsPerMetre_ = std::abs(t.scaleX) * 0.5 * vp[2];
     geometry_.build(view, maxPointPx_);
+    const float lineWidthPx[3] = {kTrailWidthPx, kMomentumShaftPx, kVelocityShaftPx};
+    upload(lineWidthPx);
 
-    drawShapes(t, geometry_.under, kTrailWidthPx);
+    drawShapes(t, batchRanges_[0]); // under the blocks: the grid, the trails
 
 #if !SANDBOX_GL_ES
     glEnable(GL_PROGRAM_POINT_SIZE); // always on in OpenGL ES
 #endif
-    glBindBuffer(GL_ARRAY_BUFFER, instanceVbo_);
     for (int k = 0; k < kBlockStyleCount; ++k) {
         for (int shape = 0; shape < kBlockShapeCount; ++shape) {
             const std::vector<BlockInstance>& instances = geometry_.blocks[k][shape];
@@ -207,15 +249,12 @@ void SceneRenderer::draw(const SceneView& view) {
             glUseProgram(b.program);
             setUniformTransform(b.transform, t);
             glUniform1f(b.pixelsPerMetre, static_cast<float>(view.camera->pixelsPerMetre()));
-            glBindVertexArray(shape == kPoint ? pointVao_ : blockVao_);
-            glBufferData(GL_ARRAY_BUFFER,
-                         static_cast<GLsizeiptr>(instances.size() * sizeof(BlockInstance)),
-                         instances.data(), GL_STREAM_DRAW);
-            const auto n = static_cast<GLsizei>(instances.size());
+            glBindVertexArray(b.vao);
+            pointBlockAttributes(k, shape, b.at);
             if (shape == kPoint)
-                glDrawArrays(GL_POINTS, 0, n);
+                glDrawArrays(GL_POINTS, 0, b.count);
             else
-                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, n);
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, b.count);
         }
     }
 #if !SANDBOX_GL_ES
@@ -223,8 +262,8 @@ void SceneRenderer::draw(const SceneView& view) {
 #endif
     glEnable(GL_BLEND);
 
-    drawShapes(t, geometry_.momenta, kMomentumShaftPx);
-    drawShapes(t, geometry_.over, kVelocityShaftPx);
+    drawShapes(t, batchRanges_[1]); // the momentum arrows
+    drawShapes(t, batchRanges_[2]); // the velocity arrows, the fling arrow
 
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);

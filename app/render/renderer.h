@@ -6,6 +6,7 @@
 #include "gl_api.h"
 #include "scene_geometry.h"
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -19,23 +20,51 @@ class SceneRenderer {
     void draw(const SceneView& view);
 
   private:
-    // Triangles, then segments as GL lines `lineWidthPx` wide.
-    void drawShapes(const ClipTransform& t, const ShapeBatch& batch, float lineWidthPx);
-    void drawVertices(const std::vector<ShapeVertex>& vertices, GLenum mode);
+    // A run of shape vertices in the frame's upload: its first vertex and how many.
+    struct ShapeRange {
+        GLint first = 0;
+        GLsizei count = 0;
+    };
+    // A batch's parts in the upload: its triangles, and its segments as GL lines or (wider than
+    // GL draws them) as the quads appendWideLineQuads makes.
+    struct BatchRanges {
+        ShapeRange triangles, segments;
+        bool segmentsAsLines = true;
+        float lineWidthPx = 1.0f;
+    };
+    // Everything the frame draws in one buffer, uploaded by one glBufferData: the blocks'
+    // instances (each style and shape's after the other's), then the shapes' vertices. In WebGL
+    // each upload crosses to JavaScript and into the browser's GPU process.
+    void upload(const float lineWidthPx[3]);
+    void append(const void* data, std::size_t bytes);
+    BatchRanges addBatch(const ShapeBatch& batch, float lineWidthPx);
+    void drawShapes(const ClipTransform& t, const BatchRanges& ranges);
+    // A vertex array's attributes moved to `base` bytes into the buffer, only when they are
+    // elsewhere (the offsets stay from frame to frame while the block counts do).
+    void pointBlockAttributes(int style, int shape, std::size_t base);
+    void pointShapeAttributes(std::size_t base);
 
     // Blocks are drawn in up to six calls, one program per style and shape (block.frag's
-    // variants): instanced quads, or point sprites.
+    // variants): instanced quads, or point sprites; each has its vertex array.
     struct BlockProgram {
         GLuint program = 0;
         GLint transform = -1, pixelsPerMetre = -1;
+        GLuint vao = 0;
+        std::size_t base = ~std::size_t(0); // where its attributes point in the buffer (bytes)
+        std::size_t at = 0;                 // its instances in this frame's upload (bytes)
+        GLsizei count = 0;                  // and how many
     };
     BlockProgram blockPrograms_[kBlockStyleCount][kBlockShapeCount];
     GLuint shapeProgram_ = 0;
-    GLuint blockVao_ = 0, pointVao_ = 0, cornerVbo_ = 0, instanceVbo_ = 0;
-    GLuint shapeVao_ = 0, shapeVbo_ = 0;
+    GLuint cornerVbo_ = 0, streamVbo_ = 0;
+    GLuint shapeVao_ = 0;
+    std::size_t shapeBase_ = ~std::size_t(0); // where the shape attributes point (bytes)
     GLint shapeTransform_ = -1;
     float maxLineWidth_ = 1.0f; // the widest GL line, pixels (1 in WebGL 2)
     double framebufferPixelsPerMetre_ = 1.0;
+    BatchRanges batchRanges_[3];             // under, momenta, over
+    std::vector<unsigned char> upload_;      // the instances, then the shape vertices
+    std::size_t shapeBytes_ = 0;             // where the shape vertices start in upload_
     std::vector<ShapeVertex> wideLineQuads_; // segments as triangles, when lines cannot be wide
     double maxPointPx_ = 1.0;                // the largest point sprite used for a block, pixels
     SceneGeometry geometry_;

@@ -16,6 +16,9 @@ browser_test.py (headless Chromium over the DevTools protocol, its Page); one ch
   url-range   a URL value out of its range (?lesson=lecture3&step=1000, step=99999999) is refused
               with a message naming the parameter and the range, and the rest opens (the lesson
               at its first step)
+  page-error  a JavaScript exception inside a frame (the page's own service that the app calls,
+              made to throw once) is said in the panel's error, and the frames go on (C++'s
+              catch does not catch it: uncaught, it ended the main loop, the page frozen)
 
 Exit 0: passed; 1: failed; 77: skipped (as browser_test.py).
 
@@ -261,12 +264,43 @@ def url_range(base):
         page.close()
 
 
+def page_error(base):
+    page = bt.Page(1280, 720)
+    try:
+        page.open(base)
+        page.key("p", "KeyP", 80)  # running: the page's text changes, showState is called
+        page.evaluate("""(() => {
+          const showState = window.sandboxPage.showState;
+          window.sandboxPage.showState = function () {
+            if (!window.sandboxThrown) {
+              window.sandboxThrown = true;
+              throw new Error('showState failed on purpose');
+            }
+            return showState.apply(this, arguments);
+          };
+        })()""")
+        check(wait_for(lambda: page.evaluate("window.sandboxThrown === true")),
+              "the page's showState was never called")
+        frames = page.status()["frames"]
+        check(wait_for(lambda: page.status()["frames"] >= frames + 10),
+              "the frames stopped after a JavaScript exception in a frame")
+        s = page.status()
+        check("JavaScript: showState failed on purpose" in s["error"],
+              f"the panel does not say the JavaScript exception: {s['error']!r}")
+        page.key("p", "KeyP", 80)  # the keys still work
+        check(wait_for(lambda: page.status()["paused"]), "P does not pause after the exception")
+        print(f"after the exception: {s['error']!r}; frames go on, P pauses")
+    finally:
+        page.close()
+
+
 def main():
     if len(sys.argv) < 3:
         print(__doc__)
         return 2
     site, what = sys.argv[1], sys.argv[2]
-    return bt.run_site(site, {"big-files": big_files, "url-range": url_range}[what])
+    return bt.run_site(site, {"big-files": big_files, "url-range": url_range,
+                                 "page-error": page_error}[what])
 
 
 if __name__ == "__main__":

@@ -27,7 +27,9 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <deque>
 #include <exception>
 #include <filesystem>
@@ -288,8 +290,20 @@ void runFrame(WebApp& w) {
     if (w.frames++ == 0) pageFirstFrameShown();
 }
 
-// Every exception reaches the page as a message (the panel's error and the live region), and the
-// next frame goes on: an ImGui frame left open by it is closed first.
+// After an error in a frame: the page says it (the panel's error and the live region), an ImGui
+// frame it left open is closed, and the next frame goes on.
+void frameFailed(WebApp& w, const std::string& what) {
+    imgui_ext::endFrameLeftOpen(); // an ImGui frame the error left open (imgui_ext.h)
+    w.app.ui.messages.error = "The sandbox met an error and goes on: " + printable(what);
+    std::fprintf(stderr, "sandbox: %s\n", w.app.ui.messages.error.c_str());
+    pageShowProgress("");
+    w.opening.clear();
+    w.openingShown = false;
+    w.traceOpening.reset();
+    if (w.frames++ == 0) pageFirstFrameShown();
+}
+
+// Every C++ exception reaches the page as a message, and the next frame goes on.
 void frame(void* arg) {
     WebApp& w = *static_cast<WebApp*>(arg);
     std::string what;
@@ -301,14 +315,28 @@ void frame(void* arg) {
     } catch (...) {
         what = "an unknown exception";
     }
-    imgui_ext::endFrameLeftOpen(); // an ImGui frame the error left open (imgui_ext.h)
-    w.app.ui.messages.error = "The sandbox met an error and goes on: " + printable(what);
-    std::fprintf(stderr, "sandbox: %s\n", w.app.ui.messages.error.c_str());
-    pageShowProgress("");
-    w.opening.clear();
-    w.openingShown = false;
-    w.traceOpening.reset();
-    if (w.frames++ == 0) pageFirstFrameShown();
+    frameFailed(w, what);
+}
+
+// The frame inside JavaScript's try. A JavaScript exception (one of the page's services that
+// throws) passes C++'s catch (...) by: with WebAssembly's exceptions (-fwasm-exceptions) it
+// catches C++'s only. Uncaught, it would end emscripten's main loop (the page frozen on its last
+// frame, its message never drawn); here it goes to sandbox_web_frame_failed as C++'s do.
+// emscripten's own ('unwind', ExitStatus) pass on.
+// JavaScript, not C++: kept as written.
+// clang-format off
+EM_JS(void, run_frame_in_js_try, (std::uintptr_t run, void* arg), {
+    try {
+        wasmTable.get(run)(arg);
+    } catch (e) {
+        if (e === 'unwind' || e instanceof ExitStatus) throw e;
+        _sandbox_web_frame_failed(allocateUTF8(String((e && e.message) || e)));
+    }
+});
+// clang-format on
+
+void guardedFrame(void* arg) {
+    run_frame_in_js_try(reinterpret_cast<std::uintptr_t>(&frame), arg); // its table index
 }
 
 // ImGui's keyboard focus for the browser tests: the focused control's id, whether the focus ring
@@ -323,6 +351,13 @@ std::string navigationJson() {
 }
 
 } // namespace
+
+// Called by run_frame_in_js_try with a JavaScript exception's message (malloc'd: freed here).
+extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_frame_failed(char* text) {
+    const std::string what = text ? text : "";
+    std::free(text);
+    if (gWeb) frameFailed(*gWeb, "JavaScript: " + what);
+}
 
 // Called by web/index.html when the page is hidden or left: the settings are kept now.
 extern "C" EMSCRIPTEN_KEEPALIVE void sandbox_web_save_settings() {
@@ -512,6 +547,6 @@ int main() {
     uiFollowView(app.view, app.ui.touchUi);
     uiRendererFontsChanged();
     if (!w.renderer.init(&error)) app.ui.messages.error = "Shader error: " + error;
-    emscripten_set_main_loop_arg(frame, &w, 0, 1);
+    emscripten_set_main_loop_arg(guardedFrame, &w, 0, 1);
     return 0;
 }

@@ -70,16 +70,14 @@ ImVec2 sceneCaptionPlace(const App& app, float width, float height,
 
 namespace {
 
-// The caption's lines wrapped `width` px wide (wrapFormula: never inside a number), each piece
-// in its line's colour; and the widest piece.
+// The caption's lines wrapped `width` px wide (wrapFormula: never inside a number; kept from
+// earlier frames, wrappedFormula), each piece in its line's colour; and the widest piece.
 std::vector<CaptionLine> wrappedCaption(const std::vector<CaptionLine>& lines, float width,
                                         float& widest) {
     std::vector<CaptionLine> out;
     widest = 0.0f;
     for (const CaptionLine& l : lines) {
-        const std::string text = wrapFormula(l.text, width, [](const std::string& piece) {
-            return static_cast<double>(ImGui::CalcTextSize(piece.c_str()).x);
-        });
+        const std::string& text = wrappedFormula(l.text, width);
         std::size_t start = 0;
         while (start <= text.size()) {
             const std::size_t end = std::min(text.find('\n', start), text.size());
@@ -107,10 +105,10 @@ struct Hidden {
         return texts < o.texts || (texts == o.texts && blocks < o.blocks);
     }
 };
-Hidden hiddenBy(const App& app, ImVec2 at, ImVec2 size) {
+Hidden hiddenBy(const App& app, const std::vector<ScreenRect>& texts, ImVec2 at, ImVec2 size) {
     const ScreenRect plate{at.x, at.y, size.x, size.y};
     Hidden out;
-    for (const ScreenRect& t : textsNotYielding(app)) out.texts += overlapArea(plate, t);
+    for (const ScreenRect& t : texts) out.texts += overlapArea(plate, t);
     for (const ScreenRect& b : app.ui.takenOnScreen.blocks) out.blocks += overlapArea(plate, b);
     return out;
 }
@@ -179,12 +177,13 @@ void drawSceneCaption(App& app, const std::vector<CaptionLine>& lines,
     std::size_t chosen = 0;
     ImVec2 plate;
     Hidden least{INFINITY, INFINITY};
+    const std::vector<ScreenRect> texts = textsNotYielding(app); // the same for every try
     for (std::size_t k = 0; k < forms.size(); ++k) {
         // The plate is 6 px (x UI scale) wider than the text on each side, 4 px taller.
         const ImVec2 size(forms[k].width + 12.0f * s,
                           static_cast<float>(forms[k].lines.size()) * font + 8.0f * s);
         const ImVec2 at = sceneCaptionPlace(app, size.x, size.y, boxes);
-        const Hidden hidden = hiddenBy(app, at, size);
+        const Hidden hidden = hiddenBy(app, texts, at, size);
         if (hidden < least) {
             chosen = k;
             plate = at;

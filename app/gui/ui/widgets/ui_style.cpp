@@ -281,10 +281,12 @@ namespace {
 
 // Wrapped texts as earlier frames made them, by what the wrapping depends on: the text, the
 // width, the rule (at spaces or a formula's) and the font (its size too). Most of the UI's text
-// is the same from one frame to the next, and wrapping it measures every word; the memo is
-// emptied when it holds kMaxWrapped texts (a running number makes a new text each frame).
+// is the same from one frame to the next, and wrapping it measures every word. A running number
+// makes a new text each frame: when the memo holds kMaxWrapped texts it becomes the older one,
+// and the texts still in use move back from it as they are asked for (the rest go at the next
+// turn), so the steady texts are never wrapped again.
 constexpr std::size_t kMaxWrapped = 512;
-std::unordered_map<std::string, std::string> gWrapped;
+std::unordered_map<std::string, std::string> gWrapped, gWrappedBefore;
 
 const std::string& wrapped(const std::string& text, float width, bool formula) {
     const ImFont* font = ImGui::GetFont();
@@ -296,10 +298,15 @@ const std::string& wrapped(const std::string& text, float width, bool formula) {
     key += text;
     const auto found = gWrapped.find(key);
     if (found != gWrapped.end()) return found->second;
+    if (gWrapped.size() >= kMaxWrapped) {
+        gWrappedBefore.swap(gWrapped);
+        gWrapped.clear();
+    }
+    const auto before = gWrappedBefore.find(key);
+    if (before != gWrappedBefore.end()) return gWrapped[std::move(key)] = std::move(before->second);
     const auto measure = [](const std::string& line) {
         return static_cast<double>(ImGui::CalcTextSize(line.c_str()).x);
     };
-    if (gWrapped.size() >= kMaxWrapped) gWrapped.clear();
     return gWrapped[std::move(key)] =
                formula ? wrapFormula(text, width, measure) : wrapAtSpaces(text, width, measure);
 }
@@ -308,6 +315,10 @@ const std::string& wrapped(const std::string& text, float width, bool formula) {
 
 const std::string& wrappedAtSpaces(const std::string& text, float width) {
     return wrapped(text, width, false);
+}
+
+const std::string& wrappedFormula(const std::string& text, float width) {
+    return wrapped(text, width, true);
 }
 
 namespace {

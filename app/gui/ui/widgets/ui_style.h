@@ -51,6 +51,9 @@ const std::string& wrappedAtSpaces(const std::string& text, float width);
 // A line with equations, wrapped before its operators (wrapFormula): nothing cut at the window's
 // edge, and each chain still reads as one.
 void textWrappedFormula(const std::string& text);
+// `text` wrapped as a formula (wrapFormula) to `width` in the current font, kept as
+// wrappedAtSpaces keeps its texts. Valid until the next wrapping.
+const std::string& wrappedFormula(const std::string& text, float width);
 // The last item's tooltip while it is hovered: `text`, wrapped 30 font sizes wide (the whole of
 // what the item shows shortened).
 void wrappedTooltip(const std::string& text);
