@@ -155,7 +155,8 @@ def leave(page, base):
         try:
             return page.evaluate("location.href") == "about:blank"
         except AssertionError as e:  # asked while the old page went
-            if "navigated or closed" in str(e):
+            if any(w in str(e) for w in ("navigated or closed", "Execution context was destroyed",
+                                         "Cannot find context")):
                 return False
             raise
 
@@ -167,85 +168,98 @@ def leave(page, base):
 def big_files(base):
     """Each input in a new page of one Chromium (a Chromium each cost a start and a stop: CI
     time): the last input's page is left first, and its errors forgotten; a new Chromium after
-    a page that hung."""
+    an input that failed or hung (its page may still be busy). Whatever happens, no Chromium is
+    left running."""
     failures = []
     page = None
     for what, name, query, make_js in INPUTS:
-        fresh = page is None
-        if fresh:
-            page = bt.Page(1280, 720, flags=("--disable-features=BackForwardCache",))
-        started = time.monotonic()
-        try:
-            if not fresh:
-                leave(page, base)
-            page.errors.clear()  # this input's page's errors only
-            page.open(base + query)
-            page.evaluate("window.sandboxProgressLog = []")
-            make_file(page, name, make_js)
-            # The page's tasks over 50 ms (Chromium's long tasks) from the pick on: the longest
-            # is how long the open held the page's one thread, keys waiting meanwhile.
-            page.evaluate("window.longestTask = 0; new PerformanceObserver(list => { "
-                          "for (const e of list.getEntries()) window.longestTask = "
-                          "Math.max(window.longestTask, e.duration); })"
-                          ".observe({entryTypes: ['longtask']}); 0")
-            started = time.monotonic()
-            pick_file(page)
-            latencies, outcome = [], None
-            deadline = started + bt.HANG_GUARD_S * 3
-            while outcome is None:
-                check(time.monotonic() < deadline, f"{what}: neither opened nor refused")
-                latencies.append(key_latency(page))
-                outcome = settled(page, name)
-                time.sleep(0.2)
-            took = time.monotonic() - started
-            how, s = outcome
-            progress = page.evaluate("window.sandboxProgressLog")
-            longest = page.evaluate("window.longestTask")
-            # The live region says a refusal on the next frames (the app's message, when it
-            # changes, is announced as the page's state is sent).
-            def live_text():
-                return page.evaluate("document.getElementById('reader-live').textContent")
-            if how == "refused":
-                wait_for(lambda: s["error"][:60] in live_text(), 10)
-            live = live_text()
-            # The page still answers: F1 opens the help.
-            page.key("F1", "F1", 112)
-            answered = wait_for(lambda: page.status()["helpOpen"])
-            page.wait_frames(2)
-            said = f"progress shown {len(progress)} times" if how == "opened" else repr(s["error"][:160])
-            print(f"{what}: {how} after {took:.1f} s ({said}); the page took a key in "
-                  f"{statistics.median(latencies) * 1000:.0f} ms median, "
-                  f"{max(latencies) * 1000:.0f} ms at most ({len(latencies)} keys), its longest "
-                  f"task {longest:.0f} ms (reported, not checked); F1 "
-                  f"{'opened' if answered else 'did not open'} the help after",
-                  flush=True)
-            if name.endswith("_at_limit" + os.path.splitext(name)[1]):
-                check(how == "opened", f"{what}: refused, though within the browser's limit")
-            if how == "opened":
-                check(progress, f"{what}: opened with no progress shown on the page")
-                if name.endswith(".csv"):
-                    # Compared one run a frame, each said on the page (browser/trace_opening.h).
-                    runs = [p for p in progress if p.startswith("Comparing " + name)]
-                    check(len(runs) >= 3 and re.search(r": run (\d+) of \1\.\.\.$", runs[-1]),
-                          f"{what}: not compared run by run with its progress shown: {progress}")
-            else:
-                check(s["error"] and s["error"][:60] in live,
-                      f"{what}: refused, but the page's live region does not say it: {live!r}")
-            check(answered, f"{what}: F1 did not open the help after it")
-            check(not page.errors, f"{what}: the console has errors:\n" + "\n".join(page.errors))
-        except AssertionError as e:  # every input is tried and reported
-            print(f"FAILED: {e}", flush=True)
-            failures.append(str(e))
-        except websocket.WebSocketTimeoutException:
-            took = time.monotonic() - started
-            print(f"FAILED: {what}: the page answered nothing for {bt.HANG_GUARD_S} s "
-                  f"({took:.0f} s after the file was given)", flush=True)
-            failures.append(f"{what}: hung")
-            page.close()
-            page = None
+        page = one_input(page, base, what, name, query, make_js, failures)
     if page:
         page.close()
     check(not failures, f"{len(failures)} of {len(INPUTS)} inputs failed")
+
+
+def one_input(page, base, what, name, query, make_js, failures):
+    """One input opened in `page` (None: a new Chromium); returns the page for the next input,
+    None when this one failed (the next starts a new Chromium)."""
+    fresh = page is None
+    if fresh:
+        page = bt.Page(1280, 720, flags=("--disable-features=BackForwardCache",))
+    started = time.monotonic()
+    try:
+        if not fresh:
+            leave(page, base)
+        page.errors.clear()  # this input's page's errors only
+        page.open(base + query)
+        page.evaluate("window.sandboxProgressLog = []")
+        make_file(page, name, make_js)
+        # The page's tasks over 50 ms (Chromium's long tasks) from the pick on: the longest
+        # is how long the open held the page's one thread, keys waiting meanwhile.
+        page.evaluate("window.longestTask = 0; new PerformanceObserver(list => { "
+                      "for (const e of list.getEntries()) window.longestTask = "
+                      "Math.max(window.longestTask, e.duration); })"
+                      ".observe({entryTypes: ['longtask']}); 0")
+        started = time.monotonic()
+        pick_file(page)
+        latencies, outcome = [], None
+        deadline = started + bt.HANG_GUARD_S * 3
+        while outcome is None:
+            check(time.monotonic() < deadline, f"{what}: neither opened nor refused")
+            latencies.append(key_latency(page))
+            outcome = settled(page, name)
+            time.sleep(0.2)
+        took = time.monotonic() - started
+        how, s = outcome
+        progress = page.evaluate("window.sandboxProgressLog")
+        longest = page.evaluate("window.longestTask")
+        # The live region says a refusal on the next frames (the app's message, when it
+        # changes, is announced as the page's state is sent).
+        def live_text():
+            return page.evaluate("document.getElementById('reader-live').textContent")
+        if how == "refused":
+            wait_for(lambda: s["error"][:60] in live_text(), 10)
+        live = live_text()
+        # The page still answers: F1 opens the help.
+        page.key("F1", "F1", 112)
+        answered = wait_for(lambda: page.status()["helpOpen"])
+        page.wait_frames(2)
+        said = f"progress shown {len(progress)} times" if how == "opened" else repr(s["error"][:160])
+        print(f"{what}: {how} after {took:.1f} s ({said}); the page took a key in "
+              f"{statistics.median(latencies) * 1000:.0f} ms median, "
+              f"{max(latencies) * 1000:.0f} ms at most ({len(latencies)} keys), its longest "
+              f"task {longest:.0f} ms (reported, not checked); F1 "
+              f"{'opened' if answered else 'did not open'} the help after",
+              flush=True)
+        if name.endswith("_at_limit" + os.path.splitext(name)[1]):
+            check(how == "opened", f"{what}: refused, though within the browser's limit")
+        if how == "opened":
+            check(progress, f"{what}: opened with no progress shown on the page")
+            if name.endswith(".csv"):
+                # Compared one run a frame, each said on the page (browser/trace_opening.h).
+                runs = [p for p in progress if p.startswith("Comparing " + name)]
+                check(len(runs) >= 3 and re.search(r": run (\d+) of \1\.\.\.$", runs[-1]),
+                      f"{what}: not compared run by run with its progress shown: {progress}")
+        else:
+            check(s["error"] and s["error"][:60] in live,
+                  f"{what}: refused, but the page's live region does not say it: {live!r}")
+        check(answered, f"{what}: F1 did not open the help after it")
+        check(not page.errors, f"{what}: the console has errors:\n" + "\n".join(page.errors))
+    except AssertionError as e:  # every input is tried and reported
+        print(f"FAILED: {e}", flush=True)
+        failures.append(str(e))
+        page.close()
+        return None
+    except websocket.WebSocketTimeoutException:
+        took = time.monotonic() - started
+        print(f"FAILED: {what}: the page answered nothing for {bt.HANG_GUARD_S} s "
+              f"({took:.0f} s after the file was given)", flush=True)
+        failures.append(f"{what}: hung")
+        page.close()
+        return None
+    except BaseException:  # anything else ends the check: its Chromium with it
+        page.close()
+        raise
+    return page
 
 
 def url_range(base):

@@ -49,7 +49,8 @@ DevTools protocol (python3-websocket). One check per run:
   sound         M turns the sound on and lecture_example_1's collision plays a knock through
                 emscripten's OpenAL (a source of its Web Audio context has played)
   keyboard      F6, then the arrow keys, walk through at least 15 of the panel's controls, each
-                with the focus ring shown around it (keyboard_focus.png is written for looking)
+                with the focus ring shown around it (keyboard_focus.png in the temporary folder,
+                for looking)
   keys          the lecture's keys whatever has the focus, as SandboxWindowXvfbKeys in the window,
                 checked through the --verbose log (the page's console): on lecture3, the C slider
                 clicked, then typed into (the digits and Enter the field's; Esc undoes; F5 and
@@ -86,6 +87,8 @@ import time
 import urllib.request
 
 SKIP = 77
+# The keyboard check's picture of the focus ring, for looking (outside the source tree).
+FOCUS_SHOT = os.path.join(tempfile.gettempdir(), "keyboard_focus.png")
 CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
 HANG_GUARD_S = 120  # the longest any wait may take before the check fails as hung
 # axe-core, as scripts/web.sh installs it (npm) into its cache.
@@ -810,7 +813,7 @@ def keyboard(page, base):
             if focus_ring_shown(img, s["navRect"]) < 20:
                 unringed.append(s["navRect"])
             if len(seen) == 15:
-                img.save("keyboard_focus.png")
+                img.save(FOCUS_SHOT)
         if len(seen) >= 20:
             break
         page.key("ArrowDown", "ArrowDown", 40)
@@ -818,7 +821,7 @@ def keyboard(page, base):
     check(len(seen) >= 15, f"the arrows reached only {len(seen)} controls")
     check(not unringed, f"no focus ring seen around {unringed}")
     print(f"F6 and the arrows walked through {len(seen)} controls, each with its focus ring "
-          f"(keyboard_focus.png: the 15th)")
+          f"({FOCUS_SHOT}: the 15th)")
 
 
 def keys(page, base):

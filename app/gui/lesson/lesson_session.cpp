@@ -36,13 +36,18 @@ bool differsFromWritten(const World& now, const World& written) {
 
 // The moment: the answer shows, with the overlays that prove it (nothing is claimed when the
 // event did not come).
-void reveal(LessonSession& s, View& view) {
+void reveal(LessonSession& s, const SimulationSession& sim, View& view) {
     s.phase = LessonSession::Phase::Moment;
-    // The moment frames its evidence (its "moment_camera"), unless the lecturer has taken the
-    // camera (panned or zoomed: autoFit off); the setup frames the step's camera again.
-    if (s.step()->momentCamera && view.autoFit) view.fitBounds = s.step()->momentCamera;
+    const bool missed = s.watch && s.watch->state() == LessonWatch::State::Missed;
+    // The moment frames its evidence (its "moment_camera": a fixed rectangle, where the run as
+    // written puts it) when the event came in the world as written. Not when the lecturer has
+    // taken the camera (panned or zoomed: autoFit off), nor after a change (a mass, C) that may
+    // send the evidence elsewhere: the step's camera, which frames the whole demo, stays. The
+    // setup frames the step's camera again.
+    if (s.step()->momentCamera && view.autoFit && !missed && lessonChanges(s, sim).empty())
+        view.fitBounds = s.step()->momentCamera;
     if (s.step()->question.empty() || s.revealed) return;
-    if (s.watch && s.watch->state() == LessonWatch::State::Missed) return;
+    if (missed) return;
     s.revealed = true;
     for (const std::string& name : s.step()->reveal) setOverlay(view.show, name, true);
 }
@@ -252,7 +257,7 @@ void lessonTypeDigit(LessonSession& s, int digit) {
 void lessonShowPausePoint(LessonSession& s, SimulationSession& sim, View& view) {
     if (!s.step()) return;
     runToPausePoint(s, sim, view);
-    reveal(s, view);
+    reveal(s, sim, view);
 }
 
 bool lessonRunsSideBySide(const LessonSession& s, const View& view) {
@@ -266,7 +271,7 @@ void lessonAfterFrames(LessonSession& s, SimulationSession& sim, View& view) {
     if (s.phase != LessonSession::Phase::Playing || !s.watch || !s.watch->paused()) return;
     sim.stopWhen = nullptr;
     sim.paused = true;
-    reveal(s, view);
+    reveal(s, sim, view);
 }
 
 std::string lessonHeading(const LessonSession& session) {

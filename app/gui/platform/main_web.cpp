@@ -322,14 +322,17 @@ void frame(void* arg) {
 // throws) passes C++'s catch (...) by: with WebAssembly's exceptions (-fwasm-exceptions) it
 // catches C++'s only. Uncaught, it would end emscripten's main loop (the page frozen on its last
 // frame, its message never drawn); here it goes to sandbox_web_frame_failed as C++'s do.
-// emscripten's own ('unwind', ExitStatus) pass on.
+// emscripten's own ('unwind', ExitStatus) pass on, and so do WebAssembly's traps (an access out
+// of bounds, unreachable, abort(): a RuntimeError, ABORT set): after one the heap may be corrupt
+// and nothing the app would draw could be trusted, so the page stops there as before.
 // JavaScript, not C++: kept as written.
 // clang-format off
 EM_JS(void, run_frame_in_js_try, (std::uintptr_t run, void* arg), {
     try {
         wasmTable.get(run)(arg);
     } catch (e) {
-        if (e === 'unwind' || e instanceof ExitStatus) throw e;
+        if (e === 'unwind' || e instanceof ExitStatus || e instanceof WebAssembly.RuntimeError ||
+            (typeof ABORT !== 'undefined' && ABORT)) throw e;
         _sandbox_web_frame_failed(allocateUTF8(String((e && e.message) || e)));
     }
 });

@@ -464,6 +464,8 @@ TEST(LessonScreens, TheMomentCameraShowsWhatTheAnswerNames) {
         EXPECT_GT(named, 0) << s.name() << ": the answer names no block";
     }
     std::printf("%d moments framed by their moment camera\n", framed);
+    // Step 26 (the platformer) has one: a check that found none would assert nothing.
+    EXPECT_GE(framed, static_cast<int>(std::size(kScreens)));
 }
 
 // The plots' axis numbers never touch (issue 39: step 10's "v of m1" at 1280x800 UI 1.5 wrote
@@ -494,6 +496,9 @@ TEST(LessonScreens, NoTwoAxisNumbersOfAPlotTouch) {
                 }
         }
         std::printf("%s: %d plot numbers, %d touching another\n", screen.dir, numbers, touching);
+        // Steps 3 and 6 to 12 show plots: none found at a screen means the check looked at
+        // nothing (a window renamed, no texts written).
+        EXPECT_GT(numbers, 0) << screen.dir;
     }
 }
 

@@ -290,6 +290,20 @@ TEST(LessonSession, TheMomentCameraFramesTheMomentAndRFramesTheSetup) {
     EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Moment);
     EXPECT_EQ(app.view.fitBounds->min.x, step.camera->min.x);
     EXPECT_FALSE(app.view.autoFit);
+    // A lecturer's change at the setup (another C) may send the evidence elsewhere: the moment
+    // keeps the step's camera, which frames the whole demo.
+    enterStep(app, platformer);
+    ASSERT_TRUE(app.view.autoFit);
+    double& c = app.sim.world().settings.bounciness;
+    c = c == 0.5 ? 0.25 : 0.5;
+    applyLessonAction(app, Action::LessonNext);
+    playUntilPaused(app);
+    lessonAfterFrames(app.lesson, app.sim, app.view);
+    EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Moment);
+    EXPECT_FALSE(lessonChanges(app.lesson, app.sim).empty());
+    ASSERT_TRUE(app.view.fitBounds);
+    EXPECT_EQ(app.view.fitBounds->min.x, step.camera->min.x);
+    EXPECT_EQ(app.view.fitBounds->max.y, step.camera->max.y);
 }
 
 TEST(LessonSession, AMalformedLessonKeepsTheCurrentOne) {
