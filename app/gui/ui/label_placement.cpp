@@ -45,6 +45,11 @@ void band(const Taken& near, float y, float height, Taken& out) {
 
 } // namespace
 
+void shadowText(ImDrawList* dl, ImVec2 at, ImU32 color, const char* text, ImU32 shadow) {
+    dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), shadow, text);
+    dl->AddText(at, color, text);
+}
+
 ScreenRect spanning(double x0, double y0, double x1, double y1) {
     return {x0, y0, x1 - x0, y1 - y0};
 }

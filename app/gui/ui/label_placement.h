@@ -10,8 +10,16 @@
 
 using Taken = UiState::TakenOnScreen;
 
+// Over this many blocks a scene is crowded: only the selected block's name goes beside its block
+// when it does not fit on it, and only a few arrows carry their value.
+constexpr int kCrowdedScene = 20; // blocks
+
 // The rectangle from (x0, y0) to (x1, y1), px.
 ScreenRect spanning(double x0, double y0, double x1, double y1);
+
+// `text` at `at` over a 1 px shadow, readable over blocks and grid alike.
+void shadowText(ImDrawList* dl, ImVec2 at, ImU32 color, const char* text,
+                ImU32 shadow = IM_COL32(0, 0, 0, 200));
 
 // What a text at (x, y) (top-left) of `size`, widened by `gap` on either side, covers of what is
 // taken: the area in common with the blocks, and ten times that with the texts (over a block, a

@@ -1,9 +1,10 @@
 // The scene's ImGui side: the mouse in the scene (fed to mouse_tool), and what is drawn over the
 // GL scene with ImGui's background draw list, in the scene labels' own font: block labels (with
-// the current mass), axis numbers, the values of arrows too long to draw to scale, the reference
-// line of a resting stack, the status badge (status_badge.cpp), a large collision count where the
-// count is the lesson, the fling readout and the hover tooltip.
+// the current mass), axis numbers, the values of arrows too long to draw to scale
+// (arrow_values.cpp), the reference line of a resting stack, the status badge (status_badge.cpp), a
+// large collision count where the count is the lesson, the fling readout and the hover tooltip.
 #include "app_frame.h"
+#include "arrow_values.h"
 #include "label_placement.h"
 #include "magnifier.h"
 #include "overlay_window.h"
@@ -27,8 +28,6 @@
 namespace {
 
 constexpr int kMaxLabelledBlocks = 200;
-// Arrows whose value is written beside them when they are not drawn to scale, at most.
-constexpr int kMaxArrowValueLabels = 20;
 
 ImU32 packed(const Color& c) {
     return c.packed();
@@ -36,12 +35,6 @@ ImU32 packed(const Color& c) {
 
 const SceneTheme& theme() {
     return sceneTheme(uiLightTheme());
-}
-
-void shadowText(ImDrawList* dl, ImVec2 at, ImU32 color, const char* text,
-                ImU32 shadow = IM_COL32(0, 0, 0, 200)) {
-    dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), shadow, text);
-    dl->AddText(at, color, text);
 }
 
 const char* kindText(BodyKind kind) {
@@ -62,8 +55,6 @@ int hoveredBlock(const App& app) {
     if (io.WantCaptureMouse || !app.view.camera.viewport().contains(mouse)) return -1;
     return pickBlock(app.sim.world(), app.view.camera.screenToWorld(mouse), 0.0);
 }
-
-constexpr int kCrowdedScene = 20; // blocks
 
 // `placed`: the rectangles taken on screen, the blocks and each label (the arrows' values
 // avoid them).
@@ -89,24 +80,21 @@ void drawLabels(const App& app, ImDrawList* dl, Taken& placed) {
         const Vec2 c = app.view.camera.worldToScreen(b.position);
         const double wPx = app.view.camera.metresToPixels(b.size.x);
         const double hPx = app.view.camera.metresToPixels(b.size.y);
-        {
-            // A block wholly out of the view, or with its middle left or right of it (panned
-            // away, or left behind by a step's "moment_camera": the platformer's lift at its
-            // edge), is not named: the name would be out of the scene. (One above or below,
-            // step 2's wall taller than the view, has its name at the view's edge, below.)
-            const ScreenRect& vp = app.view.camera.viewport();
-            if (c.x < vp.x || c.x > vp.x + vp.width || c.y + hPx * 0.5 < vp.y ||
-                c.y - hPx * 0.5 > vp.y + vp.height)
-                continue;
-        }
+        // A block wholly out of the view, or with its middle left or right of it (panned away,
+        // or left behind by a step's "moment_camera": the platformer's lift at its edge), is not
+        // named: the name would be out of the scene. One partly above or below it (step 2's wall,
+        // taller than the view) has its name at the view's edge (below).
+        const ScreenRect& vp = app.view.camera.viewport();
+        if (c.x < vp.x || c.x > vp.x + vp.width || c.y + hPx * 0.5 < vp.y ||
+            c.y - hPx * 0.5 > vp.y + vp.height)
+            continue;
         const ImVec2 nameSize = ImGui::CalcTextSize(name.c_str());
         const ImVec2 secondSize = ImGui::CalcTextSize(second);
         const bool twoLines = second[0] && hPx > 2.6 * lineHeight && secondSize.x < wPx - 6.0;
         const float labelW = twoLines ? std::max(nameSize.x, secondSize.x) : nameSize.x;
         const float labelH = (twoLines ? 2.0f : 1.0f) * lineHeight;
         // Its middle, moved into the view where the block runs out of it (the name stays whole
-        // in the scene: the platformer's lift at the moment's left edge).
-        const ScreenRect& vp = app.view.camera.viewport();
+        // in the scene).
         const float mid =
             std::clamp(static_cast<float>(c.x), static_cast<float>(vp.x) + labelW * 0.5f + 2.0f,
                        std::max(static_cast<float>(vp.x) + labelW * 0.5f + 2.0f,
@@ -135,19 +123,15 @@ void drawLabels(const App& app, ImDrawList* dl, Taken& placed) {
             // Beside the block; in a crowded scene only for the selected one (a hundred names
             // pushed around each other are noise).
             const float x = mid - nameSize.x * 0.5f;
-            // Above or below it; a block in the view but taller than it (step 2's wall) has its
-            // name at the view's top or bottom edge rather than outside the scene. (A block out
-            // of the view, panned or zoomed away, keeps its spots: no name at an edge for it.)
-            float above = static_cast<float>(c.y - hPx * 0.5) - lineHeight - 2.0f;
-            float below = static_cast<float>(c.y + hPx * 0.5) + 2.0f;
-            const bool inView = c.y + hPx * 0.5 > vp.y && c.y - hPx * 0.5 < vp.y + vp.height;
-            if (inView) {
-                const float viewTop = static_cast<float>(vp.y) + 2.0f;
-                const float viewBottom =
-                    std::max(viewTop, static_cast<float>(vp.y + vp.height) - lineHeight - 2.0f);
-                above = std::clamp(above, viewTop, viewBottom);
-                below = std::clamp(below, viewTop, viewBottom);
-            }
+            // Above or below it, in the view: a block taller than the view (step 2's wall) has
+            // its name at the view's top or bottom edge rather than outside the scene.
+            const float viewTop = static_cast<float>(vp.y) + 2.0f;
+            const float viewBottom =
+                std::max(viewTop, static_cast<float>(vp.y + vp.height) - lineHeight - 2.0f);
+            const float above = std::clamp(static_cast<float>(c.y - hPx * 0.5) - lineHeight - 2.0f,
+                                           viewTop, viewBottom);
+            const float below =
+                std::clamp(static_cast<float>(c.y + hPx * 0.5) + 2.0f, viewTop, viewBottom);
             const ImVec2 at = freeSpot(placed, vp, x, above, below, nameSize, lineHeight);
             placed.texts.push_back(spanning(at.x, at.y, at.x + nameSize.x, at.y + nameSize.y));
             shadowText(dl, at, beside, name.c_str(), packed(theme().textShadow));
@@ -275,204 +259,6 @@ void drawLargeCount(const App& app, ImDrawList* dl, Taken& placed) {
     const ImU32 color = uiLightTheme() ? IM_COL32(30, 40, 60, 230) : IM_COL32(240, 240, 250, 230);
     dl->AddText(font, size, at, color, text);
     dl->AddText(ImVec2(spot.x + both.x - us.x, at.y + ts.y), packed(theme().axis), unit);
-}
-
-// A value written at the head of an arrow (from `base` to `tip`, m) cut at the view's edge or the
-// arena's wall: over the head (beside a vertical one), kept inside the view, in a free row.
-void drawValueAtTip(const App& app, ImDrawList* dl, Taken& placed, Vec2 base, Vec2 tip,
-                    const std::string& text, ImU32 color) {
-    const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
-    const ScreenRect& vp = app.view.camera.viewport();
-    const Vec2 at = app.view.camera.worldToScreen(tip);
-    // Beside the shaft of a vertical arrow (on the side with room), centred over a sideways one.
-    const Vec2 from = app.view.camera.worldToScreen(base);
-    const bool vertical = std::abs(at.y - from.y) > std::abs(at.x - from.x);
-    float x = static_cast<float>(at.x) - ts.x * 0.5f;
-    if (vertical) {
-        x = static_cast<float>(at.x) + 8.0f;
-        if (x + ts.x > vp.x + vp.width) x = static_cast<float>(at.x) - 8.0f - ts.x;
-    }
-    x = std::clamp(x, static_cast<float>(vp.x), static_cast<float>(vp.x + vp.width) - ts.x);
-    const ImVec2 spot =
-        freeRow(placed, vp, x,
-                std::clamp(static_cast<float>(at.y) - ts.y - 6.0f, static_cast<float>(vp.y),
-                           static_cast<float>(vp.y + vp.height) - ts.y),
-                ts);
-    placed.texts.push_back({spot.x, spot.y, ts.x, ts.y});
-    shadowText(dl, spot, color, text.c_str(), packed(theme().textShadow));
-}
-
-// Block `i`'s velocity and mass as the collision inspector prints them, when they are what the
-// block has now: the inspector is shown, the collision it shows is the block's and left it with
-// the velocity it has now (along that axis, none across), seen in the world's frame. Otherwise
-// empty texts.
-struct InspectedBlock {
-    std::string massText, velocityText; // as printed, the velocity with its sign
-};
-
-InspectedBlock inspectedBlock(const App& app, std::size_t i) {
-    const auto& recent = app.sim.telemetry.recent;
-    if (!app.view.show.inspector || recent.empty() || app.view.frame != ViewFrame::World) return {};
-    const int count = static_cast<int>(recent.size());
-    const int picked = app.ui.inspectorPicked < count ? app.ui.inspectorPicked : 0;
-    const CollisionRecord& r = recent[static_cast<std::size_t>(count - 1 - picked)];
-    const int index = static_cast<int>(i);
-    if (index != r.block && index != r.other) return {};
-    const Block& b = app.sim.world().blocks[i];
-    const double along = r.axis == 0 ? b.velocity.x : b.velocity.y;
-    const double across = r.axis == 0 ? b.velocity.y : b.velocity.x;
-    const double after = index == r.block ? r.v1After : r.v2After;
-    if (along != after || across != 0.0) return {};
-    const auto name = [&app](int k) {
-        return k < 0 ? std::string(wallName(k)) : app.sim.blockDisplayName(k);
-    };
-    const CollisionFormula f = collisionFormula(r, name(r.block), name(r.other));
-    return index == r.block ? InspectedBlock{f.m1Text, f.v1AfterText}
-                            : InspectedBlock{f.m2Text, f.v2AfterText};
-}
-
-// The momentum of block `i` as the inspector's numbers give it (inspectedBlock), "" when they do
-// not: m·v' with m and v' as the inspector prints them (productAsPrinted), so that the arrow and
-// the inspector never write different digits for one quantity (the giant of high_mass_ratio:
-// 1000000·0.9999999175 = 999999.9175, where formatNumber alone wrote 999999.917).
-std::string momentumAsInspected(const App& app, std::size_t i) {
-    const InspectedBlock inspected = inspectedBlock(app, i);
-    if (inspected.velocityText.empty()) return "";
-    return productAsPrinted(inspected.massText, inspected.velocityText);
-}
-
-// True when block `i`'s momentum arrow carries its value (drawMomentumValues): too long to draw
-// to scale.
-bool momentumValueShown(const App& app, std::size_t i) {
-    const Block& b = app.sim.world().blocks[i];
-    if (!app.view.show.vectors || !b.isDynamic()) return false;
-    const Vec2 p = (b.velocity - frameVelocity(app.sim.world(), app.view.frame)) * b.mass;
-    return !arrowOnScreen(app.view.camera, b.position, p * kMomentumArrowScale,
-                          &app.sim.world().bounds)
-                .toScale;
-}
-
-// A block's speed as its velocity arrow writes it. Where its momentum's value is written too,
-// the two are one quantity, p = m·|v|: the speed gets the digits with which m·|v| as printed
-// gives |p| as printed (equationWithFewestDigits' rule; bouncing_squares' green block, 4 kg:
-// 8.36637 m/s and 33.465 kg·m/s, where 8.366 gave 33.464), or the inspector's own digits where
-// the momentum is written from them (momentumAsInspected).
-std::string speedText(const App& app, std::size_t i, double speed) {
-    if (!momentumValueShown(app, i)) return formatNumber(speed);
-    const InspectedBlock inspected = inspectedBlock(app, i);
-    if (!productAsPrinted(inspected.massText, inspected.velocityText).empty()) {
-        const std::string& v = inspected.velocityText; // the momentum is written from it
-        return v[0] == '-' ? v.substr(1) : v;
-    }
-    const Block& b = app.sim.world().blocks[i];
-    const std::string momentum = formatNumber(b.mass * speed);
-    int extra = 0;
-    while (extra < kMostExtraDigits &&
-           !givesResult(printed(b.mass, 0) * printed(speed, extra), momentum))
-        ++extra;
-    return formatNumberWithDigits(speed, extra);
-}
-
-// The momentum arrows too long to draw to scale carry their value at their head (p = m·w in
-// the view's frame), in the momentum arrows' colour; with the inspector's digits where it shows
-// the block's last collision (momentumAsInspected).
-void drawMomentumValues(const App& app, ImDrawList* dl, Taken& placed) {
-    if (!app.view.show.vectors) return;
-    const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
-    int written = 0;
-    for (std::size_t i = 0; i < app.sim.world().blocks.size(); ++i) {
-        const Block& b = app.sim.world().blocks[i];
-        if (!b.isDynamic() || written >= kMaxArrowValueLabels) continue;
-        const Vec2 p = (b.velocity - u) * b.mass;
-        const ArrowOnScreen a = arrowOnScreen(app.view.camera, b.position, p * kMomentumArrowScale,
-                                              &app.sim.world().bounds);
-        if (a.toScale) continue;
-        const std::string inspected = momentumAsInspected(app, i);
-        drawValueAtTip(
-            app, dl, placed, b.position, a.tip,
-            (inspected.empty() ? formatNumber(b.mass * length(b.velocity - u)) : inspected) +
-                " kg·m/s",
-            packed(theme().momentum.withAlpha(1.0f)));
-        ++written;
-    }
-}
-
-// Arrows too long to draw to scale (compressed and cut at the view's edge) carry their value; in
-// the centre-of-mass frame every arrow does (w1 = 4 m/s: the lecture's numbers), in a scene of
-// few blocks.
-void drawArrowValues(const App& app, ImDrawList* dl, Taken& placed) {
-    if (!app.view.show.vectors) return;
-    const bool relative = app.view.frame != ViewFrame::World;
-    const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
-    const bool labelAll =
-        relative && app.sim.world().blocks.size() <= static_cast<std::size_t>(kCrowdedScene);
-    int written = 0;
-    for (std::size_t i = 0; i < app.sim.world().blocks.size(); ++i) {
-        const Block& b = app.sim.world().blocks[i];
-        if (b.kind == BodyKind::Static || written >= kMaxArrowValueLabels) continue;
-        const Vec2 w = b.velocity - u;
-        const ArrowOnScreen a = arrowOnScreen(app.view.camera, b.position, w * kVelocityArrowScale,
-                                              &app.sim.world().bounds);
-        if (a.toScale && !labelAll) continue;
-        const std::string text =
-            relative ? frameVelocityLabel(i < app.sim.labels.size() ? app.sim.labels[i].name : "",
-                                          w, app.view.frame)
-                     : speedText(app, i, length(w)) + " m/s";
-        const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
-        const ScreenRect& vp = app.view.camera.viewport();
-        // Over the arrow's head; every arrow's value (labelAll): under its block (the name is
-        // over it), moved down a line at a time until it overlaps no value written before.
-        Vec2 at = app.view.camera.worldToScreen(a.tip);
-        at.y -= ts.y + 6.0;
-        if (labelAll) {
-            at = app.view.camera.worldToScreen(b.position - Vec2{0.0, b.size.y * 0.5});
-            at.y += 3.0;
-        }
-        const float x = std::clamp(static_cast<float>(at.x) - ts.x * 0.5f, static_cast<float>(vp.x),
-                                   static_cast<float>(vp.x + vp.width) - ts.x);
-        const ImVec2 spot = freeRow(placed, vp, x, static_cast<float>(at.y), ts);
-        placed.texts.push_back({spot.x, spot.y, ts.x, ts.y});
-        shadowText(dl, spot, packed(theme().velocity), text.c_str(), packed(theme().textShadow));
-        ++written;
-    }
-}
-
-// Force arrows carry their value, "F = 2 N" (or the vector when it is not along an axis), at the
-// head: the arrow's length is to scale only up to the knee.
-void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl, Taken& placed) {
-    int written = 0;
-    for (std::size_t i = 0; i < app.sim.world().blocks.size() && written < kMaxArrowValueLabels;
-         ++i) {
-        const Vec2 f = shownForce(view, i);
-        if (f == Vec2{}) continue;
-        const Block& b = app.sim.world().blocks[i];
-        const ArrowOnScreen a = arrowOnScreen(app.view.camera, b.position, f * kForceArrowScale,
-                                              &app.sim.world().bounds);
-        char text[80];
-        if (f.x == 0.0 || f.y == 0.0) {
-            std::snprintf(text, sizeof text, "F = %s N", formatNumber(length(f)).c_str());
-        } else {
-            std::snprintf(text, sizeof text, "F = (%s, %s) N", formatNumber(f.x).c_str(),
-                          formatNumber(f.y).c_str());
-        }
-        const Vec2 tip = app.view.camera.worldToScreen(a.tip);
-        const ImVec2 ts = ImGui::CalcTextSize(text);
-        const ScreenRect& vp = app.view.camera.viewport();
-        // Past the head, along the arrow: beside it for a mostly sideways force, above or
-        // below it for a mostly vertical one (kept in the view).
-        const float gap = 6.0f, tx = static_cast<float>(tip.x), ty = static_cast<float>(tip.y);
-        float x = tx - ts.x * 0.5f, y = f.y > 0.0 ? ty - ts.y - gap : ty + gap;
-        if (std::abs(f.x) >= std::abs(f.y)) {
-            x = f.x > 0.0 ? tx + gap : tx - gap - ts.x;
-            y = ty - ts.y * 0.5f;
-        }
-        x = std::clamp(x, static_cast<float>(vp.x), static_cast<float>(vp.x + vp.width) - ts.x);
-        const ImVec2 at = freeSpot(placed, vp, x, y, y, ts, ts.y); // clear of the other texts
-        placed.texts.push_back({at.x, at.y, ts.x, ts.y});
-        shadowText(dl, at, sceneTheme(app.view.lightTheme).force.packed(), text,
-                   packed(theme().textShadow));
-        ++written;
-    }
 }
 
 // A resting stack's expected top as a dashed line: a method that lets it sink shows the gap.
