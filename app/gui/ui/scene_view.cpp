@@ -315,13 +315,28 @@ void drawHoverTooltip(const App& app) {
     const int i = hoveredBlock(app);
     if (i < 0) return;
     const Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
+    const auto twoDecimals = [](double v) {
+        char text[48];
+        std::snprintf(text, sizeof text, "%.2f", v);
+        return std::string(text);
+    };
+    const std::string mass = formatNumber(b.mass);
+    const std::string vx = twoDecimals(b.velocity.x), vy = twoDecimals(b.velocity.y);
+    // m·v from m and v as printed here, so that the line holds with the digits shown (m = 3 kg,
+    // v = 1.23 m/s: p = 3.69, not the 3.70 of the unrounded 1.234).
+    const auto momentum = [&mass, &twoDecimals](double m, double v, const std::string& vText) {
+        const std::string p = productAsPrinted(mass, vText);
+        if (p.empty()) return twoDecimals(m * v);
+        return (vText[0] == '-' && p != "0" ? "-" : "") + p;
+    };
     ImGui::BeginTooltip();
     ImGui::Text("%s (%s)", app.sim.blockDisplayName(i).c_str(), kindText(b.kind));
-    if (b.isDynamic()) ImGui::Text("m = %.3g kg", b.mass);
-    ImGui::Text("p = (%.2f, %.2f) m", b.position.x, b.position.y);
-    ImGui::Text("v = (%.2f, %.2f) m/s", b.velocity.x, b.velocity.y);
+    if (b.isDynamic()) ImGui::Text("m = %s kg", mass.c_str());
+    ImGui::Text("position = (%.2f, %.2f) m", b.position.x, b.position.y);
+    ImGui::Text("v = (%s, %s) m/s", vx.c_str(), vy.c_str());
     if (b.isDynamic()) {
-        ImGui::Text("p = m·v = (%.2f, %.2f) kg·m/s", b.mass * b.velocity.x, b.mass * b.velocity.y);
+        ImGui::Text("p = m·v = (%s, %s) kg·m/s", momentum(b.mass, b.velocity.x, vx).c_str(),
+                    momentum(b.mass, b.velocity.y, vy).c_str());
     }
     ImGui::EndTooltip();
 }
