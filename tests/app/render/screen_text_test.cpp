@@ -1,6 +1,6 @@
-// The screen-text contract's reader (app/gui/ui/widgets/screen_text.h): text drawn with ImGui, read back
-// from the draw data, with its rectangle, size, window and clipping. ImGui's own default font (no
-// file needed); no GL: only the draw data is looked at.
+// The screen-text contract's reader (app/gui/ui/widgets/screen_text.h): text drawn with ImGui, read
+// back from the draw data, with its rectangle, size, window and clipping. ImGui's own default font
+// (no file needed); no GL: only the draw data is looked at.
 #include "screen_text.h"
 #include "whole_rows.h"
 
@@ -8,6 +8,8 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -145,6 +147,58 @@ TEST(WholeRows, HidesTheRowsItsEdgesWouldCut) {
         EXPECT_TRUE(find(texts, scroll == 0.0f ? "row 0" : "row 1"));
         EXPECT_FALSE(find(texts, scroll == 0.0f ? "row 3" : "row 0"));
     }
+}
+
+// WholeRows::rowsOf merges the spans drawn one after another that meet before it sorts them: its
+// rows are exactly those of sorting every span and merging (the rule before), on random spans
+// on a quarter-pixel grid (so that many touch exactly, half a pixel apart or end to end), some
+// tall, in random order and in runs as a line of text draws them.
+TEST(WholeRows, RowsAreThoseOfSortingEverySpan) {
+    const auto reference = [](std::vector<imgui_ext::Span> spans, float tall) {
+        spans.erase(
+            std::remove_if(spans.begin(), spans.end(),
+                           [tall](const imgui_ext::Span& s) { return s.y1 - s.y0 >= tall; }),
+            spans.end());
+        std::stable_sort(
+            spans.begin(), spans.end(),
+            [](const imgui_ext::Span& a, const imgui_ext::Span& b) { return a.y0 < b.y0; });
+        std::vector<imgui_ext::Span> rows;
+        for (const imgui_ext::Span& s : spans) {
+            if (!rows.empty() && s.y0 <= rows.back().y1 + 0.5f)
+                rows.back().y1 = std::max(rows.back().y1, s.y1);
+            else
+                rows.push_back(s);
+        }
+        return rows;
+    };
+    std::mt19937 random(42);
+    int merged = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        std::uniform_int_distribution<int> count(0, 60), quarter(-40, 800), height(0, 80);
+        std::vector<imgui_ext::Span> spans;
+        const int n = count(random);
+        while (static_cast<int>(spans.size()) < n) {
+            const float y0 = 0.25f * static_cast<float>(quarter(random));
+            const float h =
+                0.25f * static_cast<float>(height(random)) * (trial % 5 == 0 ? 8.0f : 1.0f);
+            // A run of triangles near one height (a line of text), or a lone one.
+            const int run = 1 + static_cast<int>(random() % 6);
+            for (int k = 0; k < run; ++k)
+                spans.push_back({y0 + 0.25f * static_cast<float>(random() % 5),
+                                 y0 + h - 0.25f * static_cast<float>(random() % 3)});
+        }
+        for (imgui_ext::Span& s : spans) s.y1 = std::max(s.y1, s.y0);
+        const float tall = trial % 3 == 0 ? 1e9f : 0.25f * static_cast<float>(40 + trial % 200);
+        const std::vector<imgui_ext::Span> want = reference(spans, tall);
+        const std::vector<imgui_ext::Span> got = WholeRows::rowsOf(spans, tall);
+        ASSERT_EQ(got.size(), want.size()) << "trial " << trial;
+        for (std::size_t i = 0; i < got.size(); ++i) {
+            EXPECT_EQ(got[i].y0, want[i].y0) << "trial " << trial << " row " << i;
+            EXPECT_EQ(got[i].y1, want[i].y1) << "trial " << trial << " row " << i;
+        }
+        merged += want.size() < spans.size() ? 1 : 0;
+    }
+    EXPECT_GT(merged, 1000); // the spans did merge into rows, most trials
 }
 
 TEST(TextJson, IsTheDocumentedJson) {

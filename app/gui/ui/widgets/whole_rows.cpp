@@ -58,6 +58,43 @@ void WholeRows::keepTogether(ImVec2 min, ImVec2 max) {
     if (it != gTogether.end()) it->second.push_back(imgui_ext::Span{min.y, max.y});
 }
 
+std::vector<imgui_ext::Span> WholeRows::rowsOf(std::vector<imgui_ext::Span> spans, float tall) {
+    constexpr float kSlack = 0.5f; // px
+    // Two spans meet where each starts at most kSlack below the other's end.
+    const auto meet = [](const imgui_ext::Span& a, const imgui_ext::Span& b) {
+        return b.y0 <= a.y1 + kSlack && a.y0 <= b.y1 + kSlack;
+    };
+    // The tall ones left out, and spans drawn one after the other that meet taken as one, in place
+    // (a line of text is a hundred triangles of nearly one span): the rows come out the same (the
+    // span from [y0, y1 + kSlack] of two that meet is their union, so the spans' union and the
+    // rows, its parts, are unchanged), and the sort below has a span a row or so, not a triangle
+    // (half a millisecond a frame in the browser, for the panel's text).
+    std::size_t kept = 0;
+    for (const imgui_ext::Span& s : spans) {
+        if (s.y1 - s.y0 >= tall) continue;
+        if (kept > 0 && meet(spans[kept - 1], s)) {
+            imgui_ext::Span& last = spans[kept - 1];
+            last.y0 = std::min(last.y0, s.y0);
+            last.y1 = std::max(last.y1, s.y1);
+        } else {
+            spans[kept++] = s;
+        }
+    }
+    spans.resize(kept);
+    std::sort(spans.begin(), spans.end(),
+              [](const imgui_ext::Span& a, const imgui_ext::Span& b) { return a.y0 < b.y0; });
+    // Rows: spans merged where they overlap or touch (a rounded frame is drawn as a fan of
+    // triangles that meet at a corner's height).
+    std::vector<imgui_ext::Span> rows;
+    for (const imgui_ext::Span& s : spans) {
+        if (!rows.empty() && s.y0 <= rows.back().y1 + kSlack)
+            rows.back().y1 = std::max(rows.back().y1, s.y1);
+        else
+            rows.push_back(s);
+    }
+    return rows;
+}
+
 void WholeRows::end() {
     std::vector<imgui_ext::Span> together;
     if (const auto it = gTogether.find(mark_.list); it != gTogether.end()) {
@@ -73,22 +110,9 @@ void WholeRows::end() {
     std::vector<imgui_ext::Span> spans =
         imgui_ext::drawnSince(mark_, ImGui::GetColorU32(ImGuiCol_NavHighlight));
     spans.insert(spans.end(), together.begin(), together.end());
-    spans.erase(std::remove_if(
-                    spans.begin(), spans.end(),
-                    [&](const imgui_ext::Span& s) { return s.y1 - s.y0 >= 0.5f * (bottom - top); }),
-                spans.end());
-    std::sort(spans.begin(), spans.end(),
-              [](const imgui_ext::Span& a, const imgui_ext::Span& b) { return a.y0 < b.y0; });
-    // Rows: spans merged where they overlap or touch (a rounded frame is drawn as a fan of
-    // triangles that meet at a corner's height).
-    constexpr float kSlack = 0.5f, kEdge = 1.0f; // px
-    std::vector<imgui_ext::Span> rows;
-    for (const imgui_ext::Span& s : spans) {
-        if (!rows.empty() && s.y0 <= rows.back().y1 + kSlack)
-            rows.back().y1 = std::max(rows.back().y1, s.y1);
-        else
-            rows.push_back(s);
-    }
+    const std::vector<imgui_ext::Span> rows =
+        WholeRows::rowsOf(std::move(spans), 0.5f * (bottom - top));
+    constexpr float kEdge = 1.0f; // px
     float keptTop = top, keptBottom = bottom;
     for (const imgui_ext::Span& r : rows) {
         // Cut: more than a pixel over the edge (ImGui's keyboard navigation takes a row a pixel

@@ -23,6 +23,10 @@ class WholeRows {
     // than half the region stays lines, as a background is no row.
     static void keepTogether(ImVec2 min, ImVec2 max);
 
+    // The rows of `spans` (heights drawn, screen px): those shorter than `tall`, merged where they
+    // overlap or touch (within half a pixel), sorted from the top.
+    static std::vector<imgui_ext::Span> rowsOf(std::vector<imgui_ext::Span> spans, float tall);
+
   private:
     imgui_ext::DrawMark mark_;   // where the region's content starts in its window's draw list
     float clipTop_, clipBottom_; // the region's clip rectangle (screen px)
