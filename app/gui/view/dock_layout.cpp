@@ -1,5 +1,7 @@
 #include "dock_layout.h"
 
+#include "rect_strips.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -281,17 +283,24 @@ ScreenRect placeCaption(double width, double height, const ScreenRect& scene,
     // The rectangles a candidate at `top` can overlap: those in its band of rows, in their
     // order (the others add nothing to the sums, which come out bit for bit the same). A
     // thousand blocks against every candidate cost a millisecond a caption.
+    // Found through rows of the scene (rect_strips.h): the rectangles in a band's rows only are
+    // looked at, not the thousand (issue 42).
+    constexpr int kRows = 32;
+    RectStrips avoidRows, textRows;
+    avoidRows.build(avoid, RectStrips::Axis::y, scene.y, scene.y + scene.height, kRows);
+    textRows.build(texts, RectStrips::Axis::y, scene.y, scene.y + scene.height, kRows);
     std::vector<ScreenRect> avoidInBand, textsInBand;
-    const auto inBand = [height](double top, const std::vector<ScreenRect>& from,
-                                 std::vector<ScreenRect>& to) {
+    const auto inBand = [height](double top, const RectStrips& from, std::vector<ScreenRect>& to) {
         to.clear();
-        for (const ScreenRect& a : from)
+        from.forEach(top, top + height, [&](const ScreenRect& a) {
             if (overlapArea({a.x, top, a.width, height}, a) > 0.0) to.push_back(a);
+            return true;
+        });
     };
     for (double y : ys) {
         if (y < y0 - 1e-9 || y > y1 + 1e-9) continue;
-        inBand(std::round(y), avoid, avoidInBand);
-        inBand(std::round(y), texts, textsInBand);
+        inBand(std::round(y), avoidRows, avoidInBand);
+        inBand(std::round(y), textRows, textsInBand);
         for (double x : xs) {
             if (x < x0 - 1e-9 || x > x1 + 1e-9) continue;
             const ScreenRect r{std::round(x), std::round(y), width, height};

@@ -43,12 +43,23 @@ ImVec2 toScreen(const App& app, Vec2 p) {
     return ImVec2(static_cast<float>(s.x), static_cast<float>(s.y));
 }
 
-ImVec2 sceneCaptionPlace(const App& app, float width, float height,
-                         const std::vector<WorldBox>& boxes) {
+namespace {
+
+// What a caption over the scene avoids (sceneCaptionPlace): the same for every form of it tried.
+struct CaptionRoom {
+    ScreenRect view, world;
+    std::vector<ScreenRect> avoid, texts;
+    double inset = 0.0;
+};
+
+CaptionRoom captionRoom(const App& app, const std::vector<WorldBox>& boxes) {
     const double font = ImGui::GetFontSize(), s = app.view.uiScale;
-    const ScreenRect& vp = app.view.camera.viewport();
+    CaptionRoom room;
+    room.view = app.view.camera.viewport();
+    const ScreenRect& vp = room.view;
     // The status badge along the top of the scene (method, t, PAUSED, the start hint).
-    std::vector<ScreenRect> avoid = {{vp.x, vp.y, vp.width, font + 24.0 * s}};
+    std::vector<ScreenRect>& avoid = room.avoid;
+    avoid = {{vp.x, vp.y, vp.width, font + 24.0 * s}};
     // The axis numbers under the world and left of it.
     const ScreenRect w = worldRectOnScreen(app.view.camera, app.sim.world().bounds);
     avoid.push_back({w.x - font, w.y + w.height, w.width + 4.0 * font, 1.6 * font});
@@ -62,10 +73,23 @@ ImVec2 sceneCaptionPlace(const App& app, float width, float height,
     // Where it must cover blocks (a box full of them), it hides none of the texts drawn so far
     // (the labels, the badge: app.ui.takenOnScreen) if it can; the axis numbers yield to it
     // (drawYieldedAxisNumbers leaves out those it covers): their bands above are avoided only.
+    room.world = w;
+    room.inset = 10.0 * s;
+    room.texts = textsNotYielding(app);
+    return room;
+}
+
+ImVec2 placeIn(const CaptionRoom& room, float width, float height) {
     const ScreenRect r =
-        placeCaption(width, height, vp, worldRectOnScreen(app.view.camera, app.sim.world().bounds),
-                     avoid, 10.0 * s, textsNotYielding(app));
+        placeCaption(width, height, room.view, room.world, room.avoid, room.inset, room.texts);
     return ImVec2(static_cast<float>(r.x), static_cast<float>(r.y));
+}
+
+} // namespace
+
+ImVec2 sceneCaptionPlace(const App& app, float width, float height,
+                         const std::vector<WorldBox>& boxes) {
+    return placeIn(captionRoom(app, boxes), width, height);
 }
 
 namespace {
@@ -177,12 +201,13 @@ void drawSceneCaption(App& app, const std::vector<CaptionLine>& lines,
     std::size_t chosen = 0;
     ImVec2 plate;
     Hidden least{INFINITY, INFINITY};
-    const std::vector<ScreenRect> texts = textsNotYielding(app); // the same for every try
+    const CaptionRoom place = captionRoom(app, boxes); // the same for every try
+    const std::vector<ScreenRect>& texts = place.texts;
     for (std::size_t k = 0; k < forms.size(); ++k) {
         // The plate is 6 px (x UI scale) wider than the text on each side, 4 px taller.
         const ImVec2 size(forms[k].width + 12.0f * s,
                           static_cast<float>(forms[k].lines.size()) * font + 8.0f * s);
-        const ImVec2 at = sceneCaptionPlace(app, size.x, size.y, boxes);
+        const ImVec2 at = placeIn(place, size.x, size.y);
         const Hidden hidden = hiddenBy(app, texts, at, size);
         if (hidden < least) {
             chosen = k;
