@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 namespace {
@@ -30,7 +31,7 @@ const SceneTheme& theme() {
 // A value written at the head of an arrow (from `base` to `tip`, m) cut at the view's edge or the
 // arena's wall: over the head (beside a vertical one), kept inside the view, in a free row.
 void drawValueAtTip(const App& app, ImDrawList* dl, Taken& placed, Vec2 base, Vec2 tip,
-                    const std::string& text, ImU32 color) {
+                    const std::string& text, ImU32 color, const RectStrips& rows) {
     const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
     const ScreenRect& vp = app.view.camera.viewport();
     const Vec2 at = app.view.camera.worldToScreen(tip);
@@ -47,7 +48,7 @@ void drawValueAtTip(const App& app, ImDrawList* dl, Taken& placed, Vec2 base, Ve
         freeRow(placed, vp, x,
                 std::clamp(static_cast<float>(at.y) - ts.y - 6.0f, static_cast<float>(vp.y),
                            static_cast<float>(vp.y + vp.height) - ts.y),
-                ts);
+                ts, &rows);
     placed.texts.push_back({spot.x, spot.y, ts.x, ts.y});
     shadowText(dl, spot, color, text.c_str(), packed(theme().textShadow));
 }
@@ -131,6 +132,7 @@ std::string speedText(const App& app, std::size_t i, double speed) {
 void drawMomentumValues(const App& app, ImDrawList* dl, Taken& placed) {
     if (!app.view.show.vectors) return;
     const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
+    std::optional<RectStrips> rows; // the blocks' (blockRows), when a value is written
     int written = 0;
     for (std::size_t i = 0; i < app.sim.world().blocks.size(); ++i) {
         const Block& b = app.sim.world().blocks[i];
@@ -140,11 +142,12 @@ void drawMomentumValues(const App& app, ImDrawList* dl, Taken& placed) {
                                               &app.sim.world().bounds);
         if (a.toScale) continue;
         const std::string inspected = momentumAsInspected(app, i);
+        if (!rows) rows = blockRows(placed, app.view.camera.viewport());
         drawValueAtTip(
             app, dl, placed, b.position, a.tip,
             (inspected.empty() ? formatNumber(b.mass * length(b.velocity - u)) : inspected) +
                 " kg·m/s",
-            packed(theme().momentum.withAlpha(1.0f)));
+            packed(theme().momentum.withAlpha(1.0f)), *rows);
         ++written;
     }
 }
@@ -158,6 +161,7 @@ void drawArrowValues(const App& app, ImDrawList* dl, Taken& placed) {
     const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
     const bool labelAll =
         relative && app.sim.world().blocks.size() <= static_cast<std::size_t>(kCrowdedScene);
+    std::optional<RectStrips> rows; // the blocks' (blockRows), when a value is written
     int written = 0;
     for (std::size_t i = 0; i < app.sim.world().blocks.size(); ++i) {
         const Block& b = app.sim.world().blocks[i];
@@ -182,7 +186,8 @@ void drawArrowValues(const App& app, ImDrawList* dl, Taken& placed) {
         }
         const float x = std::clamp(static_cast<float>(at.x) - ts.x * 0.5f, static_cast<float>(vp.x),
                                    static_cast<float>(vp.x + vp.width) - ts.x);
-        const ImVec2 spot = freeRow(placed, vp, x, static_cast<float>(at.y), ts);
+        if (!rows) rows = blockRows(placed, vp);
+        const ImVec2 spot = freeRow(placed, vp, x, static_cast<float>(at.y), ts, &*rows);
         placed.texts.push_back({spot.x, spot.y, ts.x, ts.y});
         shadowText(dl, spot, packed(theme().velocity), text.c_str(), packed(theme().textShadow));
         ++written;
@@ -192,6 +197,7 @@ void drawArrowValues(const App& app, ImDrawList* dl, Taken& placed) {
 // Force arrows carry their value, "F = 2 N" (or the vector when it is not along an axis), at the
 // head: the arrow's length is to scale only up to the knee.
 void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl, Taken& placed) {
+    std::optional<RectStrips> rows; // the blocks' (blockRows), when a value is written
     int written = 0;
     for (std::size_t i = 0; i < app.sim.world().blocks.size() && written < kMaxArrowValueLabels;
          ++i) {
@@ -219,7 +225,8 @@ void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl, Take
             y = ty - ts.y * 0.5f;
         }
         x = std::clamp(x, static_cast<float>(vp.x), static_cast<float>(vp.x + vp.width) - ts.x);
-        const ImVec2 at = freeSpot(placed, vp, x, y, y, ts, ts.y); // clear of the other texts
+        if (!rows) rows = blockRows(placed, vp);
+        const ImVec2 at = freeSpot(placed, vp, x, y, y, ts, ts.y, &*rows); // clear of the texts
         placed.texts.push_back({at.x, at.y, ts.x, ts.y});
         shadowText(dl, at, sceneTheme(app.view.lightTheme).force.packed(), text,
                    packed(theme().textShadow));

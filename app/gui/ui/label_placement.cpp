@@ -14,17 +14,26 @@ namespace {
 // `region` can touch, so that its sums are the same over fewer rectangles (a gas of 1,000 blocks
 // had every label's search add up every block: a sixth of the frame). Into `out`, cleared first:
 // a buffer each search keeps, so that no label allocates.
-void meeting(const Taken& placed, const ScreenRect& region, Taken& out) {
+void meeting(const Taken& placed, const ScreenRect& region, Taken& out,
+             const RectStrips* blockRows = nullptr) {
     out.blocks.clear();
     out.texts.clear();
-    const auto keep = [&region](const std::vector<ScreenRect>& from, std::vector<ScreenRect>& to) {
-        for (const ScreenRect& p : from)
-            if (p.x < region.x + region.width && region.x < p.x + p.width &&
-                p.y < region.y + region.height && region.y < p.y + p.height)
-                to.push_back(p);
+    const auto meets = [&region](const ScreenRect& p) {
+        return p.x < region.x + region.width && region.x < p.x + p.width &&
+               p.y < region.y + region.height && region.y < p.y + p.height;
     };
-    keep(placed.blocks, out.blocks);
-    keep(placed.texts, out.texts);
+    if (blockRows != nullptr && blockRows->size() == placed.blocks.size()) {
+        // Through the blocks' rows: those in the region's rows only, in order (rect_strips.h).
+        blockRows->forEach(region.y, region.y + region.height, [&](const ScreenRect& p) {
+            if (meets(p)) out.blocks.push_back(p);
+            return true;
+        });
+    } else {
+        for (const ScreenRect& p : placed.blocks)
+            if (meets(p)) out.blocks.push_back(p);
+    }
+    for (const ScreenRect& p : placed.texts)
+        if (meets(p)) out.texts.push_back(p);
 }
 
 // The part of `near` that a text with its top at `y` and `height` tall meets in rows, in order
@@ -43,46 +52,65 @@ void band(const Taken& near, float y, float height, Taken& out) {
     keep(near.texts, out.texts);
 }
 
-} // namespace
-
-void shadowText(ImDrawList* dl, ImVec2 at, ImU32 color, const char* text, ImU32 shadow) {
-    dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), shadow, text);
-    dl->AddText(at, color, text);
-}
-
-ScreenRect spanning(double x0, double y0, double x1, double y1) {
-    return {x0, y0, x1 - x0, y1 - y0};
-}
-
-double coveredAt(const Taken& placed, const ScreenRect& view, float x, float y, ImVec2 size,
-                 float gap) {
+// coveredAt, but once what it has summed reaches `least` it stops there and returns that sum: the
+// whole is no less (every area added is >= 0, and a sum of doubles never falls as a term >= 0 is
+// added), so a search after the spot covering the least, which keeps a spot only where it covers
+// less than `least`, keeps the same spots. Where it covers less, the whole sum, bit for bit.
+double coveredUnder(const Taken& placed, const ScreenRect& view, float x, float y, ImVec2 size,
+                    float gap, double least) {
     if (x < view.x || y < view.y || x + size.x > view.x + view.width ||
         y + size.y > view.y + view.height)
         return INFINITY;
     const ScreenRect r = spanning(x - gap, y, x + size.x + gap, y + size.y);
-    const auto area = [&r](const std::vector<ScreenRect>& list) {
-        double sum = 0.0;
-        for (const ScreenRect& p : list) {
-            const double w = std::min(r.x + r.width, p.x + p.width) - std::max(r.x, p.x);
-            const double h = std::min(r.y + r.height, p.y + p.height) - std::max(r.y, p.y);
-            if (w > 0.0 && h > 0.0) sum += w * h;
-        }
-        return sum;
+    const auto overlap = [&r](const ScreenRect& p) {
+        const double w = std::min(r.x + r.width, p.x + p.width) - std::max(r.x, p.x);
+        const double h = std::min(r.y + r.height, p.y + p.height) - std::max(r.y, p.y);
+        return w > 0.0 && h > 0.0 ? w * h : 0.0;
     };
-    return area(placed.blocks) + 10.0 * area(placed.texts);
+    double blocks = 0.0;
+    for (const ScreenRect& p : placed.blocks) {
+        const double a = overlap(p);
+        if (a == 0.0) continue;
+        blocks += a;
+        if (blocks >= least) return blocks;
+    }
+    double texts = 0.0;
+    for (const ScreenRect& p : placed.texts) {
+        const double a = overlap(p);
+        if (a == 0.0) continue;
+        texts += a;
+        const double sum = blocks + 10.0 * texts;
+        if (sum >= least) return sum;
+    }
+    return blocks + 10.0 * texts;
 }
 
-ImVec2 freeSpot(const Taken& placed, const ScreenRect& view, float x, float above, float below,
-                ImVec2 size, float line) {
-    const float gap = line * 0.5f; // labels closer than this read as one
+// True when every rectangle meeting `inner` meets `outer` (meeting's test): `inner` lies in
+// `outer`, its edges as meeting works them out.
+bool within(const ScreenRect& inner, const ScreenRect& outer) {
+    return outer.x <= inner.x && inner.x + inner.width <= outer.x + outer.width &&
+           outer.y <= inner.y && inner.y + inner.height <= outer.y + outer.height;
+}
+
+// The rectangle freeSpot's search at (x, above, below) for a label of `size` can touch: all of
+// `placed` that its sums can meet.
+ScreenRect spotRegion(float x, float above, float below, ImVec2 size, float line) {
+    const float gap = line * 0.5f;
     const float shift = size.x * 0.5f + gap;
     const float reach =
         3.0f * shift + gap + 1.0f; // the farthest a candidate's sides go, and a pixel
+    return spanning(x - reach, std::min(above - 5.0f * line, below) - 1.0f, x + size.x + reach,
+                    std::max(above, below + 5.0f * line) + size.y + 1.0f);
+}
+
+// freeSpot over `source`: `placed`, or a part of it, in order, holding all of it that meets
+// spotRegion (meeting then picks the same rectangles from either).
+ImVec2 spotAmong(const Taken& source, const ScreenRect& view, float x, float above, float below,
+                 ImVec2 size, float line, const RectStrips* blockRows) {
+    const float gap = line * 0.5f; // labels closer than this read as one
+    const float shift = size.x * 0.5f + gap;
     static thread_local Taken near;
-    meeting(placed,
-            spanning(x - reach, std::min(above - 5.0f * line, below) - 1.0f, x + size.x + reach,
-                     std::max(above, below + 5.0f * line) + size.y + 1.0f),
-            near);
+    meeting(source, spotRegion(x, above, below, size, line), near, blockRows);
     // Each of the 12 rows is tried at up to 7 places sideways: its band of `near` is found on its
     // first try and kept.
     constexpr int kRows = 6;
@@ -97,7 +125,8 @@ ImVec2 freeSpot(const Taken& placed, const ScreenRect& view, float x, float abov
                 const float y = side == 0 ? above - k * line : below + k * line;
                 if (!banded[k][side]) band(near, y, size.y, rows[k][side]);
                 banded[k][side] = true;
-                const double covered = coveredAt(rows[k][side], view, x + dx, y, size, gap);
+                const double covered =
+                    coveredUnder(rows[k][side], view, x + dx, y, size, gap, least);
                 if (covered == 0.0) return ImVec2(x + dx, y);
                 if (covered < least) {
                     least = covered;
@@ -107,6 +136,33 @@ ImVec2 freeSpot(const Taken& placed, const ScreenRect& view, float x, float abov
         }
     }
     return best;
+}
+
+} // namespace
+
+void shadowText(ImDrawList* dl, ImVec2 at, ImU32 color, const char* text, ImU32 shadow) {
+    dl->AddText(ImVec2(at.x + 1.0f, at.y + 1.0f), shadow, text);
+    dl->AddText(at, color, text);
+}
+
+ScreenRect spanning(double x0, double y0, double x1, double y1) {
+    return {x0, y0, x1 - x0, y1 - y0};
+}
+
+double coveredAt(const Taken& placed, const ScreenRect& view, float x, float y, ImVec2 size,
+                 float gap) {
+    return coveredUnder(placed, view, x, y, size, gap, INFINITY);
+}
+
+ImVec2 freeSpot(const Taken& placed, const ScreenRect& view, float x, float above, float below,
+                ImVec2 size, float line, const RectStrips* blockRows) {
+    return spotAmong(placed, view, x, above, below, size, line, blockRows);
+}
+
+RectStrips blockRows(const Taken& placed, const ScreenRect& view) {
+    RectStrips rows;
+    rows.build(placed.blocks, RectStrips::Axis::y, view.y, view.y + view.height, 32);
+    return rows;
 }
 
 void takeBlocks(const App& app, Taken& placed) {
@@ -138,17 +194,34 @@ float clearRowInside(const Taken& placed, std::size_t own, float x, float top, I
     return NAN;
 }
 
-ImVec2 freeRow(const Taken& placed, const ScreenRect& view, float x, float y, ImVec2 ts) {
+ImVec2 freeRow(const Taken& placed, const ScreenRect& view, float x, float y, ImVec2 ts,
+               const RectStrips* blockRows) {
     float best = y;
     double least = INFINITY;
-    static thread_local Taken near;
-    meeting(placed,
-            spanning(x - 5.0f, y - 5.0f * ts.y - 1.0f, x + ts.x + 5.0f, y + 6.0f * ts.y + 1.0f),
-            near);
+    // What the rows below and above can meet, what the search sideways can (spotRegion, and
+    // its spot's own test below): one pass over `placed` for the three, into `wide`, where each
+    // lies in it (else that one's own pass over `placed`).
+    const ScreenRect rows =
+        spanning(x - 5.0f, y - 5.0f * ts.y - 1.0f, x + ts.x + 5.0f, y + 6.0f * ts.y + 1.0f);
+    const ScreenRect sideways = spotRegion(x, y, y, ts, ts.y);
+    const double pad = 5.0 + 1.0; // the spot's test's margin, and a pixel
+    const ScreenRect all =
+        spanning(std::min(rows.x, sideways.x) - pad, std::min(rows.y, sideways.y) - pad,
+                 std::max(rows.x + rows.width, sideways.x + sideways.width) + pad,
+                 std::max(rows.y + rows.height, sideways.y + sideways.height) + pad);
+    static thread_local Taken wide, near;
+    meeting(placed, all, wide, blockRows);
+    const auto from = [&](const ScreenRect& region) -> const Taken& {
+        return within(region, all) ? wide : placed;
+    };
+    const auto rowsOf = [&](const Taken& source) {
+        return &source == &placed ? blockRows : nullptr;
+    };
+    meeting(from(rows), rows, near, rowsOf(from(rows)));
     for (const float direction : {1.0f, -1.0f}) {
         for (int k = 0; k < 6; ++k) {
             const float row = y + direction * static_cast<float>(k) * ts.y;
-            const double covered = coveredAt(near, view, x, row, ts, 4.0f);
+            const double covered = coveredUnder(near, view, x, row, ts, 4.0f, least);
             if (covered == 0.0) return ImVec2(x, row);
             if (covered < least) {
                 least = covered;
@@ -156,10 +229,10 @@ ImVec2 freeRow(const Taken& placed, const ScreenRect& view, float x, float y, Im
             }
         }
     }
-    const ImVec2 aside = freeSpot(placed, view, x, y, y, ts, ts.y);
-    meeting(placed,
-            spanning(aside.x - 5.0f, aside.y - 1.0f, aside.x + ts.x + 5.0f, aside.y + ts.y + 1.0f),
-            near); // all that the test below can meet
+    const ImVec2 aside = spotAmong(from(sideways), view, x, y, y, ts, ts.y, rowsOf(from(sideways)));
+    const ScreenRect spot =
+        spanning(aside.x - 5.0f, aside.y - 1.0f, aside.x + ts.x + 5.0f, aside.y + ts.y + 1.0f);
+    meeting(from(spot), spot, near, rowsOf(from(spot))); // all that the test below can meet
     if (coveredAt(near, view, aside.x, aside.y, ts, 4.0f) == 0.0) return aside;
     return ImVec2(x, best); // none free: the row covering the least
 }
