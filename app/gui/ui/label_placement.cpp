@@ -36,17 +36,27 @@ void meeting(const Taken& placed, const ScreenRect& region, Taken& out,
         if (meets(p)) out.texts.push_back(p);
 }
 
+// A rectangle of a band (band) as coveredAt works it out against a text of the band: its sides,
+// and its overlap with the band's rows, the same for every text of the band (worked out once).
+struct Side {
+    double left, right, h;
+};
+struct Band {
+    std::vector<Side> blocks, texts;
+};
+
 // The part of `near` that a text with its top at `y` and `height` tall meets in rows, in order
 // (any x): coveredAt's vertical overlap worked out as coveredAt does, so that its sums over the
 // band are the sums over `near` (what the band leaves out adds nothing), over a tenth of it.
-void band(const Taken& near, float y, float height, Taken& out) {
+void band(const Taken& near, float y, float height, Band& out) {
     out.blocks.clear();
     out.texts.clear();
     const ScreenRect r = spanning(0.0, y, 0.0, y + height);
-    const auto keep = [&r](const std::vector<ScreenRect>& from, std::vector<ScreenRect>& to) {
-        for (const ScreenRect& p : from)
-            if (std::min(r.y + r.height, p.y + p.height) - std::max(r.y, p.y) > 0.0)
-                to.push_back(p);
+    const auto keep = [&r](const std::vector<ScreenRect>& from, std::vector<Side>& to) {
+        for (const ScreenRect& p : from) {
+            const double h = std::min(r.y + r.height, p.y + p.height) - std::max(r.y, p.y);
+            if (h > 0.0) to.push_back({p.x, p.x + p.width, h});
+        }
     };
     keep(near.blocks, out.blocks);
     keep(near.texts, out.texts);
@@ -85,6 +95,36 @@ double coveredUnder(const Taken& placed, const ScreenRect& view, float x, float 
     return blocks + 10.0 * texts;
 }
 
+// coveredUnder over a band of its text's rows (band(near, y, size.y, ...)): the same sums.
+double coveredInBand(const Band& band, const ScreenRect& view, float x, float y, ImVec2 size,
+                     float gap, double least) {
+    if (x < view.x || y < view.y || x + size.x > view.x + view.width ||
+        y + size.y > view.y + view.height)
+        return INFINITY;
+    const ScreenRect r = spanning(x - gap, y, x + size.x + gap, y + size.y);
+    const double left = r.x, right = r.x + r.width;
+    const auto overlap = [left, right](const Side& p) {
+        const double w = std::min(right, p.right) - std::max(left, p.left);
+        return w > 0.0 && p.h > 0.0 ? w * p.h : 0.0;
+    };
+    double blocks = 0.0;
+    for (const Side& p : band.blocks) {
+        const double a = overlap(p);
+        if (a == 0.0) continue;
+        blocks += a;
+        if (blocks >= least) return blocks;
+    }
+    double texts = 0.0;
+    for (const Side& p : band.texts) {
+        const double a = overlap(p);
+        if (a == 0.0) continue;
+        texts += a;
+        const double sum = blocks + 10.0 * texts;
+        if (sum >= least) return sum;
+    }
+    return blocks + 10.0 * texts;
+}
+
 // True when every rectangle meeting `inner` meets `outer` (meeting's test): `inner` lies in
 // `outer`, its edges as meeting works them out.
 bool within(const ScreenRect& inner, const ScreenRect& outer) {
@@ -114,7 +154,7 @@ ImVec2 spotAmong(const Taken& source, const ScreenRect& view, float x, float abo
     // Each of the 12 rows is tried at up to 7 places sideways: its band of `near` is found on its
     // first try and kept.
     constexpr int kRows = 6;
-    static thread_local Taken rows[kRows][2];
+    static thread_local Band rows[kRows][2];
     bool banded[kRows][2] = {};
     ImVec2 best(x, above);
     double least = INFINITY;
@@ -126,7 +166,7 @@ ImVec2 spotAmong(const Taken& source, const ScreenRect& view, float x, float abo
                 if (!banded[k][side]) band(near, y, size.y, rows[k][side]);
                 banded[k][side] = true;
                 const double covered =
-                    coveredUnder(rows[k][side], view, x + dx, y, size, gap, least);
+                    coveredInBand(rows[k][side], view, x + dx, y, size, gap, least);
                 if (covered == 0.0) return ImVec2(x + dx, y);
                 if (covered < least) {
                     least = covered;

@@ -282,20 +282,31 @@ ScreenRect placeCaption(double width, double height, const ScreenRect& scene,
            bestX = INFINITY;
     // The rectangles a candidate at `top` can overlap: those in its band of rows, in their
     // order (the others add nothing to the sums, which come out bit for bit the same). A
-    // thousand blocks against every candidate cost a millisecond a caption.
-    // Found through rows of the scene (rect_strips.h): the rectangles in a band's rows only are
-    // looked at, not the thousand (issue 42).
+    // thousand blocks against every candidate cost a millisecond a caption. Found through rows
+    // of the scene (rect_strips.h): those in a band's rows only are looked at (issue 42).
     constexpr int kRows = 32;
     RectStrips avoidRows, textRows;
     avoidRows.build(avoid, RectStrips::Axis::y, scene.y, scene.y + scene.height, kRows);
     textRows.build(texts, RectStrips::Axis::y, scene.y, scene.y + scene.height, kRows);
-    std::vector<ScreenRect> avoidInBand, textsInBand;
-    const auto inBand = [height](double top, const RectStrips& from, std::vector<ScreenRect>& to) {
+    // Each kept as overlapArea works it out against a candidate of the band: its sides, and its
+    // overlap with the band's rows, the same for every candidate of the band (worked out once).
+    struct InBand {
+        double left, right, h;
+    };
+    std::vector<InBand> avoidInBand, textsInBand;
+    const auto inBand = [height](double top, const RectStrips& from, std::vector<InBand>& to) {
         to.clear();
         from.forEach(top, top + height, [&](const ScreenRect& a) {
-            if (overlapArea({a.x, top, a.width, height}, a) > 0.0) to.push_back(a);
+            if (overlapArea({a.x, top, a.width, height}, a) > 0.0)
+                to.push_back({a.x, a.x + a.width,
+                              std::min(top + height, a.y + a.height) - std::max(top, a.y)});
             return true;
         });
+    };
+    // overlapArea(r, a) of a candidate r of the band.
+    const auto area = [](double left, double right, const InBand& a) {
+        const double w = std::min(right, a.right) - std::max(left, a.left);
+        return w > 0.0 && a.h > 0.0 ? w * a.h : 0.0;
     };
     for (double y : ys) {
         if (y < y0 - 1e-9 || y > y1 + 1e-9) continue;
@@ -304,14 +315,15 @@ ScreenRect placeCaption(double width, double height, const ScreenRect& scene,
         for (double x : xs) {
             if (x < x0 - 1e-9 || x > x1 + 1e-9) continue;
             const ScreenRect r{std::round(x), std::round(y), width, height};
+            const double left = r.x, right = r.x + r.width;
             double hidden = 0.0;
-            for (const ScreenRect& t : textsInBand) hidden += overlapArea(r, t);
+            for (const InBand& t : textsInBand) hidden += area(left, right, t);
             if (hidden > bestHidden) continue;
             // The sums only grow (every area is >= 0): once past the best, the candidate loses
             // whatever the rest adds (the sum is the same as the whole loop's up to there).
             double covered = 0.0;
-            for (const ScreenRect& a : avoidInBand) {
-                covered += overlapArea(r, a);
+            for (const InBand& a : avoidInBand) {
+                covered += area(left, right, a);
                 if (hidden == bestHidden && covered > bestCovered) break;
             }
             const double tier = !rectsOverlap(r, world) ? 0.0 : rectInside(r, inner) ? 1.0 : 2.0;
