@@ -16,6 +16,7 @@
 
 #include <imgui.h>
 
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -442,11 +443,18 @@ int recordScenes(App& app, Offscreen& off, const Options& o) {
     return 0;
 }
 
+// The process's minor page faults so far (getrusage): memory faulted in.
+long minorPageFaults() {
+    rusage usage{};
+    return getrusage(RUSAGE_SELF, &usage) == 0 ? usage.ru_minflt : 0;
+}
+
 int benchmark(App& app, Offscreen& off, const Options& o) {
     using Clock = std::chrono::steady_clock;
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off); // shaders compile here
     double simMs = 0.0;
     FrameTimes times;
+    const long faultsBefore = minorPageFaults();
     const auto start = Clock::now();
     for (int i = 0; i < o.benchmarkFrames; ++i) {
         const auto s0 = Clock::now();
@@ -464,9 +472,11 @@ int benchmark(App& app, Offscreen& off, const Options& o) {
                 perFrame, 1000.0 / perFrame, simMs / o.benchmarkFrames,
                 perFrame - simMs / o.benchmarkFrames);
     const double n = o.benchmarkFrames;
+    const double faults = static_cast<double>(minorPageFaults() - faultsBefore) / n;
     std::printf("  drawing: UI built %.3f ms, scene drawn %.3f ms, UI drawn %.3f ms, pixels "
                 "waited for %.3f ms\n",
                 times.ui / n, times.scene / n, times.uiDraw / n, times.finish / n);
+    std::printf("  memory: %.1f page faults a frame (memory given back and taken again)\n", faults);
     // With --screenshot too: the last frame benchmarked.
     return o.screenshot.empty() ? 0 : writeScreenshot(off, o);
 }
