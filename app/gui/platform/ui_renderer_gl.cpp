@@ -42,6 +42,11 @@ struct UiRenderer {
     const ImDrawData* plannedFor = nullptr;
     std::vector<bool> fillSkipped;
     std::vector<UiPaint> paints;
+    // The runs of every command drawn, worked out while planning, for the draw data
+    // `preparedFor`: command k's are planRuns[planCmdEnd[k - 1] .. planCmdEnd[k]).
+    const ImDrawData* preparedFor = nullptr;
+    std::vector<UiDrawRun> planRuns;
+    std::vector<std::size_t> planCmdEnd;
 };
 UiRenderer gUi;
 
@@ -296,6 +301,23 @@ namespace {
 // llvmpipe a scissored clear costs next to nothing, a blended pixel 2 to 3.5 ns.
 constexpr int kMinClearedPixels = 4096;
 
+// A command's runs (ui_draw_runs.h): the font atlas's split into solid and textured runs and
+// opaque fills; any other texture's, one run.
+void commandRuns(const ImDrawList* list, const ImDrawCmd& cmd, const ImDrawData* data,
+                 std::vector<UiDrawRun>& runs) {
+    runs.clear();
+    if (textureName(cmd.GetTexID()) != gUi.fontTexture) {
+        runs.push_back({cmd.IdxOffset, cmd.ElemCount, false, {}, 0});
+        return;
+    }
+    const ImDrawVert* vertices = list->VtxBuffer.Data + cmd.VtxOffset;
+    const ImDrawIdx* indices = list->IdxBuffer.Data + cmd.IdxOffset;
+    splitIntoRuns(vertices, indices, cmd.IdxOffset, cmd.ElemCount,
+                  ImGui::GetIO().Fonts->TexUvWhitePixel, kMinSolidRunPixels, runs);
+    findOpaqueFills(vertices, indices, cmd.IdxOffset, data->DisplayPos, data->FramebufferScale,
+                    kMinClearedPixels, runs);
+}
+
 // An opaque fill (findOpaqueFills): its sure pixels within `scissor` cleared to its colour (the
 // colour its triangles give them: one colour, alpha 255, blended over anything), then its
 // triangles `draw`n under the scissor's bands around them (the fill's rounded corners and
@@ -343,12 +365,12 @@ void uiRendererRender(const ImDrawData* data) {
 #if SANDBOX_GL_ES
     renderForWebGl(data, fbWidth, fbHeight);
 #else
-    const ImVec2 whiteUv = ImGui::GetIO().Fonts->TexUvWhitePixel;
     const GLenum indexType = sizeof(ImDrawIdx) == 2 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT;
     GLuint current = 0; // the program in use
-    const bool planned = gUi.plannedFor == data;
-    gUi.plannedFor = nullptr;
-    std::size_t fill = 0; // the fills met so far (the plan's order)
+    const bool planned = gUi.plannedFor == data, prepared = gUi.preparedFor == data;
+    gUi.plannedFor = gUi.preparedFor = nullptr;
+    std::size_t drawnCmd = 0; // the commands drawn so far (the plan's order)
+    std::size_t fill = 0;     // the fills met so far (the plan's order)
     for (int n = 0; n < data->CmdListsCount; ++n) {
         const ImDrawList* list = data->CmdLists[n];
         glBufferData(GL_ARRAY_BUFFER,
@@ -367,18 +389,18 @@ void uiRendererRender(const ImDrawData* data) {
             if (!scissorTo(cmd, data, fbHeight, &scissor)) continue;
             glBindTexture(GL_TEXTURE_2D, textureName(cmd.GetTexID()));
 
-            gUi.runs.clear();
-            if (textureName(cmd.GetTexID()) == gUi.fontTexture) {
-                const ImDrawVert* vertices = list->VtxBuffer.Data + cmd.VtxOffset;
-                const ImDrawIdx* indices = list->IdxBuffer.Data + cmd.IdxOffset;
-                splitIntoRuns(vertices, indices, cmd.IdxOffset, cmd.ElemCount, whiteUv,
-                              kMinSolidRunPixels, gUi.runs);
-                findOpaqueFills(vertices, indices, cmd.IdxOffset, data->DisplayPos,
-                                data->FramebufferScale, kMinClearedPixels, gUi.runs);
+            const UiDrawRun *runs = nullptr, *runsEnd = nullptr;
+            if (prepared && drawnCmd < gUi.planCmdEnd.size()) { // as the plan worked them out
+                runs = gUi.planRuns.data() + (drawnCmd ? gUi.planCmdEnd[drawnCmd - 1] : 0);
+                runsEnd = gUi.planRuns.data() + gUi.planCmdEnd[drawnCmd];
             } else {
-                gUi.runs.push_back({cmd.IdxOffset, cmd.ElemCount, false, {}, 0});
+                commandRuns(list, cmd, data, gUi.runs);
+                runs = gUi.runs.data();
+                runsEnd = runs + gUi.runs.size();
             }
-            for (const UiDrawRun& run : gUi.runs) {
+            ++drawnCmd;
+            for (; runs != runsEnd; ++runs) {
+                const UiDrawRun& run = *runs;
                 const GLuint program = run.solid ? gUi.solid.program : gUi.textured.program;
                 if (program != current) glUseProgram(program);
                 current = program;
@@ -416,7 +438,6 @@ UiPixelRect clipRect(const UiPixelRect& a, const UiPixelRect& b) {
 // same runs; `fillPaint` gets, for each opaque fill run, its paint's index.
 void listPaints(const ImDrawData* data, int fbWidth, int fbHeight, std::vector<UiPaint>& paints,
                 std::vector<std::size_t>& fillPaint) {
-    const ImVec2 whiteUv = ImGui::GetIO().Fonts->TexUvWhitePixel;
     const ImVec2 origin = data->DisplayPos, scale = data->FramebufferScale;
     const UiPixelRect everywhere{0, 0, fbWidth, fbHeight};
     for (int n = 0; n < data->CmdListsCount; ++n) {
@@ -431,16 +452,9 @@ void listPaints(const ImDrawData* data, int fbWidth, int fbHeight, std::vector<U
             const UiPixelRect clip{box.x, fbHeight - (box.y + box.height), box.x + box.width,
                                    fbHeight - box.y};
             const ImDrawVert* vertices = list->VtxBuffer.Data + cmd.VtxOffset;
-            const ImDrawIdx* indices = list->IdxBuffer.Data + cmd.IdxOffset;
-            gUi.runs.clear();
-            if (textureName(cmd.GetTexID()) == gUi.fontTexture) {
-                splitIntoRuns(vertices, indices, cmd.IdxOffset, cmd.ElemCount, whiteUv,
-                              kMinSolidRunPixels, gUi.runs);
-                findOpaqueFills(vertices, indices, cmd.IdxOffset, origin, scale, kMinClearedPixels,
-                                gUi.runs);
-            } else {
-                gUi.runs.push_back({cmd.IdxOffset, cmd.ElemCount, false, {}, 0});
-            }
+            commandRuns(list, cmd, data, gUi.runs);
+            gUi.planRuns.insert(gUi.planRuns.end(), gUi.runs.begin(), gUi.runs.end());
+            gUi.planCmdEnd.push_back(gUi.planRuns.size());
             for (const UiDrawRun& run : gUi.runs) {
                 float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
                 const ImDrawIdx* idx = list->IdxBuffer.Data + run.firstIndex;
@@ -477,14 +491,17 @@ void uiRendererPlanFrameBase(SceneRenderer& renderer) {
     renderer.setFrameBasePlanner([](const PixelBox& sceneDrawn, const PixelBox& sceneCovered) {
         FrameBase base;
         const ImDrawData* data = ImGui::GetDrawData();
-        gUi.plannedFor = nullptr;
+        gUi.plannedFor = gUi.preparedFor = nullptr;
         if (!data || !gUi.textured.program) return base;
         const int fbWidth = static_cast<int>(data->DisplaySize.x * data->FramebufferScale.x);
         const int fbHeight = static_cast<int>(data->DisplaySize.y * data->FramebufferScale.y);
         if (fbWidth <= 0 || fbHeight <= 0) return base;
         gUi.paints.clear();
+        gUi.planRuns.clear();
+        gUi.planCmdEnd.clear();
         std::vector<std::size_t> fillPaint;
         listPaints(data, fbWidth, fbHeight, gUi.paints, fillPaint);
+        gUi.preparedFor = data;
         const UiFrameBase plan =
             planFrameBase(gUi.paints, {sceneDrawn.x0, sceneDrawn.y0, sceneDrawn.x1, sceneDrawn.y1},
                           {sceneCovered.x0, sceneCovered.y0, sceneCovered.x1, sceneCovered.y1},
