@@ -11,6 +11,22 @@ namespace {
 
 constexpr float kCorners[8] = {-1.f, -1.f, 1.f, -1.f, -1.f, 1.f, 1.f, 1.f};
 
+bool allOpaque(const std::vector<ShapeVertex>& vertices) {
+    return std::all_of(vertices.begin(), vertices.end(),
+                       [](const ShapeVertex& v) { return v.a == 1.0f; });
+}
+
+// Blending on or off (opaque shapes replace what is under them: blending would give the same
+// pixels, and a software rasteriser pays for it in each of them), only when it changes.
+void setBlend(bool& on, bool wanted) {
+    if (on == wanted) return;
+    if (wanted)
+        glEnable(GL_BLEND);
+    else
+        glDisable(GL_BLEND);
+    on = wanted;
+}
+
 void setUniformTransform(GLint location, const ClipTransform& t) {
     glUniform4f(location, t.scaleX, t.scaleY, t.offsetX, t.offsetY);
 }
@@ -150,6 +166,8 @@ SceneRenderer::BatchRanges SceneRenderer::addBatch(const ShapeBatch& batch, floa
     }
     r.segments = {vertexAt(), static_cast<GLsizei>(segments->size())};
     append(segments->data(), segments->size() * sizeof(ShapeVertex));
+    r.trianglesOpaque = allOpaque(batch.vertices());
+    r.segmentsOpaque = allOpaque(*segments);
     return r;
 }
 
@@ -179,26 +197,47 @@ void SceneRenderer::drawShapes(const ClipTransform& t, const BatchRanges& r) {
     setUniformTransform(shapeTransform_, t);
     glBindVertexArray(shapeVao_);
     pointShapeAttributes(shapeBytes_);
-    if (r.triangles.count) glDrawArrays(GL_TRIANGLES, r.triangles.first, r.triangles.count);
+    bool blend = true; // as draw() leaves it for the shapes
+    if (r.triangles.count) {
+        setBlend(blend, !r.trianglesOpaque);
+        glDrawArrays(GL_TRIANGLES, r.triangles.first, r.triangles.count);
+    }
     if (r.segmentsAsLines) glLineWidth(std::max(r.lineWidthPx, 1.0f));
-    if (r.segments.count)
+    if (r.segments.count) {
+        setBlend(blend, !r.segmentsOpaque);
         glDrawArrays(r.segmentsAsLines ? GL_LINES : GL_TRIANGLES, r.segments.first,
                      r.segments.count);
+    }
+    setBlend(blend, true);
+}
+
+void SceneRenderer::paintBase(const SceneView& view, const PixelBox& drawn,
+                              const PixelBox& covered) {
+    const Color bg = view.theme->background;
+    glDisable(GL_SCISSOR_TEST);
+    const FrameBase base = planner_ ? planner_(drawn, covered) : FrameBase{};
+    if (!base.planned) {
+        glClearColor(bg.r, bg.g, bg.b, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        return;
+    }
+    glClearColor(base.clear[0], base.clear[1], base.clear[2], base.clear[3]);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_SCISSOR_TEST);
+    glClearColor(bg.r, bg.g, bg.b, 1.0f);
+    for (const PixelBox& r : base.background) {
+        if (r.empty()) continue;
+        glScissor(r.x0, view.framebufferHeight - r.y1, r.x1 - r.x0, r.y1 - r.y0);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
+    glDisable(GL_SCISSOR_TEST);
 }
 
 void SceneRenderer::draw(const SceneView& view) {
-    const Color bg = view.theme->background;
-    glDisable(GL_SCISSOR_TEST);
-    glClearColor(bg.r, bg.g, bg.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    if (!view.world || !view.camera || !shapeProgram_) return;
-
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-
+    if (!view.world || !view.camera || !shapeProgram_) {
+        paintBase(view, PixelBox{}, PixelBox{});
+        return;
+    }
     // The arena (inside the bounds) by a scissored clear: far cheaper than a quad on llvmpipe.
     // The viewport as the caller set it (not asked of GL: in WebGL a query waits for the GPU
     // process).
@@ -209,20 +248,46 @@ void SceneRenderer::draw(const SceneView& view) {
     const double x0 = std::max(0.0, lo.x * sx), x1 = std::min(double(vp[2]), hi.x * sx);
     const double y0 = std::max(0.0, vp[3] - lo.y * sy),
                  y1 = std::min(double(vp[3]), vp[3] - hi.y * sy);
-    if (x1 > x0 && y0 > y1) {
+    const bool arenaShown = x1 > x0 && y0 > y1;
+    const GLint arenaBox[4] = {
+        static_cast<GLint>(std::lround(x0)), static_cast<GLint>(std::lround(y1)),
+        static_cast<GLsizei>(std::lround(x1 - x0)), static_cast<GLsizei>(std::lround(y0 - y1))};
+
+    const ClipTransform t = view.camera->clipTransform(view.displayWidth, view.displayHeight);
+    framebufferPixelsPerMetre_ = std::abs(t.scaleX) * 0.5 * vp[2];
+    geometry_.build(view, maxPointPx_);
+
+    // Where the scene draws (the base beneath it is planned around it): its shapes and blocks,
+    // and the arena's clear, in rows from the top.
+    PixelBox drawn, arena;
+    if (planner_) {
+        drawn = drawnBox(geometry_, t, vp[2], vp[3], kMomentumShaftPx, 2.0);
+        if (arenaShown) {
+            arena = {arenaBox[0], vp[3] - (arenaBox[1] + arenaBox[3]), arenaBox[0] + arenaBox[2],
+                     vp[3] - arenaBox[1]};
+            if (drawn.empty())
+                drawn = arena;
+            else
+                drawn = {std::min(drawn.x0, arena.x0), std::min(drawn.y0, arena.y0),
+                         std::max(drawn.x1, arena.x1), std::max(drawn.y1, arena.y1)};
+        }
+    }
+    paintBase(view, drawn, arena);
+
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    if (arenaShown) {
         const Color arena = view.theme->arena;
         glEnable(GL_SCISSOR_TEST);
-        glScissor(static_cast<GLint>(std::lround(x0)), static_cast<GLint>(std::lround(y1)),
-                  static_cast<GLsizei>(std::lround(x1 - x0)),
-                  static_cast<GLsizei>(std::lround(y0 - y1)));
+        glScissor(arenaBox[0], arenaBox[1], arenaBox[2], arenaBox[3]);
         glClearColor(arena.r, arena.g, arena.b, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
         glDisable(GL_SCISSOR_TEST);
     }
 
-    const ClipTransform t = view.camera->clipTransform(view.displayWidth, view.displayHeight);
-    framebufferPixelsPerMetre_ = std::abs(t.scaleX) * 0.5 * vp[2];
-    geometry_.build(view, maxPointPx_);
     const float lineWidthPx[3] = {kTrailWidthPx, kMomentumShaftPx, kVelocityShaftPx};
     upload(lineWidthPx);
 

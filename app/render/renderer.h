@@ -7,8 +7,22 @@
 #include "scene_geometry.h"
 
 #include <cstddef>
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
+
+// How a frame's first paint is done, when a planner gives it (ui_frame_base.h): the whole
+// framebuffer cleared to `clear`, then `background` painted the scene's background.
+struct FrameBase {
+    bool planned = false; // false: the whole framebuffer cleared to the scene's background
+    float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    std::vector<PixelBox> background;
+};
+// Given the framebuffer pixels the scene draws in besides its background, and those it paints
+// opaque (its arena), in rows from the top.
+using FrameBasePlanner =
+    std::function<FrameBase(const PixelBox& sceneDrawn, const PixelBox& sceneCovered)>;
 
 class SceneRenderer {
   public:
@@ -18,6 +32,8 @@ class SceneRenderer {
     // Clears the framebuffer and draws the scene (GL viewport set by the caller to
     // view.framebufferWidth x view.framebufferHeight).
     void draw(const SceneView& view);
+    // Asked each frame how to paint the frame's base (none: the scene's background everywhere).
+    void setFrameBasePlanner(FrameBasePlanner planner) { planner_ = std::move(planner); }
 
   private:
     // A run of shape vertices in the frame's upload: its first vertex and how many.
@@ -31,6 +47,8 @@ class SceneRenderer {
         ShapeRange triangles, segments;
         bool segmentsAsLines = true;
         float lineWidthPx = 1.0f;
+        // Every vertex's alpha 1: drawn without blending (the same pixels).
+        bool trianglesOpaque = false, segmentsOpaque = false;
     };
     // Everything the frame draws in one buffer, uploaded by one glBufferData: the blocks'
     // instances (each style and shape's after the other's), then the shapes' vertices. In WebGL
@@ -68,4 +86,7 @@ class SceneRenderer {
     std::vector<ShapeVertex> wideLineQuads_; // segments as triangles, when lines cannot be wide
     double maxPointPx_ = 1.0;                // the largest point sprite used for a block, pixels
     SceneGeometry geometry_;
+    FrameBasePlanner planner_;
+    // The frame's base: its clear, and the scene's background (outside `drawn` none is needed).
+    void paintBase(const SceneView& view, const PixelBox& drawn, const PixelBox& covered);
 };

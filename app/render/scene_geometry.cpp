@@ -267,3 +267,43 @@ void SceneGeometry::addBlocks(const SceneView& view, double maxPointPx) {
         }
     }
 }
+
+PixelBox drawnBox(const SceneGeometry& geometry, const ClipTransform& t, int width, int height,
+                  double lineWidthPx, double marginPx) {
+    // In pixels from the framebuffer's left and top: clip = world * scale + offset.
+    const double sx = 0.5 * width * t.scaleX, ox = 0.5 * width * (t.offsetX + 1.0);
+    const double sy = -0.5 * height * t.scaleY, oy = 0.5 * height * (1.0 - t.offsetY);
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    const auto add = [&](double wx, double wy, double reachX, double reachY) {
+        const double px = wx * sx + ox, py = wy * sy + oy;
+        x0 = std::min(x0, px - reachX);
+        x1 = std::max(x1, px + reachX);
+        y0 = std::min(y0, py - reachY);
+        y1 = std::max(y1, py + reachY);
+    };
+    const double halfLine = 0.5 * lineWidthPx;
+    for (const ShapeBatch* batch : {&geometry.under, &geometry.momenta, &geometry.over}) {
+        for (const ShapeVertex& v : batch->vertices()) add(v.x, v.y, 0.0, 0.0);
+        for (const ShapeVertex& v : batch->segmentVertices()) add(v.x, v.y, halfLine, halfLine);
+    }
+    const double pxX = std::abs(sx), pxY = std::abs(sy); // pixels per metre
+    for (const auto& shapes : geometry.blocks) {
+        for (const BlockInstance& b : shapes[kQuad])
+            add(b.rect[0], b.rect[1], b.rect[2] * pxX, b.rect[3] * pxY);
+        for (const BlockInstance& b : shapes[kPoint]) {
+            // A point sprite is a square of the larger side plus 2 px (block.vert).
+            const double reach = std::max(b.rect[2] * pxX, b.rect[3] * pxY) + 1.0;
+            add(b.rect[0], b.rect[1], reach, reach);
+        }
+    }
+    if (!(x0 <= x1) || !std::isfinite(x0 + x1 + y0 + y1)) {
+        if (x0 <= x1) return {0, 0, width, height}; // a coordinate beyond reckoning: everywhere
+        return {};
+    }
+    PixelBox box;
+    box.x0 = static_cast<int>(std::clamp(std::floor(x0 - marginPx), 0.0, double(width)));
+    box.x1 = static_cast<int>(std::clamp(std::ceil(x1 + marginPx), 0.0, double(width)));
+    box.y0 = static_cast<int>(std::clamp(std::floor(y0 - marginPx), 0.0, double(height)));
+    box.y1 = static_cast<int>(std::clamp(std::ceil(y1 + marginPx), 0.0, double(height)));
+    return box;
+}

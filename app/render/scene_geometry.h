@@ -95,6 +95,12 @@ struct BlockInstance {
 enum BlockStyle { kPatterned, kPlain, kOutlineOnly, kBlockStyleCount };
 enum BlockShape { kQuad, kPoint, kBlockShapeCount };
 
+// Framebuffer pixels [x0, x1) x [y0, y1), rows counted from the top.
+struct PixelBox {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool empty() const { return x1 <= x0 || y1 <= y0; }
+};
+
 struct SceneGeometry {
     ShapeBatch under;   // grid, trails (segments kTrailWidthPx wide)
     ShapeBatch momenta; // momentum arrows, over the blocks (shafts kMomentumShaftPx wide)
@@ -120,3 +126,10 @@ struct SceneGeometry {
     std::vector<OutlineOf> outlines_;
     const OutlineOf& outlineOf(const Color& fill, const Color& arena);
 };
+
+// A box holding every framebuffer pixel that drawing `geometry` through `t` into a width x height
+// framebuffer may touch (quads, point sprites with their 2 px of margin, triangles, and lines up
+// to `lineWidthPx` wide), `marginPx` more on every side, within the framebuffer; empty when
+// nothing is drawn.
+PixelBox drawnBox(const SceneGeometry& geometry, const ClipTransform& t, int width, int height,
+                  double lineWidthPx, double marginPx);

@@ -89,6 +89,7 @@ int runWindow(const Options& options, char** argv, int argc) {
         std::fprintf(stderr, "sandbox: shader error: %s\n", error.c_str());
         app.ui.messages.error = "Shader error: " + error;
     }
+    uiRendererPlanFrameBase(renderer); // windows' backgrounds from the frame's clear
     AudioOut audio;
     bool first = true;
     double realSeconds = 0.0;

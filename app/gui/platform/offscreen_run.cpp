@@ -556,6 +556,7 @@ int runOffscreen(const Options& options) {
         return 1;
     }
     const bool shadersOk = off.renderer.init(&error);
+    uiRendererPlanFrameBase(off.renderer); // windows' backgrounds from the frame's clear
     if (!shadersOk) {
         // Keep going: the panels still render and the picture shows what is missing; the exit
         // code says it failed.

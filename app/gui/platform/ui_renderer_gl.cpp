@@ -3,12 +3,15 @@
 #include "embedded_shaders.h"
 #include "gl_api.h"
 #include "gl_shader.h"
+#include "renderer.h"
 #include "ui_draw_runs.h"
+#include "ui_frame_base.h"
 
 #include <algorithm>
 #if defined(__GLIBC__)
 #include <malloc.h> // mallopt
 #endif
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -37,6 +40,16 @@ struct UiRenderer {
     std::vector<UiDrawRun> runs;
     std::vector<ImDrawVert> vertices;   // GL ES: every list's, uploaded at once
     std::vector<std::uint32_t> indices; // GL ES: every list's, into all the vertices
+    // The frame's base as planned (uiRendererPlanFrameBase), for the draw data it was planned
+    // on: which opaque fills find their colour already there (in the order of the fills).
+    const ImDrawData* plannedFor = nullptr;
+    std::vector<bool> fillSkipped;
+    std::vector<UiPaint> paints;
+    // The runs of every command drawn, worked out while planning, for the draw data
+    // `preparedFor`: command k's are planRuns[planCmdEnd[k - 1] .. planCmdEnd[k]).
+    const ImDrawData* preparedFor = nullptr;
+    std::vector<UiDrawRun> planRuns;
+    std::vector<std::size_t> planCmdEnd;
 };
 UiRenderer gUi;
 
@@ -195,17 +208,24 @@ struct ScissorBox {
     GLsizei width = 0, height = 0;
 };
 
-// The scissor box for a command: its clip rectangle in framebuffer pixels, set. False when
-// nothing of it is visible.
-bool scissorTo(const ImDrawCmd& cmd, const ImDrawData* data, int fbHeight, ScissorBox* box) {
+// The scissor box for a command: its clip rectangle in framebuffer pixels. False when nothing
+// of it is visible.
+bool clipBox(const ImDrawCmd& cmd, const ImDrawData* data, int fbHeight, ScissorBox* box) {
     const ImVec2 clipOffset = data->DisplayPos, clipScale = data->FramebufferScale;
     const float x0 = (cmd.ClipRect.x - clipOffset.x) * clipScale.x;
     const float y0 = (cmd.ClipRect.y - clipOffset.y) * clipScale.y;
     const float x1 = (cmd.ClipRect.z - clipOffset.x) * clipScale.x;
     const float y1 = (cmd.ClipRect.w - clipOffset.y) * clipScale.y;
     if (x1 <= x0 || y1 <= y0) return false;
-    const ScissorBox b{static_cast<GLint>(x0), static_cast<GLint>(fbHeight - y1),
-                       static_cast<GLsizei>(x1 - x0), static_cast<GLsizei>(y1 - y0)};
+    *box = ScissorBox{static_cast<GLint>(x0), static_cast<GLint>(fbHeight - y1),
+                      static_cast<GLsizei>(x1 - x0), static_cast<GLsizei>(y1 - y0)};
+    return true;
+}
+
+// The same, set as GL's scissor box.
+bool scissorTo(const ImDrawCmd& cmd, const ImDrawData* data, int fbHeight, ScissorBox* box) {
+    ScissorBox b;
+    if (!clipBox(cmd, data, fbHeight, &b)) return false;
     glScissor(b.x, b.y, b.width, b.height);
     if (box) *box = b;
     return true;
@@ -293,12 +313,30 @@ namespace {
 // llvmpipe a scissored clear costs next to nothing, a blended pixel 2 to 3.5 ns.
 constexpr int kMinClearedPixels = 4096;
 
+// A command's runs (ui_draw_runs.h): the font atlas's split into solid and textured runs and
+// opaque fills; any other texture's, one run.
+void commandRuns(const ImDrawList* list, const ImDrawCmd& cmd, const ImDrawData* data,
+                 std::vector<UiDrawRun>& runs) {
+    runs.clear();
+    if (textureName(cmd.GetTexID()) != gUi.fontTexture) {
+        runs.push_back({cmd.IdxOffset, cmd.ElemCount, false, {}, 0});
+        return;
+    }
+    const ImDrawVert* vertices = list->VtxBuffer.Data + cmd.VtxOffset;
+    const ImDrawIdx* indices = list->IdxBuffer.Data + cmd.IdxOffset;
+    splitIntoRuns(vertices, indices, cmd.IdxOffset, cmd.ElemCount,
+                  ImGui::GetIO().Fonts->TexUvWhitePixel, kMinSolidRunPixels, runs);
+    findOpaqueFills(vertices, indices, cmd.IdxOffset, data->DisplayPos, data->FramebufferScale,
+                    kMinClearedPixels, runs);
+}
+
 // An opaque fill (findOpaqueFills): its sure pixels within `scissor` cleared to its colour (the
 // colour its triangles give them: one colour, alpha 255, blended over anything), then its
 // triangles `draw`n under the scissor's bands around them (the fill's rounded corners and
 // anti-aliased-free edges); the command's scissor set again after.
 template <class Draw>
-void drawOpaqueFill(const UiDrawRun& run, const ScissorBox& scissor, int fbHeight, Draw draw) {
+void drawOpaqueFill(const UiDrawRun& run, const ScissorBox& scissor, int fbHeight, Draw draw,
+                    bool clear = true) {
     // The sure pixels in GL's rows (y up), clipped to the scissor.
     const GLint sx1 = scissor.x + scissor.width, sy1 = scissor.y + scissor.height;
     const GLint x0 = std::max(scissor.x, run.inside.x0), x1 = std::min(sx1, run.inside.x1);
@@ -308,12 +346,14 @@ void drawOpaqueFill(const UiDrawRun& run, const ScissorBox& scissor, int fbHeigh
         draw();
         return;
     }
-    const ImU32 c = run.color;
-    glClearColor(static_cast<float>(c >> IM_COL32_R_SHIFT & 0xFF) / 255.0f,
-                 static_cast<float>(c >> IM_COL32_G_SHIFT & 0xFF) / 255.0f,
-                 static_cast<float>(c >> IM_COL32_B_SHIFT & 0xFF) / 255.0f, 1.0f);
-    glScissor(x0, y0, x1 - x0, y1 - y0);
-    glClear(GL_COLOR_BUFFER_BIT);
+    if (clear) { // else the frame's base left its colour there (uiRendererPlanFrameBase)
+        const ImU32 c = run.color;
+        glClearColor(static_cast<float>(c >> IM_COL32_R_SHIFT & 0xFF) / 255.0f,
+                     static_cast<float>(c >> IM_COL32_G_SHIFT & 0xFF) / 255.0f,
+                     static_cast<float>(c >> IM_COL32_B_SHIFT & 0xFF) / 255.0f, 1.0f);
+        glScissor(x0, y0, x1 - x0, y1 - y0);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
     const ScissorBox bands[4] = {{scissor.x, y1, scissor.width, sy1 - y1},              // above
                                  {scissor.x, scissor.y, scissor.width, y0 - scissor.y}, // below
                                  {scissor.x, y0, x0 - scissor.x, y1 - y0},              // left
@@ -337,9 +377,12 @@ void uiRendererRender(const ImDrawData* data) {
 #if SANDBOX_GL_ES
     renderForWebGl(data, fbWidth, fbHeight);
 #else
-    const ImVec2 whiteUv = ImGui::GetIO().Fonts->TexUvWhitePixel;
     const GLenum indexType = sizeof(ImDrawIdx) == 2 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT;
     GLuint current = 0; // the program in use
+    const bool planned = gUi.plannedFor == data, prepared = gUi.preparedFor == data;
+    gUi.plannedFor = gUi.preparedFor = nullptr;
+    std::size_t drawnCmd = 0; // the commands drawn so far (the plan's order)
+    std::size_t fill = 0;     // the fills met so far (the plan's order)
     for (int n = 0; n < data->CmdListsCount; ++n) {
         const ImDrawList* list = data->CmdLists[n];
         glBufferData(GL_ARRAY_BUFFER,
@@ -358,18 +401,18 @@ void uiRendererRender(const ImDrawData* data) {
             if (!scissorTo(cmd, data, fbHeight, &scissor)) continue;
             glBindTexture(GL_TEXTURE_2D, textureName(cmd.GetTexID()));
 
-            gUi.runs.clear();
-            if (textureName(cmd.GetTexID()) == gUi.fontTexture) {
-                const ImDrawVert* vertices = list->VtxBuffer.Data + cmd.VtxOffset;
-                const ImDrawIdx* indices = list->IdxBuffer.Data + cmd.IdxOffset;
-                splitIntoRuns(vertices, indices, cmd.IdxOffset, cmd.ElemCount, whiteUv,
-                              kMinSolidRunPixels, gUi.runs);
-                findOpaqueFills(vertices, indices, cmd.IdxOffset, data->DisplayPos,
-                                data->FramebufferScale, kMinClearedPixels, gUi.runs);
+            const UiDrawRun *runs = nullptr, *runsEnd = nullptr;
+            if (prepared && drawnCmd < gUi.planCmdEnd.size()) { // as the plan worked them out
+                runs = gUi.planRuns.data() + (drawnCmd ? gUi.planCmdEnd[drawnCmd - 1] : 0);
+                runsEnd = gUi.planRuns.data() + gUi.planCmdEnd[drawnCmd];
             } else {
-                gUi.runs.push_back({cmd.IdxOffset, cmd.ElemCount, false, {}, 0});
+                commandRuns(list, cmd, data, gUi.runs);
+                runs = gUi.runs.data();
+                runsEnd = runs + gUi.runs.size();
             }
-            for (const UiDrawRun& run : gUi.runs) {
+            ++drawnCmd;
+            for (; runs != runsEnd; ++runs) {
+                const UiDrawRun& run = *runs;
                 const GLuint program = run.solid ? gUi.solid.program : gUi.textured.program;
                 if (program != current) glUseProgram(program);
                 current = program;
@@ -380,10 +423,14 @@ void uiRendererRender(const ImDrawData* data) {
                                              indexType, firstIndex,
                                              static_cast<GLint>(cmd.VtxOffset));
                 };
-                if (run.inside.empty())
+                if (run.inside.empty()) {
                     draw();
-                else
-                    drawOpaqueFill(run, scissor, fbHeight, draw);
+                } else {
+                    const bool skip =
+                        planned && fill < gUi.fillSkipped.size() && gUi.fillSkipped[fill];
+                    ++fill;
+                    drawOpaqueFill(run, scissor, fbHeight, draw, !skip);
+                }
             }
         }
     }
@@ -391,3 +438,101 @@ void uiRendererRender(const ImDrawData* data) {
     glBindVertexArray(0);
 #endif
 }
+
+#if !SANDBOX_GL_ES
+namespace {
+
+UiPixelRect clipRect(const UiPixelRect& a, const UiPixelRect& b) {
+    return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
+}
+
+// What each draw of `data` paints (UiPaint), in the order uiRendererRender draws them, with the
+// same runs; `fillPaint` gets, for each opaque fill run, its paint's index.
+void listPaints(const ImDrawData* data, int fbWidth, int fbHeight, std::vector<UiPaint>& paints,
+                std::vector<std::size_t>& fillPaint) {
+    const ImVec2 origin = data->DisplayPos, scale = data->FramebufferScale;
+    const UiPixelRect everywhere{0, 0, fbWidth, fbHeight};
+    for (int n = 0; n < data->CmdListsCount; ++n) {
+        const ImDrawList* list = data->CmdLists[n];
+        for (const ImDrawCmd& cmd : list->CmdBuffer) {
+            if (cmd.UserCallback) { // draws who knows what
+                paints.push_back({everywhere, {}, 0});
+                continue;
+            }
+            ScissorBox box;
+            if (!clipBox(cmd, data, fbHeight, &box)) continue;
+            const UiPixelRect clip{box.x, fbHeight - (box.y + box.height), box.x + box.width,
+                                   fbHeight - box.y};
+            const ImDrawVert* vertices = list->VtxBuffer.Data + cmd.VtxOffset;
+            commandRuns(list, cmd, data, gUi.runs);
+            gUi.planRuns.insert(gUi.planRuns.end(), gUi.runs.begin(), gUi.runs.end());
+            gUi.planCmdEnd.push_back(gUi.planRuns.size());
+            for (const UiDrawRun& run : gUi.runs) {
+                float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
+                const ImDrawIdx* idx = list->IdxBuffer.Data + run.firstIndex;
+                for (unsigned k = 0; k < run.indexCount; ++k) {
+                    const ImVec2 p = vertices[idx[k]].pos;
+                    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+                    y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+                }
+                UiPaint paint;
+                if (x0 <= x1 && y0 <= y1) // a pixel more on every side: surely all it touches
+                    paint.bounds = clipRect(
+                        clip, {static_cast<int>(std::floor((x0 - origin.x) * scale.x)) - 1,
+                               static_cast<int>(std::floor((y0 - origin.y) * scale.y)) - 1,
+                               static_cast<int>(std::ceil((x1 - origin.x) * scale.x)) + 1,
+                               static_cast<int>(std::ceil((y1 - origin.y) * scale.y)) + 1});
+                if (!run.inside.empty()) {
+                    fillPaint.push_back(paints.size());
+                    paint.inside = clipRect(clip, run.inside);
+                    paint.color = run.color;
+                }
+                paints.push_back(paint);
+            }
+        }
+    }
+}
+
+float channel(ImU32 c, int shift) {
+    return static_cast<float>(c >> shift & 0xFF) / 255.0f;
+}
+
+} // namespace
+
+void uiRendererPlanFrameBase(SceneRenderer& renderer) {
+    renderer.setFrameBasePlanner([](const PixelBox& sceneDrawn, const PixelBox& sceneCovered) {
+        FrameBase base;
+        const ImDrawData* data = ImGui::GetDrawData();
+        gUi.plannedFor = gUi.preparedFor = nullptr;
+        if (!data || !gUi.textured.program) return base;
+        const int fbWidth = static_cast<int>(data->DisplaySize.x * data->FramebufferScale.x);
+        const int fbHeight = static_cast<int>(data->DisplaySize.y * data->FramebufferScale.y);
+        if (fbWidth <= 0 || fbHeight <= 0) return base;
+        gUi.paints.clear();
+        gUi.planRuns.clear();
+        gUi.planCmdEnd.clear();
+        std::vector<std::size_t> fillPaint;
+        listPaints(data, fbWidth, fbHeight, gUi.paints, fillPaint);
+        gUi.preparedFor = data;
+        const UiFrameBase plan =
+            planFrameBase(gUi.paints, {sceneDrawn.x0, sceneDrawn.y0, sceneDrawn.x1, sceneDrawn.y1},
+                          {sceneCovered.x0, sceneCovered.y0, sceneCovered.x1, sceneCovered.y1},
+                          fbWidth, fbHeight);
+        if (!plan.planned) return base;
+        gUi.plannedFor = data;
+        gUi.fillSkipped.assign(fillPaint.size(), false);
+        for (std::size_t f = 0; f < fillPaint.size(); ++f)
+            gUi.fillSkipped[f] = plan.skip[fillPaint[f]];
+        base.planned = true;
+        base.clear[0] = channel(plan.clear, IM_COL32_R_SHIFT);
+        base.clear[1] = channel(plan.clear, IM_COL32_G_SHIFT);
+        base.clear[2] = channel(plan.clear, IM_COL32_B_SHIFT);
+        base.clear[3] = 1.0f;
+        for (const UiPixelRect& r : plan.background)
+            base.background.push_back({r.x0, r.y0, r.x1, r.y1});
+        return base;
+    });
+}
+#else
+void uiRendererPlanFrameBase(SceneRenderer&) {} // WebGL: a GPU pays little for a fill
+#endif

@@ -9,6 +9,8 @@
 
 #include <string>
 
+class SceneRenderer;
+
 bool uiRendererInit(std::string* error);
 void uiRendererShutdown();
 // Uploads the font atlas if it has none yet (the first frame, or after uiRendererFontsChanged).
@@ -16,3 +18,7 @@ void uiRendererNewFrame();
 // The font atlas was rebuilt (UI scale): upload it again at the next NewFrame.
 void uiRendererFontsChanged();
 void uiRendererRender(const ImDrawData* drawData);
+// Desktop GL: has `renderer` plan each frame's first paint around the windows' backgrounds in
+// ImGui's draw data of that frame (ui_frame_base.h), which uiRendererRender then follows: call
+// ImGui::Render before the scene is drawn, and uiRendererRender after it, every frame.
+void uiRendererPlanFrameBase(SceneRenderer& renderer);

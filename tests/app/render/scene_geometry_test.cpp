@@ -103,4 +103,42 @@ TEST(SceneGeometry, ASmallSceneKeepsWholeTrailsAndArrowHeads) {
     EXPECT_FLOAT_EQ(g.under.segmentVertices()[2 * 45 - 1].a, 0.75f / 46.0f);
 }
 
+// The box the scene draws in (the frame's base is planned around it): it holds every block,
+// sprite margin included, every arrow and trail with its line's width, and nothing far beyond.
+TEST(SceneGeometry, TheDrawnBoxHoldsEverythingDrawn) {
+    Fixture f(gas(4, 2));
+    SceneGeometry g;
+    g.build(f.view, 64.0);
+    const ClipTransform t = f.camera.clipTransform(1280.0, 720.0);
+    const PixelBox box = drawnBox(g, t, 1280, 720, 7.0, 2.0);
+    ASSERT_FALSE(box.empty());
+    // The walls (quads just outside the 20 m x 12 m bounds) are drawn: their pixels are inside.
+    const Vec2 lo = f.camera.worldToScreen(f.world.bounds.min);
+    const Vec2 hi = f.camera.worldToScreen(f.world.bounds.max);
+    const double wall = 10.0; // px, scene_geometry.cpp
+    EXPECT_LE(box.x0, std::min(lo.x, hi.x) - wall);
+    EXPECT_GE(box.x1, std::max(lo.x, hi.x) + wall);
+    EXPECT_LE(box.y0, std::min(lo.y, hi.y) - wall);
+    EXPECT_GE(box.y1, std::max(lo.y, hi.y) + wall);
+    // ...and not much more: the margin asked for, a pixel for rounding.
+    EXPECT_GE(box.x0, std::min(lo.x, hi.x) - wall - 4.0);
+    EXPECT_LE(box.y1, std::max(lo.y, hi.y) + wall + 4.0);
+    // A block far outside the walls, drawn as a quad, widens it; one beyond the frame is cut.
+    g.blocks[kPlain][kQuad].push_back({{30.0f, 6.0f, 0.5f, 0.5f}, {}, {}, {1.5f, 0.0f}});
+    const PixelBox wider = drawnBox(g, t, 1280, 720, 7.0, 2.0);
+    const Vec2 far = f.camera.worldToScreen({30.5, 6.0});
+    EXPECT_GE(wider.x1, std::min(1280.0, far.x));
+    EXPECT_LE(wider.x1, 1280);
+    // A trail segment's line width counts on every side.
+    SceneGeometry lines;
+    lines.under.segment({10.0, 6.0}, {10.0, 6.0}, Color{});
+    const PixelBox dot = drawnBox(lines, t, 1280, 720, 7.0, 0.0);
+    const Vec2 c = f.camera.worldToScreen({10.0, 6.0});
+    EXPECT_LE(dot.x0, c.x - 3.5);
+    EXPECT_GE(dot.x1, c.x + 3.5);
+    EXPECT_LE(dot.x1 - dot.x0, 9);
+    // Nothing drawn: an empty box.
+    EXPECT_TRUE(drawnBox(SceneGeometry{}, t, 1280, 720, 7.0, 2.0).empty());
+}
+
 } // namespace
