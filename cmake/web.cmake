@@ -28,8 +28,9 @@ add_link_options(-fwasm-exceptions)
 add_compile_options(-mbulk-memory)
 add_link_options(-mbulk-memory)
 # WebAssembly SIMD (-msimd128): clang's vectoriser works four floats or two doubles at a time
-# (in the profile: the label placement's rectangle tests most). With bulk memory about a sixth of
-# gas_500's frame with every overlay (tests/bench/web_frame_bench.py; -flto added nothing more).
+# (in the profile: the label placement's rectangle tests most). With bulk memory gas_500's frame
+# with every overlay takes 0.73 to 0.89 of the time (five sittings of tests/bench/
+# web_frame_bench.py under load; -flto added nothing more).
 # The same IEEE operations on each lane, no fused multiply-add: the same numbers and pixels.
 # Browsers run it since Chrome 91, Firefox 89 and Safari 16.4; -DSANDBOX_WEB_SIMD=OFF
 # (scripts/web.sh build -DSANDBOX_WEB_SIMD=OFF) builds for an older Safari.
