@@ -18,6 +18,27 @@
 # Chrome 95, Firefox 100 and Safari 15.2.
 add_compile_options(-fwasm-exceptions)
 add_link_options(-fwasm-exceptions)
+# WebAssembly's bulk memory (-mbulk-memory): a memcpy or memset of the app's code is one
+# memory.copy / memory.fill instruction; without it emscripten's memcpy sends every copy of 512
+# bytes or more out to JavaScript (emscripten_memcpy_big: the frame's vertex and index arrays).
+# Browsers run it since Chrome 75, Firefox 79 and Safari 15. Clang 14 keeps thread_local storage
+# when bulk memory is on and the linker then asks for atomics (threads): the two files with a
+# thread_local (one thread here, so it is an ordinary static) are compiled without it
+# (app/gui/platform/web/web.cmake); a new thread_local elsewhere fails the link and goes there too.
+add_compile_options(-mbulk-memory)
+add_link_options(-mbulk-memory)
+# WebAssembly SIMD (-msimd128): clang's vectoriser works four floats or two doubles at a time
+# (in the profile: the label placement's rectangle tests most). With bulk memory gas_500's frame
+# with every overlay takes 0.73 to 0.89 of the time (five sittings of tests/bench/
+# web_frame_bench.py under load; -flto added nothing more).
+# The same IEEE operations on each lane, no fused multiply-add: the same numbers and pixels.
+# Browsers run it since Chrome 91, Firefox 89 and Safari 16.4; -DSANDBOX_WEB_SIMD=OFF
+# (scripts/web.sh build -DSANDBOX_WEB_SIMD=OFF) builds for an older Safari.
+option(SANDBOX_WEB_SIMD "WebAssembly SIMD (-msimd128): Safari 16.4 or newer" ON)
+if(SANDBOX_WEB_SIMD)
+  add_compile_options(-msimd128)
+  add_link_options(-msimd128)
+endif()
 
 set(SANDBOX_IMGUI_SOURCE_DIR "" CACHE PATH "Dear ImGui 1.86 sources (apt-get source imgui)")
 if(NOT EXISTS "${SANDBOX_IMGUI_SOURCE_DIR}/imgui.cpp")

@@ -14,6 +14,10 @@ get_filename_component(SHIPPED_SCENES ${CMAKE_CURRENT_SOURCE_DIR}/../scenes ABSO
 get_filename_component(SHIPPED_LESSONS ${PROJECT_SOURCE_DIR}/lessons ABSOLUTE)
 file(GLOB SHIPPED_SCENE_FILES CONFIGURE_DEPENDS ${SHIPPED_SCENES}/*.json ${SHIPPED_LESSONS}/*.json)
 
+# The files with a thread_local, without bulk memory (cmake/web.cmake says why).
+set_source_files_properties(ui/label_placement.cpp platform/ui_draw_runs.cpp PROPERTIES
+                            COMPILE_OPTIONS -mno-bulk-memory)
+
 # The main and the canvas, compiled once for both.
 add_library(sandbox_web_main OBJECT platform/main_web.cpp platform/canvas_web.cpp
                                     platform/web/control_probe.cpp ${AUDIO_DIR}/audio_out.cpp)
