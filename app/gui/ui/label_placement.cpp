@@ -62,6 +62,29 @@ void band(const Taken& near, float y, float height, Band& out) {
     keep(near.texts, out.texts);
 }
 
+// The blocks' overlap plus ten times the texts' (a hidden text costs more than a hidden block),
+// in their order; it stops once the sum reaches `least` (no overlap is negative, so a spot that
+// stops there cannot be the best).
+template <class Rects, class Overlap>
+double weightedCover(const Rects& blocks, const Rects& texts, Overlap overlap, double least) {
+    double onBlocks = 0.0;
+    for (const auto& p : blocks) {
+        const double a = overlap(p);
+        if (a == 0.0) continue;
+        onBlocks += a;
+        if (onBlocks >= least) return onBlocks;
+    }
+    double onTexts = 0.0;
+    for (const auto& p : texts) {
+        const double a = overlap(p);
+        if (a == 0.0) continue;
+        onTexts += a;
+        const double sum = onBlocks + 10.0 * onTexts;
+        if (sum >= least) return sum;
+    }
+    return onBlocks + 10.0 * onTexts;
+}
+
 // coveredAt, but once what it has summed reaches `least` it stops there and returns that sum: the
 // whole is no less (every area added is >= 0, and a sum of doubles never falls as a term >= 0 is
 // added), so a search after the spot covering the least, which keeps a spot only where it covers
@@ -77,22 +100,7 @@ double coveredUnder(const Taken& placed, const ScreenRect& view, float x, float 
         const double h = std::min(r.y + r.height, p.y + p.height) - std::max(r.y, p.y);
         return w > 0.0 && h > 0.0 ? w * h : 0.0;
     };
-    double blocks = 0.0;
-    for (const ScreenRect& p : placed.blocks) {
-        const double a = overlap(p);
-        if (a == 0.0) continue;
-        blocks += a;
-        if (blocks >= least) return blocks;
-    }
-    double texts = 0.0;
-    for (const ScreenRect& p : placed.texts) {
-        const double a = overlap(p);
-        if (a == 0.0) continue;
-        texts += a;
-        const double sum = blocks + 10.0 * texts;
-        if (sum >= least) return sum;
-    }
-    return blocks + 10.0 * texts;
+    return weightedCover(placed.blocks, placed.texts, overlap, least);
 }
 
 // coveredUnder over a band of its text's rows (band(near, y, size.y, ...)): the same sums.
@@ -107,22 +115,7 @@ double coveredInBand(const Band& band, const ScreenRect& view, float x, float y,
         const double w = std::min(right, p.right) - std::max(left, p.left);
         return w > 0.0 && p.h > 0.0 ? w * p.h : 0.0;
     };
-    double blocks = 0.0;
-    for (const Side& p : band.blocks) {
-        const double a = overlap(p);
-        if (a == 0.0) continue;
-        blocks += a;
-        if (blocks >= least) return blocks;
-    }
-    double texts = 0.0;
-    for (const Side& p : band.texts) {
-        const double a = overlap(p);
-        if (a == 0.0) continue;
-        texts += a;
-        const double sum = blocks + 10.0 * texts;
-        if (sum >= least) return sum;
-    }
-    return blocks + 10.0 * texts;
+    return weightedCover(band.blocks, band.texts, overlap, least);
 }
 
 // True when every rectangle meeting `inner` meets `outer` (meeting's test): `inner` lies in
