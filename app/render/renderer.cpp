@@ -215,7 +215,9 @@ void SceneRenderer::paintBase(const SceneView& view, const PixelBox& drawn,
                               const PixelBox& covered) {
     const Color bg = view.theme->background;
     glDisable(GL_SCISSOR_TEST);
-    const FrameBase base = planner_ ? planner_(drawn, covered) : FrameBase{};
+    const FrameBase base =
+        planner_ ? planner_(view.framebufferWidth, view.framebufferHeight, drawn, covered)
+                 : FrameBase{};
     if (!base.planned) {
         glClearColor(bg.r, bg.g, bg.b, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
@@ -238,7 +240,7 @@ void SceneRenderer::draw(const SceneView& view) {
         paintBase(view, PixelBox{}, PixelBox{});
         return;
     }
-    // The arena (inside the bounds) by a scissored clear: far cheaper than a quad on llvmpipe.
+    // The arena (inside the bounds) by a scissored clear (on llvmpipe a quad Mesa draws).
     // The viewport as the caller set it (not asked of GL: in WebGL a query waits for the GPU
     // process).
     const GLint vp[4] = {0, 0, view.framebufferWidth, view.framebufferHeight};

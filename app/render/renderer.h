@@ -22,7 +22,8 @@ struct FrameBase {
 // Given the framebuffer pixels the scene draws in besides its background, and those it paints
 // opaque (its arena), in rows from the top.
 using FrameBasePlanner =
-    std::function<FrameBase(const PixelBox& sceneDrawn, const PixelBox& sceneCovered)>;
+    std::function<FrameBase(int framebufferWidth, int framebufferHeight, const PixelBox& sceneDrawn,
+                            const PixelBox& sceneCovered)>;
 
 class SceneRenderer {
   public:

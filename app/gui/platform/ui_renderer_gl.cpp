@@ -197,6 +197,9 @@ void uiRendererFontsChanged() {
 }
 
 void uiRendererNewFrame() {
+    // A plan holds for the frame it was made in only (the draw data is the same object every
+    // frame).
+    gUi.plannedFor = gUi.preparedFor = nullptr;
     if (gUi.fontsChanged && gUi.textured.program) uploadFontTexture();
 }
 
@@ -310,7 +313,8 @@ void renderForWebGl(const ImDrawData* data, int fbWidth, int fbHeight) {
 namespace {
 
 // An opaque fill of at least this many sure pixels is cleared there rather than rasterised: on
-// llvmpipe a scissored clear costs next to nothing, a blended pixel 2 to 3.5 ns.
+// llvmpipe a scissored clear is an unblended quad Mesa draws, cheaper than the fill's blended
+// triangles (a blended pixel 2 to 3.5 ns).
 constexpr int kMinClearedPixels = 4096;
 
 // A command's runs (ui_draw_runs.h): the font atlas's split into solid and textured runs and
@@ -476,12 +480,24 @@ void listPaints(const ImDrawData* data, int fbWidth, int fbHeight, std::vector<U
                     y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
                 }
                 UiPaint paint;
-                if (x0 <= x1 && y0 <= y1) // a pixel more on every side: surely all it touches
+                // A pixel more on every side: surely all it touches. Clamped to the clip (and a
+                // pixel beyond) before becoming whole numbers: a vertex far off screen (a line
+                // to a block at 1e9 m/s) must not overflow into an empty box; NaN: everywhere.
+                const auto px = [](float v, int lo, int hi, bool up) {
+                    if (!(v == v)) return up ? hi : lo;
+                    const double c =
+                        std::clamp(static_cast<double>(up ? std::ceil(v) : std::floor(v)),
+                                   static_cast<double>(lo), static_cast<double>(hi));
+                    return static_cast<int>(c) + (up ? 1 : -1);
+                };
+                if (x0 <= x1 && y0 <= y1)
                     paint.bounds = clipRect(
-                        clip, {static_cast<int>(std::floor((x0 - origin.x) * scale.x)) - 1,
-                               static_cast<int>(std::floor((y0 - origin.y) * scale.y)) - 1,
-                               static_cast<int>(std::ceil((x1 - origin.x) * scale.x)) + 1,
-                               static_cast<int>(std::ceil((y1 - origin.y) * scale.y)) + 1});
+                        clip, {px((x0 - origin.x) * scale.x, clip.x0 - 1, clip.x1 + 1, false),
+                               px((y0 - origin.y) * scale.y, clip.y0 - 1, clip.y1 + 1, false),
+                               px((x1 - origin.x) * scale.x, clip.x0 - 1, clip.x1 + 1, true),
+                               px((y1 - origin.y) * scale.y, clip.y0 - 1, clip.y1 + 1, true)});
+                else if (run.indexCount > 0) // no finite vertex: anywhere in the clip
+                    paint.bounds = clip;
                 if (!run.inside.empty()) {
                     fillPaint.push_back(paints.size());
                     paint.inside = clipRect(clip, run.inside);
@@ -500,14 +516,18 @@ float channel(ImU32 c, int shift) {
 } // namespace
 
 void uiRendererPlanFrameBase(SceneRenderer& renderer) {
-    renderer.setFrameBasePlanner([](const PixelBox& sceneDrawn, const PixelBox& sceneCovered) {
+    renderer.setFrameBasePlanner([](int sceneWidth, int sceneHeight, const PixelBox& sceneDrawn,
+                                    const PixelBox& sceneCovered) {
         FrameBase base;
         const ImDrawData* data = ImGui::GetDrawData();
         gUi.plannedFor = gUi.preparedFor = nullptr;
         if (!data || !gUi.textured.program) return base;
         const int fbWidth = static_cast<int>(data->DisplaySize.x * data->FramebufferScale.x);
         const int fbHeight = static_cast<int>(data->DisplaySize.y * data->FramebufferScale.y);
-        if (fbWidth <= 0 || fbHeight <= 0) return base;
+        // The UI's framebuffer is the scene's (a window being resized may give them apart for
+        // a frame: then no plan, the frame drawn as before).
+        if (fbWidth <= 0 || fbHeight <= 0 || fbWidth != sceneWidth || fbHeight != sceneHeight)
+            return base;
         gUi.paints.clear();
         gUi.planRuns.clear();
         gUi.planCmdEnd.clear();
