@@ -9,10 +9,16 @@
 
 #include <cfloat>
 #include <cstring>
+#include <utility>
 
 bool offscreenInit(OffscreenOsmesa& o, int width, int height, std::string* error) {
+    // BGRA, a window's usual order, as the window's llvmpipe gets it: Mesa 22.3's llvmpipe keeps
+    // its window-framebuffer paths (in Mesa's source: axis-aligned quads set up as rectangles,
+    // no x/y clipping inside a guard band) for B8G8R8A8 without depth; the same pixels for a few
+    // per cent less CPU a frame (docs/performance.md). The PNG's RGBA is made when the pixels are
+    // read (offscreenPixelsTopDown).
     const int attributes[] = {OSMESA_FORMAT,
-                              OSMESA_RGBA,
+                              OSMESA_BGRA,
                               OSMESA_DEPTH_BITS,
                               0,
                               OSMESA_STENCIL_BITS,
@@ -76,7 +82,10 @@ std::vector<std::uint8_t> offscreenPixelsTopDown(const OffscreenOsmesa& o) {
         const std::size_t src = static_cast<std::size_t>(o.height - 1 - y) * row;
         std::memcpy(out.data() + static_cast<std::size_t>(y) * row, o.buffer.data() + src, row);
     }
-    for (std::size_t i = 3; i < out.size(); i += 4) out[i] = 255; // opaque PNGs
+    for (std::size_t i = 0; i < out.size(); i += 4) {
+        std::swap(out[i], out[i + 2]); // BGRA to RGBA
+        out[i + 3] = 255;              // opaque PNGs
+    }
     return out;
 }
 

@@ -9,7 +9,7 @@
 
 struct OffscreenOsmesa {
     void* context = nullptr;          // OSMesaContext
-    std::vector<std::uint8_t> buffer; // RGBA, bottom row first (GL's order)
+    std::vector<std::uint8_t> buffer; // BGRA, bottom row first (GL's order)
     int width = 0;
     int height = 0;
 };
