@@ -1,8 +1,9 @@
 // The searches for a free spot (label_placement.h, placeCaption in dock_layout.h) and the strips
-// they look through (rect_strips.h), issue 42: faster, and the same to the last bit. Each is
-// checked against the plain loops it replaced (kept here as they were, namespace before) on
+// they look through (rect_strips.h, cover_grid.h), issue 42: faster, and the same to the last bit.
+// Each is checked against the plain loops it replaced (kept here as they were, namespace before) on
 // random screens: a thousand blocks and labels, spots crowded and free; and the strips against
 // looking at every rectangle.
+#include "cover_grid.h"
 #include "dock_layout.h"
 #include "label_placement.h"
 #include "rect_strips.h"
@@ -332,6 +333,112 @@ TEST(PlaceCaption, SpotIsThatOfThePlainSearch) {
         EXPECT_EQ(got.y, want.y) << "trial " << trial;
         EXPECT_EQ(got.width, want.width);
         EXPECT_EQ(got.height, want.height);
+    }
+}
+
+// placeCaption through the grid of its candidates' edges (cover_grid.h) finds the plain loops'
+// spot on screens made to trip it: edges anywhere (not quarters: the sums' last bits differ with
+// their order), blocks on a lattice (many candidates covering the same, to the last bit or
+// nearly), a badge across the top and the axis numbers' bands (sums equal along a row), texts
+// few (candidates beside each) and many, plates wider than the scene, and free spots.
+TEST(PlaceCaption, SpotIsThatOfThePlainSearchOnTrickyScreens) {
+    std::mt19937 random(23);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int hidesNone = 0, hidesSome = 0;
+    for (int trial = 0; trial < 160; ++trial) {
+        const ScreenRect scene{static_cast<double>(random() % 300), 0.0,
+                               400.0 + static_cast<double>(random() % 1500),
+                               300.0 + static_cast<double>(random() % 800)};
+        const ScreenRect world{scene.x + 30.0 + unit(random) * 60.0, 50.0 + unit(random) * 20.0,
+                               scene.width - 100.0 - unit(random) * 40.0,
+                               scene.height - 120.0 - unit(random) * 30.0};
+        std::vector<ScreenRect> avoid = {
+            {scene.x, scene.y, scene.width, 37.5},
+            {world.x - 15.0, world.y + world.height, world.width + 60.0, 24.0},
+            {world.x - 60.0, world.y - 15.0, 60.0, world.height + 30.0}};
+        const int kind = trial % 4;
+        const int blocks = kind == 3 ? 40 + static_cast<int>(random() % 40)
+                                     : 100 + static_cast<int>(random() % 1200);
+        const double side = 8.0 + unit(random) * 30.0;
+        for (int i = 0; i < blocks; ++i) {
+            if (kind == 0) { // a lattice of equal blocks, whole pixels
+                const int across = 1 + static_cast<int>(world.width / (side * 1.5));
+                avoid.push_back({std::round(world.x) + (i % across) * std::round(side * 1.5),
+                                 std::round(world.y) + (i / across) * std::round(side * 1.5),
+                                 std::round(side), std::round(side)});
+            } else { // anywhere in the world, any size
+                avoid.push_back({world.x + unit(random) * world.width,
+                                 world.y + unit(random) * world.height, 2.0 + unit(random) * side,
+                                 2.0 + unit(random) * side});
+            }
+        }
+        std::vector<ScreenRect> texts;
+        const int labels =
+            trial % 3 == 0 ? static_cast<int>(random() % 30) : static_cast<int>(random() % 200);
+        for (int i = 0; i < labels; ++i)
+            texts.push_back({scene.x + unit(random) * scene.width,
+                             scene.y + unit(random) * scene.height, 20.0 + unit(random) * 120.0,
+                             kind == 1 ? 13.0 : 13.0 + unit(random)});
+        const double inset = trial % 5 == 0 ? 15.0 : 10.0;
+        const double width = trial % 17 == 0 ? scene.width + 5.0 : 40.0 + unit(random) * 500.0;
+        const double height =
+            trial % 7 == 0 ? 20.0 + std::round(unit(random) * 100.0) : 20.0 + unit(random) * 300.0;
+        const ScreenRect want =
+            before::placeCaption(width, height, scene, world, avoid, inset, texts);
+        const ScreenRect got = placeCaption(width, height, scene, world, avoid, inset, texts);
+        EXPECT_EQ(got.x, want.x) << "trial " << trial;
+        EXPECT_EQ(got.y, want.y) << "trial " << trial;
+        EXPECT_EQ(got.width, want.width) << "trial " << trial;
+        EXPECT_EQ(got.height, want.height) << "trial " << trial;
+        bool hides = false;
+        for (const ScreenRect& t : texts) hides = hides || rectsOverlap(want, t);
+        (hides ? hidesSome : hidesNone) += 1;
+    }
+    EXPECT_GT(hidesSome, 20); // both kinds of spot were searched for
+    EXPECT_GT(hidesNone, 20);
+}
+
+// The grid's sums: whether a rectangle covers anything, exactly; how much, within error().
+TEST(CoverGrid, TouchesExactlyAndAreaWithinItsError) {
+    std::mt19937 random(31);
+    std::uniform_real_distribution<double> at(-50.0, 650.0), size(-3.0, 90.0);
+    for (int trial = 0; trial < 60; ++trial) {
+        std::vector<ScreenRect> rects;
+        const int n = static_cast<int>(random() % 400);
+        for (int i = 0; i < n; ++i) {
+            const bool whole = trial % 2 == 0; // edges meeting the grid's exactly
+            const auto v = [&](double d) { return whole ? std::round(d / 10.0) * 10.0 : d; };
+            rects.push_back({v(at(random)), v(at(random)), v(size(random)), v(size(random))});
+        }
+        std::vector<double> xs, ys;
+        for (int i = 0; i < 2 + static_cast<int>(random() % 30); ++i)
+            xs.push_back(std::round(at(random) / 10.0) * 10.0 + (trial % 3 == 0 ? 0.25 : 0.0));
+        for (int i = 0; i < 2 + static_cast<int>(random() % 30); ++i)
+            ys.push_back(std::round(at(random) / 10.0) * 10.0);
+        for (std::vector<double>* e : {&xs, &ys}) {
+            std::sort(e->begin(), e->end());
+            e->erase(std::unique(e->begin(), e->end()), e->end());
+        }
+        if (xs.size() < 2 || ys.size() < 2) continue;
+        CoverGrid grid;
+        grid.build(xs, ys, rects);
+        for (int q = 0; q < 50; ++q) {
+            std::size_t i0 = random() % xs.size(), i1 = random() % xs.size();
+            std::size_t j0 = random() % ys.size(), j1 = random() % ys.size();
+            if (i0 > i1) std::swap(i0, i1);
+            if (j0 > j1) std::swap(j0, j1);
+            const ScreenRect r = spanning(xs[i0], ys[j0], xs[i1], ys[j1]);
+            double sum = 0.0;
+            int touching = 0;
+            for (const ScreenRect& a : rects) {
+                const double area = before::overlapArea(r, a);
+                sum += area;
+                touching += area > 0.0 ? 1 : 0;
+            }
+            EXPECT_EQ(grid.touches(i0, j0, i1, j1) == 0, touching == 0) << "trial " << trial;
+            EXPECT_LE(std::abs(grid.area(i0, j0, i1, j1) - sum), grid.error()) << "trial " << trial;
+            EXPECT_LT(grid.error(), 1e-4); // px²: a bound that tells sums apart
+        }
     }
 }
 
