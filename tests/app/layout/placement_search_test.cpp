@@ -316,6 +316,103 @@ TEST(LabelPlacement, SpotsAreThoseOfThePlainSearch) {
     EXPECT_GT(free, 200);
 }
 
+// freeSpot and freeRow through the grids of their tries' edges (cover_grid.h) find the plain
+// loops' spots on screens made to trip them: edges anywhere (a sum's last bits then differ with
+// its order), blocks on a lattice (many tries covering the same), and labels of any width.
+TEST(LabelPlacement, SpotsAreThoseOfThePlainSearchOnTrickyScreens) {
+    std::mt19937 random(41);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int crowded = 0, free = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        Screen s;
+        const bool lattice = trial % 2 == 0;
+        const double side = 6.0 + unit(random) * 30.0;
+        const int blocks = 200 + static_cast<int>(random() % 1000);
+        for (int i = 0; i < blocks; ++i) {
+            if (lattice) {
+                const int across = static_cast<int>(1280.0 / (side * 1.5));
+                s.taken.blocks.push_back({(i % across) * std::round(side * 1.5),
+                                          20.0 + (i / across) * std::round(side * 1.5),
+                                          std::round(side), std::round(side)});
+            } else {
+                s.taken.blocks.push_back({unit(random) * 1300.0 - 20.0, unit(random) * 760.0,
+                                          2.0 + unit(random) * side, 2.0 + unit(random) * side});
+            }
+        }
+        for (int i = 0; i < static_cast<int>(random() % 80); ++i)
+            s.taken.texts.push_back({unit(random) * 1280.0, unit(random) * 740.0,
+                                     20.0 + unit(random) * 120.0,
+                                     13.0 + (lattice ? 0.0 : unit(random))});
+        const RectStrips rows = blockRows(s.taken, s.view);
+        std::uniform_real_distribution<float> x(-20.0f, 1280.0f), y(0.0f, 760.0f);
+        for (int q = 0; q < 30; ++q) {
+            const ImVec2 ts(20.0f + static_cast<float>(unit(random)) * 140.0f,
+                            lattice ? 13.0f : 13.0f + static_cast<float>(unit(random)));
+            const float qx = lattice ? std::round(x(random)) : x(random), qy = y(random);
+            const float below = qy + static_cast<float>(random() % 40);
+            const ImVec2 spot = before::freeSpot(s.taken, s.view, qx, qy, below, ts, ts.y);
+            const ImVec2 got = freeSpot(s.taken, s.view, qx, qy, below, ts, ts.y);
+            const ImVec2 fast = freeSpot(s.taken, s.view, qx, qy, below, ts, ts.y, &rows);
+            EXPECT_EQ(got.x, spot.x) << "trial " << trial << " query " << q;
+            EXPECT_EQ(got.y, spot.y) << "trial " << trial << " query " << q;
+            EXPECT_EQ(fast.x, spot.x) << "trial " << trial << " query " << q;
+            EXPECT_EQ(fast.y, spot.y) << "trial " << trial << " query " << q;
+            const ImVec2 want = before::freeRow(s.taken, s.view, qx, qy, ts);
+            const ImVec2 row = freeRow(s.taken, s.view, qx, qy, ts, &rows);
+            EXPECT_EQ(row.x, want.x) << "trial " << trial << " query " << q;
+            EXPECT_EQ(row.y, want.y) << "trial " << trial << " query " << q;
+            const bool isFree =
+                before::coveredAt(s.taken, s.view, spot.x, spot.y, ts, ts.y * 0.5f) == 0.0;
+            (isFree ? free : crowded) += 1;
+        }
+    }
+    EXPECT_GT(crowded, 100); // both kinds of spot were searched for
+    EXPECT_GT(free, 100);
+}
+
+// Mirror images: blocks and texts placed in pairs mirrored about the middle of a label's first
+// try, so that the tries to the right and to the left cover the same area but for the last bits
+// of their sums (the mirrored edges are rounded, the sums taken in another order): freeSpot picks
+// between such near twins as the plain loop does, by its sums to the bit.
+TEST(LabelPlacement, MirroredTwinsPickedByTheSumsToTheBit) {
+    std::mt19937 random(43);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int pickedRight = 0, pickedLeft = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        Screen s;
+        const ImVec2 ts(30.0f + static_cast<float>(unit(random)) * 80.0f,
+                        12.0f + static_cast<float>(unit(random)) * 4.0f);
+        const float qx = 400.0f + static_cast<float>(unit(random)) * 300.0f;
+        const float qy = 200.0f + static_cast<float>(unit(random)) * 300.0f;
+        const double middle = static_cast<double>(qx) + ts.x * 0.5;
+        std::vector<ScreenRect> right, left;
+        const int n = 150 + static_cast<int>(random() % 300);
+        for (int i = 0; i < n; ++i) {
+            const ScreenRect r{middle + unit(random) * 4.0 * ts.x,
+                               qy - 8.0 * ts.y + unit(random) * 16.0 * ts.y,
+                               1.0 + unit(random) * ts.x, 1.0 + unit(random) * ts.y};
+            right.push_back(r);
+            left.push_back({2.0 * middle - (r.x + r.width), r.y, r.width, r.height});
+        }
+        std::shuffle(left.begin(), left.end(), random);
+        // Over the middle column (the first tries), wider than a label: the twins cover less.
+        s.taken.blocks.push_back({middle - ts.x * 0.75, qy - 8.0 * ts.y, ts.x * 1.5, 17.0 * ts.y});
+        const bool asTexts = trial % 3 == 0;
+        for (const std::vector<ScreenRect>* half : {&right, &left})
+            for (const ScreenRect& r : *half)
+                (asTexts && &r - half->data() < n / 3 ? s.taken.texts : s.taken.blocks)
+                    .push_back(r);
+        const RectStrips rows = blockRows(s.taken, s.view);
+        const ImVec2 want = before::freeSpot(s.taken, s.view, qx, qy, qy, ts, ts.y);
+        const ImVec2 got = freeSpot(s.taken, s.view, qx, qy, qy, ts, ts.y, &rows);
+        EXPECT_EQ(got.x, want.x) << "trial " << trial;
+        EXPECT_EQ(got.y, want.y) << "trial " << trial;
+        (want.x > qx ? pickedRight : pickedLeft) += want.x != qx ? 1 : 0;
+    }
+    EXPECT_GT(pickedRight, 20); // the twins were weighed, either way
+    EXPECT_GT(pickedLeft, 20);
+}
+
 // placeCaption through the rows finds the plain loops' spot, over a thousand blocks and few.
 TEST(PlaceCaption, SpotIsThatOfThePlainSearch) {
     std::mt19937 random(5);
