@@ -1,13 +1,11 @@
 // Where the scene's texts go (label_placement.h).
 #include "label_placement.h"
 
-#include "cover_grid.h"
 #include "overlay_window.h"
 #include "placement.h"
 #include "scene_geometry.h"
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
 
 namespace {
@@ -105,16 +103,12 @@ double coveredUnder(const Taken& placed, const ScreenRect& view, float x, float 
     return weightedCover(placed.blocks, placed.texts, overlap, least);
 }
 
-// True when a text at (x, y) of `size` lies in `view` (coveredUnder's test).
-bool inView(const ScreenRect& view, float x, float y, ImVec2 size) {
-    return !(x < view.x || y < view.y || x + size.x > view.x + view.width ||
-             y + size.y > view.y + view.height);
-}
-
 // coveredUnder over a band of its text's rows (band(near, y, size.y, ...)): the same sums.
 double coveredInBand(const Band& band, const ScreenRect& view, float x, float y, ImVec2 size,
                      float gap, double least) {
-    if (!inView(view, x, y, size)) return INFINITY;
+    if (x < view.x || y < view.y || x + size.x > view.x + view.width ||
+        y + size.y > view.y + view.height)
+        return INFINITY;
     const ScreenRect r = spanning(x - gap, y, x + size.x + gap, y + size.y);
     const double left = r.x, right = r.x + r.width;
     const auto overlap = [left, right](const Side& p) {
@@ -142,85 +136,6 @@ ScreenRect spotRegion(float x, float above, float below, ImVec2 size, float line
                     std::max(above, below + 5.0f * line) + size.y + 1.0f);
 }
 
-// True when a number is finite and within a billion (px): no sum of areas overflows, and no area
-// of rectangles sharing some of their width and height rounds to 0.
-bool ordinary(double v) {
-    return std::abs(v) <= 1e9;
-}
-bool ordinary(const ScreenRect& r) {
-    return ordinary(r.x) && ordinary(r.y) && ordinary(r.width) && ordinary(r.height);
-}
-bool ordinary(const std::vector<ScreenRect>& list) {
-    return std::all_of(list.begin(), list.end(), [](const ScreenRect& r) { return ordinary(r); });
-}
-
-// One of spotAmong's tries: its top-left corner and its row.
-struct Try {
-    float x, y;
-    int k, side;
-};
-
-// Which of `tries` (in view, else none) spotAmong keeps, found through grids of their edges
-// (cover_grid.h, issue 42): the first covering nothing (the grids know that exactly); else the
-// first covering the least, its sum taken by `exact` (coveredInBand's, to the bit) only for the
-// tries whose estimate is within the grids' error of the least estimate (the others cover
-// more). Returns -1 where no try is in view.
-template <class Exact>
-int throughGrids(const std::vector<Try>& tries, const Taken& near, const ScreenRect& view,
-                 ImVec2 size, float gap, Exact exact) {
-    std::vector<ScreenRect> sides(tries.size());
-    std::vector<double> xs, ys;
-    for (std::size_t i = 0; i < tries.size(); ++i) {
-        // The edges as coveredInBand and band work them out.
-        const Try& t = tries[i];
-        sides[i] = spanning(t.x - gap, t.y, t.x + size.x + gap, t.y + size.y);
-        xs.push_back(sides[i].x), xs.push_back(sides[i].x + sides[i].width);
-        ys.push_back(sides[i].y), ys.push_back(sides[i].y + sides[i].height);
-    }
-    for (std::vector<double>* e : {&xs, &ys}) {
-        std::sort(e->begin(), e->end());
-        e->erase(std::unique(e->begin(), e->end()), e->end());
-    }
-    CoverGrid blocks, texts;
-    blocks.build(xs, ys, near.blocks);
-    texts.build(xs, ys, near.texts);
-    const auto index = [](const std::vector<double>& e, double v) {
-        return static_cast<std::size_t>(std::lower_bound(e.begin(), e.end(), v) - e.begin());
-    };
-    // Each try's sum (the blocks' area and ten times the texts') lies from lo to hi.
-    std::vector<double> lo(tries.size(), INFINITY), hi(tries.size(), INFINITY);
-    double most = INFINITY;
-    for (std::size_t i = 0; i < tries.size(); ++i) {
-        if (!inView(view, tries[i].x, tries[i].y, size)) continue;
-        const ScreenRect& r = sides[i];
-        const std::size_t i0 = index(xs, r.x), i1 = index(xs, r.x + r.width);
-        const std::size_t j0 = index(ys, r.y), j1 = index(ys, r.y + r.height);
-        const bool onBlocks = blocks.touches(i0, j0, i1, j1) != 0;
-        const bool onTexts = texts.touches(i0, j0, i1, j1) != 0;
-        if (!onBlocks && !onTexts) return static_cast<int>(i); // covers nothing
-        const double b = onBlocks ? blocks.area(i0, j0, i1, j1) : 0.0;
-        const double t = onTexts ? texts.area(i0, j0, i1, j1) : 0.0;
-        const double eb = onBlocks ? blocks.error() : 0.0, et = onTexts ? texts.error() : 0.0;
-        // (and the roundings of onBlocks + 10 x onTexts)
-        const double error =
-            eb + 10.0 * et + 8.0 * DBL_EPSILON * (std::abs(b) + eb + 10.0 * (std::abs(t) + et));
-        lo[i] = b + 10.0 * t - error;
-        hi[i] = b + 10.0 * t + error;
-        most = std::min(most, hi[i]);
-    }
-    int best = -1;
-    double least = INFINITY;
-    for (std::size_t i = 0; i < tries.size(); ++i) {
-        if (!(lo[i] <= most)) continue;
-        const double covered = exact(i, least);
-        if (covered < least) {
-            least = covered;
-            best = static_cast<int>(i);
-        }
-    }
-    return best;
-}
-
 // freeSpot over `source`: `placed`, or a part of it, in order, holding all of it that meets
 // spotRegion (meeting then picks the same rectangles from either).
 ImVec2 spotAmong(const Taken& source, const ScreenRect& view, float x, float above, float below,
@@ -229,42 +144,28 @@ ImVec2 spotAmong(const Taken& source, const ScreenRect& view, float x, float abo
     const float shift = size.x * 0.5f + gap;
     static thread_local Taken near;
     meeting(source, spotRegion(x, above, below, size, line), near, blockRows);
-    // Each of the 12 rows is tried at up to 7 places sideways, in this order: its band of `near`
-    // is found on its first try and kept.
+    // Each of the 12 rows is tried at up to 7 places sideways: its band of `near` is found on its
+    // first try and kept.
     constexpr int kRows = 6;
-    static thread_local std::vector<Try> tries;
-    tries.clear();
-    for (const float dx :
-         {0.0f, shift, -shift, 2.0f * shift, -2.0f * shift, 3.0f * shift, -3.0f * shift}) {
-        for (int k = 0; k < kRows; ++k)
-            for (int side = 0; side < 2; ++side)
-                tries.push_back({x + dx, side == 0 ? above - k * line : below + k * line, k, side});
-    }
     static thread_local Band rows[kRows][2];
     bool banded[kRows][2] = {};
-    const auto exact = [&](std::size_t i, double least) {
-        const Try& t = tries[i];
-        if (!banded[t.k][t.side]) band(near, t.y, size.y, rows[t.k][t.side]);
-        banded[t.k][t.side] = true;
-        return coveredInBand(rows[t.k][t.side], view, t.x, t.y, size, gap, least);
-    };
-    // Among many rectangles, through the grids; few are summed as quickly.
-    constexpr std::size_t kMany = 24;
-    if (near.blocks.size() + near.texts.size() > kMany && size.x > 0.0f && size.y > 0.0f &&
-        line >= 0.0f && ordinary(x) && ordinary(above) && ordinary(below) && ordinary(size.x) &&
-        ordinary(size.y) && ordinary(line) && ordinary(view) && ordinary(near.blocks) &&
-        ordinary(near.texts)) {
-        const int i = throughGrids(tries, near, view, size, gap, exact);
-        return i < 0 ? ImVec2(x, above) : ImVec2(tries[i].x, tries[i].y);
-    }
     ImVec2 best(x, above);
     double least = INFINITY;
-    for (std::size_t i = 0; i < tries.size(); ++i) {
-        const double covered = exact(i, least);
-        if (covered == 0.0) return ImVec2(tries[i].x, tries[i].y);
-        if (covered < least) {
-            least = covered;
-            best = ImVec2(tries[i].x, tries[i].y);
+    for (const float dx :
+         {0.0f, shift, -shift, 2.0f * shift, -2.0f * shift, 3.0f * shift, -3.0f * shift}) {
+        for (int k = 0; k < kRows; ++k) {
+            for (int side = 0; side < 2; ++side) {
+                const float y = side == 0 ? above - k * line : below + k * line;
+                if (!banded[k][side]) band(near, y, size.y, rows[k][side]);
+                banded[k][side] = true;
+                const double covered =
+                    coveredInBand(rows[k][side], view, x + dx, y, size, gap, least);
+                if (covered == 0.0) return ImVec2(x + dx, y);
+                if (covered < least) {
+                    least = covered;
+                    best = ImVec2(x + dx, y);
+                }
+            }
         }
     }
     return best;

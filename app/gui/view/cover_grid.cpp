@@ -6,20 +6,59 @@
 
 namespace {
 
-// The cells along one axis that the span from `lo` to `hi` shares positive length with, and that
-// length: (cell, length) into `out`, cleared first. Cell k runs from edges[k] to edges[k + 1].
-void cellsOf(const std::vector<double>& edges, double lo, double hi,
-             std::vector<std::pair<std::size_t, double>>& out) {
-    out.clear();
-    if (!(lo < hi)) return; // (and a NaN side: overlapArea finds no positive area with it)
-    const auto first = std::upper_bound(edges.begin(), edges.end(), lo);
-    std::size_t k =
-        first == edges.begin() ? 0 : static_cast<std::size_t>(first - edges.begin()) - 1;
-    for (; k + 1 < edges.size() && edges[k] < hi; ++k) {
-        const double length = std::min(edges[k + 1], hi) - std::max(edges[k], lo);
-        if (length > 0.0) out.emplace_back(k, length);
+// The cells of one axis: how many of its edges (sorted) lie at or before a value, found in a few
+// steps (a search per rectangle and axis: a binary search's comparisons are as good as random for
+// the branch predictor). A table says how many edges lie in the buckets before each of a few
+// equal steps from the first edge to the last; the edges are then walked from there.
+class Axis {
+  public:
+    explicit Axis(const std::vector<double>& edges) : edges_(edges) {
+        const std::size_t buckets = 4 * edges.size();
+        const double span = edges.back() - edges.front();
+        first_ = edges.front();
+        scale_ = span > 0.0 ? static_cast<double>(buckets) / span : 0.0;
+        last_ = buckets - 1;
+        before_.assign(buckets + 1, 0);
+        for (double e : edges) ++before_[bucket(e) + 1];
+        for (std::size_t b = 1; b <= buckets; ++b) before_[b] += before_[b - 1];
     }
-}
+
+    // std::upper_bound's index. Why the walk finds it: bucket() never decreases as v grows, so an
+    // edge in an earlier bucket than v's is below v: all before_[bucket(v)] of them are.
+    std::size_t countUpTo(double v) const {
+        std::size_t k = before_[bucket(v)];
+        while (k < edges_.size() && edges_[k] <= v) ++k;
+        return k;
+    }
+
+    // The cells that the span from `lo` to `hi` shares positive length with, and that length:
+    // (cell, length) into `out` (from its start; how many is returned). Cell k runs from
+    // edges[k] to edges[k + 1].
+    std::size_t cellsOf(double lo, double hi,
+                        std::vector<std::pair<std::size_t, double>>& out) const {
+        if (!(lo < hi)) return 0; // (and a NaN side: overlapArea finds no positive area with it)
+        const std::size_t first = countUpTo(lo);
+        std::size_t count = 0;
+        for (std::size_t k = first == 0 ? 0 : first - 1; k + 1 < edges_.size() && edges_[k] < hi;
+             ++k) {
+            const double length = std::min(edges_[k + 1], hi) - std::max(edges_[k], lo);
+            if (length > 0.0) out[count++] = {k, length};
+        }
+        return count;
+    }
+
+  private:
+    std::size_t bucket(double v) const {
+        const double f = (v - first_) * scale_;
+        if (!(f > 0.0)) return 0;
+        return f < static_cast<double>(last_) ? static_cast<std::size_t>(f) : last_;
+    }
+
+    const std::vector<double>& edges_;
+    double first_ = 0.0, scale_ = 0.0;
+    std::size_t last_ = 0;
+    std::vector<std::size_t> before_; // edges in the buckets before bucket b, at b
+};
 
 } // namespace
 
@@ -43,13 +82,16 @@ void CoverGrid::build(const std::vector<double>& xs, const std::vector<double>& 
     area_.assign(nx_ * ny_, 0.0);
     touches_.assign(nx_ * ny_, 0);
     // Cell (i, j) summed at (i + 1, j + 1): the running sums then need no other array.
-    std::vector<std::pair<std::size_t, double>> alongX, alongY;
+    const Axis alongXs(xs), alongYs(ys);
+    std::vector<std::pair<std::size_t, double>> alongX(nx_), alongY(ny_);
     for (const ScreenRect& r : rects) {
-        cellsOf(xs, r.x, r.x + r.width, alongX);
-        if (alongX.empty()) continue;
-        cellsOf(ys, r.y, r.y + r.height, alongY);
-        for (const auto& [i, w] : alongX) {
-            for (const auto& [j, h] : alongY) {
+        const std::size_t cx = alongXs.cellsOf(r.x, r.x + r.width, alongX);
+        if (cx == 0) continue;
+        const std::size_t cy = alongYs.cellsOf(r.y, r.y + r.height, alongY);
+        for (std::size_t a = 0; a < cx; ++a) {
+            const auto [i, w] = alongX[a];
+            for (std::size_t b = 0; b < cy; ++b) {
+                const auto [j, h] = alongY[b];
                 area_[(i + 1) * ny_ + j + 1] += w * h;
                 touches_[(i + 1) * ny_ + j + 1] += 1;
             }

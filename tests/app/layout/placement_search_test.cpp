@@ -316,9 +316,9 @@ TEST(LabelPlacement, SpotsAreThoseOfThePlainSearch) {
     EXPECT_GT(free, 200);
 }
 
-// freeSpot and freeRow through the grids of their tries' edges (cover_grid.h) find the plain
-// loops' spots on screens made to trip them: edges anywhere (a sum's last bits then differ with
-// its order), blocks on a lattice (many tries covering the same), and labels of any width.
+// freeSpot and freeRow find the plain loops' spots on screens made to trip a faster search:
+// edges anywhere (a sum's last bits then differ with its order), blocks on a lattice (many tries
+// covering the same), and labels of any width.
 TEST(LabelPlacement, SpotsAreThoseOfThePlainSearchOnTrickyScreens) {
     std::mt19937 random(41);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -373,7 +373,8 @@ TEST(LabelPlacement, SpotsAreThoseOfThePlainSearchOnTrickyScreens) {
 // Mirror images: blocks and texts placed in pairs mirrored about the middle of a label's first
 // try, so that the tries to the right and to the left cover the same area but for the last bits
 // of their sums (the mirrored edges are rounded, the sums taken in another order): freeSpot picks
-// between such near twins as the plain loop does, by its sums to the bit.
+// between such near twins as the plain loop does, by its sums to the bit (a search that picked by
+// estimates within a bound of the sums, e.g. a grid's, failed here).
 TEST(LabelPlacement, MirroredTwinsPickedByTheSumsToTheBit) {
     std::mt19937 random(43);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
