@@ -198,12 +198,15 @@ ScreenRect throughGrid(const Corners& c, double width, double height, const Scre
     textGrid.build(edgesX, edgesY, texts);
     std::vector<Candidate> all;
     all.reserve(xs.size() * ys.size());
+    // Each corner's edges in the grid, looked up once.
+    std::vector<std::size_t> left(xs.size()), right(xs.size());
+    for (std::size_t c = 0; c < xs.size(); ++c)
+        left[c] = edgeIndex(edgesX, xs[c]), right[c] = edgeIndex(edgesX, xs[c] + width);
     for (std::size_t row = 0; row < ys.size(); ++row) {
         const std::size_t j0 = edgeIndex(edgesY, ys[row]), j1 = edgeIndex(edgesY, ys[row] + height);
-        for (double x : xs) {
-            const std::size_t i0 = edgeIndex(edgesX, x), i1 = edgeIndex(edgesX, x + width);
-            all.push_back({row, x, ys[row], estimate(textGrid, i0, j0, i1, j1),
-                           estimate(avoidGrid, i0, j0, i1, j1)});
+        for (std::size_t c = 0; c < xs.size(); ++c) {
+            all.push_back({row, xs[c], ys[row], estimate(textGrid, left[c], j0, right[c], j1),
+                           estimate(avoidGrid, left[c], j0, right[c], j1)});
         }
     }
     // The rows' bands, taken when a candidate of the row needs its exact sums.
