@@ -70,11 +70,12 @@ class Axis {
 // inside the rectangle gives the test. Along y alike; the counts are whole numbers.
 //
 // Why area() is within error(): every cell's area is a sum of terms >= 0 (each a product of two
-// differences, rounded: within 3 units of the last place of the true overlap's area), the running
-// sums add terms >= 0 only (first along y, then along x), and area() combines four of them: each
-// result is off by at most (cells + rectangles + a few) units of the last place of the total,
-// and overlapArea's sum in any order by at most (rectangles + 3) of them. error() takes twice
-// that, over twice the total.
+// differences, rounded: within 3 units u of roundoff, u = DBL_EPSILON / 2, of the true overlap's
+// area), the running sums add terms >= 0 only (first along y, then along x), and area() combines
+// four of them: it is off the true area by at most 4 (rectangles + edges + 3) + 6 units u of the
+// total, and overlapArea's sum in any order by at most rectangles + 3 of them: together under
+// 5 (rectangles + edges) + 20. error() takes 32 (rectangles + edges) + 256 units u of the total
+// as summed (itself within a few units of the true total).
 void CoverGrid::build(const std::vector<double>& xs, const std::vector<double>& ys,
                       const std::vector<ScreenRect>& rects) {
     nx_ = xs.size();
@@ -110,6 +111,6 @@ void CoverGrid::build(const std::vector<double>& xs, const std::vector<double>& 
         }
     }
     const double total = nx_ * ny_ > 0 ? area_.back() : 0.0;
-    const double units = 8.0 * static_cast<double>(nx_ + ny_ + rects.size()) + 64.0;
-    error_ = units * DBL_EPSILON * 2.0 * total;
+    const double units = 32.0 * static_cast<double>(nx_ + ny_ + rects.size()) + 256.0;
+    error_ = units * (DBL_EPSILON / 2.0) * total;
 }
