@@ -7,12 +7,6 @@ void Camera::setPixelsPerMetre(double ppm) {
     pixelsPerMetre_ = std::clamp(ppm, kMinPixelsPerMetre, kMaxPixelsPerMetre);
 }
 
-Vec2 Camera::worldToScreen(Vec2 world) const {
-    const Vec2 c = viewport_.centre();
-    return {c.x + (world.x - centre_.x) * pixelsPerMetre_,
-            c.y - (world.y - centre_.y) * pixelsPerMetre_};
-}
-
 Vec2 Camera::screenToWorld(Vec2 screen) const {
     const Vec2 c = viewport_.centre();
     return {centre_.x + (screen.x - c.x) / pixelsPerMetre_,

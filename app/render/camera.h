@@ -38,7 +38,12 @@ class Camera {
     void setCentre(Vec2 centre) { centre_ = centre; }
     void setPixelsPerMetre(double ppm);
 
-    Vec2 worldToScreen(Vec2 world) const;
+    // (In the header: called for every block, arrow and label several times a frame.)
+    Vec2 worldToScreen(Vec2 world) const {
+        const Vec2 c = viewport_.centre();
+        return {c.x + (world.x - centre_.x) * pixelsPerMetre_,
+                c.y - (world.y - centre_.y) * pixelsPerMetre_};
+    }
     Vec2 screenToWorld(Vec2 screen) const;
     double metresToPixels(double metres) const { return metres * pixelsPerMetre_; }
     double pixelsToMetres(double pixels) const { return pixels / pixelsPerMetre_; }

@@ -1,7 +1,5 @@
 #include "dock_layout.h"
 
-#include "rect_strips.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -235,111 +233,6 @@ bool rectInside(const ScreenRect& inner, const ScreenRect& outer) {
     return inner.x >= outer.x && inner.y >= outer.y &&
            inner.x + inner.width <= outer.x + outer.width &&
            inner.y + inner.height <= outer.y + outer.height;
-}
-
-namespace {
-
-double overlapArea(const ScreenRect& a, const ScreenRect& b) {
-    const double w = std::min(a.x + a.width, b.x + b.width) - std::max(a.x, b.x);
-    const double h = std::min(a.y + a.height, b.y + b.height) - std::max(a.y, b.y);
-    return w > 0.0 && h > 0.0 ? w * h : 0.0;
-}
-
-} // namespace
-
-ScreenRect placeCaption(double width, double height, const ScreenRect& scene,
-                        const ScreenRect& world, const std::vector<ScreenRect>& avoid, double inset,
-                        const std::vector<ScreenRect>& texts) {
-    const double x0 = scene.x + inset, x1 = scene.x + scene.width - inset - width;
-    const double y0 = scene.y + inset, y1 = scene.y + scene.height - inset - height;
-    // Candidate corners: along the scene's and the world's edges, and a grid between them.
-    std::vector<double> xs = {x0, world.x + inset, world.x + world.width - inset - width, x1,
-                              world.x - inset - width};
-    std::vector<double> ys = {y0, world.y + inset, world.y + world.height - inset - height, y1,
-                              world.y - inset - height};
-    constexpr int kSteps = 16;
-    for (int i = 0; i <= kSteps; ++i) {
-        xs.push_back(x0 + (x1 - x0) * i / kSteps);
-        ys.push_back(y0 + (y1 - y0) * i / kSteps);
-    }
-    // And beside each text and each rectangle to avoid, where there are few (the grid's steps
-    // of a 16th missed the 125 px between the status badge and the labels above the blocks that
-    // a 108 px plate fits: step 5 of lecture3 at 1280x800, UI 1.5). A thousand blocks keep to
-    // the grid.
-    constexpr std::size_t kFewEdges = 32;
-    for (const std::vector<ScreenRect>* list : {&texts, &avoid}) {
-        if (list->size() > kFewEdges) continue;
-        for (const ScreenRect& r : *list) {
-            xs.push_back(r.x + r.width), xs.push_back(r.x - width);
-            ys.push_back(r.y + r.height), ys.push_back(r.y - height);
-        }
-    }
-    const ScreenRect inner{world.x + inset, world.y + inset, world.width - 2.0 * inset,
-                           world.height - 2.0 * inset};
-    ScreenRect best{x0, y0, width, height};
-    // (texts covered, area covered, tier, y, x): the smallest wins.
-    double bestHidden = INFINITY, bestCovered = INFINITY, bestTier = INFINITY, bestY = INFINITY,
-           bestX = INFINITY;
-    // The rectangles a candidate at `top` can overlap: those in its band of rows, in their
-    // order (the others add nothing to the sums, which come out bit for bit the same). A
-    // thousand blocks against every candidate cost a millisecond a caption. Found through rows
-    // of the scene (rect_strips.h): those in a band's rows only are looked at (issue 42).
-    constexpr int kRows = 32;
-    RectStrips avoidRows, textRows;
-    avoidRows.build(avoid, RectStrips::Axis::y, scene.y, scene.y + scene.height, kRows);
-    textRows.build(texts, RectStrips::Axis::y, scene.y, scene.y + scene.height, kRows);
-    // Each kept as overlapArea works it out against a candidate of the band: its sides, and its
-    // overlap with the band's rows, the same for every candidate of the band (worked out once).
-    struct InBand {
-        double left, right, h;
-    };
-    std::vector<InBand> avoidInBand, textsInBand;
-    const auto inBand = [height](double top, const RectStrips& from, std::vector<InBand>& to) {
-        to.clear();
-        from.forEach(top, top + height, [&](const ScreenRect& a) {
-            if (overlapArea({a.x, top, a.width, height}, a) > 0.0)
-                to.push_back({a.x, a.x + a.width,
-                              std::min(top + height, a.y + a.height) - std::max(top, a.y)});
-            return true;
-        });
-    };
-    // overlapArea(r, a) of a candidate r of the band.
-    const auto area = [](double left, double right, const InBand& a) {
-        const double w = std::min(right, a.right) - std::max(left, a.left);
-        return w > 0.0 && a.h > 0.0 ? w * a.h : 0.0;
-    };
-    for (double y : ys) {
-        if (y < y0 - 1e-9 || y > y1 + 1e-9) continue;
-        inBand(std::round(y), avoidRows, avoidInBand);
-        inBand(std::round(y), textRows, textsInBand);
-        for (double x : xs) {
-            if (x < x0 - 1e-9 || x > x1 + 1e-9) continue;
-            const ScreenRect r{std::round(x), std::round(y), width, height};
-            const double left = r.x, right = r.x + r.width;
-            double hidden = 0.0;
-            for (const InBand& t : textsInBand) hidden += area(left, right, t);
-            if (hidden > bestHidden) continue;
-            // The sums only grow (every area is >= 0): once past the best, the candidate loses
-            // whatever the rest adds (the sum is the same as the whole loop's up to there).
-            double covered = 0.0;
-            for (const InBand& a : avoidInBand) {
-                covered += area(left, right, a);
-                if (hidden == bestHidden && covered > bestCovered) break;
-            }
-            const double tier = !rectsOverlap(r, world) ? 0.0 : rectInside(r, inner) ? 1.0 : 2.0;
-            const bool better =
-                hidden < bestHidden ||
-                (hidden == bestHidden &&
-                 (covered < bestCovered ||
-                  (covered == bestCovered &&
-                   (tier < bestTier ||
-                    (tier == bestTier && (r.y < bestY || (r.y == bestY && r.x < bestX)))))));
-            if (!better) continue;
-            best = r;
-            bestHidden = hidden, bestCovered = covered, bestTier = tier, bestY = r.y, bestX = r.x;
-        }
-    }
-    return best;
 }
 
 ScreenRect worldRectOnScreen(const Camera& camera, const Bounds& bounds) {
