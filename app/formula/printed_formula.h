@@ -15,6 +15,9 @@ struct Printed {
     double value = 0.0; // what the digits in `text` give
 };
 
+// The number a text of formatNumberWithDigits' gives: std::strtod's answer, bit for bit (faster
+// for its usual texts, "-0.932", "2.376").
+double shownNumber(const char* text);
 // `value` as formatNumberWithDigits(value, extra) writes it ("0.99999354"), and that number.
 Printed printed(double value, int extra);
 // The same in parentheses when negative, as operand() writes it: "(-2)".

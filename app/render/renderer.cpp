@@ -156,18 +156,23 @@ SceneRenderer::BatchRanges SceneRenderer::addBatch(const ShapeBatch& batch, floa
     r.lineWidthPx = lineWidthPx;
     r.triangles = {vertexAt(), static_cast<GLsizei>(batch.vertices().size())};
     append(batch.vertices().data(), batch.vertices().size() * sizeof(ShapeVertex));
-    const std::vector<ShapeVertex>* segments = &batch.segmentVertices();
+    const std::vector<ShapeVertex>& segments = batch.segmentVertices();
     r.segmentsAsLines = lineWidthPx <= maxLineWidth_;
-    if (!r.segmentsAsLines) { // no lines this wide (WebGL 2): the quads GL would have rasterised
-        wideLineQuads_.clear();
-        appendWideLineQuads(batch.segmentVertices(), lineWidthPx, framebufferPixelsPerMetre_,
-                            wideLineQuads_);
-        segments = &wideLineQuads_;
-    }
-    r.segments = {vertexAt(), static_cast<GLsizei>(segments->size())};
-    append(segments->data(), segments->size() * sizeof(ShapeVertex));
     r.trianglesOpaque = allOpaque(batch.vertices());
-    r.segmentsOpaque = allOpaque(*segments);
+    if (r.segmentsAsLines) {
+        r.segments = {vertexAt(), static_cast<GLsizei>(segments.size())};
+        append(segments.data(), segments.size() * sizeof(ShapeVertex));
+        r.segmentsOpaque = allOpaque(segments);
+        return r;
+    }
+    // No lines this wide (WebGL 2): the quads GL would have rasterised, written into the upload
+    // (their colours are their segments' ends').
+    const std::size_t quads = wideLineQuadVertices(segments, framebufferPixelsPerMetre_);
+    r.segments = {vertexAt(), static_cast<GLsizei>(quads)};
+    const std::size_t at = upload_.size();
+    upload_.resize(at + quads * sizeof(ShapeVertex));
+    writeWideLineQuads(segments, lineWidthPx, framebufferPixelsPerMetre_, upload_.data() + at);
+    r.segmentsOpaque = quads == 0 || allOpaque(segments);
     return r;
 }
 

@@ -81,11 +81,10 @@ class SceneRenderer {
     GLint shapeTransform_ = -1;
     float maxLineWidth_ = 1.0f; // the widest GL line, pixels (1 in WebGL 2)
     double framebufferPixelsPerMetre_ = 1.0;
-    BatchRanges batchRanges_[3];             // under, momenta, over
-    std::vector<unsigned char> upload_;      // the instances, then the shape vertices
-    std::size_t shapeBytes_ = 0;             // where the shape vertices start in upload_
-    std::vector<ShapeVertex> wideLineQuads_; // segments as triangles, when lines cannot be wide
-    double maxPointPx_ = 1.0;                // the largest point sprite used for a block, pixels
+    BatchRanges batchRanges_[3];        // under, momenta, over
+    std::vector<unsigned char> upload_; // the instances, then the shape vertices
+    std::size_t shapeBytes_ = 0;        // where the shape vertices start in upload_
+    double maxPointPx_ = 1.0;           // the largest point sprite used for a block, pixels
     SceneGeometry geometry_;
     FrameBasePlanner planner_;
     // The frame's base: its clear, and the scene's background (outside `drawn` none is needed).

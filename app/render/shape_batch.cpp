@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 void ShapeBatch::vertex(Vec2 p, const Color& c) {
     vertices_.push_back({static_cast<float>(p.x), static_cast<float>(p.y), c.r, c.g, c.b, c.a});
@@ -80,9 +81,14 @@ bool drawsAsPointSprite(double widthPx, double heightPx, Vec2 centre, const Scre
            centre.y + reach <= screen.y + screen.height;
 }
 
-void appendWideLineQuads(const std::vector<ShapeVertex>& segments, double widthPx,
-                         double pixelsPerMetre, std::vector<ShapeVertex>& triangles) {
+std::size_t wideLineQuadVertices(const std::vector<ShapeVertex>& segments, double pixelsPerMetre) {
+    return pixelsPerMetre > 0.0 ? segments.size() / 2 * 6 : 0;
+}
+
+void writeWideLineQuads(const std::vector<ShapeVertex>& segments, double widthPx,
+                        double pixelsPerMetre, void* out) {
     if (pixelsPerMetre <= 0.0) return;
+    auto* to = static_cast<unsigned char*>(out);
     const auto half = static_cast<float>(0.5 * widthPx / pixelsPerMetre);
     for (std::size_t i = 0; i + 1 < segments.size(); i += 2) {
         const ShapeVertex& a = segments[i];
@@ -92,6 +98,15 @@ void appendWideLineQuads(const std::vector<ShapeVertex>& segments, double widthP
         ShapeVertex a0 = a, a1 = a, b0 = b, b1 = b;
         a0.x -= ox, a0.y -= oy, a1.x += ox, a1.y += oy;
         b0.x -= ox, b0.y -= oy, b1.x += ox, b1.y += oy;
-        triangles.insert(triangles.end(), {a0, a1, b1, a0, b1, b0});
+        const ShapeVertex quad[6] = {a0, a1, b1, a0, b1, b0};
+        std::memcpy(to, quad, sizeof quad);
+        to += sizeof quad;
     }
+}
+
+void appendWideLineQuads(const std::vector<ShapeVertex>& segments, double widthPx,
+                         double pixelsPerMetre, std::vector<ShapeVertex>& triangles) {
+    const std::size_t at = triangles.size();
+    triangles.resize(at + wideLineQuadVertices(segments, pixelsPerMetre));
+    writeWideLineQuads(segments, widthPx, pixelsPerMetre, triangles.data() + at);
 }

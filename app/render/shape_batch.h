@@ -52,6 +52,11 @@ class ShapeBatch {
 // is the framebuffer's scale. Appends six vertices per segment to `triangles`.
 void appendWideLineQuads(const std::vector<ShapeVertex>& segments, double widthPx,
                          double pixelsPerMetre, std::vector<ShapeVertex>& triangles);
+// The same written to `out` (room for wideLineQuadVertices' count, no alignment needed): the
+// renderer's upload without a copy between.
+std::size_t wideLineQuadVertices(const std::vector<ShapeVertex>& segments, double pixelsPerMetre);
+void writeWideLineQuads(const std::vector<ShapeVertex>& segments, double widthPx,
+                        double pixelsPerMetre, void* out);
 
 // Whether a block `widthPx` x `heightPx` on screen, centred at `centre` (screen pixels), is drawn
 // as a point sprite rather than a quad: it is small (the sprite, a square of its larger side

@@ -4,6 +4,7 @@
 #include "gl_api.h"
 #include "gl_shader.h"
 #include "renderer.h"
+#include "ui_draw_merge.h"
 #include "ui_draw_runs.h"
 #include "ui_frame_base.h"
 
@@ -40,6 +41,7 @@ struct UiRenderer {
     std::vector<UiDrawRun> runs;
     std::vector<ImDrawVert> vertices;   // GL ES: every list's, uploaded at once
     std::vector<std::uint32_t> indices; // GL ES: every list's, into all the vertices
+    UiDrawMerger merger;                // GL ES: the draws of the commands
     // The frame's base as planned (uiRendererPlanFrameBase), for the draw data it was planned
     // on: which opaque fills find their colour already there (in the order of the fills).
     const ImDrawData* plannedFor = nullptr;
@@ -225,6 +227,7 @@ bool clipBox(const ImDrawCmd& cmd, const ImDrawData* data, int fbHeight, Scissor
     return true;
 }
 
+#if !SANDBOX_GL_ES // (WebGL: ui_draw_merge.h picks the boxes)
 // The same, set as GL's scissor box.
 bool scissorTo(const ImDrawCmd& cmd, const ImDrawData* data, int fbHeight, ScissorBox* box) {
     ScissorBox b;
@@ -233,6 +236,7 @@ bool scissorTo(const ImDrawCmd& cmd, const ImDrawData* data, int fbHeight, Sciss
     if (box) *box = b;
     return true;
 }
+#endif
 
 // A command's own callback, or ImGui's request to set the render state again.
 void runCallback(const ImDrawList* list, const ImDrawCmd& cmd, const ImDrawData* data, int fbWidth,
@@ -252,21 +256,45 @@ namespace {
 // process, which costs more than it saves to skip texturing, and a GPU rasterises anyway. So
 // every list's vertices are uploaded at once, with the indices as 32-bit numbers into all of them
 // (WebGL 2 has no glDrawElementsBaseVertex: the base vertex is added here, so the attributes
-// never move), and each command is one draw with the textured program (solid shapes sample the
-// atlas's white texel: the same colours), its scissor set only when it changes.
+// never move), and the commands are drawn with the textured program (solid shapes sample the
+// atlas's white texel: the same colours), neighbours that their scissor boxes do not clip as one
+// draw (ui_draw_merge.h), each scissor box and texture set only when it changes.
 void renderForWebGl(const ImDrawData* data, int fbWidth, int fbHeight) {
     gUi.vertices.clear();
     gUi.indices.resize(static_cast<std::size_t>(data->TotalIdxCount));
+    gUi.merger.clear();
+    const ImVec2 origin = data->DisplayPos, scale = data->FramebufferScale;
     std::size_t listIndices = 0; // where the list starts in the index buffer
     for (int n = 0; n < data->CmdListsCount; ++n) {
         const ImDrawList* list = data->CmdLists[n];
         const auto listVertices = static_cast<std::uint32_t>(gUi.vertices.size());
         gUi.vertices.insert(gUi.vertices.end(), list->VtxBuffer.begin(), list->VtxBuffer.end());
         for (const ImDrawCmd& cmd : list->CmdBuffer) {
+            if (cmd.UserCallback) {
+                gUi.merger.addCallback(list, &cmd);
+                continue;
+            }
             const std::uint32_t base = listVertices + cmd.VtxOffset;
             const ImDrawIdx* from = list->IdxBuffer.Data + cmd.IdxOffset;
             std::uint32_t* to = gUi.indices.data() + listIndices + cmd.IdxOffset;
-            for (unsigned k = 0; k < cmd.ElemCount; ++k) to[k] = base + from[k];
+            // Its triangles' reach (ImGui's units), the indices rebased on the way.
+            const ImDrawVert* v = list->VtxBuffer.Data + cmd.VtxOffset;
+            float x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+            float sum = 0.0f; // not finite when a vertex is not (NaN passes min and max by)
+            for (unsigned k = 0; k < cmd.ElemCount; ++k) {
+                to[k] = base + from[k];
+                const ImVec2 p = v[from[k]].pos;
+                x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+                y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+                sum += p.x + p.y;
+            }
+            if (!std::isfinite(sum)) x0 = y0 = -INFINITY, x1 = y1 = INFINITY; // clipped
+            ScissorBox box;
+            if (cmd.ElemCount == 0 || !clipBox(cmd, data, fbHeight, &box)) continue;
+            const UiReach reach{(x0 - origin.x) * scale.x, fbHeight - (y1 - origin.y) * scale.y,
+                                (x1 - origin.x) * scale.x, fbHeight - (y0 - origin.y) * scale.y};
+            gUi.merger.add(listIndices + cmd.IdxOffset, cmd.ElemCount, cmd.GetTexID(),
+                           {box.x, box.y, box.width, box.height}, reach);
         }
         listIndices += static_cast<std::size_t>(list->IdxBuffer.Size);
     }
@@ -275,34 +303,28 @@ void renderForWebGl(const ImDrawData* data, int fbWidth, int fbHeight) {
     glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                  static_cast<GLsizeiptr>(gUi.indices.size() * sizeof(std::uint32_t)),
                  gUi.indices.data(), GL_STREAM_DRAW);
-    GLuint texture = ~0u;           // the texture bound
-    ImVec4 scissor(-1, -1, -1, -1); // the clip rectangle the scissor box was last set to
-    listIndices = 0;
-    for (int n = 0; n < data->CmdListsCount; ++n) {
-        const ImDrawList* list = data->CmdLists[n];
-        for (const ImDrawCmd& cmd : list->CmdBuffer) {
-            if (cmd.UserCallback) {
-                runCallback(list, cmd, data, fbWidth, fbHeight);
-                glUseProgram(gUi.textured.program);
-                texture = ~0u;
-                scissor = ImVec4(-1, -1, -1, -1);
-                continue;
-            }
-            const ImVec4& clip = cmd.ClipRect;
-            if (clip.x != scissor.x || clip.y != scissor.y || clip.z != scissor.z ||
-                clip.w != scissor.w) {
-                if (!scissorTo(cmd, data, fbHeight, nullptr)) continue;
-                scissor = clip;
-            }
-            if (textureName(cmd.GetTexID()) != texture) {
-                texture = textureName(cmd.GetTexID());
-                glBindTexture(GL_TEXTURE_2D, texture);
-            }
-            const std::size_t first = listIndices + cmd.IdxOffset;
-            glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(cmd.ElemCount), GL_UNSIGNED_INT,
-                           reinterpret_cast<void*>(first * sizeof(std::uint32_t)));
+    GLuint texture = ~0u; // the texture bound
+    bool boxSet = false;  // the scissor box is `box`
+    UiScissor box;
+    for (const UiMergedDraw& d : gUi.merger.draws()) {
+        if (d.callback) {
+            runCallback(d.list, *d.callback, data, fbWidth, fbHeight);
+            glUseProgram(gUi.textured.program);
+            texture = ~0u;
+            boxSet = false;
+            continue;
         }
-        listIndices += static_cast<std::size_t>(list->IdxBuffer.Size);
+        if (!boxSet || !(d.box == box)) {
+            glScissor(d.box.x, d.box.y, d.box.width, d.box.height);
+            box = d.box;
+            boxSet = true;
+        }
+        if (textureName(d.texture) != texture) {
+            texture = textureName(d.texture);
+            glBindTexture(GL_TEXTURE_2D, texture);
+        }
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(d.count), GL_UNSIGNED_INT,
+                       reinterpret_cast<void*>(d.first * sizeof(std::uint32_t)));
     }
     glDisable(GL_SCISSOR_TEST);
     glBindVertexArray(0);

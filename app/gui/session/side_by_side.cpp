@@ -2,6 +2,35 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+
+namespace {
+
+// The same bits (a -0 is not a 0, a NaN is itself).
+bool sameBits(double a, double b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
+bool sameBits(Vec2 a, Vec2 b) {
+    return sameBits(a.x, b.x) && sameBits(a.y, b.y);
+}
+
+// Whether two worlds' states are the same bits: what World::step reads besides its settings.
+bool sameState(const World& a, const World& b) {
+    if (a.frame != b.frame || !sameBits(a.time, b.time) || !sameBits(a.bounds.min, b.bounds.min) ||
+        !sameBits(a.bounds.max, b.bounds.max) || a.blocks.size() != b.blocks.size())
+        return false;
+    for (std::size_t i = 0; i < a.blocks.size(); ++i) {
+        const Block& p = a.blocks[i];
+        const Block& q = b.blocks[i];
+        if (!sameBits(p.position, q.position) || !sameBits(p.velocity, q.velocity) ||
+            !sameBits(p.size, q.size) || !sameBits(p.mass, q.mass) || !sameBits(p.force, q.force) ||
+            p.kind != q.kind || !sameBits(p.friction, q.friction))
+            return false;
+    }
+    return true;
+}
+
+} // namespace
 
 void MethodsSideBySide::start(const World& world) {
     for (std::size_t m = 0; m < runs.size(); ++m) {
@@ -12,10 +41,11 @@ void MethodsSideBySide::start(const World& world) {
     running = true;
 }
 
-void MethodsSideBySide::step(const WorldSettings& live, int pushed, Vec2 thrust) {
+void MethodsSideBySide::step(const WorldSettings& live, int pushed, Vec2 thrust, Method followed) {
     if (!running) return;
     for (std::size_t m = 0; m < runs.size(); ++m) {
         MethodRun& r = runs[m];
+        if (static_cast<Method>(m) == followed) continue; // follow() gives its step
         r.world.settings = live;
         r.world.settings.method = static_cast<Method>(m);
         const bool push = pushed >= 0 && static_cast<std::size_t>(pushed) < r.world.blocks.size() &&
@@ -30,6 +60,24 @@ void MethodsSideBySide::step(const WorldSettings& live, int pushed, Vec2 thrust)
         if (push) r.world.blocks[static_cast<std::size_t>(pushed)].force = own;
         addStep(r.totals, r.stats);
     }
+}
+
+Method MethodsSideBySide::following(const World& live) const {
+    const Method m = live.settings.method;
+    if (!running || m == Method::Count || !sameState(run(m).world, live)) return Method::Count;
+    return m;
+}
+
+void MethodsSideBySide::follow(Method followed, const World& live, const StepStats& stats) {
+    if (!running || followed == Method::Count) return;
+    MethodRun& r = runs[static_cast<std::size_t>(followed)];
+    r.world.settings = live.settings;
+    r.world.bounds = live.bounds;
+    r.world.blocks = live.blocks;
+    r.world.time = live.time;
+    r.world.frame = live.frame;
+    r.stats = stats;
+    addStep(r.totals, r.stats);
 }
 
 double MethodsSideBySide::divergence(Method method) const {

@@ -192,16 +192,20 @@ FrameOutcome SimulationSession::step(bool sideBySide) {
     const int pushed = thrustedBlock();
     const Vec2 thrust = thrustForce();
     w.settings.measureTime = stepTimeShown || sideBySide; // not a physics setting: no edit
-    if (sideBySide) {
-        if (!run.methods.running) run.methods.start(w);
-        run.methods.step(w.settings, pushed, thrust);
-    } else {
-        run.methods.stop();
-    }
     // The player's keys (player.h): a jump now, a push for this frame like the thrust's.
     const PlayerKeys keys =
         script.empty() ? playerKeys : scriptedKeys(script, w.time, w.settings.dt);
     const bool playing = scene.player && keys.any();
+    // The side-by-side run of the live method, while it is the live world bit for bit and the
+    // live world feels no force of its own this frame, takes the live step (not computed twice).
+    Method followed = Method::Count;
+    if (sideBySide) {
+        if (!run.methods.running) run.methods.start(w);
+        if (pushed < 0 && !playing) followed = run.methods.following(w);
+        run.methods.step(w.settings, pushed, thrust, followed);
+    } else {
+        run.methods.stop();
+    }
     const Vec2 push = playing ? applyPlayerKeys(w, *scene.player, keys) : Vec2{};
     run.previousBlocks = w.blocks;
     const double frameStart = w.time;
@@ -218,6 +222,7 @@ FrameOutcome SimulationSession::step(bool sideBySide) {
     run.stats = w.step(&run.lastLog);
     for (auto it = ownForces.rbegin(); it != ownForces.rend(); ++it)
         w.blocks[static_cast<std::size_t>(it->first)].force = it->second;
+    run.methods.follow(followed, w, run.stats);
     history.afterStep(w);
     // The timeline rebuilds frames by stepping keyframes, which knows nothing of the keys held:
     // a thrust or player frame's result is kept as a keyframe of its own (replays stay bit for

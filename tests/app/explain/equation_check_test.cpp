@@ -7,6 +7,7 @@
 #include "lesson.h"
 #include "lesson_prompt.h"
 #include "poi.h"
+#include "printed_formula.h"
 #include "scene.h"
 
 #include <gtest/gtest.h>
@@ -14,6 +15,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <initializer_list>
 #include <random>
@@ -29,6 +32,48 @@ std::string problems(const EquationReport& r) {
     std::string out;
     for (const EquationProblem& p : r.problems) out += "  " + p.chain + ": " + p.why + "\n";
     return out;
+}
+
+// The numbers the formulas carry are what strtod reads from their digits, bit for bit: the
+// printed texts of random values at every number of digits, and texts of every other form.
+TEST(PrintedFormula, ShownNumberIsStrtodsBitForBit) {
+    std::mt19937_64 random(42);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_int_distribution<int> scale(-9, 14);
+    std::vector<std::string> texts = {"0",
+                                      "-0",
+                                      "1.",
+                                      ".5",
+                                      "-.25",
+                                      "",
+                                      "-",
+                                      ".",
+                                      "007",
+                                      "0.0012",
+                                      "1e-5",
+                                      "2.5e+12",
+                                      "inf",
+                                      "-inf",
+                                      "nan",
+                                      " 1",
+                                      "+1",
+                                      "2 kg",
+                                      "1.2.3",
+                                      "999999999999999",
+                                      "9999999999999999",
+                                      "0.1234567890123456789",
+                                      "0.0000000000000000000001"};
+    for (int i = 0; i < 20000; ++i) {
+        const double v = unit(random) * std::pow(10.0, scale(random));
+        texts.push_back(formatNumberWithDigits(v, i % 10));
+        char text[64];
+        std::snprintf(text, sizeof text, "%.*f", i % 23, v);
+        texts.push_back(text);
+    }
+    for (const std::string& t : texts) {
+        const double a = shownNumber(t.c_str()), b = std::strtod(t.c_str(), nullptr);
+        EXPECT_TRUE(std::memcmp(&a, &b, sizeof a) == 0) << t << ": " << a << " vs " << b;
+    }
 }
 
 TEST(EquationCheck, TheLecturesFormulaHolds) {

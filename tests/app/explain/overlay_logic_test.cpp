@@ -419,6 +419,37 @@ TEST(SideBySide, ThreeMethodsFromOneStart) {
     EXPECT_FALSE(app.sim.run.methods.running);
 }
 
+// The run of the live method takes the live world's step while it is the live world bit for bit:
+// every run's state and figures are those of the three methods stepped on their own, also after
+// an edit of the live world parts it from that run (from then on it is stepped by itself).
+TEST(SideBySide, TheRunsAreTheMethodsSteppedOnTheirOwn) {
+    for (const Method method : {Method::Perfect, Method::MoveAndCorrect, Method::TurnBased}) {
+        App app = busyScene();
+        app.sim.world().settings.method = method;
+        app.view.show.sideBySide = true;
+        MethodsSideBySide own;
+        own.start(app.sim.world());
+        for (int i = 0; i < 90; ++i) {
+            if (i == 40) app.sim.world().blocks[0].velocity.x += 0.5; // a lecturer's edit
+            own.step(app.sim.world().settings);
+            stepSimulation(app);
+            for (const Method m : {Method::Perfect, Method::MoveAndCorrect, Method::TurnBased}) {
+                const MethodRun& a = app.sim.run.methods.run(m);
+                const MethodRun& b = own.run(m);
+                ASSERT_EQ(stateHash(a.world), stateHash(b.world))
+                    << methodName(m) << " frame " << i;
+                EXPECT_EQ(a.totals.collisions, b.totals.collisions);
+                EXPECT_EQ(a.totals.contacts, b.totals.contacts);
+                EXPECT_EQ(a.totals.maxPenetration, b.totals.maxPenetration);
+                EXPECT_EQ(a.stats.kineticEnergy, b.stats.kineticEnergy);
+                EXPECT_EQ(a.stats.potentialEnergy, b.stats.potentialEnergy);
+            }
+        }
+        // The edit parted the live world from its method's run.
+        EXPECT_NE(stateHash(app.sim.run.methods.run(method).world), stateHash(app.sim.world()));
+    }
+}
+
 // The cost overlay's measurement: a copy of the world is stepped under each method, the world
 // itself is left as it was, and the measurement is kept per scene. (What a step costs is not
 // asserted: no test reads a clock.)
