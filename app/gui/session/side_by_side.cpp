@@ -15,6 +15,10 @@ bool sameBits(Vec2 a, Vec2 b) {
 }
 
 // Whether two worlds' states are the same bits: what World::step reads besides its settings.
+// Every field of a block and of the world but its settings and scratch is compared: a field added
+// to either changes its size here, so that it is added below too (on 64-bit targets).
+static_assert(sizeof(void*) != 8 || sizeof(Block) == 88, "compare the new field of Block");
+static_assert(sizeof(void*) != 8 || sizeof(World) == 160, "compare the new field of World");
 bool sameState(const World& a, const World& b) {
     if (a.frame != b.frame || !sameBits(a.time, b.time) || !sameBits(a.bounds.min, b.bounds.min) ||
         !sameBits(a.bounds.max, b.bounds.max) || a.blocks.size() != b.blocks.size())
