@@ -43,7 +43,7 @@ class SceneRenderer {
         GLsizei count = 0;
     };
     // A batch's parts in the upload: its triangles, and its segments as GL lines or (wider than
-    // GL draws them) as the quads appendWideLineQuads makes.
+    // GL draws them) as the quads writeWideLineQuads makes.
     struct BatchRanges {
         ShapeRange triangles, segments;
         bool segmentsAsLines = true;

@@ -103,10 +103,3 @@ void writeWideLineQuads(const std::vector<ShapeVertex>& segments, double widthPx
         to += sizeof quad;
     }
 }
-
-void appendWideLineQuads(const std::vector<ShapeVertex>& segments, double widthPx,
-                         double pixelsPerMetre, std::vector<ShapeVertex>& triangles) {
-    const std::size_t at = triangles.size();
-    triangles.resize(at + wideLineQuadVertices(segments, pixelsPerMetre));
-    writeWideLineQuads(segments, widthPx, pixelsPerMetre, triangles.data() + at);
-}

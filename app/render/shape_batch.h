@@ -49,11 +49,9 @@ class ShapeBatch {
 // lines (WebGL 2 draws lines 1 px wide only). Each segment becomes the quad OpenGL rasterises for a
 // line `widthPx` wide: both ends moved half the width either way along the minor axis (up and
 // down for a line more horizontal than vertical), so the look is the desktop's. `pixelsPerMetre`
-// is the framebuffer's scale. Appends six vertices per segment to `triangles`.
-void appendWideLineQuads(const std::vector<ShapeVertex>& segments, double widthPx,
-                         double pixelsPerMetre, std::vector<ShapeVertex>& triangles);
-// The same written to `out` (room for wideLineQuadVertices' count, no alignment needed): the
-// renderer's upload without a copy between.
+// is the framebuffer's scale. wideLineQuadVertices says how many vertices (six per segment);
+// writeWideLineQuads writes them to `out` (room for that many, no alignment needed: the
+// renderer's upload, without a copy between).
 std::size_t wideLineQuadVertices(const std::vector<ShapeVertex>& segments, double pixelsPerMetre);
 void writeWideLineQuads(const std::vector<ShapeVertex>& segments, double widthPx,
                         double pixelsPerMetre, void* out);

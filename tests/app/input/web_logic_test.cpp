@@ -557,9 +557,9 @@ TEST(WideLineQuads, AsOpenGLRasterisesAWideLine) {
     ShapeBatch batch;
     batch.segment({0.0, 0.0}, {4.0, 1.0}, Color{1, 0, 0, 1}, Color{0, 0, 1, 1}); // x-major
     batch.segment({0.0, 0.0}, {1.0, -3.0}, Color{0, 1, 0, 1});                   // y-major
-    std::vector<ShapeVertex> tris;
-    appendWideLineQuads(batch.segmentVertices(), 4.0, 20.0, tris); // 4 px at 20 px/m: 0.2 m
+    std::vector<ShapeVertex> tris(wideLineQuadVertices(batch.segmentVertices(), 20.0));
     ASSERT_EQ(tris.size(), 12u);
+    writeWideLineQuads(batch.segmentVertices(), 4.0, 20.0, tris.data()); // 4 px at 20 px/m: 0.2 m
     // The x-major one is widened up and down by half the width; its ends keep their colours.
     EXPECT_FLOAT_EQ(tris[0].x, 0.0f);
     EXPECT_FLOAT_EQ(tris[0].y, -0.1f);
