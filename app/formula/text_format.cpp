@@ -240,12 +240,40 @@ bool isOperatorWord(const std::string& w) {
 }
 
 // The words of `text` between `from` and `to` (a line), indented when it continues a formula;
-// the spaces of a gap at its end (a line broken before an aside) left out.
-std::string lineOf(const std::vector<std::string>& words, std::size_t from, std::size_t to) {
+// the spaces of a gap at its end (a line broken before an aside) left out. A glued word is the
+// rest of a word broken inside (innerPieces): no space before it on a line.
+std::string lineOf(const std::vector<std::string>& words, const std::vector<bool>& glued,
+                   std::size_t from, std::size_t to) {
     while (to > from + 1 && words[to - 1].empty()) --to;
-    std::string line = from > 0 && isOperatorWord(words[from]) ? "  " : "";
-    for (std::size_t k = from; k < to; ++k) line += (k > from ? " " : "") + words[k];
+    std::string line = from > 0 && (isOperatorWord(words[from]) || glued[from]) ? "  " : "";
+    for (std::size_t k = from; k < to; ++k) line += (k > from && !glued[k] ? " " : "") + words[k];
     return line;
+}
+
+// A word wider than a line (a quotient or a product of long numbers:
+// "1000000·0.99999873006)/(1") in pieces: broken before each '/' that stands between ')' and '(',
+// and with `atProducts` before each '·' of a product of numbers too. Each piece after the first
+// starts with its operator, as a line wrapped before an operator does, so the chain reads on
+// (equation_check.h).
+std::vector<std::string> innerPieces(const std::string& word, bool atProducts) {
+    static const std::string kDot = "\u00b7";
+    std::vector<std::string> pieces;
+    std::size_t start = 0;
+    for (std::size_t i = 1; i < word.size(); ++i) {
+        // A product of numbers ("1000000·0.99999873006"), not a unit's ("kg·m/s").
+        const std::size_t next = i + kDot.size();
+        const bool product = atProducts && word.compare(i, kDot.size(), kDot) == 0 &&
+                             next < word.size() &&
+                             (std::isdigit(static_cast<unsigned char>(word[next])) ||
+                              word[next] == '(' || word[next] == '-');
+        const bool quotient =
+            word[i] == '/' && word[i - 1] == ')' && i + 1 < word.size() && word[i + 1] == '(';
+        if (!product && !quotient) continue;
+        pieces.push_back(word.substr(start, i - start));
+        start = i;
+    }
+    pieces.push_back(word.substr(start));
+    return pieces;
 }
 
 void wrapFormulaParagraph(const std::string& text, double width,
@@ -257,6 +285,25 @@ void wrapFormulaParagraph(const std::string& text, double width,
         words.push_back(text.substr(i, end - i));
         if (end >= text.size()) break;
         i = end + 1;
+    }
+    // A word that overflows a line of its own, with the operators before it that a line holds
+    // ("  + 1000000·0.99999873006)/(1" in a narrow window), is broken inside, between its
+    // factors (innerPieces), rather than be cut at the window's edge; never inside a number.
+    // At its quotients first, and only a piece still too wide at its products.
+    std::vector<bool> glued(words.size(), false);
+    for (const bool atProducts : {false, true}) {
+        for (std::size_t k = 0; k < words.size(); ++k) {
+            std::size_t first = k;
+            while (first > 0 && isOperatorWord(words[first - 1])) --first;
+            if (measure(lineOf(words, glued, first, k + 1)) <= width) continue;
+            const std::vector<std::string> pieces = innerPieces(words[k], atProducts);
+            if (pieces.size() < 2) continue;
+            const auto at = static_cast<std::ptrdiff_t>(k);
+            words.erase(words.begin() + at);
+            words.insert(words.begin() + at, pieces.begin(), pieces.end());
+            glued.insert(glued.begin() + at + 1, pieces.size() - 1, true);
+            k += pieces.size() - 1;
+        }
     }
     // Word k continues a short group in parentheses opened by an earlier word (a vector
     // "(6, 0)", a pair): at most kGroupWords words from '(' to ')', read as one where the group
@@ -273,11 +320,11 @@ void wrapFormulaParagraph(const std::string& text, double width,
         for (std::size_t e = k + 1; e < words.size() && e < k + kGroupWords; ++e) {
             if (words[e].find('(') != std::string::npos) break;
             if (words[e].find(')') == std::string::npos) continue;
-            if (measure(lineOf(words, k, e + 1)) > width) break;
+            if (measure(lineOf(words, glued, k, e + 1)) > width) break;
             // The line holding the group also holds the operators before it ("= (6, 0)").
             std::size_t first = k;
             while (first > 0 && isOperatorWord(words[first - 1])) --first;
-            groupOnItsOwn[k] = measure(lineOf(words, first, e + 1)) > width;
+            groupOnItsOwn[k] = measure(lineOf(words, glued, first, e + 1)) > width;
             for (std::size_t j = k + 1; j <= e; ++j) inGroup[j] = true;
             break;
         }
@@ -293,7 +340,7 @@ void wrapFormulaParagraph(const std::string& text, double width,
         if (isOperatorAt(k - 1) || isOperatorAt(k + 1) || (k >= 2 && isOperatorAt(k - 2)) ||
             isOperatorAt(k + 2) || words[k + 1].find('(') != std::string::npos)
             continue;
-        if (measure(lineOf(words, k - 1, k + 2)) > width) continue;
+        if (measure(lineOf(words, glued, k - 1, k + 2)) > width) continue;
         inGroup[k] = inGroup[k + 1] = true;
     }
     // A line may start at word k when k is not empty (the spaces of a gap stay together), the
@@ -314,12 +361,12 @@ void wrapFormulaParagraph(const std::string& text, double width,
         for (std::size_t k = from + 1; k < words.size(); ++k) {
             if (!canStart(k)) continue;
             if (first == words.size()) first = k;
-            if (measure(lineOf(words, from, k)) > width) break;
+            if (measure(lineOf(words, glued, from, k)) > width) break;
             next = k; // the line [from, k) fits: break there unless a later one does too
             if (!words[k - 1].empty() && std::strchr(",:;", words[k - 1].back())) clause = k;
         }
-        if (measure(lineOf(words, from, words.size())) <= width) break;
-        if (clause != words.size() && measure(lineOf(words, from, clause)) >= 0.5 * width)
+        if (measure(lineOf(words, glued, from, words.size())) <= width) break;
+        if (clause != words.size() && measure(lineOf(words, glued, from, clause)) >= 0.5 * width)
             next = clause;
         if (next == words.size()) next = first; // nothing fits: the shortest piece overflows
         if (next == words.size()) break;
@@ -330,13 +377,14 @@ void wrapFormulaParagraph(const std::string& text, double width,
         const std::size_t before = starts[starts.size() - 2];
         for (std::size_t k = starts.back() - 1; k > before; --k) {
             if (!canStart(k)) continue;
-            if (measure(lineOf(words, k, words.size())) <= width) starts.back() = k;
+            if (measure(lineOf(words, glued, k, words.size())) <= width) starts.back() = k;
             break;
         }
     }
     for (std::size_t i = 0; i < starts.size(); ++i) {
         if (i > 0) out += '\n';
-        out += lineOf(words, starts[i], i + 1 < starts.size() ? starts[i + 1] : words.size());
+        out +=
+            lineOf(words, glued, starts[i], i + 1 < starts.size() ? starts[i + 1] : words.size());
     }
 }
 

@@ -844,10 +844,38 @@ TEST(WrapFormula, BreaksBeforeOperatorsAndKeepsTheChainReadable) {
             EXPECT_TRUE(last != "=" && last != "+") << width << ": " << w;
             start = end + 1;
         }
-        for (const char* number : {"1·1.59369958", "1000000·0.99999873", "1000000.324"})
+        // A product wider than a line breaks between its factors, never inside a number.
+        for (const char* number : {"1.59369958", "0.99999873", "1000000.324"})
+            EXPECT_NE(w.find(number), std::string::npos) << width << ": " << w;
+        if (width >= 30.0) {
+            EXPECT_NE(w.find("1000000·0.99999873"), std::string::npos) << w;
+        }
+        EXPECT_EQ(checkEquations(w).checked, 1) << w;
+        EXPECT_TRUE(equationsHold(w, kFormatNumberUnit)) << w;
+    }
+    // A word wider than a line (the collision inspector's u of the high mass ratio in a docked
+    // window at 1280x720, UI 1.5: cut at the window's edge before) breaks inside, at its quotient
+    // first ("...)/(1"), at its products only where a piece is still too wide; units stay whole.
+    const std::string u = "u = (1·1.5937 + 1000000·0.99999873006)/(1 + 1000000) = 0.99999932376";
+    EXPECT_EQ(wrapFormula(u, 28, bytes),
+              "u = (1·1.5937\n  + 1000000·0.99999873006)\n  /(1 + 1000000)\n  = 0.99999932376");
+    EXPECT_EQ(wrapFormula(u, 20, bytes),
+              "u = (1·1.5937\n  + 1000000\n  ·0.99999873006)\n  /(1 + 1000000)\n  = 0.99999932376");
+    EXPECT_EQ(wrapFormula(u, 72, bytes), u);
+    for (double width = 18.0; width <= 72.0; width += 1.0) { // "  ·0.99999873006)" is 18 bytes
+        const std::string w = wrapFormula(u, width, bytes);
+        std::size_t start = 0;
+        while (start <= w.size()) {
+            const std::size_t end = std::min(w.find('\n', start), w.size());
+            EXPECT_LE(bytes(w.substr(start, end - start)), width) << width << ": " << w;
+            start = end + 1;
+        }
+        for (const char* number : {"1.5937", "0.99999873006", "1000000", "0.99999932376"})
             EXPECT_NE(w.find(number), std::string::npos) << width << ": " << w;
         EXPECT_EQ(checkEquations(w).checked, 1) << w;
+        EXPECT_TRUE(equationsHold(w, kFormatNumberUnit)) << w;
     }
+    EXPECT_EQ(wrapFormula("p = 2 kg·m/s", 4, bytes), "p\n  = 2\nkg·m/s");
     // Prose: at spaces, between clauses first; the last word is not left alone.
     EXPECT_EQ(wrapFormula("without Newton (reflect): no u, each block reverses its own velocity",
                           60, bytes),

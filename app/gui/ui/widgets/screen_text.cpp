@@ -35,6 +35,19 @@ struct RoleSpan {
 };
 std::vector<RoleSpan> gRoles;
 
+// Parts of draw lists holding a text wider than its room (markTextOverflowing), by vertex number.
+struct OverflowSpan {
+    const ImDrawList* list;
+    int from, to;
+};
+std::vector<OverflowSpan> gOverflows;
+
+bool overflowing(const ImDrawList& list, int vertex) {
+    for (const OverflowSpan& o : gOverflows)
+        if (o.list == &list && vertex >= o.from && vertex < o.to) return true;
+    return false;
+}
+
 std::string roleOf(const ImDrawList& list, int vertex) {
     for (auto it = gRoles.rbegin(); it != gRoles.rend(); ++it)
         if (it->list == &list && vertex >= it->from && vertex < it->to) return it->role;
@@ -215,7 +228,7 @@ void readList(const ImDrawList& list, const ImTextureID fontTexture, const Glyph
                 run.role = role;
             }
             appendUtf8(run.out.text, g.ref.glyph->Codepoint);
-            run.out.clipped = run.out.clipped || g.clipped;
+            run.out.clipped = run.out.clipped || g.clipped || overflowing(list, r.vertex);
             run.shown += g.hidden ? 0 : 1;
             run.penEnd = g.penX + g.ref.glyph->AdvanceX * g.scale;
             run.right = std::fmax(run.right, run.penEnd);
@@ -269,6 +282,11 @@ TextRole::~TextRole() {
         }
 }
 
+void markTextOverflowing(const ImDrawList* list, int from, int to) {
+    gOverflows.push_back({list, from, to});
+}
+
 void forgetTextRoles() {
     gRoles.clear();
+    gOverflows.clear();
 }

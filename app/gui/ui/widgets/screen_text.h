@@ -52,4 +52,10 @@ class TextRole {
     ImDrawList* list_;
     const char* outer_;
 };
+// The glyphs drawn into `list` between vertex numbers `from` and `to` are of a text wider than
+// the room it was given (a wrapped text with a piece no line could hold): their texts are
+// "clipped", for ImGui leaves out the glyphs wholly past a window's edge and the draw data alone
+// cannot tell that anything is missing.
+void markTextOverflowing(const ImDrawList* list, int from, int to);
+// Forgets the roles and the overflowing texts (each frame's start).
 void forgetTextRoles();

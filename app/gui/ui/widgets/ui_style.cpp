@@ -3,6 +3,7 @@
 #include "dock_layout.h"
 #include "imgui_ext.h"
 #include "palette.h"
+#include "screen_text.h"
 #include "text_format.h"
 #include "view.h"
 #include "whole_rows.h"
@@ -324,9 +325,14 @@ const std::string& wrappedFormula(const std::string& text, float width) {
 namespace {
 
 // A wrapped text's lines: one row for a region that shows whole rows (an equation is not shown
-// without its result).
-void textLines(const std::string& lines) {
+// without its result). Wider than `width` (a piece no line could hold), it is marked as cut.
+void textLines(const std::string& lines, float width) {
+    ImDrawList* list = ImGui::GetWindowDrawList();
+    const int from = imgui_ext::drawListVertices(*list);
     ImGui::TextUnformatted(lines.c_str(), lines.c_str() + lines.size());
+    constexpr float kSlack = 0.5f; // px: float rounding
+    if (ImGui::GetItemRectSize().x > width + kSlack)
+        markTextOverflowing(list, from, imgui_ext::drawListVertices(*list));
     if (lines.find('\n') != std::string::npos)
         WholeRows::keepTogether(ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
 }
@@ -334,11 +340,13 @@ void textLines(const std::string& lines) {
 } // namespace
 
 void textWrappedAtSpaces(const std::string& text) {
-    textLines(wrapped(text, ImGui::GetContentRegionAvail().x, false));
+    const float width = ImGui::GetContentRegionAvail().x;
+    textLines(wrapped(text, width, false), width);
 }
 
 void textWrappedFormula(const std::string& text) {
-    textLines(wrapped(text, ImGui::GetContentRegionAvail().x, true));
+    const float width = ImGui::GetContentRegionAvail().x;
+    textLines(wrapped(text, width, true), width);
 }
 
 void wrappedTooltip(const std::string& text) {
