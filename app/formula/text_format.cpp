@@ -239,6 +239,13 @@ bool isOperatorWord(const std::string& w) {
     return false;
 }
 
+bool isRelationWord(const std::string& w) {
+    static const char* const relations[] = {"=", "<", ">", "<=", ">=", "\u2264", "\u2265"};
+    for (const char* r : relations)
+        if (w == r) return true;
+    return false;
+}
+
 // The words of `text` between `from` and `to` (a line), indented when it continues a formula;
 // the spaces of a gap at its end (a line broken before an aside) left out. A glued word is the
 // rest of a word broken inside (innerPieces): no space before it on a line.
@@ -325,6 +332,13 @@ void wrapFormulaParagraph(const std::string& text, double width,
             std::size_t first = k;
             while (first > 0 && isOperatorWord(words[first - 1])) --first;
             groupOnItsOwn[k] = measure(lineOf(words, glued, first, e + 1)) > width;
+            // After an arithmetic operator ("0.99999932376 - 1·(1.5937 - 0.99999932376)") a
+            // line starting at the group would leave its operator at the end of the line before
+            // and the chain unreadable: the group is wrapped as the rest of the formula is.
+            if (groupOnItsOwn[k] && !isRelationWord(words[k - 1])) {
+                groupOnItsOwn[k] = false;
+                break;
+            }
             for (std::size_t j = k + 1; j <= e; ++j) inGroup[j] = true;
             break;
         }

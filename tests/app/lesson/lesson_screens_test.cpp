@@ -10,6 +10,7 @@
 // windows the moment opens do not squeeze the scene); no text drawn over the scene runs out of
 // it, overlaps another or a block or mark it does not name; the blocks a step names are big enough
 // to see. The figures per screen are printed.
+#include "equation_check.h"
 #include "frame_json.h"
 #include "lecture3_lesson.h"
 #include "lesson.h"
@@ -175,6 +176,26 @@ TEST(LessonScreens, NoCaptionTextOrInspectorEquationIsClipped) {
         }
         std::printf("%s: %d clipped caption texts and equations\n", screen.dir, clipped);
     }
+}
+
+// The collision inspector's equations hold as printed, read as a student reads them, line by
+// line (equation_check.h: a line that starts with an operator continues the chain): step 17's v1'
+// at 1280x720 UI 1.5 was broken after its minus, "v1' = 0.99999932376 -" over
+// "1·(1.5937 - 0.99999932376) = 0.4063", a second chain that does not hold.
+TEST(LessonScreens, EveryInspectorEquationHoldsAsPrinted) {
+    int checked = 0;
+    for (const Shot& s : shots()) {
+        for (const auto& t : s.texts) {
+            if (t.at("window") != "Collision inspector") continue;
+            const std::string text = t.at("text").get<std::string>();
+            const EquationReport report = checkEquations(text, kFormatNumberUnit);
+            checked += report.checked;
+            for (const EquationProblem& p : report.problems)
+                ADD_FAILURE() << s.name() << ": '" << text << "': " << p.chain << ": " << p.why;
+        }
+    }
+    std::printf("%d relations of the inspector's equations checked\n", checked);
+    EXPECT_GT(checked, 0);
 }
 
 // No text drawn over the scene (labels, values, axis numbers, a caption plate) runs out of the
