@@ -363,13 +363,53 @@ void commandRuns(const ImDrawList* list, const ImDrawCmd& cmd, const ImDrawData*
                     kMinClearedPixels, runs);
 }
 
+// The framebuffer pixels (a box in GL's rows, y up) that the `count` indexed triangles can
+// touch: a pixel is drawn only where its centre is inside a triangle, so inside the box of their
+// vertices; a 32nd of a pixel more on every side (GL's float transform and Mesa's 1/256 px
+// snapping move a vertex far less). Everything when a vertex is not finite.
+ScissorBox trianglesReach(const ImDrawVert* vertices, const ImDrawIdx* indices, unsigned count,
+                          const ImDrawData* data, int fbWidth, int fbHeight) {
+    const ScissorBox everywhere{-1, -1, fbWidth + 2, fbHeight + 2};
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    for (unsigned k = 0; k < count; ++k) {
+        const ImVec2 p = vertices[indices[k]].pos;
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) return everywhere;
+        x0 = std::min(x0, double(p.x)), x1 = std::max(x1, double(p.x));
+        y0 = std::min(y0, double(p.y)), y1 = std::max(y1, double(p.y));
+    }
+    if (!(x0 <= x1)) return {}; // no triangle
+    const ImVec2 origin = data->DisplayPos, scale = data->FramebufferScale;
+    constexpr double kSlack = 1.0 / 32.0;
+    // The first and last pixel (column, or row from the top) whose centre is within [a, b] (in
+    // framebuffer pixels), clamped to a pixel beyond the framebuffer.
+    const auto first = [&](double a, int size) {
+        return static_cast<int>(std::ceil(std::clamp(a - 0.5 - kSlack, -2.0, size + 2.0)));
+    };
+    const auto last = [&](double b, int size) {
+        return static_cast<int>(std::floor(std::clamp(b - 0.5 + kSlack, -2.0, size + 2.0)));
+    };
+    const int c0 = first((x0 - origin.x) * scale.x, fbWidth);
+    const int c1 = last((x1 - origin.x) * scale.x, fbWidth);
+    const int r0 = first((y0 - origin.y) * scale.y, fbHeight);
+    const int r1 = last((y1 - origin.y) * scale.y, fbHeight);
+    if (c1 < c0 || r1 < r0) return {}; // no pixel centre inside
+    return {c0, fbHeight - 1 - r1, c1 - c0 + 1, r1 - r0 + 1};
+}
+
+bool overlaps(const ScissorBox& a, const ScissorBox& b) {
+    return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height &&
+           b.y < a.y + a.height;
+}
+
 // An opaque fill (findOpaqueFills): its sure pixels within `scissor` cleared to its colour (the
 // colour its triangles give them: one colour, alpha 255, blended over anything), then its
 // triangles `draw`n under the scissor's bands around them (the fill's rounded corners and
-// anti-aliased-free edges); the command's scissor set again after.
+// anti-aliased-free edges), in those bands only that its triangles reach (`reach`,
+// trianglesReach: a band they do not reach would get no pixel from them, and each draw costs the
+// main thread Mesa's set-up of every triangle); the command's scissor set again after.
 template <class Draw>
-void drawOpaqueFill(const UiDrawRun& run, const ScissorBox& scissor, int fbHeight, Draw draw,
-                    bool clear = true) {
+void drawOpaqueFill(const UiDrawRun& run, const ScissorBox& scissor, const ScissorBox& reach,
+                    int fbHeight, Draw draw, bool clear = true) {
     // The sure pixels in GL's rows (y up), clipped to the scissor.
     const GLint sx1 = scissor.x + scissor.width, sy1 = scissor.y + scissor.height;
     const GLint x0 = std::max(scissor.x, run.inside.x0), x1 = std::min(sx1, run.inside.x1);
@@ -392,7 +432,7 @@ void drawOpaqueFill(const UiDrawRun& run, const ScissorBox& scissor, int fbHeigh
                                  {scissor.x, y0, x0 - scissor.x, y1 - y0},              // left
                                  {x1, y0, sx1 - x1, y1 - y0}};                          // right
     for (const ScissorBox& b : bands) {
-        if (b.width <= 0 || b.height <= 0) continue;
+        if (b.width <= 0 || b.height <= 0 || !overlaps(b, reach)) continue;
         glScissor(b.x, b.y, b.width, b.height);
         draw();
     }
@@ -462,7 +502,10 @@ void uiRendererRender(const ImDrawData* data) {
                     const bool skip =
                         planned && fill < gUi.fillSkipped.size() && gUi.fillSkipped[fill];
                     ++fill;
-                    drawOpaqueFill(run, scissor, fbHeight, draw, !skip);
+                    const ScissorBox reach = trianglesReach(
+                        list->VtxBuffer.Data + cmd.VtxOffset, list->IdxBuffer.Data + run.firstIndex,
+                        run.indexCount, data, fbWidth, fbHeight);
+                    drawOpaqueFill(run, scissor, reach, fbHeight, draw, !skip);
                 }
             }
         }
