@@ -132,14 +132,14 @@ std::string speedText(const App& app, std::size_t i, double speed) {
 void drawMomentumValues(const App& app, ImDrawList* dl, Taken& placed) {
     if (!app.view.show.vectors) return;
     const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
+    const ArrowsOnScreen arrows(app.view.camera, &app.sim.world().bounds);
     std::optional<RectStrips> rows; // the blocks' (blockRows), when a value is written
     int written = 0;
     for (std::size_t i = 0; i < app.sim.world().blocks.size(); ++i) {
         const Block& b = app.sim.world().blocks[i];
         if (!b.isDynamic() || written >= kMaxArrowValueLabels) continue;
         const Vec2 p = (b.velocity - u) * b.mass;
-        const ArrowOnScreen a = arrowOnScreen(app.view.camera, b.position, p * kMomentumArrowScale,
-                                              &app.sim.world().bounds);
+        const ArrowOnScreen a = arrows(b.position, p * kMomentumArrowScale);
         if (a.toScale) continue;
         const std::string inspected = momentumAsInspected(app, i);
         if (!rows) rows = blockRows(placed, app.view.camera.viewport());
@@ -161,14 +161,14 @@ void drawArrowValues(const App& app, ImDrawList* dl, Taken& placed) {
     const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
     const bool labelAll =
         relative && app.sim.world().blocks.size() <= static_cast<std::size_t>(kCrowdedScene);
+    const ArrowsOnScreen arrows(app.view.camera, &app.sim.world().bounds);
     std::optional<RectStrips> rows; // the blocks' (blockRows), when a value is written
     int written = 0;
     for (std::size_t i = 0; i < app.sim.world().blocks.size(); ++i) {
         const Block& b = app.sim.world().blocks[i];
         if (b.kind == BodyKind::Static || written >= kMaxArrowValueLabels) continue;
         const Vec2 w = b.velocity - u;
-        const ArrowOnScreen a = arrowOnScreen(app.view.camera, b.position, w * kVelocityArrowScale,
-                                              &app.sim.world().bounds);
+        const ArrowOnScreen a = arrows(b.position, w * kVelocityArrowScale);
         if (a.toScale && !labelAll) continue;
         const std::string text =
             relative ? frameVelocityLabel(i < app.sim.labels.size() ? app.sim.labels[i].name : "",
