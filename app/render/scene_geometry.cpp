@@ -19,34 +19,43 @@ double displayedArrowPx(double lengthPx, double kneePx) {
 }
 
 ArrowOnScreen arrowOnScreen(const Camera& camera, Vec2 from, Vec2 vector, const Bounds* arena) {
-    ArrowOnScreen a;
-    const double ppm = camera.pixelsPerMetre();
-    const double lengthPx = length(vector) * ppm;
-    if (!(lengthPx > 0.0) || !std::isfinite(lengthPx)) {
-        a.tip = from;
-        return a;
-    }
+    return ArrowsOnScreen(camera, arena)(from, vector);
+}
+
+ArrowsOnScreen::ArrowsOnScreen(const Camera& camera, const Bounds* arena) : camera_(camera) {
     const ScreenRect& vp = camera.viewport();
-    const double knee = kArrowKneeShare * std::min(vp.width, vp.height);
-    double shown = displayedArrowPx(lengthPx, knee);
-    // Cut where the arrow leaves the viewport or the arena (the head stays inside both).
-    const Vec2 s = camera.worldToScreen(from);
-    const Vec2 dir{vector.x / length(vector), -vector.y / length(vector)}; // screen, y down
-    double limits[2][2] = {{vp.x, vp.x + vp.width}, {vp.y, vp.y + vp.height}};
+    knee_ = kArrowKneeShare * std::min(vp.width, vp.height);
+    // The head stays inside the viewport and the arena.
+    limits_[0][0] = vp.x, limits_[0][1] = vp.x + vp.width;
+    limits_[1][0] = vp.y, limits_[1][1] = vp.y + vp.height;
     if (arena) {
         const Vec2 a = camera.worldToScreen(arena->min), b = camera.worldToScreen(arena->max);
         const double box[2][2] = {{std::min(a.x, b.x), std::max(a.x, b.x)},
                                   {std::min(a.y, b.y), std::max(a.y, b.y)}};
         for (int k = 0; k < 2; ++k) {
-            limits[k][0] = std::max(limits[k][0], box[k][0]);
-            limits[k][1] = std::min(limits[k][1], box[k][1]);
+            limits_[k][0] = std::max(limits_[k][0], box[k][0]);
+            limits_[k][1] = std::min(limits_[k][1], box[k][1]);
         }
     }
+}
+
+ArrowOnScreen ArrowsOnScreen::operator()(Vec2 from, Vec2 vector) const {
+    ArrowOnScreen a;
+    const double size = length(vector);
+    const double lengthPx = size * camera_.pixelsPerMetre();
+    if (!(lengthPx > 0.0) || !std::isfinite(lengthPx)) {
+        a.tip = from;
+        return a;
+    }
+    double shown = displayedArrowPx(lengthPx, knee_);
+    // Cut where the arrow leaves the viewport or the arena.
+    const Vec2 s = camera_.worldToScreen(from);
+    const Vec2 dir{vector.x / size, -vector.y / size}; // screen, y down
     const double start[2] = {s.x, s.y}, d[2] = {dir.x, dir.y};
     for (int k = 0; k < 2; ++k) {
-        if (start[k] < limits[k][0] || start[k] > limits[k][1]) continue; // from off screen
-        if (d[k] > 1e-12) shown = std::min(shown, (limits[k][1] - 2.0 - start[k]) / d[k]);
-        if (d[k] < -1e-12) shown = std::min(shown, (limits[k][0] + 2.0 - start[k]) / d[k]);
+        if (start[k] < limits_[k][0] || start[k] > limits_[k][1]) continue; // from off screen
+        if (d[k] > 1e-12) shown = std::min(shown, (limits_[k][1] - 2.0 - start[k]) / d[k]);
+        if (d[k] < -1e-12) shown = std::min(shown, (limits_[k][0] + 2.0 - start[k]) / d[k]);
     }
     shown = std::max(0.0, shown);
     a.toScale = shown >= lengthPx - 1e-9;
@@ -153,13 +162,13 @@ void SceneGeometry::addTrails(const SceneView& view, const Trails& trails) {
 // frame: w = v - u in the centre of mass's.
 void SceneGeometry::addArrows(const SceneView& view) {
     const double px = view.camera->pixelsToMetres(1.0);
-    const Bounds& bounds = view.world->bounds; // arrows end at the arena's walls
+    const ArrowsOnScreen arrows(*view.camera, &view.world->bounds); // ending at the arena's walls
     // Forces: wide arrows under the velocity arrows (a thrust along the motion shares their line).
     for (std::size_t i = 0; i < view.world->blocks.size(); ++i) {
         const Vec2 f = shownForce(view, i);
         if (f == Vec2{}) continue;
         const Vec2 from = view.world->blocks[i].position;
-        const Vec2 tip = arrowOnScreen(*view.camera, from, f * kForceArrowScale, &bounds).tip;
+        const Vec2 tip = arrows(from, f * kForceArrowScale).tip;
         over.arrow(from, tip, kForceShaftPx * px, kArrowHeadPx * 1.3 * px, view.theme->force);
     }
     if (!view.vectors) return;
@@ -168,11 +177,9 @@ void SceneGeometry::addArrows(const SceneView& view) {
     const bool heads = dynamic <= kMomentumHeadsUpTo;
     for (const Block& bl : view.world->blocks) {
         if (!bl.isDynamic()) continue;
-        const Vec2 tip =
-            arrowOnScreen(*view.camera, bl.position,
-                          (bl.velocity - view.frameVelocity) * (bl.mass * kMomentumArrowScale),
-                          &bounds)
-                .tip;
+        const Vec2 tip = arrows(bl.position, (bl.velocity - view.frameVelocity) *
+                                                 (bl.mass * kMomentumArrowScale))
+                             .tip;
         if (heads)
             momenta.lineArrow(bl.position, tip, kArrowHeadPx * 1.3 * px, view.theme->momentum);
         else
@@ -181,9 +188,7 @@ void SceneGeometry::addArrows(const SceneView& view) {
     for (const Block& bl : view.world->blocks) {
         if (bl.kind == BodyKind::Static) continue;
         const Vec2 tip =
-            arrowOnScreen(*view.camera, bl.position,
-                          (bl.velocity - view.frameVelocity) * kVelocityArrowScale, &bounds)
-                .tip;
+            arrows(bl.position, (bl.velocity - view.frameVelocity) * kVelocityArrowScale).tip;
         over.lineArrow(bl.position, tip, kArrowHeadPx * px, view.theme->velocity);
     }
 }

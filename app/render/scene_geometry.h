@@ -66,6 +66,19 @@ double displayedArrowPx(double lengthPx, double kneePx);
 // the viewport and, given, inside `arena` (the world's bounds) where `from` is.
 ArrowOnScreen arrowOnScreen(const Camera& camera, Vec2 from, Vec2 vector,
                             const Bounds* arena = nullptr);
+// What arrowOnScreen works out of the camera and the arena alone, once for the arrows of a frame
+// (a gas draws two thousand): arrows(from, vector) is arrowOnScreen(camera, from, vector, arena),
+// bit for bit. The camera and the arena must not change while it is used.
+class ArrowsOnScreen {
+  public:
+    ArrowsOnScreen(const Camera& camera, const Bounds* arena = nullptr);
+    ArrowOnScreen operator()(Vec2 from, Vec2 vector) const;
+
+  private:
+    const Camera& camera_;
+    double knee_;         // px (displayedArrowPx)
+    double limits_[2][2]; // px: along x and y, the least and the most the head may reach
+};
 // Blocks up to this size on screen (pixels) may be drawn as point sprites.
 constexpr double kMaxPointSpritePx = 64.0;
 // With more moving blocks than this, momentum arrows are drawn without heads (the velocity arrow

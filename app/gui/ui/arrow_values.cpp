@@ -31,7 +31,7 @@ const SceneTheme& theme() {
 // A value written at the head of an arrow (from `base` to `tip`, m) cut at the view's edge or the
 // arena's wall: over the head (beside a vertical one), kept inside the view, in a free row.
 void drawValueAtTip(const App& app, ImDrawList* dl, Taken& placed, Vec2 base, Vec2 tip,
-                    const std::string& text, ImU32 color, const RectStrips& rows) {
+                    const std::string& text, ImU32 color, const BlockStrips& blocks) {
     const ImVec2 ts = ImGui::CalcTextSize(text.c_str());
     const ScreenRect& vp = app.view.camera.viewport();
     const Vec2 at = app.view.camera.worldToScreen(tip);
@@ -48,7 +48,7 @@ void drawValueAtTip(const App& app, ImDrawList* dl, Taken& placed, Vec2 base, Ve
         freeRow(placed, vp, x,
                 std::clamp(static_cast<float>(at.y) - ts.y - 6.0f, static_cast<float>(vp.y),
                            static_cast<float>(vp.y + vp.height) - ts.y),
-                ts, &rows);
+                ts, &blocks);
     placed.texts.push_back({spot.x, spot.y, ts.x, ts.y});
     shadowText(dl, spot, color, text.c_str(), packed(theme().textShadow));
 }
@@ -129,25 +129,25 @@ std::string speedText(const App& app, std::size_t i, double speed) {
 // The momentum arrows too long to draw to scale carry their value at their head (p = m·w in
 // the view's frame), in the momentum arrows' colour; with the inspector's digits where it shows
 // the block's last collision (momentumAsInspected).
-void drawMomentumValues(const App& app, ImDrawList* dl, Taken& placed) {
+void drawMomentumValues(const App& app, ImDrawList* dl, Taken& placed,
+                        std::optional<BlockStrips>& blocks) {
     if (!app.view.show.vectors) return;
     const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
-    std::optional<RectStrips> rows; // the blocks' (blockRows), when a value is written
+    const ArrowsOnScreen arrows(app.view.camera, &app.sim.world().bounds);
     int written = 0;
     for (std::size_t i = 0; i < app.sim.world().blocks.size(); ++i) {
         const Block& b = app.sim.world().blocks[i];
         if (!b.isDynamic() || written >= kMaxArrowValueLabels) continue;
         const Vec2 p = (b.velocity - u) * b.mass;
-        const ArrowOnScreen a = arrowOnScreen(app.view.camera, b.position, p * kMomentumArrowScale,
-                                              &app.sim.world().bounds);
+        const ArrowOnScreen a = arrows(b.position, p * kMomentumArrowScale);
         if (a.toScale) continue;
         const std::string inspected = momentumAsInspected(app, i);
-        if (!rows) rows = blockRows(placed, app.view.camera.viewport());
+        if (!blocks) blocks = blockStrips(placed, app.view.camera.viewport());
         drawValueAtTip(
             app, dl, placed, b.position, a.tip,
             (inspected.empty() ? formatNumber(b.mass * length(b.velocity - u)) : inspected) +
                 " kg·m/s",
-            packed(theme().momentum.withAlpha(1.0f)), *rows);
+            packed(theme().momentum.withAlpha(1.0f)), *blocks);
         ++written;
     }
 }
@@ -155,20 +155,20 @@ void drawMomentumValues(const App& app, ImDrawList* dl, Taken& placed) {
 // Arrows too long to draw to scale (compressed and cut at the view's edge) carry their value; in
 // the centre-of-mass frame every arrow does (w1 = 4 m/s: the lecture's numbers), in a scene of
 // few blocks.
-void drawArrowValues(const App& app, ImDrawList* dl, Taken& placed) {
+void drawArrowValues(const App& app, ImDrawList* dl, Taken& placed,
+                     std::optional<BlockStrips>& blocks) {
     if (!app.view.show.vectors) return;
     const bool relative = app.view.frame != ViewFrame::World;
     const Vec2 u = frameVelocity(app.sim.world(), app.view.frame);
     const bool labelAll =
         relative && app.sim.world().blocks.size() <= static_cast<std::size_t>(kCrowdedScene);
-    std::optional<RectStrips> rows; // the blocks' (blockRows), when a value is written
+    const ArrowsOnScreen arrows(app.view.camera, &app.sim.world().bounds);
     int written = 0;
     for (std::size_t i = 0; i < app.sim.world().blocks.size(); ++i) {
         const Block& b = app.sim.world().blocks[i];
         if (b.kind == BodyKind::Static || written >= kMaxArrowValueLabels) continue;
         const Vec2 w = b.velocity - u;
-        const ArrowOnScreen a = arrowOnScreen(app.view.camera, b.position, w * kVelocityArrowScale,
-                                              &app.sim.world().bounds);
+        const ArrowOnScreen a = arrows(b.position, w * kVelocityArrowScale);
         if (a.toScale && !labelAll) continue;
         const std::string text =
             relative ? frameVelocityLabel(i < app.sim.labels.size() ? app.sim.labels[i].name : "",
@@ -186,8 +186,8 @@ void drawArrowValues(const App& app, ImDrawList* dl, Taken& placed) {
         }
         const float x = std::clamp(static_cast<float>(at.x) - ts.x * 0.5f, static_cast<float>(vp.x),
                                    static_cast<float>(vp.x + vp.width) - ts.x);
-        if (!rows) rows = blockRows(placed, vp);
-        const ImVec2 spot = freeRow(placed, vp, x, static_cast<float>(at.y), ts, &*rows);
+        if (!blocks) blocks = blockStrips(placed, vp);
+        const ImVec2 spot = freeRow(placed, vp, x, static_cast<float>(at.y), ts, &*blocks);
         placed.texts.push_back({spot.x, spot.y, ts.x, ts.y});
         shadowText(dl, spot, packed(theme().velocity), text.c_str(), packed(theme().textShadow));
         ++written;
@@ -196,8 +196,8 @@ void drawArrowValues(const App& app, ImDrawList* dl, Taken& placed) {
 
 // Force arrows carry their value, "F = 2 N" (or the vector when it is not along an axis), at the
 // head: the arrow's length is to scale only up to the knee.
-void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl, Taken& placed) {
-    std::optional<RectStrips> rows; // the blocks' (blockRows), when a value is written
+void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl, Taken& placed,
+                     std::optional<BlockStrips>& blocks) {
     int written = 0;
     for (std::size_t i = 0; i < app.sim.world().blocks.size() && written < kMaxArrowValueLabels;
          ++i) {
@@ -225,8 +225,8 @@ void drawForceValues(const App& app, const SceneView& view, ImDrawList* dl, Take
             y = ty - ts.y * 0.5f;
         }
         x = std::clamp(x, static_cast<float>(vp.x), static_cast<float>(vp.x + vp.width) - ts.x);
-        if (!rows) rows = blockRows(placed, vp);
-        const ImVec2 at = freeSpot(placed, vp, x, y, y, ts, ts.y, &*rows); // clear of the texts
+        if (!blocks) blocks = blockStrips(placed, vp);
+        const ImVec2 at = freeSpot(placed, vp, x, y, y, ts, ts.y, &*blocks); // clear of the texts
         placed.texts.push_back({at.x, at.y, ts.x, ts.y});
         shadowText(dl, at, sceneTheme(app.view.lightTheme).force.packed(), text,
                    packed(theme().textShadow));

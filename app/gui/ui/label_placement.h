@@ -11,6 +11,11 @@
 
 using Taken = UiState::TakenOnScreen;
 
+// The blocks taken on screen by rows and by columns (blockStrips).
+struct BlockStrips {
+    RectStrips rows, columns;
+};
+
 // Over this many blocks a scene is crowded: only the selected block's name goes beside its block
 // when it does not fit on it, and only a few arrows carry their value.
 constexpr int kCrowdedScene = 20; // blocks
@@ -33,23 +38,23 @@ double coveredAt(const Taken& placed, const ScreenRect& view, float x, float y, 
 // `placed` (labels already drawn and blocks); where no row is free, the same rows half its width
 // to the right, then to the left, and further. Where nothing is free, the spot in `view`
 // covering the least (a block rather than its label), else (x, above).
-// `blockRows`, where given, is blockRows(placed, ...) (placed.blocks unchanged since): the same
+// `blocks`, where given, is blockStrips(placed, ...) (placed.blocks unchanged since): the same
 // spot, found faster.
 ImVec2 freeSpot(const Taken& placed, const ScreenRect& view, float x, float above, float below,
-                ImVec2 size, float line, const RectStrips* blockRows = nullptr);
+                ImVec2 size, float line, const BlockStrips* blocks = nullptr);
 
 // The spot for a text of size `ts` at (x, y): there, or moved down a line at a time (at most
 // six) until it overlaps nothing in `placed`; where the rows down leave `view`, up instead; where
 // no row is free, a free spot sideways (freeSpot: lecture3 step 27's values were written over the
 // blocks of a pile), else the row covering the least.
 ImVec2 freeRow(const Taken& placed, const ScreenRect& view, float x, float y, ImVec2 ts,
-               const RectStrips* blockRows = nullptr);
+               const BlockStrips* blocks = nullptr);
 
-// placed.blocks by rows of `view` (rect_strips.h), for the searches of a loop that takes texts
-// only (the arrows' values): each search then looks at the blocks near it, not at a thousand.
-// placed.blocks must not change while it is used (one taken since is noticed: the searches then
-// look at every block).
-RectStrips blockRows(const Taken& placed, const ScreenRect& view);
+// placed.blocks by rows and by columns of `view` (rect_strips.h), for the searches of a loop
+// that takes texts only (the arrows' values): each search then looks at the blocks near it (in
+// both its rows and its columns), not at a thousand. placed.blocks must not change while it is
+// used (one taken since is noticed: the searches then look at every block).
+BlockStrips blockStrips(const Taken& placed, const ScreenRect& view);
 
 // Takes the blocks' rectangles on screen (placed.blocks[i] is block i's), then the overlays'
 // marks drawn later (the point of impact's boxes, the centre of mass): no label goes over them.

@@ -413,14 +413,15 @@ void drawSceneDecorations(App& app) {
     drawReferenceLine(app, dl, placed);
     drawLargeCount(app, dl, placed); // before the labels and values: they go around it
     drawLabels(app, dl, placed);
-    drawArrowValues(app, dl, placed);
-    drawMomentumValues(app, dl, placed);
+    std::optional<BlockStrips> blocks; // the values' (they take texts only)
+    drawArrowValues(app, dl, placed, blocks);
+    drawMomentumValues(app, dl, placed, blocks);
     SceneView forces; // what the scene renderer draws the force arrows from
     forces.world = &app.sim.world();
     forces.vectors = app.view.show.vectors;
     forces.thrustBlock = app.sim.pushedBlock(); // the thrust, or the player's push
     forces.thrust = app.sim.pushForce();
-    drawForceValues(app, forces, dl, placed);
+    drawForceValues(app, forces, dl, placed, blocks);
     drawFlingReadout(app, dl);
     ImGui::PopFont();
     drawHoverTooltip(app);

@@ -25,6 +25,25 @@ class RectStrips {
     // starting at `from` with start + size = `to` along the axis), in the list's order, each
     // once, until it returns false.
     template <typename Visit> void forEach(double from, double to, Visit visit) const {
+        gather(from, to);
+        visitGathered(visit);
+    }
+    // The same for the rectangles that both forEach(from, to) here and across.forEach(acrossFrom,
+    // acrossTo) visit: `across` files the same list by strips of the other axis (a region's rows
+    // and its columns: fewer to visit than in either).
+    template <typename Visit>
+    void forEachAlso(const RectStrips& across, double from, double to, double acrossFrom,
+                     double acrossTo, Visit visit) const {
+        gather(from, to);
+        across.gather(acrossFrom, acrossTo);
+        const std::size_t words = words_ < across.words_ ? words_ : across.words_;
+        for (std::size_t w = 0; w < words_; ++w) query_[w] &= w < words ? across.query_[w] : 0;
+        visitGathered(visit);
+    }
+
+  private:
+    // The union of the strips from `from` to `to` into query_.
+    void gather(double from, double to) const {
         // Either way round; a NaN end reaches both ends (overlapArea's std::min and std::max
         // pass over a NaN).
         const bool nan = from != from || to != to;
@@ -36,15 +55,16 @@ class RectStrips {
             const std::uint64_t* const bits = bits_.data() + static_cast<std::size_t>(s) * words_;
             for (std::size_t w = 0; w < words_; ++w) query[w] |= bits[w];
         }
+    }
+    template <typename Visit> void visitGathered(Visit& visit) const {
         for (std::size_t w = 0; w < words_; ++w) {
-            for (std::uint64_t word = query[w]; word != 0; word &= word - 1) {
+            for (std::uint64_t word = query_[w]; word != 0; word &= word - 1) {
                 const auto i = w * 64 + static_cast<std::size_t>(__builtin_ctzll(word));
                 if (!visit((*rects_)[i])) return;
             }
         }
     }
 
-  private:
     // The strip of v, not NaN (clamped to the ends): never decreasing as v grows.
     int strip(double v) const;
 

@@ -237,7 +237,7 @@ TEST(LabelPlacement, SpotsAreThoseOfThePlainSearch) {
     for (int trial = 0; trial < 60; ++trial) {
         const int blocks = trial % 3 == 0 ? 1000 : static_cast<int>(random() % 200);
         Screen s = randomScreen(random, blocks, static_cast<int>(random() % 60));
-        const RectStrips rows = blockRows(s.taken, s.view);
+        const BlockStrips rows = blockStrips(s.taken, s.view);
         std::uniform_real_distribution<float> x(-20.0f, 1280.0f), y(0.0f, 760.0f);
         for (int q = 0; q < 40; ++q) {
             const ImVec2 ts(static_cast<float>(20 + random() % 140),
@@ -294,7 +294,7 @@ TEST(LabelPlacement, SpotsAreThoseOfThePlainSearchOnTrickyScreens) {
             s.taken.texts.push_back({unit(random) * 1280.0, unit(random) * 740.0,
                                      20.0 + unit(random) * 120.0,
                                      13.0 + (lattice ? 0.0 : unit(random))});
-        const RectStrips rows = blockRows(s.taken, s.view);
+        const BlockStrips rows = blockStrips(s.taken, s.view);
         std::uniform_real_distribution<float> x(-20.0f, 1280.0f), y(0.0f, 760.0f);
         for (int q = 0; q < 30; ++q) {
             const ImVec2 ts(20.0f + static_cast<float>(unit(random)) * 140.0f,
@@ -354,7 +354,7 @@ TEST(LabelPlacement, MirroredTwinsPickedByTheSumsToTheBit) {
             for (const ScreenRect& r : *half)
                 (asTexts && &r - half->data() < n / 3 ? s.taken.texts : s.taken.blocks)
                     .push_back(r);
-        const RectStrips rows = blockRows(s.taken, s.view);
+        const BlockStrips rows = blockStrips(s.taken, s.view);
         const ImVec2 want = before::freeSpot(s.taken, s.view, qx, qy, qy, ts, ts.y);
         const ImVec2 got = freeSpot(s.taken, s.view, qx, qy, qy, ts, ts.y, &rows);
         EXPECT_EQ(got.x, want.x) << "trial " << trial;
@@ -363,6 +363,75 @@ TEST(LabelPlacement, MirroredTwinsPickedByTheSumsToTheBit) {
     }
     EXPECT_GT(pickedRight, 20); // the twins were weighed, either way
     EXPECT_GT(pickedLeft, 20);
+}
+
+// freeSpot and freeRow find the plain loops' spots on odd input, where the rows or the places
+// sideways coincide or overlap and where a number is not finite: a line of no height (every row
+// the same), labels of no width (every place sideways the same), labels taller than a line (rows
+// overlapping), a line going up (rows in the other order), and NaN and infinite edges in the
+// blocks, the texts and the query.
+TEST(LabelPlacement, SpotsAreThoseOfThePlainSearchOnOddInput) {
+    std::mt19937 random(47);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const float odd[] = {NAN, INFINITY, -INFINITY};
+    int free = 0, crowded = 0;
+    for (int trial = 0; trial < 120; ++trial) {
+        Screen s = randomScreen(random, 50 + static_cast<int>(random() % 400),
+                                static_cast<int>(random() % 40));
+        if (trial % 4 == 1) { // a few edges not finite
+            for (int i = 0; i < 6; ++i) {
+                std::vector<ScreenRect>& list = i % 2 == 0 ? s.taken.blocks : s.taken.texts;
+                if (list.empty()) continue;
+                ScreenRect& r = list[random() % list.size()];
+                double* sides[] = {&r.x, &r.y, &r.width, &r.height};
+                *sides[random() % 4] = odd[random() % 3];
+            }
+        }
+        const BlockStrips rows = blockStrips(s.taken, s.view);
+        for (int q = 0; q < 20; ++q) {
+            float qx = static_cast<float>(unit(random) * 1300.0 - 20.0);
+            float qy = static_cast<float>(unit(random) * 760.0);
+            ImVec2 ts(static_cast<float>(20.0 + unit(random) * 100.0), 13.0f);
+            float line = ts.y;
+            switch ((trial + q) % 6) {
+            case 0:
+                line = 0.0f;
+                break; // every row the same
+            case 1:
+                ts.x = 0.0f, line = 0.0f;
+                break; // every place the same too
+            case 2:
+                ts.y = 40.0f;
+                break; // rows overlapping
+            case 3:
+                line = -ts.y;
+                break; // rows going up
+            case 4:
+                (q % 2 == 0 ? qx : qy) = odd[random() % 3];
+                break;
+            default:
+                break;
+            }
+            const float below = qy + static_cast<float>(random() % 40);
+            const ImVec2 want = before::freeSpot(s.taken, s.view, qx, qy, below, ts, line);
+            const ImVec2 got = freeSpot(s.taken, s.view, qx, qy, below, ts, line);
+            const ImVec2 fast = freeSpot(s.taken, s.view, qx, qy, below, ts, line, &rows);
+            const auto same = [](float a, float b) { return a == b || (a != a && b != b); };
+            EXPECT_TRUE(same(got.x, want.x) && same(got.y, want.y))
+                << "trial " << trial << " query " << q << ": " << got.x << ", " << got.y << " for "
+                << want.x << ", " << want.y;
+            EXPECT_TRUE(same(fast.x, want.x) && same(fast.y, want.y))
+                << "trial " << trial << " query " << q;
+            const ImVec2 wantRow = before::freeRow(s.taken, s.view, qx, qy, ts);
+            const ImVec2 row = freeRow(s.taken, s.view, qx, qy, ts, &rows);
+            EXPECT_TRUE(same(row.x, wantRow.x) && same(row.y, wantRow.y))
+                << "trial " << trial << " query " << q;
+            const bool isFree = before::coveredAt(s.taken, s.view, want.x, want.y, ts, 0.0f) == 0.0;
+            (isFree ? free : crowded) += 1;
+        }
+    }
+    EXPECT_GT(free, 100); // both kinds of spot were searched for
+    EXPECT_GT(crowded, 100);
 }
 
 // placeCaption through the rows finds the plain loops' spot, over a thousand blocks and few.

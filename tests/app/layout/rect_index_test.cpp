@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <random>
 #include <vector>
 
@@ -53,6 +54,49 @@ TEST(RectStrips, FindEveryRectangleOverlappingInOrder) {
                 const bool found = std::find(visited.begin(), visited.end(), &r) != visited.end();
                 EXPECT_TRUE(found || !overlaps) << "trial " << trial << ": [" << lo << ", " << hi
                                                 << "] against [" << from << ", " << to << "]";
+            }
+        }
+    }
+}
+
+// Rows and columns together: forEachAlso visits, in the list's order, just the rectangles that
+// both the rows' forEach and the columns' visit (every one meeting the region among them).
+TEST(RectStrips, RowsAndColumnsTogetherVisitThoseOfBoth) {
+    std::mt19937 random(17);
+    std::uniform_real_distribution<double> at(-100.0, 900.0), size(-5.0, 120.0);
+    for (int trial = 0; trial < 100; ++trial) {
+        std::vector<ScreenRect> rects;
+        const int n = static_cast<int>(random() % 400);
+        for (int i = 0; i < n; ++i)
+            rects.push_back({at(random), at(random), size(random), size(random)});
+        if (trial % 10 == 0 && n > 1) rects[1].y = NAN; // in every row
+        RectStrips rows, columns;
+        rows.build(rects, RectStrips::Axis::y, 0.0, 700.0, 1 + trial % 33);
+        columns.build(rects, RectStrips::Axis::x, 0.0, 800.0, 1 + trial % 29);
+        for (int q = 0; q < 20; ++q) {
+            const ScreenRect region{at(random), at(random), size(random) * 3.0, size(random) * 2.0};
+            std::vector<const ScreenRect*> inRows, inColumns, both;
+            rows.forEach(region.y, region.y + region.height, [&](const ScreenRect& r) {
+                inRows.push_back(&r);
+                return true;
+            });
+            columns.forEach(region.x, region.x + region.width, [&](const ScreenRect& r) {
+                inColumns.push_back(&r);
+                return true;
+            });
+            std::vector<const ScreenRect*> want;
+            std::set_intersection(inRows.begin(), inRows.end(), inColumns.begin(), inColumns.end(),
+                                  std::back_inserter(want));
+            rows.forEachAlso(columns, region.y, region.y + region.height, region.x,
+                             region.x + region.width, [&](const ScreenRect& r) {
+                                 both.push_back(&r);
+                                 return true;
+                             });
+            EXPECT_EQ(both, want) << "trial " << trial << " query " << q;
+            for (const ScreenRect& r : rects) {
+                const bool meets = r.x < region.x + region.width && region.x < r.x + r.width &&
+                                   r.y < region.y + region.height && region.y < r.y + r.height;
+                EXPECT_TRUE(!meets || std::find(both.begin(), both.end(), &r) != both.end());
             }
         }
     }

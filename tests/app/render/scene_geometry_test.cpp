@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 namespace {
@@ -139,6 +140,81 @@ TEST(SceneGeometry, TheDrawnBoxHoldsEverythingDrawn) {
     EXPECT_LE(dot.x1 - dot.x0, 9);
     // Nothing drawn: an empty box.
     EXPECT_TRUE(drawnBox(SceneGeometry{}, t, 1280, 720, 7.0, 2.0).empty());
+}
+
+// arrowOnScreen as it was before ArrowsOnScreen worked out the camera's part once a frame.
+ArrowOnScreen plainArrowOnScreen(const Camera& camera, Vec2 from, Vec2 vector,
+                                 const Bounds* arena) {
+    ArrowOnScreen a;
+    const double ppm = camera.pixelsPerMetre();
+    const double lengthPx = length(vector) * ppm;
+    if (!(lengthPx > 0.0) || !std::isfinite(lengthPx)) {
+        a.tip = from;
+        return a;
+    }
+    const ScreenRect& vp = camera.viewport();
+    const double knee = kArrowKneeShare * std::min(vp.width, vp.height);
+    double shown = displayedArrowPx(lengthPx, knee);
+    const Vec2 s = camera.worldToScreen(from);
+    const Vec2 dir{vector.x / length(vector), -vector.y / length(vector)};
+    double limits[2][2] = {{vp.x, vp.x + vp.width}, {vp.y, vp.y + vp.height}};
+    if (arena) {
+        const Vec2 a = camera.worldToScreen(arena->min), b = camera.worldToScreen(arena->max);
+        const double box[2][2] = {{std::min(a.x, b.x), std::max(a.x, b.x)},
+                                  {std::min(a.y, b.y), std::max(a.y, b.y)}};
+        for (int k = 0; k < 2; ++k) {
+            limits[k][0] = std::max(limits[k][0], box[k][0]);
+            limits[k][1] = std::min(limits[k][1], box[k][1]);
+        }
+    }
+    const double start[2] = {s.x, s.y}, d[2] = {dir.x, dir.y};
+    for (int k = 0; k < 2; ++k) {
+        if (start[k] < limits[k][0] || start[k] > limits[k][1]) continue;
+        if (d[k] > 1e-12) shown = std::min(shown, (limits[k][1] - 2.0 - start[k]) / d[k]);
+        if (d[k] < -1e-12) shown = std::min(shown, (limits[k][0] + 2.0 - start[k]) / d[k]);
+    }
+    shown = std::max(0.0, shown);
+    a.toScale = shown >= lengthPx - 1e-9;
+    a.tip = from + vector * (shown / lengthPx);
+    return a;
+}
+
+// The arrows of a frame through ArrowsOnScreen are those of the plain arrowOnScreen to the bit:
+// short and long, cut by the view and by the arena, from inside and outside them, none and NaN.
+TEST(SceneGeometry, ArrowsOfAFrameAreThoseOfThePlainArrow) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int cut = 0, toScale = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        Camera camera;
+        camera.setViewport({unit(random) * 100.0, unit(random) * 50.0,
+                            300.0 + unit(random) * 1600.0, 200.0 + unit(random) * 900.0});
+        camera.fit({{0.0, 0.0}, {5.0 + unit(random) * 30.0, 3.0 + unit(random) * 20.0}}, 20.0);
+        camera.setPixelsPerMetre(camera.pixelsPerMetre() * (0.5 + unit(random) * 2.0));
+        const Bounds arena{{0.0, 0.0}, {10.0 + unit(random) * 20.0, 8.0 + unit(random) * 10.0}};
+        const ArrowsOnScreen withArena(camera, &arena), without(camera);
+        for (int i = 0; i < 200; ++i) {
+            const Vec2 from{unit(random) * 40.0 - 5.0, unit(random) * 30.0 - 5.0};
+            Vec2 vector{(unit(random) - 0.5) * 60.0, (unit(random) - 0.5) * 60.0};
+            if (i % 50 == 0) vector = {};
+            if (i % 50 == 1) vector = {NAN, 1.0};
+            if (i % 7 == 0) vector = vector * 0.01;
+            const ArrowOnScreen a = withArena(from, vector),
+                                want = plainArrowOnScreen(camera, from, vector, &arena);
+            const ArrowOnScreen b = without(from, vector),
+                                alone = plainArrowOnScreen(camera, from, vector, nullptr);
+            const auto same = [](double x, double y) { return x == y || (x != x && y != y); };
+            EXPECT_TRUE(same(a.tip.x, want.tip.x) && same(a.tip.y, want.tip.y))
+                << trial << " " << i;
+            EXPECT_EQ(a.toScale, want.toScale) << trial << " " << i;
+            EXPECT_TRUE(same(b.tip.x, alone.tip.x) && same(b.tip.y, alone.tip.y))
+                << trial << " " << i;
+            EXPECT_EQ(b.toScale, alone.toScale) << trial << " " << i;
+            (want.toScale ? toScale : cut) += 1;
+        }
+    }
+    EXPECT_GT(cut, 500); // both kinds were drawn
+    EXPECT_GT(toScale, 500);
 }
 
 } // namespace
