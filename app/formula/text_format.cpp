@@ -1,5 +1,7 @@
 #include "text_format.h"
 
+#include "number_text.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -25,23 +27,24 @@ std::string formatNumberWithDigits(double value, int extra, double scale) {
     char text[64];
     const double a = std::abs(value);
     const int digits = 3 + std::max(extra, 0);
+    // (printf's "%.*g" and "%.*f", without printf: number_text.h)
     if (a >= 1e12) {
-        std::snprintf(text, sizeof text, "%.*g", digits, value);
+        number_text::printGeneral(text, sizeof text, value, digits);
         return text;
     }
     if (a < 5e-4) {
-        std::snprintf(text, sizeof text, "%.*g", digits, value);
+        number_text::printGeneral(text, sizeof text, value, digits);
         std::string s = text;
         // "%.3g" writes 1.23e-05 below 1e-4; a fixed form reads better down to 1e-6.
         if (a >= 1e-6 && s.find('e') != std::string::npos) {
-            std::snprintf(text, sizeof text, "%.*f", (a >= 1e-5 ? 7 : 8) + std::max(extra, 0),
-                          value);
+            number_text::printFixed(text, sizeof text, value,
+                                    (a >= 1e-5 ? 7 : 8) + std::max(extra, 0));
             s = text;
             while (!s.empty() && s.back() == '0') s.pop_back();
         }
         return s;
     }
-    std::snprintf(text, sizeof text, "%.*f", digits, value);
+    number_text::printFixed(text, sizeof text, value, digits);
     std::string s = text;
     while (!s.empty() && s.back() == '0') s.pop_back();
     if (!s.empty() && s.back() == '.') s.pop_back();

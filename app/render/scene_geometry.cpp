@@ -134,25 +134,37 @@ void SceneGeometry::addTrails(const SceneView& view, const Trails& trails) {
     const auto fade = [oldest](int age) {
         return 0.75f * (1.0f - static_cast<float>(age) / static_cast<float>(oldest + 1));
     };
+    // Every block's trail goes through the same ages (0, stride, 2·stride, ..., oldest): their
+    // slots in the ring and their fades once for all blocks (a crowded scene: thousands of
+    // segments a frame).
+    trailSteps_.clear();
+    for (int prevAge = 0; prevAge < oldest;) {
+        const int age = std::min(prevAge + stride, oldest);
+        trailSteps_.push_back({trails.slotOfAge(age), stride == 1 && prevAge + 1 < trails.length(),
+                               fade(age), 0.5f * (fade(prevAge) + fade(age))});
+        prevAge = age;
+    }
+    const int newest = trails.slotOfAge(0);
+    const float newestAlpha = fade(0);
     for (std::size_t i = 0; i < trails.blockCount(); ++i) {
         if (world.blocks[i].kind == BodyKind::Static) continue;
         const Color c = i < view.blockColors.size() ? view.blockColors[i] : Color{};
-        Vec2 prev = trails.point(i, 0);
-        int prevAge = 0;
-        while (prevAge < oldest) {
-            const int age = std::min(prevAge + stride, oldest);
-            const Vec2 p = trails.point(i, age);
+        Vec2 prev = trails.pointIn(i, newest);
+        float prevAlpha = newestAlpha;
+        int prevSlot = newest;
+        for (const TrailStep& s : trailSteps_) {
+            const Vec2 p = trails.pointIn(i, s.slot);
             Vec2 hit;
-            if (stride == 1 && trails.impact(i, prevAge, hit)) {
+            if (s.throughImpact && trails.impactIn(i, prevSlot, hit)) {
                 // Through the point of impact: the path that happened (trails.h).
-                const float mid = 0.5f * (fade(prevAge) + fade(age));
-                under.segment(prev, hit, c.withAlpha(fade(prevAge)), c.withAlpha(mid));
-                under.segment(hit, p, c.withAlpha(mid), c.withAlpha(fade(age)));
+                under.segment(prev, hit, c.withAlpha(prevAlpha), c.withAlpha(s.mid));
+                under.segment(hit, p, c.withAlpha(s.mid), c.withAlpha(s.alpha));
             } else {
-                under.segment(prev, p, c.withAlpha(fade(prevAge)), c.withAlpha(fade(age)));
+                under.segment(prev, p, c.withAlpha(prevAlpha), c.withAlpha(s.alpha));
             }
             prev = p;
-            prevAge = age;
+            prevAlpha = s.alpha;
+            prevSlot = s.slot;
         }
     }
 }

@@ -138,6 +138,13 @@ struct SceneGeometry {
     };
     std::vector<OutlineOf> outlines_;
     const OutlineOf& outlineOf(const Color& fill, const Color& arena);
+    // addTrails' steps (the same ages for every block), kept from frame to frame.
+    struct TrailStep {
+        int slot;           // the ring's slot of the step's older point
+        bool throughImpact; // a point of impact kept on the way may be drawn through
+        float alpha, mid;   // the older point's fade; half way between it and the newer one's
+    };
+    std::vector<TrailStep> trailSteps_;
 };
 
 // A box holding every framebuffer pixel that drawing `geometry` through `t` into a width x height

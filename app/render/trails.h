@@ -50,6 +50,16 @@ class Trails {
     // The point of impact on the way from point age + 1 to point age, if the block collided
     // there (then `at` is where it touched).
     bool impact(std::size_t block, int age, Vec2& at) const;
+    // The same for a loop over every block at the same ages (the scene's drawing): the slot of
+    // point `age` (0 <= age < length()) found once, then each block's point in that slot, and its
+    // point of impact there (for an age + 1 < length()), with no check of the block or the age.
+    int slotOfAge(int age) const { return slotOf(age); }
+    Vec2 pointIn(std::size_t block, int slot) const { return points_[slotIndex(block, slot)]; }
+    bool impactIn(std::size_t block, int slot, Vec2& at) const {
+        if (!hasImpact_[slotIndex(block, slot)]) return false;
+        at = impacts_[slotIndex(block, slot)];
+        return true;
+    }
     // The oldest age (at least 1, at most length() - 1) up to which the trails of the moving blocks
     // of `world` are together no longer than `budget` metres, all cut at the same age; 0 when
     // there is no trail to draw. Drawing costs in proportion to length on a software rasteriser,

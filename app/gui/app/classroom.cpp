@@ -1,5 +1,6 @@
 #include "classroom.h"
 
+#include "number_text.h"
 #include "save_naming.h"
 #include "text_format.h"
 
@@ -24,9 +25,9 @@ std::string firstSentence(const std::string& text) {
 }
 
 std::string methodAndTime(Method method, double time) {
-    char t[48];
-    std::snprintf(t, sizeof t, "t = %.2f s", time);
-    return std::string(methodName(method)) + "   ·   " + t;
+    std::string text = std::string(methodName(method)) + "   ·   t = ";
+    number_text::appendFixed(text, time, 2); // "%.2f"
+    return text + " s";
 }
 
 std::string presentCaption(const std::string& sceneName, const std::string& description,
@@ -79,7 +80,13 @@ double shownNumber(double value, const char* format) {
     if (!letter || !std::strchr("fFeEgG", letter)) return value;
     const char conversion[] = {'%', '.', '*', letter, '\0'};
     char text[512]; // %f of 1e300 has 301 digits
-    std::snprintf(text, sizeof text, conversion, std::min(precision, 17), value);
+    // (number_text.h: "%.*f" and "%.*g" without printf, the same text)
+    if (letter == 'f')
+        number_text::printFixed(text, sizeof text, value, std::min(precision, 17));
+    else if (letter == 'g')
+        number_text::printGeneral(text, sizeof text, value, std::min(precision, 17));
+    else
+        std::snprintf(text, sizeof text, conversion, std::min(precision, 17), value);
     return std::strtod(text, nullptr);
 }
 

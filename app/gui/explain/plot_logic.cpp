@@ -1,5 +1,7 @@
 #include "plot_logic.h"
 
+#include "number_text.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -62,9 +64,9 @@ std::string tickLabel(double value, double step) {
     if (std::abs(value) < step * 1e-6) value = 0.0;
     char text[48];
     if (std::abs(value) >= 1e6) {
-        std::snprintf(text, sizeof text, "%.3g", value);
+        number_text::printGeneral(text, sizeof text, value, 3); // "%.3g"
     } else {
-        std::snprintf(text, sizeof text, "%.*f", decimals, value);
+        number_text::printFixed(text, sizeof text, value, decimals); // "%.*f"
     }
     return text;
 }

@@ -3,6 +3,7 @@
 // teachers draw it (PhET's Collision Lab). In the centre-of-mass frame (view_frame.h) the marker
 // stands still and the diagram adds m·w: it closes, total momentum zero in that frame.
 #include "app_frame.h"
+#include "number_text.h"
 #include "overlay_window.h"
 #include "renderer.h"
 #include "text_format.h"
@@ -160,13 +161,16 @@ void drawComOverlay(App& app) {
         app.view.shownMarks.push_back({"centre of mass", taken.front()});
         // On one line, or two where one would take more than a third of the scene's width (a
         // 1024x768 projector: it ran past the scene's edge and over m2).
-        char text[96];
-        std::snprintf(text, sizeof text, "centre of mass  u = (%.2f, %.2f) m/s", c.velocity.x,
-                      c.velocity.y);
-        if (ImGui::CalcTextSize(text).x > app.view.camera.viewport().width / 3.0) {
-            std::snprintf(text, sizeof text, "centre of mass\nu = (%.2f, %.2f) m/s", c.velocity.x,
-                          c.velocity.y);
-        }
+        // ("u = (%.2f, %.2f) m/s", number_text.h)
+        std::string u = "u = (";
+        number_text::appendFixed(u, c.velocity.x, 2);
+        u += ", ";
+        number_text::appendFixed(u, c.velocity.y, 2);
+        u += ") m/s";
+        std::string line = "centre of mass  " + u;
+        if (ImGui::CalcTextSize(line.c_str()).x > app.view.camera.viewport().width / 3.0)
+            line = "centre of mass\n" + u;
+        const char* text = line.c_str();
         // Beside the marker on its first free side (right, below, left, above); where none is
         // free, where placeSceneLabel finds room, with a leader line to the marker (lecture3 step
         // 10 wrote it over m2, whom it does not name).

@@ -2,6 +2,7 @@
 // tradeoff chart (error against cost, log-log, from the quick sweep) drawn with the plot widget.
 // What is measured, and the background sweep, are App's CostMeasurement (session/cost.h).
 #include "app_frame.h"
+#include "number_text.h"
 #include "overlay_window.h"
 #include "plot_widget.h"
 #include "ui_style.h"
@@ -84,7 +85,9 @@ void drawCostOverlay(App& app) {
             ImGui::TableNextColumn();
             ImGui::TextColored(uiMarkColorVec(methodMark(method)), "%s", methodName(method));
             ImGui::TableNextColumn();
-            ImGui::Text("%.3f", cost.msPerStep(method));
+            char ms[64];
+            number_text::printFixed(ms, sizeof ms, cost.msPerStep(method), 3); // "%.3f"
+            ImGui::TextUnformatted(ms);
         }
         ImGui::EndTable();
     }

@@ -3,6 +3,7 @@
 // before and after, and the "pause on each collision" switch.
 #include "app_frame.h"
 #include "inspector_format.h"
+#include "number_text.h"
 #include "overlay_window.h"
 #include "printable.h"
 #include "report.h"
@@ -88,12 +89,16 @@ void drawInspectorOverlay(App& app) {
     const CollisionFormula f = collisionFormula(r, bodyName(app, r.block), bodyName(app, r.other));
 
     // The list of the last collisions, newest first.
+    // "t = %.3f s" (number_text.h: without printf) in "%s t = %.3f s: %s / %s (%c)".
+    std::string time = "t = ";
+    number_text::appendFixed(time, r.time, 3);
+    time += " s";
     char preview[160];
-    std::snprintf(preview, sizeof preview, "%s t = %.3f s: %s / %s (%c)",
+    std::snprintf(preview, sizeof preview, "%s %s: %s / %s (%c)",
                   picked != 0             ? ""
                   : app.sim.isReplaying() ? "last so far,"
                                           : "newest,",
-                  r.time, bodyName(app, r.block).c_str(), bodyName(app, r.other).c_str(),
+                  time.c_str(), bodyName(app, r.block).c_str(), bodyName(app, r.other).c_str(),
                   r.axis == 0 ? 'x' : 'y');
     // Where the combo is too narrow for it, without the names (the formula's title under it
     // names them).
@@ -101,7 +106,7 @@ void drawInspectorOverlay(App& app) {
     const float previewRoom =
         ImGui::GetContentRegionAvail().x - ImGui::GetFrameHeight() - 2.0f * st.FramePadding.x;
     if (ImGui::CalcTextSize(preview).x > previewRoom)
-        std::snprintf(preview, sizeof preview, "t = %.3f s (%c)", r.time, r.axis == 0 ? 'x' : 'y');
+        std::snprintf(preview, sizeof preview, "%s (%c)", time.c_str(), r.axis == 0 ? 'x' : 'y');
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::BeginCombo("##collisions", preview)) {
         for (int k = 0; k < count; ++k) {

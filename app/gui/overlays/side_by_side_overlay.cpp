@@ -2,6 +2,7 @@
 // the live world (by the renderer, see appRender), and a table of each method's statistics:
 // collisions, largest overlap, energy, momentum, and how far it has drifted from perfect.
 #include "app_frame.h"
+#include "number_text.h"
 #include "overlay_window.h"
 #include "ui_style.h"
 
@@ -25,8 +26,8 @@ std::string energyText(double joules) {
         unit = larger;
     }
     char text[64];
-    std::snprintf(text, sizeof text, "%.4g %s", value, unit);
-    return text;
+    number_text::printGeneral(text, sizeof text, value, 4); // "%.4g"
+    return std::string(text) + " " + unit;
 }
 
 } // namespace
@@ -51,12 +52,13 @@ void drawSideBySideOverlay(App& app) {
         const MethodRun& r = m.run(method);
         cells[k][0] = methodName(method);
         cells[k][1] = std::to_string(static_cast<long long>(r.totals.collisions));
-        std::snprintf(text, sizeof text, "%.3g m", r.totals.maxPenetration);
-        cells[k][2] = text;
+        // "%.3g m", "%.3g m", "%.3f" (number_text.h: without printf)
+        number_text::printGeneral(text, sizeof text, r.totals.maxPenetration, 3);
+        cells[k][2] = std::string(text) + " m";
         cells[k][3] = energyText(r.stats.kineticEnergy + r.stats.potentialEnergy);
-        std::snprintf(text, sizeof text, "%.3g m", m.divergence(method));
-        cells[k][4] = text;
-        std::snprintf(text, sizeof text, "%.3f", r.stats.stepMs);
+        number_text::printGeneral(text, sizeof text, m.divergence(method), 3);
+        cells[k][4] = std::string(text) + " m";
+        number_text::printFixed(text, sizeof text, r.stats.stepMs, 3);
         cells[k][5] = text;
     }
     const int live = static_cast<int>(app.sim.world().settings.method);

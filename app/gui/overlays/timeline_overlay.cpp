@@ -2,6 +2,7 @@
 // frame back or forward, and return to the newest frame. Playing or stepping from an earlier
 // frame replays from there (the same states, bit for bit, unless something is changed).
 #include "app_frame.h"
+#include "number_text.h"
 #include "overlay_window.h"
 #include "slider.h"
 #include "ui_style.h"
@@ -56,10 +57,12 @@ void drawTimelineOverlay(App& app) {
     ImGui::SameLine();
     dimText(app.sim.isReplaying() ? "REPLAY" : "live");
     ImGui::SetNextItemWidth(-1.0f); // the slider on its own line: it must show frame and time
-    char label[64];
-    std::snprintf(label, sizeof label, "frame %%d   t = %.2f s", app.sim.world().time);
-    if (uiSliderInt("##frame", &frame, static_cast<int>(first), static_cast<int>(last), label,
-                    ImGuiSliderFlags_AlwaysClamp)) {
+    // "frame %%d   t = %.2f s" (number_text.h: the time without printf)
+    std::string label = "frame %d   t = ";
+    number_text::appendFixed(label, app.sim.world().time, 2);
+    label += " s";
+    if (uiSliderInt("##frame", &frame, static_cast<int>(first), static_cast<int>(last),
+                    label.c_str(), ImGuiSliderFlags_AlwaysClamp)) {
         go(frame);
     }
     markFirstDifference(app, first, last);

@@ -7,6 +7,7 @@
 #include "arrow_values.h"
 #include "label_placement.h"
 #include "magnifier.h"
+#include "number_text.h"
 #include "overlay_window.h"
 
 #include "inspector_format.h"
@@ -195,7 +196,7 @@ void placeAxisNumbers(App& app, Taken& placed) {
     float unitX = NAN;      // after the last number drawn on the x axis
     float firstUnitX = NAN; // after the first
     for (double x = bounds.min.x; x <= bounds.max.x + 1e-9; x += step) {
-        std::snprintf(text, sizeof text, "%g", x);
+        number_text::printGeneral(text, sizeof text, x, 6); // "%g"
         const Vec2 s = cam.worldToScreen({x, bounds.min.y});
         const ImVec2 size = ImGui::CalcTextSize(text);
         const float at = static_cast<float>(s.x) - size.x * 0.5f;
@@ -205,7 +206,7 @@ void placeAxisNumbers(App& app, Taken& placed) {
         if (!std::isfinite(firstUnitX)) firstUnitX = unitX;
     }
     for (double y = bounds.min.y; y <= bounds.max.y + 1e-9; y += step) {
-        std::snprintf(text, sizeof text, "%g", y);
+        number_text::printGeneral(text, sizeof text, y, 6); // "%g"
         const Vec2 s = cam.worldToScreen({bounds.min.x, y});
         const ImVec2 size = ImGui::CalcTextSize(text);
         // Left of the wall, closer to it where the margin is narrow (never under the panel).
@@ -316,9 +317,9 @@ void drawHoverTooltip(const App& app) {
     if (i < 0) return;
     const Block& b = app.sim.world().blocks[static_cast<std::size_t>(i)];
     const auto twoDecimals = [](double v) {
-        char text[48];
-        std::snprintf(text, sizeof text, "%.2f", v);
-        return std::string(text);
+        std::string text;
+        number_text::appendFixed(text, v, 2); // "%.2f"
+        return text;
     };
     const std::string mass = formatNumber(b.mass);
     const std::string vx = twoDecimals(b.velocity.x), vy = twoDecimals(b.velocity.y);

@@ -3,6 +3,7 @@
 // it is not the world's, and the "P to play" hint at the start.
 #include "app_frame.h"
 
+#include "number_text.h"
 #include "screen_text.h"
 #include "text_format.h"
 #include "ui_style.h"
@@ -118,11 +119,15 @@ ScreenRect drawStatusBadge(const App& app, ImDrawList* dl) {
         // they are, each a merge by the rest rule (a block lying on the floor: one per substep),
         // not as that many things touching.
         const StepTotals& totals = app.sim.run.totals;
+        // "%s   t = %.2f s" (number_text.h: without printf), then the counts.
+        std::string methodTime =
+            std::string(methodName(app.sim.world().settings.method)) + "   t = ";
+        number_text::appendFixed(methodTime, app.sim.world().time, 2);
+        methodTime += " s";
         char text[200];
-        const int n = std::snprintf(
-            text, sizeof text, "%s   t = %.2f s   %llu collision%s",
-            methodName(app.sim.world().settings.method), app.sim.world().time,
-            static_cast<unsigned long long>(totals.collisions), totals.collisions == 1 ? "" : "s");
+        const int n = std::snprintf(text, sizeof text, "%s   %llu collision%s", methodTime.c_str(),
+                                    static_cast<unsigned long long>(totals.collisions),
+                                    totals.collisions == 1 ? "" : "s");
         if (totals.contacts > 0 && n > 0 && n < static_cast<int>(sizeof text)) {
             std::snprintf(
                 text + n, sizeof text - static_cast<std::size_t>(n), "   %llu rest-rule merge%s",
@@ -134,8 +139,7 @@ ScreenRect drawStatusBadge(const App& app, ImDrawList* dl) {
             row.add(text, plateBg, plateFg);
         } else {
             char count[64];
-            std::snprintf(count, sizeof count, "%s   t = %.2f s",
-                          methodName(app.sim.world().settings.method), app.sim.world().time);
+            std::snprintf(count, sizeof count, "%s", methodTime.c_str());
             row.add(count, plateBg, plateFg);
             std::snprintf(count, sizeof count, "%llu collision%s",
                           static_cast<unsigned long long>(totals.collisions),

@@ -147,9 +147,8 @@ bool commandsSince(const DrawMark& mark) {
 
 } // namespace
 
-std::vector<Span> drawnSince(const DrawMark& mark, ImU32 skip) {
-    std::vector<Span> spans;
-    if (!commandsSince(mark)) return spans;
+void drawnSince(const DrawMark& mark, ImU32 skip, MergedSpans& into) {
+    if (!commandsSince(mark)) return;
     const ImDrawList& list = *mark.list;
     const auto start = static_cast<unsigned>(mark.index);
     skip &= ~IM_COL32_A_MASK;
@@ -166,10 +165,9 @@ std::vector<Span> drawnSince(const DrawMark& mark, ImU32 skip) {
                 s.y1 = std::max(s.y1, vert.pos.y);
                 skipped = skipped || (vert.col & ~IM_COL32_A_MASK) == skip;
             }
-            if (!skipped) spans.push_back(s);
+            if (!skipped) into.add(s);
         }
     }
-    return spans;
 }
 
 void clipDrawnSince(const DrawMark& mark, float top, float bottom) {

@@ -11,6 +11,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -84,11 +85,32 @@ DrawMark markDrawing();
 bool stillDrawing(const DrawMark& mark);
 // The vertical extent of each triangle drawn into the current window since `mark` (none when
 // the current window draws into another list), leaving out those of colour `skip` (alpha
-// ignored). In drawing order; screen pixels.
+// ignored), given in drawing order (screen pixels) to `into`.
 struct Span {
     float y0, y1;
 };
-std::vector<Span> drawnSince(const DrawMark& mark, ImU32 skip);
+// Spans taken in the order they come, as rows are gathered (WholeRows::rowsOf): one `tall` or
+// taller left out, one that meets the last kept (each starts at most `slack` below the other's
+// end) merged into it. A line of text, a hundred triangles, is then a span or so.
+struct MergedSpans {
+    explicit MergedSpans(float tallest) : tall(tallest) {}
+    float tall;
+    float slack = 0.5f; // px
+    std::vector<Span> spans;
+    void add(const Span& s) {
+        if (s.y1 - s.y0 >= tall) return;
+        if (!spans.empty()) {
+            Span& last = spans.back();
+            if (s.y0 <= last.y1 + slack && last.y0 <= s.y1 + slack) {
+                last.y0 = std::min(last.y0, s.y0);
+                last.y1 = std::max(last.y1, s.y1);
+                return;
+            }
+        }
+        spans.push_back(s);
+    }
+};
+void drawnSince(const DrawMark& mark, ImU32 skip, MergedSpans& into);
 // Narrows what was drawn into the current window since `mark` to the band from `top` to
 // `bottom` (screen pixels): nothing of it shows outside.
 void clipDrawnSince(const DrawMark& mark, float top, float bottom);

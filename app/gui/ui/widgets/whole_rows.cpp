@@ -59,28 +59,19 @@ void WholeRows::keepTogether(ImVec2 min, ImVec2 max) {
 }
 
 std::vector<imgui_ext::Span> WholeRows::rowsOf(std::vector<imgui_ext::Span> spans, float tall) {
-    constexpr float kSlack = 0.5f; // px
-    // Two spans meet where each starts at most kSlack below the other's end.
-    const auto meet = [](const imgui_ext::Span& a, const imgui_ext::Span& b) {
-        return b.y0 <= a.y1 + kSlack && a.y0 <= b.y1 + kSlack;
-    };
-    // The tall ones left out, and spans drawn one after the other that meet taken as one, in place
-    // (a line of text is a hundred triangles of nearly one span): the rows come out the same (the
-    // span from [y0, y1 + kSlack] of two that meet is their union, so the spans' union and the
-    // rows, its parts, are unchanged), and the sort below has a span a row or so, not a triangle
-    // (half a millisecond a frame in the browser, for the panel's text).
-    std::size_t kept = 0;
-    for (const imgui_ext::Span& s : spans) {
-        if (s.y1 - s.y0 >= tall) continue;
-        if (kept > 0 && meet(spans[kept - 1], s)) {
-            imgui_ext::Span& last = spans[kept - 1];
-            last.y0 = std::min(last.y0, s.y0);
-            last.y1 = std::max(last.y1, s.y1);
-        } else {
-            spans[kept++] = s;
-        }
-    }
-    spans.resize(kept);
+    imgui_ext::MergedSpans merged{tall};
+    for (const imgui_ext::Span& s : spans) merged.add(s);
+    return rowsOf(std::move(merged));
+}
+
+std::vector<imgui_ext::Span> WholeRows::rowsOf(imgui_ext::MergedSpans merged) {
+    const float kSlack = merged.slack;
+    // The tall ones left out, and spans drawn one after the other that meet taken as one, as they
+    // came (a line of text is a hundred triangles of nearly one span): the rows come out the same
+    // (the span from [y0, y1 + kSlack] of two that meet is their union, so the spans' union and
+    // the rows, its parts, are unchanged), and the sort below has a span a row or so, not a
+    // triangle (half a millisecond a frame in the browser, for the panel's text).
+    std::vector<imgui_ext::Span>& spans = merged.spans;
     std::sort(spans.begin(), spans.end(),
               [](const imgui_ext::Span& a, const imgui_ext::Span& b) { return a.y0 < b.y0; });
     // Rows: spans merged where they overlap or touch (a rounded frame is drawn as a fan of
@@ -106,12 +97,12 @@ void WholeRows::end() {
     // Every triangle drawn, as the span of heights it covers, and the texts kept together; a tall
     // one (a background) is no row, nor the keyboard's focus ring (its colour is no control's):
     // it reaches into the gaps between rows and would join the focused row to the next, hiding
-    // it with a row cut under it.
-    std::vector<imgui_ext::Span> spans =
-        imgui_ext::drawnSince(mark_, ImGui::GetColorU32(ImGuiCol_NavHighlight));
-    spans.insert(spans.end(), together.begin(), together.end());
-    const std::vector<imgui_ext::Span> rows =
-        WholeRows::rowsOf(std::move(spans), 0.5f * (bottom - top));
+    // it with a row cut under it. Taken in as they come (rowsOf's spans, without a list of every
+    // triangle's first).
+    imgui_ext::MergedSpans spans{0.5f * (bottom - top)};
+    imgui_ext::drawnSince(mark_, ImGui::GetColorU32(ImGuiCol_NavHighlight), spans);
+    for (const imgui_ext::Span& s : together) spans.add(s);
+    const std::vector<imgui_ext::Span> rows = WholeRows::rowsOf(std::move(spans));
     constexpr float kEdge = 1.0f; // px
     float keptTop = top, keptBottom = bottom;
     for (const imgui_ext::Span& r : rows) {

@@ -26,6 +26,8 @@ class WholeRows {
     // The rows of `spans` (heights drawn, screen px): those shorter than `tall`, merged where they
     // overlap or touch (within half a pixel), sorted from the top.
     static std::vector<imgui_ext::Span> rowsOf(std::vector<imgui_ext::Span> spans, float tall);
+    // The same of spans already taken in (imgui_ext::MergedSpans, as rowsOf takes them).
+    static std::vector<imgui_ext::Span> rowsOf(imgui_ext::MergedSpans spans);
 
   private:
     imgui_ext::DrawMark mark_;   // where the region's content starts in its window's draw list
