@@ -252,13 +252,16 @@ void SceneRenderer::draw(const SceneView& view) {
     const double sx = vp[2] / view.displayWidth, sy = vp[3] / view.displayHeight;
     const Vec2 lo = view.camera->worldToScreen(view.world->bounds.min);
     const Vec2 hi = view.camera->worldToScreen(view.world->bounds.max);
-    const double x0 = std::max(0.0, lo.x * sx), x1 = std::min(double(vp[2]), hi.x * sx);
-    const double y0 = std::max(0.0, vp[3] - lo.y * sy),
-                 y1 = std::min(double(vp[3]), vp[3] - hi.y * sy);
-    const bool arenaShown = x1 > x0 && y0 > y1;
+    // In GL's pixels (rows from the bottom): the screen's y runs downwards, so the bounds' top
+    // (hi) is the higher row; min/max keep it right for a camera either way up.
+    const double x0 = std::max(0.0, std::min(lo.x, hi.x) * sx),
+                 x1 = std::min(double(vp[2]), std::max(lo.x, hi.x) * sx);
+    const double y0 = std::max(0.0, vp[3] - std::max(lo.y, hi.y) * sy),
+                 y1 = std::min(double(vp[3]), vp[3] - std::min(lo.y, hi.y) * sy);
+    const bool arenaShown = x1 > x0 && y1 > y0;
     const GLint arenaBox[4] = {
-        static_cast<GLint>(std::lround(x0)), static_cast<GLint>(std::lround(y1)),
-        static_cast<GLsizei>(std::lround(x1 - x0)), static_cast<GLsizei>(std::lround(y0 - y1))};
+        static_cast<GLint>(std::lround(x0)), static_cast<GLint>(std::lround(y0)),
+        static_cast<GLsizei>(std::lround(x1 - x0)), static_cast<GLsizei>(std::lround(y1 - y0))};
 
     const ClipTransform t = view.camera->clipTransform(view.displayWidth, view.displayHeight);
     framebufferPixelsPerMetre_ = std::abs(t.scaleX) * 0.5 * vp[2];
