@@ -216,27 +216,35 @@ void SceneRenderer::drawShapes(const ClipTransform& t, const BatchRanges& r) {
     setBlend(blend, true);
 }
 
-void SceneRenderer::paintBase(const SceneView& view, const PixelBox& drawn,
-                              const PixelBox& covered) {
-    const Color bg = view.theme->background;
+void SceneRenderer::paintBase(const SceneView& view, const PixelBox& drawn, const PixelBox& arena) {
+    const Color bg = view.theme->background, arenaColor = view.theme->arena;
     glDisable(GL_SCISSOR_TEST);
-    const FrameBase base =
-        planner_ ? planner_(view.framebufferWidth, view.framebufferHeight, drawn, covered)
-                 : FrameBase{};
-    if (!base.planned) {
+    FrameBase base = planner_
+                         ? planner_(view.framebufferWidth, view.framebufferHeight, drawn, arena)
+                         : FrameBase{};
+    if (!base.planned) { // the background everywhere, then the arena over it
+        base = FrameBase{};
+        if (!arena.empty()) base.arena.push_back(arena);
+    }
+    if (base.clearTo == FrameBase::Clear::Colour)
+        glClearColor(base.clear[0], base.clear[1], base.clear[2], base.clear[3]);
+    else if (base.clearTo == FrameBase::Clear::Arena)
+        glClearColor(arenaColor.r, arenaColor.g, arenaColor.b, 1.0f);
+    else
         glClearColor(bg.r, bg.g, bg.b, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        return;
-    }
-    glClearColor(base.clear[0], base.clear[1], base.clear[2], base.clear[3]);
     glClear(GL_COLOR_BUFFER_BIT);
+    // Scissored clears (on llvmpipe each a quad Mesa draws), in GL's rows (from the bottom).
     glEnable(GL_SCISSOR_TEST);
-    glClearColor(bg.r, bg.g, bg.b, 1.0f);
-    for (const PixelBox& r : base.background) {
-        if (r.empty()) continue;
-        glScissor(r.x0, view.framebufferHeight - r.y1, r.x1 - r.x0, r.y1 - r.y0);
-        glClear(GL_COLOR_BUFFER_BIT);
-    }
+    const auto paint = [&](const Color& c, const std::vector<PixelBox>& boxes) {
+        glClearColor(c.r, c.g, c.b, 1.0f);
+        for (const PixelBox& r : boxes) {
+            if (r.empty()) continue;
+            glScissor(r.x0, view.framebufferHeight - r.y1, r.x1 - r.x0, r.y1 - r.y0);
+            glClear(GL_COLOR_BUFFER_BIT);
+        }
+    };
+    paint(bg, base.background);
+    paint(arenaColor, base.arena);
     glDisable(GL_SCISSOR_TEST);
 }
 
@@ -245,33 +253,37 @@ void SceneRenderer::draw(const SceneView& view) {
         paintBase(view, PixelBox{}, PixelBox{});
         return;
     }
-    // The arena (inside the bounds) by a scissored clear (on llvmpipe a quad Mesa draws).
+    // The arena (inside the bounds), painted with the frame's base (paintBase).
     // The viewport as the caller set it (not asked of GL: in WebGL a query waits for the GPU
     // process).
     const GLint vp[4] = {0, 0, view.framebufferWidth, view.framebufferHeight};
     const double sx = vp[2] / view.displayWidth, sy = vp[3] / view.displayHeight;
     const Vec2 lo = view.camera->worldToScreen(view.world->bounds.min);
     const Vec2 hi = view.camera->worldToScreen(view.world->bounds.max);
-    const double x0 = std::max(0.0, lo.x * sx), x1 = std::min(double(vp[2]), hi.x * sx);
-    const double y0 = std::max(0.0, vp[3] - lo.y * sy),
-                 y1 = std::min(double(vp[3]), vp[3] - hi.y * sy);
-    const bool arenaShown = x1 > x0 && y0 > y1;
+    // In GL's pixels (rows from the bottom): the screen's y runs downwards, so the bounds' top
+    // (hi) is the higher row; min/max keep it right for a camera either way up.
+    const double x0 = std::max(0.0, std::min(lo.x, hi.x) * sx),
+                 x1 = std::min(double(vp[2]), std::max(lo.x, hi.x) * sx);
+    const double y0 = std::max(0.0, vp[3] - std::max(lo.y, hi.y) * sy),
+                 y1 = std::min(double(vp[3]), vp[3] - std::min(lo.y, hi.y) * sy);
+    const bool arenaShown = x1 > x0 && y1 > y0;
     const GLint arenaBox[4] = {
-        static_cast<GLint>(std::lround(x0)), static_cast<GLint>(std::lround(y1)),
-        static_cast<GLsizei>(std::lround(x1 - x0)), static_cast<GLsizei>(std::lround(y0 - y1))};
+        static_cast<GLint>(std::lround(x0)), static_cast<GLint>(std::lround(y0)),
+        static_cast<GLsizei>(std::lround(x1 - x0)), static_cast<GLsizei>(std::lround(y1 - y0))};
 
     const ClipTransform t = view.camera->clipTransform(view.displayWidth, view.displayHeight);
     framebufferPixelsPerMetre_ = std::abs(t.scaleX) * 0.5 * vp[2];
     geometry_.build(view, maxPointPx_);
 
     // Where the scene draws (the base beneath it is planned around it): its shapes and blocks,
-    // and the arena's clear, in rows from the top.
+    // and the arena, in rows from the top.
     PixelBox drawn, arena;
+    if (arenaShown)
+        arena = {arenaBox[0], vp[3] - (arenaBox[1] + arenaBox[3]), arenaBox[0] + arenaBox[2],
+                 vp[3] - arenaBox[1]};
     if (planner_) {
         drawn = drawnBox(geometry_, t, vp[2], vp[3], kMomentumShaftPx, 2.0);
-        if (arenaShown) {
-            arena = {arenaBox[0], vp[3] - (arenaBox[1] + arenaBox[3]), arenaBox[0] + arenaBox[2],
-                     vp[3] - arenaBox[1]};
+        if (!arena.empty()) {
             if (drawn.empty())
                 drawn = arena;
             else
@@ -286,15 +298,6 @@ void SceneRenderer::draw(const SceneView& view) {
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    if (arenaShown) {
-        const Color arena = view.theme->arena;
-        glEnable(GL_SCISSOR_TEST);
-        glScissor(arenaBox[0], arenaBox[1], arenaBox[2], arenaBox[3]);
-        glClearColor(arena.r, arena.g, arena.b, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        glDisable(GL_SCISSOR_TEST);
-    }
-
     const float lineWidthPx[3] = {kTrailWidthPx, kMomentumShaftPx, kVelocityShaftPx};
     upload(lineWidthPx);
 

@@ -13,17 +13,21 @@
 #include <vector>
 
 // How a frame's first paint is done, when a planner gives it (ui_frame_base.h): the whole
-// framebuffer cleared to `clear`, then `background` painted the scene's background.
+// framebuffer cleared to the scene's background, the arena's colour or `clear`, then
+// `background` painted the scene's background and `arena` the arena's colour.
 struct FrameBase {
-    bool planned = false; // false: the whole framebuffer cleared to the scene's background
-    float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-    std::vector<PixelBox> background;
+    enum class Clear { Background, Arena, Colour };
+    // false: the whole framebuffer cleared to the scene's background, then all the arena painted
+    bool planned = false;
+    Clear clearTo = Clear::Background;
+    float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f}; // Clear::Colour's
+    std::vector<PixelBox> background, arena;
 };
-// Given the framebuffer pixels the scene draws in besides its background, and those it paints
-// opaque (its arena), in rows from the top.
+// Given the framebuffer pixels the scene draws in besides its background, and its arena (painted
+// before the rest of the scene), in rows from the top.
 using FrameBasePlanner =
     std::function<FrameBase(int framebufferWidth, int framebufferHeight, const PixelBox& sceneDrawn,
-                            const PixelBox& sceneCovered)>;
+                            const PixelBox& arena)>;
 
 class SceneRenderer {
   public:
@@ -87,6 +91,7 @@ class SceneRenderer {
     double maxPointPx_ = 1.0;           // the largest point sprite used for a block, pixels
     SceneGeometry geometry_;
     FrameBasePlanner planner_;
-    // The frame's base: its clear, and the scene's background (outside `drawn` none is needed).
-    void paintBase(const SceneView& view, const PixelBox& drawn, const PixelBox& covered);
+    // The frame's base: its clear, the scene's background (outside `drawn` none is needed) and
+    // the arena (rows from the top).
+    void paintBase(const SceneView& view, const PixelBox& drawn, const PixelBox& arena);
 };

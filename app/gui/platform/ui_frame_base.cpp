@@ -9,21 +9,28 @@ bool rectsOverlap(const UiPixelRect& a, const UiPixelRect& b) {
     return !a.empty() && !b.empty() && a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
 }
 
+UiPixelRect clipped(const UiPixelRect& r, const UiPixelRect& to) {
+    return {std::max(r.x0, to.x0), std::max(r.y0, to.y0), std::min(r.x1, to.x1),
+            std::min(r.y1, to.y1)};
+}
+
 long long pixelCount(const UiPixelRect& r) {
     return r.empty() ? 0 : static_cast<long long>(r.x1 - r.x0) * (r.y1 - r.y0);
 }
 
 } // namespace
 
-std::vector<UiPixelRect> rectsOutside(const std::vector<UiPixelRect>& holes, int width,
-                                      int height) {
-    std::vector<int> xs{0, width}, ys{0, height};
+std::vector<UiPixelRect> rectsOutside(const std::vector<UiPixelRect>& given, UiPixelRect area) {
+    if (area.empty()) return {};
+    std::vector<UiPixelRect> holes; // those reaching into the area, clipped to it
+    for (const UiPixelRect& h : given)
+        if (rectsOverlap(h, area)) holes.push_back(clipped(h, area));
+    std::vector<int> xs{area.x0, area.x1}, ys{area.y0, area.y1};
     for (const UiPixelRect& h : holes) {
-        if (h.empty()) continue;
-        xs.push_back(std::clamp(h.x0, 0, width));
-        xs.push_back(std::clamp(h.x1, 0, width));
-        ys.push_back(std::clamp(h.y0, 0, height));
-        ys.push_back(std::clamp(h.y1, 0, height));
+        xs.push_back(h.x0);
+        xs.push_back(h.x1);
+        ys.push_back(h.y0);
+        ys.push_back(h.y1);
     }
     for (std::vector<int>* v : {&xs, &ys}) {
         std::sort(v->begin(), v->end());
@@ -33,11 +40,9 @@ std::vector<UiPixelRect> rectsOutside(const std::vector<UiPixelRect>& holes, int
     std::vector<UiPixelRect> open; // the previous band's runs, still growing downwards
     for (std::size_t j = 0; j + 1 < ys.size(); ++j) {
         const int y0 = ys[j], y1 = ys[j + 1];
-        if (y1 <= y0) continue;
         std::vector<UiPixelRect> runs; // this band's free runs
         for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
             const UiPixelRect cell{xs[i], y0, xs[i + 1], y1};
-            if (cell.empty()) continue;
             const bool covered = std::any_of(holes.begin(), holes.end(), [&](const UiPixelRect& h) {
                 return h.x0 <= cell.x0 && cell.x1 <= h.x1 && h.y0 <= cell.y0 && cell.y1 <= h.y1;
             });
@@ -65,46 +70,71 @@ std::vector<UiPixelRect> rectsOutside(const std::vector<UiPixelRect>& holes, int
     return out;
 }
 
+std::vector<UiPixelRect> rectsOutside(const std::vector<UiPixelRect>& holes, int width,
+                                      int height) {
+    return rectsOutside(holes, UiPixelRect{0, 0, width, height});
+}
+
 UiFrameBase planFrameBase(const std::vector<UiPaint>& paints, UiPixelRect sceneDrawn,
-                          UiPixelRect sceneCovered, int width, int height) {
+                          UiPixelRect arena, int width, int height) {
     UiFrameBase plan;
     plan.skip.assign(paints.size(), false);
     if (width <= 0 || height <= 0) return plan;
+    // Only the frame's pixels count (a box may reach past it).
+    const UiPixelRect frame{0, 0, width, height};
+    const auto inFrame = [&](const UiPixelRect& r) { return clipped(r, frame); };
+    arena = inFrame(arena);
     // The fills whose pixels nothing touched before them, by colour.
-    std::vector<UiPixelRect> touched;
-    if (!sceneDrawn.empty()) touched.push_back(sceneDrawn);
-    if (!sceneCovered.empty()) touched.push_back(sceneCovered); // the arena's own colour there
-
+    std::vector<UiPixelRect> touched{inFrame(sceneDrawn), arena}; // the arena's own colour there
     std::vector<bool> clean(paints.size(), false);
     std::map<ImU32, long long> cleanArea;
+    std::vector<UiPixelRect> fills;
     for (std::size_t i = 0; i < paints.size(); ++i) {
         const UiPaint& p = paints[i];
-        if (!p.inside.empty() &&
+        const UiPixelRect inside = inFrame(p.inside);
+        if (!inside.empty() &&
             std::none_of(touched.begin(), touched.end(),
-                         [&](const UiPixelRect& t) { return rectsOverlap(t, p.inside); })) {
+                         [&](const UiPixelRect& t) { return rectsOverlap(t, inside); })) {
             clean[i] = true;
-            cleanArea[p.color] += pixelCount(p.inside);
+            cleanArea[p.color] += pixelCount(inside);
         }
-        touched.push_back(p.bounds);
-        if (!p.inside.empty()) touched.push_back(p.inside);
+        touched.push_back(inFrame(p.bounds));
+        if (!inside.empty()) {
+            touched.push_back(inside);
+            fills.push_back(inside);
+        }
     }
-    if (cleanArea.empty()) return plan;
-    const auto best =
-        std::max_element(cleanArea.begin(), cleanArea.end(),
-                         [](const auto& a, const auto& b) { return a.second < b.second; });
-    // The background is painted outside every fill (a skipped one keeps the clear's colour, the
-    // others clear their own pixels over whatever is there) and the scene's opaque part.
-    std::vector<UiPixelRect> holes{sceneCovered};
-    for (const UiPaint& p : paints)
-        if (!p.inside.empty()) holes.push_back(p.inside);
-    std::vector<UiPixelRect> rest = rectsOutside(holes, width, height);
-    long long restArea = 0;
-    for (const UiPixelRect& r : rest) restArea += pixelCount(r);
-    if (best->second <= restArea) return plan; // painting the rest would cost more
+    // The pixels still seen of the background (outside every fill, each clearing its own pixels
+    // over whatever is there, and the arena) and of the arena (outside the fills).
+    std::vector<UiPixelRect> arenaSeen = rectsOutside(fills, arena);
+    fills.push_back(arena);
+    std::vector<UiPixelRect> rest = rectsOutside(fills, frame);
+    const auto areaOf = [](const std::vector<UiPixelRect>& rects) {
+        long long n = 0;
+        for (const UiPixelRect& r : rects) n += pixelCount(r);
+        return n;
+    };
+    // The clear to the largest: the background on a tie (as ever), then the arena.
+    long long largest = areaOf(rest);
+    if (const long long a = areaOf(arenaSeen); !arena.empty() && a > largest) {
+        plan.clearTo = UiFrameClear::Arena;
+        largest = a;
+    }
+    if (!cleanArea.empty()) {
+        const auto best =
+            std::max_element(cleanArea.begin(), cleanArea.end(),
+                             [](const auto& a, const auto& b) { return a.second < b.second; });
+        if (best->second > largest) {
+            plan.clearTo = UiFrameClear::Fills;
+            plan.clear = best->first;
+        }
+    }
+    if (plan.clearTo == UiFrameClear::Background && arena.empty()) return plan; // as ever
     plan.planned = true;
-    plan.clear = best->first;
-    plan.background = std::move(rest);
-    for (std::size_t i = 0; i < paints.size(); ++i)
-        plan.skip[i] = clean[i] && paints[i].color == best->first;
+    if (plan.clearTo != UiFrameClear::Background) plan.background = std::move(rest);
+    if (plan.clearTo != UiFrameClear::Arena) plan.arena = std::move(arenaSeen);
+    if (plan.clearTo == UiFrameClear::Fills)
+        for (std::size_t i = 0; i < paints.size(); ++i)
+            plan.skip[i] = clean[i] && paints[i].color == plan.clear;
     return plan;
 }

@@ -589,7 +589,7 @@ float channel(ImU32 c, int shift) {
 
 void uiRendererPlanFrameBase(SceneRenderer& renderer) {
     renderer.setFrameBasePlanner([](int sceneWidth, int sceneHeight, const PixelBox& sceneDrawn,
-                                    const PixelBox& sceneCovered) {
+                                    const PixelBox& arena) {
         FrameBase base;
         const ImDrawData* data = ImGui::GetDrawData();
         gUi.plannedFor = gUi.preparedFor = nullptr;
@@ -608,20 +608,23 @@ void uiRendererPlanFrameBase(SceneRenderer& renderer) {
         gUi.preparedFor = data;
         const UiFrameBase plan =
             planFrameBase(gUi.paints, {sceneDrawn.x0, sceneDrawn.y0, sceneDrawn.x1, sceneDrawn.y1},
-                          {sceneCovered.x0, sceneCovered.y0, sceneCovered.x1, sceneCovered.y1},
-                          fbWidth, fbHeight);
+                          {arena.x0, arena.y0, arena.x1, arena.y1}, fbWidth, fbHeight);
         if (!plan.planned) return base;
         gUi.plannedFor = data;
         gUi.fillSkipped.assign(fillPaint.size(), false);
         for (std::size_t f = 0; f < fillPaint.size(); ++f)
             gUi.fillSkipped[f] = plan.skip[fillPaint[f]];
         base.planned = true;
+        base.clearTo = plan.clearTo == UiFrameClear::Fills   ? FrameBase::Clear::Colour
+                       : plan.clearTo == UiFrameClear::Arena ? FrameBase::Clear::Arena
+                                                             : FrameBase::Clear::Background;
         base.clear[0] = channel(plan.clear, IM_COL32_R_SHIFT);
         base.clear[1] = channel(plan.clear, IM_COL32_G_SHIFT);
         base.clear[2] = channel(plan.clear, IM_COL32_B_SHIFT);
         base.clear[3] = 1.0f;
         for (const UiPixelRect& r : plan.background)
             base.background.push_back({r.x0, r.y0, r.x1, r.y1});
+        for (const UiPixelRect& r : plan.arena) base.arena.push_back({r.x0, r.y0, r.x1, r.y1});
         return base;
     });
 }

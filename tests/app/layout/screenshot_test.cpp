@@ -187,6 +187,47 @@ TEST(ScreenshotSemantic, BlocksAreDrawnWhereTheEngineSaysBouncingSquares) {
     expectBlocksWhereTheEngineSays("bouncing_squares", 90);
 }
 
+// The share of a 9 x 9 grid of points, spread over the world's bounds (or, with `outside`, a
+// band 30 px beyond its left and right walls), whose colour is `want` to within 2 counts (the
+// clear's colour, exactly but for rounding: the grid's thin lines and the blocks cover a few).
+double shareOfColour(const Image& image, const App& app, const Color& want, bool outside) {
+    const Bounds& bounds = app.sim.world().bounds;
+    const Vec2 lo = app.view.camera.worldToScreen(bounds.min);
+    const Vec2 hi = app.view.camera.worldToScreen(bounds.max);
+    int hits = 0, samples = 0;
+    for (int sy = 0; sy < 9; ++sy) {
+        for (int sx = 0; sx < 9; ++sx) {
+            const double fy = (sy + 0.3) / 9.0; // off the grid's lines (every 0.5 m)
+            double x = std::min(lo.x, hi.x) + (sx + 0.3) / 9.0 * std::abs(hi.x - lo.x);
+            if (outside) x = sx < 5 ? std::min(lo.x, hi.x) - 30 : std::max(lo.x, hi.x) + 30;
+            const double y = std::min(lo.y, hi.y) + fy * std::abs(hi.y - lo.y);
+            const int px = static_cast<int>(x), py = static_cast<int>(y);
+            if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
+            ++samples;
+            hits += std::abs(image.at(px, py, 0) - int(std::lround(want.r * 255))) <= 2 &&
+                    std::abs(image.at(px, py, 1) - int(std::lround(want.g * 255))) <= 2 &&
+                    std::abs(image.at(px, py, 2) - int(std::lround(want.b * 255))) <= 2;
+        }
+    }
+    return samples ? double(hits) / samples : 0.0;
+}
+
+// The arena (inside the bounds) in its theme's colour, the rest of the view in the background's,
+// in both themes (the arena's clear once never ran: its rows were taken the wrong way up).
+TEST(ScreenshotSemantic, ArenaAndBackgroundEachInTheirThemesColour) {
+    for (const bool light : {false, true}) {
+        const std::string theme = light ? "light" : "dark";
+        const fs::path png = outputDir() / ("semantic_arena_" + theme + ".png");
+        const Image image = render("lecture_example_1 --show none --theme " + theme, png);
+        ASSERT_FALSE(image.empty());
+        const App app = simulate("lecture_example_1", 0, image.width, image.height, false);
+        const SceneTheme& colours = sceneTheme(light);
+        EXPECT_GE(shareOfColour(image, app, colours.arena, false), 0.8) << png;
+        EXPECT_EQ(shareOfColour(image, app, colours.background, false), 0.0) << png;
+        EXPECT_GE(shareOfColour(image, app, colours.background, true), 0.8) << png;
+    }
+}
+
 // The controls panel's title bar: ImGuiCol_TitleBg of the theme (ui_style.cpp), 41 74 122.
 bool titleBarAt(const Image& image, int x, int y) {
     return std::abs(image.at(x, y, 0) - 41) <= 12 && std::abs(image.at(x, y, 1) - 74) <= 12 &&
