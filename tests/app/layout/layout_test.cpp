@@ -438,4 +438,20 @@ TEST(TextJson, ListsTheLessonsCaptionTheBadgeAndThePanel) {
     EXPECT_TRUE(title && status && panel && label) << f.texts.dump(1);
 }
 
+// A scene changed since it was loaded says so in the panel's scene picker: its name describes
+// the file ("Lecture example 1": bounciness 1), not a world whose C the lecturer set to 0.5.
+TEST(TextJson, AnEditedSceneIsMarkedEditedInThePicker) {
+    const auto picker = [](const Frame& f) {
+        for (const auto& t : f.texts) {
+            const std::string text = t.at("text");
+            if (t.at("window") == "Controls" && text.rfind("Lecture example 1", 0) == 0)
+                return text;
+        }
+        return std::string("(not found)");
+    };
+    EXPECT_EQ(picker(frameOf("picker_as_loaded", "lecture_example_1")), "Lecture example 1");
+    EXPECT_EQ(picker(frameOf("picker_edited", "lecture_example_1 --set bounciness=0.5")),
+              "Lecture example 1 (edited)");
+}
+
 } // namespace

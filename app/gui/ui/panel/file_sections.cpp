@@ -40,7 +40,12 @@ void scenePicker(App& app) {
     const float room = ImGui::GetContentRegionAvail().x - copyWidth - ImGui::GetFrameHeight() -
                        2.0f * style.FramePadding.x;
     const std::string& name = app.sim.scene.name;
-    const std::string preview = name.empty() ? "(no scene)" : fittedName(name, room);
+    // A scene changed since it was loaded is marked so: its name describes the file ("Momentum
+    // example, C = 1"), which is no longer what is on screen once C or a mass has changed.
+    const char* edited = app.sim.unsavedEdits() ? " (edited)" : "";
+    const std::string preview =
+        name.empty() ? "(no scene)"
+                     : fittedName(name, room - ImGui::CalcTextSize(edited).x) + edited;
     // Taller than the default 8 rows: every shipped scene at once, in the lecture's order.
     if (ImGui::BeginCombo("##scene", preview.c_str(), ImGuiComboFlags_HeightLargest)) {
         uiBeginRows();
