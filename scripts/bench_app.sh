@@ -7,7 +7,8 @@
 # (default 7; the per-overlay cases OVERLAY_RUNS, default 3, 0 to skip them) for FRAMES frames
 # (default 150) and prints the fastest and the median run: the machine's other work only ever
 # adds time. With the projector's teaching case, where its drawing time went (the median run's
-# split: UI built, scene drawn, UI drawn, pixels waited for; see --benchmark-frames).
+# split: the frame worked out on the second thread, scene drawn, UI drawn, pixels waited for,
+# the next frame waited for; see --benchmark-frames).
 # Given several build directories (before and after), every case runs them in turn, run by run,
 # so that the machine's load falls on all alike; the load average is printed before and after.
 # Usage: scripts/bench_app.sh [BUILD_DIR ...]   (default: build)

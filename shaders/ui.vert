@@ -1,5 +1,5 @@
 #version 330 core
-// Dear ImGui's vertices (app/gui/platform/ui_renderer_gl.cpp). Variant: TEXTURED samples the font atlas.
+// Dear ImGui's vertices (app/gui/platform/ui_renderer/ui_renderer_gl.cpp). Variant: TEXTURED samples the font atlas.
 layout(location = 0) in vec2 aPosition; // px, y down
 layout(location = 1) in vec2 aUv;
 layout(location = 2) in vec4 aColor;    // normalised from 8 bits per channel

@@ -143,66 +143,76 @@ void SceneRenderer::pointShapeAttributes(std::size_t base) {
                           reinterpret_cast<const void*>(base + offsetof(ShapeVertex, r)));
 }
 
-void SceneRenderer::append(const void* data, std::size_t bytes) {
+namespace {
+
+void append(std::vector<unsigned char>& upload, const void* data, std::size_t bytes) {
     const auto* from = static_cast<const unsigned char*>(data);
-    upload_.insert(upload_.end(), from, from + bytes);
+    upload.insert(upload.end(), from, from + bytes);
 }
 
-SceneRenderer::BatchRanges SceneRenderer::addBatch(const ShapeBatch& batch, float lineWidthPx) {
+} // namespace
+
+SceneFrame::BatchRanges SceneRenderer::addBatch(SceneFrame& frame, const ShapeBatch& batch,
+                                                float lineWidthPx,
+                                                double framebufferPixelsPerMetre) const {
+    std::vector<unsigned char>& upload = frame.upload;
     const auto vertexAt = [&] {
-        return static_cast<GLint>((upload_.size() - shapeBytes_) / sizeof(ShapeVertex));
+        return static_cast<GLint>((upload.size() - frame.shapeBytes) / sizeof(ShapeVertex));
     };
-    BatchRanges r;
+    SceneFrame::BatchRanges r;
     r.lineWidthPx = lineWidthPx;
     r.triangles = {vertexAt(), static_cast<GLsizei>(batch.vertices().size())};
-    append(batch.vertices().data(), batch.vertices().size() * sizeof(ShapeVertex));
+    append(upload, batch.vertices().data(), batch.vertices().size() * sizeof(ShapeVertex));
     const std::vector<ShapeVertex>& segments = batch.segmentVertices();
     r.segmentsAsLines = lineWidthPx <= maxLineWidth_;
     r.trianglesOpaque = allOpaque(batch.vertices());
     if (r.segmentsAsLines) {
         r.segments = {vertexAt(), static_cast<GLsizei>(segments.size())};
-        append(segments.data(), segments.size() * sizeof(ShapeVertex));
+        append(upload, segments.data(), segments.size() * sizeof(ShapeVertex));
         r.segmentsOpaque = allOpaque(segments);
         return r;
     }
     // No lines this wide (WebGL 2): the quads GL would have rasterised, written into the upload
     // (their colours are their segments' ends').
-    const std::size_t quads = wideLineQuadVertices(segments, framebufferPixelsPerMetre_);
+    const std::size_t quads = wideLineQuadVertices(segments, framebufferPixelsPerMetre);
     r.segments = {vertexAt(), static_cast<GLsizei>(quads)};
-    const std::size_t at = upload_.size();
-    upload_.resize(at + quads * sizeof(ShapeVertex));
-    writeWideLineQuads(segments, lineWidthPx, framebufferPixelsPerMetre_, upload_.data() + at);
+    const std::size_t at = upload.size();
+    upload.resize(at + quads * sizeof(ShapeVertex));
+    writeWideLineQuads(segments, lineWidthPx, framebufferPixelsPerMetre, upload.data() + at);
     r.segmentsOpaque = quads == 0 || allOpaque(segments);
     return r;
 }
 
-void SceneRenderer::upload(const float lineWidthPx[3]) {
-    upload_.clear();
+void SceneRenderer::buildUpload(SceneFrame& frame, double framebufferPixelsPerMetre) const {
+    frame.upload.clear();
     for (int k = 0; k < kBlockStyleCount; ++k) {
         for (int shape = 0; shape < kBlockShapeCount; ++shape) {
             const std::vector<BlockInstance>& instances = geometry_.blocks[k][shape];
-            blockPrograms_[k][shape].count = static_cast<GLsizei>(instances.size());
-            if (instances.empty()) continue;
-            blockPrograms_[k][shape].at = upload_.size();
-            append(instances.data(), instances.size() * sizeof(BlockInstance));
+            SceneFrame::Blocks& b = frame.blocks[k][shape];
+            b.count = static_cast<GLsizei>(instances.size());
+            b.at = frame.upload.size();
+            // Opaque blocks (the usual case) replace what is under them: no blending, which
+            // a software rasteriser pays for in every pixel (the same pixels either way).
+            b.opaque = std::all_of(instances.begin(), instances.end(), [](const BlockInstance& i) {
+                return i.fill[3] == 1.0f && i.outline[3] == 1.0f;
+            });
+            append(frame.upload, instances.data(), instances.size() * sizeof(BlockInstance));
         }
     }
-    shapeBytes_ = upload_.size();
+    frame.shapeBytes = frame.upload.size();
     const ShapeBatch* batches[3] = {&geometry_.under, &geometry_.momenta, &geometry_.over};
-    for (int i = 0; i < 3; ++i) batchRanges_[i] = addBatch(*batches[i], lineWidthPx[i]);
-    if (upload_.empty()) return;
-    glBindBuffer(GL_ARRAY_BUFFER, streamVbo_);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(upload_.size()), upload_.data(),
-                 GL_STREAM_DRAW);
+    const float lineWidthPx[3] = {kTrailWidthPx, kMomentumShaftPx, kVelocityShaftPx};
+    for (int i = 0; i < 3; ++i)
+        frame.batches[i] = addBatch(frame, *batches[i], lineWidthPx[i], framebufferPixelsPerMetre);
 }
 
-void SceneRenderer::drawShapes(const ClipTransform& t, const BatchRanges& r) {
+void SceneRenderer::drawShapes(const SceneFrame& frame, const SceneFrame::BatchRanges& r) {
     if (r.triangles.count == 0 && r.segments.count == 0) return;
     glUseProgram(shapeProgram_);
-    setUniformTransform(shapeTransform_, t);
+    setUniformTransform(shapeTransform_, frame.transform);
     glBindVertexArray(shapeVao_);
-    pointShapeAttributes(shapeBytes_);
-    bool blend = true; // as draw() leaves it for the shapes
+    pointShapeAttributes(frame.shapeBytes);
+    bool blend = true; // as submit() leaves it for the shapes
     if (r.triangles.count) {
         setBlend(blend, !r.trianglesOpaque);
         glDrawArrays(GL_TRIANGLES, r.triangles.first, r.triangles.count);
@@ -216,16 +226,12 @@ void SceneRenderer::drawShapes(const ClipTransform& t, const BatchRanges& r) {
     setBlend(blend, true);
 }
 
-void SceneRenderer::paintBase(const SceneView& view, const PixelBox& drawn, const PixelBox& arena) {
-    const Color bg = view.theme->background, arenaColor = view.theme->arena;
+void SceneRenderer::paintBase(const SceneFrame& frame) {
+    const Color bg = frame.background, arenaColor = frame.arenaColor;
     glDisable(GL_SCISSOR_TEST);
-    FrameBase base = planner_
-                         ? planner_(view.framebufferWidth, view.framebufferHeight, drawn, arena)
-                         : FrameBase{};
-    if (!base.planned) { // the background everywhere, then the arena over it
-        base = FrameBase{};
-        if (!arena.empty()) base.arena.push_back(arena);
-    }
+    FrameBase unplanned; // the background everywhere, then the arena over it
+    if (!frame.base.planned && !frame.arena.empty()) unplanned.arena.push_back(frame.arena);
+    const FrameBase& base = frame.base.planned ? frame.base : unplanned;
     if (base.clearTo == FrameBase::Clear::Colour)
         glClearColor(base.clear[0], base.clear[1], base.clear[2], base.clear[3]);
     else if (base.clearTo == FrameBase::Clear::Arena)
@@ -239,7 +245,7 @@ void SceneRenderer::paintBase(const SceneView& view, const PixelBox& drawn, cons
         glClearColor(c.r, c.g, c.b, 1.0f);
         for (const PixelBox& r : boxes) {
             if (r.empty()) continue;
-            glScissor(r.x0, view.framebufferHeight - r.y1, r.x1 - r.x0, r.y1 - r.y0);
+            glScissor(r.x0, frame.framebufferHeight - r.y1, r.x1 - r.x0, r.y1 - r.y0);
             glClear(GL_COLOR_BUFFER_BIT);
         }
     };
@@ -248,15 +254,19 @@ void SceneRenderer::paintBase(const SceneView& view, const PixelBox& drawn, cons
     glDisable(GL_SCISSOR_TEST);
 }
 
-void SceneRenderer::draw(const SceneView& view) {
-    if (!view.world || !view.camera || !shapeProgram_) {
-        paintBase(view, PixelBox{}, PixelBox{});
-        return;
-    }
+void SceneRenderer::prepare(const SceneView& view, SceneFrame& frame, bool measureDrawn) {
+    frame.framebufferWidth = view.framebufferWidth;
+    frame.framebufferHeight = view.framebufferHeight;
+    frame.background = view.theme->background;
+    frame.arenaColor = view.theme->arena;
+    frame.drawn = frame.arena = PixelBox{};
+    frame.base = FrameBase{};
+    frame.drawsWorld = view.world && view.camera && shapeProgram_;
+    if (!frame.drawsWorld) return;
     // The arena (inside the bounds), painted with the frame's base (paintBase).
     // The viewport as the caller set it (not asked of GL: in WebGL a query waits for the GPU
     // process).
-    const GLint vp[4] = {0, 0, view.framebufferWidth, view.framebufferHeight};
+    const int vp[4] = {0, 0, view.framebufferWidth, view.framebufferHeight};
     const double sx = vp[2] / view.displayWidth, sy = vp[3] / view.displayHeight;
     const Vec2 lo = view.camera->worldToScreen(view.world->bounds.min);
     const Vec2 hi = view.camera->worldToScreen(view.world->bounds.max);
@@ -267,22 +277,25 @@ void SceneRenderer::draw(const SceneView& view) {
     const double y0 = std::max(0.0, vp[3] - std::max(lo.y, hi.y) * sy),
                  y1 = std::min(double(vp[3]), vp[3] - std::min(lo.y, hi.y) * sy);
     const bool arenaShown = x1 > x0 && y1 > y0;
-    const GLint arenaBox[4] = {
-        static_cast<GLint>(std::lround(x0)), static_cast<GLint>(std::lround(y0)),
-        static_cast<GLsizei>(std::lround(x1 - x0)), static_cast<GLsizei>(std::lround(y1 - y0))};
+    const int arenaBox[4] = {static_cast<int>(std::lround(x0)), static_cast<int>(std::lround(y0)),
+                             static_cast<int>(std::lround(x1 - x0)),
+                             static_cast<int>(std::lround(y1 - y0))};
 
     const ClipTransform t = view.camera->clipTransform(view.displayWidth, view.displayHeight);
-    framebufferPixelsPerMetre_ = std::abs(t.scaleX) * 0.5 * vp[2];
+    frame.transform = t;
+    frame.pixelsPerMetre = static_cast<float>(view.camera->pixelsPerMetre());
+    const double framebufferPixelsPerMetre = std::abs(t.scaleX) * 0.5 * vp[2];
     geometry_.build(view, maxPointPx_);
 
     // Where the scene draws (the base beneath it is planned around it): its shapes and blocks,
     // and the arena, in rows from the top.
-    PixelBox drawn, arena;
     if (arenaShown)
-        arena = {arenaBox[0], vp[3] - (arenaBox[1] + arenaBox[3]), arenaBox[0] + arenaBox[2],
-                 vp[3] - arenaBox[1]};
-    if (planner_) {
+        frame.arena = {arenaBox[0], vp[3] - (arenaBox[1] + arenaBox[3]), arenaBox[0] + arenaBox[2],
+                       vp[3] - arenaBox[1]};
+    if (measureDrawn) {
+        PixelBox& drawn = frame.drawn;
         drawn = drawnBox(geometry_, t, vp[2], vp[3], kMomentumShaftPx, 2.0);
+        const PixelBox& arena = frame.arena;
         if (!arena.empty()) {
             if (drawn.empty())
                 drawn = arena;
@@ -291,45 +304,46 @@ void SceneRenderer::draw(const SceneView& view) {
                          std::max(drawn.x1, arena.x1), std::max(drawn.y1, arena.y1)};
         }
     }
-    paintBase(view, drawn, arena);
+    buildUpload(frame, framebufferPixelsPerMetre);
+}
 
+void SceneRenderer::submit(const SceneFrame& frame) {
+    paintBase(frame);
+    if (!frame.drawsWorld) return;
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    const float lineWidthPx[3] = {kTrailWidthPx, kMomentumShaftPx, kVelocityShaftPx};
-    upload(lineWidthPx);
+    if (!frame.upload.empty()) {
+        glBindBuffer(GL_ARRAY_BUFFER, streamVbo_);
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(frame.upload.size()),
+                     frame.upload.data(), GL_STREAM_DRAW);
+    }
 
-    drawShapes(t, batchRanges_[0]); // under the blocks: the grid, the trails
+    drawShapes(frame, frame.batches[0]); // under the blocks: the grid, the trails
 
 #if !SANDBOX_GL_ES
     glEnable(GL_PROGRAM_POINT_SIZE); // always on in OpenGL ES
 #endif
     for (int k = 0; k < kBlockStyleCount; ++k) {
         for (int shape = 0; shape < kBlockShapeCount; ++shape) {
-            const std::vector<BlockInstance>& instances = geometry_.blocks[k][shape];
-            const BlockProgram& b = blockPrograms_[k][shape];
-            if (instances.empty() || !b.program) continue;
-            // Opaque blocks (the usual case) replace what is under them: no blending, which
-            // a software rasteriser pays for in every pixel (the same pixels either way).
-            const bool opaque =
-                std::all_of(instances.begin(), instances.end(), [](const BlockInstance& i) {
-                    return i.fill[3] == 1.0f && i.outline[3] == 1.0f;
-                });
-            if (opaque)
+            const SceneFrame::Blocks& blocks = frame.blocks[k][shape];
+            BlockProgram& b = blockPrograms_[k][shape];
+            if (blocks.count == 0 || !b.program) continue;
+            if (blocks.opaque)
                 glDisable(GL_BLEND);
             else
                 glEnable(GL_BLEND);
             glUseProgram(b.program);
-            setUniformTransform(b.transform, t);
-            glUniform1f(b.pixelsPerMetre, static_cast<float>(view.camera->pixelsPerMetre()));
+            setUniformTransform(b.transform, frame.transform);
+            glUniform1f(b.pixelsPerMetre, frame.pixelsPerMetre);
             glBindVertexArray(b.vao);
-            pointBlockAttributes(k, shape, b.at);
+            pointBlockAttributes(k, shape, blocks.at);
             if (shape == kPoint)
-                glDrawArrays(GL_POINTS, 0, b.count);
+                glDrawArrays(GL_POINTS, 0, blocks.count);
             else
-                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, b.count);
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, blocks.count);
         }
     }
 #if !SANDBOX_GL_ES
@@ -337,8 +351,8 @@ void SceneRenderer::draw(const SceneView& view) {
 #endif
     glEnable(GL_BLEND);
 
-    drawShapes(t, batchRanges_[1]); // the momentum arrows
-    drawShapes(t, batchRanges_[2]); // the velocity arrows, the fling arrow
+    drawShapes(frame, frame.batches[1]); // the momentum arrows
+    drawShapes(frame, frame.batches[2]); // the velocity arrows, the fling arrow
 
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);

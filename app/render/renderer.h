@@ -7,12 +7,10 @@
 #include "scene_geometry.h"
 
 #include <cstddef>
-#include <functional>
 #include <string>
-#include <utility>
 #include <vector>
 
-// How a frame's first paint is done, when a planner gives it (ui_frame_base.h): the whole
+// How a frame's first paint is done, when the frame's UI plans it (ui_frame_base.h): the whole
 // framebuffer cleared to the scene's background, the arena's colour or `clear`, then
 // `background` painted the scene's background and `arena` the arena's colour.
 struct FrameBase {
@@ -23,29 +21,17 @@ struct FrameBase {
     float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f}; // Clear::Colour's
     std::vector<PixelBox> background, arena;
 };
-// Given the framebuffer pixels the scene draws in besides its background, and its arena (painted
-// before the rest of the scene), in rows from the top.
-using FrameBasePlanner =
-    std::function<FrameBase(int framebufferWidth, int framebufferHeight, const PixelBox& sceneDrawn,
-                            const PixelBox& arena)>;
 
-class SceneRenderer {
-  public:
-    // Compiles the embedded shaders; false with a message when the driver rejects them.
-    bool init(std::string* error);
-    void shutdown();
-    // Clears the framebuffer and draws the scene (GL viewport set by the caller to
-    // view.framebufferWidth x view.framebufferHeight).
-    void draw(const SceneView& view);
-    // Asked each frame how to paint the frame's base (none: the scene's background everywhere).
-    void setFrameBasePlanner(FrameBasePlanner planner) { planner_ = std::move(planner); }
+// A run of shape vertices in a frame's upload: its first vertex and how many.
+struct ShapeRange {
+    GLint first = 0;
+    GLsizei count = 0;
+};
 
-  private:
-    // A run of shape vertices in the frame's upload: its first vertex and how many.
-    struct ShapeRange {
-        GLint first = 0;
-        GLsizei count = 0;
-    };
+// A frame's scene as SceneRenderer::prepare works it out, with no GL call, and as
+// SceneRenderer::submit draws it: the app may prepare frame N+1 on one thread while another
+// submits frame N (app/gui/platform/frame). Everything the GL calls need is here.
+struct SceneFrame {
     // A batch's parts in the upload: its triangles, and its segments as GL lines or (wider than
     // GL draws them) as the quads writeWideLineQuads makes.
     struct BatchRanges {
@@ -55,13 +41,49 @@ class SceneRenderer {
         // Every vertex's alpha 1: drawn without blending (the same pixels).
         bool trianglesOpaque = false, segmentsOpaque = false;
     };
+    // One style and shape of blocks: its instances in the upload (bytes), how many, and whether
+    // all are opaque (drawn without blending).
+    struct Blocks {
+        std::size_t at = 0;
+        GLsizei count = 0;
+        bool opaque = true;
+    };
+    bool drawsWorld = false; // else only the base (no world, camera or programs)
+    int framebufferWidth = 0, framebufferHeight = 0;
+    Color background, arenaColor;
+    // Rows from the top: the pixels the scene draws in besides its background (when asked for:
+    // the frame base's plan needs them) and its arena.
+    PixelBox drawn, arena;
+    FrameBase base; // as planned after prepare (else the background, then the arena)
+    ClipTransform transform;
+    float pixelsPerMetre = 1.0f; // the camera's
     // Everything the frame draws in one buffer, uploaded by one glBufferData: the blocks'
     // instances (each style and shape's after the other's), then the shapes' vertices. In WebGL
     // each upload crosses to JavaScript and into the browser's GPU process.
-    void upload(const float lineWidthPx[3]);
-    void append(const void* data, std::size_t bytes);
-    BatchRanges addBatch(const ShapeBatch& batch, float lineWidthPx);
-    void drawShapes(const ClipTransform& t, const BatchRanges& ranges);
+    std::vector<unsigned char> upload;
+    std::size_t shapeBytes = 0; // where the shape vertices start in `upload`
+    Blocks blocks[kBlockStyleCount][kBlockShapeCount];
+    BatchRanges batches[3]; // under, momenta, over
+};
+
+class SceneRenderer {
+  public:
+    // Compiles the embedded shaders; false with a message when the driver rejects them.
+    bool init(std::string* error);
+    void shutdown();
+    // Works out the frame: the scene's geometry and its upload, with no GL call (any thread,
+    // one prepare at a time). `measureDrawn`: find frame.drawn, for a plan of the frame's base.
+    void prepare(const SceneView& view, SceneFrame& frame, bool measureDrawn);
+    // Clears the framebuffer and draws the prepared frame (GL viewport set by the caller to
+    // frame.framebufferWidth x frame.framebufferHeight).
+    void submit(const SceneFrame& frame);
+
+  private:
+    // The frame's upload (SceneFrame::upload) from geometry_.
+    void buildUpload(SceneFrame& frame, double framebufferPixelsPerMetre) const;
+    SceneFrame::BatchRanges addBatch(SceneFrame& frame, const ShapeBatch& batch, float lineWidthPx,
+                                     double framebufferPixelsPerMetre) const;
+    void drawShapes(const SceneFrame& frame, const SceneFrame::BatchRanges& ranges);
     // A vertex array's attributes moved to `base` bytes into the buffer, only when they are
     // elsewhere (the offsets stay from frame to frame while the block counts do).
     void pointBlockAttributes(int style, int shape, std::size_t base);
@@ -74,8 +96,6 @@ class SceneRenderer {
         GLint transform = -1, pixelsPerMetre = -1;
         GLuint vao = 0;
         std::size_t base = ~std::size_t(0); // where its attributes point in the buffer (bytes)
-        std::size_t at = 0;                 // its instances in this frame's upload (bytes)
-        GLsizei count = 0;                  // and how many
     };
     BlockProgram blockPrograms_[kBlockStyleCount][kBlockShapeCount];
     GLuint shapeProgram_ = 0;
@@ -84,14 +104,9 @@ class SceneRenderer {
     std::size_t shapeBase_ = ~std::size_t(0); // where the shape attributes point (bytes)
     GLint shapeTransform_ = -1;
     float maxLineWidth_ = 1.0f; // the widest GL line, pixels (1 in WebGL 2)
-    double framebufferPixelsPerMetre_ = 1.0;
-    BatchRanges batchRanges_[3];        // under, momenta, over
-    std::vector<unsigned char> upload_; // the instances, then the shape vertices
-    std::size_t shapeBytes_ = 0;        // where the shape vertices start in upload_
-    double maxPointPx_ = 1.0;           // the largest point sprite used for a block, pixels
-    SceneGeometry geometry_;
-    FrameBasePlanner planner_;
+    double maxPointPx_ = 1.0;   // the largest point sprite used for a block, pixels
+    SceneGeometry geometry_;    // prepare's (its buffers kept from frame to frame)
     // The frame's base: its clear, the scene's background (outside `drawn` none is needed) and
     // the arena (rows from the top).
-    void paintBase(const SceneView& view, const PixelBox& drawn, const PixelBox& arena);
+    void paintBase(const SceneFrame& frame);
 };

@@ -107,12 +107,17 @@ ParsedOptions parseOptions(int argc, const char* const* argv) {
     app.add_option("--show", show, showHelp);
     CLI::Option* record =
         app.add_option("--record", o.record, "Write N numbered PNGs (and an MP4 with ffmpeg) here");
-    app.add_option("--benchmark-frames", o.benchmarkFrames,
-                   "Offscreen: step and render N frames, print ms per frame (with --screenshot: "
-                   "and write the last one), " +
-                       limits::describe(limits::kBenchmarkFrames))
-        ->transform(frameCount(limits::kBenchmarkFrames))
-        ->excludes(record);
+    CLI::Option* benchmark =
+        app.add_option("--benchmark-frames", o.benchmarkFrames,
+                       "Offscreen: step and render N frames, print ms per frame (with "
+                       "--screenshot: and write the last one), " +
+                           limits::describe(limits::kBenchmarkFrames))
+            ->transform(frameCount(limits::kBenchmarkFrames))
+            ->excludes(record);
+    app.add_flag("--benchmark-in-turn", o.benchmarkInTurn,
+                 "With --benchmark-frames: each frame worked out, then drawn (not the next "
+                 "worked out on a second thread while one is drawn)")
+        ->needs(benchmark);
     // A decimal number within the app's range (CLI::Range lets NaN through).
     const limits::Range uiScale{kMinUiScale, kMaxUiScale, ""};
     app.add_option("--ui-scale", o.uiScale, "UI scale (0.75 to 3; e.g. 1.5 on a projector)")

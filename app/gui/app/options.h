@@ -25,9 +25,10 @@ struct Options {
     int height = 720;
     bool showGiven = false;
     ShowSet show;
-    int benchmarkFrames = 0;  // offscreen: render this many frames and print ms per frame
-    float uiScale = 0.0f;     // 0: the saved setting (window) or 1 (offscreen)
-    bool verbose = false;     // print state changes (pause, method, sliders...) to stdout
+    int benchmarkFrames = 0;      // offscreen: render this many frames and print ms per frame
+    bool benchmarkInTurn = false; // the benchmark's frames worked out and drawn in turn
+    float uiScale = 0.0f;         // 0: the saved setting (window) or 1 (offscreen)
+    bool verbose = false;         // print state changes (pause, method, sliders...) to stdout
     bool present = false;     // start in present mode: the scene and a caption, no panel or window
     std::string layoutJson;   // offscreen: write the layout (scene, world, windows) here, in pixels
     std::string textJson;     // offscreen: write every text drawn in the last frame here

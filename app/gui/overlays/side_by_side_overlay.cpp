@@ -1,5 +1,5 @@
 // Methods side by side: the other two methods' blocks drawn as coloured outlines (ghosts) over
-// the live world (by the renderer, see appRender), and a table of each method's statistics:
+// the live world (by the renderer, see appPrepareScene), and a table of each method's statistics:
 // collisions, largest overlap, energy, momentum, and how far it has drifted from perfect.
 #include "app_frame.h"
 #include "number_text.h"

@@ -13,6 +13,7 @@
 #include "mouse_tool.h"
 #include "options.h"
 #include "page_controls.h"
+#include "prepared_frame.h"
 #include "printable.h"
 #include "renderer.h"
 #include "spoken_text.h"
@@ -45,7 +46,8 @@ struct WebApp {
     App app;
     CanvasWeb canvas;
     SceneRenderer renderer;
-    AudioOut audio; // Web Audio, through emscripten's OpenAL
+    PreparedFrame frame; // worked out, then drawn (one thread: ImGui's draw data not copied)
+    AudioOut audio;      // Web Audio, through emscripten's OpenAL
     AppConfig config;
     std::string storedSettings; // what local storage holds, to write only on change
     bool unsavedShown = false;  // what the page was last told (it asks before unloading then)
@@ -276,8 +278,8 @@ void runFrame(WebApp& w) {
     resolveTouch(w);
     appFrame(app, canvasTakeKeyPresses(w.canvas), realSeconds, true);
     ImGui::Render();
-    appRender(app, w.renderer, w.canvas.width, w.canvas.height);
-    uiRendererRender(ImGui::GetDrawData());
+    prepareFrame(app, w.renderer, w.canvas.width, w.canvas.height, w.frame, false);
+    drawFrame(w.renderer, w.frame);
     w.audio.play(app.sim.sound);
     answerRequests(w);
     tellPage(w, realSeconds);

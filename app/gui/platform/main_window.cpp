@@ -5,7 +5,10 @@
 #include "app_frame.h"
 #include "app_setup.h"
 #include "audio_out.h"
+#include "frame_worker.h"
+#include "imgui_ext.h"
 #include "options.h"
+#include "prepared_frame.h"
 #include "printable.h"
 #include "renderer.h"
 #include "scene_library.h"
@@ -89,10 +92,37 @@ int runWindow(const Options& options, char** argv, int argc) {
         std::fprintf(stderr, "sandbox: shader error: %s\n", error.c_str());
         app.ui.messages.error = "Shader error: " + error;
     }
-    uiRendererPlanFrameBase(renderer); // windows' backgrounds from the frame's clear
     AudioOut audio;
-    bool first = true;
+    // The frames pipelined (prepared_frame.h): while the main thread issues frame N's GL calls
+    // and shows it, a second thread works out frame N+1 from the input polled before (ImGui's
+    // frame, the app's, the scene's geometry: no GL and no GLFW call); the two never touch the
+    // app together (the worker's job starts after the poll and is waited for before anything
+    // else). A key acts in the frame shown next but one: 16.7 ms later at 60 frames a second.
+    // While a text field has the keyboard the frames are worked out here, in turn (ImGui then
+    // asks GLFW for the clipboard, which only the main thread may).
+    FrameWorker worker;
+    PreparedFrame frames[2];
+    int next = 0;       // frames[next]: the one worked out next
+    bool ready = false; // frames[1 - next] worked out and not drawn yet
+    bool shownOnce = false;
     double realSeconds = 0.0;
+    const auto workOut = [&](PreparedFrame& frame, const std::vector<KeyPress>& keys, double dt,
+                             int fw, int fh) {
+        ImGui::NewFrame();
+        appFrame(app, keys, dt, true);
+        ImGui::Render();
+        prepareFrame(app, renderer, fw, fh, frame, true);
+    };
+    const auto show = [&](const PreparedFrame& frame) {
+        drawFrame(renderer, frame);
+        windowPresent(window);
+        if (!shownOnce && app.log.verbose) {
+            std::printf("window ready %dx%d\n", frame.scene.framebufferWidth,
+                        frame.scene.framebufferHeight);
+            std::fflush(stdout);
+        }
+        shownOnce = true;
+    };
     while (!app.ui.quitRequested && windowNewFrame(window, &realSeconds)) {
         if (window.closeRequested) { // the close button: asks when there are unsaved edits
             window.closeRequested = false;
@@ -102,26 +132,37 @@ int runWindow(const Options& options, char** argv, int argc) {
         }
         app.view.fullscreen = window.fullscreen;
         for (const std::string& path : windowTakeDroppedFiles(window)) openFile(app, path);
-        ImGui::NewFrame();
-        appFrame(app, windowTakeKeyPresses(window), realSeconds, true);
-        ImGui::Render();
+        const std::vector<KeyPress> keys = windowTakeKeyPresses(window);
         int fw = 0, fh = 0;
         windowFramebufferSize(window, &fw, &fh);
-        appRender(app, renderer, fw, fh);
-        uiRendererRender(ImGui::GetDrawData());
-        windowPresent(window);
-        audio.play(app.sim.sound);
-        if (first && app.log.verbose) {
-            std::printf("window ready %dx%d\n", fw, fh);
-            std::fflush(stdout);
+        PreparedFrame& worked = frames[next];
+        if (imgui_ext::typingAfterFrame()) { // in turn, here
+            if (ready) show(frames[1 - next]);
+            workOut(worked, keys, realSeconds, fw, fh);
+            show(worked);
+            ready = false;
+        } else if (!ready) { // the pipeline's first frame: shown at the next turn
+            workOut(worked, keys, realSeconds, fw, fh);
+            ready = true;
+            next = 1 - next;
+        } else {
+            worker.start([&] { workOut(worked, keys, realSeconds, fw, fh); });
+            show(frames[1 - next]);
+            worker.wait();
+            next = 1 - next;
         }
-        first = false;
+        audio.play(app.sim.sound);
         if (app.ui.fullscreenRequested) {
             windowSetFullscreen(window, !window.fullscreen);
             app.ui.fullscreenRequested = false;
         }
-        // Fonts and theme, only what changed; new fonts go to the UI renderer.
-        if (uiFollowView(app.view, app.ui.touchUi)) uiRendererFontsChanged();
+        // Fonts and theme, only what changed; new fonts go to the UI renderer. A frame worked
+        // out with the old atlas is shown first, with it.
+        if (uiFollowView(app.view, app.ui.touchUi)) {
+            if (ready) show(frames[1 - next]);
+            ready = false;
+            uiRendererFontsChanged();
+        }
     }
     // Absolute, so that the next start from another folder finds it.
     std::error_code absoluteError;

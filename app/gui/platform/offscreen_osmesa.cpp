@@ -63,11 +63,15 @@ void offscreenShutdown(OffscreenOsmesa& o) {
     o.context = nullptr;
 }
 
-void offscreenNewFrame(OffscreenOsmesa& o, double deltaSeconds) {
+void offscreenFrameInput(int width, int height, double deltaSeconds) {
     ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(static_cast<float>(o.width), static_cast<float>(o.height));
+    io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
     io.DeltaTime = static_cast<float>(deltaSeconds > 0.0 ? deltaSeconds : 1.0 / 60.0);
     io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+}
+
+void offscreenNewFrame(OffscreenOsmesa& o, double deltaSeconds) {
+    offscreenFrameInput(o.width, o.height, deltaSeconds);
     uiRendererNewFrame();
 }
 

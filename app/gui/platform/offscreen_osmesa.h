@@ -19,6 +19,8 @@ bool offscreenInit(OffscreenOsmesa& o, int width, int height, std::string* error
 void offscreenShutdown(OffscreenOsmesa& o);
 // Starts the backends' frame: display size, a fixed delta time, no mouse.
 void offscreenNewFrame(OffscreenOsmesa& o, double deltaSeconds);
+// ImGui's part of it alone (no GL call): the input of a frame `width` x `height`.
+void offscreenFrameInput(int width, int height, double deltaSeconds);
 // Waits for rendering to finish.
 void offscreenFinish(OffscreenOsmesa& o);
 // The image, top row first, RGBA8 (width * height * 4 bytes).

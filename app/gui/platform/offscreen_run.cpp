@@ -3,9 +3,11 @@
 #include "app_config.h"
 #include "app_frame.h"
 #include "app_setup.h"
+#include "frame_worker.h"
 #include "imgui_ext.h"
 #include "offscreen_osmesa.h"
 #include "png_io.h"
+#include "prepared_frame.h"
 #include "printable.h"
 #include "renderer.h"
 #include "safe_file.h"
@@ -44,6 +46,7 @@ struct Offscreen {
     int width = 0, height = 0; // the image's size (its context's, with pixels)
     OffscreenOsmesa context;
     SceneRenderer renderer;
+    PreparedFrame frames[2]; // the benchmark's pipeline: the frame drawn and the one worked out
 };
 
 // --audio-wav: the knocks of the frames simulated, mixed as OpenAL plays them (audio_out.cpp),
@@ -102,43 +105,19 @@ int writeTrack(const AudioTrack& track, const Options& o) {
     return 0;
 }
 
-// Where a frame's time goes (--benchmark-frames), ms summed over the frames: building the UI
-// (ImGui's windows, the overlays, the scene's labels), the scene's GL calls, ImGui's GL calls,
-// and the wait for the pixels (llvmpipe rasterises mostly there, on its own threads).
-struct FrameTimes {
-    double ui = 0.0, scene = 0.0, uiDraw = 0.0, finish = 0.0;
-};
-
-void renderFrame(App& app, Offscreen& off, FrameTimes* times = nullptr) {
-    using Clock = std::chrono::steady_clock;
-    const auto since = [](Clock::time_point& t) {
-        const Clock::time_point now = Clock::now();
-        const double ms = std::chrono::duration<double, std::milli>(now - t).count();
-        t = now;
-        return ms;
-    };
-    FrameTimes unused;
-    FrameTimes& spent = times ? *times : unused;
-    Clock::time_point t = Clock::now();
-    if (off.pixels) {
+// A frame as the window shows it, worked out and drawn in turn (screenshots, recordings).
+void renderFrame(App& app, Offscreen& off) {
+    if (off.pixels)
         offscreenNewFrame(off.context, kFrameSeconds);
-    } else { // the frame's input as offscreenNewFrame gives it, and no renderer
-        ImGuiIO& io = ImGui::GetIO();
-        io.DisplaySize = ImVec2(static_cast<float>(off.width), static_cast<float>(off.height));
-        io.DeltaTime = static_cast<float>(kFrameSeconds);
-        io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
-    }
+    else // the frame's input as offscreenNewFrame gives it, and no renderer
+        offscreenFrameInput(off.width, off.height, kFrameSeconds);
     ImGui::NewFrame();
     appFrame(app, {}, kFrameSeconds, false);
     ImGui::Render();
-    spent.ui += since(t);
     if (!off.pixels) return;
-    appRender(app, off.renderer, off.context.width, off.context.height);
-    spent.scene += since(t);
-    uiRendererRender(ImGui::GetDrawData());
-    spent.uiDraw += since(t);
+    prepareFrame(app, off.renderer, off.context.width, off.context.height, off.frames[0], false);
+    drawFrame(off.renderer, off.frames[0]);
     offscreenFinish(off.context);
-    spent.finish += since(t);
 }
 
 bool writeFrame(const Offscreen& off, const std::string& path) {
@@ -449,33 +428,77 @@ long minorPageFaults() {
     return getrusage(RUSAGE_SELF, &usage) == 0 ? usage.ru_minflt : 0;
 }
 
+// The benchmark's frames as the window's loop gives them (prepared_frame.h): frame N+1 worked
+// out on a second thread (the simulation's step, the UI built, the frame prepared) while the
+// main thread issues frame N's GL calls and waits for its pixels; --benchmark-in-turn: one
+// after the other, on the main thread. Where the time goes, ms summed
+// over the frames: the frame worked out (on the worker but for the first), the scene's GL calls,
+// ImGui's, the wait for the pixels (llvmpipe rasterises there, on its own threads), and the
+// wait for the next frame to be worked out.
+struct FrameTimes {
+    double simulation = 0.0, prepared = 0.0, scene = 0.0, uiDraw = 0.0, finish = 0.0,
+           preparedWait = 0.0;
+};
+
 int benchmark(App& app, Offscreen& off, const Options& o) {
     using Clock = std::chrono::steady_clock;
+    const auto since = [](Clock::time_point& t) {
+        const Clock::time_point now = Clock::now();
+        const double ms = std::chrono::duration<double, std::milli>(now - t).count();
+        t = now;
+        return ms;
+    };
     for (int i = 0; i < kSettleFrames; ++i) renderFrame(app, off); // shaders compile here
-    double simMs = 0.0;
     FrameTimes times;
+    // No GL call: the worker's job (for frame 0, the main thread's).
+    const auto workOut = [&](PreparedFrame& frame) {
+        Clock::time_point t = Clock::now();
+        stepSimulation(app);
+        times.simulation += since(t);
+        offscreenFrameInput(off.context.width, off.context.height, kFrameSeconds);
+        ImGui::NewFrame();
+        appFrame(app, {}, kFrameSeconds, false);
+        ImGui::Render();
+        prepareFrame(app, off.renderer, off.context.width, off.context.height, frame, true);
+        times.prepared += since(t);
+    };
+    FrameWorker worker;
     const long faultsBefore = minorPageFaults();
     const auto start = Clock::now();
+    uiRendererNewFrame(); // (the fonts are uploaded: settled)
+    workOut(off.frames[0]);
     for (int i = 0; i < o.benchmarkFrames; ++i) {
-        const auto s0 = Clock::now();
-        stepSimulation(app);
-        simMs += std::chrono::duration<double, std::milli>(Clock::now() - s0).count();
-        renderFrame(app, off, &times);
+        const PreparedFrame& frame = off.frames[i % 2];
+        const bool more = i + 1 < o.benchmarkFrames;
+        if (more && !o.benchmarkInTurn) worker.start([&] { workOut(off.frames[(i + 1) % 2]); });
+        Clock::time_point t = Clock::now();
+        glViewport(0, 0, frame.scene.framebufferWidth, frame.scene.framebufferHeight);
+        off.renderer.submit(frame.scene); // drawFrame's two parts, timed apart
+        times.scene += since(t);
+        uiRendererRender(frame.ui);
+        times.uiDraw += since(t);
+        offscreenFinish(off.context);
+        times.finish += since(t);
+        worker.wait();
+        times.preparedWait += since(t);
+        if (more && o.benchmarkInTurn) workOut(off.frames[(i + 1) % 2]);
     }
     const double totalMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-    const double perFrame = totalMs / o.benchmarkFrames;
+    const double n = o.benchmarkFrames;
+    const double perFrame = totalMs / n;
     std::printf("benchmark: %d frames, %dx%d, %zu blocks, %s\n", o.benchmarkFrames,
                 off.context.width, off.context.height, app.sim.world().blocks.size(),
                 offscreenGlDescription().c_str());
     std::printf("  %.3f ms/frame (%.1f frames/s); simulation %.3f ms/frame, drawing %.3f "
                 "ms/frame\n",
-                perFrame, 1000.0 / perFrame, simMs / o.benchmarkFrames,
-                perFrame - simMs / o.benchmarkFrames);
-    const double n = o.benchmarkFrames;
+                perFrame, 1000.0 / perFrame, times.simulation / n, perFrame - times.simulation / n);
     const double faults = static_cast<double>(minorPageFaults() - faultsBefore) / n;
-    std::printf("  drawing: UI built %.3f ms, scene drawn %.3f ms, UI drawn %.3f ms, pixels "
-                "waited for %.3f ms\n",
-                times.ui / n, times.scene / n, times.uiDraw / n, times.finish / n);
+    std::printf("  drawing: worked out %.3f ms (UI built, scene's geometry; %s), scene drawn "
+                "%.3f ms, UI drawn %.3f ms, pixels waited for %.3f ms, next frame waited for "
+                "%.3f ms\n",
+                (times.prepared - times.simulation) / n,
+                o.benchmarkInTurn ? "in turn" : "on a second thread", times.scene / n,
+                times.uiDraw / n, times.finish / n, times.preparedWait / n);
     std::printf("  memory: %.1f page faults a frame (memory given back and taken again)\n", faults);
     // With --screenshot too: the last frame benchmarked.
     return o.screenshot.empty() ? 0 : writeScreenshot(off, o);
@@ -556,7 +579,6 @@ int runOffscreen(const Options& options) {
         return 1;
     }
     const bool shadersOk = off.renderer.init(&error);
-    uiRendererPlanFrameBase(off.renderer); // windows' backgrounds from the frame's clear
     if (!shadersOk) {
         // Keep going: the panels still render and the picture shows what is missing; the exit
         // code says it failed.

@@ -1,6 +1,6 @@
 // The offscreen modes of `sandbox-offscreen` (and of `sandbox` with no display): a screenshot
 // after N frames, a recording of N frames, or a benchmark. Each renders exactly what the window
-// shows, through the same appFrame()/appRender().
+// shows, through the same appFrame() and prepared frame (platform/frame/prepared_frame.h).
 #pragma once
 
 #include "options.h"

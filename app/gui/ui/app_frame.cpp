@@ -328,10 +328,9 @@ void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, b
     logStateChanges(app);
 }
 
-void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
-               int framebufferHeight) {
+void appPrepareScene(const App& app, SceneRenderer& renderer, int framebufferWidth,
+                     int framebufferHeight, SceneFrame& frame, bool measureDrawn) {
     const ImGuiIO& io = ImGui::GetIO();
-    glViewport(0, 0, framebufferWidth, framebufferHeight);
     SceneView scene;
     scene.world = &app.sim.world();
     scene.camera = &app.view.camera;
@@ -372,5 +371,5 @@ void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
         scene.flingFrom = app.sim.world().blocks[static_cast<std::size_t>(m.block)].position;
         scene.flingTo = scene.flingFrom + (m.cursorWorld - m.pressWorld);
     }
-    renderer.draw(scene);
+    renderer.prepare(scene, frame, measureDrawn);
 }

@@ -10,14 +10,16 @@
 
 class SceneRenderer;
 struct ImDrawList;
+struct SceneFrame;
 
 // Between ImGui::NewFrame() and ImGui::Render(): the key presses since the last frame, the mouse,
 // the simulation (when `runClock`: the window passes real time; the offscreen renderer steps
 // explicitly) and the UI.
 void appFrame(App& app, const std::vector<KeyPress>& keys, double realSeconds, bool runClock);
-// After ImGui::Render(): clears and draws the scene (the UI renderer draws ImGui's on top).
-void appRender(const App& app, SceneRenderer& renderer, int framebufferWidth,
-               int framebufferHeight);
+// After ImGui::Render(): works out the scene's frame (no GL call; SceneRenderer::submit draws it,
+// then the UI renderer ImGui's on top). `measureDrawn`: SceneRenderer::prepare's.
+void appPrepareScene(const App& app, SceneRenderer& renderer, int framebufferWidth,
+                     int framebufferHeight, SceneFrame& frame, bool measureDrawn);
 // Does what a key binding says (also used by the panel's buttons).
 void applyAction(App& app, Action action);
 // Prints the --verbose lines for what changed since the last call.

@@ -15,7 +15,7 @@ get_filename_component(SHIPPED_LESSONS ${PROJECT_SOURCE_DIR}/lessons ABSOLUTE)
 file(GLOB SHIPPED_SCENE_FILES CONFIGURE_DEPENDS ${SHIPPED_SCENES}/*.json ${SHIPPED_LESSONS}/*.json)
 
 # The files with a thread_local, without bulk memory (cmake/web.cmake says why).
-set_source_files_properties(ui/label_placement.cpp platform/ui_draw_runs.cpp PROPERTIES
+set_source_files_properties(ui/label_placement.cpp platform/ui_renderer/ui_draw_runs.cpp PROPERTIES
                             COMPILE_OPTIONS -mno-bulk-memory)
 
 # The main and the canvas, compiled once for both.
@@ -24,7 +24,7 @@ add_library(sandbox_web_main OBJECT platform/main_web.cpp platform/canvas_web.cp
 set_source_files_properties(platform/web/control_probe.cpp PROPERTIES
                             COMPILE_DEFINITIONS IMGUI_ENABLE_TEST_ENGINE)
 target_include_directories(sandbox_web_main PRIVATE platform)
-target_link_libraries(sandbox_web_main PUBLIC sandbox_ui sandbox_ui_renderer glfw)
+target_link_libraries(sandbox_web_main PUBLIC sandbox_frames glfw)
 sandbox_warnings(sandbox_web_main)
 
 # Where the shipped files go in the browser's file system: preloaded from sandbox.data by the

@@ -78,6 +78,11 @@ void stopTyping() {
     if (ImGui::GetIO().WantTextInput) ImGui::ClearActiveID();
 }
 
+bool typingAfterFrame() {
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    return g.IO.WantTextInput || g.WantTextInputNextFrame == 1;
+}
+
 void endFrameLeftOpen() {
     if (!ImGui::GetCurrentContext()->WithinFrameScope) return;
     ImGui::ErrorCheckEndFrameRecover(nullptr);

@@ -46,6 +46,10 @@ void focusCurrentWindowForKeyboard();
 // Ends the typing into the active text field (a Ctrl+clicked slider, a file name), keeping what
 // was typed (as a click elsewhere does).
 void stopTyping();
+// After ImGui::Render: whether a text field had the keyboard in this frame or takes it in the
+// next (ImGui then asks the platform for the clipboard: the window's loop builds such frames on
+// its main thread).
+bool typingAfterFrame();
 // After an exception left an ImGui frame open (the browser's frame goes on after an error): its
 // windows and stacks are closed as ImGui's own error recovery does, and the frame ended.
 void endFrameLeftOpen();

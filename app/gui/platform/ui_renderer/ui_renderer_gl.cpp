@@ -44,16 +44,6 @@ struct UiRenderer {
     std::vector<ImDrawVert> vertices;   // GL ES: every list's, uploaded at once
     std::vector<std::uint32_t> indices; // GL ES: every list's, into all the vertices
     UiDrawMerger merger;                // GL ES: the draws of the commands
-    // The frame's base as planned (uiRendererPlanFrameBase), for the draw data it was planned
-    // on: which opaque fills find their colour already there (in the order of the fills).
-    const ImDrawData* plannedFor = nullptr;
-    std::vector<bool> fillSkipped;
-    std::vector<UiPaint> paints;
-    // The runs of every command drawn, worked out while planning, for the draw data
-    // `preparedFor`: command k's are planRuns[planCmdEnd[k - 1] .. planCmdEnd[k]).
-    const ImDrawData* preparedFor = nullptr;
-    std::vector<UiDrawRun> planRuns;
-    std::vector<std::size_t> planCmdEnd;
 };
 UiRenderer gUi;
 
@@ -206,9 +196,6 @@ void uiRendererFontsChanged() {
 }
 
 void uiRendererNewFrame() {
-    // A plan holds for the frame it was made in only (the draw data is the same object every
-    // frame).
-    gUi.plannedFor = gUi.preparedFor = nullptr;
     if (gUi.fontsChanged && gUi.textured.program) uploadFontTexture();
 }
 
@@ -442,7 +429,45 @@ void drawOpaqueFill(const UiDrawRun& run, const ScissorBox& scissor, const Sciss
 } // namespace
 #endif
 
-void uiRendererRender(const ImDrawData* data) {
+namespace {
+
+// ImGui's buffers keep their capacity (ImVector's assignment frees it first).
+template <typename T> void copyInto(ImVector<T>& to, const ImVector<T>& from) {
+    to.resize(from.Size);
+    if (from.Size > 0)
+        std::memcpy(to.Data, from.Data, static_cast<std::size_t>(from.Size) * sizeof(T));
+}
+
+} // namespace
+
+void uiRendererCapture(UiFrame& frame, bool copy) {
+    frame.prepared = frame.planned = false;
+    const ImDrawData* data = ImGui::GetDrawData();
+    if (!copy || !data) {
+        frame.data = data;
+        return;
+    }
+    const std::size_t count = static_cast<std::size_t>(std::max(data->CmdListsCount, 0));
+    while (frame.lists.size() < count)
+        frame.lists.push_back(std::make_unique<ImDrawList>(ImGui::GetDrawListSharedData()));
+    frame.listPointers.resize(count);
+    for (std::size_t n = 0; n < count; ++n) {
+        const ImDrawList& from = *data->CmdLists[n];
+        ImDrawList& to = *frame.lists[n];
+        copyInto(to.CmdBuffer, from.CmdBuffer);
+        copyInto(to.IdxBuffer, from.IdxBuffer);
+        copyInto(to.VtxBuffer, from.VtxBuffer);
+        to.Flags = from.Flags;
+        frame.listPointers[n] = &to;
+    }
+    frame.copy = *data;
+    frame.copy.CmdLists = frame.listPointers.data();
+    frame.data = &frame.copy;
+}
+
+void uiRendererRender(const UiFrame& frame) {
+    const ImDrawData* data = frame.data;
+    if (!data) return;
     const int fbWidth = static_cast<int>(data->DisplaySize.x * data->FramebufferScale.x);
     const int fbHeight = static_cast<int>(data->DisplaySize.y * data->FramebufferScale.y);
     if (fbWidth <= 0 || fbHeight <= 0 || !gUi.textured.program) return;
@@ -452,8 +477,7 @@ void uiRendererRender(const ImDrawData* data) {
 #else
     const GLenum indexType = sizeof(ImDrawIdx) == 2 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT;
     GLuint current = 0; // the program in use
-    const bool planned = gUi.plannedFor == data, prepared = gUi.preparedFor == data;
-    gUi.plannedFor = gUi.preparedFor = nullptr;
+    const bool planned = frame.planned, prepared = frame.prepared;
     std::size_t drawnCmd = 0; // the commands drawn so far (the plan's order)
     std::size_t fill = 0;     // the fills met so far (the plan's order)
     for (int n = 0; n < data->CmdListsCount; ++n) {
@@ -475,9 +499,9 @@ void uiRendererRender(const ImDrawData* data) {
             glBindTexture(GL_TEXTURE_2D, textureName(cmd.GetTexID()));
 
             const UiDrawRun *runs = nullptr, *runsEnd = nullptr;
-            if (prepared && drawnCmd < gUi.planCmdEnd.size()) { // as the plan worked them out
-                runs = gUi.planRuns.data() + (drawnCmd ? gUi.planCmdEnd[drawnCmd - 1] : 0);
-                runsEnd = gUi.planRuns.data() + gUi.planCmdEnd[drawnCmd];
+            if (prepared && drawnCmd < frame.planCmdEnd.size()) { // as the plan worked them out
+                runs = frame.planRuns.data() + (drawnCmd ? frame.planCmdEnd[drawnCmd - 1] : 0);
+                runsEnd = frame.planRuns.data() + frame.planCmdEnd[drawnCmd];
             } else {
                 commandRuns(list, cmd, data, gUi.runs);
                 runs = gUi.runs.data();
@@ -500,7 +524,7 @@ void uiRendererRender(const ImDrawData* data) {
                     draw();
                 } else {
                     const bool skip =
-                        planned && fill < gUi.fillSkipped.size() && gUi.fillSkipped[fill];
+                        planned && fill < frame.fillSkipped.size() && frame.fillSkipped[fill];
                     ++fill;
                     const ScissorBox reach = trianglesReach(
                         list->VtxBuffer.Data + cmd.VtxOffset, list->IdxBuffer.Data + run.firstIndex,
@@ -524,8 +548,9 @@ UiPixelRect clipRect(const UiPixelRect& a, const UiPixelRect& b) {
 
 // What each draw of `data` paints (UiPaint), in the order uiRendererRender draws them, with the
 // same runs; `fillPaint` gets, for each opaque fill run, its paint's index.
-void listPaints(const ImDrawData* data, int fbWidth, int fbHeight, std::vector<UiPaint>& paints,
-                std::vector<std::size_t>& fillPaint) {
+void listPaints(UiFrame& frame, int fbWidth, int fbHeight, std::vector<std::size_t>& fillPaint) {
+    const ImDrawData* data = frame.data;
+    std::vector<UiPaint>& paints = frame.paints;
     const ImVec2 origin = data->DisplayPos, scale = data->FramebufferScale;
     const UiPixelRect everywhere{0, 0, fbWidth, fbHeight};
     for (int n = 0; n < data->CmdListsCount; ++n) {
@@ -540,10 +565,10 @@ void listPaints(const ImDrawData* data, int fbWidth, int fbHeight, std::vector<U
             const UiPixelRect clip{box.x, fbHeight - (box.y + box.height), box.x + box.width,
                                    fbHeight - box.y};
             const ImDrawVert* vertices = list->VtxBuffer.Data + cmd.VtxOffset;
-            commandRuns(list, cmd, data, gUi.runs);
-            gUi.planRuns.insert(gUi.planRuns.end(), gUi.runs.begin(), gUi.runs.end());
-            gUi.planCmdEnd.push_back(gUi.planRuns.size());
-            for (const UiDrawRun& run : gUi.runs) {
+            commandRuns(list, cmd, data, frame.runs);
+            frame.planRuns.insert(frame.planRuns.end(), frame.runs.begin(), frame.runs.end());
+            frame.planCmdEnd.push_back(frame.planRuns.size());
+            for (const UiDrawRun& run : frame.runs) {
                 float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
                 const ImDrawIdx* idx = list->IdxBuffer.Data + run.firstIndex;
                 for (unsigned k = 0; k < run.indexCount; ++k) {
@@ -587,47 +612,55 @@ float channel(ImU32 c, int shift) {
 
 } // namespace
 
-void uiRendererPlanFrameBase(SceneRenderer& renderer) {
-    renderer.setFrameBasePlanner([](int sceneWidth, int sceneHeight, const PixelBox& sceneDrawn,
-                                    const PixelBox& arena) {
-        FrameBase base;
-        const ImDrawData* data = ImGui::GetDrawData();
-        gUi.plannedFor = gUi.preparedFor = nullptr;
-        if (!data || !gUi.textured.program) return base;
-        const int fbWidth = static_cast<int>(data->DisplaySize.x * data->FramebufferScale.x);
-        const int fbHeight = static_cast<int>(data->DisplaySize.y * data->FramebufferScale.y);
-        // The UI's framebuffer is the scene's (a window being resized may give them apart for
-        // a frame: then no plan, the frame drawn as before).
-        if (fbWidth <= 0 || fbHeight <= 0 || fbWidth != sceneWidth || fbHeight != sceneHeight)
-            return base;
-        gUi.paints.clear();
-        gUi.planRuns.clear();
-        gUi.planCmdEnd.clear();
-        std::vector<std::size_t> fillPaint;
-        listPaints(data, fbWidth, fbHeight, gUi.paints, fillPaint);
-        gUi.preparedFor = data;
-        const UiFrameBase plan =
-            planFrameBase(gUi.paints, {sceneDrawn.x0, sceneDrawn.y0, sceneDrawn.x1, sceneDrawn.y1},
-                          {arena.x0, arena.y0, arena.x1, arena.y1}, fbWidth, fbHeight);
-        if (!plan.planned) return base;
-        gUi.plannedFor = data;
-        gUi.fillSkipped.assign(fillPaint.size(), false);
-        for (std::size_t f = 0; f < fillPaint.size(); ++f)
-            gUi.fillSkipped[f] = plan.skip[fillPaint[f]];
-        base.planned = true;
-        base.clearTo = plan.clearTo == UiFrameClear::Fills   ? FrameBase::Clear::Colour
-                       : plan.clearTo == UiFrameClear::Arena ? FrameBase::Clear::Arena
-                                                             : FrameBase::Clear::Background;
-        base.clear[0] = channel(plan.clear, IM_COL32_R_SHIFT);
-        base.clear[1] = channel(plan.clear, IM_COL32_G_SHIFT);
-        base.clear[2] = channel(plan.clear, IM_COL32_B_SHIFT);
-        base.clear[3] = 1.0f;
-        for (const UiPixelRect& r : plan.background)
-            base.background.push_back({r.x0, r.y0, r.x1, r.y1});
-        for (const UiPixelRect& r : plan.arena) base.arena.push_back({r.x0, r.y0, r.x1, r.y1});
+bool uiRendererPlansFrameBase() {
+    return true;
+}
+
+FrameBase uiRendererPlanFrameBase(UiFrame& frame, int sceneWidth, int sceneHeight,
+                                  const PixelBox& sceneDrawn, const PixelBox& arena) {
+    FrameBase base;
+    const ImDrawData* data = frame.data;
+    frame.planned = frame.prepared = false;
+    if (!data || !gUi.textured.program) return base;
+    const int fbWidth = static_cast<int>(data->DisplaySize.x * data->FramebufferScale.x);
+    const int fbHeight = static_cast<int>(data->DisplaySize.y * data->FramebufferScale.y);
+    // The UI's framebuffer is the scene's (a window being resized may give them apart for a
+    // frame: then no plan, the frame drawn as before).
+    if (fbWidth <= 0 || fbHeight <= 0 || fbWidth != sceneWidth || fbHeight != sceneHeight)
         return base;
-    });
+    frame.paints.clear();
+    frame.planRuns.clear();
+    frame.planCmdEnd.clear();
+    std::vector<std::size_t> fillPaint;
+    listPaints(frame, fbWidth, fbHeight, fillPaint);
+    frame.prepared = true;
+    const UiFrameBase plan =
+        planFrameBase(frame.paints, {sceneDrawn.x0, sceneDrawn.y0, sceneDrawn.x1, sceneDrawn.y1},
+                      {arena.x0, arena.y0, arena.x1, arena.y1}, fbWidth, fbHeight);
+    if (!plan.planned) return base;
+    frame.planned = true;
+    frame.fillSkipped.assign(fillPaint.size(), false);
+    for (std::size_t f = 0; f < fillPaint.size(); ++f)
+        frame.fillSkipped[f] = plan.skip[fillPaint[f]];
+    base.planned = true;
+    base.clearTo = plan.clearTo == UiFrameClear::Fills   ? FrameBase::Clear::Colour
+                   : plan.clearTo == UiFrameClear::Arena ? FrameBase::Clear::Arena
+                                                         : FrameBase::Clear::Background;
+    base.clear[0] = channel(plan.clear, IM_COL32_R_SHIFT);
+    base.clear[1] = channel(plan.clear, IM_COL32_G_SHIFT);
+    base.clear[2] = channel(plan.clear, IM_COL32_B_SHIFT);
+    base.clear[3] = 1.0f;
+    for (const UiPixelRect& r : plan.background)
+        base.background.push_back({r.x0, r.y0, r.x1, r.y1});
+    for (const UiPixelRect& r : plan.arena) base.arena.push_back({r.x0, r.y0, r.x1, r.y1});
+    return base;
 }
 #else
-void uiRendererPlanFrameBase(SceneRenderer&) {} // WebGL: a GPU pays little for a fill
+bool uiRendererPlansFrameBase() {
+    return false; // WebGL: a GPU pays little for a fill
+}
+
+FrameBase uiRendererPlanFrameBase(UiFrame&, int, int, const PixelBox&, const PixelBox&) {
+    return {};
+}
 #endif
