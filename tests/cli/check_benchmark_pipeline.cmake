@@ -1,7 +1,8 @@
 # The benchmark's pipelined frames (frame N+1 worked out on a second thread while frame N is
 # drawn, as the window's loop does: app/gui/platform/frame) against the same frames worked out
-# and drawn in turn (--benchmark-in-turn): the last frame's PNG byte for byte, twice (a race
-# between the threads would show as a difference now and then). The overlays are those whose
+# and drawn in turn (--benchmark-in-turn): the last frame's PNG byte for byte, twice. The last
+# frame is drawn while the worker works out the one after it, as every other: without ImGui's
+# draw data copied, or with one frame's buffers for both threads, the PNGs differ. The overlays are those whose
 # numbers do not depend on the machine's speed (not the side-by-side table's ms per step).
 # Run: cmake -DOFFSCREEN=... -DSCENE=... -DOUT=... -P check_benchmark_pipeline.cmake
 file(MAKE_DIRECTORY ${OUT})
