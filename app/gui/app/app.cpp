@@ -118,6 +118,7 @@ void resetToFile(App& app) {
 
 FrameOutcome stepSimulation(App& app) {
     app.sim.inLesson = app.lesson.active();
+    if (!lessonBeforeFrames(app.lesson, app.sim, app.view)) return {}; // at its moment at once
     return app.sim.step(lessonRunsSideBySide(app.lesson, app.view));
 }
 
@@ -127,6 +128,7 @@ int advanceSimulation(App& app, double realSeconds) {
         return 0;
     }
     app.sim.inLesson = app.lesson.active();
+    if (!app.sim.paused && !lessonBeforeFrames(app.lesson, app.sim, app.view)) return 0;
     const int frames = app.sim.advance(realSeconds, lessonRunsSideBySide(app.lesson, app.view));
     if (app.lesson.active()) lessonAfterFrames(app.lesson, app.sim, app.view); // its moment
     return frames;

@@ -267,6 +267,17 @@ bool lessonRunsSideBySide(const LessonSession& s, const View& view) {
            std::find(step->reveal.begin(), step->reveal.end(), "sidebyside") != step->reveal.end();
 }
 
+bool lessonBeforeFrames(LessonSession& s, SimulationSession& sim, View& view) {
+    if (!s.active() || s.phase != LessonSession::Phase::Setup) return true;
+    const bool paused = sim.paused;
+    if (!startPlaying(s, sim)) { // its event is there at once: the moment, as the next press
+        lessonShowPausePoint(s, sim, view);
+        return false;
+    }
+    sim.paused = paused; // N: one frame, and paused still
+    return true;
+}
+
 void lessonAfterFrames(LessonSession& s, SimulationSession& sim, View& view) {
     if (s.phase != LessonSession::Phase::Playing || !s.watch || !s.watch->paused()) return;
     sim.stopWhen = nullptr;

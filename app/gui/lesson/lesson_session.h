@@ -120,6 +120,12 @@ void lessonShowPausePoint(LessonSession& s, SimulationSession& sim, View& view);
 // it at its moment (it runs hidden while the question is asked, so no table gives the answer
 // away, and shows the whole run with the answer).
 bool lessonRunsSideBySide(const LessonSession& s, const View& view);
+// Before the simulation runs frames (P, N, the panel's Play or Step, the page's controls: every
+// way but the lesson's own play): at the step's setup the step is played from here, as the next
+// press plays it, so that its question keeps reading the world it asks about (the one played
+// from) and its moment still comes. False when the step pauses at once (its moment shown): then
+// no frame is to run.
+bool lessonBeforeFrames(LessonSession& s, SimulationSession& sim, View& view);
 // After the frames of a displayed frame: when the step reached its moment while playing, shows
 // the answer and the overlays that prove it (or, when its event did not come, says why).
 void lessonAfterFrames(LessonSession& s, SimulationSession& sim, View& view);

@@ -529,3 +529,45 @@ TEST(LessonMidDemo, ThePollAsksTheLiveQuestionAndMarksTheLiveRunsChoice) {
     EXPECT_EQ(screen.proved, 1);
     stopPoll(app.poll);
 }
+
+// The lecture's P (or N, or the panel's Play and Step) at a step's setup, instead of the lesson's
+// PageDown: the step is played from there all the same. Before, the step stayed at its setup
+// while the world ran, and its question read the running world as if it were the setup: after
+// step 10's collision "Solution 1: v1' = 4, v2' = -2", false (seen walking the lesson), and no
+// moment came. Now the question stays the setup's, word for word, and the step pauses at its
+// moment in the runner's state, bit for bit, as PageDown plays it.
+TEST(LessonSession, PAtTheSetupPlaysTheStepAndItsQuestionStaysTrue) {
+    App app = lessonApp();
+    const Lesson& lesson = *app.lesson.lesson;
+    std::size_t momentum = lesson.steps.size();
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i)
+        if (lesson.steps[i].title == "Momentum: total momentum zero") momentum = i;
+    ASSERT_LT(momentum, lesson.steps.size());
+    const LessonStep& step = lesson.steps[momentum];
+    const StepRun run = runStepToPause(step);
+
+    ASSERT_TRUE(enterStep(app, momentum));
+    const std::string question = lessonTexts(app.lesson, app.sim).question;
+    ASSERT_NE(question.find("Solution 1: v1' = -4, v2' = 2."), std::string::npos) << question;
+    app.sim.paused = false; // P (applyAction's TogglePause)
+    for (int k = 0; k < 100000 && !app.sim.paused; ++k) {
+        advanceSimulation(app, 1.0 / 60.0);
+        ASSERT_EQ(lessonTexts(app.lesson, app.sim).question, question)
+            << "t = " << app.sim.world().time;
+    }
+    EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Moment);
+    EXPECT_EQ(stateHash(app.sim.world()), stateHash(run.world));
+    EXPECT_EQ(lessonTexts(app.lesson, app.sim).question, question);
+    EXPECT_NE(lessonTexts(app.lesson, app.sim).answer.find("v1' = -4 m/s and v2' = 2 m/s"),
+              std::string::npos)
+        << lessonTexts(app.lesson, app.sim).answer;
+
+    // N at the setup: one frame, the step playing, still paused, the question the setup's.
+    ASSERT_TRUE(enterStep(app, momentum));
+    app.sim.paused = true; // applyAction's StepOnce
+    stepSimulation(app);
+    EXPECT_EQ(app.sim.world().frame, 1u);
+    EXPECT_TRUE(app.sim.paused);
+    EXPECT_EQ(app.lesson.phase, LessonSession::Phase::Playing);
+    EXPECT_EQ(lessonTexts(app.lesson, app.sim).question, question);
+}
