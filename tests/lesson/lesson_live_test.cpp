@@ -138,6 +138,30 @@ TEST(LessonText, AsWrittenTextSaysSoOnceTheWorldIsChanged) {
     const std::vector<int> same{0, 1, 2};
     EXPECT_EQ(stepPrompt(s, setup, same, true).question, "q, the digits of pi. {x}");
     EXPECT_EQ(stepPrompt(s, setup, same, false).question, "q (as written: the digits of pi). {x}");
+    // Separators after the text go too: lecture3's step 10 read "(as written: Both keep the
+    // momentum:) which one is it?" once C was changed.
+    const LessonStep colon = parsedStep(
+        R"("question": "q.{as written: Both keep the momentum:} which?", "answer": "a",
+           "choices": [{"text": "y", "if": "t >= 0", "correct": true}, {"text": "n", "if": "t < 0"}],
+           "pause_at": {"time": 0.1})");
+    EXPECT_EQ(stepPrompt(colon, stepStartWorld(colon), same, true).question,
+              "q. Both keep the momentum: which?");
+    EXPECT_EQ(stepPrompt(colon, stepStartWorld(colon), same, false).question,
+              "q. (as written: Both keep the momentum) which?");
+}
+
+// {as written: ,;} says nothing: refused where it stands (shown in a changed world, its text
+// would have been nothing at all).
+TEST(LessonText, AsWrittenOfSeparatorsAloneIsRefused) {
+    const std::string text =
+        R"({"name": "t", "steps": [{"title": "s", "caption": "c{as written: , ;}", "scene":
+        {"name": "x", "world": {"gravity": [0, 0]}, "blocks": [
+        {"name": "m1", "position": [4, 6], "size": 1, "mass": 1}]}}]})";
+    const LessonResult r = parseLesson(text, "t.json", context());
+    EXPECT_FALSE(r.lesson);
+    EXPECT_NE(r.error.text().find("{as written: ...} says nothing"), std::string::npos)
+        << r.error.text();
+    EXPECT_NE(r.error.text().find("column 2"), std::string::npos) << r.error.text();
 }
 
 // ---- Events found live ----

@@ -8,6 +8,8 @@ using scene_json::ValueError;
 namespace {
 
 constexpr const char* kAsWritten = "as written:";
+// Dropped around an {as written: ...} text once it is put in parentheses.
+constexpr const char* kAsWrittenSeparators = " ,;:";
 
 // The 1-based column, in characters, of byte `at` of `text`.
 std::size_t columnOf(const std::string& text, std::size_t at) {
@@ -15,12 +17,6 @@ std::size_t columnOf(const std::string& text, std::size_t at) {
     for (std::size_t i = 0; i < at && i < text.size(); ++i)
         if ((static_cast<unsigned char>(text[i]) & 0xc0) != 0x80) ++column;
     return column;
-}
-
-std::string trimmed(const std::string& s) {
-    const std::size_t first = s.find_first_not_of(' ');
-    if (first == std::string::npos) return "";
-    return s.substr(first, s.find_last_not_of(' ') - first + 1);
 }
 
 } // namespace
@@ -70,7 +66,8 @@ LessonText parseLessonText(const std::string& text, const Scene& scene,
         if (inner.rfind(kAsWritten, 0) == 0) {
             p.kind = LessonText::Part::Kind::AsWritten;
             p.text = inner.substr(std::string(kAsWritten).size()); // its spaces are the text's
-            if (trimmed(p.text).empty())
+            // Nothing but spaces and separators says nothing either (",": they are dropped).
+            if (p.text.find_first_not_of(kAsWrittenSeparators) == std::string::npos)
                 throw ValueError{path, "column " + std::to_string(columnOf(text, i)) +
                                            ": {as written: ...} says nothing"};
         } else {
@@ -114,9 +111,12 @@ std::string renderLessonText(const LessonText& text, const ExprScope& scope, boo
                 out += p.text;
                 break;
             }
-            // ", all kinetic energy is kept" -> " (as written: all kinetic energy is kept)"
-            const std::size_t from = p.text.find_first_not_of(" ,;:");
-            out += " (as written: " + trimmed(p.text.substr(from)) + ")";
+            // ", all kinetic energy is kept" -> " (as written: all kinetic energy is kept)";
+            // "Both keep the momentum:" -> " (as written: Both keep the momentum)" (a colon
+            // before the parenthesis's end read as a typo on screen).
+            const std::size_t from = p.text.find_first_not_of(kAsWrittenSeparators);
+            const std::size_t to = p.text.find_last_not_of(kAsWrittenSeparators);
+            out += " (as written: " + p.text.substr(from, to - from + 1) + ")";
             break;
         }
         }

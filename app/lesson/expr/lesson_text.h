@@ -5,6 +5,7 @@
 //                        equation that holds with the digits shown ("-0.5·4 = -2")
 //   {as written: TEXT}   text that holds only for the step as written: shown as it is while the
 //                        world is, and as "(as written: TEXT)" once the lecturer changed something
+//                        (spaces, commas, semicolons and colons around TEXT dropped)
 //   {{ and }}            a literal brace
 // Parsed when the lesson loads (every expression's names resolved, errors at their JSON path and
 // column), rendered whenever it is shown. No GL, no ImGui.
