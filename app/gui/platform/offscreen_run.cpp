@@ -473,10 +473,9 @@ int benchmark(App& app, Offscreen& off, const Options& o) {
         // one in flight): the last frame is drawn while the worker works, as every other.
         if (!o.benchmarkInTurn) worker.start([&] { workOut(off.frames[(i + 1) % 2]); });
         Clock::time_point t = Clock::now();
-        glViewport(0, 0, frame.scene.framebufferWidth, frame.scene.framebufferHeight);
-        off.renderer.submit(frame.scene); // drawFrame's two parts, timed apart
+        drawFrameScene(off.renderer, frame); // drawFrame's two parts, timed apart
         times.scene += since(t);
-        uiRendererRender(frame.ui);
+        drawFrameUi(frame);
         times.uiDraw += since(t);
         offscreenFinish(off.context);
         times.finish += since(t);

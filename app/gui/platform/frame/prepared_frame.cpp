@@ -13,8 +13,16 @@ void prepareFrame(const App& app, SceneRenderer& renderer, int framebufferWidth,
                                                    frame.scene.drawn, frame.scene.arena);
 }
 
-void drawFrame(SceneRenderer& renderer, const PreparedFrame& frame) {
+void drawFrameScene(SceneRenderer& renderer, const PreparedFrame& frame) {
     glViewport(0, 0, frame.scene.framebufferWidth, frame.scene.framebufferHeight);
     renderer.submit(frame.scene);
+}
+
+void drawFrameUi(const PreparedFrame& frame) {
     uiRendererRender(frame.ui);
+}
+
+void drawFrame(SceneRenderer& renderer, const PreparedFrame& frame) {
+    drawFrameScene(renderer, frame);
+    drawFrameUi(frame);
 }

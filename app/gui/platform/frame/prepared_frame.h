@@ -20,5 +20,7 @@ struct PreparedFrame {
 // ImGui has begun the next.
 void prepareFrame(const App& app, SceneRenderer& renderer, int framebufferWidth,
                   int framebufferHeight, PreparedFrame& frame, bool copyUi);
-// Its GL calls: the viewport, the scene, the UI on top.
+// Its GL calls: the viewport and the scene (drawFrameScene), then the UI on top (drawFrameUi).
 void drawFrame(SceneRenderer& renderer, const PreparedFrame& frame);
+void drawFrameScene(SceneRenderer& renderer, const PreparedFrame& frame);
+void drawFrameUi(const PreparedFrame& frame);
